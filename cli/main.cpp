@@ -1,0 +1,50 @@
+// lutkit: the command-line front end. The only translation unit that includes CLI11.
+// main catches library errors, then CLI::Error, then the rest (CLI11's subcom_in_files shape).
+#include "Commands.h"
+
+#include "lut/Error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+using namespace lut::cli;
+
+namespace {
+
+int g_exitCode = kExitOk;
+
+// Runs a subcommand, turning library errors into a one-line message and exit code 1.
+template <class Fn> void guarded(Fn&& fn) {
+    try {
+        g_exitCode = fn();
+    } catch (const lut::Error& e) {
+        std::cerr << "lutkit: error: " << e.what() << "\n";
+        g_exitCode = kExitFailure;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "lutkit: error: out of memory\n";
+        g_exitCode = kExitFailure;
+    } catch (const std::exception& e) {
+        std::cerr << "lutkit: error: " << e.what() << "\n";
+        g_exitCode = kExitFailure;
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"lutkit: author and convert colour grading LUTs", "lutkit"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "lutkit 0.1.0");
+
+    // SUBCOMMANDS (each block: options struct from Commands.h, setup, callback)
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kExitOk : kExitUsage;
+    }
+    return g_exitCode;
+}

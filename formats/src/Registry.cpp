@@ -1,0 +1,30 @@
+// The one list of built-in formats. Each format file exposes a factory declared in Formats.h.
+#include "lut/formats/Registry.h"
+
+#include "Formats.h"
+
+#include <mutex>
+
+namespace lut::formats {
+
+void registerBuiltinFormats() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        auto& r = FormatRegistry::instance();
+        (void)r;
+        // FORMAT LIST (keep one line per format)
+    });
+}
+
+LutFile readLut(const std::string& path, const FormatOptions& options, const std::string& formatName) {
+    registerBuiltinFormats();
+    return FormatRegistry::instance().read(path, options, formatName);
+}
+
+Diagnostics writeLut(const std::string& path, const LutFile& lut, const FormatOptions& options,
+                     const std::string& formatName) {
+    registerBuiltinFormats();
+    return FormatRegistry::instance().write(path, lut, options, formatName);
+}
+
+} // namespace lut::formats

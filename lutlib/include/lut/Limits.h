@@ -1,0 +1,19 @@
+#pragma once
+// Every size limit and format constant lutlib enforces, in one place.
+#include <cstdint>
+
+namespace lut::limits {
+
+constexpr int kMin3DSize = 2;
+constexpr int kMax3DSize = 256;
+constexpr int kMin1DSize = 2;
+constexpr int kMax1DSize = 65536;
+// Longest line a text LUT reader accepts before refusing the file (Adobe's spec says 250 bytes;
+// files in the wild exceed that with long comments, so we accept far more but never unbounded).
+constexpr std::size_t kMaxTextLineBytes = 1 << 16;
+// Largest image (width*height) any reader accepts: guards allocations on hostile headers.
+constexpr std::uint64_t kMaxImagePixels = 1ull << 28;
+// Largest LUT file a reader will open (a 256^3 .cube with long lines is ~600 MB).
+constexpr std::uint64_t kMaxLutFileBytes = 2ull << 30;
+
+} // namespace lut::limits

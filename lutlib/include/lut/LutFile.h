@@ -1,0 +1,28 @@
+#pragma once
+#include "lut/Error.h"
+#include "lut/Lut1D.h"
+#include "lut/Lut3D.h"
+
+#include <optional>
+#include <string>
+
+namespace lut {
+
+// What a LUT file holds once read: an optional 1D shaper applied first, then an optional 3D
+// table (at least one of the two is present), plus what the reader found out about the file.
+struct LutFile {
+    std::optional<Lut1D> shaper;
+    std::optional<Lut3D> cube;
+
+    std::string format;  // registry name of the format that read it ("cube", "nutexb", ...)
+    std::string dialect; // e.g. "adobe" or "resolve" for .cube, layout name for images
+    Diagnostics diagnostics;
+    // Bit depth of the stored values when the source was integer (8, 16), 0 = float.
+    int sourceBitDepth = 0;
+
+    // The whole file as one 3D table of edge `size` (0 = the cube's own size, else 33):
+    // the shaper is baked in by sampling. Throws lut::Error if the file is empty.
+    Lut3D toLut3D(int size = 0) const;
+};
+
+} // namespace lut

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian packages lutkit needs, only those missing. Idempotent; run as root (or with
+# sudo available). Extra packages may be named as arguments.
+set -euo pipefail
+PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools libopencolorio-dev
+  opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
+  libcli11-dev libbenchmark-dev xvfb xauth clang libclang-rt-14-dev "$@")
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,55 @@
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace lut::test {
+
+std::string dataPath(const std::string& name) { return std::string(LUTKIT_TEST_DATA_DIR) + "/" + name; }
+std::string samplePath(const std::string& name) { return std::string(LUTKIT_SAMPLES_DIR) + "/" + name; }
+
+std::string tempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "misc";
+    for (auto& c : name)
+        if (c == '/') c = '_';
+    fs::path dir = fs::path(LUTKIT_BINARY_DIR) / "test-tmp" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir.string();
+}
+
+static std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+RunResult runCli(const std::string& args) {
+    fs::path dir = fs::path(tempDir()).parent_path() / "cli-capture";
+    fs::create_directories(dir);
+    static int counter = 0;
+    std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
+    fs::path out = dir / ("out_" + tag), err = dir / ("err_" + tag);
+    std::string cmd = std::string("'") + LUTKIT_CLI + "' " + args + " >'" + out.string() + "' 2>'" +
+                      err.string() + "' </dev/null";
+    int status = std::system(cmd.c_str());
+    RunResult r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+}
+
+} // namespace lut::test

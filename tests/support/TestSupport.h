@@ -1,0 +1,20 @@
+#pragma once
+// Shared helpers for tests: paths to data, temporary folders, running the CLI.
+#include <string>
+
+namespace lut::test {
+
+std::string dataPath(const std::string& name);    // tests/data/<name>
+std::string samplePath(const std::string& name);  // samples/<name>
+// A fresh empty folder under the build tree, unique per test (removed at start, kept after).
+std::string tempDir();
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out; // stdout
+    std::string err; // stderr
+};
+// Runs the lutkit CLI with the given shell-quoted argument string.
+RunResult runCli(const std::string& args);
+
+} // namespace lut::test
