@@ -1,0 +1,46 @@
+#pragma once
+// LUT image layouts: where entry (r, g, b) of an N^3 LUT sits in a 2D picture. See
+// ../shared/docs/strip-layouts.md. Pixel (x, y) has y = 0 at the top row.
+#include "lut/Image.h"
+#include "lut/Lut3D.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lut {
+
+enum class LutLayout {
+    Pilot, // N^2 x N: x = r + N*b, y = g (aliases unreal, godot)
+    Unity, // N^2 x N: x = r + N*b, y = N-1-g
+    Smush, // N^2 x N: x = r + N*g, y = b (alias lattice; ociolutimage)
+    Hald,  // L^3 x L^3 with N = L^2: i = r + N*g + N^2*b, x = i mod L^3, y = i div L^3
+};
+
+const char* toString(LutLayout);
+// Accepts the names and aliases above; throws lut::Error listing the valid names.
+LutLayout parseLayout(std::string_view name);
+std::vector<LutLayout> allLayouts();
+
+struct LayoutFit {
+    LutLayout layout;
+    int size; // N
+};
+// Every layout whose picture size is exactly width x height, with the N it implies.
+std::vector<LayoutFit> layoutsForImageSize(int width, int height);
+// Picture size of an N^3 LUT in a layout (Hald needs N = L^2; throws lut::Error otherwise).
+void layoutImageSize(LutLayout layout, int size, int& width, int& height);
+// Pixel of entry (r, g, b).
+void layoutPixel(LutLayout layout, int size, int r, int g, int b, int& x, int& y);
+
+// Reads an N^3 LUT from the patch of `image` whose top-left pixel is (x0, y0), each entry
+// averaged over a block x block square (block >= 1). Throws lut::Error if it does not fit.
+Lut3D lutFromImage(const ImageView& image, LutLayout layout, int size, int x0 = 0, int y0 = 0,
+                   int block = 1);
+// Draws lut into image at (x0, y0) (each entry a block x block square; alpha set to 1).
+void drawLut(const Lut3D& lut, LutLayout layout, const ImageView& image, int x0 = 0, int y0 = 0,
+             int block = 1);
+// A new image holding just the LUT in a layout.
+Image lutToImage(const Lut3D& lut, LutLayout layout, int block = 1);
+
+} // namespace lut
