@@ -1,0 +1,126 @@
+#pragma once
+// The preview pipeline: an ordered list of stages (lut/pipeline/Stage.h) run on a linear float
+// RGBA frame, used by `lutkit preview` and by the editor, so both show the same pixels.
+//
+// Stages, in their one canonical order (a preset enables some of them; any can be switched on or
+// off and tuned: setParam("smash-bloom.strength", "0.5")):
+//   sanitize              NaN -> 0, +-Inf and |x| > 65504 -> +-65504 (always first; keeps one bad
+//                         pixel from spreading through the blurs)
+//   exposure              x * 2^stops
+//   tonemap               reinhard | aces (Narkowicz fit) | hable (Uncharted 2 filmic)
+//   hdr-bloom             lecture: max(x - 1, 0), Gaussian, add
+//   filter-bloom          Pilot homework: luminance soft-knee filter, separable 9-tap Gaussian, add
+//   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur, C*f0 + B*(1-i)*f1
+//   smash-bloom           Smash Ultimate bloom, exactly (docs/smash-pipeline.md section 1)
+//   chromatic-aberration  r and b sampled at slightly different radial distances
+//   vignette              darken by distance to the centre
+//   grain                 seeded film grain (same seed + frame index -> same frame)
+//   smash-grade           Smash grading LUT + brighten + alpha mix (section 2)
+//   lut                   any 3D LUT with any interpolation
+//   display               sRGB (piecewise) or pure gamma encode, last
+// Presets: smash (sanitize, smash-bloom, smash-grade, display=srgb), pilot (tonemap, filter-bloom,
+// lut, display=gamma 2.2), lecture (exposure, hdr-bloom, chromatic-aberration, vignette, grain,
+// lut, display=gamma 2.2 — the lecture's order), none (sanitize, display).
+//
+// Not implemented: depth of field, SSAO and SSR need per-pixel depth and normals, which an image
+// does not have (see docs/pipeline.md).
+#include "lut/Error.h"
+#include "lut/Image.h"
+#include "lut/Interpolation.h"
+#include "lut/Lut3D.h"
+#include "lut/pipeline/Stage.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lut {
+
+enum class Preset { Smash, Pilot, Lecture, None };
+const char* toString(Preset);
+Preset parsePreset(std::string_view name); // throws lut::Error
+
+// Every stage name, in pipeline order.
+const std::vector<std::string>& stageNames();
+// A stage by name with default settings (disabled ones too); throws lut::Error if unknown.
+std::unique_ptr<Stage> makeStage(std::string_view name);
+
+// The settings of a pipeline as plain copyable data (what the editor's document keeps).
+struct PipelineSettings {
+    Preset preset = Preset::Smash;
+    std::shared_ptr<const Lut3D> lut;       // grading LUT (smash-grade and lut); null = neutral
+    Interpolation interpolation = Interpolation::Trilinear;
+    bool bloom = true;                      // false disables every bloom stage
+    std::vector<std::string> enable;        // stage names to switch on
+    std::vector<std::string> disable;       // stage names to switch off
+    // "stage.param=value" assignments applied in order; stage "bloom" means the preset's bloom.
+    std::vector<std::string> assignments;
+};
+
+struct RunOptions {
+    int nthreads = 0;                  // 0 = all cores
+    bool forceAll = false;             // run enabled stages even when they say they cannot change
+    unsigned long long frameIndex = 0; // for film grain
+};
+
+struct StageReport {
+    std::string name;
+    bool ran = false;
+    bool enabled = true;
+    double milliseconds = 0.0;   // wall time of prepare + this stage's share of the fused passes
+};
+struct PipelineReport {
+    std::vector<StageReport> stages; // every stage of the pipeline, enabled or not, in order
+    double totalMilliseconds = 0.0;
+    std::string str() const;         // a readable table for --verbose
+};
+
+class Pipeline {
+public:
+    Pipeline();
+    explicit Pipeline(Preset preset);
+    // Builds the preset, then applies settings; throws lut::Error for an unknown stage/parameter.
+    explicit Pipeline(const PipelineSettings& settings);
+    ~Pipeline();
+    Pipeline(Pipeline&&) noexcept;
+    Pipeline& operator=(Pipeline&&) noexcept;
+
+    Preset preset() const { return m_preset; }
+    const std::vector<std::unique_ptr<Stage>>& stages() const { return m_stages; }
+    Stage* find(std::string_view name);        // null if absent; "bloom" = the preset's bloom
+    const Stage* find(std::string_view name) const;
+    Stage& stage(std::string_view name);       // throws lut::Error if absent
+
+    void setEnabled(std::string_view stageName, bool on);
+    // "stage.param=value"; throws lut::Error naming what is wrong.
+    void assign(std::string_view assignment);
+    // The grading LUT for smash-grade and lut (copied; sampled with `method`). Null = neutral.
+    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method = Interpolation::Trilinear);
+    void setBloom(bool on); // every *bloom stage
+
+    // Runs the enabled stages in place on `frame`.
+    PipelineReport run(const ImageView& frame, const RunOptions& options = {});
+    // The result-returning form.
+    Image run(const Image& frame, const RunOptions& options = {}, PipelineReport* report = nullptr);
+
+private:
+    Preset m_preset = Preset::None;
+    std::vector<std::unique_ptr<Stage>> m_stages;
+};
+
+// Turns stored pixel values into the scene frame the pipeline expects, in place: sRGB decode
+// when the values are display-encoded (8/16-bit screenshots), then, for a screenshot taken in
+// game, undo the game's grading with originalLut (null = neutral; see smashUngrade). Returns the
+// notes to show (bloom cannot be undone).
+Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,
+                              const Lut3D* originalLut,
+                              Interpolation interp = Interpolation::Trilinear, int nthreads = 0);
+
+// Times the full smash chain (neutral 16^3 LUT, bloom on) on a synthetic w x h HDR frame:
+// returns the mean wall milliseconds per frame over `iterations` runs (after one warm-up).
+// Used by `lutkit bench`.
+double benchmarkSmashChain(int width = 1920, int height = 1080, int iterations = 10,
+                           int nthreads = 0);
+
+} // namespace lut
