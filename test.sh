@@ -3,10 +3,26 @@
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer build and fuzzing.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
+# A final summary line in every case, naming the stage that failed.
+stage="install"
+t0=$(date +%s)
+trap 'rc=$?; if [ $rc -ne 0 ]; then echo "test.sh: FAILED in stage: $stage (exit $rc) after $(( $(date +%s) - t0 )) s"; fi' EXIT
 "$root/scripts/install-deps.sh"
 jobs="$(nproc)"
 
+stage="release"
 echo "== Release build and tests"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$root/build" -j"$jobs"
 (cd "$root/build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs")
+
+if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
+  stage="sanitizers"
+  echo "== AddressSanitizer + UBSan build and tests (scripts/sanitize.sh)"
+  "$root/scripts/sanitize.sh" "$root/build-asan"
+  stage="fuzzing"
+  echo "== Fuzzing each reader for ${LUTKIT_FUZZ_SECONDS:-45} s (scripts/fuzz.sh)"
+  "$root/scripts/fuzz.sh" "$root/build-fuzz" "${LUTKIT_FUZZ_SECONDS:-45}"
+fi
+stage="done"
+echo "test.sh: ALL PASSED in $(( $(date +%s) - t0 )) s$([ "${LUTKIT_QUICK:-0}" = "1" ] && echo " (quick: no sanitizers, no fuzzing)")"

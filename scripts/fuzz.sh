@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (tests/fuzz) with clang and runs each for a bounded time.
+# Usage: scripts/fuzz.sh [BUILD_DIR] [SECONDS] [FUZZER...]
+#   BUILD_DIR defaults to build-fuzz, SECONDS (per fuzzer) to 60, FUZZER to all that were built.
+# Each fuzzer starts from a COPY of its seed corpus (tests/fuzz/corpus/<name> plus matching files
+# in tests/data), so the checked-in seeds never change. Crashes, leaks, timeouts and OOMs land in
+# BUILD_DIR/findings/<name>/ and make this script exit non-zero; add each one (after fixing it) to
+# tests/data/fuzz-regress/<name>/ so the normal test suite replays it.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$root/build-fuzz}"
+seconds="${2:-60}"
+shift $(( $# > 2 ? 2 : $# )) || true
+case "$build" in /*) ;; *) build="$root/$build" ;; esac
+jobs="$(nproc)"
+
+start=$(date +%s)
+echo "fuzz: configuring $build (clang, -fsanitize=fuzzer-no-link,address,undefined)"
+CC=clang CXX=clang++ \
+CFLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer" \
+CXXFLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -Wno-unknown-warning-option" \
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLUTKIT_FUZZ=ON \
+  -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
+
+all=(cube strip hald nutexb cli_numbers)
+targets=()
+for f in "${all[@]}"; do
+  [ -f "$root/tests/fuzz/fuzz_$f.cpp" ] && targets+=("fuzz_$f")
+done
+cmake --build "$build" -j"$jobs" --target "${targets[@]}"
+echo "fuzz: build took $(( $(date +%s) - start )) s"
+
+# Seed files from tests/data for each fuzzer, by extension (the image fuzzers take encoded
+# descriptions, not raw images, so their seeds are only the checked-in ones).
+seed_globs() {
+  case "$1" in
+    cube) echo "*.cube" ;;
+    nutexb) echo "*.nutexb" ;;
+    *) echo "" ;;
+  esac
+}
+
+names=("$@")
+if [ ${#names[@]} -eq 0 ]; then
+  for t in "${targets[@]}"; do names+=("${t#fuzz_}"); done
+fi
+
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:allocator_may_return_null=1:${ASAN_OPTIONS:-}"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:${UBSAN_OPTIONS:-}"
+failed=()
+for name in "${names[@]}"; do
+  bin="$build/bin/fuzz_$name"
+  [ -x "$bin" ] || { echo "fuzz: no $bin"; failed+=("$name(missing)"); continue; }
+  work="$build/corpus/$name"
+  findings="$build/findings/$name"
+  rm -rf "$work"
+  mkdir -p "$work" "$findings"
+  [ -d "$root/tests/fuzz/corpus/$name" ] && cp -r "$root/tests/fuzz/corpus/$name/." "$work/"
+  [ -d "$root/tests/data/fuzz-regress/$name" ] && cp -r "$root/tests/data/fuzz-regress/$name/." "$work/"
+  glob="$(seed_globs "$name")"
+  if [ -n "$glob" ]; then
+    # Small files only: a huge seed slows every mutation.
+    find "$root/tests/data" -type f -name "$glob" -size -64k -not -path "*/fuzz-regress/*" \
+      -exec sh -c 'for f; do cp "$f" "$0/$(echo "$f" | md5sum | cut -c1-16)"; done' "$work" {} +
+  fi
+  echo "fuzz: $name for ${seconds}s on $(ls "$work" | wc -l) seeds"
+  log="$build/findings/$name.log"
+  if "$bin" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=65536 \
+       -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1; then
+    echo "fuzz: $name ok ($(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs)"
+  else
+    echo "fuzz: $name FOUND A PROBLEM; last lines of $log:"
+    tail -n 40 "$log"
+    failed+=("$name")
+  fi
+  # Leftovers of findings-free runs are empty folders; keep only real findings.
+  rmdir "$findings" 2>/dev/null || true
+done
+rm -rf /dev/shm/lutkit-fuzz-* 2>/dev/null || true
+
+if [ ${#failed[@]} -ne 0 ]; then
+  echo "fuzz: FAILED: ${failed[*]} (inputs in $build/findings/)"
+  exit 1
+fi
+echo "fuzz: all ${#names[@]} fuzzers clean, $(( $(date +%s) - start )) s in total"
