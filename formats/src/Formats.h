@@ -6,4 +6,10 @@
 
 namespace lut::formats {
 
+// LUT images in named layouts (StripFormat.cpp), Hald images (HaldFormat.cpp), nutexb volumes
+// (NutexbFormat.cpp).
+std::unique_ptr<Format> makeStripFormat();
+std::unique_ptr<Format> makeHaldFormat();
+std::unique_ptr<Format> makeNutexbFormat();
+
 } // namespace lut::formats
