@@ -5,6 +5,8 @@
 #include <memory>
 
 namespace lut::formats {
+// .cube, Adobe and Resolve dialects (CubeFormat.cpp).
+std::unique_ptr<Format> makeCubeFormat();
 
 // LUT images in named layouts (StripFormat.cpp), Hald images (HaldFormat.cpp), nutexb volumes
 // (NutexbFormat.cpp).

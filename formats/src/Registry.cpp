@@ -13,6 +13,7 @@ void registerBuiltinFormats() {
         auto& r = FormatRegistry::instance();
         (void)r;
         // FORMAT LIST (keep one line per format)
+        r.add(makeCubeFormat());
         r.add(makeNutexbFormat());
     });
 }
