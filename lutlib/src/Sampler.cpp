@@ -1,5 +1,7 @@
-// Scalar reference samplers: one class per interpolation, chosen once by makeSampler().
-// The SIMD kernels (src/simd/) must agree with these; they are the readable definition.
+// Samplers: one class per interpolation, chosen once by makeSampler(). sample() is the scalar
+// reference (the readable definition); applyPixels() runs the SIMD kernel picked at run time for
+// this CPU (src/simd/), which must agree with sample() to float rounding. Both share
+// LatticeMap::locate's arithmetic, so they pick the same cells and fractions.
 #include "lut/Sampler.h"
 
 #include "SamplerDetail.h"
@@ -7,7 +9,10 @@
 #include "lut/Parallel.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 namespace lut {
 
@@ -26,36 +31,84 @@ LatticeMap::LatticeMap(const Lut3D& lut) : size(lut.size()) {
     for (int c = 0; c < 3; ++c) {
         const double lo = lut.domainMin()[c], hi = lut.domainMax()[c];
         double s = (size - 1) / (hi - lo);
-        if (!std::isfinite(s)) s = 3.0e38; // degenerate domain: keep the scale finite
-        scale[c] = s;
-        offset[c] = lo;
+        // Degenerate domain: keep the scale (and the snapping bias) finite in float.
+        if (!(s <= FLT_MAX)) s = FLT_MAX;
+        scale[c] = static_cast<float>(s);
+        offset[c] = static_cast<float>(lo);
+        snapBias[c] = static_cast<float>(std::min(std::fabs(lo) * s, static_cast<double>(FLT_MAX) / 4));
     }
 }
 
 void LatticeMap::locate(glm::vec3 in, int idx[3], float frac[3]) const {
-    const double top = size - 1;
+    const float top = static_cast<float>(size - 1);
     for (int c = 0; c < 3; ++c) {
-        double t = (static_cast<double>(in[c]) - offset[c]) * scale[c];
+        float t = (in[c] - offset[c]) * scale[c];
         // NaN and -Inf fail the comparison and land on 0; +Inf clamps to the top.
-        if (!(t > 0.0)) t = 0.0;
+        if (!(t > 0.0f)) t = 0.0f;
         if (t > top) t = top;
+        // A lattice input given as a float is off its lattice point by rounding only: snap it.
+        const float r = std::nearbyint(t);
+        if (std::fabs(t - r) <= (t + snapBias[c]) * kSnapRelative) t = r;
         int i = static_cast<int>(t);
         if (i > size - 2) i = size - 2;
         idx[c] = i;
-        frac[c] = static_cast<float>(t - i);
+        frac[c] = t - static_cast<float>(i);
     }
+}
+
+std::vector<float> packTable(const Lut3D& lut) {
+    std::vector<float> t(4 * lut.entryCount(), 0.0f);
+    const float* src = lut.data();
+    for (std::size_t i = 0; i < lut.entryCount(); ++i)
+        for (int c = 0; c < 3; ++c) t[4 * i + c] = src[3 * i + c];
+    return t;
 }
 
 } // namespace detail
 
 namespace {
 
+using detail::KernelFn;
+using detail::KernelTable;
 using detail::LatticeMap;
 
-class ScalarSamplerBase : public Sampler {
+enum class Isa { Scalar, Avx2 };
+
+Isa detectIsa() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return Isa::Avx2;
+#endif
+    return Isa::Scalar;
+}
+
+// The path new samplers use: the best this CPU has, unless LUTKIT_SIMD=scalar asks for the
+// reference loop (benchmarks and tests compare the two). Read on every makeSampler() call so a
+// benchmark can switch between samplers in one run.
+Isa chosenIsa() {
+    static const Isa best = detectIsa();
+    const char* env = std::getenv("LUTKIT_SIMD");
+    if (env && std::strcmp(env, "scalar") == 0) return Isa::Scalar;
+    return best;
+}
+
+class SamplerBase : public Sampler {
 public:
-    explicit ScalarSamplerBase(const Lut3D& lut) : m_map(lut), m_entries(lut.entries()) {}
+    SamplerBase(const Lut3D& lut, KernelFn simd)
+        : m_map(lut), m_table(detail::packTable(lut)), m_kernel(chosenIsa() == Isa::Avx2 ? simd : nullptr) {
+        m_view.rgb = m_table.data();
+        m_view.size = m_map.size;
+        for (int c = 0; c < 3; ++c) {
+            m_view.scale[c] = m_map.scale[c];
+            m_view.offset[c] = m_map.offset[c];
+            m_view.snapBias[c] = m_map.snapBias[c];
+        }
+    }
     void applyPixels(float* rgba, std::size_t count) const override {
+        if (m_kernel) {
+            m_kernel(m_view, rgba, count);
+            return;
+        }
         for (std::size_t i = 0; i < count; ++i) {
             float* p = rgba + 4 * i;
             const glm::vec3 o = sample(glm::vec3(p[0], p[1], p[2]));
@@ -66,17 +119,20 @@ public:
     }
 
 protected:
-    const glm::vec3& e(int r, int g, int b) const {
+    glm::vec3 e(int r, int g, int b) const {
         const std::size_t n = static_cast<std::size_t>(m_map.size);
-        return m_entries[static_cast<std::size_t>(r) + n * (static_cast<std::size_t>(g) + n * b)];
+        const float* p = &m_table[4 * (static_cast<std::size_t>(r) + n * (static_cast<std::size_t>(g) + n * b))];
+        return glm::vec3(p[0], p[1], p[2]);
     }
     LatticeMap m_map;
-    std::vector<glm::vec3> m_entries;
+    std::vector<float> m_table;
+    KernelTable m_view;
+    KernelFn m_kernel;
 };
 
-class NearestSampler final : public ScalarSamplerBase {
+class NearestSampler final : public SamplerBase {
 public:
-    using ScalarSamplerBase::ScalarSamplerBase;
+    explicit NearestSampler(const Lut3D& lut) : SamplerBase(lut, &detail::nearestAvx2) {}
     Interpolation method() const override { return Interpolation::Nearest; }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
@@ -87,9 +143,9 @@ public:
     }
 };
 
-class TrilinearSampler final : public ScalarSamplerBase {
+class TrilinearSampler final : public SamplerBase {
 public:
-    using ScalarSamplerBase::ScalarSamplerBase;
+    explicit TrilinearSampler(const Lut3D& lut) : SamplerBase(lut, &detail::trilinearAvx2) {}
     Interpolation method() const override { return Interpolation::Trilinear; }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
@@ -106,9 +162,9 @@ public:
     }
 };
 
-class TetrahedralSampler final : public ScalarSamplerBase {
+class TetrahedralSampler final : public SamplerBase {
 public:
-    using ScalarSamplerBase::ScalarSamplerBase;
+    explicit TetrahedralSampler(const Lut3D& lut) : SamplerBase(lut, &detail::tetrahedralAvx2) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
@@ -116,8 +172,8 @@ public:
         m_map.locate(in, i, f);
         const int r = i[0], g = i[1], b = i[2];
         const float fr = f[0], fg = f[1], fb = f[2];
-        const glm::vec3& c000 = e(r, g, b);
-        const glm::vec3& c111 = e(r + 1, g + 1, b + 1);
+        const glm::vec3 c000 = e(r, g, b);
+        const glm::vec3 c111 = e(r + 1, g + 1, b + 1);
         // The cube is split into six tetrahedra by the order of the fractions; each shares the
         // main diagonal c000-c111, so greys stay on it.
         if (fr > fg) {
@@ -147,6 +203,6 @@ std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method) {
     throw Error("unknown interpolation");
 }
 
-const char* samplerIsa() { return "scalar"; }
+const char* samplerIsa() { return chosenIsa() == Isa::Avx2 ? "avx2" : "scalar"; }
 
 } // namespace lut

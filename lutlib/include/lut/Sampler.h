@@ -23,9 +23,13 @@ namespace lut {
 //    domain.
 //  - The output is always a convex combination of table entries, so a table of finite entries
 //    never yields NaN or Inf, and a point exactly on the lattice (including exactly domainMax,
-//    e.g. 1.0) returns its entry exactly.
-//  - Degenerate domains (max - min tiny) are computed in double precision; the scale is kept
-//    finite.
+//    e.g. 1.0) returns its entry exactly. Lattice coordinates are computed in float; a coordinate
+//    within float rounding of a lattice point (|t - round(t)| <= (t + |min|*scale) * 2^-22) is
+//    moved onto it, so lattice inputs given as floats (Lut3D::latticeInput) hit their entries.
+//  - Degenerate domains (max - min tiny): the scale is computed in double and kept finite.
+//  - applyPixels() runs a SIMD kernel (AVX2 + FMA when the CPU has it, chosen at run time) that
+//    follows this policy operation for operation and agrees with sample() to float rounding.
+//    LUTKIT_SIMD=scalar in the environment makes new samplers use the scalar loop instead.
 class Sampler {
 public:
     virtual ~Sampler();
@@ -39,7 +43,7 @@ public:
 
 std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method);
 
-// Name of the SIMD path the kernels picked at run time on this CPU ("avx2", "sse2", "scalar").
+// Name of the SIMD path new samplers use on this CPU: "avx2" or "scalar".
 const char* samplerIsa();
 
 } // namespace lut

@@ -1,0 +1,217 @@
+// AVX2 + FMA kernels for the 3D LUT samplers, 8 pixels per iteration.
+//
+// Shape: load 8 RGBA pixels (4 registers of 2 pixels), transpose them in-lane to R, G, B planes,
+// find lattice cells and fractions exactly as the scalar reference does (same float operations,
+// same NaN/Inf clamping, same lattice snapping), then go back to one pixel per 128-bit half: each
+// pixel's table entries are loaded as 16 bytes (RGB + padding) and blended with
+// broadcast weights. Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the
+// per-pixel loads need no transposition of the result. Alpha is restored from the input.
+//
+// Only <immintrin.h> and SimdKernels.h are included (see the note there about inline functions).
+#include "SimdKernels.h"
+
+#include <immintrin.h>
+
+namespace lut::detail {
+namespace {
+
+struct Consts {
+    __m256 offset[3];
+    __m256 scale[3];
+    __m256 snapBias[3];
+    __m256 top;      // N - 1
+    __m256 snapK;    // kSnapRelative
+    __m256 one;
+    __m256 absMask;
+    __m256i maxCell; // N - 2
+    __m256i n;       // N
+    int dr, dg, db;  // float offsets of the +1 neighbour along r, g, b
+    explicit Consts(const KernelTable& t) {
+        for (int c = 0; c < 3; ++c) {
+            offset[c] = _mm256_set1_ps(t.offset[c]);
+            scale[c] = _mm256_set1_ps(t.scale[c]);
+            snapBias[c] = _mm256_set1_ps(t.snapBias[c]);
+        }
+        top = _mm256_set1_ps(static_cast<float>(t.size - 1));
+        snapK = _mm256_set1_ps(kSnapRelative);
+        one = _mm256_set1_ps(1.0f);
+        absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+        maxCell = _mm256_set1_epi32(t.size - 2);
+        n = _mm256_set1_epi32(t.size);
+        dr = 4;
+        dg = 4 * t.size;
+        db = 4 * t.size * t.size;
+    }
+};
+
+// In-lane 4x4 transpose of four registers holding two RGBA pixels each:
+// a=[p0|p1] b=[p2|p3] c=[p4|p5] d=[p6|p7]  ->  a=[r0 r2 r4 r6|r1 r3 r5 r7], b=G, c=B, d=A.
+// It is its own inverse, so applying it to four per-lane planes gives one pixel per half again.
+inline void transpose4(__m256& a, __m256& b, __m256& c, __m256& d) {
+    const __m256 t0 = _mm256_unpacklo_ps(a, b);
+    const __m256 t1 = _mm256_unpackhi_ps(a, b);
+    const __m256 t2 = _mm256_unpacklo_ps(c, d);
+    const __m256 t3 = _mm256_unpackhi_ps(c, d);
+    a = _mm256_shuffle_ps(t0, t2, 0x44);
+    b = _mm256_shuffle_ps(t0, t2, 0xEE);
+    c = _mm256_shuffle_ps(t1, t3, 0x44);
+    d = _mm256_shuffle_ps(t1, t3, 0xEE);
+}
+
+// The scalar LatticeMap::locate, 8 lanes at a time, operation for operation.
+inline void locate(const Consts& k, int c, __m256 x, __m256i& cell, __m256& frac) {
+    __m256 t = _mm256_mul_ps(_mm256_sub_ps(x, k.offset[c]), k.scale[c]);
+    // maxps returns its second operand when either is NaN: NaN (and -Inf) land on 0.
+    t = _mm256_max_ps(t, _mm256_setzero_ps());
+    t = _mm256_min_ps(t, k.top);
+    const __m256 r = _mm256_round_ps(t, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+    const __m256 dist = _mm256_and_ps(_mm256_sub_ps(t, r), k.absMask);
+    const __m256 tol = _mm256_mul_ps(_mm256_add_ps(t, k.snapBias[c]), k.snapK);
+    t = _mm256_blendv_ps(t, r, _mm256_cmp_ps(dist, tol, _CMP_LE_OQ));
+    cell = _mm256_min_epi32(_mm256_cvttps_epi32(t), k.maxCell);
+    frac = _mm256_sub_ps(t, _mm256_cvtepi32_ps(cell));
+}
+
+// Float offset of entry (r, g, b) in the padded table (4 floats per entry).
+inline __m256i entryOffset(const Consts& k, __m256i r, __m256i g, __m256i b) {
+    const __m256i idx = _mm256_add_epi32(r, _mm256_mullo_epi32(k.n, _mm256_add_epi32(g, _mm256_mullo_epi32(k.n, b))));
+    return _mm256_slli_epi32(idx, 2);
+}
+
+// Two pixels' entries, one per 128-bit half (the 4th float is padding; alpha is restored later).
+inline __m256 load2(const float* lo, const float* hi) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1);
+}
+
+struct Block {
+    __m256 px[4];  // the input pixels, two per register
+    __m256 f[3];   // fractions, lanes in transposed order
+    __m256i base;  // float offset of the cell's origin entry, same lanes
+};
+
+inline void loadBlock(const Consts& k, const float* p, Block& blk) {
+    for (int i = 0; i < 4; ++i) blk.px[i] = _mm256_loadu_ps(p + 8 * i);
+    __m256 r = blk.px[0], g = blk.px[1], b = blk.px[2], a = blk.px[3];
+    transpose4(r, g, b, a);
+    __m256i ir, ig, ib;
+    locate(k, 0, r, ir, blk.f[0]);
+    locate(k, 1, g, ig, blk.f[1]);
+    locate(k, 2, b, ib, blk.f[2]);
+    blk.base = entryOffset(k, ir, ig, ib);
+}
+
+// Runs `block` on every full group of 8 pixels and on the tail through a padded copy, so the
+// tail gets the same arithmetic as the rest.
+template <class BlockFn> inline void forEachBlock(float* rgba, std::size_t count, BlockFn&& block) {
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8) block(rgba + 4 * i);
+    if (i < count) {
+        alignas(32) float tmp[32] = {};
+        const std::size_t rest = count - i;
+        for (std::size_t j = 0; j < 4 * rest; ++j) tmp[j] = rgba[4 * i + j];
+        block(tmp);
+        for (std::size_t j = 0; j < 4 * rest; ++j) rgba[4 * i + j] = tmp[j];
+    }
+}
+
+} // namespace
+
+void nearestAvx2(const KernelTable& table, float* rgba, std::size_t count) {
+    const Consts k(table);
+    const float* t = table.rgb;
+    const __m256 half = _mm256_set1_ps(0.5f);
+    forEachBlock(rgba, count, [&](float* p) {
+        Block blk;
+        loadBlock(k, p, blk);
+        // Round half up, as the scalar sampler: the next entry where frac >= 0.5.
+        __m256i off = blk.base;
+        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[0], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.dr)));
+        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[1], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.dg)));
+        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[2], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.db)));
+        alignas(32) int idx[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(idx), off);
+        for (int q = 0; q < 4; ++q) {
+            const __m256 o = load2(t + idx[q], t + idx[q + 4]);
+            _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
+        }
+    });
+}
+
+void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count) {
+    const Consts k(table);
+    const float* t = table.rgb;
+    const int dr = k.dr, dg = k.dg, db = k.db;
+    forEachBlock(rgba, count, [&](float* p) {
+        Block blk;
+        loadBlock(k, p, blk);
+        __m256 w[4] = {blk.f[0], blk.f[1], blk.f[2], _mm256_setzero_ps()};
+        transpose4(w[0], w[1], w[2], w[3]); // w[q] = [fr fg fb 0 | same] for pixels 2q, 2q+1
+        alignas(32) int idx[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(idx), blk.base);
+        for (int q = 0; q < 4; ++q) {
+            const float* pa = t + idx[q];
+            const float* pb = t + idx[q + 4];
+            const __m256 fr = _mm256_permute_ps(w[q], 0x00), fg = _mm256_permute_ps(w[q], 0x55),
+                         fb = _mm256_permute_ps(w[q], 0xAA);
+            const __m256 gr = _mm256_sub_ps(k.one, fr), gg = _mm256_sub_ps(k.one, fg),
+                         gb = _mm256_sub_ps(k.one, fb);
+            // (1-f)*a + f*b: exactly a at f = 0 and b at f = 1, as the scalar lerp.
+            auto lerp = [](__m256 a, __m256 b, __m256 f, __m256 g) {
+                return _mm256_fmadd_ps(f, b, _mm256_mul_ps(g, a));
+            };
+            const __m256 c00 = lerp(load2(pa, pb), load2(pa + dr, pb + dr), fr, gr);
+            const __m256 c10 = lerp(load2(pa + dg, pb + dg), load2(pa + dg + dr, pb + dg + dr), fr, gr);
+            const __m256 c01 = lerp(load2(pa + db, pb + db), load2(pa + db + dr, pb + db + dr), fr, gr);
+            const __m256 c11 = lerp(load2(pa + db + dg, pb + db + dg),
+                                    load2(pa + db + dg + dr, pb + db + dg + dr), fr, gr);
+            const __m256 o = lerp(lerp(c00, c10, fg, gg), lerp(c01, c11, fg, gg), fb, gb);
+            _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
+        }
+    });
+}
+
+void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count) {
+    const Consts k(table);
+    const float* t = table.rgb;
+    const int dAll = k.dr + k.dg + k.db;
+    const __m256 offR = _mm256_castsi256_ps(_mm256_set1_epi32(k.dr));
+    const __m256 offG = _mm256_castsi256_ps(_mm256_set1_epi32(k.dg));
+    const __m256 offB = _mm256_castsi256_ps(_mm256_set1_epi32(k.db));
+    const __m256i all = _mm256_set1_epi32(dAll);
+    forEachBlock(rgba, count, [&](float* p) {
+        Block blk;
+        loadBlock(k, p, blk);
+        const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
+        // Sort the fractions: the tetrahedron runs c000 -> +max axis -> +max+mid axes -> c111.
+        // Ties pick either tetrahedron; the tied vertex then has weight exactly 0.
+        const __m256 rMax = _mm256_and_ps(_mm256_cmp_ps(fr, fg, _CMP_GE_OQ), _mm256_cmp_ps(fr, fb, _CMP_GE_OQ));
+        const __m256 gMax = _mm256_andnot_ps(rMax, _mm256_cmp_ps(fg, fb, _CMP_GE_OQ));
+        const __m256 bMin = _mm256_and_ps(_mm256_cmp_ps(fb, fr, _CMP_LE_OQ), _mm256_cmp_ps(fb, fg, _CMP_LE_OQ));
+        const __m256 gMin = _mm256_andnot_ps(bMin, _mm256_cmp_ps(fg, fr, _CMP_LE_OQ));
+        const __m256i offMax = _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offB, offG, gMax), offR, rMax));
+        const __m256i offMin = _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offR, offG, gMin), offB, bMin));
+        const __m256 fMax = _mm256_max_ps(fr, _mm256_max_ps(fg, fb));
+        const __m256 fMin = _mm256_min_ps(fr, _mm256_min_ps(fg, fb));
+        const __m256 fMid = _mm256_max_ps(_mm256_min_ps(fr, fg), _mm256_min_ps(_mm256_max_ps(fr, fg), fb));
+        __m256 w0 = _mm256_sub_ps(k.one, fMax), w1 = _mm256_sub_ps(fMax, fMid),
+               w2 = _mm256_sub_ps(fMid, fMin), w3 = fMin;
+        transpose4(w0, w1, w2, w3); // now one register per pixel pair: [w0 w1 w2 w3 | ...]
+        const __m256 wq[4] = {w0, w1, w2, w3};
+        alignas(32) int i0[8], iA[8], iB[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(i0), blk.base);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(iA), _mm256_add_epi32(blk.base, offMax));
+        _mm256_store_si256(reinterpret_cast<__m256i*>(iB),
+                           _mm256_add_epi32(blk.base, _mm256_sub_epi32(all, offMin)));
+        for (int q = 0; q < 4; ++q) {
+            const int a = q, b = q + 4;
+            const __m256 w = wq[q];
+            __m256 o = _mm256_mul_ps(_mm256_permute_ps(w, 0x00), load2(t + i0[a], t + i0[b]));
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0x55), load2(t + iA[a], t + iA[b]), o);
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xAA), load2(t + iB[a], t + iB[b]), o);
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xFF), load2(t + i0[a] + dAll, t + i0[b] + dAll), o);
+            _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
+        }
+    });
+}
+
+} // namespace lut::detail
