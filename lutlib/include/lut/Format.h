@@ -32,6 +32,11 @@ public:
     // lost (quantisation, resampling, dropped shaper...).
     virtual Diagnostics write(const std::string& path, const LutFile& lut,
                               const FormatOptions& options) const = 0;
+    // What the written file can hold, so callers (lutkit convert) can resample and report the
+    // error before writing: the one lattice size the format stores (0 = any) and the integer bit
+    // depth of its values (0 = float or varies with options).
+    virtual int fixedSize() const { return 0; }
+    virtual int storedBitDepth() const { return 0; }
 };
 
 // Formats by name and extension. Two formats may claim one extension: read() tries each in
