@@ -11,6 +11,8 @@
 #include "lut/Interpolation.h"
 #include "lut/Limits.h"
 #include "lut/LutFile.h"
+#include "lut/formats/Cube.h"
+#include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
 
 #include <OpenImageIO/imageio.h>
@@ -87,22 +89,47 @@ inline Outcome readChecked(const std::string& path, const FormatOptions& options
     }
 }
 
-// .cube: the bytes are the file.
+inline Outcome checkedCall(const auto& read) {
+    try {
+        LutFile f = read();
+        checkLutFile(f);
+        return Outcome::Accepted;
+    } catch (const lut::Error&) {
+        return Outcome::Refused;
+    }
+}
+
+// .cube: the bytes are the file, parsed straight from the fuzzer's buffer (it has exactly `size`
+// bytes, so AddressSanitizer sees any read past the end), in normal and strict mode.
 inline Outcome runCube(const std::uint8_t* data, std::size_t size) {
-    const std::string path = writeScratch("in.cube", data, size);
-    const Outcome o = readChecked(path, {});
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    const Outcome o = checkedCall([&] { return formats::parseCube(text, "fuzz.cube"); });
+    formats::CubeReadOptions strict;
+    strict.strict = true;
+    const Outcome s = checkedCall([&] { return formats::parseCube(text, "fuzz.cube", strict); });
+    invariant(o == s, "strict mode changed whether a .cube file is accepted");
     if (o == Outcome::Accepted) {
-        // A file we accept must also survive the strict check without crashing.
-        FormatOptions strict;
-        strict.strict = true;
-        (void)readChecked(path, strict);
+        // What we accept we must be able to write, and read back.
+        const LutFile f = formats::parseCube(text, "fuzz.cube");
+        const std::string again = formats::writeCubeString(f);
+        invariant(checkedCall([&] { return formats::parseCube(again, "again.cube"); }) == Outcome::Accepted,
+                  "a .cube file we wrote does not read back");
     }
     return o;
 }
 
-// nutexb: the bytes are the file.
+// nutexb: the bytes are the file, parsed from the fuzzer's buffer.
 inline Outcome runNutexb(const std::uint8_t* data, std::size_t size) {
-    return readChecked(writeScratch("in.nutexb", data, size), {});
+    const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+    const Outcome o = checkedCall([&] { return formats::nutexb::readBytes(bytes, "fuzz.nutexb"); });
+    if (o == Outcome::Accepted) {
+        // Reading back what we write from an accepted volume gives the same 8-bit texels.
+        const LutFile f = formats::nutexb::readBytes(bytes, "fuzz.nutexb");
+        const std::string again = formats::nutexb::writeBytes(*f.cube, "", true);
+        const LutFile g = formats::nutexb::readBytes(again, "again.nutexb");
+        invariant(g.cube->entries() == f.cube->entries(), "nutexb write/read changed texels");
+    }
+    return o;
 }
 
 // LUT images. Raw image bytes would mostly exercise libpng; what we own is the layout code, so

@@ -94,3 +94,9 @@ put("hald", "wrong-size", desc(0, 0, 1, 63, 7, ramp))
 for i, w in enumerate(["tetrahedral", "tetra", "trilinear", "linear", "nearest", "TETRA", " 33", "1e30",
                        "-0", "nan", "pilot", "hald:4", "0x10", "2", "256"]):
     put("cli_numbers", f"word-{i}", w)
+# Argument lists for the CLI set-up (NUL-separated).
+for i, args in enumerate([["convert", "a.cube", "b.nutexb", "--size", "16", "--interp", "trilinear"],
+                          ["neutral", "out.png", "--size", "33", "--bit-depth", "16", "--layout", "unity"],
+                          ["info", "in.3dl", "--size", "65", "--json"],
+                          ["convert", "a.cube", "b.png", "--bit-depth=8", "--dither", "--size=256"]]):
+    put("cli_numbers", f"args-{i}", "\0".join(args))
