@@ -1,0 +1,111 @@
+#include "LutView.h"
+
+#include "PreviewScheduler.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace lut::gui {
+
+// Draws the strip scaled to the widget width, nearest neighbour, keeping its aspect.
+class StripWidget : public QWidget {
+public:
+    explicit StripWidget(QWidget* parent) : QWidget(parent) {
+        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+        setMinimumHeight(40);
+    }
+    void setImage(QImage img) {
+        m_image = std::move(img);
+        updateGeometry();
+        update();
+    }
+    const QImage& image() const { return m_image; }
+    bool hasHeightForWidth() const override { return true; }
+    int heightForWidth(int w) const override {
+        if (m_image.isNull()) return 40;
+        return std::max(24, static_cast<int>(std::lround(double(w) * m_image.height() / m_image.width())));
+    }
+    QSize sizeHint() const override { return {320, heightForWidth(320)}; }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter p(this);
+        p.fillRect(rect(), QColor(0x20, 0x20, 0x20));
+        if (m_image.isNull()) return;
+        const double s = std::min(double(width()) / m_image.width(), double(height()) / m_image.height());
+        const QSizeF sz(m_image.width() * s, m_image.height() * s);
+        const QRectF r(QPointF((width() - sz.width()) / 2, (height() - sz.height()) / 2), sz);
+        p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+        p.drawImage(r, m_image);
+    }
+
+private:
+    QImage m_image;
+};
+
+LutView::LutView(QWidget* parent) : QWidget(parent) {
+    auto* v = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    m_layout = new QComboBox(this);
+    for (LutLayout l : allLayouts()) m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
+    m_layout->setToolTip(tr("Layout of the slices (see docs/strip-layouts.md)"));
+    form->addRow(tr("Layout"), m_layout);
+    v->addLayout(form);
+    m_strip = new StripWidget(this);
+    v->addWidget(m_strip);
+    m_info = new QLabel(this);
+    m_info->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_info->setWordWrap(true);
+    v->addWidget(m_info);
+    v->addStretch(1);
+    connect(m_layout, &QComboBox::currentIndexChanged, this, [this] { refresh(); });
+}
+
+LutLayout LutView::layout() const { return static_cast<LutLayout>(m_layout->currentData().toInt()); }
+
+const QImage& LutView::stripImage() const { return m_strip->image(); }
+
+void LutView::setLut(const Lut3D& lut, const QString& origin) {
+    m_lut = lut;
+    m_origin = origin;
+    refresh();
+}
+
+void LutView::refresh() {
+    if (m_lut.empty()) {
+        m_strip->setImage({});
+        m_info->clear();
+        return;
+    }
+    QString note;
+    try {
+        m_strip->setImage(toDisplayImage(lutToImage(m_lut, layout())));
+    } catch (const std::exception& e) { // Hald needs N = L^2
+        m_strip->setImage({});
+        note = QStringLiteral("<br><i>%1</i>").arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+    }
+    const glm::vec3 dmin = m_lut.domainMin(), dmax = m_lut.domainMax();
+    const auto range = m_lut.valueRange();
+    const float dev = m_lut.maxDeviationFromIdentity();
+    const int n = m_lut.size();
+    m_info->setText(
+        tr("<b>Size</b> %1 (%2 entries)<br><b>Domain</b> [%3 %4 %5] .. [%6 %7 %8]<br>"
+           "<b>Title</b> %9<br><b>Neutral</b> %10<br><b>Values</b> %11 .. %12<br><b>From</b> %13")
+            .arg(QString::number(n) + QChar(0x00B3))
+            .arg(qulonglong(m_lut.entryCount()))
+            .arg(dmin.x).arg(dmin.y).arg(dmin.z)
+            .arg(dmax.x).arg(dmax.y).arg(dmax.z)
+            .arg(m_lut.title().empty() ? tr("(none)") : QString::fromStdString(m_lut.title()).toHtmlEscaped())
+            .arg(dev <= 1e-6f ? tr("yes") : tr("no (max deviation %1)").arg(double(dev), 0, 'g', 3))
+            .arg(double(range.first), 0, 'g', 4)
+            .arg(double(range.second), 0, 'g', 4)
+            .arg(m_origin.toHtmlEscaped()) +
+        note);
+}
+
+} // namespace lut::gui

@@ -1,0 +1,35 @@
+#pragma once
+// The LUT panel: the N slices of the effective LUT as a strip in a chosen layout
+// (lut::lutToImage), scaled with nearest-neighbour so every entry stays a visible square, and
+// the LUT's facts (size, domain, title, neutral or not, value range).
+#include "lut/Layout.h"
+#include "lut/Lut3D.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+
+namespace lut::gui {
+
+class StripWidget;
+
+class LutView : public QWidget {
+    Q_OBJECT
+public:
+    explicit LutView(QWidget* parent = nullptr);
+    void setLut(const Lut3D& lut, const QString& origin);
+    LutLayout layout() const;
+    const QImage& stripImage() const;
+
+private:
+    void refresh();
+
+    QComboBox* m_layout;
+    StripWidget* m_strip;
+    QLabel* m_info;
+    Lut3D m_lut;
+    QString m_origin;
+};
+
+} // namespace lut::gui

@@ -1,0 +1,91 @@
+#include "PreviewScheduler.h"
+
+#include "lut/Quantize.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace lut::gui {
+
+QImage toDisplayImage(const Image& image) {
+    QImage out(image.width(), image.height(), QImage::Format_RGBX8888);
+    for (int y = 0; y < image.height(); ++y) {
+        const float* src = image.pixel(0, y);
+        uchar* dst = out.scanLine(y);
+        for (int x = 0; x < image.width(); ++x) {
+            dst[4 * x + 0] = toUnorm8(src[4 * x + 0]);
+            dst[4 * x + 1] = toUnorm8(src[4 * x + 1]);
+            dst[4 * x + 2] = toUnorm8(src[4 * x + 2]);
+            dst[4 * x + 3] = 255;
+        }
+    }
+    return out;
+}
+
+PreviewScheduler::PreviewScheduler(QObject* parent) : QObject(parent) {
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &PreviewScheduler::onFinished);
+}
+
+PreviewScheduler::~PreviewScheduler() { m_watcher.waitForFinished(); }
+
+quint64 PreviewScheduler::request(PreviewJob job) {
+    job.serial = ++m_serial;
+    if (m_running) {
+        m_pending = std::move(job);
+        m_hasPending = true;
+    } else {
+        start(std::move(job));
+    }
+    return m_serial;
+}
+
+void PreviewScheduler::start(PreviewJob job) {
+    m_running = true;
+    m_watcher.setFuture(QtConcurrent::run([job = std::move(job)]() {
+        auto frame = std::make_shared<PreviewFrame>();
+        frame->proxyFactor = job.proxyFactor;
+        frame->serial = job.serial;
+        QElapsedTimer timer;
+        timer.start();
+        try {
+            if (job.scene && !job.scene->empty()) {
+                PreviewResult r = renderPreview(*job.scene, job.options, job.lut);
+                frame->image = std::move(r.image);
+                frame->milliseconds = r.milliseconds;
+                frame->report = QString::fromStdString(r.report);
+                frame->display = toDisplayImage(frame->image);
+            }
+        } catch (const std::exception& e) {
+            frame->error = QString::fromUtf8(e.what());
+        }
+        frame->totalMilliseconds = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+        return std::shared_ptr<const PreviewFrame>(std::move(frame));
+    }));
+}
+
+void PreviewScheduler::onFinished() {
+    m_running = false;
+    auto frame = m_watcher.result();
+    if (m_hasPending) {
+        m_hasPending = false;
+        start(std::move(m_pending));
+        m_pending = {};
+    }
+    emit frameReady(frame);
+    if (!isBusy()) emit idle();
+}
+
+void PreviewScheduler::waitForIdle() {
+    while (isBusy()) {
+        QEventLoop loop;
+        connect(this, &PreviewScheduler::idle, &loop, &QEventLoop::quit);
+        // The frame may have finished before the loop ran.
+        if (!isBusy()) break;
+        loop.exec();
+    }
+    QCoreApplication::processEvents();
+}
+
+} // namespace lut::gui

@@ -1,0 +1,134 @@
+// lutkit-editor: the Qt 6 LUT editor.
+//   lutkit-editor [IMAGE [LUT]]
+//   lutkit-editor --screenshot OUT.png [IMAGE [LUT]]   render the window offscreen, save, exit
+//   lutkit-editor --save-preview OUT.png IMAGE [LUT]   write the preview image like lutkit preview
+#include "Document.h"
+#include "MainWindow.h"
+#include "PreviewRenderer.h"
+
+#include "lut/Interpolation.h"
+#include "lut/formats/Registry.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QPalette>
+#include <QSaveFile>
+#include <QStyleFactory>
+#include <QTimer>
+
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+void applyDarkTheme(QApplication& app) {
+    app.setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    QPalette p;
+    const QColor window(0x35, 0x36, 0x3a), base(0x25, 0x26, 0x29), text(0xe6, 0xe6, 0xe6);
+    p.setColor(QPalette::Window, window);
+    p.setColor(QPalette::WindowText, text);
+    p.setColor(QPalette::Base, base);
+    p.setColor(QPalette::AlternateBase, window);
+    p.setColor(QPalette::ToolTipBase, base);
+    p.setColor(QPalette::ToolTipText, text);
+    p.setColor(QPalette::Text, text);
+    p.setColor(QPalette::Button, window);
+    p.setColor(QPalette::ButtonText, text);
+    p.setColor(QPalette::BrightText, Qt::red);
+    p.setColor(QPalette::Highlight, QColor(0x3d, 0x8e, 0xe6));
+    p.setColor(QPalette::HighlightedText, Qt::white);
+    p.setColor(QPalette::PlaceholderText, QColor(0x8a, 0x8a, 0x8a));
+    p.setColor(QPalette::Disabled, QPalette::Text, QColor(0x80, 0x80, 0x80));
+    p.setColor(QPalette::Disabled, QPalette::ButtonText, QColor(0x80, 0x80, 0x80));
+    p.setColor(QPalette::Disabled, QPalette::WindowText, QColor(0x80, 0x80, 0x80));
+    app.setPalette(p);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    // Headless modes need a platform before QApplication exists.
+    bool headless = false;
+    for (int i = 1; i < argc; ++i)
+        if (!std::strncmp(argv[i], "--screenshot", 12) || !std::strncmp(argv[i], "--save-preview", 14))
+            headless = true;
+    if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("lutkit"));
+    QApplication::setApplicationName(QStringLiteral("lutkit-editor"));
+    QApplication::setApplicationVersion(QStringLiteral("0.1"));
+    applyDarkTheme(app);
+    lut::formats::registerBuiltinFormats();
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Preview a colour grading LUT on a screenshot as the game shows it, adjust it "
+                       "and export it."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("image"), QStringLiteral("Screenshot or render to preview."), QStringLiteral("[IMAGE"));
+    parser.addPositionalArgument(QStringLiteral("lut"), QStringLiteral("LUT file (any format lutkit reads)."), QStringLiteral("[LUT]]"));
+    QCommandLineOption shotOpt(QStringLiteral("screenshot"), QStringLiteral("Render the window offscreen once the preview is ready, save it to FILE and exit."), QStringLiteral("FILE"));
+    QCommandLineOption saveOpt(QStringLiteral("save-preview"), QStringLiteral("Write the full-resolution preview image to FILE (as lutkit preview does) and exit."), QStringLiteral("FILE"));
+    QCommandLineOption presetOpt(QStringLiteral("preset"), QStringLiteral("Preview preset: smash, pilot or none (default smash)."), QStringLiteral("NAME"), QStringLiteral("smash"));
+    QCommandLineOption interpOpt(QStringLiteral("interpolation"), QStringLiteral("LUT interpolation: trilinear, tetrahedral or nearest."), QStringLiteral("NAME"), QStringLiteral("trilinear"));
+    QCommandLineOption noBloomOpt(QStringLiteral("no-bloom"), QStringLiteral("Switch bloom off."));
+    QCommandLineOption noLutOpt(QStringLiteral("no-lut"), QStringLiteral("Preview with a neutral LUT."));
+    QCommandLineOption noBrightenOpt(QStringLiteral("no-brighten"), QStringLiteral("Switch the Smash brighten pass off."));
+    QCommandLineOption sizeOpt(QStringLiteral("window-size"), QStringLiteral("Window size WxH (default 1480x920)."), QStringLiteral("WxH"));
+    QCommandLineOption verboseOpt(QStringLiteral("verbose"), QStringLiteral("Log each preview update's time to stderr."));
+    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, verboseOpt});
+    parser.process(app);
+
+    lut::gui::MainWindow window;
+    window.setVerbose(parser.isSet(verboseOpt));
+    window.setInteractiveErrors(!headless);
+
+    lut::gui::PreviewOptions options;
+    try {
+        options.preset = lut::parsePreset(parser.value(presetOpt).toStdString());
+        options.interpolation = lut::parseInterpolation(parser.value(interpOpt).toStdString());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lutkit-editor: %s\n", e.what());
+        return 2;
+    }
+    options.bloom = !parser.isSet(noBloomOpt);
+    options.lutEnabled = !parser.isSet(noLutOpt);
+    options.brighten = !parser.isSet(noBrightenOpt);
+    window.setPreviewOptions(options);
+    if (parser.isSet(sizeOpt)) {
+        const QStringList wh = parser.value(sizeOpt).split('x');
+        if (wh.size() == 2) window.resize(wh[0].toInt(), wh[1].toInt());
+    }
+
+    const QStringList args = parser.positionalArguments();
+    if (args.size() > 2) {
+        std::fprintf(stderr, "lutkit-editor: expected at most IMAGE and LUT\n");
+        return 2;
+    }
+    bool ok = true;
+    if (args.size() >= 1) ok = window.openImageFile(args[0]) && ok;
+    if (args.size() >= 2) ok = window.openLutFile(args[1]) && ok;
+    if (headless && !ok) return 1;
+
+    window.show();
+    if (!headless) return app.exec();
+
+    if (parser.isSet(saveOpt) && !window.savePreviewImage(parser.value(saveOpt))) return 1;
+    if (parser.isSet(shotOpt)) {
+        window.waitForPreview();
+        QApplication::processEvents();
+        const QImage shot = window.grab().toImage();
+        QSaveFile out(parser.value(shotOpt)); // atomic: temporary file renamed on commit
+        if (!out.open(QIODevice::WriteOnly) || !shot.save(&out, "PNG") || !out.commit()) {
+            std::fprintf(stderr, "lutkit-editor: cannot write %s\n", qPrintable(parser.value(shotOpt)));
+            return 1;
+        }
+        if (parser.isSet(verboseOpt))
+            std::fprintf(stderr, "screenshot %dx%d written to %s\n", shot.width(), shot.height(),
+                         qPrintable(parser.value(shotOpt)));
+    }
+    return 0;
+}

@@ -1,0 +1,55 @@
+#pragma once
+// The editable adjustment parameters as data: one id per number in lut::Adjustments, with the
+// label, range and default the editor's sliders use. Plain C++ (no Qt).
+#include "lut/Adjust.h"
+
+#include <string>
+#include <vector>
+
+namespace lut::gui {
+
+enum class AdjustParam {
+    Exposure,
+    Contrast,
+    Saturation,
+    Temperature,
+    Tint,
+    LiftMaster,
+    LiftR,
+    LiftG,
+    LiftB,
+    GammaMaster,
+    GammaR,
+    GammaG,
+    GammaB,
+    GainMaster,
+    GainR,
+    GainG,
+    GainB,
+};
+
+struct AdjustParamInfo {
+    AdjustParam id;
+    std::string key;   // stable name for settings and logs: "exposure", "lift.r", ...
+    std::string label; // what the editor shows
+    std::string group; // "Tone", "White balance", "Lift", "Gamma", "Gain"
+    double min;
+    double max;
+    double defaultValue;
+    int decimals;
+    bool logScale;     // slider moves in log space (gamma, gain multipliers)
+};
+
+// Every parameter, in the order the editor shows them.
+const std::vector<AdjustParamInfo>& adjustParams();
+const AdjustParamInfo& adjustParamInfo(AdjustParam id);
+
+double getParam(const Adjustments& a, AdjustParam id);
+void setParam(Adjustments& a, AdjustParam id, double value);
+
+// Slider position (0..steps) <-> value, linear or logarithmic per parameter; values are clamped
+// to the parameter's range.
+int paramToSlider(const AdjustParamInfo& info, double value, int steps);
+double sliderToParam(const AdjustParamInfo& info, int position, int steps);
+
+} // namespace lut::gui

@@ -1,0 +1,49 @@
+#pragma once
+// The editor's preview: the same lutlib pipeline `lutkit preview` runs (lut/pipeline/Pipeline.h),
+// as plain C++ so the document model and tests can use it without widgets. The worker thread in
+// the app calls render(); everything here is re-entrant (no shared mutable state).
+#include "lut/Image.h"
+#include "lut/Interpolation.h"
+#include "lut/Lut3D.h"
+#include "lut/pipeline/Pipeline.h"
+
+#include <memory>
+#include <string>
+
+namespace lut::gui {
+
+struct PreviewOptions {
+    Preset preset = Preset::Smash;
+    bool bloom = true;
+    bool lutEnabled = true;   // off: the pipeline runs with a neutral LUT
+    bool brighten = true;     // smash-grade's brighten pass (only where the pipeline offers it)
+    Interpolation interpolation = Interpolation::Trilinear;
+    bool operator==(const PreviewOptions&) const = default;
+};
+
+// The scene frame the pipeline starts from, made once per opened image: stored values of
+// 8/16-bit files are sRGB-decoded to linear, float files (EXR) are already linear scene values.
+// Same call the CLI makes (lut::prepareSceneFrame).
+Image prepareScene(const Image& stored, bool storedIsLinear, int nthreads = 0);
+
+// What a preview settings choice means for the pipeline.
+PipelineSettings pipelineSettings(const PreviewOptions& options,
+                                  std::shared_ptr<const Lut3D> lut);
+// Whether the pipeline lets the brighten pass be switched off (the toggle is disabled if not).
+bool brightenToggleAvailable();
+
+struct PreviewResult {
+    Image image;              // display-encoded RGBA float, what `lutkit preview` writes
+    double milliseconds = 0.0; // wall time of the pipeline run
+    std::string report;       // PipelineReport::str()
+};
+
+// Runs the pipeline on a copy of `scene` (the prepared linear frame).
+PreviewResult renderPreview(const Image& scene, const PreviewOptions& options,
+                            std::shared_ptr<const Lut3D> lut, int nthreads = 0);
+
+// A box-filtered copy of `image` reduced by an integer factor (>= 1) in each direction: the
+// proxy the editor previews on while a slider is being dragged.
+Image downscale(const Image& image, int factor);
+
+} // namespace lut::gui
