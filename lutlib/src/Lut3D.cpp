@@ -18,14 +18,15 @@ Lut3D::Lut3D(int size) {
 
 Lut3D Lut3D::identity(int size) {
     Lut3D l(size);
-    const float inv = 1.0f / static_cast<float>(size - 1);
+    // i/(N-1) as a correctly rounded division (not i * (1/(N-1)), which is off by an ulp for
+    // some i), so entries equal latticeInput() and the last entry is exactly 1.
+    std::vector<float> v(static_cast<std::size_t>(size));
+    for (int i = 0; i < size; ++i) v[static_cast<std::size_t>(i)] = static_cast<float>(i) / static_cast<float>(size - 1);
     for (int b = 0; b < size; ++b)
         for (int g = 0; g < size; ++g)
             for (int r = 0; r < size; ++r)
-                // i/(N-1) computed as a division so that the last entry is exactly 1.
-                l.at(r, g, b) = glm::vec3(r == size - 1 ? 1.0f : static_cast<float>(r) * inv,
-                                          g == size - 1 ? 1.0f : static_cast<float>(g) * inv,
-                                          b == size - 1 ? 1.0f : static_cast<float>(b) * inv);
+                l.at(r, g, b) = glm::vec3(v[static_cast<std::size_t>(r)], v[static_cast<std::size_t>(g)],
+                                          v[static_cast<std::size_t>(b)]);
     return l;
 }
 
