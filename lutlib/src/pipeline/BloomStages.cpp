@@ -1,0 +1,362 @@
+// Bloom stages. Each builds its bloom image in prepare() (reading the sanitized frame) and adds it
+// in processRows(). Exact zeros are never added, so a bloom that finds nothing leaves the frame
+// bit-identical (what makes skipping safe).
+#include "StageDetail.h"
+#include "Tables.h"
+#include "lut/pipeline/SmashGrading.h"
+
+namespace lut::detail {
+
+namespace {
+
+// Base for blooms that keep a full-resolution RGB bloom image.
+class FullResBloom : public Stage {
+public:
+    bool needsPrepare() const override { return true; }
+    bool inspectsColor() const override { return true; }
+    void finish() override { m_bloom = RgbBuffer(); }
+    void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
+        if (m_bloom.w != f.width || m_bloom.h != f.height) return;
+        for (int y = y0; y < y1; ++y) {
+            float* p = f.row(y);
+            for (int x = 0; x < f.width; ++x, p += 4) addRgb(p, m_bloom.at(x, y));
+        }
+    }
+
+protected:
+    RgbBuffer m_bloom;
+};
+
+// Lecture: subtract (1,1,1), clamp at 0, Gaussian blur, add.
+class HdrBloomStage final : public FullResBloom {
+public:
+    HdrBloomStage() {
+        addParam(&m_threshold, "threshold", 1.0f, 0.0f, 1.0e4f, "subtracted before the blur");
+        addParam(&m_sigma, "sigma", 6.0f, 0.5f, 64.0f, "Gaussian sigma in pixels");
+        addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom");
+    }
+    const char* name() const override { return "hdr-bloom"; }
+    const char* description() const override { return "lecture HDR bloom: max(x - 1, 0), Gaussian, add"; }
+    bool canChange(const ImageView& f, int nthreads) const override {
+        if (!(m_strength > 0.0f)) return false;
+        const float th = m_threshold;
+        return anyPixel(f, nthreads, [th](const float* p) { return p[0] > th || p[1] > th || p[2] > th; });
+    }
+    void prepare(const ImageView& f, const StageContext& ctx) override {
+        m_bloom.resize(f.width, f.height);
+        parallelFor(f.height, ctx.nthreads, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y) {
+                const float* p = f.row(y);
+                for (int x = 0; x < f.width; ++x, p += 4) {
+                    float* o = m_bloom.at(x, y);
+                    for (int c = 0; c < 3; ++c) o[c] = std::max(p[c] - m_threshold, 0.0f) * m_strength;
+                }
+            }
+        });
+        separableBlur(m_bloom, gaussianWeights(m_sigma), ctx.nthreads);
+    }
+
+private:
+    float m_threshold = 1.0f, m_sigma = 6.0f, m_strength = 1.0f;
+};
+
+// Pilot homework: luminance soft-knee filter, separable 9-tap Gaussian (0.227027, 0.1945946,
+// 0.1216216, 0.054054, 0.016216) horizontal then vertical, `passes` times, add.
+// Soft knee (the usual quadratic knee): with k = threshold * knee,
+//   soft = clamp(l - threshold + k, 0, 2k)^2 / (4k),  weight = max(soft, l - threshold) / l.
+class FilterBloomStage final : public FullResBloom {
+public:
+    FilterBloomStage() {
+        addParam(&m_threshold, "threshold", 0.8f, 0.0f, 1.0e4f, "luminance threshold");
+        addParam(&m_knee, "knee", 0.5f, 0.0f, 1.0f, "soft knee width, fraction of the threshold");
+        addParam(&m_passes, "passes", 2.0f, 1.0f, 32.0f, "blur passes");
+        addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom");
+    }
+    const char* name() const override { return "filter-bloom"; }
+    const char* description() const override {
+        return "Pilot bloom: luminance soft-knee filter, separable 9-tap Gaussian, add";
+    }
+    float weight(float l) const {
+        const float k = m_threshold * m_knee;
+        float soft = std::clamp(l - m_threshold + k, 0.0f, 2.0f * k);
+        soft = k > 0.0f ? soft * soft / (4.0f * k) : 0.0f;
+        const float w = std::max(soft, l - m_threshold);
+        return w > 0.0f ? w / std::max(l, 1e-5f) : 0.0f;
+    }
+    bool canChange(const ImageView& f, int nthreads) const override {
+        if (!(m_strength > 0.0f)) return false;
+        return anyPixel(f, nthreads, [this](const float* p) {
+            return weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) > 0.0f;
+        });
+    }
+    void prepare(const ImageView& f, const StageContext& ctx) override {
+        m_bloom.resize(f.width, f.height);
+        parallelFor(f.height, ctx.nthreads, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y) {
+                const float* p = f.row(y);
+                for (int x = 0; x < f.width; ++x, p += 4) {
+                    const float w = weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) * m_strength;
+                    float* o = m_bloom.at(x, y);
+                    for (int c = 0; c < 3; ++c) o[c] = p[c] * w;
+                }
+            }
+        });
+        static const std::vector<float> kWeights = {0.227027f, 0.1945946f, 0.1216216f, 0.054054f, 0.016216f};
+        for (int i = 0; i < static_cast<int>(m_passes); ++i) separableBlur(m_bloom, kWeights, ctx.nthreads);
+    }
+
+private:
+    float m_threshold = 0.8f, m_knee = 0.5f, m_passes = 2.0f, m_strength = 1.0f;
+};
+
+// Sugar (../seeds/002): i = max(r, g, b) - th (>= 0); source = C * i; dilation (max filter);
+// Gaussian through a mip pyramid (the average of the 2x2-box mip levels, each upsampled
+// bilinearly); out = C * f0 + blur * clamp(1 - i, 0, 1) * f1.
+class SugarBloomStage final : public FullResBloom {
+public:
+    SugarBloomStage() {
+        addParam(&m_threshold, "threshold", 0.8f, 0.0f, 1.0e4f, "intensity threshold th");
+        addParam(&m_dilate, "dilate", 1.0f, 0.0f, 8.0f, "dilation radius in pixels");
+        addParam(&m_levels, "levels", 5.0f, 1.0f, 10.0f, "mip levels averaged by the blur");
+        addParam(&m_f0, "f0", 1.0f, 0.0f, 10.0f, "weight of the base image");
+        addParam(&m_f1, "f1", 1.0f, 0.0f, 100.0f, "weight of the blurred halo");
+    }
+    const char* name() const override { return "sugar-bloom"; }
+    const char* description() const override {
+        return "Sugar bloom: threshold on intensity, dilation, mip-pyramid blur, C*f0 + B*(1-i)*f1";
+    }
+    bool canChange(const ImageView& f, int nthreads) const override {
+        if (m_f0 != 1.0f) return true;
+        if (!(m_f1 > 0.0f)) return false;
+        const float th = m_threshold;
+        return anyPixel(f, nthreads, [th](const float* p) { return std::max({p[0], p[1], p[2]}) - th > 0.0f; });
+    }
+    void prepare(const ImageView& f, const StageContext& ctx) override {
+        const int W = f.width, H = f.height;
+        RgbBuffer src;
+        src.resize(W, H);
+        parallelFor(H, ctx.nthreads, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y) {
+                const float* p = f.row(y);
+                for (int x = 0; x < W; ++x, p += 4) {
+                    const float i = std::max(std::max({p[0], p[1], p[2]}) - m_threshold, 0.0f);
+                    float* o = src.at(x, y);
+                    for (int c = 0; c < 3; ++c) o[c] = p[c] * i;
+                }
+            }
+        });
+        // Dilation: separable max filter (a square window).
+        const int r = static_cast<int>(m_dilate);
+        if (r > 0) {
+            RgbBuffer tmp;
+            tmp.resize(W, H);
+            for (int pass = 0; pass < 2; ++pass) {
+                RgbBuffer& in = pass == 0 ? src : tmp;
+                RgbBuffer& out = pass == 0 ? tmp : src;
+                parallelFor(H, ctx.nthreads, [&](int y0, int y1) {
+                    for (int y = y0; y < y1; ++y)
+                        for (int x = 0; x < W; ++x) {
+                            float m[3] = {-3.0e38f, -3.0e38f, -3.0e38f};
+                            for (int k = -r; k <= r; ++k) {
+                                const float* q = pass == 0 ? in.at(std::clamp(x + k, 0, W - 1), y)
+                                                           : in.at(x, std::clamp(y + k, 0, H - 1));
+                                for (int c = 0; c < 3; ++c) m[c] = std::max(m[c], q[c]);
+                            }
+                            float* o = out.at(x, y);
+                            for (int c = 0; c < 3; ++c) o[c] = m[c];
+                        }
+                });
+            }
+        }
+        // Mip pyramid; the blur is the mean of all levels upsampled bilinearly to full size.
+        std::vector<RgbBuffer> mips;
+        mips.push_back(std::move(src));
+        for (int l = 1; l < static_cast<int>(m_levels) && (mips.back().w > 1 || mips.back().h > 1); ++l) {
+            RgbBuffer next;
+            resampleBilinear(mips.back(), next, std::max(1, mips.back().w / 2), std::max(1, mips.back().h / 2),
+                             ctx.nthreads);
+            mips.push_back(std::move(next));
+        }
+        const float wl = m_f1 / static_cast<float>(mips.size());
+        m_bloom.resize(W, H);
+        std::vector<Axis> ax, ay;
+        for (const auto& m : mips) {
+            ax.push_back(makeAxis(W, m.w));
+            ay.push_back(makeAxis(H, m.h));
+        }
+        parallelFor(H, ctx.nthreads, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y) {
+                const float* p = f.row(y);
+                for (int x = 0; x < W; ++x, p += 4) {
+                    float acc[3] = {0, 0, 0};
+                    for (std::size_t l = 0; l < mips.size(); ++l) bilinearAdd(mips[l], ax[l], x, ay[l], y, wl, acc);
+                    const float i = std::max(std::max({p[0], p[1], p[2]}) - m_threshold, 0.0f);
+                    const float k = clamp01(1.0f - i);
+                    float* o = m_bloom.at(x, y);
+                    for (int c = 0; c < 3; ++c) o[c] = acc[c] * k;
+                }
+            }
+        });
+    }
+    void processRows(const ImageView& f, int y0, int y1, const StageContext& ctx) const override {
+        if (m_f0 != 1.0f)
+            for (int y = y0; y < y1; ++y) {
+                float* p = f.row(y);
+                for (int x = 0; x < f.width; ++x, p += 4) {
+                    p[0] *= m_f0;
+                    p[1] *= m_f0;
+                    p[2] *= m_f0;
+                }
+            }
+        FullResBloom::processRows(f, y0, y1, ctx);
+    }
+
+private:
+    float m_threshold = 0.8f, m_dilate = 1.0f, m_levels = 5.0f, m_f0 = 1.0f, m_f1 = 1.0f;
+};
+
+// Smash Ultimate bloom, docs/smash-pipeline.md section 1. Texel-centre convention (GPU): texel i
+// of a w-texel image is centred at u = (i + 0.5) / w; sampling image B (size wb) at u reads texel
+// coordinate u * wb - 0.5 bilinearly with clamp to edge. Sizes: quarter = max(1, W/4) (integer
+// division, as render-target sizes are), each blur level max(1, previous/2).
+class SmashBloomStage final : public Stage {
+public:
+    SmashBloomStage() {
+        addParam(&m_threshold, "threshold", kSmashBloomThreshold, 0.0f, 1.0f, "brightness threshold (0.4625)");
+        addParam(&m_gain, "gain", kSmashBloomGain, 0.0f, 100.0f, "threshold gain (6.0)");
+        addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom (1 = game)");
+    }
+    const char* name() const override { return "smash-bloom"; }
+    const char* description() const override {
+        return "Smash bloom: 1/4-res threshold, 4 blur levels, weighted combine, pow 2.2, upsample, add";
+    }
+    bool needsPrepare() const override { return true; }
+    bool inspectsColor() const override { return true; }
+    bool canChange(const ImageView& f, int nthreads) const override {
+        if (!(m_strength > 0.0f) || !(m_gain > 0.0f)) return false;
+        // The threshold image is zero unless some bilinear sample has a clamped component above
+        // the threshold and some alpha above 0; both need such texels to exist.
+        const float th = m_threshold;
+        const bool bright = anyPixel(f, nthreads, [th](const float* p) {
+            return std::max({clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), kSmashBloomMinComponent}) - th > 0.0f;
+        });
+        return bright && anyPixel(f, nthreads, [](const float* p) { return p[3] > 0.0f; });
+    }
+    void prepare(const ImageView& f, const StageContext& ctx) override {
+        const int W = f.width, H = f.height;
+        const int w4 = std::max(1, W / 4), h4 = std::max(1, H / 4);
+        // 1. threshold at quarter resolution
+        RgbBuffer level;
+        level.resize(w4, h4);
+        {
+            const Axis ax = makeAxis(w4, W), ay = makeAxis(h4, H);
+            parallelFor(h4, ctx.nthreads, [&](int j0, int j1) {
+                for (int j = j0; j < j1; ++j)
+                    for (int i = 0; i < w4; ++i) {
+                        const float tx = ax.t[i], ty = ay.t[j];
+                        const float* p00 = f.pixel(ax.i0[i], ay.i0[j]);
+                        const float* p10 = f.pixel(ax.i1[i], ay.i0[j]);
+                        const float* p01 = f.pixel(ax.i0[i], ay.i1[j]);
+                        const float* p11 = f.pixel(ax.i1[i], ay.i1[j]);
+                        float s[4];
+                        for (int c = 0; c < 4; ++c) {
+                            const float top = p00[c] + (p10[c] - p00[c]) * tx;
+                            const float bot = p01[c] + (p11[c] - p01[c]) * tx;
+                            s[c] = top + (bot - top) * ty;
+                        }
+                        const float cr = clamp01(s[0]), cg = clamp01(s[1]), cb = clamp01(s[2]);
+                        const float m = std::max({cr, cg, cb, kSmashBloomMinComponent});
+                        const float k = std::max(m - m_threshold, 0.0f) * m_gain * clamp01(s[3]);
+                        float* o = level.at(i, j);
+                        o[0] = cr / m * k;
+                        o[1] = cg / m * k;
+                        o[2] = cb / m * k;
+                    }
+            });
+        }
+        // 2. four blur levels, each half the size of its input, 3x3 [1 2 1] kernel, taps one
+        //    input texel apart, bilinear.
+        RgbBuffer levels[4];
+        const RgbBuffer* in = &level;
+        static const float kTap[3] = {0.25f, 0.5f, 0.25f};
+        for (int l = 0; l < 4; ++l) {
+            const int wo = std::max(1, in->w / 2), ho = std::max(1, in->h / 2);
+            RgbBuffer& out = levels[l];
+            out.resize(wo, ho);
+            Axis ax[3], ay[3];
+            for (int d = 0; d < 3; ++d) {
+                ax[d] = makeAxis(wo, in->w, d - 1.0);
+                ay[d] = makeAxis(ho, in->h, d - 1.0);
+            }
+            parallelFor(ho, ctx.nthreads, [&](int j0, int j1) {
+                for (int j = j0; j < j1; ++j)
+                    for (int i = 0; i < wo; ++i) {
+                        float acc[3] = {0, 0, 0};
+                        for (int dy = 0; dy < 3; ++dy)
+                            for (int dx = 0; dx < 3; ++dx)
+                                bilinearAdd(*in, ax[dx], i, ay[dy], j, kTap[dx] * kTap[dy], acc);
+                        float* o = out.at(i, j);
+                        o[0] = acc[0];
+                        o[1] = acc[1];
+                        o[2] = acc[2];
+                    }
+            });
+            in = &out;
+        }
+        // 3. combine at quarter resolution, clamp, pow 2.2
+        m_combined.resize(w4, h4);
+        Axis cx[4], cy[4];
+        for (int l = 0; l < 4; ++l) {
+            cx[l] = makeAxis(w4, levels[l].w);
+            cy[l] = makeAxis(h4, levels[l].h);
+        }
+        const PowTable& pw = powSmashDecode();
+        parallelFor(h4, ctx.nthreads, [&](int j0, int j1) {
+            for (int j = j0; j < j1; ++j)
+                for (int i = 0; i < w4; ++i) {
+                    float b[4][3] = {};
+                    for (int l = 0; l < 4; ++l) bilinearAdd(levels[l], cx[l], i, cy[l], j, 1.0f, b[l]);
+                    float* o = m_combined.at(i, j);
+                    for (int c = 0; c < 3; ++c) {
+                        const float sum = kSmashBloomWeights[0] * b[0][c] + kSmashBloomWeights[1] * b[1][c] +
+                                          kSmashBloomWeights[2] * b[2][c] + kSmashBloomWeights[3] * b[3][c];
+                        o[c] = pw(clamp01(sum)) * m_strength;
+                    }
+                }
+        });
+        // 4. upsample axes for processRows
+        m_ax = makeAxis(W, w4);
+        m_ay = makeAxis(H, h4);
+    }
+    void finish() override {
+        m_combined = RgbBuffer();
+        m_ax = Axis();
+        m_ay = Axis();
+    }
+    void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
+        if (m_combined.w == 0 || static_cast<int>(m_ax.t.size()) != f.width || static_cast<int>(m_ay.t.size()) != f.height)
+            return;
+        for (int y = y0; y < y1; ++y) {
+            float* p = f.row(y);
+            for (int x = 0; x < f.width; ++x, p += 4) {
+                float b[3] = {0, 0, 0};
+                bilinearAdd(m_combined, m_ax, x, m_ay, y, 1.0f, b);
+                addRgb(p, b);
+            }
+        }
+    }
+
+private:
+    float m_threshold = kSmashBloomThreshold, m_gain = kSmashBloomGain, m_strength = 1.0f;
+    RgbBuffer m_combined;
+    Axis m_ax, m_ay;
+};
+
+} // namespace
+
+std::unique_ptr<Stage> makeHdrBloomStage() { return std::make_unique<HdrBloomStage>(); }
+std::unique_ptr<Stage> makeFilterBloomStage() { return std::make_unique<FilterBloomStage>(); }
+std::unique_ptr<Stage> makeSugarBloomStage() { return std::make_unique<SugarBloomStage>(); }
+std::unique_ptr<Stage> makeSmashBloomStage() { return std::make_unique<SmashBloomStage>(); }
+
+} // namespace lut::detail

@@ -1,0 +1,151 @@
+// LUT stages: the Smash grading pass (with an optional fused sRGB display encode) and a generic
+// LUT stage.
+#include "StageDetail.h"
+#include "Tables.h"
+#include "lut/pipeline/SmashGrading.h"
+
+#include <cstring>
+
+namespace lut::detail {
+
+namespace {
+
+std::shared_ptr<const Lut3D> neutralSmashLut() {
+    static const auto l = std::make_shared<const Lut3D>(Lut3D::identity(kSmashLutSize));
+    return l;
+}
+
+// docs/smash-pipeline.md section 2: per pixel, s = x^0.454545; L = trilinear(lut, s);
+// r = ((L - s) * 0.99961 + s) * 1.3703; g = r^2.2; out = mix(x, g, clamp(alpha, 0, 1)).
+// The pow()s are table pows (FastMath.h, < 3e-7 relative); the LUT goes through the sampler's
+// row kernel. When the pipeline fuses the display encode into this pass, the output is
+// srgbEncodeFast(out) -- the same function the display stage uses, so fused == unfused for
+// pixels this stage leaves alone.
+class SmashGradeStage final : public LutStage {
+public:
+    SmashGradeStage() { setLut(nullptr, Interpolation::Trilinear); }
+    const char* name() const override { return "smash-grade"; }
+    const char* description() const override {
+        return "Smash grading: gamma 2.2 encode, LUT, brighten (0.99961, 1.3703), decode, alpha mix";
+    }
+    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) override {
+        m_lut = lut ? std::move(lut) : neutralSmashLut();
+        m_method = method;
+        m_sampler = makeSampler(*m_lut, method);
+    }
+    void copySettingsFrom(const Stage& other) override {
+        Stage::copySettingsFrom(other);
+        if (const auto* o = dynamic_cast<const SmashGradeStage*>(&other)) setLut(o->m_lut, o->m_method);
+    }
+    // Grading changes every pixel with alpha > 0 (the brighten step alone does, even for a
+    // neutral LUT); alpha 0 is left as is.
+    bool canChange(const ImageView& f, int nthreads) const override {
+        return anyPixel(f, nthreads, [](const float* p) { return p[3] > 0.0f; });
+    }
+    void setFusedDisplay(bool on) { m_fusedDisplay = on; }
+    void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
+        const PowTable& enc = powSmashEncode();
+        const PowTable& dec = powSmashDecode();
+        thread_local std::vector<float> s, l;
+        const std::size_t n = static_cast<std::size_t>(f.width) * 4;
+        s.resize(n);
+        l.resize(n);
+        for (int y = y0; y < y1; ++y) {
+            float* p = f.row(y);
+            for (std::size_t i = 0; i < n; i += 4) {
+                s[i] = enc(p[i]);
+                s[i + 1] = enc(p[i + 1]);
+                s[i + 2] = enc(p[i + 2]);
+                s[i + 3] = 1.0f;
+            }
+            std::memcpy(l.data(), s.data(), n * sizeof(float));
+            m_sampler->applyPixels(l.data(), static_cast<std::size_t>(f.width));
+            for (std::size_t i = 0; i < n; i += 4, p += 4) {
+                const float a = clamp01(p[3]);
+                if (a > 0.0f) {
+                    float g[3];
+                    for (int c = 0; c < 3; ++c) {
+                        const float r = ((l[i + c] - s[i + c]) * kSmashBrightenMix + s[i + c]) * kSmashBrightenScale;
+                        g[c] = dec(r);
+                    }
+                    if (a >= 1.0f) {
+                        p[0] = g[0];
+                        p[1] = g[1];
+                        p[2] = g[2];
+                    } else {
+                        for (int c = 0; c < 3; ++c) p[c] = p[c] * (1.0f - a) + g[c] * a;
+                    }
+                }
+                if (m_fusedDisplay)
+                    for (int c = 0; c < 3; ++c) p[c] = srgbEncodeFast(p[c]);
+            }
+        }
+    }
+
+private:
+    std::shared_ptr<const Lut3D> m_lut;
+    Interpolation m_method = Interpolation::Trilinear;
+    std::unique_ptr<Sampler> m_sampler;
+    bool m_fusedDisplay = false;
+};
+
+// Any 3D LUT with any interpolation, on linear or encoded values as the preset places it. An
+// identity LUT changes only values outside its domain (it clamps them, as every sampler does);
+// for it the stage clamps exactly instead of sampling, so skipping it is exact.
+class GenericLutStage final : public LutStage {
+public:
+    GenericLutStage() { setLut(nullptr, Interpolation::Trilinear); }
+    const char* name() const override { return "lut"; }
+    const char* description() const override { return "a 3D LUT (any size, any interpolation)"; }
+    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) override {
+        m_lut = lut ? std::move(lut) : neutralSmashLut();
+        m_method = method;
+        m_sampler = makeSampler(*m_lut, method);
+        m_identity = m_lut->isIdentity(1e-6f); // within 1e-6: treated as exact
+        m_min = m_lut->domainMin();
+        m_max = m_lut->domainMax();
+    }
+    void copySettingsFrom(const Stage& other) override {
+        Stage::copySettingsFrom(other);
+        if (const auto* o = dynamic_cast<const GenericLutStage*>(&other)) setLut(o->m_lut, o->m_method);
+    }
+    bool inspectsColor() const override { return m_identity; }
+    bool canChange(const ImageView& f, int nthreads) const override {
+        if (!m_identity) return true;
+        const glm::vec3 lo = m_min, hi = m_max;
+        return anyPixel(f, nthreads, [lo, hi](const float* p) {
+            for (int c = 0; c < 3; ++c)
+                if (!(p[c] >= lo[c] && p[c] <= hi[c])) return true;
+            return false;
+        });
+    }
+    void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
+        for (int y = y0; y < y1; ++y) {
+            float* p = f.row(y);
+            if (!m_identity) {
+                m_sampler->applyPixels(p, static_cast<std::size_t>(f.width));
+                continue;
+            }
+            for (int x = 0; x < f.width; ++x, p += 4)
+                for (int c = 0; c < 3; ++c) p[c] = std::clamp(p[c], m_min[c], m_max[c]);
+        }
+    }
+
+private:
+    std::shared_ptr<const Lut3D> m_lut;
+    Interpolation m_method = Interpolation::Trilinear;
+    std::unique_ptr<Sampler> m_sampler;
+    bool m_identity = true;
+    glm::vec3 m_min{0.0f}, m_max{1.0f};
+};
+
+} // namespace
+
+std::unique_ptr<Stage> makeSmashGradeStage() { return std::make_unique<SmashGradeStage>(); }
+std::unique_ptr<Stage> makeLutStage() { return std::make_unique<GenericLutStage>(); }
+
+void setSmashGradeFusedDisplay(Stage& grade, bool on) {
+    if (auto* g = dynamic_cast<SmashGradeStage*>(&grade)) g->setFusedDisplay(on);
+}
+
+} // namespace lut::detail

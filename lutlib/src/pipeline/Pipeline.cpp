@@ -1,0 +1,309 @@
+#include "lut/pipeline/Pipeline.h"
+
+#include "StageDetail.h"
+#include "lut/pipeline/SmashGrading.h"
+#include "lut/pipeline/Transfer.h"
+
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+
+namespace lut {
+
+const char* toString(Preset p) {
+    switch (p) {
+    case Preset::Smash: return "smash";
+    case Preset::Pilot: return "pilot";
+    case Preset::Lecture: return "lecture";
+    case Preset::None: return "none";
+    }
+    return "?";
+}
+
+Preset parsePreset(std::string_view n) {
+    if (n == "smash") return Preset::Smash;
+    if (n == "pilot") return Preset::Pilot;
+    if (n == "lecture") return Preset::Lecture;
+    if (n == "none") return Preset::None;
+    throw Error("unknown preset '" + std::string(n) + "' (expected smash, pilot, lecture or none)");
+}
+
+namespace {
+
+using Factory = std::unique_ptr<Stage> (*)();
+struct Entry {
+    const char* name;
+    Factory make;
+};
+const Entry kStages[] = {
+    {"sanitize", detail::makeSanitizeStage},
+    {"exposure", detail::makeExposureStage},
+    {"tonemap", detail::makeTonemapStage},
+    {"hdr-bloom", detail::makeHdrBloomStage},
+    {"filter-bloom", detail::makeFilterBloomStage},
+    {"sugar-bloom", detail::makeSugarBloomStage},
+    {"smash-bloom", detail::makeSmashBloomStage},
+    {"chromatic-aberration", detail::makeChromaticAberrationStage},
+    {"vignette", detail::makeVignetteStage},
+    {"grain", detail::makeGrainStage},
+    {"smash-grade", detail::makeSmashGradeStage},
+    {"lut", detail::makeLutStage},
+    {"display", detail::makeDisplayStage},
+};
+
+bool isBloom(std::string_view n) { return n.size() >= 5 && n.substr(n.size() - 5) == "bloom"; }
+
+std::vector<std::string> presetStages(Preset p) {
+    switch (p) {
+    case Preset::Smash: return {"sanitize", "smash-bloom", "smash-grade", "display"};
+    case Preset::Pilot: return {"sanitize", "tonemap", "filter-bloom", "lut", "display"};
+    case Preset::Lecture:
+        return {"sanitize", "exposure", "hdr-bloom", "chromatic-aberration", "vignette", "grain", "lut", "display"};
+    case Preset::None: return {"sanitize", "display"};
+    }
+    return {};
+}
+
+} // namespace
+
+const std::vector<std::string>& stageNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> v;
+        for (const auto& e : kStages) v.emplace_back(e.name);
+        return v;
+    }();
+    return names;
+}
+
+std::unique_ptr<Stage> makeStage(std::string_view name) {
+    for (const auto& e : kStages)
+        if (name == e.name) return e.make();
+    std::string list;
+    for (const auto& e : kStages) list += (list.empty() ? "" : ", ") + std::string(e.name);
+    throw Error("unknown stage '" + std::string(name) + "' (stages: " + list + ")");
+}
+
+Pipeline::Pipeline() : Pipeline(Preset::None) {}
+
+Pipeline::Pipeline(Preset preset) : m_preset(preset) {
+    const auto on = presetStages(preset);
+    for (const auto& e : kStages) {
+        auto s = e.make();
+        s->setEnabled(std::find(on.begin(), on.end(), e.name) != on.end());
+        m_stages.push_back(std::move(s));
+    }
+    if (preset == Preset::Pilot) {
+        stage("tonemap").setParam("curve", "aces");
+        stage("display").setParam("curve", "gamma");
+    } else if (preset == Preset::Lecture) {
+        stage("display").setParam("curve", "gamma");
+    }
+}
+
+Pipeline::Pipeline(const PipelineSettings& s) : Pipeline(s.preset) {
+    setLut(s.lut, s.interpolation);
+    if (!s.bloom) setBloom(false);
+    for (const auto& n : s.enable) setEnabled(n, true);
+    for (const auto& n : s.disable) setEnabled(n, false);
+    for (const auto& a : s.assignments) assign(a);
+}
+
+Pipeline::~Pipeline() = default;
+Pipeline::Pipeline(Pipeline&&) noexcept = default;
+Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
+
+Stage* Pipeline::find(std::string_view name) {
+    return const_cast<Stage*>(static_cast<const Pipeline*>(this)->find(name));
+}
+
+const Stage* Pipeline::find(std::string_view name) const {
+    if (name == "bloom") {
+        // The preset's bloom: the first enabled bloom stage, else the preset's natural one.
+        for (const auto& s : m_stages)
+            if (s->enabled() && isBloom(s->name())) return s.get();
+        const char* def = m_preset == Preset::Pilot ? "filter-bloom"
+                          : m_preset == Preset::Lecture ? "hdr-bloom" : "smash-bloom";
+        return find(def);
+    }
+    for (const auto& s : m_stages)
+        if (name == s->name()) return s.get();
+    return nullptr;
+}
+
+Stage& Pipeline::stage(std::string_view name) {
+    if (Stage* s = find(name)) return *s;
+    makeStage(name); // throws the message listing every stage
+    throw Error("unknown stage '" + std::string(name) + "'");
+}
+
+void Pipeline::setEnabled(std::string_view name, bool on) {
+    if (name == "sanitize" && !on) throw Error("stage 'sanitize' cannot be disabled (it keeps NaN/Inf from spreading)");
+    stage(name).setEnabled(on);
+}
+
+void Pipeline::assign(std::string_view a) {
+    const auto eq = a.find('=');
+    const auto dot = a.substr(0, eq).rfind('.');
+    if (eq == std::string_view::npos || dot == std::string_view::npos || dot == 0 || dot + 1 == eq)
+        throw Error("bad stage setting '" + std::string(a) + "' (expected stage.param=value)");
+    stage(a.substr(0, dot)).setParam(a.substr(dot + 1, eq - dot - 1), a.substr(eq + 1));
+}
+
+void Pipeline::setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) {
+    for (auto& s : m_stages)
+        if (auto* l = dynamic_cast<detail::LutStage*>(s.get())) l->setLut(lut, method);
+}
+
+void Pipeline::setBloom(bool on) {
+    if (on) {
+        if (Stage* b = find("bloom")) b->setEnabled(true);
+        return;
+    }
+    for (auto& s : m_stages)
+        if (isBloom(s->name())) s->setEnabled(false);
+}
+
+std::string PipelineReport::str() const {
+    std::ostringstream os;
+    char buf[160];
+    for (const auto& s : stages) {
+        if (!s.enabled) continue;
+        std::snprintf(buf, sizeof buf, "  %-22s %-8s %9.3f ms\n", s.name.c_str(), s.ran ? "ran" : "skipped",
+                      s.milliseconds);
+        os << buf;
+    }
+    std::snprintf(buf, sizeof buf, "  %-22s %-8s %9.3f ms\n", "total", "", totalMilliseconds);
+    os << buf;
+    return os.str();
+}
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+} // namespace
+
+PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) {
+    const auto tStart = Clock::now();
+    PipelineReport report;
+    for (const auto& s : m_stages) {
+        StageReport r;
+        r.name = s->name();
+        r.enabled = s->enabled();
+        report.stages.push_back(r);
+    }
+    if (frame.empty()) return report;
+    StageContext ctx;
+    ctx.nthreads = options.nthreads;
+    ctx.frameIndex = options.frameIndex;
+    const int threads = std::max(1, std::min(resolveThreads(options.nthreads), frame.height));
+
+    // Stages whose rows run in the current fused pass (index into m_stages).
+    std::vector<std::size_t> pass;
+    auto flush = [&] {
+        if (pass.empty()) return;
+        constexpr int kBlock = 8; // rows per tile: a 1920-wide tile is 240 KB, cache-resident
+        const int blocks = (frame.height + kBlock - 1) / kBlock;
+        std::vector<double> ms(pass.size(), 0.0);
+        std::mutex m;
+        parallelFor(blocks, options.nthreads, [&](int b0, int b1) {
+            std::vector<double> local(pass.size(), 0.0);
+            for (int b = b0; b < b1; ++b) {
+                const int y0 = b * kBlock, y1 = std::min(frame.height, y0 + kBlock);
+                for (std::size_t k = 0; k < pass.size(); ++k) {
+                    const auto t0 = Clock::now();
+                    m_stages[pass[k]]->processRows(frame, y0, y1, ctx);
+                    local[k] += msSince(t0);
+                }
+            }
+            std::lock_guard<std::mutex> lock(m);
+            for (std::size_t k = 0; k < pass.size(); ++k) ms[k] += local[k];
+        });
+        for (std::size_t k = 0; k < pass.size(); ++k) {
+            report.stages[pass[k]].milliseconds += ms[k] / threads;
+            m_stages[pass[k]]->finish();
+        }
+        pass.clear();
+    };
+
+    Stage* grade = find("smash-grade");
+    if (grade) detail::setSmashGradeFusedDisplay(*grade, false);
+    for (std::size_t i = 0; i < m_stages.size(); ++i) {
+        Stage& s = *m_stages[i];
+        if (!s.enabled()) continue;
+        const auto t0 = Clock::now();
+        if (s.inspectsColor() || s.needsPrepare()) flush();
+        const bool run = options.forceAll || s.canChange(frame, options.nthreads);
+        if (run) {
+            report.stages[i].ran = true;
+            if (s.needsPrepare()) s.prepare(frame, ctx);
+            // sRGB display right after smash-grade in the same pass: encode inside the grading
+            // loop while the pixel is in registers.
+            if (!pass.empty() && m_stages[pass.back()].get() == grade && detail::isSrgbDisplay(s)) {
+                detail::setSmashGradeFusedDisplay(*grade, true);
+            } else {
+                pass.push_back(i);
+            }
+        }
+        report.stages[i].milliseconds += msSince(t0);
+        // The sanitize stage changes alpha, which later stages may base their decision on.
+        if (std::string_view(s.name()) == "sanitize") flush();
+    }
+    flush();
+    if (grade) detail::setSmashGradeFusedDisplay(*grade, false);
+    report.totalMilliseconds = msSince(tStart);
+    return report;
+}
+
+Image Pipeline::run(const Image& frame, const RunOptions& options, PipelineReport* report) {
+    Image out = frame;
+    PipelineReport r = run(out.view(), options);
+    if (report) *report = std::move(r);
+    return out;
+}
+
+Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,
+                              const Lut3D* originalLut, Interpolation interp, int nthreads) {
+    Diagnostics d;
+    if (!storedIsLinear) srgbDecode(frame, nthreads);
+    if (fromScreenshot) {
+        UngradeResult r = smashUngrade(frame, originalLut, interp, nthreads);
+        d = std::move(r.diagnostics);
+    }
+    return d;
+}
+
+double benchmarkSmashChain(int width, int height, int iterations, int nthreads) {
+    if (width <= 0 || height <= 0) throw Error("benchmark frame size must be positive");
+    iterations = std::max(1, iterations);
+    // A synthetic HDR scene: smooth gradients, a few highlights well above the bloom threshold,
+    // an alpha-0 band (background).
+    Image scene(width, height, 0.0f);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float* p = scene.pixel(x, y);
+            const float u = (x + 0.5f) / width, v = (y + 0.5f) / height;
+            p[0] = 0.6f * u * u;
+            p[1] = 0.5f * v;
+            p[2] = 0.25f + 0.2f * u * v;
+            if (((x / 64) + (y / 64)) % 7 == 0) p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
+            p[3] = y < height / 10 ? 0.0f : 1.0f;
+        }
+    Pipeline pipeline(Preset::Smash);
+    RunOptions opt;
+    opt.nthreads = nthreads;
+    Image work = scene;
+    pipeline.run(work.view(), opt); // warm-up: tables, allocations
+    double total = 0.0;
+    for (int i = 0; i < iterations; ++i) {
+        work.pixels() = scene.pixels();
+        const auto t0 = Clock::now();
+        pipeline.run(work.view(), opt);
+        total += msSince(t0);
+    }
+    return total / iterations;
+}
+
+} // namespace lut

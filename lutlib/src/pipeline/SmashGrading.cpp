@@ -1,0 +1,224 @@
+// Scalar, accurate (std::pow) forms of the Smash grading math. The pipeline's grading pass uses
+// table pows for speed (SmashStages.cpp) and is tested against these and a float64 reference.
+#include "lut/pipeline/SmashGrading.h"
+
+#include "FastMath.h"
+#include "lut/Parallel.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace lut {
+
+using detail::sanitizeValue;
+
+float smashEncode(float x) {
+    x = sanitizeValue(x, kPipelineMaxValue);
+    return x > 0.0f ? std::pow(x, kSmashEncodeExponent) : 0.0f;
+}
+
+glm::vec3 smashEncode(glm::vec3 v) { return {smashEncode(v.x), smashEncode(v.y), smashEncode(v.z)}; }
+
+float smashEncodeInverse(float s) {
+    s = sanitizeValue(s, 1.0e6f);
+    return s > 0.0f ? static_cast<float>(std::pow(static_cast<double>(s), 1.0 / kSmashEncodeExponent)) : 0.0f;
+}
+
+float smashDecode(float r) {
+    r = sanitizeValue(r, 1.0e6f);
+    return r > 0.0f ? std::pow(r, kSmashDecodeExponent) : 0.0f;
+}
+
+glm::vec3 smashBrighten(glm::vec3 lutOut, glm::vec3 s) {
+    return ((lutOut - s) * kSmashBrightenMix + s) * kSmashBrightenScale;
+}
+
+glm::vec3 smashBrightenInverse(glm::vec3 r, glm::vec3 s) {
+    return (r / kSmashBrightenScale - s) / kSmashBrightenMix + s;
+}
+
+glm::vec3 smashGrade(glm::vec3 linear, const Sampler& lut) {
+    const glm::vec3 s = smashEncode(linear);
+    const glm::vec3 r = smashBrighten(lut.sample(s), s);
+    return {smashDecode(r.x), smashDecode(r.y), smashDecode(r.z)};
+}
+
+glm::vec3 smashGradeMix(glm::vec3 linear, float alpha, const Sampler& lut) {
+    const float a = detail::clamp01(alpha);
+    if (a <= 0.0f) return linear;
+    const glm::vec3 g = smashGrade(linear, lut);
+    if (a >= 1.0f) return g;
+    return linear * (1.0f - a) + g * a;
+}
+
+glm::vec3 smashLutEntryForTarget(glm::vec3 targetLinear, glm::vec3 s) {
+    glm::vec3 r;
+    for (int c = 0; c < 3; ++c) {
+        const double t = sanitizeValue(targetLinear[c], kPipelineMaxValue);
+        r[c] = static_cast<float>(t > 0.0 ? std::pow(t, 1.0 / kSmashDecodeExponent) : 0.0);
+    }
+    return smashBrightenInverse(r, s);
+}
+
+Lut3D smashCompensateLut(const Lut3D& target) {
+    const int n = target.size();
+    Lut3D out(n);
+    const Lut3D ident = Lut3D::identity(n);
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r)
+                out.at(r, g, b) = smashLutEntryForTarget(target.at(r, g, b), ident.at(r, g, b));
+    out.setTitle(target.title());
+    return out;
+}
+
+namespace {
+
+// Gamma-space image of the graded+mixed output for gamma-space input s: pow(F(s), 1/2.2).
+struct GradeMap {
+    const Sampler& lut;
+    float a;
+    glm::dvec3 operator()(const glm::dvec3& s) const {
+        const glm::vec3 sf(s);
+        const glm::vec3 r = smashBrighten(lut.sample(sf), sf);
+        if (a >= 1.0f) return glm::dvec3(r);
+        glm::dvec3 out;
+        for (int c = 0; c < 3; ++c) {
+            const double x = s[c] > 0.0 ? std::pow(s[c], 1.0 / kSmashEncodeExponent) : 0.0;
+            const double g = r[c] > 0.0f ? std::pow(static_cast<double>(r[c]), 2.2) : 0.0;
+            const double f = (1.0 - a) * x + a * g;
+            out[c] = f > 0.0 ? std::pow(f, 1.0 / 2.2) : 0.0;
+        }
+        return out;
+    }
+};
+
+double maxAbs(const glm::dvec3& v) {
+    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+}
+
+} // namespace
+
+glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& lut,
+                            bool identityLut, bool* converged) {
+    const float a = detail::clamp01(alpha);
+    glm::vec3 out;
+    for (int c = 0; c < 3; ++c) out[c] = std::max(sanitizeValue(outputLinear[c], kPipelineMaxValue), 0.0f);
+    if (converged) *converged = true;
+    if (a <= 0.0f) return out;
+
+    glm::dvec3 target;
+    for (int c = 0; c < 3; ++c) target[c] = out[c] > 0.0f ? std::pow(static_cast<double>(out[c]), 1.0 / 2.2) : 0.0;
+    // The neutral solution: exact for an identity LUT with alpha 1, the start point otherwise.
+    const double k = 1.0 - static_cast<double>(kSmashBrightenMix);
+    glm::dvec3 s;
+    for (int c = 0; c < 3; ++c) {
+        const double t = target[c] / static_cast<double>(kSmashBrightenScale);
+        s[c] = t <= 1.0 ? t : (t - static_cast<double>(kSmashBrightenMix)) / k;
+    }
+    auto toLinear = [](const glm::dvec3& sv) {
+        glm::vec3 x;
+        for (int c = 0; c < 3; ++c) x[c] = smashEncodeInverse(static_cast<float>(sv[c]));
+        return x;
+    };
+    if (identityLut && a >= 1.0f) return toLinear(s);
+
+    const GradeMap phi{lut, a};
+    const double tol = 1e-6 * std::max(1.0, maxAbs(target));
+    glm::dvec3 f = phi(s) - target;
+    double norm = maxAbs(f);
+    for (int it = 0; it < 40 && norm > tol; ++it) {
+        // Forward-difference Jacobian: the map is piecewise trilinear, so within a cell this is
+        // (nearly) exact, and across a lattice plane Newton still makes progress.
+        double J[3][3];
+        const double h = 1e-4;
+        for (int c = 0; c < 3; ++c) {
+            glm::dvec3 sp = s;
+            sp[c] += h;
+            const glm::dvec3 fp = phi(sp) - target;
+            for (int r = 0; r < 3; ++r) J[r][c] = (fp[r] - f[r]) / h;
+        }
+        const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                           J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+        glm::dvec3 d;
+        if (std::fabs(det) > 1e-12 && std::isfinite(det)) {
+            // Cramer's rule for J d = -f.
+            const glm::dvec3 b = -f;
+            auto det3 = [&](int col) {
+                double m[3][3];
+                for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 3; ++c) m[r][c] = c == col ? b[r] : J[r][c];
+                return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+            };
+            d = glm::dvec3(det3(0), det3(1), det3(2)) / det;
+        } else {
+            d = -f / static_cast<double>(kSmashBrightenScale); // fixed-point step
+        }
+        bool accepted = false;
+        for (double lambda = 1.0; lambda >= 1.0 / 256.0; lambda *= 0.5) {
+            glm::dvec3 sn = s + lambda * d;
+            for (int c = 0; c < 3; ++c) sn[c] = std::clamp(sn[c], 0.0, 1.0e4);
+            const glm::dvec3 fn = phi(sn) - target;
+            const double nn = maxAbs(fn);
+            if (nn < norm) {
+                s = sn;
+                f = fn;
+                norm = nn;
+                accepted = true;
+                break;
+            }
+        }
+        if (!accepted) break;
+    }
+    if (converged) *converged = norm <= tol * 4.0;
+    return toLinear(s);
+}
+
+UngradeResult smashUngrade(const ImageView& frame, const Lut3D* originalLut, Interpolation interp,
+                           int nthreads) {
+    UngradeResult result;
+    const Lut3D neutral = Lut3D::identity(kSmashLutSize);
+    const Lut3D& lut = originalLut ? *originalLut : neutral;
+    const auto sampler = makeSampler(lut, interp);
+    const bool identity = lut.hasDefaultDomain() && lut.isIdentity(1e-6f);
+    std::atomic<std::size_t> bad{0};
+    if (!frame.empty()) {
+        parallelFor(frame.height, nthreads, [&](int y0, int y1) {
+            std::size_t localBad = 0;
+            for (int y = y0; y < y1; ++y) {
+                float* p = frame.row(y);
+                for (int x = 0; x < frame.width; ++x, p += 4) {
+                    bool ok = true;
+                    const glm::vec3 v = smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3], *sampler,
+                                                          identity, &ok);
+                    p[0] = v.x;
+                    p[1] = v.y;
+                    p[2] = v.z;
+                    localBad += ok ? 0 : 1;
+                }
+            }
+            bad += localBad;
+        });
+        result.pixels = static_cast<std::size_t>(frame.width) * frame.height;
+    }
+    result.unconverged = bad.load();
+    Diagnostic note;
+    note.severity = Diagnostic::Severity::Info;
+    note.message = "bloom cannot be undone: the screenshot's bloom stays in the recovered frame "
+                   "(and is added again unless bloom is disabled)";
+    result.diagnostics.push_back(note);
+    if (result.unconverged > 0) {
+        Diagnostic w;
+        w.severity = Diagnostic::Severity::Warning;
+        w.message = std::to_string(result.unconverged) +
+                    " pixel(s) have colours the original LUT cannot produce; kept the closest";
+        result.diagnostics.push_back(w);
+    }
+    return result;
+}
+
+} // namespace lut

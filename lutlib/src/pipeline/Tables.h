@@ -1,0 +1,19 @@
+#pragma once
+// The shared pow tables of the pipeline (built once, thread-safe statics).
+#include "FastMath.h"
+
+namespace lut::detail {
+
+const PowTable& powSmashEncode(); // x^0.454545
+const PowTable& powSmashDecode(); // x^2.2
+const PowTable& powSrgbEncode();  // x^(1/2.4)
+
+// Piecewise sRGB encode with the table pow, mirrored for negatives; the one form every fast path
+// uses, so fused and unfused passes agree bit for bit. Input must be sanitized (finite).
+inline float srgbEncodeFast(float x) {
+    const float a = x < 0.0f ? -x : x;
+    const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * powSrgbEncode()(a) - 0.055f;
+    return x < 0.0f ? -e : e;
+}
+
+} // namespace lut::detail

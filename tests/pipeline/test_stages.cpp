@@ -1,0 +1,185 @@
+// The other stages against formulas written here, and the settings interface.
+#include "PipelineTestUtil.h"
+
+#include "../../lutlib/src/pipeline/FastMath.h"
+#include "lut/Error.h"
+#include "lut/pipeline/Pipeline.h"
+
+#include <gtest/gtest.h>
+
+using namespace lut;
+using namespace lut::test;
+
+TEST(FastMath, PowTableIsWithin3e7Relative) {
+    for (double p : {0.454545, 2.2, 1 / 2.4}) {
+        const detail::PowTable t(p);
+        Rng r(1);
+        double worst = 0;
+        for (int i = 0; i < 200000; ++i) {
+            const float x = static_cast<float>(std::exp((r.uniform() - 0.5) * 40.0));
+            const double want = std::pow(double(x), p);
+            worst = std::max(worst, std::fabs(t(x) - want) / want);
+        }
+        EXPECT_LT(worst, 3e-7) << p;
+        EXPECT_EQ(t(0.0f), 0.0f);
+        EXPECT_EQ(t(-1.0f), 0.0f);
+        EXPECT_EQ(t(NAN), 0.0f);
+        EXPECT_EQ(t(1.0f), 1.0f);
+        EXPECT_TRUE(std::isfinite(t(INFINITY)));
+    }
+}
+
+TEST(Stages, ExposureAndTonemapFollowTheirFormulas) {
+    Image img(3, 1);
+    const float v[3] = {0.5f, 2.0f, 10.0f};
+    for (int x = 0; x < 3; ++x)
+        for (int c = 0; c < 3; ++c) img.pixel(x, 0)[c] = v[x];
+    auto e = makeStage("exposure");
+    e->setParam("stops", "1.5");
+    Image a = img;
+    e->process(a.view());
+    EXPECT_FLOAT_EQ(a.pixel(1, 0)[0], 2.0f * std::pow(2.0f, 1.5f));
+    auto t = makeStage("tonemap");
+    Image b = img;
+    t->process(b.view());
+    EXPECT_FLOAT_EQ(b.pixel(2, 0)[1], 10.0f / 11.0f);
+    t->setParam("curve", "aces");
+    Image c = img;
+    t->process(c.view());
+    const double x = 2.0;
+    EXPECT_NEAR(c.pixel(1, 0)[0], (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 1e-6);
+}
+
+TEST(Stages, FilterBloomUsesThe9TapKernel) {
+    // One bright pixel, knee 0, threshold 0.5, one pass: bloom = colour * w[|dx|] * w[|dy|].
+    Image img(21, 21, 0.0f);
+    for (auto i = 3u; i < img.pixels().size(); i += 4) img.pixels()[i] = 1.0f;
+    img.pixel(10, 10)[0] = img.pixel(10, 10)[1] = img.pixel(10, 10)[2] = 2.0f;
+    auto s = makeStage("filter-bloom");
+    s->setParam("knee", "0");
+    s->setParam("threshold", "0.5");
+    s->setParam("passes", "1");
+    s->process(img.view());
+    const double w[5] = {0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216};
+    // contribution weight = (l - th) / l with l = 2: 0.75
+    for (int dy = -4; dy <= 4; ++dy)
+        for (int dx = -4; dx <= 4; ++dx) {
+            const double want = 2.0 * 0.75 * w[std::abs(dx)] * w[std::abs(dy)] + (dx == 0 && dy == 0 ? 2.0 : 0.0);
+            EXPECT_NEAR(img.pixel(10 + dx, 10 + dy)[1], want, 1e-6) << dx << "," << dy;
+        }
+    EXPECT_EQ(img.pixel(10 + 5, 10)[1], 0.0f);
+}
+
+TEST(Stages, HdrBloomSubtractsOneBlursAndAdds) {
+    Image img(31, 1, 0.5f);
+    img.pixel(15, 0)[0] = 3.0f;
+    auto s = makeStage("hdr-bloom");
+    s->setParam("sigma", "2");
+    s->process(img.view());
+    // 1D: the vertical pass on a 1-row image is the identity (clamp to edge, weights sum to 1).
+    double sum = 0, norm = 0;
+    for (int k = -6; k <= 6; ++k) norm += std::exp(-0.5 * k * k / 4.0);
+    for (int k = -6; k <= 6; ++k) {
+        const double want = 2.0 * std::exp(-0.5 * k * k / 4.0) / norm;
+        sum += img.pixel(15 + k, 0)[0] - (k == 0 ? 3.0 : 0.5);
+        EXPECT_NEAR(img.pixel(15 + k, 0)[0] - (k == 0 ? 3.0 : 0.5), want, 1e-5) << k;
+    }
+    EXPECT_NEAR(sum, 2.0, 1e-4); // energy above 1 is conserved
+    EXPECT_EQ(img.pixel(0, 0)[1], 0.5f);
+}
+
+TEST(Stages, SugarBloomBlendsBaseAndHalo) {
+    Image img(16, 16, 0.2f);
+    img.pixel(8, 8)[0] = img.pixel(8, 8)[1] = img.pixel(8, 8)[2] = 1.8f;
+    auto s = makeStage("sugar-bloom");
+    s->setParam("f0", "0.5");
+    s->setParam("threshold", "0.8");
+    Image out = img;
+    s->process(out.view());
+    // Far from the light the halo is zero... except through the coarse mips; f0 halves the base.
+    EXPECT_NEAR(out.pixel(0, 0)[0], 0.1, 0.05);
+    EXPECT_GT(out.pixel(8, 7)[0], 0.1f); // halo next to the light (i = 0 there)
+    // At the light i = 1.0: (1 - i) = 0, no halo on the light itself.
+    EXPECT_FLOAT_EQ(out.pixel(8, 8)[0], 0.9f);
+}
+
+TEST(Stages, VignetteDarkensCornersOnly) {
+    Image img(40, 30, 1.0f);
+    auto s = makeStage("vignette");
+    s->setParam("strength", "0.5");
+    s->setParam("radius", "0.3");
+    s->setParam("softness", "0.7");
+    s->process(img.view());
+    EXPECT_FLOAT_EQ(img.pixel(20, 15)[0], 1.0f);
+    // Corner pixel centre: d = |(0.5-20, 0.5-15)| / 25 = 0.975..., t = (d - 0.3)/0.7
+    const double d = std::hypot(19.5, 14.5) / 25.0, t = (d - 0.3) / 0.7;
+    EXPECT_NEAR(img.pixel(0, 0)[0], 1.0 - 0.5 * t * t * (3 - 2 * t), 1e-6);
+    EXPECT_EQ(img.pixel(0, 0)[3], 1.0f);
+}
+
+TEST(Stages, ChromaticAberrationMovesRedAndBlueOnly) {
+    Image img(41, 41, 0.0f);
+    for (int y = 0; y < 41; ++y)
+        for (int x = 0; x < 41; ++x) {
+            float* p = img.pixel(x, y);
+            p[0] = p[1] = p[2] = static_cast<float>(x);
+        }
+    auto s = makeStage("chromatic-aberration");
+    s->setParam("strength", "0.1");
+    s->process(img.view());
+    // At pixel x=40 (dx = 40.5 - 20.5 = 20): red samples at 20.5 + 22 - 0.5 = 42 -> clamped 40,
+    // blue at 20.5 + 18 - 0.5 = 38.
+    EXPECT_FLOAT_EQ(img.pixel(40, 20)[1], 40.0f);
+    EXPECT_NEAR(img.pixel(40, 20)[2], 38.0f, 1e-4);
+    EXPECT_NEAR(img.pixel(30, 20)[0], 31.0f, 1e-4); // 20.5 + 10*1.1 - 0.5
+    EXPECT_NEAR(img.pixel(20, 20)[0], 20.0f, 1e-4); // centre pixel barely moves
+}
+
+TEST(Stages, GrainIsSeededAndChangesPerFrame) {
+    Pipeline p(Preset::None);
+    p.setEnabled("grain", true);
+    const Image scene(32, 32, 0.4f);
+    RunOptions o;
+    o.frameIndex = 7;
+    Image a = p.run(scene, o), b = p.run(scene, o);
+    EXPECT_EQ(a.pixels(), b.pixels());
+    o.frameIndex = 8;
+    Image c = p.run(scene, o);
+    EXPECT_NE(a.pixels(), c.pixels());
+    p.assign("grain.seed=99");
+    o.frameIndex = 7;
+    Image d = p.run(scene, o);
+    EXPECT_NE(a.pixels(), d.pixels());
+    double mean = 0;
+    for (int i = 0; i < 32 * 32; ++i) mean += a.pixels()[4 * i] - refSrgbEncode(0.4);
+    EXPECT_NEAR(mean / 1024, 0.0, 0.01); // zero-mean noise
+}
+
+TEST(Stages, SettingsErrorsNameTheProblem) {
+    Pipeline p(Preset::Smash);
+    EXPECT_THROW(p.assign("nosuch.strength=1"), Error);
+    EXPECT_THROW(p.assign("smash-bloom.nosuch=1"), Error);
+    EXPECT_THROW(p.assign("smash-bloom.strength=abc"), Error);
+    EXPECT_THROW(p.assign("smash-bloom.strength=-1"), Error);
+    EXPECT_THROW(p.assign("strength=1"), Error);
+    EXPECT_THROW(p.setEnabled("sanitize", false), Error);
+    try {
+        p.assign("tonemap.curve=bogus");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("reinhard|aces|hable"), std::string::npos);
+    }
+    p.assign("bloom.strength=0.5");
+    EXPECT_FLOAT_EQ(p.stage("smash-bloom").param("strength"), 0.5f);
+    EXPECT_EQ(parsePreset("lecture"), Preset::Lecture);
+    EXPECT_THROW(parsePreset("x"), Error);
+    PipelineSettings s;
+    s.preset = Preset::Pilot;
+    s.bloom = false;
+    s.enable = {"vignette"};
+    s.assignments = {"vignette.strength=0.2"};
+    Pipeline q(s);
+    EXPECT_FALSE(q.stage("filter-bloom").enabled());
+    EXPECT_TRUE(q.stage("vignette").enabled());
+    EXPECT_FLOAT_EQ(q.stage("vignette").param("strength"), 0.2f);
+}
