@@ -21,6 +21,7 @@
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
+#include "lut/Resample.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 
@@ -36,6 +37,23 @@ namespace OCIO = OCIO_NAMESPACE;
 
 namespace {
 
+// OCIO's messages span several lines; ours are one line each.
+std::string oneLine(const char* message) {
+    std::string out;
+    bool space = false;
+    for (const char* p = message; p && *p; ++p) {
+        const bool ws = *p == '\n' || *p == '\r' || *p == '\t' || *p == ' ';
+        if (ws) {
+            space = !out.empty();
+            continue;
+        }
+        if (space) out += ' ';
+        space = false;
+        out += *p;
+    }
+    return out;
+}
+
 // OCIO reports warnings through a global logging callback; the library must not print, so we
 // collect them and hand them back as diagnostics of the read/write that produced them.
 std::mutex g_logMutex;
@@ -47,9 +65,7 @@ void initOcio() {
         OCIO::SetLoggingFunction([](const char* message) {
             std::lock_guard lock(g_logMutex);
             if (g_logSink && message) {
-                std::string m(message);
-                while (!m.empty() && (m.back() == '\n' || m.back() == '\r')) m.pop_back();
-                g_logSink->push_back(m);
+                g_logSink->push_back(oneLine(message));
             }
         });
     });
@@ -236,7 +252,7 @@ public:
                               std::to_string(facts.lut3dCount) + " 3D LUT, " + std::to_string(facts.otherCount) +
                               " other ops) on a " + std::to_string(size) + "^3 lattice over [0,1]"));
         } catch (const OCIO::Exception& e) {
-            throw Error(path + ": OpenColorIO cannot read it: " + e.what());
+            throw Error(path + ": OpenColorIO cannot read it: " + oneLine(e.what()));
         }
         std::size_t nonFinite = 0;
         for (auto& v : lut.entries())
@@ -264,9 +280,9 @@ constexpr int kOcioMaxGrid = 129;
 class OcioBakeFormat final : public Format {
 public:
     OcioBakeFormat(std::string name, std::string ocioName, std::string ext, std::string description,
-                   int storedBits)
+                   int storedBits, int minSize = 2)
         : m_name(std::move(name)), m_ocioName(std::move(ocioName)), m_ext(std::move(ext)),
-          m_description(std::move(description)), m_storedBits(storedBits) {}
+          m_description(std::move(description)), m_storedBits(storedBits), m_minSize(minSize) {}
 
     std::string name() const override { return m_name; }
     std::string description() const override { return m_description; }
@@ -281,7 +297,16 @@ public:
         Diagnostics diags;
         if (file.shaper)
             diags.push_back(info(path, "the 1D shaper was baked into the 3D table", Diagnostic::Severity::Warning));
-        const Lut3D lut = file.toLut3D(options.size);
+        Lut3D lut = file.toLut3D(options.size);
+        if (lut.size() < m_minSize) {
+            // A .3dl's first line lists the input lattice; with fewer than 4 entries OCIO takes it
+            // for a row of values and cannot read the file back. Upsampling is exact here: the
+            // finer tetrahedral lattice interpolates the coarse one's tetrahedra unchanged.
+            diags.push_back(info(path, "a " + std::to_string(lut.size()) + "^3 table is written as " +
+                                           std::to_string(m_minSize) + "^3 (" + m_name + " needs at least " +
+                                           std::to_string(m_minSize) + " lattice points per axis)"));
+            lut = resample(lut, m_minSize, Interpolation::Tetrahedral);
+        }
         if (lut.size() > kOcioMaxGrid)
             throw Error(path + ": OpenColorIO writes tables up to " + std::to_string(kOcioMaxGrid) + "^3; this one is " +
                         std::to_string(lut.size()) + "^3 (use --size)");
@@ -351,7 +376,7 @@ public:
                 if (!c.empty()) md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
             baker->bake(os);
         } catch (const OCIO::Exception& e) {
-            throw Error(path + ": OpenColorIO cannot write " + m_name + ": " + e.what());
+            throw Error(path + ": OpenColorIO cannot write " + m_name + ": " + oneLine(e.what()));
         }
         writeFileAtomically(path, os.str());
         session.appendDiagnostics(diags);
@@ -363,6 +388,7 @@ public:
 private:
     std::string m_name, m_ocioName, m_ext, m_description;
     int m_storedBits;
+    int m_minSize;
 };
 
 } // namespace
@@ -373,9 +399,9 @@ std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
     std::vector<std::unique_ptr<Format>> v;
     // Order matters where two share an extension: the first is the default writer (.3dl -> flame).
     v.push_back(std::make_unique<OcioBakeFormat>("flame", "flame", ".3dl",
-                                                 "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12));
+                                                 "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4));
     v.push_back(std::make_unique<OcioBakeFormat>("lustre", "lustre", ".3dl",
-                                                 "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12));
+                                                 "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12, 4));
     v.push_back(std::make_unique<OcioBakeFormat>("csp", "cinespace", ".csp", "Cinespace .csp, via OpenColorIO", 0));
     v.push_back(std::make_unique<OcioBakeFormat>("clf", "Academy/ASC Common LUT Format", ".clf",
                                                  "Academy/ASC Common LUT Format .clf, via OpenColorIO", 0));
