@@ -15,6 +15,8 @@ void registerBuiltinFormats() {
         // FORMAT LIST (keep one line per format)
         r.add(makeCubeFormat());
         r.add(makeNutexbFormat());
+        r.add(makeStripFormat());
+        r.add(makeHaldFormat());
         r.add(makeOcioReadFormat());
         for (auto& f : makeOcioBakeFormats()) r.add(std::move(f));
     });
