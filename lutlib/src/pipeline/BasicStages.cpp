@@ -22,11 +22,17 @@ public:
     }
     bool inspectsColor() const override { return true; }
     bool canChange(const ImageView& f, int nthreads) const override {
-        return anyPixel(f, nthreads, [](const float* p) {
-            for (int c = 0; c < 4; ++c)
-                if (!(std::fabs(p[c]) <= kPipelineMaxValue)) return true;
-            return false;
+        // Row at a time, branch-free inner loop (vectorizes): this scan reads the whole frame.
+        std::atomic<bool> found{false};
+        parallelFor(f.height, nthreads, [&](int y0, int y1) {
+            for (int y = y0; y < y1 && !found.load(std::memory_order_relaxed); ++y) {
+                const float* p = f.row(y);
+                int bad = 0;
+                for (int i = 0; i < 4 * f.width; ++i) bad |= !(std::fabs(p[i]) <= kPipelineMaxValue);
+                if (bad) found = true;
+            }
         });
+        return found.load();
     }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         for (int y = y0; y < y1; ++y) {
@@ -246,12 +252,13 @@ public:
     bool isSrgb() const { return m_curve == 0.0f; }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         const bool srgb = isSrgb();
+        const PowTable& table = powSrgbEncode();
         const float inv = 1.0f / m_gamma;
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             for (int x = 0; x < f.width; ++x, p += 4)
                 for (int c = 0; c < 3; ++c)
-                    p[c] = srgb ? srgbEncodeFast(p[c]) : (p[c] > 0.0f ? std::pow(p[c], inv) : 0.0f);
+                    p[c] = srgb ? srgbEncodeFast(p[c], table) : (p[c] > 0.0f ? std::pow(p[c], inv) : 0.0f);
         }
     }
 

@@ -312,17 +312,31 @@ public:
         }
         const PowTable& pw = powSmashDecode();
         parallelFor(h4, ctx.nthreads, [&](int j0, int j1) {
-            for (int j = j0; j < j1; ++j)
+            // Separable bilinear: each level's two source rows blended once per output row.
+            std::vector<float> rows[4];
+            for (int l = 0; l < 4; ++l) rows[l].resize(static_cast<std::size_t>(levels[l].w) * 3);
+            for (int j = j0; j < j1; ++j) {
+                for (int l = 0; l < 4; ++l) {
+                    const float ty = cy[l].t[j];
+                    const float* r0 = levels[l].at(0, cy[l].i0[j]);
+                    const float* r1 = levels[l].at(0, cy[l].i1[j]);
+                    for (int k = 0; k < 3 * levels[l].w; ++k) rows[l][k] = r0[k] + (r1[k] - r0[k]) * ty;
+                }
                 for (int i = 0; i < w4; ++i) {
-                    float b[4][3] = {};
-                    for (int l = 0; l < 4; ++l) bilinearAdd(levels[l], cx[l], i, cy[l], j, 1.0f, b[l]);
                     float* o = m_combined.at(i, j);
                     for (int c = 0; c < 3; ++c) {
-                        const float sum = kSmashBloomWeights[0] * b[0][c] + kSmashBloomWeights[1] * b[1][c] +
-                                          kSmashBloomWeights[2] * b[2][c] + kSmashBloomWeights[3] * b[3][c];
+                        float b[4];
+                        for (int l = 0; l < 4; ++l) {
+                            const float tx = cx[l].t[i];
+                            const float a0 = rows[l][3 * cx[l].i0[i] + c], a1 = rows[l][3 * cx[l].i1[i] + c];
+                            b[l] = a0 + (a1 - a0) * tx;
+                        }
+                        const float sum = kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
+                                          kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3];
                         o[c] = pw(clamp01(sum)) * m_strength;
                     }
                 }
+            }
         });
         // 4. upsample axes for processRows
         m_ax = makeAxis(W, w4);
@@ -336,12 +350,28 @@ public:
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         if (m_combined.w == 0 || static_cast<int>(m_ax.t.size()) != f.width || static_cast<int>(m_ay.t.size()) != f.height)
             return;
+        // Separable bilinear: the two source rows blended once per output row, then one lerp
+        // per output pixel.
+        thread_local std::vector<float> row;
+        const int w4 = m_combined.w;
+        row.resize(static_cast<std::size_t>(w4) * 3);
         for (int y = y0; y < y1; ++y) {
+            const float ty = m_ay.t[y];
+            const float* r0 = m_combined.at(0, m_ay.i0[y]);
+            const float* r1 = m_combined.at(0, m_ay.i1[y]);
+            bool any = false;
+            for (int i = 0; i < 3 * w4; ++i) {
+                row[i] = r0[i] + (r1[i] - r0[i]) * ty;
+                any |= row[i] != 0.0f;
+            }
+            if (!any) continue;
             float* p = f.row(y);
             for (int x = 0; x < f.width; ++x, p += 4) {
-                float b[3] = {0, 0, 0};
-                bilinearAdd(m_combined, m_ax, x, m_ay, y, 1.0f, b);
-                addRgb(p, b);
+                const float tx = m_ax.t[x];
+                const float* a = row.data() + 3 * m_ax.i0[x];
+                const float* b = row.data() + 3 * m_ax.i1[x];
+                const float v[3] = {a[0] + (b[0] - a[0]) * tx, a[1] + (b[1] - a[1]) * tx, a[2] + (b[2] - a[2]) * tx};
+                addRgb(p, v);
             }
         }
     }

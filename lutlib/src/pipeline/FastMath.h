@@ -27,6 +27,9 @@ public:
         m_top = static_cast<float>(top < 3.0e38 ? top : 3.0e38);
     }
     double exponent() const { return m_p; }
+    const float* mantissaTable() const { return m_mant.data(); }
+    const float* exponentTable() const { return m_exp; }
+    float top() const { return m_top; }
     float operator()(float x) const {
         if (!(x > 0.0f)) return 0.0f;
         const std::uint32_t b = std::bit_cast<std::uint32_t>(x);
@@ -56,6 +59,9 @@ public:
         for (int i = 0; i <= intervals + 1; ++i) m_v[i] = static_cast<float>(f(static_cast<double>(i) * hi / intervals));
     }
     bool covers(float x) const { return x >= 0.0f && x < m_hi; }
+    const float* values() const { return m_v.data(); }
+    float scale() const { return m_scale; }
+    int intervals() const { return m_n; }
     // x in [0, hi)
     float operator()(float x) const {
         const float t = x * m_scale;

@@ -1,5 +1,6 @@
 // LUT stages: the Smash grading pass (with an optional fused sRGB display encode) and a generic
 // LUT stage.
+#include "ArrayKernels.h"
 #include "StageDetail.h"
 #include "Tables.h"
 #include "lut/pipeline/SmashGrading.h"
@@ -46,38 +47,46 @@ public:
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         const PowTable& enc = powSmashEncode();
         const PowTable& dec = powSmashDecode();
-        thread_local std::vector<float> s, l;
+        const PowTable& srgb = powSrgbEncode();
+        const UniformTable& disp = smashDisplayFromBrightened();
+        const bool fused = m_fusedDisplay;
+        // Row-wide flat arrays so the pows run 8 at a time (ArrayKernels); alpha lanes carry
+        // meaningless values that are never stored.
+        thread_local std::vector<float> s, l, r, g;
         const std::size_t n = static_cast<std::size_t>(f.width) * 4;
         s.resize(n);
         l.resize(n);
+        r.resize(n);
+        g.resize(n);
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
-            for (std::size_t i = 0; i < n; i += 4) {
-                s[i] = enc(p[i]);
-                s[i + 1] = enc(p[i + 1]);
-                s[i + 2] = enc(p[i + 2]);
-                s[i + 3] = 1.0f;
-            }
+            powArray(enc, p, s.data(), n);
             std::memcpy(l.data(), s.data(), n * sizeof(float));
             m_sampler->applyPixels(l.data(), static_cast<std::size_t>(f.width));
+            for (std::size_t i = 0; i < n; ++i) r[i] = ((l[i] - s[i]) * kSmashBrightenMix + s[i]) * kSmashBrightenScale;
+            if (fused)
+                uniformArray(disp, r.data(), g.data(), n);
+            else
+                powArray(dec, r.data(), g.data(), n);
             for (std::size_t i = 0; i < n; i += 4, p += 4) {
                 const float a = clamp01(p[3]);
-                if (a > 0.0f) {
-                    float g[3];
-                    for (int c = 0; c < 3; ++c) {
-                        const float r = ((l[i + c] - s[i + c]) * kSmashBrightenMix + s[i + c]) * kSmashBrightenScale;
-                        g[c] = dec(r);
-                    }
-                    if (a >= 1.0f) {
-                        p[0] = g[0];
-                        p[1] = g[1];
-                        p[2] = g[2];
-                    } else {
-                        for (int c = 0; c < 3; ++c) p[c] = p[c] * (1.0f - a) + g[c] * a;
-                    }
+                if (a <= 0.0f) {
+                    if (fused)
+                        for (int c = 0; c < 3; ++c) p[c] = srgbEncodeFast(p[c], srgb);
+                    continue;
                 }
-                if (m_fusedDisplay)
-                    for (int c = 0; c < 3; ++c) p[c] = srgbEncodeFast(p[c]);
+                if (!fused) {
+                    for (int c = 0; c < 3; ++c) p[c] = a >= 1.0f ? g[i + c] : p[c] * (1.0f - a) + g[i + c] * a;
+                    continue;
+                }
+                if (a >= 1.0f && disp.covers(r[i]) && disp.covers(r[i + 1]) && disp.covers(r[i + 2])) {
+                    for (int c = 0; c < 3; ++c) p[c] = g[i + c];
+                    continue;
+                }
+                for (int c = 0; c < 3; ++c) {
+                    const float gl = dec(r[i + c]);
+                    p[c] = srgbEncodeFast(a >= 1.0f ? gl : p[c] * (1.0f - a) + gl * a, srgb);
+                }
             }
         }
     }

@@ -10,10 +10,15 @@ const PowTable& powSrgbEncode();  // x^(1/2.4)
 
 // Piecewise sRGB encode with the table pow, mirrored for negatives; the one form every fast path
 // uses, so fused and unfused passes agree bit for bit. Input must be sanitized (finite).
-inline float srgbEncodeFast(float x) {
+inline float srgbEncodeFast(float x, const PowTable& p) {
     const float a = x < 0.0f ? -x : x;
-    const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * powSrgbEncode()(a) - 0.055f;
+    const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * p(a) - 0.055f;
     return x < 0.0f ? -e : e;
 }
+inline float srgbEncodeFast(float x) { return srgbEncodeFast(x, powSrgbEncode()); }
+
+// srgbEncode(pow(r, 2.2)) for r in [0, 2): the fused grading + display of a fully graded pixel in
+// one lookup (absolute error < 2e-7); r outside needs the two-step form.
+const UniformTable& smashDisplayFromBrightened();
 
 } // namespace lut::detail
