@@ -30,6 +30,7 @@ neutrals=(
   "neutral_16.ctf|"
   "neutral_16.cub|"
   "neutral_16.itx|"
+  "neutral_16.spi3d|"
   "neutral_16_houdini.lut|--format houdini"
 )
 echo "== neutral 16^3 LUTs in $out"

@@ -6,7 +6,8 @@
 // 33. So anything OCIO can express (1D shapers + cubes, CDLs, matrices, ICC profiles) comes out as
 // one Lut3D; the lattice points hold exactly what OCIO computes there.
 //
-// Writing: a raw in-memory Config with an input space and an output space whose transform is our
+// Writing (.spi3d, which OCIO 2.1 reads but cannot bake, is written here directly):
+// a raw in-memory Config with an input space and an output space whose transform is our
 // table (a Lut3DTransform, preceded by a range fit when the domain is not [0,1]), baked by OCIO's
 // Baker with cube size = our size (so the baker samples exactly our lattice points), and written
 // atomically. Formats that store integers (.3dl: 12-bit, 0..4095) quantise; the quantisation
@@ -16,6 +17,7 @@
 // OCIO is touched only inside read()/write(): nothing here runs at start-up (no static OCIO
 // objects), which keeps `lutkit info small.cube` fast.
 #include "Formats.h"
+#include "LutPrep.h"
 
 #include "lut/AtomicFile.h"
 #include "lut/Error.h"
@@ -26,6 +28,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <mutex>
@@ -391,6 +394,40 @@ private:
     int m_minSize;
 };
 
+// Sony Pictures Imageworks .spi3d: OCIO 2.1 reads it but its Baker cannot write it, so we
+// write it ourselves ("SPILUT 1.0", "3 3", "N N N", then one "r g b  R G B" line per lattice
+// point with its indices; no domain, no shaper) and read it back through OCIO like the rest.
+class Spi3dFormat final : public Format {
+public:
+    std::string name() const override { return "spi3d"; }
+    std::string description() const override { return "Sony Imageworks .spi3d (written here, read via OpenColorIO)"; }
+    std::vector<std::string> extensions() const override { return {".spi3d"}; }
+    bool canRead() const override { return false; }
+    LutFile read(const std::string& path, const FormatOptions&) const override {
+        throw Error(path + ": read it with the 'ocio' format");
+    }
+    Diagnostics write(const std::string& path, const LutFile& file, const FormatOptions& options) const override {
+        Diagnostics diags;
+        const Lut3D lut = prepareUnitLut(file, options.size, path, diags);
+        const int n = lut.size();
+        std::string text = "SPILUT 1.0\n3 3\n" + std::to_string(n) + " " + std::to_string(n) + " " +
+                           std::to_string(n) + "\n";
+        text.reserve(text.size() + static_cast<std::size_t>(n) * n * n * 48);
+        char buf[160];
+        for (int r = 0; r < n; ++r)
+            for (int g = 0; g < n; ++g)
+                for (int b = 0; b < n; ++b) {
+                    const glm::vec3 v = lut.at(r, g, b);
+                    // %.9g: every float reads back as itself.
+                    std::snprintf(buf, sizeof buf, "%d %d %d %.9g %.9g %.9g\n", r, g, b, double(v.x), double(v.y),
+                                  double(v.z));
+                    text += buf;
+                }
+        writeFileAtomically(path, text);
+        return diags;
+    }
+};
+
 } // namespace
 
 std::unique_ptr<Format> makeOcioReadFormat() { return std::make_unique<OcioReadFormat>(); }
@@ -409,6 +446,7 @@ std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
                                                  "Autodesk Color Transform Format .ctf, via OpenColorIO", 0));
     v.push_back(std::make_unique<OcioBakeFormat>("cub", "truelight", ".cub", "Truelight .cub, via OpenColorIO", 0));
     v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx", "Iridas .itx, via OpenColorIO", 0));
+    v.push_back(std::make_unique<Spi3dFormat>());
     v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut", "Houdini .lut, via OpenColorIO", 0));
     return v;
 }

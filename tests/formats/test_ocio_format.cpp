@@ -61,7 +61,7 @@ struct BakeCase {
 const BakeCase kBakeCases[] = {
     {"flame", ".3dl", 0.5 / 4095 + 1e-6}, {"lustre", ".3dl", 0.5 / 4095 + 1e-6}, {"csp", ".csp", 2e-6},
     {"clf", ".clf", 2e-6},                {"ctf", ".ctf", 2e-6},                 {"cub", ".cub", 2e-6},
-    {"itx", ".itx", 2e-6},                {"houdini", ".lut", 2e-6},
+    {"itx", ".itx", 2e-6},                {"houdini", ".lut", 2e-6},               {"spi3d", ".spi3d", 0.0},
 };
 
 } // namespace
