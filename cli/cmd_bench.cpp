@@ -1,0 +1,143 @@
+// lutkit bench: error against run time for the LUT kernels.
+//
+// For each interpolation and LUT size the LUT is sampled from lut::analyticGrade, applied to a
+// synthetic frame (lut::makeBenchFrame) with all threads, and compared with the analytic grade
+// on the same pixels. In the same run: OpenColorIO's CPU processor on the same LUT and pixels,
+// called as its own tools (ocioconvert) call it, one apply() over a PackedImageDesc, and a plain
+// copy of the same bytes as the memory-bandwidth yardstick. OCIO is initialised only here.
+#include "cmd_bench.h"
+
+#include "Commands.h"
+#include "lut/Error.h"
+#include "lut/KernelBench.h"
+#include "lut/Parallel.h"
+#include "lut/Sampler.h"
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace lut::cli {
+
+namespace {
+
+OCIO::ConstCPUProcessorRcPtr ocioProcessor(const Lut3D& lut, Interpolation method) {
+    const int n = lut.size();
+    auto t = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 e = lut.at(r, g, b);
+                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
+                            static_cast<unsigned long>(b), e.r, e.g, e.b);
+            }
+    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL : OCIO::INTERP_LINEAR);
+    auto config = OCIO::Config::CreateRaw();
+    return config->getProcessor(t)->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                              OCIO::OPTIMIZATION_DEFAULT);
+}
+
+// ---------------------------------------------------------------------------------------------
+// EXTRA ROWS: other subsystems add rows to the table here, one line each, e.g.
+//     rows.push_back(lut::benchSmashChain1080p(options.threads, options.reps));
+// returning a BenchExtraRow. Keep the work they time comparable (float RGBA, all threads).
+std::vector<BenchExtraRow> extraRows(const BenchOptions& options) {
+    std::vector<BenchExtraRow> rows;
+    (void)options;
+    return rows;
+}
+// ---------------------------------------------------------------------------------------------
+
+} // namespace
+
+int runBench(const BenchOptions& o) {
+    std::vector<Interpolation> methods;
+    for (const auto& m : o.methods) methods.push_back(parseInterpolation(m)); // throws on bad names
+    if (o.width <= 0 || o.height <= 0) {
+        std::fprintf(stderr, "lutkit: error: --width and --height must be positive\n");
+        return kExitUsage;
+    }
+    const int threads = resolveThreads(o.threads);
+    const double pixels = static_cast<double>(o.width) * o.height;
+    const double bytes = pixels * 4 * sizeof(float);
+
+    const Image frame = makeBenchFrame(o.width, o.height, o.threads);
+    const Image reference = analyticReference(frame, o.threads);
+    Image work(o.width, o.height);
+
+    const double copySeconds = bestSeconds(o.reps + 2, nullptr, [&] { parallelCopy(frame, work, o.threads); });
+    const double copyNs = copySeconds * 1e9 / pixels;
+    std::printf("lutkit bench: %dx%d float RGBA frame, %d thread%s, kernels: %s\n", o.width, o.height, threads,
+                threads == 1 ? "" : "s", samplerIsa());
+    std::printf("memory copy of the same bytes: %.3f ns/pixel (%.1f GB/s read+write)\n", copyNs,
+                2 * bytes / copySeconds / 1e9);
+    std::printf("error: against the analytic grade the LUT was sampled from, over R,G,B of every pixel\n");
+    std::printf("OCIO: CPU processor, one apply() over the frame as ocioconvert does (single-threaded)\n\n");
+    std::printf("%-12s %5s %9s %10s %10s %10s %9s %11s\n", "interp", "size", "ns/pixel", "max err", "mean err",
+                "OCIO ns/px", "OCIO/ours", "ours/memcpy");
+    std::fflush(stdout);
+
+    double bestTetra33Ratio = 0, tetra33Copy = 0;
+    for (Interpolation method : methods) {
+        for (int size : o.sizes) {
+            const Lut3D lut = sampleAnalyticGrade(size);
+            auto timeSampler = [&](const Sampler& s) {
+                return bestSeconds(o.reps, [&] { parallelCopy(frame, work, o.threads); },
+                                   [&] { s.apply(work.view(), o.threads); });
+            };
+            const auto sampler = makeSampler(lut, method);
+            const double ours = timeSampler(*sampler);
+            const ErrorStats err = frameError(work, reference, o.threads);
+
+            std::string ocioNs = "-", ocioRatio = "-";
+            if (o.ocio && method != Interpolation::Nearest) {
+                const auto cpu = ocioProcessor(lut, method);
+                const double t = bestSeconds(std::max(1, o.reps - 1), [&] { parallelCopy(frame, work, o.threads); },
+                                             [&] {
+                                                 OCIO::PackedImageDesc desc(work.data(), o.width, o.height, 4);
+                                                 cpu->apply(desc);
+                                             });
+                char buf[32];
+                std::snprintf(buf, sizeof buf, "%.2f", t * 1e9 / pixels);
+                ocioNs = buf;
+                std::snprintf(buf, sizeof buf, "%.1fx", t / ours);
+                ocioRatio = buf;
+                if (method == Interpolation::Tetrahedral && size == 33) bestTetra33Ratio = t / ours;
+            }
+            if (method == Interpolation::Tetrahedral && size == 33) tetra33Copy = ours / copySeconds;
+            std::printf("%-12s %5d %9.3f %10.2e %10.2e %10s %9s %10.2fx\n", toString(method), size,
+                        ours * 1e9 / pixels, err.maxAbs, err.meanAbs, ocioNs.c_str(), ocioRatio.c_str(),
+                        ours / copySeconds);
+            if (o.scalar) {
+                ::setenv("LUTKIT_SIMD", "scalar", 1);
+                const auto scalar = makeSampler(lut, method);
+                ::unsetenv("LUTKIT_SIMD");
+                const double t = timeSampler(*scalar);
+                std::printf("%-12s %5d %9.3f %10s %10s %10s %9s %10.2fx\n", (std::string(toString(method)) + "*").c_str(),
+                            size, t * 1e9 / pixels, "", "", "", "", t / copySeconds);
+            }
+            std::fflush(stdout);
+        }
+    }
+    if (o.scalar) std::printf("(* = scalar reference loop, same threads)\n");
+
+    const auto extra = extraRows(o);
+    if (!extra.empty()) {
+        std::printf("\n%-30s %9s  %s\n", "other", "ns/pixel", "");
+        for (const auto& r : extra) std::printf("%-30s %9.3f  %s\n", r.label.c_str(), r.nsPerPixel, r.note.c_str());
+    }
+    if (tetra33Copy > 0) {
+        std::printf("\ntetrahedral 33: ");
+        if (bestTetra33Ratio > 0) std::printf("%.1fx faster than OCIO (goal >= 4x), ", bestTetra33Ratio);
+        std::printf("%.2fx a memory copy (goal <= 3x)\n", tetra33Copy);
+    }
+    return kExitOk;
+}
+
+} // namespace lut::cli
