@@ -47,12 +47,16 @@
 
 #include "lut/AtomicFile.h"
 #include "lut/Limits.h"
+#include "lut/Parallel.h"
 #include "lut/Resample.h"
 
 #include <array>
+#include <algorithm>
 #include <cfloat>
+#include <climits>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace lut::formats {
@@ -118,15 +122,73 @@ NumStatus parseFloat(std::string_view tok, float& out) {
     return NumStatus::Ok;
 }
 
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                             1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                             1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+// Decimal text to float with the same result as std::from_chars, for the common case (at most
+// 19 digits, exponent within +-22): m and 10^k are exact doubles, so m * 10^k or m / 10^k is
+// rounded once to double; rounding that double to float gives the correctly rounded float unless
+// the double lies exactly halfway between two floats, which goes to the general algorithm.
+// Returns the end of the number, or nullptr when the general algorithm must decide.
+inline const char* fastFloat(const char* p, const char* e, float& out) {
+    bool negative = false;
+    if (p < e && *p == '-') {
+        negative = true;
+        ++p;
+    }
+    std::uint64_t m = 0;
+    const char* q = p;
+    while (q < e && static_cast<unsigned>(*q - '0') < 10) m = m * 10 + static_cast<unsigned>(*q++ - '0');
+    std::ptrdiff_t digits = q - p;
+    int exp10 = 0;
+    if (q < e && *q == '.') {
+        const char* f = ++q;
+        while (q < e && static_cast<unsigned>(*q - '0') < 10)
+            m = m * 10 + static_cast<unsigned>(*q++ - '0');
+        exp10 = -static_cast<int>(q - f);
+        digits += q - f;
+    }
+    if (digits == 0 || digits > 19) return nullptr;
+    if (q < e && (*q == 'e' || *q == 'E')) {
+        const char* x = q + 1;
+        bool expNegative = false;
+        if (x < e && (*x == '-' || *x == '+')) expNegative = *x++ == '-';
+        if (x == e || static_cast<unsigned>(*x - '0') >= 10) return nullptr;
+        int v = 0;
+        while (x < e && static_cast<unsigned>(*x - '0') < 10 && v < 1000) v = v * 10 + (*x++ - '0');
+        if (x < e && static_cast<unsigned>(*x - '0') < 10) return nullptr;
+        exp10 += expNegative ? -v : v;
+        q = x;
+    }
+    if (m == 0) {
+        out = negative ? -0.0f : 0.0f;
+        return q;
+    }
+    if (m > (std::uint64_t(1) << 53) || exp10 < -22 || exp10 > 22) return nullptr;
+    double d = static_cast<double>(m);
+    d = exp10 < 0 ? d / kPow10[-exp10] : d * kPow10[exp10];
+    std::uint64_t bits;
+    std::memcpy(&bits, &d, sizeof bits);
+    if ((bits & 0x1FFFFFFFu) == 0x10000000u) return nullptr; // exactly halfway between floats
+    const float f = static_cast<float>(d);
+    out = negative ? -f : f;
+    return q;
+}
+
 // The hot path: a plain data line of three numbers (no comment, no '+', nothing odd). Anything
 // else returns false and goes through the careful path, which reports or accepts it.
 inline bool fastRow(const char* p, const char* e, float* out) {
     for (int i = 0; i < 3; ++i) {
         p = skipSpace(p, e);
-        const auto r = std::from_chars(p, e, out[i]);
-        if (r.ec != std::errc{} || r.ptr == p) return false;
-        if (!std::isfinite(out[i])) return false;
-        p = r.ptr;
+        const char* q = fastFloat(p, e, out[i]);
+        if (!q) {
+            const auto r = std::from_chars(p, e, out[i]);
+            if (r.ec != std::errc{} || r.ptr == p) return false;
+            if (!std::isfinite(out[i])) return false;
+            q = r.ptr;
+        }
+        p = q;
         if (p < e && !isSpace(*p)) return false;
     }
     return skipSpace(p, e) == e;
@@ -272,6 +334,10 @@ private:
             diag(Diagnostic::Severity::Warning, line, column, std::move(message));
     }
     void finishDepartures() {
+        // Report in file order; the "and N more" summaries (line 0) go last.
+        std::stable_sort(m_diags.begin(), m_diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
+            return (a.line == 0 ? INT_MAX : a.line) < (b.line == 0 ? INT_MAX : b.line);
+        });
         for (int d = 0; d < static_cast<int>(Departure::Count); ++d) {
             const int extra = m_departures[static_cast<std::size_t>(d)] - kDepartureInfo[d].cap;
             if (extra > 0)
@@ -350,8 +416,8 @@ void CubeParser::readNumbers(const TextLine& line, const Tokens& t, const char* 
         }
     }
     if (t.count < count)
-        fail(line, columnOf(line, t.contentEnd) + (t.count > 0 ? 1 : 0),
-             what + ", found " + std::to_string(t.count), content(line.text.data(), lineEnd));
+        fail(line, columnOf(line, t.contentEnd) + 1, what + ", found " + std::to_string(t.count),
+             content(line.text.data(), lineEnd));
     if (t.count > count)
         fail(line, t.tok[static_cast<std::size_t>(count)].column,
              what + ", found " + std::to_string(t.count), content(line.text.data(), lineEnd));
@@ -455,7 +521,7 @@ void CubeParser::keyword(const TextLine& line, const char* s, const char* e) {
     case Key::Title: {
         const char* a = argsBegin;
         const char* end = trimRight(a, e);
-        if (a == end) fail(line, columnOf(line, a), "expected a quoted title after TITLE");
+        if (a == end) fail(line, columnOf(line, kEnd) + 1, "expected a quoted title after TITLE");
         if (*a == '"') {
             const char* close = end - 1;
             while (close > a && *close != '"') --close;
@@ -772,6 +838,60 @@ inline char* putFloat(char* p, float v, int decimals) {
     return std::to_chars(p, p + 80, v, std::chars_format::fixed, decimals).ptr;
 }
 
+// Formats rows [0, count) of v (3 floats each) into dst; returns the number of non-finite values
+// replaced. Plain loop, one bounds check per row.
+std::size_t formatRows(std::string& dst, const float* v, std::size_t count, int decimals) {
+    const std::size_t rowMax = decimals < 0 ? 3 * 16 : 3 * (static_cast<std::size_t>(decimals) + 42);
+    std::size_t nonFinite = 0;
+    std::size_t used = dst.size();
+    dst.resize(used + count * 3 * 12 + rowMax);
+    for (std::size_t r = 0; r < count; ++r) {
+        if (dst.size() - used < rowMax) dst.resize(dst.size() + (count - r) * 3 * 12 + rowMax);
+        char* p = dst.data() + used;
+        for (int c = 0; c < 3; ++c) {
+            float x = v[r * 3 + static_cast<std::size_t>(c)];
+            if (!std::isfinite(x)) {
+                ++nonFinite;
+                x = std::isnan(x) ? 0.0f : (x > 0 ? FLT_MAX : -FLT_MAX);
+            }
+            p = putFloat(p, x, decimals);
+            *p++ = c == 2 ? '\n' : ' ';
+        }
+        used = static_cast<std::size_t>(p - dst.data());
+    }
+    dst.resize(used);
+    return nonFinite;
+}
+
+// Appends the rows to out, formatted on all cores in rounds of bounded size (so a 256^3 table
+// does not need a second full-size copy of its text).
+std::size_t putRows(std::string& out, const float* v, std::size_t count, int decimals) {
+    constexpr std::size_t kParallelMin = 16384;
+    constexpr std::size_t kRoundRows = std::size_t(1) << 20;
+    const int threads = count < kParallelMin ? 1 : resolveThreads(0);
+    if (threads <= 1) return formatRows(out, v, count, decimals);
+    std::vector<std::string> parts(static_cast<std::size_t>(threads));
+    std::vector<std::size_t> bad(static_cast<std::size_t>(threads));
+    std::size_t nonFinite = 0;
+    for (std::size_t begin = 0; begin < count; begin += kRoundRows) {
+        const std::size_t n = std::min(kRoundRows, count - begin);
+        parallelFor(threads, threads, [&](int t0, int t1) {
+            for (int t = t0; t < t1; ++t) {
+                const std::size_t a = begin + n * static_cast<std::size_t>(t) / threads;
+                const std::size_t b = begin + n * static_cast<std::size_t>(t + 1) / threads;
+                auto& part = parts[static_cast<std::size_t>(t)];
+                part.clear();
+                bad[static_cast<std::size_t>(t)] = formatRows(part, v + 3 * a, b - a, decimals);
+            }
+        });
+        for (int t = 0; t < threads; ++t) {
+            out += parts[static_cast<std::size_t>(t)];
+            nonFinite += bad[static_cast<std::size_t>(t)];
+        }
+    }
+    return nonFinite;
+}
+
 bool uniform(glm::vec3 v) { return v.x == v.y && v.y == v.z; }
 
 std::string oneLine(std::string s, const char* what, Diagnostics& d, bool isTitle) {
@@ -913,32 +1033,11 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
         }
     }
 
-    std::size_t nonFinite = 0;
     const int decimals = std::min(options.decimals, 40);
-    auto putRows = [&](const float* v, std::size_t count) {
-        // Rows are formatted into a local block and appended in bulk: one bounds check per block.
-        constexpr std::size_t kRowsPerBlock = 256;
-        std::string block;
-        block.resize(kRowsPerBlock * 3 * 90);
-        for (std::size_t i = 0; i < count; i += kRowsPerBlock) {
-            const std::size_t n = std::min(kRowsPerBlock, count - i);
-            char* p = block.data();
-            for (std::size_t r = 0; r < n; ++r) {
-                for (int c = 0; c < 3; ++c) {
-                    float x = v[(i + r) * 3 + static_cast<std::size_t>(c)];
-                    if (!std::isfinite(x)) {
-                        ++nonFinite;
-                        x = std::isnan(x) ? 0.0f : (x > 0 ? FLT_MAX : -FLT_MAX);
-                    }
-                    p = putFloat(p, x, decimals);
-                    *p++ = c == 2 ? '\n' : ' ';
-                }
-            }
-            out.append(block.data(), static_cast<std::size_t>(p - block.data()));
-        }
-    };
-    if (shaper) putRows(&shaper->entries()[0].x, static_cast<std::size_t>(shaper->size()));
-    if (cube) putRows(cube->data(), cube->entryCount());
+    const std::size_t nonFinite = (shaper ? putRows(out, &shaper->entries()[0].x,
+                                                    static_cast<std::size_t>(shaper->size()), decimals)
+                                          : 0) +
+                                  (cube ? putRows(out, cube->data(), cube->entryCount(), decimals) : 0);
     if (nonFinite)
         diags.push_back({Diagnostic::Severity::Warning, {}, 0, 0,
                          std::to_string(nonFinite) +

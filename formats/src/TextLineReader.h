@@ -55,6 +55,8 @@ public:
     bool next(TextLine& line);
 
     const std::string& path() const { return m_path; }
+    // The bytes not yet returned by next().
+    std::string_view rest() const { return m_data.substr(m_pos); }
     bool hasBom() const { return m_bom; }
     // True when the file's line ends are a lone CR (classic Mac OS).
     bool crOnly() const { return m_terminator == '\r'; }
