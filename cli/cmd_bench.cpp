@@ -73,8 +73,13 @@ int runBench(const BenchOptions& o) {
 
     const double copySeconds = bestSeconds(o.reps + 2, nullptr, [&] { parallelCopy(frame, work, o.threads); });
     const double copyNs = copySeconds * 1e9 / pixels;
-    std::printf("lutkit bench: %dx%d float RGBA frame, %d thread%s, kernels: %s\n", o.width, o.height, threads,
+    double load[1] = {0};
+    const bool haveLoad = getloadavg(load, 1) == 1;
+    std::printf("lutkit bench: %dx%d float RGBA frame, %d thread%s, kernels: %s", o.width, o.height, threads,
                 threads == 1 ? "" : "s", samplerIsa());
+    // Every figure is wall time: on a busy machine (load above the core count) they are noisy.
+    if (haveLoad) std::printf(", load average %.1f on %d cores", load[0], resolveThreads(0));
+    std::printf("\n");
     std::printf("memory copy of the same bytes: %.3f ns/pixel (%.1f GB/s read+write)\n", copyNs,
                 2 * bytes / copySeconds / 1e9);
     std::printf("error: against the analytic grade the LUT was sampled from, over R,G,B of every pixel\n");

@@ -9,6 +9,7 @@
 #include "lut/Parallel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
@@ -20,8 +21,22 @@ Sampler::~Sampler() = default;
 
 void Sampler::apply(const ImageView& image, int nthreads) const {
     if (image.empty()) return;
-    parallelFor(image.height, nthreads, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) applyPixels(image.row(y), static_cast<std::size_t>(image.width));
+    const int threads = std::min(resolveThreads(nthreads), image.height);
+    // Workers take bands of rows from a shared counter instead of one fixed half each: on a busy
+    // machine a descheduled thread then delays the frame by one band, not by half of it.
+    const std::size_t w = static_cast<std::size_t>(image.width);
+    const int band = std::max(1, std::min(64, static_cast<int>((1u << 16) / std::max<std::size_t>(w, 1))));
+    std::atomic<int> next{0};
+    parallelFor(threads, threads, [&](int, int) {
+        for (;;) {
+            const int y0 = next.fetch_add(band, std::memory_order_relaxed);
+            if (y0 >= image.height) break;
+            const int y1 = std::min(image.height, y0 + band);
+            if (image.strideFloats == static_cast<std::ptrdiff_t>(4 * w))
+                applyPixels(image.row(y0), w * static_cast<std::size_t>(y1 - y0)); // contiguous rows
+            else
+                for (int y = y0; y < y1; ++y) applyPixels(image.row(y), w);
+        }
     });
 }
 
