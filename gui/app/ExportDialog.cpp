@@ -29,7 +29,9 @@ QList<ExportChoice> exportChoices() {
         if (!f->canWrite()) continue;
         const QString name = QString::fromStdString(f->name());
         const QString desc = QString::fromStdString(f->description());
-        const QString ext = f->extensions().empty() ? QString() : QString::fromStdString(f->extensions().front());
+        // A format reached by name only (hald shares the image extensions with strip) writes PNG.
+        const QString ext = f->extensions().empty() ? QStringLiteral(".png")
+                                                    : QString::fromStdString(f->extensions().front());
         if (isImageLayoutFormat(*f) && !f->name().starts_with("hald")) {
             for (LutLayout l : allLayouts()) {
                 if (l == LutLayout::Hald) continue;

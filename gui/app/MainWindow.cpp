@@ -550,6 +550,8 @@ void MainWindow::setPreviewOptions(const PreviewOptions& o) {
 void MainWindow::rebuildProxyAndBefore() {
     const auto scene = m_doc->sceneImage();
     m_frame.reset();
+    m_beforeLutSource[0].reset();
+    m_beforeLutSource[1].reset();
     if (!scene) return;
     // Proxy: at most ~1000 pixels wide, what a drag needs to feel live on a 1080p frame.
     m_proxyFactor = std::max(1, (scene->width() + 999) / 1000);
@@ -578,6 +580,9 @@ void MainWindow::requestPreview() {
     job.proxyFactor = proxy ? m_proxyFactor : 1;
     job.lut = m_doc->effectiveLutShared();
     job.options = previewOptions();
+    const auto& cached = m_beforeLutSource[proxy ? 1 : 0];
+    if (cached && cached->scene == job.scene && sameBeforeLut(cached->options, job.options))
+        job.beforeLut = cached->beforeLut;
     m_scheduler->request(std::move(job));
 }
 
@@ -590,6 +595,8 @@ void MainWindow::onFrame(std::shared_ptr<const PreviewFrame> frame) {
     }
     m_frame = frame;
     m_view->setAfter(frame->display);
+    if (frame->beforeLut && !frame->reusedBeforeLut)
+        m_beforeLutSource[frame->proxyFactor > 1 ? 1 : 0] = frame;
     const QString res = frame->proxyFactor > 1
                             ? tr("proxy 1/%1, %2×%3").arg(frame->proxyFactor).arg(frame->image.width()).arg(frame->image.height())
                             : tr("%1×%2").arg(frame->image.width()).arg(frame->image.height());
@@ -599,9 +606,10 @@ void MainWindow::onFrame(std::shared_ptr<const PreviewFrame> frame) {
         if (m_times.size() > 1000) m_times.removeFirst();
     }
     if (m_verbose)
-        std::fprintf(stderr, "preview #%llu: pipeline %.1f ms, total %.1f ms (%s)\n",
+        std::fprintf(stderr, "preview #%llu: LUT stages %.1f ms, total %.1f ms (%s%s)\n",
                      static_cast<unsigned long long>(frame->serial), frame->milliseconds,
-                     frame->totalMilliseconds, qPrintable(res));
+                     frame->totalMilliseconds, qPrintable(res),
+                     frame->reusedBeforeLut ? ", cached pre-LUT stages" : ", all stages");
 }
 
 void MainWindow::waitForPreview() {

@@ -108,6 +108,9 @@ private:
 
     std::shared_ptr<const PreviewFrame> m_frame;
     std::shared_ptr<const Image> m_proxyScene;
+    // The last before-LUT frames the worker made for the full scene [0] and the proxy [1]
+    // (each frame says which scene and options it belongs to).
+    std::shared_ptr<const PreviewFrame> m_beforeLutSource[2];
     int m_proxyFactor = 1;
     bool m_interactive = false;
     bool m_interactiveErrors = true;

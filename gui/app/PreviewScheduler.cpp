@@ -1,5 +1,6 @@
 #include "PreviewScheduler.h"
 
+#include "lut/Parallel.h"
 #include "lut/Quantize.h"
 
 #include <QCoreApplication>
@@ -11,7 +12,8 @@ namespace lut::gui {
 
 QImage toDisplayImage(const Image& image) {
     QImage out(image.width(), image.height(), QImage::Format_RGBX8888);
-    for (int y = 0; y < image.height(); ++y) {
+    parallelFor(image.height(), 0, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
         const float* src = image.pixel(0, y);
         uchar* dst = out.scanLine(y);
         for (int x = 0; x < image.width(); ++x) {
@@ -21,6 +23,7 @@ QImage toDisplayImage(const Image& image) {
             dst[4 * x + 3] = 255;
         }
     }
+    });
     return out;
 }
 
@@ -47,11 +50,17 @@ void PreviewScheduler::start(PreviewJob job) {
         auto frame = std::make_shared<PreviewFrame>();
         frame->proxyFactor = job.proxyFactor;
         frame->serial = job.serial;
+        frame->scene = job.scene;
+        frame->options = job.options;
         QElapsedTimer timer;
         timer.start();
         try {
             if (job.scene && !job.scene->empty()) {
-                PreviewResult r = renderPreview(*job.scene, job.options, job.lut);
+                frame->reusedBeforeLut = job.beforeLut != nullptr;
+                frame->beforeLut = job.beforeLut ? job.beforeLut
+                                                 : std::make_shared<const Image>(
+                                                       renderBeforeLut(*job.scene, job.options));
+                PreviewResult r = renderFromLut(*frame->beforeLut, job.options, job.lut);
                 frame->image = std::move(r.image);
                 frame->milliseconds = r.milliseconds;
                 frame->report = QString::fromStdString(r.report);

@@ -18,6 +18,9 @@ struct PreviewJob {
     PreviewOptions options;
     int proxyFactor = 1;                // 1 = full resolution
     quint64 serial = 0;
+    // The scene after the stages before the LUT (PreviewRenderer.h), when the caller has it
+    // for this scene and these options; else the worker makes it and returns it in the frame.
+    std::shared_ptr<const Image> beforeLut;
 };
 
 struct PreviewFrame {
@@ -29,6 +32,11 @@ struct PreviewFrame {
     quint64 serial = 0;
     QString error;     // non-empty if the pipeline threw
     QString report;
+    bool reusedBeforeLut = false;
+    // What the frame was made from, so the caller can cache the before-LUT frame.
+    std::shared_ptr<const Image> scene;
+    PreviewOptions options;
+    std::shared_ptr<const Image> beforeLut;
 };
 
 // 8-bit display copy of a display-encoded float image through lut::toUnorm8.

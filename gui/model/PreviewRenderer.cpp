@@ -54,6 +54,50 @@ PreviewResult renderPreview(const Image& scene, const PreviewOptions& options,
     return result;
 }
 
+namespace {
+
+bool isLutStage(const std::string& name) { return name == "smash-grade" || name == "lut"; }
+
+// Enables only the stages before (before = true) or from (false) the first LUT stage, keeping
+// the preset's choice for the rest.
+void keepPart(Pipeline& pipeline, bool before) {
+    bool reached = false;
+    for (const auto& stage : pipeline.stages()) {
+        reached = reached || isLutStage(stage->name());
+        if (reached == before) stage->setEnabled(false);
+    }
+}
+
+} // namespace
+
+bool sameBeforeLut(const PreviewOptions& a, const PreviewOptions& b) {
+    return a.preset == b.preset && a.bloom == b.bloom;
+}
+
+Image renderBeforeLut(const Image& scene, const PreviewOptions& options, int nthreads) {
+    Pipeline pipeline(pipelineSettings(options, nullptr));
+    keepPart(pipeline, true);
+    RunOptions run;
+    run.nthreads = nthreads;
+    return pipeline.run(scene, run);
+}
+
+PreviewResult renderFromLut(const Image& beforeLut, const PreviewOptions& options,
+                            std::shared_ptr<const Lut3D> lut, int nthreads) {
+    const auto start = std::chrono::steady_clock::now();
+    Pipeline pipeline(pipelineSettings(options, std::move(lut)));
+    keepPart(pipeline, false);
+    RunOptions run;
+    run.nthreads = nthreads;
+    PipelineReport report;
+    PreviewResult result;
+    result.image = pipeline.run(beforeLut, run, &report);
+    result.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.report = report.str();
+    return result;
+}
+
 Image downscale(const Image& image, int factor) {
     if (factor <= 1 || image.empty()) return image;
     const int w = std::max(1, image.width() / factor);

@@ -42,6 +42,18 @@ struct PreviewResult {
 PreviewResult renderPreview(const Image& scene, const PreviewOptions& options,
                             std::shared_ptr<const Lut3D> lut, int nthreads = 0);
 
+// The same preview in two parts, so a LUT edit re-runs only what the LUT affects:
+//   renderBeforeLut  the stages before the first LUT stage (sanitize, bloom, vignette...: what
+//                    depends only on the image and the preset), run once and cached;
+//   renderFromLut    the LUT stage and everything after it (grading, brighten, display).
+// Running stages one after the other is bit-identical to the fused whole-pipeline run
+// (lut/pipeline/Stage.h), so renderFromLut(renderBeforeLut(x)) == renderPreview(x) (tested).
+Image renderBeforeLut(const Image& scene, const PreviewOptions& options, int nthreads = 0);
+PreviewResult renderFromLut(const Image& beforeLut, const PreviewOptions& options,
+                            std::shared_ptr<const Lut3D> lut, int nthreads = 0);
+// Whether a before-LUT frame made with options `a` is valid for options `b`.
+bool sameBeforeLut(const PreviewOptions& a, const PreviewOptions& b);
+
 // A box-filtered copy of `image` reduced by an integer factor (>= 1) in each direction: the
 // proxy the editor previews on while a slider is being dragged.
 Image downscale(const Image& image, int factor);

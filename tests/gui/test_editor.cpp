@@ -1,0 +1,301 @@
+// The editor driven like a user, offscreen: open files, drag a slider, undo, export, compare the
+// exported LUT with a float64 expectation, and check the preview pixels against the pipeline and
+// (when it exists) `lutkit preview`.
+#include "GuiTestSupport.h"
+
+#include "AdjustmentsPanel.h"
+#include "Document.h"
+#include "ExportDialog.h"
+#include "GameLut.h"
+#include "MainWindow.h"
+#include "PreviewRenderer.h"
+
+#include "lut/Quantize.h"
+#include "lut/formats/ImageIO.h"
+#include "lut/formats/Registry.h"
+
+#include <QAbstractButton>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QMessageBox>
+#include <QProcess>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace lut;
+using namespace lut::gui;
+using lut::gui::test::exposureRef;
+using lut::gui::test::samplePath;
+
+namespace {
+
+// Drags a slider from where it is to `position` in a few steps, like a mouse would.
+void dragSlider(QSlider* s, int position) {
+    s->setSliderDown(true);
+    const int start = s->value();
+    for (int i = 1; i <= 4; ++i) s->setValue(start + (position - start) * i / 4);
+    s->setSliderDown(false);
+}
+
+bool runsOk(const QString& program, const QStringList& args, QString* err = nullptr) {
+    QProcess p;
+    p.start(program, args);
+    if (!p.waitForFinished(120000)) return false;
+    if (err) *err = QString::fromLocal8Bit(p.readAllStandardError());
+    return p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+}
+
+} // namespace
+
+class EditorTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void openFilesAndPreviewEqualsPipeline() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        QVERIFY(w.windowTitle().contains(QStringLiteral("sample_grade.cube")));
+        QVERIFY(w.windowTitle().contains(QStringLiteral("sample_scene.png")));
+        QVERIFY(!w.isWindowModified());
+        w.waitForPreview();
+        auto frame = w.currentFrame();
+        QVERIFY(frame);
+        QCOMPARE(frame->proxyFactor, 1);
+        const Image want = renderPreview(*w.document()->sceneImage(), w.previewOptions(),
+                                         w.document()->effectiveLutShared()).image;
+        QVERIFY(frame->image.pixels() == want.pixels());
+        // The displayed 8-bit image is the same pixels through toUnorm8.
+        QCOMPARE(qRed(frame->display.pixel(10, 20)), int(toUnorm8(want.pixel(10, 20)[0])));
+    }
+
+    void badFilesKeepTheDocument() {
+        QTemporaryDir dir;
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        w.document()->editParam(AdjustParam::Saturation, 0.5);
+        const QString title = w.windowTitle();
+        const auto lutBefore = w.document()->effectiveLutShared();
+        const QString missing = dir.filePath("nope.cube");
+        QVERIFY(!w.openLutFile(missing));
+        QVERIFY(w.lastError().contains(QStringLiteral("nope.cube")));
+        QVERIFY(!w.openImageFile(dir.filePath("nope.png")));
+        QCOMPARE(w.windowTitle(), title);
+        QCOMPARE(w.document()->effectiveLutShared(), lutBefore);
+        QCOMPARE(w.document()->param(AdjustParam::Saturation), 0.5);
+        QVERIFY(w.isWindowModified());
+        QCOMPARE(w.document()->imagePath(), samplePath("sample_scene.png"));
+    }
+
+    void sliderUndoAndExportMatchFloat64() {
+        QTemporaryDir dir;
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        w.waitForPreview();
+        const auto before = w.currentFrame();
+
+        QSlider* slider = w.adjustmentsPanel()->slider(AdjustParam::Exposure);
+        const AdjustParamInfo& info = adjustParamInfo(AdjustParam::Exposure);
+        const int target = paramToSlider(info, 1.25, AdjustmentsPanel::kSteps);
+        dragSlider(slider, target);
+        const double stops = sliderToParam(info, target, AdjustmentsPanel::kSteps);
+        QVERIFY(std::abs(stops - 1.25) < 0.011);
+        QCOMPARE(w.document()->param(AdjustParam::Exposure), stops);
+        QCOMPARE(w.document()->undoStack()->count(), 1); // one drag, one undo step
+        QVERIFY(w.isWindowModified());
+        QCOMPARE(w.adjustmentsPanel()->spinBox(AdjustParam::Exposure)->value(),
+                 std::round(stops * 100) / 100);
+
+        w.waitForPreview();
+        QVERIFY(w.currentFrame()->image.pixels() != before->image.pixels());
+
+        const QString out = dir.filePath("edited.cube");
+        QVERIFY(w.exportLut(out, QStringLiteral("cube"), {}, false));
+        const Lut3D base = formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D();
+        const Lut3D back = formats::readLut(out.toStdString()).toLut3D();
+        QCOMPARE(back.size(), base.size());
+        double worst = 0;
+        for (std::size_t i = 0; i < base.entryCount(); ++i)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(double(back.entries()[i][c]) - exposureRef(base.entries()[i][c], stops)));
+        QVERIFY2(worst < 2e-5, qPrintable(QString::number(worst)));
+
+        // Undo through the window's action: slider, spin box, document and title follow.
+        QAction* undo = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->shortcut() == QKeySequence(QKeySequence::Undo)) undo = a;
+        QVERIFY(undo);
+        undo->trigger();
+        QCOMPARE(w.document()->param(AdjustParam::Exposure), 0.0);
+        QCOMPARE(slider->value(), paramToSlider(info, 0.0, AdjustmentsPanel::kSteps));
+        QCOMPARE(w.adjustmentsPanel()->spinBox(AdjustParam::Exposure)->value(), 0.0);
+        QVERIFY(!w.isWindowModified());
+        w.waitForPreview();
+        QVERIFY(w.currentFrame()->image.pixels() == before->image.pixels());
+    }
+
+    void exportsEveryWritableFormat() {
+        QTemporaryDir dir;
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.document()->newNeutral(16);
+        w.document()->editParam(AdjustParam::Contrast, 0.3);
+        const QList<ExportChoice> choices = exportChoices();
+        QVERIFY(!choices.isEmpty());
+        int n = 0;
+        for (const ExportChoice& c : choices) {
+            const QString path = dir.filePath(QStringLiteral("x%1%2").arg(n++).arg(c.extension));
+            FormatOptions o;
+            o.layout = c.layout.toStdString();
+            QVERIFY2(w.exportLut(path, c.format, o, false), qPrintable(c.label + ": " + w.lastError()));
+            QVERIFY2(QFileInfo(path).size() > 0, qPrintable(c.label));
+        }
+        // The game-compensated nutexb holds smashGameLut of the edit, to 8 bits.
+        bool haveNutexb = false;
+        for (const auto& c : choices) haveNutexb = haveNutexb || c.format == QLatin1String("nutexb");
+        if (haveNutexb) {
+            const QString path = dir.filePath("color_grading_lut.nutexb");
+            QVERIFY(w.exportLut(path, QStringLiteral("nutexb"), {}, true));
+            const Lut3D back = formats::readLut(path.toStdString()).toLut3D();
+            const Lut3D want = smashGameLut(w.document()->effectiveLut());
+            QCOMPARE(back.size(), 16);
+            double worst = 0;
+            for (std::size_t i = 0; i < want.entryCount(); ++i)
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::abs(double(back.entries()[i][c]) -
+                                                     std::clamp(double(want.entries()[i][c]), 0.0, 1.0)));
+            QVERIFY2(worst <= 0.5 / 255 + 1e-6, qPrintable(QString::number(worst)));
+        }
+    }
+
+    void closeAsksAndCancelKeepsTheWindow() {
+        MainWindow w;
+        w.show();
+        w.document()->editParam(AdjustParam::Tint, 0.2);
+        QVERIFY(w.isWindowModified());
+        QString seen;
+        auto answer = [&seen](QMessageBox::StandardButton which) {
+            QTimer::singleShot(0, [&seen, which] {
+                for (QWidget* top : QApplication::topLevelWidgets())
+                    if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) {
+                        seen = box->text();
+                        box->button(which)->click();
+                    }
+            });
+        };
+        answer(QMessageBox::Cancel);
+        QVERIFY(!w.close());
+        QVERIFY(seen.contains(QStringLiteral("unsaved")));
+        QVERIFY(w.isVisible());
+        answer(QMessageBox::Discard);
+        QVERIFY(w.close());
+    }
+
+    void savePreviewAndScreenshotFromTheCommandLine() {
+        QTemporaryDir dir;
+        const QString preview = dir.filePath("preview.png");
+        const QString shot = dir.filePath("shot.png");
+        QString err;
+        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+                        {QStringLiteral("--save-preview"), preview, samplePath("sample_scene.png"),
+                         samplePath("sample_grade.cube")}, &err), qPrintable(err));
+        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+                        {QStringLiteral("--screenshot"), shot, QStringLiteral("--window-size"),
+                         QStringLiteral("1200x800"), samplePath("sample_scene.png"),
+                         samplePath("sample_grade.cube")}, &err), qPrintable(err));
+        const QImage s(shot);
+        QCOMPARE(s.size(), QSize(1200, 800));
+
+        // The saved preview is the pipeline output through the one 8-bit conversion.
+        Document doc;
+        doc.openImage(samplePath("sample_scene.png"));
+        doc.openLut(samplePath("sample_grade.cube"));
+        const Image want = renderPreview(*doc.sceneImage(), PreviewOptions{}, doc.effectiveLutShared()).image;
+        const formats::LoadedImage got = formats::readImage(preview.toStdString());
+        QCOMPARE(got.image.width(), want.width());
+        QCOMPARE(got.image.height(), want.height());
+        int mismatches = 0;
+        for (int y = 0; y < want.height(); ++y)
+            for (int x = 0; x < want.width(); ++x)
+                for (int c = 0; c < 3; ++c)
+                    mismatches += toUnorm8(got.image.pixel(x, y)[c]) != toUnorm8(want.pixel(x, y)[c]);
+        QCOMPARE(mismatches, 0);
+
+        // Against the CLI, when helper "pipeline"'s `lutkit preview` is built.
+        QProcess help;
+        help.start(QStringLiteral(LUTKIT_CLI), {QStringLiteral("--help")});
+        help.waitForFinished(60000);
+        if (!QString::fromLocal8Bit(help.readAllStandardOutput()).contains(QStringLiteral("preview")))
+            QSKIP("lutkit preview is not available in this build");
+        const QString cli = dir.filePath("cli.png");
+        QVERIFY2(runsOk(QStringLiteral(LUTKIT_CLI),
+                        {QStringLiteral("preview"), samplePath("sample_scene.png"), QStringLiteral("--lut"),
+                         samplePath("sample_grade.cube"), QStringLiteral("-o"), cli}, &err), qPrintable(err));
+        const formats::LoadedImage c = formats::readImage(cli.toStdString());
+        QCOMPARE(c.image.width(), got.image.width());
+        QCOMPARE(c.image.height(), got.image.height());
+        QVERIFY(c.image.pixels() == got.image.pixels());
+    }
+
+    // Responsiveness on a 1920x1080 frame: logged, not asserted (timing depends on the machine).
+    void sliderUpdateTimingOn1080p() {
+        QTemporaryDir dir;
+        Image img(1920, 1080);
+        for (int y = 0; y < 1080; ++y)
+            for (int x = 0; x < 1920; ++x) {
+                float* p = img.pixel(x, y);
+                p[0] = float(x) / 1919.0f;
+                p[1] = float(y) / 1079.0f;
+                p[2] = float((x ^ y) & 255) / 255.0f;
+                p[3] = 1.0f;
+            }
+        const QString path = dir.filePath("frame1080.png");
+        formats::writeImage(path.toStdString(), img, {});
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(path));
+        w.waitForPreview();
+        QSlider* slider = w.adjustmentsPanel()->slider(AdjustParam::Saturation);
+        QElapsedTimer t;
+        QList<double> full, proxy;
+        for (int i = 0; i < 5; ++i) {
+            t.restart();
+            slider->setValue(slider->value() + 20); // a click step: full resolution
+            w.scheduler()->waitForIdle();
+            full << t.nsecsElapsed() / 1e6;
+        }
+        slider->setSliderDown(true); // dragging: proxy frames
+        for (int i = 0; i < 5; ++i) {
+            t.restart();
+            slider->setValue(slider->value() + 20);
+            w.scheduler()->waitForIdle();
+            proxy << t.nsecsElapsed() / 1e6;
+        }
+        slider->setSliderDown(false);
+        w.waitForPreview();
+        auto fmt = [](const QList<double>& l) {
+            QStringList s;
+            for (double v : l) s << QString::number(v, 'f', 1);
+            return s.join(QStringLiteral(", "));
+        };
+        qInfo("1920x1080 slider -> frame on screen, full resolution: %s ms", qPrintable(fmt(full)));
+        qInfo("1920x1080 slider -> frame on screen, drag proxy:      %s ms", qPrintable(fmt(proxy)));
+        QCOMPARE(w.currentFrame()->image.width(), 1920);
+    }
+};
+
+QTEST_MAIN(EditorTest)
+#include "test_editor.moc"
