@@ -16,11 +16,12 @@ jobs="$(nproc)"
 
 start=$(date +%s)
 echo "fuzz: configuring $build (clang, -fsanitize=fuzzer-no-link,address,undefined)"
-CC=clang CXX=clang++ \
-CFLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer" \
-CXXFLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -Wno-unknown-warning-option" \
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLUTKIT_FUZZ=ON \
-  -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
+flags="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
+# Flags go on the command line (not the environment) so a re-run updates an existing tree.
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags -Wno-unknown-warning-option" \
+  -DLUTKIT_FUZZ=ON -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
 
 all=(cube strip hald nutexb cli_numbers)
 targets=()
@@ -47,6 +48,7 @@ fi
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:allocator_may_return_null=1:${ASAN_OPTIONS:-}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:${UBSAN_OPTIONS:-}"
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:${LSAN_OPTIONS:-}"
 failed=()
 for name in "${names[@]}"; do
   bin="$build/bin/fuzz_$name"

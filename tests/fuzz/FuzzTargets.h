@@ -138,7 +138,7 @@ inline Outcome runNutexb(const std::uint8_t* data, std::size_t size) {
 //   byte 0: bit 7 set -> the rest is the raw file (.png), to exercise header checks;
 //           else bits 0-2 layout (pilot, unity, smush, unreal, godot, lattice, "" auto, hald),
 //           bits 3-4 file type (png8, png16, tif16, exr float)
-//   byte 1: the LUT edge N (2..33) or, for hald, the level L (2..5)
+//   byte 1: the LUT edge N (2..17) or, for hald, the level L (2..4)
 //   byte 2: bit 0 set -> width and height from bytes 3 and 4 (1..256, 1..64) instead of the
 //           layout's own size; bits 1-2 channels (3, 4, 1, 2)
 //   rest:   pixel values, repeated to fill the image (float files read them as 32-bit floats,
@@ -168,10 +168,10 @@ inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
     default: s.ext = ".exr"; s.type = OIIO::TypeDesc::FLOAT; break;
     }
     if (s.layout == "hald") {
-        const int level = 2 + data[1] % 4; // 2..5: up to 125x125, N = 25
+        const int level = 2 + data[1] % 3; // 2..4: up to 64x64, N = 16
         s.width = s.height = level * level * level;
     } else {
-        const int n = 2 + data[1] % 32;
+        const int n = 2 + data[1] % 16; // up to 289x17: small images keep the fuzzer fast
         s.width = n * n;
         s.height = n;
     }
