@@ -140,32 +140,37 @@ void nearestAvx2(const KernelTable& table, float* rgba, std::size_t count) {
 void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count) {
     const Consts k(table);
     const float* t = table.rgb;
-    const int dr = k.dr, dg = k.dg, db = k.db;
+    const int dg = k.dg, db = k.db;
     forEachBlock(rgba, count, [&](float* p) {
         Block blk;
         loadBlock(k, p, blk);
-        __m256 w[4] = {blk.f[0], blk.f[1], blk.f[2], _mm256_setzero_ps()};
-        transpose4(w[0], w[1], w[2], w[3]); // w[q] = [fr fg fb 0 | same] for pixels 2q, 2q+1
+        const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
+        const __m256 gr = _mm256_sub_ps(k.one, fr), gg = _mm256_sub_ps(k.one, fg), gb = _mm256_sub_ps(k.one, fb);
+        // Weights of the four red-axis edges of the cell; products of 0 and 1 are exact, so
+        // lattice points still return their entries exactly.
+        alignas(32) float w00[8], w10[8], w01[8], w11[8], wr0[8], wr1[8];
         alignas(32) int idx[8];
+        _mm256_store_ps(w00, _mm256_mul_ps(gg, gb));
+        _mm256_store_ps(w10, _mm256_mul_ps(fg, gb));
+        _mm256_store_ps(w01, _mm256_mul_ps(gg, fb));
+        _mm256_store_ps(w11, _mm256_mul_ps(fg, fb));
+        _mm256_store_ps(wr0, gr);
+        _mm256_store_ps(wr1, fr);
         _mm256_store_si256(reinterpret_cast<__m256i*>(idx), blk.base);
-        for (int q = 0; q < 4; ++q) {
-            const float* pa = t + idx[q];
-            const float* pb = t + idx[q + 4];
-            const __m256 fr = _mm256_permute_ps(w[q], 0x00), fg = _mm256_permute_ps(w[q], 0x55),
-                         fb = _mm256_permute_ps(w[q], 0xAA);
-            const __m256 gr = _mm256_sub_ps(k.one, fr), gg = _mm256_sub_ps(k.one, fg),
-                         gb = _mm256_sub_ps(k.one, fb);
-            // (1-f)*a + f*b: exactly a at f = 0 and b at f = 1, as the scalar lerp.
-            auto lerp = [](__m256 a, __m256 b, __m256 f, __m256 g) {
-                return _mm256_fmadd_ps(f, b, _mm256_mul_ps(g, a));
-            };
-            const __m256 c00 = lerp(load2(pa, pb), load2(pa + dr, pb + dr), fr, gr);
-            const __m256 c10 = lerp(load2(pa + dg, pb + dg), load2(pa + dg + dr, pb + dg + dr), fr, gr);
-            const __m256 c01 = lerp(load2(pa + db, pb + db), load2(pa + db + dr, pb + db + dr), fr, gr);
-            const __m256 c11 = lerp(load2(pa + db + dg, pb + db + dg),
-                                    load2(pa + db + dg + dr, pb + db + dg + dr), fr, gr);
-            const __m256 o = lerp(lerp(c00, c10, fg, gg), lerp(c01, c11, fg, gg), fb, gb);
-            _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
+        // One pixel per iteration in a full register: entries (r, g, b) and (r+1, g, b) are
+        // adjacent, so one 32-byte load fetches a whole red-axis edge; the weights come in as
+        // broadcast loads, which cost no shuffle.
+        for (int lane = 0; lane < 8; ++lane) {
+            const int pix = lane < 4 ? 2 * lane : 2 * (lane - 4) + 1; // transposed lane order
+            const float* e = t + idx[lane];
+            __m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(&w00[lane]), _mm256_loadu_ps(e));
+            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w10[lane]), _mm256_loadu_ps(e + dg), acc);
+            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w01[lane]), _mm256_loadu_ps(e + db), acc);
+            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w11[lane]), _mm256_loadu_ps(e + db + dg), acc);
+            const __m128 lo = _mm256_castps256_ps128(acc), hi = _mm256_extractf128_ps(acc, 1);
+            const __m128 o = _mm_fmadd_ps(_mm_broadcast_ss(&wr1[lane]), hi, _mm_mul_ps(_mm_broadcast_ss(&wr0[lane]), lo));
+            float* q = p + 4 * pix;
+            _mm_storeu_ps(q, _mm_blend_ps(o, _mm_loadu_ps(q), 0x8));
         }
     });
 }
