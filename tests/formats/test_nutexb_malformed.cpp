@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace {
 
 struct Case {
@@ -65,6 +67,30 @@ TEST(NutexbMalformedBytes, EveryTruncationOfAGoodFileIsRefused) {
         EXPECT_THROW(lut::formats::nutexb::readBytes(std::string_view(good).substr(good.size() - len), "front"), lut::Error);
         EXPECT_THROW(lut::formats::nutexb::readBytes(std::string_view(good).substr(0, len), "back"), lut::Error);
     }
+}
+
+TEST(NutexbMalformedBytes, RandomFooterCorruptionReadsOrThrowsLutError) {
+    // Any bytes: either a well-formed 2..256 LUT or lut::Error, never another exception or a crash.
+    const std::string good = lut::formats::nutexb::writeBytes(lut::Lut3D::identity(4), "", true);
+    std::mt19937 rng(12345);
+    int accepted = 0;
+    for (int iter = 0; iter < 3000; ++iter) {
+        std::string b = good;
+        const int flips = 1 + static_cast<int>(rng() % 4);
+        for (int k = 0; k < flips; ++k) {
+            const std::size_t at = b.size() - 0xB0 + rng() % 0xB0; // mip table and footer
+            b[at] = static_cast<char>(rng() % 4 == 0 ? 0xFF : rng());
+        }
+        try {
+            const lut::LutFile f = lut::formats::nutexb::readBytes(b, "mutant");
+            ASSERT_TRUE(f.cube);
+            ASSERT_GE(f.cube->size(), 2);
+            ASSERT_LE(f.cube->size(), 256);
+            ++accepted;
+        } catch (const lut::Error&) {
+        }
+    }
+    EXPECT_GT(accepted, 0); // corrupting the name or the mip table alone is harmless
 }
 
 } // namespace
