@@ -229,6 +229,7 @@ enum class Departure {
     ShaperAndCube,
     UnquotedTitle,
     UnknownKeyword,
+    IgnoredKeyword,
     Count
 };
 
@@ -249,7 +250,10 @@ constexpr DepartureInfo kDepartureInfo[] = {
     {1, "shaper and cube"},
     {3, "unquoted titles"},
     {3, "unknown keywords"},
+    {3, "ignored keywords"},
 };
+static_assert(std::size(kDepartureInfo) == static_cast<std::size_t>(Departure::Count));
+
 
 struct Token {
     std::string_view text;
@@ -299,6 +303,11 @@ public:
         : m_reader(text, path), m_strict(options.strict), m_diags(diagnostics) {}
 
     LutFile parse();
+    int departures() const {
+        int n = 0;
+        for (int d : m_departures) n += d;
+        return n;
+    }
 
 private:
     TextLineReader m_reader;
@@ -625,9 +634,10 @@ void CubeParser::finishHeader(const TextLine* firstData, const char* s) {
         if (!r.line) continue;
         const bool is1D = rk == Key::Range1D;
         if ((is1D && !m_size1D) || (!is1D && !m_size3D)) {
-            diag(Diagnostic::Severity::Warning, r.line, r.column,
-                 std::string(kKeyNames[static_cast<int>(rk)]) + " ignored: the file has no " +
-                     (is1D ? "LUT_1D_SIZE" : "LUT_3D_SIZE"));
+            depart(Departure::IgnoredKeyword, r.line, r.column,
+                   std::string(kKeyNames[static_cast<int>(rk)]) + " ignored: the file has no " +
+                       (is1D ? "LUT_1D_SIZE" : "LUT_3D_SIZE"),
+                   true);
             continue;
         }
         if (hasDomain && is1D == domainIs1D) {
@@ -1077,6 +1087,7 @@ CubeValidation validateCube(const std::string& path, bool strict) {
         CubeParser parser(file.bytes(), path, options, diags);
         v.lut = parser.parse();
         v.diagnostics = v.lut->diagnostics;
+        v.departures = parser.departures();
     } catch (const ParseError& e) {
         v.diagnostics = std::move(diags);
         // what() is "path:line:col: message (found '...')"; keep the part after the place.

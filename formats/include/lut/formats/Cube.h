@@ -55,6 +55,8 @@ struct CubeValidation {
     // Departures from the spec (Warning), notes (Info) and, if it failed, the error (Error).
     Diagnostics diagnostics;
     bool parsed() const { return lut.has_value(); }
+    // Number of departures found (including those only counted in an "and N more" line).
+    int departures = 0;
     // True if it parsed and (when validated strictly) has no Warning or Error diagnostic.
     bool ok = false;
     // "adobe 3D, 33^3", "adobe 1D, 1024", "resolve 1D 1024 + 3D, 33^3" ("" if not parsed).
