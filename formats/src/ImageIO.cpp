@@ -38,7 +38,11 @@ static ImageInfo infoFromSpec(const OIIO::ImageSpec& spec, const std::string& fo
 }
 
 static std::unique_ptr<OIIO::ImageInput> openInput(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
+    // Keep colour values as stored: by default OIIO premultiplies PNG/TIFF colour by an
+    // unassociated alpha, which would scale the LUT entries of any pixel whose alpha is not 1.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         std::string err = OIIO::geterror();
         if (err.empty()) err = "not an image OpenImageIO can read";

@@ -39,6 +39,13 @@ TEST(StripGolden, NeutralInEachLayoutAutoDetected) {
     }
 }
 
+TEST(StripGolden, AlphaIsIgnoredNotPremultiplied) {
+    const lut::LutFile f = read("strip/neutral4_pilot_alpha128.png");
+    EXPECT_EQ(f.dialect, "pilot");
+    EXPECT_EQ(f.cube->at(3, 3, 3), glm::vec3(1.0f));
+    EXPECT_EQ(f.cube->at(1, 2, 3), glm::vec3(85.0f, 170.0f, 255.0f) / 255.0f);
+}
+
 TEST(StripGolden, GradedRgba8SmushAndSixteenBitUnity) {
     lut::LutFile f = read("strip/graded5_smush_rgba8.png", "smush");
     ASSERT_EQ(f.cube->size(), 5);

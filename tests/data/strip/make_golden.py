@@ -61,6 +61,10 @@ def main():
     png(os.path.join(HERE, "graded5_smush_rgba8.png"), w, h, rows, 8, 4)
     w, h, rows = image("unity", 3, lambda r, g, b: graded(r, g, b, 65535), 3)
     png(os.path.join(HERE, "graded3_unity16.png"), w, h, rows, 16, 3)
+    # Alpha 128 everywhere: the colour must still read as stored (no premultiplication).
+    w, h, rows = image("pilot", 4, n4, 4)
+    rows = [[px[:3] + (128,) for px in row] for row in rows]
+    png(os.path.join(HERE, "neutral4_pilot_alpha128.png"), w, h, rows, 8, 4)
     hald = os.path.join(HERE, "..", "hald")
     os.makedirs(hald, exist_ok=True)
     w, h, rows = image("hald", 4, n4, 3)
