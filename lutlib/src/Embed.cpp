@@ -52,8 +52,9 @@ double lutEntryForShown(double shown, double s) {
 
 // --- Header -----------------------------------------------------------------------------------
 constexpr std::uint32_t kSync = 0xB2;
-constexpr int kHeaderBits = 34;
-constexpr int kGeometryBits = 21; // sync + depth + layout + size: enough to know the ring
+constexpr int kHeaderBits = 35;
+constexpr int kGeometryBits = 22; // sync + lattice + depth + layout + size: enough to know the ring
+constexpr int kPayloadBits = 27;  // everything before the CRC
 constexpr int kMinHeaderRow = kGeometryBits + 2;
 
 std::uint8_t crc8(std::uint32_t value, int bits) {
@@ -83,16 +84,17 @@ LutLayout layoutFromCode(int c) {
     return ls[c & 3];
 }
 
-std::array<int, kHeaderBits> headerBits(int bitDepth, LutLayout layout, int size, int scale) {
+std::array<int, kHeaderBits> headerBits(PatchLattice lattice, int bitDepth, LutLayout layout, int size, int scale) {
     std::uint32_t v = kSync;
+    v = (v << 1) | (lattice == PatchLattice::Smash ? 1u : 0u);
     v = (v << 2) | static_cast<std::uint32_t>(depthCode(bitDepth));
     v = (v << 2) | static_cast<std::uint32_t>(layoutCode(layout));
     v = (v << 9) | static_cast<std::uint32_t>(size & 511);
     v = (v << 5) | static_cast<std::uint32_t>(scale & 31);
-    const std::uint8_t crc = crc8(v, 26);
+    const std::uint8_t crc = crc8(v, kPayloadBits);
     std::array<int, kHeaderBits> bits{};
-    for (int i = 0; i < 26; ++i) bits[i] = static_cast<int>((v >> (25 - i)) & 1u);
-    for (int i = 0; i < 8; ++i) bits[26 + i] = (crc >> (7 - i)) & 1;
+    for (int i = 0; i < kPayloadBits; ++i) bits[i] = static_cast<int>((v >> (kPayloadBits - 1 - i)) & 1u);
+    for (int i = 0; i < 8; ++i) bits[kPayloadBits + i] = (crc >> (7 - i)) & 1;
     return bits;
 }
 
@@ -175,11 +177,13 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
         if (!bitAt(1 + i, 1, bits[i])) return false;
     std::uint32_t v = 0;
     for (int i = 0; i < kGeometryBits; ++i) v = (v << 1) | static_cast<std::uint32_t>(bits[i]);
-    if ((v >> 13) != kSync) return false;
+    if ((v >> 14) != kSync) return false;
+    const PatchLattice lattice = ((v >> 13) & 1u) ? PatchLattice::Smash : PatchLattice::Uniform;
     const int depth = static_cast<int>((v >> 11) & 3u);
     const LutLayout layout = layoutFromCode(static_cast<int>((v >> 9) & 3u));
     const int size = static_cast<int>(v & 511u);
     if (depth == 3 || size < limits::kMin3DSize || size > limits::kMax3DSize) return false;
+    if (lattice == PatchLattice::Smash && size != kSmashLatticeSize) return false;
     int cw = 0, ch = 0;
     try {
         patchCells(layout, size, cw, ch);
@@ -195,12 +199,13 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
     for (int i = kGeometryBits; i < kHeaderBits; ++i)
         if (!bitAt(ring[i].first, ring[i].second, bits[i])) return false;
     std::uint32_t all = 0;
-    for (int i = 0; i < 26; ++i) all = (all << 1) | static_cast<std::uint32_t>(bits[i]);
+    for (int i = 0; i < kPayloadBits; ++i) all = (all << 1) | static_cast<std::uint32_t>(bits[i]);
     std::uint32_t crc = 0;
-    for (int i = 26; i < 34; ++i) crc = (crc << 1) | static_cast<std::uint32_t>(bits[i]);
-    if (crc8(all, 26) != crc) return false;
+    for (int i = kPayloadBits; i < kHeaderBits; ++i) crc = (crc << 1) | static_cast<std::uint32_t>(bits[i]);
+    if (crc8(all, kPayloadBits) != crc) return false;
     const int scale = static_cast<int>(all & 31u);
     if (scale < 1) return false;
+    out.lattice = lattice;
     out.layout = layout;
     out.size = size;
     out.scale = scale;
@@ -381,6 +386,13 @@ PatchCorner parseCorner(std::string_view name) {
                 "' (expected top-left, top-right, bottom-left or bottom-right)");
 }
 
+const char* toString(PatchLattice l) { return l == PatchLattice::Smash ? "smash" : "uniform"; }
+PatchLattice parseLattice(std::string_view name) {
+    if (name == "smash") return PatchLattice::Smash;
+    if (name == "uniform") return PatchLattice::Uniform;
+    throw Error("unknown lattice '" + std::string(name) + "' (expected smash or uniform)");
+}
+
 const char* toString(ExtractTarget t) { return t == ExtractTarget::Raw ? "raw" : "smash"; }
 ExtractTarget parseTarget(std::string_view name) {
     if (name == "raw") return ExtractTarget::Raw;
@@ -427,30 +439,45 @@ void patchFrameSize(LutLayout layout, int size, int scale, int& width, int& heig
     height = (ch + 4) * scale;
 }
 
-float patchInputValue(int index, int size, int bitDepth) {
-    const float v = static_cast<float>(index) / static_cast<float>(size - 1);
+float smashLatticeValue(int index) {
+    // The display value the unedited game shows for its lattice input i/15 with a neutral LUT:
+    // brighten (x1.3703 in gamma space), decode with 2.2, clip, encode with the sRGB curve.
+    if (index >= kSmashLatticeSize - 1) return 1.0f;
+    const double s = index / 15.0;
+    return static_cast<float>(srgbEnc(clamp01(std::pow(s * kBrightenScale, kGammaDecode))));
+}
+
+float patchInputValue(PatchLattice lattice, int index, int size, int bitDepth) {
+    const float v = lattice == PatchLattice::Smash ? smashLatticeValue(index)
+                                                   : static_cast<float>(index) / static_cast<float>(size - 1);
     if (bitDepth == 8) return fromUnorm8(toUnorm8(v));
     if (bitDepth == 16) return fromUnorm16(toUnorm16(v));
     return v;
+}
+
+float patchInputValue(int index, int size, int bitDepth) {
+    return patchInputValue(PatchLattice::Uniform, index, size, bitDepth);
 }
 
 PatchPlacement embedPatch(const ImageView& image, const EmbedOptions& o) {
     if (o.bitDepth != 8 && o.bitDepth != 16 && o.bitDepth != 32)
         throw Error("embed: bit depth must be 8, 16 or 32, not " + std::to_string(o.bitDepth));
     if (o.margin < 0) throw Error("embed: negative margin");
-    const LutLayout layout = o.layout ? *o.layout : defaultPatchLayout(o.size);
+    const int size = o.lattice == PatchLattice::Smash ? kSmashLatticeSize : o.size;
+    const LutLayout layout = o.layout ? *o.layout : defaultPatchLayout(size);
     int fwPx = 0, fhPx = 0;
-    patchFrameSize(layout, o.size, o.scale, fwPx, fhPx);
+    patchFrameSize(layout, size, o.scale, fwPx, fhPx);
     if (static_cast<long long>(fwPx) + o.margin > image.width ||
         static_cast<long long>(fhPx) + o.margin > image.height)
-        throw Error("embed: the " + std::to_string(o.size) + "^3 " + toString(layout) + " patch at scale " +
+        throw Error("embed: the " + std::to_string(size) + "^3 " + toString(layout) + " patch at scale " +
                     std::to_string(o.scale) + " needs " + std::to_string(fwPx + o.margin) + "x" +
                     std::to_string(fhPx + o.margin) + " pixels with its margin, the screenshot is " +
                     std::to_string(image.width) + "x" + std::to_string(image.height) +
                     " (use a smaller --size or --scale)");
     PatchPlacement p;
+    p.lattice = o.lattice;
     p.layout = layout;
-    p.size = o.size;
+    p.size = size;
     p.scale = o.scale;
     p.cell = o.scale;
     p.bitDepth = o.bitDepth;
@@ -463,7 +490,7 @@ PatchPlacement embedPatch(const ImageView& image, const EmbedOptions& o) {
 
     const int k = o.scale;
     int cw = 0, ch = 0;
-    patchCells(layout, o.size, cw, ch);
+    patchCells(layout, size, cw, ch);
     const int fw = cw + 4, fh = ch + 4;
     auto fillCell = [&](int cx, int cy, float v) {
         for (int y = 0; y < k; ++y)
@@ -476,18 +503,18 @@ PatchPlacement embedPatch(const ImageView& image, const EmbedOptions& o) {
     for (int cy = 0; cy < fh; ++cy)
         for (int cx = 0; cx < fw; ++cx)
             if (cx == 0 || cy == 0 || cx == fw - 1 || cy == fh - 1) fillCell(cx, cy, ((cx + cy) & 1) ? 0.0f : 1.0f);
-    const auto bits = headerBits(o.bitDepth, layout, o.size, o.scale);
+    const auto bits = headerBits(o.lattice, o.bitDepth, layout, size, o.scale);
     const auto ring = innerRing(fw, fh);
     for (std::size_t i = 0; i < ring.size(); ++i)
         fillCell(ring[i].first, ring[i].second, bits[i % kHeaderBits] ? 1.0f : 0.0f);
 
-    Lut3D neutral(o.size);
-    for (int b = 0; b < o.size; ++b)
-        for (int g = 0; g < o.size; ++g)
-            for (int r = 0; r < o.size; ++r)
-                neutral.at(r, g, b) = glm::vec3(patchInputValue(r, o.size, o.bitDepth),
-                                                patchInputValue(g, o.size, o.bitDepth),
-                                                patchInputValue(b, o.size, o.bitDepth));
+    Lut3D neutral(size);
+    for (int b = 0; b < size; ++b)
+        for (int g = 0; g < size; ++g)
+            for (int r = 0; r < size; ++r)
+                neutral.at(r, g, b) = glm::vec3(patchInputValue(o.lattice, r, size, o.bitDepth),
+                                                patchInputValue(o.lattice, g, size, o.bitDepth),
+                                                patchInputValue(o.lattice, b, size, o.bitDepth));
     drawLut(neutral, layout, image, p.patchX(), p.patchY(), k);
     return p;
 }
@@ -539,7 +566,7 @@ PatchReading readPatch(const ImageView& img, const PatchPlacement& pl) {
         throw Error("the LUT patch does not fit inside the image");
     out.values = Lut3D(n);
     out.axis.resize(n);
-    for (int i = 0; i < n; ++i) out.axis[i] = patchInputValue(i, n, pl.bitDepth);
+    for (int i = 0; i < n; ++i) out.axis[i] = patchInputValue(pl.lattice, i, n, pl.bitDepth);
     // Average the inner part of each block: its border pixels take the brunt of resampling,
     // JPEG ringing and a neighbour's bleed. Uniformity is judged on the whole block: a global
     // edit leaves a uniform block uniform, a blur or sharpen does not.
@@ -882,12 +909,12 @@ ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& option
                      "the edited colours in game; they were clamped: the game cannot show those colours",
                      double(clamped), farthest, farthest * 255.0));
         // The in-game error: the 8-bit LUT the game receives, sampled trilinearly between lattice
-        // points, against the edited look, on probes at half and whole lattice steps.
+        // points, against the edited look, on probes at quarter lattice steps.
         Lut3D shipped = out;
         quantize8(shipped);
         const auto game = makeSampler(shipped, Interpolation::Trilinear);
         ErrorAccumulator acc;
-        const int probes = 2 * (m - 1) + 1;
+        const int probes = 4 * (m - 1) + 1;
         for (int b = 0; b < probes; ++b)
             for (int g = 0; g < probes; ++g)
                 for (int r = 0; r < probes; ++r) {
@@ -901,7 +928,7 @@ ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& option
     }
     res.lut.setTitle(std::string("extracted from a ") + std::to_string(n) + "^3 patch (" +
                      toString(options.target) + ")");
-    note(res, std::string("patch: ") + std::to_string(n) + "^3 " + toString(pl.layout) + " at scale " +
+    note(res, std::string("patch: ") + std::to_string(n) + "^3 " + toString(pl.lattice) + " lattice, " + toString(pl.layout) + " layout at scale " +
                   std::to_string(pl.scale) + ", frame at (" + std::to_string(pl.frameX) + ", " +
                   std::to_string(pl.frameY) + ")");
     note(res, "expected error between patch lattice points: " + res.expectedError.str() +

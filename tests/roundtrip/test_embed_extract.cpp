@@ -30,7 +30,12 @@ struct Embedded {
     Image image;
     PatchPlacement placement;
 };
-Embedded embedded(int bitDepth = 8, EmbedOptions o = {}, int width = 400, int height = 260) {
+EmbedOptions uniform16() {
+    EmbedOptions o;
+    o.lattice = PatchLattice::Uniform;
+    return o;
+}
+Embedded embedded(int bitDepth = 8, EmbedOptions o = uniform16(), int width = 400, int height = 260) {
     Embedded e{syntheticScreenshot(width, height, bitDepth), {}};
     o.bitDepth = bitDepth;
     e.placement = embedPatch(e.image.view(), o);
@@ -75,6 +80,31 @@ TEST(Embed, NeutralPatchReadsBackAsIdentity) {
     }
 }
 
+TEST(Embed, SmashLatticeIsTheDefault) {
+    auto e = embedded(8, EmbedOptions{});
+    EXPECT_EQ(e.placement.lattice, PatchLattice::Smash);
+    EXPECT_EQ(e.placement.size, kSmashLatticeSize);
+    EXPECT_EQ(e.placement.layout, LutLayout::Pilot);
+    EXPECT_EQ(e.placement.frameWidth, 296);
+    EXPECT_EQ(e.placement.frameHeight, 32);
+    // the lattice values: what the game shows for i/15 through a neutral LUT
+    for (int i = 0; i < kSmashLatticeSize; ++i) {
+        const double want = i == 11 ? 1.0 : srgbEnc(std::min(1.0, std::pow(1.3703 * i / 15.0, 2.2)));
+        EXPECT_NEAR(patchInputValue(PatchLattice::Smash, i, 12, 32), want, 1e-6) << i;
+        EXPECT_EQ(patchInputValue(PatchLattice::Smash, i, 12, 8), fromUnorm8(toUnorm8(float(want))));
+    }
+    const FindResult f = findPatch(e.image.view());
+    ASSERT_EQ(f.status, FindStatus::Found);
+    EXPECT_EQ(f.placement.lattice, PatchLattice::Smash);
+    // raw from a non-uniform lattice: interpolated, and a neutral stays neutral
+    ExtractOptions o;
+    o.outputSize = 16;
+    const ExtractResult r = extractLut(e.image.view(), o);
+    EXPECT_LT(r.lut.maxDeviationFromIdentity(), 1e-5f);
+    applyEdit(e.image, curvesEdit(), 8);
+    EXPECT_LE(latticeErrorSteps(extractLut(e.image.view(), o).lut, curvesEdit()), 2.0);
+}
+
 TEST(Embed, EveryLayoutCornerAndScaleIsFound) {
     struct Case {
         LutLayout layout;
@@ -88,7 +118,7 @@ TEST(Embed, EveryLayoutCornerAndScaleIsFound) {
                           {LutLayout::Hald, 16, 1, PatchCorner::BottomRight},
                           {LutLayout::Pilot, 17, 1, PatchCorner::TopLeft}};
     for (const auto& c : cases) {
-        EmbedOptions o;
+        EmbedOptions o = uniform16();
         o.layout = c.layout;
         o.size = c.size;
         o.scale = c.scale;
@@ -252,7 +282,7 @@ TEST(Checks, NoiseInsideBlocksIsANonGlobalEdit) {
 }
 
 TEST(Checks, BrushStrokeOnAScaleOnePatchIsANonGlobalEdit) {
-    EmbedOptions o;
+    EmbedOptions o = uniform16();
     o.scale = 1;
     auto e = embedded(8, o);
     applyEdit(e.image, curvesEdit(), 8);
@@ -275,7 +305,7 @@ TEST(Checks, BlurIsANonGlobalEdit) {
     // A 3x3 blur leaves the centres of 4x4 cells intact (the frame is still found) but not the
     // block edges; at scales 1 and 2 it leaves no pure cell and the frame is not found at all.
     for (int scale : {1, 2, 4}) {
-        EmbedOptions o;
+        EmbedOptions o = uniform16();
         o.scale = scale;
         auto e = embedded(8, o, 400, 300);
         Image blurred = e.image;
@@ -371,23 +401,4 @@ TEST(PatchFunction, ExactOnTheLatticeAndDefinedEverywhere) {
     EXPECT_NEAR(mid.z, 0.2f, 1e-6f);
     const glm::vec3 odd = f(glm::vec3(NAN, INFINITY, -1e30f));
     EXPECT_EQ(odd, glm::vec3(0.0f, 2.0f, 0.0f));
-}
-TEST(Debug, DISABLED_Blur) {
-    EmbedOptions o;
-    o.scale = 4;
-    auto e = embedded(8, o, 400, 300);
-    Image blurred = e.image;
-    for (int y = 1; y + 1 < e.image.height(); ++y)
-        for (int x = 1; x + 1 < e.image.width(); ++x)
-            for (int c = 0; c < 3; ++c) {
-                double acc = 0;
-                for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) acc += e.image.pixel(x + dx, y + dy)[c];
-                blurred.pixel(x, y)[c] = float(acc / 9.0);
-            }
-    quantize(blurred, 8);
-    for (int y = 8; y < 20; ++y) {
-        for (int x = 0; x < 40; ++x) std::printf("%3d ", int(blurred.pixel(x, y)[0] * 255 + 0.5));
-        std::printf("\n");
-    }
 }

@@ -25,8 +25,20 @@
 
 namespace lut {
 
-// The default patch: 16^3 (the game's lattice; 8-bit exact since 255/15 = 17) as a 64x64 Hald
-// image, 2x2 pixels per entry: 136x136 pixels with the frame. docs/roundtrip.md has the numbers.
+// Which inputs the patch samples per channel.
+//  - Uniform: j/(N-1), the lattice of an N^3 LUT (what raw engines use).
+//  - Smash: the 12 display values the unedited game shows for its lattice inputs i/15 (with a
+//    neutral stage LUT): srgbEncode(min(1, (1.3703 i/15)^2.2)), i = 0..10, and 1 (i >= 11 all clip
+//    to white). Extracting for --target smash then reads the edit exactly where the game's 16^3
+//    LUT needs it instead of interpolating: docs/roundtrip.md has the numbers.
+enum class PatchLattice { Uniform, Smash };
+const char* toString(PatchLattice);
+PatchLattice parseLattice(std::string_view name); // "uniform", "smash"
+constexpr int kSmashLatticeSize = 12;
+
+// The default patch is the Smash lattice (12^3, pilot layout, 2x2 pixels per entry: 296x32
+// pixels with its frame); with a uniform lattice the default size is 16 (the game's and Pilot's
+// lattice, 8-bit exact since 255/15 = 17) as a 64x64 Hald image.
 constexpr int kDefaultPatchSize = 16;
 constexpr int kDefaultPatchScale = 2;
 constexpr int kDefaultPatchMargin = 8; // pixels between the frame and the screenshot's edge
@@ -39,6 +51,7 @@ PatchCorner parseCorner(std::string_view name);
 
 // Where a patch sits, in pixels of the image it was found in or drawn into.
 struct PatchPlacement {
+    PatchLattice lattice = PatchLattice::Uniform;
     LutLayout layout = LutLayout::Hald;
     int size = 0;       // N
     int scale = 1;      // pixels per entry (edge of the square block) as embedded
@@ -57,7 +70,8 @@ struct PatchPlacement {
 void patchFrameSize(LutLayout layout, int size, int scale, int& width, int& height);
 
 struct EmbedOptions {
-    int size = kDefaultPatchSize;
+    PatchLattice lattice = PatchLattice::Smash;
+    int size = kDefaultPatchSize; // uniform lattice only (the smash lattice is 12^3)
     std::optional<LutLayout> layout; // default: hald when N is a square, else pilot
     int scale = kDefaultPatchScale;
     PatchCorner corner = PatchCorner::TopLeft;
@@ -66,9 +80,10 @@ struct EmbedOptions {
 };
 LutLayout defaultPatchLayout(int size);
 
-// The input value a patch lattice index stands for once stored at bitDepth: j/(N-1) rounded to
-// the nearest 8- or 16-bit step (exact for 32).
-float patchInputValue(int index, int size, int bitDepth);
+// The input value a patch lattice index stands for once stored at bitDepth: j/(N-1) (or the
+// Smash lattice value) rounded to the nearest 8- or 16-bit step (exact for 32).
+float patchInputValue(PatchLattice lattice, int index, int size, int bitDepth);
+float patchInputValue(int index, int size, int bitDepth); // uniform
 
 // Draws the frame and the neutral patch into `image` (in place). Throws lut::Error if it does
 // not fit.
