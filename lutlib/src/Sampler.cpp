@@ -62,7 +62,9 @@ void LatticeMap::locate(glm::vec3 in, int idx[3], float frac[3]) const {
         if (!(t > 0.0f)) t = 0.0f;
         if (t > top) t = top;
         // A lattice input given as a float is off its lattice point by rounding only: snap it.
-        const float r = std::nearbyint(t);
+        // Round to nearest (t is in [0, 255]); the SIMD kernel rounds ties to even, which picks
+        // a different r only at |t - r| = 0.5, far outside the snapping tolerance.
+        const float r = static_cast<float>(static_cast<int>(t + 0.5f));
         if (std::fabs(t - r) <= (t + snapBias[c]) * kSnapRelative) t = r;
         int i = static_cast<int>(t);
         if (i > size - 2) i = size - 2;
@@ -119,21 +121,24 @@ public:
             m_view.snapBias[c] = m_map.snapBias[c];
         }
     }
-    void applyPixels(float* rgba, std::size_t count) const override {
-        if (m_kernel) {
-            m_kernel(m_view, rgba, count);
+
+protected:
+    // The shared applyPixels body, instantiated per final class so sample() is a direct,
+    // inlinable call in the scalar loop (the path CPUs without AVX2 take).
+    template <class Self> static void applyWith(const Self& self, float* rgba, std::size_t count) {
+        if (self.m_kernel) {
+            self.m_kernel(self.m_view, rgba, count);
             return;
         }
         for (std::size_t i = 0; i < count; ++i) {
             float* p = rgba + 4 * i;
-            const glm::vec3 o = sample(glm::vec3(p[0], p[1], p[2]));
+            const glm::vec3 o = self.Self::sample(glm::vec3(p[0], p[1], p[2]));
             p[0] = o.x;
             p[1] = o.y;
             p[2] = o.z;
         }
     }
 
-protected:
     glm::vec3 e(int r, int g, int b) const {
         const std::size_t n = static_cast<std::size_t>(m_map.size);
         const float* p = &m_table[4 * (static_cast<std::size_t>(r) + n * (static_cast<std::size_t>(g) + n * b))];
@@ -149,6 +154,7 @@ class NearestSampler final : public SamplerBase {
 public:
     explicit NearestSampler(const Lut3D& lut) : SamplerBase(lut, &detail::nearestAvx2) {}
     Interpolation method() const override { return Interpolation::Nearest; }
+    void applyPixels(float* rgba, std::size_t count) const override { applyWith(*this, rgba, count); }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
@@ -162,6 +168,7 @@ class TrilinearSampler final : public SamplerBase {
 public:
     explicit TrilinearSampler(const Lut3D& lut) : SamplerBase(lut, &detail::trilinearAvx2) {}
     Interpolation method() const override { return Interpolation::Trilinear; }
+    void applyPixels(float* rgba, std::size_t count) const override { applyWith(*this, rgba, count); }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
@@ -181,6 +188,7 @@ class TetrahedralSampler final : public SamplerBase {
 public:
     explicit TetrahedralSampler(const Lut3D& lut) : SamplerBase(lut, &detail::tetrahedralAvx2) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
+    void applyPixels(float* rgba, std::size_t count) const override { applyWith(*this, rgba, count); }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
