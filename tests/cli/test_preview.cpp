@@ -1,0 +1,170 @@
+// lutkit preview: output pixels against the float64 reference of docs/smash-pipeline.md (shared
+// with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
+#include "../pipeline/PipelineTestUtil.h"
+#include "TestSupport.h"
+
+#include "lut/formats/ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace lut;
+using namespace lut::test;
+
+namespace {
+
+// runCli() calls tempDir(), which empties the test's folder: keep our files in a sibling.
+std::string workDir() {
+    const std::string d = tempDir() + ".work";
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
+
+std::string writeCube(const std::string& path, const Lut3D& l) {
+    std::ofstream f(path);
+    f.precision(9);
+    f << "LUT_3D_SIZE " << l.size() << "\n";
+    for (const auto& e : l.entries()) f << e.r << " " << e.g << " " << e.b << "\n";
+    return path;
+}
+
+Image expectedSmash(const Image& scene, const Lut3D& lut, bool bloom) {
+    const RefImg s = toRef(scene);
+    RefImg b(scene.width(), scene.height());
+    if (bloom) b = refSmashBloom(s);
+    Image out(scene.width(), scene.height());
+    for (int y = 0; y < scene.height(); ++y)
+        for (int x = 0; x < scene.width(); ++x) {
+            double in[3], o[3];
+            for (int c = 0; c < 3; ++c) in[c] = s.at(x, y, c) + b.at(x, y, c);
+            refSmashGrade(lut, in, s.at(x, y, 3), o);
+            for (int c = 0; c < 3; ++c) out.pixel(x, y)[c] = static_cast<float>(refSrgbEncode(o[c]));
+            out.pixel(x, y)[3] = scene.pixel(x, y)[3];
+        }
+    return out;
+}
+
+double maxDiff(const Image& a, const Image& b) {
+    double d = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) d = std::max(d, relErr(a.pixels()[i], b.pixels()[i]));
+    return d;
+}
+
+} // namespace
+
+TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
+    const std::string dir = workDir();
+    const Lut3D lut = makeWarmLut(16);
+    const std::string cube = writeCube(dir + "/warm.cube", lut);
+    const Image scene = makeScene(37, 23, 77);
+    formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
+    for (bool bloom : {true, false}) {
+        const std::string out = dir + (bloom ? "/bloom.exr" : "/nobloom.exr");
+        const RunResult r = runCli("preview '" + dir + "/scene.exr' '" + out + "' --lut '" + cube + "'" +
+                                   (bloom ? "" : " --no-bloom"));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const formats::LoadedImage got = formats::readImage(out);
+        EXPECT_EQ(got.info.bitDepth, 32);
+        EXPECT_LT(maxDiff(got.image, expectedSmash(scene, lut, bloom)), 1e-5) << "bloom " << bloom;
+    }
+}
+
+TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
+    const std::string dir = workDir();
+    Image shot(8, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x) {
+            float* p = shot.pixel(x, y);
+            for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(((x * 29 + y * 53 + c * 17) % 200) / 255.0);
+            p[3] = 1.0f;
+        }
+    formats::writeImage(dir + "/shot.png", shot, {8, false, false});
+    const RunResult r = runCli("preview '" + dir + "/shot.png' '" + dir + "/out.png' --no-bloom");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const formats::LoadedImage got = formats::readImage(dir + "/out.png");
+    EXPECT_EQ(got.info.bitDepth, 8);
+    EXPECT_EQ(got.info.channels, 3);
+    const Lut3D neutral = Lut3D::identity(16);
+    int checked = 0;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const double v = shot.pixel(x, y)[c];
+                const double lin = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+                const double in[3] = {lin, lin, lin};
+                double o[3];
+                refSmashGrade(neutral, in, 1.0, o);
+                const double want = std::min(1.0, refSrgbEncode(o[0])) * 255.0;
+                // Skip values within 1e-3 of a rounding boundary (float vs double).
+                if (std::fabs(want - std::floor(want) - 0.5) < 1e-3) continue;
+                EXPECT_EQ(std::lround(got.image.pixel(x, y)[c] * 255.0), std::lround(want)) << x << "," << y;
+                ++checked;
+            }
+    EXPECT_GT(checked, 80);
+}
+
+TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {
+    const std::string dir = workDir();
+    const std::string l0 = writeCube(dir + "/l0.cube", makeWarmLut(16, 1.0));
+    const std::string l1 = writeCube(dir + "/l1.cube", makeWarmLut(16, -1.5));
+    Image scene(24, 16);
+    Rng rng(8);
+    for (auto& v : scene.pixels()) v = static_cast<float>(0.4 * rng.uniform());
+    for (std::size_t i = 3; i < scene.pixels().size(); i += 4) scene.pixels()[i] = 1.0f;
+    formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
+    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/shot.exr' --no-bloom --lut '" + l0 + "'").exitCode, 0);
+    const RunResult r = runCli("preview '" + dir + "/shot.exr' '" + dir + "/regraded.exr' --no-bloom --lut '" + l1 +
+                               "' --from-screenshot --original-lut '" + l0 + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("bloom cannot be undone"), std::string::npos);
+    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/direct.exr' --no-bloom --lut '" + l1 + "'").exitCode, 0);
+    const Image a = formats::readImage(dir + "/regraded.exr").image;
+    const Image b = formats::readImage(dir + "/direct.exr").image;
+    EXPECT_LT(maxDiff(a, b), 3e-5);
+}
+
+TEST(CliPreview, StageSwitchesVerboseAndErrors) {
+    const std::string dir = workDir();
+    Image scene = makeScene(32, 24, 3);
+    formats::writeImage(dir + "/s.exr", scene, {32, false, true});
+    RunResult r = runCli("preview '" + dir + "/s.exr' '" + dir + "/o.exr' --verbose --enable vignette --stage "
+                         "vignette.strength=0.5 --stage bloom.strength=0");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("vignette"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("smash-bloom            skipped"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("ms"), std::string::npos);
+    // bloom strength 0 == --no-bloom: bit-identical files.
+    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/p.exr' --no-bloom --enable vignette --stage "
+                     "vignette.strength=0.5").exitCode, 0);
+    EXPECT_EQ(formats::readImage(dir + "/o.exr").image.pixels(), formats::readImage(dir + "/p.exr").image.pixels());
+    // Vignette darkens the corner relative to the plain chain.
+    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/q.exr' --no-bloom").exitCode, 0);
+    EXPECT_LT(formats::readImage(dir + "/o.exr").image.pixel(0, 0)[1], formats::readImage(dir + "/q.exr").image.pixel(0, 0)[1]);
+
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage nosuch.a=1").exitCode, 2);
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage vignette.strength=7").exitCode, 2);
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --preset bogus").exitCode, 2);
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr'").exitCode, 2);
+    r = runCli("preview --list-stages --preset lecture");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("grain.seed"), std::string::npos);
+    EXPECT_NE(r.out.find("SSAO"), std::string::npos);
+}
+
+TEST(CliPreview, BatchWritesEveryGoodFileAndFailsOnBadOnes) {
+    const std::string dir = workDir();
+    std::filesystem::create_directories(dir + "/in");
+    const Image scene = makeScene(16, 12, 5);
+    formats::writeImage(dir + "/in/one.exr", scene, {32, false, true});
+    formats::writeImage(dir + "/in/two.png", Image(6, 6, 0.5f), {8, false, true});
+    { std::ofstream(dir + "/in/bad.exr") << "garbage"; }
+    const RunResult r = runCli("preview '" + dir + "/in' -o '" + dir + "/out' --no-bloom");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("bad.exr"), std::string::npos) << r.err;
+    const formats::LoadedImage one = formats::readImage(dir + "/out/one.exr");
+    EXPECT_LT(maxDiff(one.image, expectedSmash(scene, Lut3D::identity(16), false)), 1e-5);
+    EXPECT_EQ(formats::readImage(dir + "/out/two.png").info.bitDepth, 8);
+}
