@@ -144,6 +144,8 @@ int bitDepthBits(OCIO::BitDepth d) {
 
 struct ProcessorFacts {
     unsigned long gridSize = 0; // largest 3D grid in the processor (0 = none)
+    unsigned long length1d = 0; // longest 1D table (0 = none)
+    bool halfDomain = false;    // a 1D table indexed by half floats (not a ramp over [0,1])
     int lut1dCount = 0;
     int lut3dCount = 0;
     int otherCount = 0;
@@ -177,6 +179,8 @@ ProcessorFacts inspect(const OCIO::ConstProcessorRcPtr& processor) {
             collectMetadata(l3->getFormatMetadata(), facts);
         } else if (auto l1 = OCIO::DynamicPtrCast<const OCIO::Lut1DTransform>(t)) {
             ++facts.lut1dCount;
+            facts.length1d = std::max(facts.length1d, l1->getLength());
+            facts.halfDomain = facts.halfDomain || l1->getInputHalfDomain();
             facts.bitDepth = std::max(facts.bitDepth, bitDepthBits(l1->getFileOutputBitDepth()));
             collectMetadata(l1->getFormatMetadata(), facts);
         } else {
@@ -230,6 +234,26 @@ public:
             out.dialect = ocioFormatNamesFor(extensionOf(path));
             out.sourceBitDepth = facts.bitDepth;
 
+            const auto cpu = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                                 OCIO::OPTIMIZATION_NONE);
+            // A file of 1D tables only (.spi1d, a 1D .csp, a Discreet .lut) stays a per-channel
+            // table: sampled on its own length along the grey ramp, which for per-channel tables
+            // is the whole function. Asking for --size makes it a 3D lattice like everything else.
+            if (options.size == 0 && facts.lut1dCount > 0 && facts.lut3dCount == 0 && facts.otherCount == 0 &&
+                !facts.halfDomain && facts.length1d >= static_cast<unsigned long>(limits::kMin1DSize) &&
+                facts.length1d <= static_cast<unsigned long>(limits::kMax1DSize)) {
+                Lut1D shaper = Lut1D::identity(static_cast<int>(facts.length1d));
+                shaper.setTitle(facts.title);
+                OCIO::PackedImageDesc desc(&shaper.entries()[0].x, shaper.size(), 1, 3);
+                cpu->apply(desc);
+                for (auto& v : shaper.entries())
+                    for (int c = 0; c < 3; ++c)
+                        if (!std::isfinite(v[c])) v[c] = 0.0f;
+                out.shaper = std::move(shaper);
+                session.appendDiagnostics(out.diagnostics);
+                return out;
+            }
+
             int size = options.size;
             if (size == 0)
                 size = facts.gridSize >= static_cast<unsigned long>(limits::kMin3DSize) &&
@@ -239,8 +263,6 @@ public:
             lut = Lut3D::identity(size);
             lut.setTitle(facts.title);
             lut.comments() = facts.comments;
-            const auto cpu = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                                 OCIO::OPTIMIZATION_NONE);
             // The identity lattice is already in our order (red fastest): OCIO maps it in place,
             // so no index order has to be translated. Rows of one (g,b) line each, in parallel.
             float* data = lut.data();

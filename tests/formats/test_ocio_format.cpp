@@ -246,3 +246,27 @@ TEST(OcioFormat, SizeOptionOutOfRangeIsRefused) {
     o.size = 257;
     EXPECT_THROW(lut::formats::readLut(dataPath("ocio/affine.spi3d"), o), lut::Error);
 }
+
+TEST(OcioFormat, OneDimensionalFilesStayOneDimensional) {
+    // curve.spi1d: 5 entries of (x^2, 0.5x + 0.1, 1 - x) at x = i/4.
+    const auto curve = [](float x) { return glm::vec3(x * x, 0.5f * x + 0.1f, 1.0f - x); };
+    const lut::LutFile f = lut::formats::readLut(dataPath("ocio/curve.spi1d"));
+    ASSERT_TRUE(f.shaper);
+    EXPECT_FALSE(f.cube);
+    ASSERT_EQ(f.shaper->size(), 5);
+    for (int i = 0; i < 5; ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR((*f.shaper)[i][c], curve(i / 4.0f)[c], 2e-6) << i;
+    // Asked for a lattice, it is one: each channel follows its own curve.
+    lut::FormatOptions o;
+    o.size = 5;
+    const lut::LutFile g = lut::formats::readLut(dataPath("ocio/curve.spi1d"), o);
+    ASSERT_TRUE(g.cube);
+    for (int b = 0; b < 5; ++b)
+        for (int gg = 0; gg < 5; ++gg)
+            for (int r = 0; r < 5; ++r) {
+                const glm::vec3 v = g.cube->at(r, gg, b);
+                EXPECT_NEAR(v.x, curve(r / 4.0f).x, 2e-6);
+                EXPECT_NEAR(v.y, curve(gg / 4.0f).y, 2e-6);
+                EXPECT_NEAR(v.z, curve(b / 4.0f).z, 2e-6);
+            }
+}
