@@ -38,7 +38,8 @@ for entry in "${neutrals[@]}"; do
   name="${entry%%|*}"
   opts="${entry#*|}"
   # shellcheck disable=SC2086
-  msg="$("$lutkit" neutral --size 16 $opts "$out/$name" | head -n 1)"
+  msg="$("$lutkit" neutral --size 16 $opts "$out/$name")"
+  msg="${msg%%$'\n'*}"
   echo "${msg#wrote }, $(bytes "$out/$name") bytes"
 done
 
