@@ -274,3 +274,18 @@ TEST(Nutexb, AlphaIgnoredWithDiagnostic) {
     for (const auto& d : f.diagnostics) found |= d.message.find("2 texels have alpha") != std::string::npos;
     EXPECT_TRUE(found);
 }
+
+TEST(Nutexb, RegistryHooksAndNames) {
+    lut::formats::registerBuiltinFormats();
+    const auto& reg = lut::FormatRegistry::instance();
+    const lut::Format* n = reg.byName("nutexb");
+    ASSERT_NE(n, nullptr);
+    EXPECT_EQ(n->fixedSize(), 16);
+    EXPECT_EQ(n->storedBitDepth(), 8);
+    const auto byExt = reg.forExtension("x/color_grading_lut.NUTEXB");
+    ASSERT_EQ(byExt.size(), 1u);
+    EXPECT_EQ(byExt.front(), n);
+    ASSERT_NE(reg.byName("strip"), nullptr);
+    ASSERT_NE(reg.byName("hald"), nullptr);
+    EXPECT_EQ(reg.forExtension("a.png").front(), reg.byName("strip"));
+}
