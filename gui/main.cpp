@@ -72,14 +72,15 @@ int main(int argc, char** argv) {
     parser.addPositionalArgument(QStringLiteral("lut"), QStringLiteral("LUT file (any format lutkit reads)."), QStringLiteral("[LUT]]"));
     QCommandLineOption shotOpt(QStringLiteral("screenshot"), QStringLiteral("Render the window offscreen once the preview is ready, save it to FILE and exit."), QStringLiteral("FILE"));
     QCommandLineOption saveOpt(QStringLiteral("save-preview"), QStringLiteral("Write the full-resolution preview image to FILE (as lutkit preview does) and exit."), QStringLiteral("FILE"));
-    QCommandLineOption presetOpt(QStringLiteral("preset"), QStringLiteral("Preview preset: smash, pilot or none (default smash)."), QStringLiteral("NAME"), QStringLiteral("smash"));
+    QCommandLineOption presetOpt(QStringLiteral("preset"), QStringLiteral("Preview preset: smash, pilot, lecture or none (default smash)."), QStringLiteral("NAME"), QStringLiteral("smash"));
     QCommandLineOption interpOpt(QStringLiteral("interpolation"), QStringLiteral("LUT interpolation: trilinear, tetrahedral or nearest."), QStringLiteral("NAME"), QStringLiteral("trilinear"));
     QCommandLineOption noBloomOpt(QStringLiteral("no-bloom"), QStringLiteral("Switch bloom off."));
     QCommandLineOption noLutOpt(QStringLiteral("no-lut"), QStringLiteral("Preview with a neutral LUT."));
     QCommandLineOption noBrightenOpt(QStringLiteral("no-brighten"), QStringLiteral("Switch the Smash brighten pass off."));
     QCommandLineOption sizeOpt(QStringLiteral("window-size"), QStringLiteral("Window size WxH (default 1480x920)."), QStringLiteral("WxH"));
+    QCommandLineOption fromShotOpt(QStringLiteral("from-screenshot"), QStringLiteral("IMAGE is an in-game screenshot: undo the game's grading first (as lutkit preview --from-screenshot)."));
     QCommandLineOption verboseOpt(QStringLiteral("verbose"), QStringLiteral("Log each preview update's time to stderr."));
-    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, verboseOpt});
+    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, fromShotOpt, verboseOpt});
     parser.process(app);
 
     lut::gui::MainWindow window;
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
     options.lutEnabled = !parser.isSet(noLutOpt);
     options.brighten = !parser.isSet(noBrightenOpt);
     window.setPreviewOptions(options);
+    window.document()->setFromScreenshot(parser.isSet(fromShotOpt));
     if (parser.isSet(sizeOpt)) {
         const QStringList wh = parser.value(sizeOpt).split('x');
         if (wh.size() == 2) window.resize(wh[0].toInt(), wh[1].toInt());

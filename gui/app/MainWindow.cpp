@@ -213,6 +213,7 @@ void MainWindow::buildActions() {
     m_preset->setObjectName("preset");
     m_preset->addItem(tr("Smash"), int(Preset::Smash));
     m_preset->addItem(tr("Pilot"), int(Preset::Pilot));
+    m_preset->addItem(tr("Lecture"), int(Preset::Lecture));
     m_preset->addItem(tr("None"), int(Preset::None));
     m_preset->setToolTip(tr("Post-processing chain the preview runs (the same as lutkit preview --preset)"));
     m_interp = new QComboBox(this);
@@ -223,6 +224,17 @@ void MainWindow::buildActions() {
     m_bloomAct = preview->addAction(tr("&Bloom"));
     m_lutAct = preview->addAction(tr("&LUT"));
     m_brightenAct = preview->addAction(tr("B&righten"));
+    preview->addSeparator();
+    QAction* shotAct = preview->addAction(tr("Input Is an In-Game &Screenshot"));
+    shotAct->setObjectName("fromScreenshot");
+    shotAct->setCheckable(true);
+    shotAct->setToolTip(tr("Undo the game's grading (neutral LUT) before previewing, as "
+                           "lutkit preview --from-screenshot; bloom in the image stays"));
+    connect(shotAct, &QAction::toggled, this, [this](bool on) {
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        m_doc->setFromScreenshot(on);
+        QApplication::restoreOverrideCursor();
+    });
     for (QAction* a : {m_bloomAct, m_lutAct, m_brightenAct}) {
         a->setCheckable(true);
         a->setChecked(true);
@@ -511,8 +523,7 @@ bool MainWindow::savePreviewImage(const QString& path) {
         // Always a fresh full-resolution render: the view may show a proxy.
         PreviewResult r = renderPreview(*m_doc->sceneImage(), previewOptions(), m_doc->effectiveLutShared());
         formats::ImageWriteOptions o;
-        const QString ext = QFileInfo(path).suffix().toLower();
-        o.bitDepth = (ext == QLatin1String("exr") || ext == QLatin1String("hdr")) ? 32 : 8;
+        previewWriteFormat(m_doc->imageInfo(), path.toStdString(), o.bitDepth, o.alpha);
         formats::writeImage(path.toStdString(), r.image, o);
     } catch (const std::exception& e) {
         QApplication::restoreOverrideCursor();

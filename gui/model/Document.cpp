@@ -147,12 +147,23 @@ Diagnostics Document::saveAs(const QString& path) {
 
 void Document::openImage(const QString& path) {
     formats::LoadedImage loaded = formats::readImage(path.toStdString());
-    const bool linear = loaded.info.isFloat;
-    auto scene = std::make_shared<const Image>(prepareScene(loaded.image, linear));
+    // A screenshot holds display-encoded values whatever its bit depth (as lutkit preview).
+    const bool linear = loaded.info.isFloat && !m_fromScreenshot;
+    auto scene = std::make_shared<const Image>(prepareScene(loaded.image, linear, m_fromScreenshot));
     m_image = std::make_shared<const Image>(std::move(loaded.image));
     m_scene = std::move(scene);
     m_imagePath = path;
     m_imageLinear = linear;
+    m_imageInfo = loaded.info;
+    emit imageChanged();
+}
+
+void Document::setFromScreenshot(bool on) {
+    if (on == m_fromScreenshot) return;
+    m_fromScreenshot = on;
+    if (!m_image) return;
+    m_imageLinear = m_imageInfo.isFloat && !on;
+    m_scene = std::make_shared<const Image>(prepareScene(*m_image, m_imageLinear, on));
     emit imageChanged();
 }
 

@@ -12,6 +12,7 @@
 #include "lut/Format.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/formats/ImageIO.h"
 
 #include <QObject>
 #include <QString>
@@ -89,6 +90,11 @@ public:
     std::shared_ptr<const Image> storedImage() const { return m_image; }
     std::shared_ptr<const Image> sceneImage() const { return m_scene; }
     bool imageIsLinear() const { return m_imageLinear; }
+    const formats::ImageInfo& imageInfo() const { return m_imageInfo; }
+    // An in-game screenshot already went through the game's grading: undo it (with the neutral
+    // LUT) when making the scene frame, as `lutkit preview --from-screenshot` does.
+    void setFromScreenshot(bool on);
+    bool fromScreenshot() const { return m_fromScreenshot; }
 
 signals:
     void lutReplaced();            // a different base LUT (open / new)
@@ -119,6 +125,8 @@ private:
     std::shared_ptr<const Image> m_scene;
     QString m_imagePath;
     bool m_imageLinear = false;
+    bool m_fromScreenshot = false;
+    formats::ImageInfo m_imageInfo;
 };
 
 } // namespace lut::gui

@@ -5,6 +5,7 @@
 #include "lut/Image.h"
 #include "lut/Interpolation.h"
 #include "lut/Lut3D.h"
+#include "lut/formats/ImageIO.h"
 #include "lut/pipeline/Pipeline.h"
 
 #include <memory>
@@ -22,9 +23,15 @@ struct PreviewOptions {
 };
 
 // The scene frame the pipeline starts from, made once per opened image: stored values of
-// 8/16-bit files are sRGB-decoded to linear, float files (EXR) are already linear scene values.
-// Same call the CLI makes (lut::prepareSceneFrame).
-Image prepareScene(const Image& stored, bool storedIsLinear, int nthreads = 0);
+// 8/16-bit files are sRGB-decoded to linear, float files (EXR) are already linear scene values;
+// fromScreenshot also undoes the game's grading (neutral LUT). Same call the CLI makes
+// (lut::prepareSceneFrame).
+Image prepareScene(const Image& stored, bool storedIsLinear, bool fromScreenshot = false,
+                   int nthreads = 0);
+
+// The bit depth and alpha `lutkit preview` writes for an input of this kind to `outPath`.
+void previewWriteFormat(const formats::ImageInfo& input, const std::string& outPath, int& bitDepth,
+                        bool& alpha);
 
 // What a preview settings choice means for the pipeline.
 PipelineSettings pipelineSettings(const PreviewOptions& options,

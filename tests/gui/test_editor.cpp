@@ -26,6 +26,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <ctime>
+
 using namespace lut;
 using namespace lut::gui;
 using lut::gui::test::exposureRef;
@@ -39,6 +41,14 @@ void dragSlider(QSlider* s, int position) {
     const int start = s->value();
     for (int i = 1; i <= 4; ++i) s->setValue(start + (position - start) * i / 4);
     s->setSliderDown(false);
+}
+
+// CPU seconds this process used (all threads): with a loaded machine the wall time says little,
+// CPU time / cores is what the update costs on an idle one.
+double processCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) / 1e6;
 }
 
 bool runsOk(const QString& program, const QStringList& args, QString* err = nullptr) {
@@ -239,14 +249,41 @@ private slots:
         help.waitForFinished(60000);
         if (!QString::fromLocal8Bit(help.readAllStandardOutput()).contains(QStringLiteral("preview")))
             QSKIP("lutkit preview is not available in this build");
-        const QString cli = dir.filePath("cli.png");
-        QVERIFY2(runsOk(QStringLiteral(LUTKIT_CLI),
-                        {QStringLiteral("preview"), samplePath("sample_scene.png"), QStringLiteral("--lut"),
-                         samplePath("sample_grade.cube"), QStringLiteral("-o"), cli}, &err), qPrintable(err));
-        const formats::LoadedImage c = formats::readImage(cli.toStdString());
-        QCOMPARE(c.image.width(), got.image.width());
-        QCOMPARE(c.image.height(), got.image.height());
-        QVERIFY(c.image.pixels() == got.image.pixels());
+        // Same inputs, several settings: the editor's saved preview equals the CLI's output.
+        struct Case {
+            const char* image;
+            QStringList editorArgs;
+            QStringList cliArgs;
+        };
+        const QList<Case> cases = {
+            {"sample_scene.png", {}, {}},
+            {"sample_scene.exr", {}, {}},
+            {"sample_scene.png", {QStringLiteral("--preset"), QStringLiteral("pilot"), QStringLiteral("--interpolation"), QStringLiteral("tetrahedral")},
+             {QStringLiteral("--preset"), QStringLiteral("pilot"), QStringLiteral("--interp"), QStringLiteral("tetrahedral")}},
+            {"sample_scene.png", {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")},
+             {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")}},
+        };
+        int n = 0;
+        for (const Case& c : cases) {
+            const QString ext = QString::fromLatin1(c.image).endsWith(QLatin1String(".exr")) ? QStringLiteral(".exr") : QStringLiteral(".png");
+            const QString mine = dir.filePath(QStringLiteral("editor%1%2").arg(n).arg(ext));
+            const QString cli = dir.filePath(QStringLiteral("cli%1%2").arg(n++).arg(ext));
+            QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+                            QStringList{QStringLiteral("--save-preview"), mine} + c.editorArgs +
+                                QStringList{samplePath(c.image), samplePath("sample_grade.cube")}, &err),
+                     qPrintable(err));
+            QVERIFY2(runsOk(QStringLiteral(LUTKIT_CLI),
+                            QStringList{QStringLiteral("preview"), QStringLiteral("-q"), samplePath(c.image), cli,
+                                        QStringLiteral("--lut"), samplePath("sample_grade.cube")} + c.cliArgs, &err),
+                     qPrintable(err));
+            const formats::LoadedImage a = formats::readImage(mine.toStdString());
+            const formats::LoadedImage b = formats::readImage(cli.toStdString());
+            QCOMPARE(a.info.bitDepth, b.info.bitDepth);
+            QCOMPARE(a.info.channels, b.info.channels);
+            QCOMPARE(a.image.width(), b.image.width());
+            QCOMPARE(a.image.height(), b.image.height());
+            QVERIFY2(a.image.pixels() == b.image.pixels(), c.image);
+        }
     }
 
     // Responsiveness on a 1920x1080 frame: logged, not asserted (timing depends on the machine).
@@ -270,19 +307,26 @@ private slots:
         w.waitForPreview();
         QSlider* slider = w.adjustmentsPanel()->slider(AdjustParam::Saturation);
         QElapsedTimer t;
-        QList<double> full, proxy;
+        QList<double> full, proxy, fullLut, proxyLut, fullCpu, proxyCpu;
+        const double firstAllStages = w.currentFrame()->totalMilliseconds;
         for (int i = 0; i < 5; ++i) {
             t.restart();
+            double cpu = processCpuMs();
             slider->setValue(slider->value() + 20); // a click step: full resolution
             w.scheduler()->waitForIdle();
             full << t.nsecsElapsed() / 1e6;
+            fullCpu << processCpuMs() - cpu;
+            fullLut << w.currentFrame()->milliseconds;
         }
         slider->setSliderDown(true); // dragging: proxy frames
         for (int i = 0; i < 5; ++i) {
             t.restart();
+            double cpu = processCpuMs();
             slider->setValue(slider->value() + 20);
             w.scheduler()->waitForIdle();
             proxy << t.nsecsElapsed() / 1e6;
+            proxyCpu << processCpuMs() - cpu;
+            proxyLut << w.currentFrame()->milliseconds;
         }
         slider->setSliderDown(false);
         w.waitForPreview();
@@ -291,8 +335,13 @@ private slots:
             for (double v : l) s << QString::number(v, 'f', 1);
             return s.join(QStringLiteral(", "));
         };
-        qInfo("1920x1080 slider -> frame on screen, full resolution: %s ms", qPrintable(fmt(full)));
-        qInfo("1920x1080 slider -> frame on screen, drag proxy:      %s ms", qPrintable(fmt(proxy)));
+        qInfo("1920x1080 first frame (every stage + 8-bit conversion): %.1f ms", firstAllStages);
+        qInfo("1920x1080 slider -> frame on screen, full resolution: %s ms (LUT stages %s)",
+              qPrintable(fmt(full)), qPrintable(fmt(fullLut)));
+        qInfo("1920x1080 slider -> frame on screen, drag proxy:      %s ms (LUT stages %s)",
+              qPrintable(fmt(proxy)), qPrintable(fmt(proxyLut)));
+        qInfo("CPU time per update (all threads), full: %s ms; proxy: %s ms; hardware threads %d",
+              qPrintable(fmt(fullCpu)), qPrintable(fmt(proxyCpu)), QThread::idealThreadCount());
         QCOMPARE(w.currentFrame()->image.width(), 1920);
     }
 };
