@@ -45,6 +45,7 @@ static std::unique_ptr<OIIO::ImageInput> openInput(const std::string& path) {
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         std::string err = OIIO::geterror();
+        err = err.substr(0, err.find('\n')); // OIIO stacks libpng's lines; errors are one line
         if (err.empty()) err = "not an image OpenImageIO can read";
         throw Error(path + ": cannot read image: " + err);
     }
@@ -79,6 +80,7 @@ LoadedImage readImage(const std::string& path) {
     std::vector<float> buf(static_cast<std::size_t>(spec.width) * spec.height * nch);
     if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, buf.data())) {
         std::string err = in->geterror();
+        err = err.substr(0, err.find('\n')); // one line: OIIO appends libpng's own lines
         throw Error(path + ": cannot read image data: " + (err.empty() ? "truncated or corrupt" : err));
     }
     in->close();
