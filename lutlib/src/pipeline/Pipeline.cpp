@@ -169,7 +169,7 @@ std::string PipelineReport::str() const {
     char buf[160];
     for (const auto& s : stages) {
         if (!s.enabled) continue;
-        std::snprintf(buf, sizeof buf, "  %-22s %-8s %9.3f ms\n", s.name.c_str(), s.ran ? "ran" : "skipped",
+        std::snprintf(buf, sizeof buf, "  %-22s %-8s %9.3f ms\n", s.name.c_str(), s.fused ? "fused" : s.ran ? "ran" : "skipped",
                       s.milliseconds);
         os << buf;
     }
@@ -243,6 +243,7 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
             // loop while the pixel is in registers.
             if (!pass.empty() && m_stages[pass.back()].get() == grade && detail::isSrgbDisplay(s)) {
                 detail::setSmashGradeFusedDisplay(*grade, true);
+                report.stages[i].fused = true;
             } else {
                 pass.push_back(i);
             }

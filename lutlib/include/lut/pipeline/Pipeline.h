@@ -68,6 +68,7 @@ struct StageReport {
     std::string name;
     bool ran = false;
     bool enabled = true;
+    bool fused = false;          // ran inside the previous stage's loop (display after smash-grade)
     double milliseconds = 0.0;   // wall time of prepare + this stage's share of the fused passes
 };
 struct PipelineReport {
