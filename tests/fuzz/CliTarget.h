@@ -71,6 +71,35 @@ int lut::cli::runInfo(const InfoOptions& o) {
 }
 #endif
 
+#if __has_include("../../cli/setup_validate.inc")
+#include "../../cli/setup_validate.inc"
+int lut::cli::runValidate(const ValidateOptions&) { return 0; }
+#endif
+#if __has_include("../../cli/setup_apply.inc")
+#include "../../cli/setup_apply.inc"
+int lut::cli::runApply(const ApplyOptions&) { return 0; }
+#endif
+#if __has_include("../../cli/setup_preview.inc")
+#include "../../cli/setup_preview.inc"
+int lut::cli::runPreview(const PreviewOptions&) { return 0; }
+#endif
+#if __has_include("../../cli/setup_embed.inc")
+#include "../../cli/setup_embed.inc"
+int lut::cli::runEmbed(const EmbedOptions&) { return 0; }
+#endif
+#if __has_include("../../cli/setup_extract.inc")
+#include "../../cli/setup_extract.inc"
+int lut::cli::runExtract(const ExtractOptions&) { return 0; }
+#endif
+#if __has_include("../../cli/setup_fit.inc")
+#include "../../cli/setup_fit.inc"
+int lut::cli::runFit(const FitOptions&) { return 0; }
+#endif
+#if __has_include("../../cli/setup_bench.inc")
+#include "../../cli/setup_bench.inc"
+int lut::cli::runBench(const BenchOptions&) { return 0; }
+#endif
+
 namespace lut::fuzz {
 
 // The bytes are the argument list after "lutkit", split at NUL and newline.
@@ -101,6 +130,27 @@ inline bool runCliArgs(const std::uint8_t* data, std::size_t size) {
 #endif
 #if __has_include("../../cli/setup_info.inc")
     setupInfo(app);
+#endif
+#if __has_include("../../cli/setup_validate.inc")
+    setupValidate(app);
+#endif
+#if __has_include("../../cli/setup_apply.inc")
+    setupApply(app);
+#endif
+#if __has_include("../../cli/setup_preview.inc")
+    setupPreview(app);
+#endif
+#if __has_include("../../cli/setup_embed.inc")
+    setupEmbed(app);
+#endif
+#if __has_include("../../cli/setup_extract.inc")
+    setupExtract(app);
+#endif
+#if __has_include("../../cli/setup_fit.inc")
+    setupFit(app);
+#endif
+#if __has_include("../../cli/setup_bench.inc")
+    setupBench(app);
 #endif
     try {
         app.parse(static_cast<int>(argv.size()), argv.data());

@@ -98,5 +98,10 @@ for i, w in enumerate(["tetrahedral", "tetra", "trilinear", "linear", "nearest",
 for i, args in enumerate([["convert", "a.cube", "b.nutexb", "--size", "16", "--interp", "trilinear"],
                           ["neutral", "out.png", "--size", "33", "--bit-depth", "16", "--layout", "unity"],
                           ["info", "in.3dl", "--size", "65", "--json"],
-                          ["convert", "a.cube", "b.png", "--bit-depth=8", "--dither", "--size=256"]]):
+                          ["convert", "a.cube", "b.png", "--bit-depth=8", "--dither", "--size=256"],
+                          ["embed", "shot.png", "out.png", "--size", "12", "--scale", "3", "--margin", "0"],
+                          ["fit", "a.png", "b.png", "out.cube", "--size", "129"],
+                          ["apply", "--lut", "a.cube", "in.png", "out.png", "--threads", "1024"],
+                          ["bench", "--width", "8", "--height", "1", "--reps", "1", "--sizes", "2", "3"],
+                          ["preview", "in.png", "out.png", "--frame", "-1", "--bit-depth", "16"]]):
     put("cli_numbers", f"args-{i}", "\0".join(args))
