@@ -4,6 +4,7 @@
 
 #include "Commands.h"
 
+#include "lut/AtomicFile.h"
 #include "lut/Error.h"
 #include "lut/Interpolation.h"
 #include "lut/Parallel.h"
@@ -102,6 +103,7 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
             std::string text, fail;
             try {
                 if (j.output.empty()) throw Error("another input has the same file name (its output would be overwritten)");
+                checkNotSameFile(j.input, j.output); // never overwrite an input (issue 7)
                 text = fn(j, inner);
             } catch (const std::exception& e) {
                 fail = e.what();
