@@ -1,6 +1,7 @@
 #include "cmd_fit.h"
 
 #include "Commands.h"
+#include "lut/AtomicFile.h"
 #include "lut/Fit.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -11,6 +12,8 @@
 namespace lut::cli {
 
 int runFit(const FitOptions& o) {
+    checkNotSameFile(o.before, o.output); // never overwrite an input (issue 7)
+    checkNotSameFile(o.after, o.output);
     auto before = formats::readImage(o.before);
     auto after = formats::readImage(o.after);
     lut::FitOptions fo;
