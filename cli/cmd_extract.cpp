@@ -1,6 +1,7 @@
 #include "cmd_extract.h"
 
 #include "Commands.h"
+#include "lut/AtomicFile.h"
 #include "lut/Embed.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -11,6 +12,7 @@
 namespace lut::cli {
 
 int runExtract(const ExtractOptions& o) {
+    checkNotSameFile(o.input, o.output); // never overwrite an input (issue 7)
     auto loaded = formats::readImage(o.input);
     lut::ExtractOptions eo;
     eo.target = parseTarget(o.target);
