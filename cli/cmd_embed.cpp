@@ -12,6 +12,7 @@ namespace lut::cli {
 int runEmbed(const EmbedOptions& o) {
     auto loaded = formats::readImage(o.input);
     lut::EmbedOptions eo;
+    eo.lattice = o.lattice.empty() ? PatchLattice::Smash : parseLattice(o.lattice);
     eo.size = o.size;
     if (!o.layout.empty()) eo.layout = parseLayout(o.layout);
     eo.scale = o.scale;
@@ -30,7 +31,8 @@ int runEmbed(const EmbedOptions& o) {
                   << ": JPEG is lossy; use PNG or TIFF, or at least --scale 4 so blocks can be averaged\n";
     if (ext == ".png" && eo.bitDepth == 32) wo.bitDepth = 16;
     formats::writeImage(o.output, loaded.image, wo);
-    std::cout << "embedded a " << p.size << "^3 " << toString(p.layout) << " patch at scale " << p.scale
+    std::cout << "embedded a " << p.size << "^3 " << toString(p.lattice) << "-lattice " << toString(p.layout)
+              << " patch at scale " << p.scale
               << " (" << p.frameWidth << "x" << p.frameHeight << " pixels with its frame) at (" << p.frameX
               << ", " << p.frameY << "), " << wo.bitDepth << "-bit: " << o.output << "\n"
               << "grade the whole image with global adjustments only, then run: lutkit extract EDITED OUT\n";

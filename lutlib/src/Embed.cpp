@@ -861,7 +861,8 @@ ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& option
     const PatchFunction edit(patch.values, patch.axis);
 
     if (options.target == ExtractTarget::Raw) {
-        const int m = options.outputSize > 0 ? options.outputSize : n;
+        // the smash lattice is not uniform: its raw LUT defaults to the game's 16^3
+        const int m = options.outputSize > 0 ? options.outputSize : pl.lattice == PatchLattice::Smash ? 16 : n;
         Lut3D out(m);
         for (int b = 0; b < m; ++b)
             for (int g = 0; g < m; ++g)

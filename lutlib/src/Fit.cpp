@@ -3,11 +3,13 @@
 
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
+#include "lut/Sampler.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <mutex>
 #include <unordered_set>
 
@@ -44,6 +46,18 @@ public:
     std::size_t count() const { return m_count; }
     std::vector<double>& data() { return m_data; }
 
+    // Marks the nodes whose stencil row holds data (after assembly): most of a sparsely covered
+    // cube has none, and apply() skips those rows.
+    void finishAssembly() {
+        m_hasData.assign(m_count, 0);
+        for (std::size_t i = 0; i < m_count; ++i)
+            for (int o = 0; o < kStencil; ++o)
+                if (m_data[i * kStencil + o] != 0.0) {
+                    m_hasData[i] = 1;
+                    break;
+                }
+    }
+
     // y = A v (data + lambda * smoothness + mu * I)
     void apply(const std::vector<double>& v, std::vector<double>& y) const {
         const int n = m_n;
@@ -52,18 +66,20 @@ public:
             for (int g = 0; g < n; ++g)
                 for (int r = 0; r < n; ++r) {
                     const std::size_t i = std::size_t(r) + std::size_t(n) * g + nn * b;
-                    const double* row = &m_data[i * kStencil];
                     double acc = m_mu * v[i];
-                    for (int db = -1; db <= 1; ++db) {
-                        if (b + db < 0 || b + db >= n) continue;
-                        for (int dg = -1; dg <= 1; ++dg) {
-                            if (g + dg < 0 || g + dg >= n) continue;
-                            for (int dr = -1; dr <= 1; ++dr) {
-                                if (r + dr < 0 || r + dr >= n) continue;
-                                const double m = row[(dr + 1) + 3 * (dg + 1) + 9 * (db + 1)];
-                                if (m != 0.0)
-                                    acc += m * v[std::size_t(std::ptrdiff_t(i) + dr + std::ptrdiff_t(n) * dg +
-                                                             std::ptrdiff_t(nn) * db)];
+                    if (m_hasData[i]) {
+                        const double* row = &m_data[i * kStencil];
+                        for (int db = -1; db <= 1; ++db) {
+                            if (b + db < 0 || b + db >= n) continue;
+                            for (int dg = -1; dg <= 1; ++dg) {
+                                if (g + dg < 0 || g + dg >= n) continue;
+                                for (int dr = -1; dr <= 1; ++dr) {
+                                    if (r + dr < 0 || r + dr >= n) continue;
+                                    const double m = row[(dr + 1) + 3 * (dg + 1) + 9 * (db + 1)];
+                                    if (m != 0.0)
+                                        acc += m * v[std::size_t(std::ptrdiff_t(i) + dr + std::ptrdiff_t(n) * dg +
+                                                                 std::ptrdiff_t(nn) * db)];
+                                }
                             }
                         }
                     }
@@ -98,14 +114,17 @@ private:
         const std::ptrdiff_t strides[3] = {1, n, std::ptrdiff_t(n) * n};
         for (int axis = 0; axis < 3; ++axis) {
             const std::ptrdiff_t s = strides[axis];
-            for (std::size_t i = 0; i < m_count; ++i) {
-                const int coord = static_cast<int>((std::ptrdiff_t(i) / s) % n);
-                if (coord < 1 || coord > n - 2) continue;
-                const double d = m_lambda * (v[i - s] - 2.0 * v[i] + v[i + s]);
-                y[i - s] += d;
-                y[i] -= 2.0 * d;
-                y[i + s] += d;
-            }
+            for (int b = 0; b < n; ++b)
+                for (int g = 0; g < n; ++g)
+                    for (int r = 0; r < n; ++r) {
+                        const int coord = axis == 0 ? r : axis == 1 ? g : b;
+                        if (coord < 1 || coord > n - 2) continue;
+                        const std::ptrdiff_t i = r + std::ptrdiff_t(n) * (g + std::ptrdiff_t(n) * b);
+                        const double d = m_lambda * (v[i - s] - 2.0 * v[i] + v[i + s]);
+                        y[i - s] += d;
+                        y[i] -= 2.0 * d;
+                        y[i + s] += d;
+                    }
         }
     }
 
@@ -114,6 +133,7 @@ private:
     double m_lambda;
     double m_mu;
     std::vector<double> m_data;
+    std::vector<std::uint8_t> m_hasData;
 };
 
 // Jacobi-preconditioned conjugate gradients; x holds the start and receives the solution.
@@ -185,7 +205,17 @@ bool FitResult::has(RoundtripWarning w) const {
     return std::find(warnings.begin(), warnings.end(), w) != warnings.end();
 }
 
+namespace {
+FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o, const Lut3D* start);
+}
+
 FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptions& o) {
+    return fitImpl(before, after, o, nullptr);
+}
+
+namespace {
+
+FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o, const Lut3D* start) {
     if (before.empty() || after.empty()) throw Error("fit: empty image");
     if (before.width != after.width || before.height != after.height)
         throw Error("fit: the images differ in size (" + std::to_string(before.width) + "x" +
@@ -242,13 +272,28 @@ FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptio
     const double mu = 1e-4 * std::max(o.smoothness, 1e-3);
     std::vector<double> weights(samples.size(), 1.0);
     std::vector<std::vector<double>> solution(3, std::vector<double>(std::size_t(n) * nn));
+    // Start from a fit on the lattice of half the resolution (recursively): CG removes the
+    // high frequencies quickly and the smooth fill of empty regions slowly, which the coarse
+    // solution already holds (a cascade, the cheap half of multigrid).
+    Lut3D coarse;
+    if (!start && n > 9) {
+        FitOptions co = o;
+        co.size = (n + 1) / 2;
+        co.robustRounds = std::min(o.robustRounds, 2);
+        coarse = fitImpl(before, after, co, nullptr).lut;
+        start = &coarse;
+    }
+    std::unique_ptr<Sampler> startSampler;
+    if (start) startSampler = makeSampler(*start, Interpolation::Trilinear);
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r) {
                 const std::size_t i = std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
-                solution[0][i] = double(r) / cells;
-                solution[1][i] = double(g) / cells;
-                solution[2][i] = double(b) / cells;
+                glm::vec3 v = glm::vec3(r, g, b) / static_cast<float>(cells);
+                if (startSampler) v = startSampler->sample(v);
+                solution[0][i] = v.x;
+                solution[1][i] = v.y;
+                solution[2][i] = v.z;
             }
 
     const int rounds = o.robust ? std::max(1, o.robustRounds + 1) : 1;
@@ -288,6 +333,7 @@ FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptio
             for (std::size_t i = 0; i < sys.count(); ++i)
                 for (int c = 0; c < 3; ++c) rhs[c][i] += localRhs[i * 3 + c];
         });
+        sys.finishAssembly();
         const std::vector<double> diag = sys.diagonal();
         int iterations[3] = {0, 0, 0};
         bool conv[3] = {true, true, true};
@@ -298,7 +344,7 @@ FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptio
                 conv[c] = cv;
             }
         });
-        res.iterations = std::max({iterations[0], iterations[1], iterations[2]});
+        res.iterations += std::max({iterations[0], iterations[1], iterations[2]});
         res.converged = conv[0] && conv[1] && conv[2];
 
         // residuals -> Huber weights for the next round (and the final statistics)
@@ -354,5 +400,7 @@ FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptio
                  4.0 * o.huberSteps));
     return res;
 }
+
+} // namespace
 
 } // namespace lut

@@ -124,7 +124,7 @@ const char* toString(RoundtripWarning);
 struct ExtractOptions {
     ExtractTarget target = ExtractTarget::Raw;
     const Lut3D* originalLut = nullptr; // smash: the stage's LUT the screenshot was taken with
-    int outputSize = 0;                 // 0: raw = the patch size, smash = 16
+    int outputSize = 0;                 // 0: 16, or the patch size for a uniform patch and raw
     int nthreads = 0;
 };
 

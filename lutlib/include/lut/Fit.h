@@ -28,7 +28,7 @@ struct FitOptions {
     double huberSteps = 4.0;   // Huber threshold in 8-bit steps
     int robustRounds = 4;
     int maxIterations = 4000;  // per CG solve
-    double tolerance = 1e-7;   // relative residual of the preconditioned CG
+    double tolerance = 1e-6;   // relative residual of the preconditioned CG
     int nthreads = 0;
 };
 
@@ -40,7 +40,7 @@ struct FitResult {
     double maxSteps8 = 0.0;
     double extrapolatedShare = 0.0;  // share of lattice cells no pixel falls in
     std::size_t outlierPixels = 0;   // pixels off the fit by more than 4x the Huber threshold
-    int iterations = 0;              // largest CG iteration count of the last solve
+    int iterations = 0;              // CG iterations, summed over the robust rounds (largest channel)
     bool converged = true;
     Diagnostics diagnostics;
     std::vector<RoundtripWarning> warnings;

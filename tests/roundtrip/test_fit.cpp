@@ -1,0 +1,207 @@
+// fit: recover known LUTs from synthetic before/after pairs, then degrade the pairs.
+#include "RoundtripTestUtil.h"
+#include "TestSupport.h"
+
+#include "lut/Fit.h"
+#include "lut/Sampler.h"
+#include "lut/formats/ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+using namespace lut;
+using namespace lut::rt;
+
+namespace {
+
+// A smooth global edit with channel crosstalk (a LUT, not three curves).
+Edit smoothEdit() {
+    const Edit curves = curvesEdit();
+    return [curves](glm::dvec3 c) {
+        const glm::dvec3 k = curves(c);
+        const double l = luma(k);
+        return glm::dvec3(clamp01(0.9 * k.x + 0.1 * l + 0.02), clamp01(k.y), clamp01(0.85 * k.z + 0.15 * l));
+    };
+}
+
+Image randomColours(int w, int h, unsigned seed) {
+    Image img(w, h, 1.0f);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = img.pixel(x, y);
+            for (int c = 0; c < 3; ++c) p[c] = fromUnorm8(toUnorm8(u(rng)));
+        }
+    return img;
+}
+
+Image edited(const Image& before, const Edit& f, int bitDepth) {
+    Image after = before;
+    applyEdit(after, f, bitDepth);
+    return after;
+}
+
+// Largest difference (8-bit steps) between a fitted LUT and the edit at its lattice points.
+double latticeError(const Lut3D& lut, const Edit& f) {
+    double worst = 0.0;
+    const int n = lut.size();
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::dvec3 want = f(glm::dvec3(r, g, b) / double(n - 1));
+                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(lut.at(r, g, b)[c] - want[c]) * 255.0);
+            }
+    return worst;
+}
+
+void expectSane(const Lut3D& lut) {
+    for (const auto& e : lut.entries())
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_TRUE(std::isfinite(e[c]));
+            ASSERT_GE(e[c], 0.0f);
+            ASSERT_LE(e[c], 1.0f);
+        }
+}
+
+} // namespace
+
+TEST(Fit, RecoversAKnownLutFromADensePair) {
+    const Image before = randomColours(256, 256, 1);
+    const Edit f = smoothEdit();
+    FitOptions o;
+    o.size = 17;
+    for (int depth : {32, 8}) {
+        const FitResult r = fitLut(before.view(), edited(before, f, depth).view(), o);
+        EXPECT_TRUE(r.converged);
+        const double err = latticeError(r.lut, f);
+        std::printf("[ measured ] fit 17^3 from 65k random colours (%d-bit): lattice max %.3f steps, pixel rms %.3f "
+                    "max %.3f, extrapolated %.3f%%, %d CG iterations\n",
+                    depth, err, r.rmsSteps8, r.maxSteps8, 100 * r.extrapolatedShare, r.iterations);
+        EXPECT_LE(err, 1.0) << depth;
+        EXPECT_LE(r.rmsSteps8, depth == 8 ? 0.6 : 0.3);
+        EXPECT_LT(r.extrapolatedShare, 0.01);
+        EXPECT_TRUE(r.warnings.empty());
+    }
+}
+
+TEST(Fit, IdentityPairGivesTheIdentity) {
+    const Image before = randomColours(128, 128, 2);
+    FitOptions o;
+    o.size = 9;
+    const FitResult r = fitLut(before.view(), before.view(), o);
+    EXPECT_LT(r.lut.maxDeviationFromIdentity(), 0.5f / 255.0f);
+}
+
+TEST(Fit, FewColoursStayExactAndBounded) {
+    // 12 flat colours: the system is singular without the ridge; the fit must hit the 12 colours,
+    // stay finite and in range, and warn.
+    Image before(120, 90, 1.0f);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.05f, 0.95f);
+    std::vector<glm::vec3> palette(12);
+    for (auto& p : palette) p = glm::vec3(u(rng), u(rng), u(rng));
+    for (int y = 0; y < 90; ++y)
+        for (int x = 0; x < 120; ++x) {
+            const glm::vec3 c = palette[(x / 30) + 4 * (y / 30)];
+            float* p = before.pixel(x, y);
+            p[0] = c.x, p[1] = c.y, p[2] = c.z;
+        }
+    const Edit f = smoothEdit();
+    const Image after = edited(before, f, 32);
+    FitOptions o;
+    o.size = 17;
+    const FitResult r = fitLut(before.view(), after.view(), o);
+    EXPECT_TRUE(r.has(RoundtripWarning::FewColours));
+    EXPECT_TRUE(r.has(RoundtripWarning::LowCoverage));
+    EXPECT_GT(r.extrapolatedShare, 0.99);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LE(r.maxSteps8, 1.0);
+    expectSane(r.lut);
+    const auto s = makeSampler(r.lut, Interpolation::Trilinear);
+    for (const auto& c : palette) {
+        const glm::vec3 got = s->sample(c);
+        const glm::dvec3 want = f(glm::dvec3(c));
+        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[ch], want[ch], 1.0 / 255.0);
+    }
+}
+
+TEST(Fit, NoiseIsAveragedAway) {
+    const Image before = randomColours(256, 256, 3);
+    const Edit f = smoothEdit();
+    Image after = edited(before, f, 32);
+    std::mt19937 rng(9);
+    std::normal_distribution<float> noise(0.0f, 3.0f / 255.0f);
+    for (auto& v : after.pixels()) v += noise(rng);
+    for (int y = 0; y < after.height(); ++y)
+        for (int x = 0; x < after.width(); ++x) after.pixel(x, y)[3] = 1.0f;
+    quantize(after, 8);
+    FitOptions o;
+    o.size = 17;
+    const FitResult r = fitLut(before.view(), after.view(), o);
+    const double err = latticeError(r.lut, f);
+    std::printf("[ measured ] fit with 3-step noise: lattice max %.3f steps, pixel rms %.3f\n", err, r.rmsSteps8);
+    EXPECT_GT(r.rmsSteps8, 2.5); // the noise is in the data, not in the fit
+    EXPECT_LT(r.rmsSteps8, 3.6);
+    // single pixels are off by up to 12 steps; the lattice (about 16 pixels per cell, fewer at
+    // the cube's corners) by a quarter of that
+    EXPECT_LE(err, 4.0);
+}
+
+TEST(Fit, OutliersAreDownWeighted) {
+    const Image before = randomColours(256, 256, 4);
+    const Edit f = smoothEdit();
+    Image after = edited(before, f, 8);
+    // 5% of the pixels painted with unrelated colours (a brush stroke, a moved object)
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int y = 0; y < after.height(); ++y)
+        for (int x = 0; x < after.width(); ++x)
+            if (u(rng) < 0.05f)
+                for (int c = 0; c < 3; ++c) after.pixel(x, y)[c] = fromUnorm8(toUnorm8(u(rng)));
+    FitOptions o;
+    o.size = 17;
+    const FitResult robust = fitLut(before.view(), after.view(), o);
+    o.robust = false;
+    const FitResult plain = fitLut(before.view(), after.view(), o);
+    const double eRobust = latticeError(robust.lut, f), ePlain = latticeError(plain.lut, f);
+    std::printf("[ measured ] fit with 5%% outliers: lattice max %.3f steps robust, %.3f plain\n", eRobust, ePlain);
+    EXPECT_TRUE(robust.has(RoundtripWarning::Outliers));
+    EXPECT_GT(robust.outlierPixels, 2000u);
+    EXPECT_LE(eRobust, 3.0);
+    EXPECT_LT(eRobust, 0.5 * ePlain);
+}
+
+TEST(Fit, NaturalImageWarnsAboutCoverage) {
+    const std::string path = lut::test::samplePath("sample_scene.png");
+    const Image before = std::filesystem::exists(path) ? formats::readImage(path).image : syntheticScreenshot();
+    const Edit f = curvesEdit();
+    const FitResult r = fitLut(before.view(), edited(before, f, 8).view());
+    EXPECT_TRUE(r.has(RoundtripWarning::LowCoverage));
+    EXPECT_LE(r.rmsSteps8, 0.7);
+    EXPECT_LE(r.maxSteps8, 2.5);
+    expectSane(r.lut);
+    std::printf("[ measured ] fit 33^3 to the sample scene: rms %.3f max %.3f steps, %.2f%% extrapolated, %d CG "
+                "iterations%s\n",
+                r.rmsSteps8, r.maxSteps8, 100 * r.extrapolatedShare, r.iterations, r.converged ? "" : " (not converged)");
+}
+
+TEST(Fit, RejectsMismatchedAndDegenerateInput) {
+    Image a(10, 10, 0.5f), b(11, 10, 0.5f);
+    EXPECT_THROW(fitLut(a.view(), b.view()), Error);
+    EXPECT_THROW(fitLut(Image().view(), Image().view()), Error);
+    FitOptions o;
+    o.size = 1;
+    EXPECT_THROW(fitLut(a.view(), a.view(), o), Error);
+    // NaN and infinities in the input are defined: treated as 0 / clamped, never spread
+    Image n(8, 8, 0.5f), m(8, 8, 0.5f);
+    n.pixel(1, 1)[0] = NAN;
+    m.pixel(2, 2)[1] = INFINITY;
+    m.pixel(3, 3)[2] = -1e30f;
+    o.size = 5;
+    const FitResult r = fitLut(n.view(), m.view(), o);
+    expectSane(r.lut);
+    EXPECT_TRUE(std::isfinite(r.rmsSteps8));
+}
