@@ -2,6 +2,7 @@
 
 #include "PreviewScheduler.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -55,6 +56,11 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     for (LutLayout l : allLayouts()) m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
     m_layout->setToolTip(tr("Layout of the slices (see docs/strip-layouts.md)"));
     form->addRow(tr("Layout"), m_layout);
+    m_wrap = new QCheckBox(tr("Show slices as a grid"), this);
+    m_wrap->setChecked(true);
+    m_wrap->setToolTip(tr("Display only: the exported strip is one row of slices"));
+    form->addRow(QString(), m_wrap);
+    connect(m_wrap, &QCheckBox::toggled, this, [this] { refresh(); });
     v->addLayout(form);
     m_strip = new StripWidget(this);
     v->addWidget(m_strip);
@@ -76,6 +82,19 @@ void LutView::setLut(const Lut3D& lut, const QString& origin) {
     refresh();
 }
 
+QImage LutView::wrapSlices(const QImage& strip, int n) {
+    if (n <= 0 || strip.width() != n * n || strip.height() != n) return strip;
+    const int cols = static_cast<int>(std::ceil(std::sqrt(double(n))));
+    const int rows = (n + cols - 1) / cols;
+    const int gap = 1;
+    QImage out(cols * (n + gap) - gap, rows * (n + gap) - gap, strip.format());
+    out.fill(QColor(0x20, 0x20, 0x20));
+    QPainter p(&out);
+    for (int k = 0; k < n; ++k)
+        p.drawImage(QPoint((k % cols) * (n + gap), (k / cols) * (n + gap)), strip, QRect(k * n, 0, n, n));
+    return out;
+}
+
 void LutView::refresh() {
     if (m_lut.empty()) {
         m_strip->setImage({});
@@ -84,7 +103,9 @@ void LutView::refresh() {
     }
     QString note;
     try {
-        m_strip->setImage(toDisplayImage(lutToImage(m_lut, layout())));
+        QImage img = toDisplayImage(lutToImage(m_lut, layout()));
+        if (m_wrap->isChecked() && layout() != LutLayout::Hald) img = wrapSlices(img, m_lut.size());
+        m_strip->setImage(img);
     } catch (const std::exception& e) { // Hald needs N = L^2
         m_strip->setImage({});
         note = QStringLiteral("<br><i>%1</i>").arg(QString::fromUtf8(e.what()).toHtmlEscaped());

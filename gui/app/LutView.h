@@ -7,6 +7,7 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 
@@ -21,11 +22,15 @@ public:
     void setLut(const Lut3D& lut, const QString& origin);
     LutLayout layout() const;
     const QImage& stripImage() const;
+    // Strip layouts (N^2 x N) shown as a grid of their N slices, so a dock can show them large;
+    // the layout itself (slice order, orientation within a slice) is unchanged.
+    static QImage wrapSlices(const QImage& strip, int size);
 
 private:
     void refresh();
 
     QComboBox* m_layout;
+    QCheckBox* m_wrap;
     StripWidget* m_strip;
     QLabel* m_info;
     Lut3D m_lut;

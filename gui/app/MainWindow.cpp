@@ -300,6 +300,7 @@ void MainWindow::buildActions() {
 
 void MainWindow::buildStatusBar() {
     m_pixelLabel = new QLabel(this);
+    m_pixelLabel->setObjectName("pixelReadout");
     m_pixelLabel->setMinimumWidth(520);
     m_pixelLabel->setTextFormat(Qt::PlainText);
     m_timeLabel = new QLabel(tr("No image"), this);

@@ -9,6 +9,7 @@
 #include "GameLut.h"
 #include "MainWindow.h"
 #include "PreviewRenderer.h"
+#include "PreviewView.h"
 
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
@@ -17,6 +18,7 @@
 #include <QAbstractButton>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QMessageBox>
 #include <QProcess>
 #include <QSlider>
@@ -84,6 +86,29 @@ private slots:
         QVERIFY(frame->image.pixels() == want.pixels());
         // The displayed 8-bit image is the same pixels through toUnorm8.
         QCOMPARE(qRed(frame->display.pixel(10, 20)), int(toUnorm8(want.pixel(10, 20)[0])));
+    }
+
+    void pixelReadoutShowsInputAndOutput() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        w.waitForPreview();
+        PreviewView* v = w.previewView();
+        v->zoomTo(1.0, QPointF(0, 0)); // image pixel (x, y) at widget (x, y) + offset
+        const QSize img(320, 180);
+        const QPoint origin((v->width() - img.width()) / 2, (v->height() - img.height()) / 2);
+        QTest::mouseMove(v, origin + QPoint(100, 50));
+        auto* label = w.findChild<QLabel*>(QStringLiteral("pixelReadout"));
+        QVERIFY(label);
+        const QString text = label->text();
+        QVERIFY2(text.contains(QStringLiteral("x 100  y 50")), qPrintable(text));
+        const float* in = w.document()->storedImage()->pixel(100, 50);
+        const float* out = w.currentFrame()->image.pixel(100, 50);
+        QVERIFY2(text.contains(QString::number(double(in[0]), 'f', 4)), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("out ") + QString::number(double(out[0]), 'f', 4)), qPrintable(text));
     }
 
     void badFilesKeepTheDocument() {

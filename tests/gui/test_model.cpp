@@ -7,6 +7,7 @@
 #include "PreviewRenderer.h"
 #include "RecentFiles.h"
 
+#include "lut/Embed.h"
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -160,6 +161,38 @@ private slots:
         doc.editParam(AdjustParam::Exposure, 0.5);
         QVERIFY_THROWS_EXCEPTION(lut::Error, doc.startFromScreenshot(samplePath("sample_scene.png")));
         QCOMPARE(doc.param(AdjustParam::Exposure), 0.5);
+    }
+
+    void startsFromAnEditedScreenshot() {
+        // Embed a neutral patch, apply a global edit to the whole picture (stored values x 0.8,
+        // channel-wise), save at 8 bits: the document's LUT must be that edit.
+        QTemporaryDir dir;
+        formats::LoadedImage shot = formats::readImage(samplePath("sample_scene.png").toStdString());
+        Image big(640, 360, 0.25f);
+        for (int y = 0; y < 180; ++y)
+            for (int x = 0; x < 320; ++x)
+                for (int c = 0; c < 4; ++c) big.pixel(x, y)[c] = shot.image.pixel(x, y)[c];
+        embedPatch(big.view(), EmbedOptions{});
+        // RGB only: PNG colour is stored unassociated, so scaling alpha would cancel the edit.
+        for (std::size_t i = 0; i < big.pixels().size(); ++i)
+            if (i % 4 != 3) big.pixels()[i] *= 0.8f;
+        const QString path = dir.filePath("edited.png");
+        formats::writeImage(path.toStdString(), big, {});
+        Document doc;
+        doc.startFromScreenshot(path);
+        QVERIFY(doc.isModified());
+        QVERIFY(doc.lutOrigin().contains(QStringLiteral("edited.png")));
+        const Lut3D& l = doc.effectiveLut();
+        double worst = 0;
+        for (int b = 0; b < l.size(); ++b)
+            for (int g = 0; g < l.size(); ++g)
+                for (int r = 0; r < l.size(); ++r) {
+                    const glm::vec3 in = l.latticeInput(r, g, b);
+                    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(l.at(r, g, b)[c]) - 0.8 * in[c]));
+                }
+        const glm::vec3 top = l.at(l.size() - 1, l.size() - 1, l.size() - 1), mid = l.at(l.size() / 2, 0, 0);
+        QVERIFY2(worst < 1.5 / 255, qPrintable(QStringLiteral("%1 steps; N %2, top %3 %4 %5, mid-r %6")
+                                                   .arg(worst * 255).arg(l.size()).arg(top.x).arg(top.y).arg(top.z).arg(mid.x)));
     }
 
     void startFromMemoryIsModified() {
