@@ -788,6 +788,7 @@ LutFile CubeParser::parse() {
             break;
         }
     }
+    const int lastRowLine = line.number;
     // After the last row: only blank lines and comments. Stop at the first extra row, so a file
     // with a billion rows is refused without reading them.
     while (m_reader.next(line)) {
@@ -806,6 +807,11 @@ LutFile CubeParser::parse() {
                  std::string(kKeyNames[k]) + " must come before the first data line (line " +
                      std::to_string(m_firstDataLine) + ")",
                  std::string(s, tEnd));
+        if (isKeywordLine(s, e))
+            fail(line, columnOf(line, s),
+                 "expected only blank lines and comments after the last data row (line " +
+                     std::to_string(lastRowLine) + ")",
+                 content(s, e));
         fail(line, columnOf(line, s),
              "too many data rows: expected " + rowsExpected() + ", this is row " +
                  std::to_string(total + 1),

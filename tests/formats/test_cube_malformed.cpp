@@ -53,6 +53,8 @@ const Case kCases[] = {
      "expected 2 + 8 = 10 data rows for LUT_1D_SIZE 2 and LUT_3D_SIZE 2, found 9 before the end of "
      "the file",
      ""},
+    {"text_after_data", 12, 3,
+     "expected only blank lines and comments after the last data row (line 10)", "END of table"},
     {"keyword_after_data", 8, 1, "DOMAIN_MAX must come before the first data line (line 4)",
      "DOMAIN_MAX"},
     {"size_repeated_different", 4, 1,
