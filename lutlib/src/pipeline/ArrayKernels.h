@@ -13,6 +13,8 @@ void powArray(const PowTable& t, const float* in, float* out, std::size_t n);
 // out[i] = t(in[i]) for in[i] in [0, hi) (the caller checks covers(); other lanes: garbage-free
 // but meaningless values).
 void uniformArray(const UniformTable& t, const float* in, float* out, std::size_t n);
+// out[i] = srgbEncodeFast(in[i], t) (t = the x^(1/2.4) table); in == out allowed.
+void srgbEncodeArray(const PowTable& t, const float* in, float* out, std::size_t n);
 const char* arrayKernelIsa();
 
 } // namespace lut::detail

@@ -1,5 +1,6 @@
 // Pointwise and simple stages: sanitize, exposure, tone mapping, chromatic aberration, vignette,
 // film grain, display encode.
+#include "ArrayKernels.h"
 #include "StageDetail.h"
 #include "Tables.h"
 #include "lut/pipeline/SmashGrading.h"
@@ -254,11 +255,22 @@ public:
         const bool srgb = isSrgb();
         const PowTable& table = powSrgbEncode();
         const float inv = 1.0f / m_gamma;
+        thread_local std::vector<float> e;
+        const std::size_t n = static_cast<std::size_t>(f.width) * 4;
+        if (srgb) e.resize(n);
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
+            if (srgb) {
+                srgbEncodeArray(table, p, e.data(), n);
+                for (std::size_t i = 0; i < n; i += 4) {
+                    p[i] = e[i];
+                    p[i + 1] = e[i + 1];
+                    p[i + 2] = e[i + 2];
+                }
+                continue;
+            }
             for (int x = 0; x < f.width; ++x, p += 4)
-                for (int c = 0; c < 3; ++c)
-                    p[c] = srgb ? srgbEncodeFast(p[c], table) : (p[c] > 0.0f ? std::pow(p[c], inv) : 0.0f);
+                for (int c = 0; c < 3; ++c) p[c] = p[c] > 0.0f ? std::pow(p[c], inv) : 0.0f;
         }
     }
 

@@ -52,14 +52,20 @@ public:
         const bool fused = m_fusedDisplay;
         // Row-wide flat arrays so the pows run 8 at a time (ArrayKernels); alpha lanes carry
         // meaningless values that are never stored.
-        thread_local std::vector<float> s, l, r, g;
+        thread_local std::vector<float> s, l, r, g, e;
         const std::size_t n = static_cast<std::size_t>(f.width) * 4;
         s.resize(n);
         l.resize(n);
         r.resize(n);
         g.resize(n);
+        e.resize(n);
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
+            // Pixels left ungraded (alpha <= 0) only get the display encode, 8 at a time.
+            bool anyUngraded = false;
+            if (fused)
+                for (std::size_t i = 3; i < n; i += 4) anyUngraded |= !(p[i] > 0.0f);
+            if (anyUngraded) srgbEncodeArray(srgb, p, e.data(), n);
             powArray(enc, p, s.data(), n);
             std::memcpy(l.data(), s.data(), n * sizeof(float));
             m_sampler->applyPixels(l.data(), static_cast<std::size_t>(f.width));
@@ -72,7 +78,7 @@ public:
                 const float a = clamp01(p[3]);
                 if (a <= 0.0f) {
                     if (fused)
-                        for (int c = 0; c < 3; ++c) p[c] = srgbEncodeFast(p[c], srgb);
+                        for (int c = 0; c < 3; ++c) p[c] = e[i + c];
                     continue;
                 }
                 if (!fused) {

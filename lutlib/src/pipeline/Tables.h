@@ -2,6 +2,8 @@
 // The shared pow tables of the pipeline (built once, thread-safe statics).
 #include "FastMath.h"
 
+#include <cmath>
+
 namespace lut::detail {
 
 const PowTable& powSmashEncode(); // x^0.454545
@@ -11,7 +13,7 @@ const PowTable& powSrgbEncode();  // x^(1/2.4)
 // Piecewise sRGB encode with the table pow, mirrored for negatives; the one form every fast path
 // uses, so fused and unfused passes agree bit for bit. Input must be sanitized (finite).
 inline float srgbEncodeFast(float x, const PowTable& p) {
-    const float a = x < 0.0f ? -x : x;
+    const float a = std::fabs(x); // -0 encodes to +0
     const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * p(a) - 0.055f;
     return x < 0.0f ? -e : e;
 }

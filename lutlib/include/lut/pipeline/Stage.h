@@ -9,7 +9,13 @@
 //                             stage with needsPrepare() starts a new pass;
 //   processRows(frame, y0,y1) writes rows [y0, y1), reading only those rows of the frame and
 //                             what prepare() built. Called concurrently for disjoint row ranges.
-// Running the stages one after the other on the whole frame gives bit-identical results.
+// Running the stages one after the other on the whole frame gives bit-identical results, with
+// one exception: when sRGB display directly follows smash-grade, the pipeline fuses the encode
+// into the grading loop through one table (within 2e-7 of the two-step result).
+//
+// Rule for canChange(): a stage that does not inspectsColor() is asked before earlier stages of
+// the same pass have run, so its answer may depend only on its settings and on alpha (which no
+// stage but sanitize changes, and sanitize always completes its own pass first).
 //
 // Skipping: canChange(frame) says whether running the stage can change any pixel of this frame
 // with these settings (zero strength, nothing above the bloom threshold, identity LUT, all alpha
