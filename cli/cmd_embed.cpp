@@ -1,6 +1,7 @@
 #include "cmd_embed.h"
 
 #include "Commands.h"
+#include "lut/AtomicFile.h"
 #include "lut/Embed.h"
 #include "lut/Format.h"
 #include "lut/formats/ImageIO.h"
@@ -10,6 +11,7 @@
 namespace lut::cli {
 
 int runEmbed(const EmbedOptions& o) {
+    checkNotSameFile(o.input, o.output); // keep the clean screenshot: fit and tests need it
     auto loaded = formats::readImage(o.input);
     lut::EmbedOptions eo;
     eo.lattice = o.lattice.empty() ? PatchLattice::Smash : parseLattice(o.lattice);
