@@ -35,7 +35,8 @@ static std::string slurp(const fs::path& p) {
 }
 
 RunResult runCli(const std::string& args) {
-    fs::path dir = fs::path(tempDir()).parent_path() / "cli-capture";
+    // Not via tempDir(): that empties the calling test's folder, deleting its input files.
+    fs::path dir = fs::path(LUTKIT_BINARY_DIR) / "test-tmp" / "cli-capture";
     fs::create_directories(dir);
     static int counter = 0;
     std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
