@@ -83,7 +83,8 @@ int runBench(const BenchOptions& o) {
     std::printf("memory copy of the same bytes: %.3f ns/pixel (%.1f GB/s read+write)\n", copyNs,
                 2 * bytes / copySeconds / 1e9);
     std::printf("error: against the analytic grade the LUT was sampled from, over R,G,B of every pixel\n");
-    std::printf("OCIO: CPU processor, one apply() over the frame as ocioconvert does (single-threaded)\n\n");
+    if (o.ocio) std::printf("OCIO: CPU processor, one apply() over the frame as ocioconvert does (single-threaded)\n");
+    std::printf("\n");
     std::printf("%-12s %5s %9s %10s %10s %10s %9s %11s\n", "interp", "size", "ns/pixel", "max err", "mean err",
                 "OCIO ns/px", "OCIO/ours", "ours/memcpy");
     std::fflush(stdout);
