@@ -242,18 +242,20 @@ void MainWindow::buildActions() {
     }
     m_bloomAct->setToolTip(tr("Bloom stage of the preset"));
     m_lutAct->setToolTip(tr("Apply the LUT (off: neutral LUT)"));
-    if (!brightenToggleAvailable()) {
-        m_brightenAct->setEnabled(false);
-        m_brightenAct->setToolTip(tr("The pipeline offers no switch for the brighten pass"));
-    } else {
-        m_brightenAct->setToolTip(tr("Smash brighten pass (x2 in linear light)"));
-    }
-    connect(m_preset, &QComboBox::currentIndexChanged, this, [this] {
-        m_brightenAct->setEnabled(brightenToggleAvailable() &&
-                                  m_preset->currentData().toInt() == int(Preset::Smash));
+    m_brightenAct->setToolTip(tr("Smash brighten pass (x2 in linear light); needs the smash preset "
+                                 "and trilinear or tetrahedral interpolation"));
+    auto updateBrighten = [this] {
+        m_brightenAct->setEnabled(m_preset->currentData().toInt() == int(Preset::Smash) &&
+                                  brightenToggleWorks(static_cast<Interpolation>(m_interp->currentData().toInt())));
+    };
+    connect(m_preset, &QComboBox::currentIndexChanged, this, [this, updateBrighten] {
+        updateBrighten();
         requestPreview();
     });
-    connect(m_interp, &QComboBox::currentIndexChanged, this, [this] { requestPreview(); });
+    connect(m_interp, &QComboBox::currentIndexChanged, this, [this, updateBrighten] {
+        updateBrighten();
+        requestPreview();
+    });
 
     // Help
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -555,7 +557,7 @@ void MainWindow::setPreviewOptions(const PreviewOptions& o) {
     m_bloomAct->setChecked(o.bloom);
     m_lutAct->setChecked(o.lutEnabled);
     m_brightenAct->setChecked(o.brighten);
-    m_brightenAct->setEnabled(brightenToggleAvailable() && o.preset == Preset::Smash);
+    m_brightenAct->setEnabled(o.preset == Preset::Smash && brightenToggleWorks(o.interpolation));
     requestPreview();
 }
 

@@ -2,6 +2,7 @@
 
 #include "lut/Format.h"
 #include "lut/Parallel.h"
+#include "lut/pipeline/SmashGrading.h"
 
 #include <algorithm>
 #include <chrono>
@@ -44,14 +45,34 @@ bool brightenToggleAvailable() {
     return available;
 }
 
+bool brightenToggleWorks(Interpolation method) {
+    return brightenToggleAvailable() || method != Interpolation::Nearest;
+}
+
+Lut3D withoutBrighten(const Lut3D& lut) {
+    Lut3D out = lut;
+    for (int b = 0; b < lut.size(); ++b)
+        for (int g = 0; g < lut.size(); ++g)
+            for (int r = 0; r < lut.size(); ++r)
+                out.at(r, g, b) = smashBrightenInverse(lut.at(r, g, b), lut.latticeInput(r, g, b));
+    return out;
+}
+
 PipelineSettings pipelineSettings(const PreviewOptions& options, std::shared_ptr<const Lut3D> lut) {
     PipelineSettings s;
     s.preset = options.preset;
     s.lut = options.lutEnabled ? std::move(lut) : nullptr;
     s.interpolation = options.interpolation;
     s.bloom = options.bloom;
-    if (!options.brighten && options.preset == Preset::Smash && brightenToggleAvailable())
-        s.assignments.push_back("smash-grade.brighten=0");
+    if (!options.brighten && options.preset == Preset::Smash) {
+        if (brightenToggleAvailable()) {
+            s.assignments.push_back("smash-grade.brighten=0");
+        } else if (options.interpolation != Interpolation::Nearest) {
+            // The stage has no switch: grade with the LUT whose brighten cancels out.
+            s.lut = std::make_shared<const Lut3D>(
+                withoutBrighten(s.lut ? *s.lut : Lut3D::identity(kSmashLutSize)));
+        }
+    }
     return s;
 }
 

@@ -36,8 +36,16 @@ void previewWriteFormat(const formats::ImageInfo& input, const std::string& outP
 // What a preview settings choice means for the pipeline.
 PipelineSettings pipelineSettings(const PreviewOptions& options,
                                   std::shared_ptr<const Lut3D> lut);
-// Whether the pipeline lets the brighten pass be switched off (the toggle is disabled if not).
+// Whether the pipeline's smash-grade stage has a switch for its brighten pass.
 bool brightenToggleAvailable();
+// Whether "brighten off" can be previewed: with the stage's switch, or else by grading with
+// withoutBrighten(lut), which is exact for trilinear and tetrahedral interpolation (the brighten
+// inverse is affine in the input s, and both interpolations reproduce affine functions), not for
+// nearest.
+bool brightenToggleWorks(Interpolation method);
+// The LUT L' with ((L'(s) - s) * 0.99961 + s) * 1.3703 == L(s) at every lattice point, so the
+// Smash grading pass with L' shows L without its brighten step.
+Lut3D withoutBrighten(const Lut3D& lut);
 
 struct PreviewResult {
     Image image;              // display-encoded RGBA float, what `lutkit preview` writes

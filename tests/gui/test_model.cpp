@@ -244,6 +244,37 @@ private slots:
             }
     }
 
+    void brightenOffShowsTheLutAlone() {
+        // Smash without bloom and brighten, neutral LUT: the grading pass is the identity
+        // (up to the shader's 0.454545 * 2.2 != 1 and table pows), so the picture equals the
+        // display-only preset.
+        Document doc;
+        doc.openImage(samplePath("sample_scene.exr"));
+        PreviewOptions smash;
+        smash.bloom = false;
+        smash.brighten = false;
+        smash.lutEnabled = false;
+        PreviewOptions none;
+        none.preset = Preset::None;
+        const Image a = renderPreview(*doc.sceneImage(), smash, nullptr).image;
+        const Image b = renderPreview(*doc.sceneImage(), none, nullptr).image;
+        double worst = 0;
+        for (std::size_t i = 0; i < a.pixels().size(); ++i)
+            if (i % 4 != 3 && b.pixels()[i] < 1.0f) // values clipped by display are not compared
+                worst = std::max(worst, std::abs(double(a.pixels()[i]) - double(b.pixels()[i])));
+        QVERIFY2(worst < 2e-3, qPrintable(QString::number(worst)));
+        smash.brighten = true;
+        const Image c = renderPreview(*doc.sceneImage(), smash, nullptr).image;
+        QVERIFY(c.pixel(160, 150)[1] > a.pixel(160, 150)[1] + 0.05f); // about 2x in linear light
+        // withoutBrighten at the lattice: the brighten formula gives back the LUT.
+        const Lut3D l = Lut3D::identity(5);
+        const Lut3D w = withoutBrighten(l);
+        for (int i = 0; i < 5; ++i) {
+            const double s = i / 4.0;
+            QVERIFY(std::abs(((w.at(i, 0, 0).x - s) * 0.99961 + s) * 1.3703 - s) < 1e-6);
+        }
+    }
+
     void downscaleAveragesBlocks() {
         Image img(4, 2);
         for (int x = 0; x < 4; ++x)
