@@ -2,10 +2,12 @@
 //
 // Shape: load 8 RGBA pixels (4 registers of 2 pixels), transpose them in-lane to R, G, B planes,
 // find lattice cells and fractions exactly as the scalar reference does (same float operations,
-// same NaN/Inf clamping, same lattice snapping), then go back to one pixel per 128-bit half: each
-// pixel's table entries are loaded as 16 bytes (RGB + padding) and blended with
-// broadcast weights. Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the
-// per-pixel loads need no transposition of the result. Alpha is restored from the input.
+// same NaN/Inf clamping, same lattice snapping), then go back to pixels: tetrahedral and nearest
+// work on one pixel per 128-bit half, each entry one aligned 16-byte load (RGB + padding) blended
+// with weights shuffled out of a transposed register; trilinear works on one pixel per register,
+// loading a whole red-axis edge (two adjacent entries) at once with weights as broadcast loads.
+// Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the per-pixel loads need
+// no transposition of the result. Alpha is restored from the input by a blend.
 //
 // Only <immintrin.h> and SimdKernels.h are included (see the note there about inline functions).
 #include "SimdKernels.h"
