@@ -1,0 +1,120 @@
+// Exit codes, as documented in the README: 0 success, 1 bad input or failed operation, 2 bad
+// usage. For every subcommand: an unknown option (2), a missing file (1), a malformed file (1)
+// and a success (0), each with the first words of its message.
+#include "RobustSupport.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+using namespace lut::robust;
+using lut::test::runCli;
+using ::testing::HasSubstr;
+
+namespace {
+
+struct Case {
+    std::string args; // "@/" stands for the test folder
+    int code;
+    std::string stderrHas; // "" = stderr must be empty
+};
+
+void writePng(const std::string& path, int w, int h) {
+    auto out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out);
+    std::vector<float> px(static_cast<std::size_t>(w) * h * 3);
+    for (std::size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>(i % 7) / 7.0f;
+    ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    out->close();
+}
+
+std::string expand(std::string s, const std::string& dir) {
+    for (std::size_t at; (at = s.find("@/")) != std::string::npos;) s.replace(at, 2, "'" + dir + "'/");
+    return s;
+}
+
+TEST(ExitCodes, EverySubcommand) {
+    const std::string dir = lut::test::tempDir();
+    writeBytes(dir + "/a.cube", neutralCube(2));
+    writeBytes(dir + "/bad.cube", "LUT_3D_SIZE 2\n0 0 0\n");
+    writeBytes(dir + "/bad.png", "not an image\n");
+    writePng(dir + "/img.png", 64, 48);
+    writePng(dir + "/big.png", 400, 300);
+    const std::string unexpected = "The following argument was not expected: --no-such-option";
+    const std::string missingCube = "lutkit: error: " + dir + "/missing.cube: cannot open: No such file or directory";
+    const std::string missingPng = "lutkit: error: " + dir + "/missing.png: cannot read image: Could not open file";
+    const std::string badCube = "lutkit: error: " + dir +
+                                "/bad.cube:3:1: expected 8 data rows for LUT_3D_SIZE 2, found 1 before the end of the file";
+    const std::string badPng = "lutkit: error: " + dir + "/bad.png: cannot read image: Not a PNG file";
+    const std::vector<Case> cases = {
+        // usage of lutkit itself
+        {"", 2, "A subcommand is required"},
+        {"--version", 0, ""},
+        {"neutral", 2, "OUT is required"},
+        {"neutral @/x.cube --size 1", 2, "--size: Value 1 not in range 2 to 256"},
+        {"convert @/a.cube @/x.cube --interp cubic", 2, "--interp: cubic not in"},
+        // neutral (no input file: a folder that does not exist stands for the missing file)
+        {"neutral @/n.cube --no-such-option", 2, unexpected},
+        {"neutral @/nowhere/n.cube", 1, "lutkit: error: " + dir + "/nowhere/n.cube: cannot write: No such file or directory"},
+        {"neutral @/n.cube --size 4", 0, ""},
+        // convert
+        {"convert @/a.cube @/c.nutexb --no-such-option", 2, unexpected},
+        {"convert @/missing.cube @/c.nutexb", 1, missingCube},
+        {"convert @/bad.cube @/c.nutexb", 1, badCube},
+        {"convert @/a.cube @/c.nutexb", 0, ""},
+        // info
+        {"info @/a.cube --no-such-option", 2, unexpected},
+        {"info @/missing.cube", 1, missingCube},
+        {"info @/bad.cube", 1, badCube},
+        {"info @/a.cube", 0, ""},
+        // validate
+        {"validate @/a.cube --no-such-option", 2, unexpected},
+        {"validate @/missing.cube", 1, missingCube},
+        {"validate @/bad.cube", 1, dir + "/bad.cube:3:1: error: expected 8 data rows for LUT_3D_SIZE 2, found 1"},
+        {"validate @/a.cube", 0, ""},
+        // apply
+        {"apply --lut @/a.cube @/img.png @/o.png --no-such-option", 2, unexpected},
+        {"apply --lut @/a.cube @/missing.png @/o.png", 1, missingPng},
+        {"apply --lut @/missing.cube @/img.png @/o.png", 1, missingCube},
+        {"apply --lut @/a.cube @/bad.png @/o.png", 1, badPng},
+        {"apply --lut @/bad.cube @/img.png @/o.png", 1, badCube},
+        {"apply --lut @/a.cube @/img.png @/o.png", 0, ""},
+        // preview
+        {"preview @/img.png @/p.png --no-such-option", 2, unexpected},
+        {"preview @/missing.png @/p.png", 1, missingPng},
+        {"preview @/bad.png @/p.png", 1, badPng},
+        {"preview @/img.png @/p.png", 0, ""},
+        // embed, then extract from what it wrote
+        {"embed @/big.png @/e.png --no-such-option", 2, unexpected},
+        {"embed @/missing.png @/e.png", 1, missingPng},
+        {"embed @/bad.png @/e.png", 1, badPng},
+        {"embed @/big.png @/e.png", 0, ""},
+        {"extract @/e.png @/x.cube --no-such-option", 2, unexpected},
+        {"extract @/missing.png @/x.cube", 1, missingPng},
+        {"extract @/bad.png @/x.cube", 1, badPng},
+        {"extract @/img.png @/x.cube", 1, "no LUT patch found"},
+        {"extract @/e.png @/x.cube", 0, ""},
+        // fit
+        {"fit @/img.png @/img.png @/f.cube --no-such-option", 2, unexpected},
+        {"fit @/missing.png @/img.png @/f.cube", 1, missingPng},
+        {"fit @/img.png @/bad.png @/f.cube", 1, badPng},
+        {"fit @/img.png @/img.png @/f.cube --size 4", 0, "lutkit: warning:"},
+        // bench (no files: a tiny run)
+        {"bench --no-such-option", 2, unexpected},
+        {"bench --width 4", 2, "--width: Value 4 not in range 8 to 16384"},
+        {"bench --width 8 --height 1 --reps 1 --sizes 2 --no-ocio", 0, ""},
+    };
+    for (const auto& c : cases) {
+        const std::string args = expand(c.args, dir);
+        SCOPED_TRACE(args);
+        const auto r = runCli(args);
+        EXPECT_EQ(r.exitCode, c.code) << r.err;
+        if (c.stderrHas.empty())
+            EXPECT_EQ(r.err, "");
+        else
+            EXPECT_THAT(r.err, HasSubstr(c.stderrHas));
+    }
+}
+
+} // namespace
