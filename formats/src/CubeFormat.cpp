@@ -32,6 +32,9 @@
 //    the moment it is read (before any data), each line's length (kMaxTextLineBytes) after at
 //    most that many bytes, and the row count at the first extra row: a file with a billion rows
 //    is refused at row N^3 + 1.
+//  - Speed: whole file memory-mapped, no per-line allocation, floats by an exact Clinger fast path
+//    (falls back to std::from_chars), and plain big files parsed on all cores (parallelRows);
+//    anything unusual is re-read by the one sequential parser, which owns every message.
 //
 // Writing: comments first (as "# text"), TITLE when set, the size line(s), DOMAIN_MIN/MAX (Adobe)
 // or LUT_*_INPUT_RANGE (Resolve) only when the domain is not the default 0..1 (the default is
@@ -192,6 +195,85 @@ inline bool fastRow(const char* p, const char* e, float* out) {
         if (p < e && !isSpace(*p)) return false;
     }
     return skipSpace(p, e) == e;
+}
+
+// Where data row i goes: the shaper's rows first, then the cube's.
+struct RowTarget {
+    float* first;
+    std::size_t firstRows;
+    float* second;
+    float* row(std::size_t i) const { return i < firstRows ? first + 3 * i : second + 3 * (i - firstRows); }
+};
+
+// The data rows of a plain file (nothing but data rows and blank lines from the first data line
+// to the end, exactly `rows` of them, every one fastRow-clean) parsed on all cores: one pass
+// counts rows per chunk, a second parses each chunk into its place. Anything else (comments,
+// keywords, wrong row count, odd numbers, long lines) returns false, and the sequential parser,
+// which owns every message and line number, reads the file from the first data line again.
+bool parallelRows(const char* begin, const char* end, std::size_t rows, const RowTarget& target) {
+    const int chunks = resolveThreads(0);
+    if (chunks < 2) return false;
+    std::vector<const char*> cut(static_cast<std::size_t>(chunks) + 1);
+    cut[0] = begin;
+    cut[static_cast<std::size_t>(chunks)] = end;
+    for (int i = 1; i < chunks; ++i) {
+        const char* p = begin + (end - begin) * i / chunks;
+        if (p < cut[static_cast<std::size_t>(i) - 1]) p = cut[static_cast<std::size_t>(i) - 1];
+        const auto* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+        cut[static_cast<std::size_t>(i)] = nl ? nl + 1 : end;
+    }
+    // Calls fn(start, lineEnd) for each non-blank line of chunk c (CR of CR LF removed); stops
+    // and returns false when fn does or the line is not a plain data line.
+    auto eachRow = [&](int c, auto&& fn) {
+        const char* p = cut[static_cast<std::size_t>(c)];
+        const char* e = cut[static_cast<std::size_t>(c) + 1];
+        while (p < e) {
+            const auto* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(e - p)));
+            const char* le = nl ? nl : e;
+            const char* next = nl ? nl + 1 : e;
+            if (static_cast<std::size_t>(le - p) > limits::kMaxTextLineBytes) return false;
+            if (le > p && le[-1] == '\r') --le;
+            const char* s = skipSpace(p, le);
+            if (s != le) {
+                if (*s == '#' || isAlpha(*s)) return false;
+                if (!fn(s, le)) return false;
+            }
+            p = next;
+        }
+        return true;
+    };
+    std::vector<std::size_t> count(static_cast<std::size_t>(chunks), 0);
+    std::vector<char> ok(static_cast<std::size_t>(chunks), 1);
+    parallelFor(chunks, chunks, [&](int c0, int c1) {
+        for (int c = c0; c < c1; ++c) {
+            std::size_t n = 0;
+            // A chunk with more rows than the whole table stops at once (a file with a billion
+            // rows is not scanned to its end).
+            ok[static_cast<std::size_t>(c)] = eachRow(c, [&](const char*, const char*) {
+                return ++n <= rows;
+            });
+            count[static_cast<std::size_t>(c)] = n;
+        }
+    });
+    std::vector<std::size_t> first(static_cast<std::size_t>(chunks), 0);
+    std::size_t total = 0;
+    for (int c = 0; c < chunks; ++c) {
+        if (!ok[static_cast<std::size_t>(c)]) return false;
+        first[static_cast<std::size_t>(c)] = total;
+        total += count[static_cast<std::size_t>(c)];
+    }
+    if (total != rows) return false;
+    parallelFor(chunks, chunks, [&](int c0, int c1) {
+        for (int c = c0; c < c1; ++c) {
+            std::size_t r = first[static_cast<std::size_t>(c)];
+            ok[static_cast<std::size_t>(c)] = eachRow(c, [&](const char* s, const char* le) {
+                return fastRow(s, le, target.row(r++));
+            });
+        }
+    });
+    for (char c : ok)
+        if (!c) return false;
+    return true;
 }
 
 enum class Key { Title, DomainMin, DomainMax, Size1D, Size3D, Range1D, Range3D, InVideo, OutVideo };
@@ -756,11 +838,22 @@ LutFile CubeParser::parse() {
     if (file.cube)
         segments[segmentCount++] = {file.cube->data(), file.cube->data() + 3 * file.cube->entryCount()};
 
+    // Big plain files: all cores. Strict mode reports per-line departures, so it stays sequential.
+    constexpr std::size_t kParallelMinRows = 32768;
+    bool done = false;
+    if (!m_strict && total >= kParallelMinRows && !m_reader.crOnly()) {
+        const std::string_view rest = m_reader.rest();
+        RowTarget target{segments[0].begin,
+                         static_cast<std::size_t>(segments[0].end - segments[0].begin) / 3,
+                         segmentCount > 1 ? segments[1].begin : nullptr};
+        done = parallelRows(line.text.data(), rest.data() + rest.size(), total, target);
+    }
+
     int segment = 0;
     float* out = segments[0].begin;
     float* outEnd = segments[0].end;
     std::size_t rows = 0;
-    for (;;) {
+    for (; !done;) {
         // `line` is a data line starting at s.
         if (!fastRow(s, e, out)) slowRow(line, s, out);
         ++rows;
@@ -791,7 +884,7 @@ LutFile CubeParser::parse() {
     const int lastRowLine = line.number;
     // After the last row: only blank lines and comments. Stop at the first extra row, so a file
     // with a billion rows is refused without reading them.
-    while (m_reader.next(line)) {
+    while (!done && m_reader.next(line)) {
         if (m_strict) checkLine(line);
         e = line.text.data() + line.text.size();
         s = skipSpace(line.text.data(), e);

@@ -273,3 +273,63 @@ TEST(CubeRead, FloatParsingMatchesFromChars) {
         }
     }
 }
+
+// Big files are parsed on all cores when they are plain; anything unusual goes back to the
+// sequential reader. Both must give the same values, comments, and error places.
+TEST(CubeRead, LargeFilesSameResultOnEveryPath) {
+    const int n = 40; // 64000 rows: above the parallel threshold
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-0.2f, 1.2f);
+    Lut3D l(n);
+    for (auto& v : l.entries()) v = glm::vec3(u(rng), u(rng), u(rng));
+    LutFile f;
+    f.cube = l;
+    const std::string plain = writeCubeString(f);
+    auto sameAsSource = [&](const LutFile& r) {
+        ASSERT_TRUE(r.cube);
+        ASSERT_EQ(std::memcmp(r.cube->data(), l.data(), l.entryCount() * 12), 0);
+    };
+    sameAsSource(parseCube(plain, "plain.cube"));
+
+    // CR LF everywhere and blank lines between rows.
+    std::string crlf;
+    for (char c : plain) {
+        if (c == '\n') crlf += "\r\n\r\n";
+        else crlf += c;
+    }
+    sameAsSource(parseCube(crlf, "crlf.cube"));
+
+    // A comment in the middle of the rows: kept, values unchanged.
+    const std::size_t mid = plain.find('\n', plain.size() / 2) + 1;
+    const std::string commented = plain.substr(0, mid) + "# halfway\n" + plain.substr(mid);
+    const LutFile c = parseCube(commented, "comment.cube");
+    sameAsSource(c);
+    EXPECT_EQ(c.cube->comments(), std::vector<std::string>{"halfway"});
+
+    // An error near the end: the sequential reader names the exact line.
+    const std::size_t lastRowStart = plain.rfind('\n', plain.size() - 2) + 1;
+    const std::string broken = plain.substr(0, lastRowStart) + "0.5 x 0.5\n";
+    try {
+        parseCube(broken, "broken.cube");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 1 + n * n * n); // LUT_3D_SIZE is line 1, the last row line n^3 + 1
+        EXPECT_EQ(e.column(), 5);
+        EXPECT_EQ(e.offending(), "x");
+    }
+    // One row short and one row long.
+    try {
+        parseCube(plain.substr(0, lastRowStart), "short.cube");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 1 + n * n * n);
+        EXPECT_EQ(e.message(), "expected 64000 data rows for LUT_3D_SIZE 40, found 63999 before the end "
+                               "of the file");
+    }
+    try {
+        parseCube(plain + "1 1 1\n", "long.cube");
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 2 + n * n * n);
+    }
+}
