@@ -874,6 +874,8 @@ ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& option
         std::unique_ptr<Sampler> original;
         if (options.originalLut) original = makeSampler(*options.originalLut, Interpolation::Trilinear);
         // What the unedited screenshot showed for the gamma-space input s, and what the modder wants
+        // With the smash lattice and a neutral stage LUT every lattice input lands (up to the
+        // patch's storage rounding) on a patch node; otherwise the patch is interpolated.
         auto wanted = [&](glm::vec3 s) {
             const glm::vec3 l0 = original ? original->sample(s) : s;
             glm::vec3 shot;

@@ -226,3 +226,61 @@ TEST(SmashTarget, UnreachableColoursAreClampedAndReported) {
         }
 }
 
+
+// The numbers behind the default patch (docs/roundtrip.md): how far the smash-target LUT from
+// each patch lies from the best 16^3 LUT (the exact edit at the exact points), at the lattice.
+TEST(SmashTarget, DefaultPatchIsTheMostAccurate) {
+    struct Config {
+        const char* name;
+        PatchLattice lattice;
+        int size;
+        LutLayout layout;
+        int scale;
+    };
+    const Config configs[] = {{"smash 12^3", PatchLattice::Smash, 12, LutLayout::Pilot, 2},
+                              {"uniform 16^3", PatchLattice::Uniform, 16, LutLayout::Hald, 2},
+                              {"uniform 25^3", PatchLattice::Uniform, 25, LutLayout::Hald, 1},
+                              {"uniform 33^3", PatchLattice::Uniform, 33, LutLayout::Pilot, 1}};
+    const std::pair<const char*, Edit> edits[] = {{"curves", curvesEdit()},
+                                                  {"levels", levelsEdit()},
+                                                  {"saturation", saturationEdit(1.3)},
+                                                  {"gradient map", warmGradientMap()}};
+    for (const auto& [ename, edit] : edits) {
+        const Lut3D best = oracleLut(edit);
+        double smashMax = 0.0, uniform16Max = 0.0;
+        for (const auto& c : configs) {
+            Image shot = syntheticScreenshot(1200, 260, 8);
+            EmbedOptions eo;
+            eo.lattice = c.lattice;
+            eo.size = c.size;
+            eo.layout = c.layout;
+            eo.scale = c.scale;
+            embedPatch(shot.view(), eo);
+            applyEdit(shot, edit, 8);
+            ExtractOptions o;
+            o.target = ExtractTarget::Smash;
+            const ExtractResult r = extractLut(shot.view(), o);
+            // compared where it matters: what the game displays at each lattice input (a LUT
+            // step near black is worth far less than a display step there)
+            ErrorAccumulator acc;
+            for (int b = 0; b < 16; ++b)
+                for (int g = 0; g < 16; ++g)
+                    for (int rr = 0; rr < 16; ++rr)
+                        for (int ch = 0; ch < 3; ++ch) {
+                            const double s = (ch == 0 ? rr : ch == 1 ? g : b) / 15.0;
+                            auto shown = [s](double l) {
+                                return srgbEnc(clamp01(std::pow(std::max(((l - s) * 0.99961 + s) * 1.3703, 0.0), 2.2)));
+                            };
+                            acc.add(shown(r.lut.at(rr, g, b)[ch]), shown(best.at(rr, g, b)[ch]));
+                        }
+            const ErrorStats e = acc.result();
+            std::printf("[ measured ] %-12s %-13s game display vs best LUT at the lattice: max %.2f mean %.3f 8-bit "
+                        "steps\n",
+                        ename, c.name, e.maxSteps8(), e.meanSteps8());
+            if (c.lattice == PatchLattice::Smash) smashMax = e.maxSteps8();
+            if (c.size == 16) uniform16Max = e.maxSteps8();
+        }
+        EXPECT_LE(smashMax, uniform16Max + 0.05) << ename;
+        EXPECT_LE(smashMax, 1.0) << ename; // the 8-bit rounding of the patch and of the edit
+    }
+}
