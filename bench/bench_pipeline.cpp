@@ -25,7 +25,8 @@ lut::Image benchScene() {
             p[0] = 0.6f * u * u;
             p[1] = 0.5f * v;
             p[2] = 0.25f + 0.2f * u * v;
-            if (((x / 64) + (y / 64)) % 7 == 0) p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
+            if (((x / 64) + (y / 64)) % 7 == 0)
+                p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
             p[3] = y < h / 10 ? 0.0f : 1.0f;
         }
     return scene;
@@ -43,7 +44,8 @@ void runPipeline(benchmark::State& state, lut::Pipeline& p) {
         p.run(work.view(), o);
         benchmark::DoNotOptimize(work.data());
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.width()) * scene.height());
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.width()) *
+                            scene.height());
 }
 
 void BM_PipelineSmash(benchmark::State& state) {
@@ -73,7 +75,19 @@ void BM_PipelinePreset(benchmark::State& state, lut::Preset preset) {
 
 BENCHMARK(BM_PipelineSmash)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PipelineSmashNoBloom)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_PipelineSmashStage, bloom, "smash-bloom")->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_PipelineSmashStage, grade, "smash-grade")->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_PipelinePreset, pilot, lut::Preset::Pilot)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_PipelinePreset, lecture, lut::Preset::Lecture)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_PipelineSmashStage, bloom, "smash-bloom")
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PipelineSmashStage, grade, "smash-grade")
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PipelinePreset, pilot, lut::Preset::Pilot)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PipelinePreset, lecture, lut::Preset::Lecture)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

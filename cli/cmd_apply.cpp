@@ -30,9 +30,11 @@ namespace {
 
 bool isImageFile(const fs::path& p) {
     std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    static const std::set<std::string> exts = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr", ".bmp",
-                                               ".tga", ".hdr", ".webp", ".dpx", ".psd", ".gif"};
+    std::transform(e.begin(), e.end(), e.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    static const std::set<std::string> exts = {".png", ".jpg", ".jpeg", ".tif", ".tiff",
+                                               ".exr", ".bmp", ".tga",  ".hdr", ".webp",
+                                               ".dpx", ".psd", ".gif"};
     return exts.count(e) > 0;
 }
 
@@ -60,16 +62,19 @@ bool planBatch(const std::vector<std::string>& positionals, const std::string& o
         std::error_code ec;
         if (fs::is_directory(in, ec)) {
             for (const auto& e : fs::directory_iterator(in, ec))
-                if (e.is_regular_file(ec) && isImageFile(e.path())) files.push_back(e.path());
+                if (e.is_regular_file(ec) && isImageFile(e.path()))
+                    files.push_back(e.path());
             std::sort(files.begin(), files.end());
         } else {
             files.push_back(in); // a missing file becomes a failed job, reported at the end
         }
         for (const auto& f : files) {
             fs::path name = f.filename();
-            if (!outExtension.empty()) name.replace_extension(outExtension);
+            if (!outExtension.empty())
+                name.replace_extension(outExtension);
             BatchJob j{f.string(), (fs::path(outputDir) / name).string()};
-            if (!names.insert(j.output).second) j.output.clear(); // collision: reported as a failure
+            if (!names.insert(j.output).second)
+                j.output.clear(); // collision: reported as a failure
             jobs.push_back(std::move(j));
         }
     }
@@ -89,7 +94,8 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
         if (!j.output.empty()) {
             std::error_code ec;
             const fs::path dir = fs::path(j.output).parent_path();
-            if (!dir.empty()) fs::create_directories(dir, ec);
+            if (!dir.empty())
+                fs::create_directories(dir, ec);
         }
     auto drawBar = [&](int d) {
         const int width = 30, filled = total ? d * width / total : width;
@@ -102,27 +108,35 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
             const BatchJob& j = jobs[i];
             std::string text, fail;
             try {
-                if (j.output.empty()) throw Error("another input has the same file name (its output would be overwritten)");
+                if (j.output.empty())
+                    throw Error(
+                        "another input has the same file name (its output would be overwritten)");
                 checkNotSameFile(j.input, j.output); // never overwrite an input (issue 7)
                 text = fn(j, inner);
             } catch (const std::exception& e) {
                 fail = e.what();
             }
             std::lock_guard<std::mutex> lock(m);
-            if (!fail.empty()) failures[i] = fail;
+            if (!fail.empty())
+                failures[i] = fail;
             if (!text.empty()) {
-                if (bar) std::fprintf(stderr, "\r\033[K");
+                if (bar)
+                    std::fprintf(stderr, "\r\033[K");
                 std::cout << text << std::flush;
             }
             const int d = ++done;
-            if (bar) drawBar(d);
+            if (bar)
+                drawBar(d);
         }
     };
     std::vector<std::thread> pool;
-    for (int w = 1; w < workers; ++w) pool.emplace_back(work);
+    for (int w = 1; w < workers; ++w)
+        pool.emplace_back(work);
     work();
-    for (auto& t : pool) t.join();
-    if (bar) std::fprintf(stderr, "\r\033[K");
+    for (auto& t : pool)
+        t.join();
+    if (bar)
+        std::fprintf(stderr, "\r\033[K");
     int failed = 0;
     for (std::size_t i = 0; i < jobs.size(); ++i)
         if (!failures[i].empty()) {
@@ -134,7 +148,8 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
             else
                 std::cerr << "lutkit: error: " << jobs[i].input << ": " << msg << "\n";
         }
-    if (failed > 0 && total > 1) std::cerr << "lutkit: " << failed << " of " << total << " file(s) failed\n";
+    if (failed > 0 && total > 1)
+        std::cerr << "lutkit: " << failed << " of " << total << " file(s) failed\n";
     return failed > 0 ? kExitFailure : kExitOk;
 }
 

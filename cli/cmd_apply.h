@@ -10,7 +10,7 @@ struct ApplyOptions {
     std::vector<std::string> inputs; // IN OUT, or with outputDir: files and/or folders
     std::string outputDir;           // -o DIR: batch mode
     std::string interp = "tetrahedral";
-    int threads = 0;                 // 0 = all cores
+    int threads = 0; // 0 = all cores
     bool quiet = false;
 };
 

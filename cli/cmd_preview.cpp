@@ -25,21 +25,26 @@ namespace lut::cli {
 namespace {
 
 std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
 }
 
 // Output bit depth: the input's when it is integer; for float input what the format holds.
 int outputBitDepth(const formats::ImageInfo& in, const std::string& outPath, int requested) {
-    if (requested) return requested;
+    if (requested)
+        return requested;
     if (!in.isFloat && (in.bitDepth == 8 || in.bitDepth == 16)) {
         const std::string e = lower(std::filesystem::path(outPath).extension().string());
-        if (in.bitDepth == 16 && (e == ".jpg" || e == ".jpeg" || e == ".bmp" || e == ".gif")) return 8;
+        if (in.bitDepth == 16 && (e == ".jpg" || e == ".jpeg" || e == ".bmp" || e == ".gif"))
+            return 8;
         return in.bitDepth;
     }
     const std::string e = lower(std::filesystem::path(outPath).extension().string());
-    if (e == ".exr" || e == ".hdr" || e == ".pfm") return 32;
-    if (e == ".png" || e == ".tif" || e == ".tiff") return 16;
+    if (e == ".exr" || e == ".hdr" || e == ".pfm")
+        return 32;
+    if (e == ".png" || e == ".tif" || e == ".tiff")
+        return 16;
     return 8;
 }
 
@@ -52,7 +57,8 @@ std::string listStages(const Pipeline& p) {
             os << "        " << s->name() << "." << prm.name << "=" << prm.valueString();
             if (!prm.choices.empty()) {
                 os << "  (";
-                for (std::size_t i = 0; i < prm.choices.size(); ++i) os << (i ? "|" : "") << prm.choices[i];
+                for (std::size_t i = 0; i < prm.choices.size(); ++i)
+                    os << (i ? "|" : "") << prm.choices[i];
                 os << ")";
             } else {
                 os << "  [" << prm.min << ".." << prm.max << "]";
@@ -60,7 +66,8 @@ std::string listStages(const Pipeline& p) {
             os << "  " << prm.help << "\n";
         }
     }
-    os << "  not available: depth of field, SSAO, SSR (they need depth and normals an image lacks)\n";
+    os << "  not available: depth of field, SSAO, SSR (they need depth and normals an image "
+          "lacks)\n";
     return os.str();
 }
 
@@ -74,7 +81,8 @@ int runPreview(const PreviewOptions& o) {
     settings.enable = o.enable;
     settings.disable = o.disable;
     settings.assignments = o.stageSettings;
-    if (!o.lut.empty()) settings.lut = std::make_shared<const Lut3D>(formats::readLut(o.lut).toLut3D());
+    if (!o.lut.empty())
+        settings.lut = std::make_shared<const Lut3D>(formats::readLut(o.lut).toLut3D());
     std::unique_ptr<Pipeline> configuredPtr;
     try {
         configuredPtr = std::make_unique<Pipeline>(settings); // validates every setting first
@@ -95,7 +103,8 @@ int runPreview(const PreviewOptions& o) {
         return kExitUsage;
     }
     std::shared_ptr<const Lut3D> original;
-    if (!o.originalLut.empty()) original = std::make_shared<const Lut3D>(formats::readLut(o.originalLut).toLut3D());
+    if (!o.originalLut.empty())
+        original = std::make_shared<const Lut3D>(formats::readLut(o.originalLut).toLut3D());
     bool noted = false;
     std::mutex noteMutex;
 
@@ -120,13 +129,17 @@ int runPreview(const PreviewOptions& o) {
             for (const auto& d : notes) {
                 // The bloom note is the same for every file: say it once.
                 const bool bloomNote = d.message.rfind("bloom cannot be undone", 0) == 0;
-                if (bloomNote && noted) continue;
+                if (bloomNote && noted)
+                    continue;
                 noted = noted || bloomNote;
-                std::cerr << "lutkit: " << (d.severity == Diagnostic::Severity::Info ? "note" : "warning") << ": "
+                std::cerr << "lutkit: "
+                          << (d.severity == Diagnostic::Severity::Info ? "note" : "warning") << ": "
                           << j.input << ": " << d.message << "\n";
             }
         }
-        if (o.verbose) text << j.input << " -> " << j.output << " (" << toString(settings.preset) << ")\n" << report.str();
+        if (o.verbose)
+            text << j.input << " -> " << j.output << " (" << toString(settings.preset) << ")\n"
+                 << report.str();
         return text.str();
     });
 }

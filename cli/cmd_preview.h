@@ -5,10 +5,10 @@
 namespace lut::cli {
 
 struct PreviewOptions {
-    std::vector<std::string> inputs;  // IN OUT, or with outputDir: files and/or folders
-    std::string outputDir;            // -o DIR: batch mode
-    std::string lut;                  // grading LUT (default neutral)
-    std::string preset = "smash";     // smash | pilot | lecture | none
+    std::vector<std::string> inputs; // IN OUT, or with outputDir: files and/or folders
+    std::string outputDir;           // -o DIR: batch mode
+    std::string lut;                 // grading LUT (default neutral)
+    std::string preset = "smash";    // smash | pilot | lecture | none
     bool noBloom = false;
     std::string interp = "trilinear"; // the game samples with hardware trilinear
     bool fromScreenshot = false;      // input went through the game's grading already
@@ -16,8 +16,8 @@ struct PreviewOptions {
     std::vector<std::string> stageSettings; // "stage.param=value"
     std::vector<std::string> enable;
     std::vector<std::string> disable;
-    unsigned long long frame = 0;     // frame index (film grain)
-    int bitDepth = 0;                 // 0 = the input's (float input: 32 for .exr/.hdr, else 16/8)
+    unsigned long long frame = 0; // frame index (film grain)
+    int bitDepth = 0;             // 0 = the input's (float input: 32 for .exr/.hdr, else 16/8)
     int threads = 0;
     bool verbose = false;
     bool listStages = false;

@@ -35,7 +35,8 @@ glm::vec3 affine(glm::vec3 v) {
 // 1e-3 of a half step).
 int expected8(float v) {
     const double s = static_cast<double>(v) * 255.0;
-    if (std::fabs(s - std::floor(s) - 0.5) < 1e-3) return -1;
+    if (std::fabs(s - std::floor(s) - 0.5) < 1e-3)
+        return -1;
     return toUnorm8(v);
 }
 
@@ -61,8 +62,11 @@ Image testImage(int w, int h, int bits, bool fractionalAlpha = false) {
             float* p = img.pixel(x, y);
             p[0] = static_cast<float>(std::round((x * 37 + y * 11) % 256 / 255.0 * maxv) / maxv);
             p[1] = static_cast<float>(std::round((x * 5 + y * 91) % 256 / 255.0 * maxv) / maxv);
-            p[2] = static_cast<float>(std::round((x * 73 + y * 29 + 7) % 256 / 255.0 * maxv) / maxv);
-            p[3] = fractionalAlpha ? static_cast<float>(std::round(((x + y) % 4) / 3.0 * maxv) / maxv) : 1.0f;
+            p[2] =
+                static_cast<float>(std::round((x * 73 + y * 29 + 7) % 256 / 255.0 * maxv) / maxv);
+            p[3] = fractionalAlpha
+                       ? static_cast<float>(std::round(((x + y) % 4) / 3.0 * maxv) / maxv)
+                       : 1.0f;
         }
     return img;
 }
@@ -75,7 +79,8 @@ TEST(CliApply, EightBitValuesThroughTheLutAlphaKept) {
     const Image in = testImage(13, 7, 8);
     formats::writeImage(dir + "/in.png", in, {8, false, true});
     for (const char* interp : {"trilinear", "tetrahedral"}) {
-        const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in.png' '" + dir + "/out.png' --interp " + interp);
+        const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in.png' '" + dir +
+                                   "/out.png' --interp " + interp);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const formats::LoadedImage out = formats::readImage(dir + "/out.png");
         EXPECT_EQ(out.info.bitDepth, 8);
@@ -86,7 +91,8 @@ TEST(CliApply, EightBitValuesThroughTheLutAlphaKept) {
                 const glm::vec3 want = affine(glm::vec3(p[0], p[1], p[2]));
                 for (int c = 0; c < 3; ++c)
                     if (expected8(want[c]) >= 0) {
-                        EXPECT_EQ(toUnorm8(out.image.pixel(x, y)[c]), expected8(want[c])) << x << "," << y << " c" << c;
+                        EXPECT_EQ(toUnorm8(out.image.pixel(x, y)[c]), expected8(want[c]))
+                            << x << "," << y << " c" << c;
                     }
                 EXPECT_EQ(out.image.pixel(x, y)[3], p[3]);
             }
@@ -99,7 +105,8 @@ TEST(CliApply, FractionalAlphaKeepsColourAndAlpha) {
     const std::string cube = writeAffineCube(dir);
     const Image in = testImage(8, 4, 8, true);
     formats::writeImage(dir + "/ina.png", in, {8, false, true});
-    const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/ina.png' '" + dir + "/outa.png'");
+    const RunResult r =
+        runCli("apply --lut '" + cube + "' '" + dir + "/ina.png' '" + dir + "/outa.png'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const formats::LoadedImage out = formats::readImage(dir + "/outa.png");
     for (int y = 0; y < 4; ++y)
@@ -109,7 +116,8 @@ TEST(CliApply, FractionalAlphaKeepsColourAndAlpha) {
             EXPECT_EQ(out.image.pixel(x, y)[3], p[3]);
             for (int c = 0; c < 3; ++c)
                 if (expected8(want[c]) >= 0) {
-                    EXPECT_EQ(toUnorm8(out.image.pixel(x, y)[c]), expected8(want[c])) << x << "," << y << " a=" << p[3];
+                    EXPECT_EQ(toUnorm8(out.image.pixel(x, y)[c]), expected8(want[c]))
+                        << x << "," << y << " a=" << p[3];
                 }
         }
 }
@@ -119,7 +127,8 @@ TEST(CliApply, SixteenBitStaysSixteenBit) {
     const std::string cube = writeAffineCube(dir);
     const Image in = testImage(9, 5, 16);
     formats::writeImage(dir + "/in16.png", in, {16, false, true});
-    const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in16.png' '" + dir + "/out16.png'");
+    const RunResult r =
+        runCli("apply --lut '" + cube + "' '" + dir + "/in16.png' '" + dir + "/out16.png'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const formats::LoadedImage out = formats::readImage(dir + "/out16.png");
     EXPECT_EQ(out.info.bitDepth, 16);
@@ -127,7 +136,8 @@ TEST(CliApply, SixteenBitStaysSixteenBit) {
         for (int x = 0; x < 9; ++x) {
             const float* p = in.pixel(x, y);
             const glm::vec3 want = affine(glm::vec3(p[0], p[1], p[2]));
-            for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.image.pixel(x, y)[c], want[c], 0.5 / 65535.0 + 1e-6);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(out.image.pixel(x, y)[c], want[c], 0.5 / 65535.0 + 1e-6);
         }
 }
 
@@ -138,7 +148,8 @@ TEST(CliApply, BatchKeepsGoingAndReportsEveryFailure) {
     formats::writeImage(dir + "/in/a.png", testImage(4, 4, 8), {8, false, true});
     formats::writeImage(dir + "/in/b.png", testImage(5, 3, 8), {8, false, false});
     { std::ofstream(dir + "/in/broken.png") << "not a png"; }
-    const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in' '" + dir + "/missing.png' -o '" + dir + "/out'");
+    const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in' '" + dir +
+                               "/missing.png' -o '" + dir + "/out'");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("broken.png"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("missing.png"), std::string::npos) << r.err;
@@ -147,8 +158,9 @@ TEST(CliApply, BatchKeepsGoingAndReportsEveryFailure) {
     const formats::LoadedImage a = formats::readImage(dir + "/out/a.png");
     const formats::LoadedImage b = formats::readImage(dir + "/out/b.png");
     EXPECT_EQ(b.info.channels, 3);
-    const glm::vec3 want = affine(glm::vec3(testImage(4, 4, 8).pixel(2, 1)[0], testImage(4, 4, 8).pixel(2, 1)[1],
-                                            testImage(4, 4, 8).pixel(2, 1)[2]));
+    const glm::vec3 want =
+        affine(glm::vec3(testImage(4, 4, 8).pixel(2, 1)[0], testImage(4, 4, 8).pixel(2, 1)[1],
+                         testImage(4, 4, 8).pixel(2, 1)[2]));
     EXPECT_NEAR(a.image.pixel(2, 1)[1], want.g, 0.5 / 255 + 1e-6);
 }
 

@@ -27,21 +27,25 @@ std::string writeCube(const std::string& path, const Lut3D& l) {
     std::ofstream f(path);
     f.precision(9);
     f << "LUT_3D_SIZE " << l.size() << "\n";
-    for (const auto& e : l.entries()) f << e.r << " " << e.g << " " << e.b << "\n";
+    for (const auto& e : l.entries())
+        f << e.r << " " << e.g << " " << e.b << "\n";
     return path;
 }
 
 Image expectedSmash(const Image& scene, const Lut3D& lut, bool bloom) {
     const RefImg s = toRef(scene);
     RefImg b(scene.width(), scene.height());
-    if (bloom) b = refSmashBloom(s);
+    if (bloom)
+        b = refSmashBloom(s);
     Image out(scene.width(), scene.height());
     for (int y = 0; y < scene.height(); ++y)
         for (int x = 0; x < scene.width(); ++x) {
             double in[3], o[3];
-            for (int c = 0; c < 3; ++c) in[c] = s.at(x, y, c) + b.at(x, y, c);
+            for (int c = 0; c < 3; ++c)
+                in[c] = s.at(x, y, c) + b.at(x, y, c);
             refSmashGrade(lut, in, s.at(x, y, 3), o);
-            for (int c = 0; c < 3; ++c) out.pixel(x, y)[c] = static_cast<float>(refSrgbEncode(o[c]));
+            for (int c = 0; c < 3; ++c)
+                out.pixel(x, y)[c] = static_cast<float>(refSrgbEncode(o[c]));
             out.pixel(x, y)[3] = scene.pixel(x, y)[3];
         }
     return out;
@@ -49,7 +53,8 @@ Image expectedSmash(const Image& scene, const Lut3D& lut, bool bloom) {
 
 double maxDiff(const Image& a, const Image& b) {
     double d = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) d = std::max(d, relErr(a.pixels()[i], b.pixels()[i]));
+    for (std::size_t i = 0; i < a.pixels().size(); ++i)
+        d = std::max(d, relErr(a.pixels()[i], b.pixels()[i]));
     return d;
 }
 
@@ -63,8 +68,8 @@ TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
     for (bool bloom : {true, false}) {
         const std::string out = dir + (bloom ? "/bloom.exr" : "/nobloom.exr");
-        const RunResult r = runCli("preview '" + dir + "/scene.exr' '" + out + "' --lut '" + cube + "'" +
-                                   (bloom ? "" : " --no-bloom"));
+        const RunResult r = runCli("preview '" + dir + "/scene.exr' '" + out + "' --lut '" + cube +
+                                   "'" + (bloom ? "" : " --no-bloom"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const formats::LoadedImage got = formats::readImage(out);
         EXPECT_EQ(got.info.bitDepth, 32);
@@ -78,7 +83,8 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 8; ++x) {
             float* p = shot.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(((x * 29 + y * 53 + c * 17) % 200) / 255.0);
+            for (int c = 0; c < 3; ++c)
+                p[c] = static_cast<float>(((x * 29 + y * 53 + c * 17) % 200) / 255.0);
             p[3] = 1.0f;
         }
     formats::writeImage(dir + "/shot.png", shot, {8, false, false});
@@ -99,8 +105,10 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
                 refSmashGrade(neutral, in, 1.0, o);
                 const double want = std::min(1.0, refSrgbEncode(o[0])) * 255.0;
                 // Skip values within 1e-3 of a rounding boundary (float vs double).
-                if (std::fabs(want - std::floor(want) - 0.5) < 1e-3) continue;
-                EXPECT_EQ(std::lround(got.image.pixel(x, y)[c] * 255.0), std::lround(want)) << x << "," << y;
+                if (std::fabs(want - std::floor(want) - 0.5) < 1e-3)
+                    continue;
+                EXPECT_EQ(std::lround(got.image.pixel(x, y)[c] * 255.0), std::lround(want))
+                    << x << "," << y;
                 ++checked;
             }
     EXPECT_GT(checked, 80);
@@ -112,15 +120,24 @@ TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {
     const std::string l1 = writeCube(dir + "/l1.cube", makeWarmLut(16, -1.5));
     Image scene(24, 16);
     Rng rng(8);
-    for (auto& v : scene.pixels()) v = static_cast<float>(0.4 * rng.uniform());
-    for (std::size_t i = 3; i < scene.pixels().size(); i += 4) scene.pixels()[i] = 1.0f;
+    for (auto& v : scene.pixels())
+        v = static_cast<float>(0.4 * rng.uniform());
+    for (std::size_t i = 3; i < scene.pixels().size(); i += 4)
+        scene.pixels()[i] = 1.0f;
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
-    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/shot.exr' --no-bloom --lut '" + l0 + "'").exitCode, 0);
-    const RunResult r = runCli("preview '" + dir + "/shot.exr' '" + dir + "/regraded.exr' --no-bloom --lut '" + l1 +
-                               "' --from-screenshot --original-lut '" + l0 + "'");
+    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/shot.exr' --no-bloom --lut '" +
+                     l0 + "'")
+                  .exitCode,
+              0);
+    const RunResult r =
+        runCli("preview '" + dir + "/shot.exr' '" + dir + "/regraded.exr' --no-bloom --lut '" + l1 +
+               "' --from-screenshot --original-lut '" + l0 + "'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("bloom cannot be undone"), std::string::npos);
-    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/direct.exr' --no-bloom --lut '" + l1 + "'").exitCode, 0);
+    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/direct.exr' --no-bloom --lut '" +
+                     l1 + "'")
+                  .exitCode,
+              0);
     const Image a = formats::readImage(dir + "/regraded.exr").image;
     const Image b = formats::readImage(dir + "/direct.exr").image;
     EXPECT_LT(maxDiff(a, b), 3e-5);
@@ -130,22 +147,31 @@ TEST(CliPreview, StageSwitchesVerboseAndErrors) {
     const std::string dir = workDir();
     Image scene = makeScene(32, 24, 3);
     formats::writeImage(dir + "/s.exr", scene, {32, false, true});
-    RunResult r = runCli("preview '" + dir + "/s.exr' '" + dir + "/o.exr' --verbose --enable vignette --stage "
+    RunResult r = runCli("preview '" + dir + "/s.exr' '" + dir +
+                         "/o.exr' --verbose --enable vignette --stage "
                          "vignette.strength=0.5 --stage bloom.strength=0");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("vignette"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("smash-bloom            skipped"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("ms"), std::string::npos);
     // bloom strength 0 == --no-bloom: bit-identical files.
-    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/p.exr' --no-bloom --enable vignette --stage "
-                     "vignette.strength=0.5").exitCode, 0);
-    EXPECT_EQ(formats::readImage(dir + "/o.exr").image.pixels(), formats::readImage(dir + "/p.exr").image.pixels());
+    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir +
+                     "/p.exr' --no-bloom --enable vignette --stage "
+                     "vignette.strength=0.5")
+                  .exitCode,
+              0);
+    EXPECT_EQ(formats::readImage(dir + "/o.exr").image.pixels(),
+              formats::readImage(dir + "/p.exr").image.pixels());
     // Vignette darkens the corner relative to the plain chain.
     ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/q.exr' --no-bloom").exitCode, 0);
-    EXPECT_LT(formats::readImage(dir + "/o.exr").image.pixel(0, 0)[1], formats::readImage(dir + "/q.exr").image.pixel(0, 0)[1]);
+    EXPECT_LT(formats::readImage(dir + "/o.exr").image.pixel(0, 0)[1],
+              formats::readImage(dir + "/q.exr").image.pixel(0, 0)[1]);
 
-    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage nosuch.a=1").exitCode, 2);
-    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage vignette.strength=7").exitCode, 2);
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage nosuch.a=1").exitCode,
+              2);
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage vignette.strength=7")
+                  .exitCode,
+              2);
     EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --preset bogus").exitCode, 2);
     EXPECT_EQ(runCli("preview '" + dir + "/s.exr'").exitCode, 2);
     r = runCli("preview --list-stages --preset lecture");

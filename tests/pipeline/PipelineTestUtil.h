@@ -31,11 +31,16 @@ inline Image makeScene(int w, int h, std::uint64_t seed, float peak = 20.0f, boo
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float* p = img.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(1.2 * r.uniform());
+            for (int c = 0; c < 3; ++c)
+                p[c] = static_cast<float>(1.2 * r.uniform());
             if (r.uniform() < 0.08)
-                for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(1.0 + (peak - 1.0) * r.uniform());
+                for (int c = 0; c < 3; ++c)
+                    p[c] = static_cast<float>(1.0 + (peak - 1.0) * r.uniform());
             const double a = r.uniform();
-            p[3] = !alphaMix ? 1.0f : a < 0.15 ? 0.0f : a < 0.75 ? 1.0f : static_cast<float>(r.uniform());
+            p[3] = !alphaMix  ? 1.0f
+                   : a < 0.15 ? 0.0f
+                   : a < 0.75 ? 1.0f
+                              : static_cast<float>(r.uniform());
         }
     return img;
 }
@@ -48,9 +53,10 @@ inline Lut3D makeWarmLut(int n = 16, double amount = 1.0) {
             for (int r = 0; r < n; ++r) {
                 const double R = r / (n - 1.0), G = g / (n - 1.0), B = b / (n - 1.0);
                 const double y = 0.3 * R + 0.6 * G + 0.1 * B;
-                l.at(r, g, b) = glm::vec3(static_cast<float>(R + amount * (0.06 * std::sin(3.0 * R) + 0.04 * (y - R))),
-                                          static_cast<float>(G + amount * (0.03 * std::sin(2.0 * G) * (1 - G))),
-                                          static_cast<float>(B + amount * (-0.05 * B * (1 - B) + 0.02 * (y - B))));
+                l.at(r, g, b) = glm::vec3(
+                    static_cast<float>(R + amount * (0.06 * std::sin(3.0 * R) + 0.04 * (y - R))),
+                    static_cast<float>(G + amount * (0.03 * std::sin(2.0 * G) * (1 - G))),
+                    static_cast<float>(B + amount * (-0.05 * B * (1 - B) + 0.02 * (y - B))));
             }
     return l;
 }
@@ -60,9 +66,12 @@ inline Lut3D makeWarmLut(int n = 16, double amount = 1.0) {
 struct RefImg {
     int w = 0, h = 0, ch = 3;
     std::vector<double> v;
-    RefImg(int w_, int h_, int c_ = 3) : w(w_), h(h_), ch(c_), v(static_cast<std::size_t>(w_) * h_ * c_, 0.0) {}
+    RefImg(int w_, int h_, int c_ = 3)
+        : w(w_), h(h_), ch(c_), v(static_cast<std::size_t>(w_) * h_ * c_, 0.0) {}
     double& at(int x, int y, int c) { return v[(static_cast<std::size_t>(y) * w + x) * ch + c]; }
-    double at(int x, int y, int c) const { return v[(static_cast<std::size_t>(y) * w + x) * ch + c]; }
+    double at(int x, int y, int c) const {
+        return v[(static_cast<std::size_t>(y) * w + x) * ch + c];
+    }
     // GPU bilinear at normalized (u, v): texel centres at (i + 0.5) / w, clamp to edge.
     double sample(double u, double vv, int c) const {
         const double fx = u * w - 0.5, fy = vv * h - 0.5;
@@ -80,7 +89,8 @@ inline RefImg toRef(const Image& img) {
     RefImg r(img.width(), img.height(), 4);
     for (int y = 0; y < img.height(); ++y)
         for (int x = 0; x < img.width(); ++x)
-            for (int c = 0; c < 4; ++c) r.at(x, y, c) = img.pixel(x, y)[c];
+            for (int c = 0; c < 4; ++c)
+                r.at(x, y, c) = img.pixel(x, y)[c];
     return r;
 }
 
@@ -93,10 +103,12 @@ inline RefImg refSmashBloom(const RefImg& scene) {
         for (int i = 0; i < w4; ++i) {
             const double u = (i + 0.5) / w4, v = (j + 0.5) / h4;
             double c[3];
-            for (int k = 0; k < 3; ++k) c[k] = std::clamp(scene.sample(u, v, k), 0.0, 1.0);
+            for (int k = 0; k < 3; ++k)
+                c[k] = std::clamp(scene.sample(u, v, k), 0.0, 1.0);
             const double a = std::clamp(scene.sample(u, v, 3), 0.0, 1.0);
             const double m = std::max({c[0], c[1], c[2], 0.001});
-            for (int k = 0; k < 3; ++k) th.at(i, j, k) = c[k] / m * std::max(m - 0.4625, 0.0) * 6.0 * a;
+            for (int k = 0; k < 3; ++k)
+                th.at(i, j, k) = c[k] / m * std::max(m - 0.4625, 0.0) * 6.0 * a;
         }
     std::vector<RefImg> levels;
     const RefImg* in = &th;
@@ -111,7 +123,8 @@ inline RefImg refSmashBloom(const RefImg& scene) {
                     double s = 0;
                     for (int dy = -1; dy <= 1; ++dy)
                         for (int dx = -1; dx <= 1; ++dx)
-                            s += kw[dx + 1] * kw[dy + 1] / 16.0 * in->sample(u + dx / double(in->w), v + dy / double(in->h), k);
+                            s += kw[dx + 1] * kw[dy + 1] / 16.0 *
+                                 in->sample(u + dx / double(in->w), v + dy / double(in->h), k);
                     out.at(i, j, k) = s;
                 }
             }
@@ -125,14 +138,16 @@ inline RefImg refSmashBloom(const RefImg& scene) {
             const double u = (i + 0.5) / w4, v = (j + 0.5) / h4;
             for (int k = 0; k < 3; ++k) {
                 double s = 0;
-                for (int l = 0; l < 4; ++l) s += wt[l] * levels[l].sample(u, v, k);
+                for (int l = 0; l < 4; ++l)
+                    s += wt[l] * levels[l].sample(u, v, k);
                 comb.at(i, j, k) = std::pow(std::clamp(s, 0.0, 1.0), 2.2);
             }
         }
     RefImg up(W, H);
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
-            for (int k = 0; k < 3; ++k) up.at(x, y, k) = comb.sample((x + 0.5) / W, (y + 0.5) / H, k);
+            for (int k = 0; k < 3; ++k)
+                up.at(x, y, k) = comb.sample((x + 0.5) / W, (y + 0.5) / H, k);
     return up;
 }
 
@@ -150,7 +165,8 @@ inline void refTrilinear(const Lut3D& lut, const double in[3], double out[3]) {
         double acc = 0;
         for (int k = 0; k < 8; ++k) {
             const int dr = k & 1, dg = (k >> 1) & 1, db = (k >> 2) & 1;
-            const double w = (dr ? f[0] : 1 - f[0]) * (dg ? f[1] : 1 - f[1]) * (db ? f[2] : 1 - f[2]);
+            const double w =
+                (dr ? f[0] : 1 - f[0]) * (dg ? f[1] : 1 - f[1]) * (db ? f[2] : 1 - f[2]);
             acc += w * lut.at(i[0] + dr, i[1] + dg, i[2] + db)[c];
         }
         out[c] = acc;
@@ -164,7 +180,8 @@ inline void refSmashGrade(const Lut3D& lut, const double x[3], double alpha, dou
     for (int c = 0; c < 3; ++c) {
         s[c] = std::pow(std::max(x[c], 0.0), 0.454545);
         const double uvw = s[c] * 0.9375 + 0.03125;
-        uvwTexel[c] = (uvw * 16.0 - 0.5) / 15.0; // texel coordinate / (N-1): same as trilinear over [0,1]
+        uvwTexel[c] =
+            (uvw * 16.0 - 0.5) / 15.0; // texel coordinate / (N-1): same as trilinear over [0,1]
     }
     double L[3];
     refTrilinear(lut, uvwTexel, L);
@@ -183,6 +200,8 @@ inline double refSrgbEncode(double x) {
     return x < 0 ? -e : e;
 }
 
-inline double relErr(double got, double want) { return std::fabs(got - want) / std::max(1.0, std::fabs(want)); }
+inline double relErr(double got, double want) {
+    return std::fabs(got - want) / std::max(1.0, std::fabs(want));
+}
 
 } // namespace lut::test

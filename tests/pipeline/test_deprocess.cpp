@@ -32,8 +32,13 @@ Image sceneInGamut(int w, int h, std::uint64_t seed, bool alphaMix) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float* p = img.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = static_cast<float>(0.45 * r.uniform() * r.uniform() + 0.45 * (c == 1) * r.uniform() * 0.5);
-            p[3] = alphaMix ? static_cast<float>(r.uniform() < 0.2 ? 0.0 : r.uniform() < 0.5 ? 1.0 : r.uniform()) : 1.0f;
+            for (int c = 0; c < 3; ++c)
+                p[c] = static_cast<float>(0.45 * r.uniform() * r.uniform() +
+                                          0.45 * (c == 1) * r.uniform() * 0.5);
+            p[3] = alphaMix ? static_cast<float>(r.uniform() < 0.2   ? 0.0
+                                                 : r.uniform() < 0.5 ? 1.0
+                                                                     : r.uniform())
+                            : 1.0f;
         }
     return img;
 }
@@ -78,23 +83,27 @@ TEST(Deprocess, ScalarInverseSolvesTheGrading) {
     const auto s = makeSampler(lut, Interpolation::Trilinear);
     Rng r(4);
     for (int i = 0; i < 500; ++i) {
-        const glm::vec3 x(float(0.4 * r.uniform()), float(0.4 * r.uniform()), float(0.4 * r.uniform()));
+        const glm::vec3 x(float(0.4 * r.uniform()), float(0.4 * r.uniform()),
+                          float(0.4 * r.uniform()));
         const float a = i % 3 == 0 ? 1.0f : float(r.uniform());
         const glm::vec3 y = smashGradeMix(x, a, *s);
         bool ok = false;
         const glm::vec3 back = smashGradeInverse(y, a, *s, false, &ok);
         EXPECT_TRUE(ok);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(back[c], x[c], 2e-5) << i;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(back[c], x[c], 2e-5) << i;
     }
 }
 
 TEST(Deprocess, UnreachableColourIsReportedNotNaN) {
     // A LUT that maps everything to mid grey cannot produce pure red.
     Lut3D flat(16);
-    for (auto& e : flat.entries()) e = glm::vec3(0.5f);
+    for (auto& e : flat.entries())
+        e = glm::vec3(0.5f);
     Image shot(2, 1, 1.0f);
     shot.pixel(0, 0)[1] = shot.pixel(0, 0)[2] = 0.0f;
     const UngradeResult r = smashUngrade(shot.view(), &flat);
     EXPECT_GE(r.unconverged, 1u);
-    for (float v : shot.pixels()) EXPECT_TRUE(std::isfinite(v));
+    for (float v : shot.pixels())
+        EXPECT_TRUE(std::isfinite(v));
 }

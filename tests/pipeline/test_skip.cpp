@@ -17,10 +17,12 @@ std::vector<std::pair<std::string, Image>> scenes() {
     std::vector<std::pair<std::string, Image>> v;
     v.emplace_back("hdr", makeScene(41, 29, 1));
     Image dark = makeScene(40, 30, 2, 1.0f);
-    for (auto& p : dark.pixels()) p *= 0.3f; // nothing above any bloom threshold, alpha scaled
+    for (auto& p : dark.pixels())
+        p *= 0.3f; // nothing above any bloom threshold, alpha scaled
     v.emplace_back("dark", dark);
     Image bg = makeScene(33, 17, 3);
-    for (int i = 3; i < static_cast<int>(bg.pixels().size()); i += 4) bg.pixels()[i] = 0.0f;
+    for (int i = 3; i < static_cast<int>(bg.pixels().size()); i += 4)
+        bg.pixels()[i] = 0.0f;
     v.emplace_back("alpha0", bg);
     Image bad = makeScene(36, 20, 4);
     bad.pixel(5, 5)[0] = NAN;
@@ -31,14 +33,16 @@ std::vector<std::pair<std::string, Image>> scenes() {
     Image grey(16, 16, 0.18f);
     v.emplace_back("grey", grey);
     Image neg = makeScene(21, 13, 6);
-    for (int i = 0; i < static_cast<int>(neg.pixels().size()); i += 7) neg.pixels()[i] = -neg.pixels()[i];
+    for (int i = 0; i < static_cast<int>(neg.pixels().size()); i += 7)
+        neg.pixels()[i] = -neg.pixels()[i];
     v.emplace_back("negative", neg);
     return v;
 }
 
 bool bitEqual(const Image& a, const Image& b) {
     return a.pixels().size() == b.pixels().size() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(float)) == 0;
+           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(float)) ==
+               0;
 }
 
 void expectSkipExact(Pipeline& p, const std::string& what) {
@@ -70,12 +74,13 @@ TEST(PipelineSkip, EveryStageAloneAndWithNeutralSettings) {
     }
     // Settings that make stages no-ops.
     Pipeline p(Preset::Lecture);
-    for (const char* s : {"grain", "vignette", "chromatic-aberration", "exposure", "sugar-bloom", "filter-bloom",
-                          "smash-bloom", "tonemap", "smash-grade"})
+    for (const char* s : {"grain", "vignette", "chromatic-aberration", "exposure", "sugar-bloom",
+                          "filter-bloom", "smash-bloom", "tonemap", "smash-grade"})
         p.setEnabled(s, true);
-    for (const char* a : {"grain.strength=0", "vignette.strength=0", "chromatic-aberration.strength=0",
-                          "exposure.stops=0", "hdr-bloom.strength=0", "filter-bloom.threshold=50",
-                          "sugar-bloom.threshold=100", "smash-bloom.threshold=1"})
+    for (const char* a :
+         {"grain.strength=0", "vignette.strength=0", "chromatic-aberration.strength=0",
+          "exposure.stops=0", "hdr-bloom.strength=0", "filter-bloom.threshold=50",
+          "sugar-bloom.threshold=100", "smash-bloom.threshold=1"})
         p.assign(a);
     expectSkipExact(p, "neutral settings");
 }
@@ -86,7 +91,8 @@ TEST(PipelineSkip, SkippedStagesAreReported) {
     const PipelineReport r = p.run(dark.view());
     auto ran = [&](const std::string& n) {
         for (const auto& s : r.stages)
-            if (s.name == n) return s.ran;
+            if (s.name == n)
+                return s.ran;
         ADD_FAILURE() << n;
         return false;
     };

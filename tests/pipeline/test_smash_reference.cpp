@@ -23,7 +23,8 @@ double maxRelErrRgb(const Image& got, const RefImg& want) {
     double e = 0;
     for (int y = 0; y < got.height(); ++y)
         for (int x = 0; x < got.width(); ++x)
-            for (int c = 0; c < 3; ++c) e = std::max(e, relErr(got.pixel(x, y)[c], want.at(x, y, c)));
+            for (int c = 0; c < 3; ++c)
+                e = std::max(e, relErr(got.pixel(x, y)[c], want.at(x, y, c)));
     return e;
 }
 
@@ -50,7 +51,8 @@ TEST(SmashReference, BloomStageMatchesFloat64Reference) {
         stage->process(got.view());
         EXPECT_LT(maxRelErrRgb(got, want), 1e-5) << s.w << "x" << s.h;
         for (int y = 0; y < s.h; ++y)
-            for (int x = 0; x < s.w; ++x) EXPECT_EQ(got.pixel(x, y)[3], scene.pixel(x, y)[3]);
+            for (int x = 0; x < s.w; ++x)
+                EXPECT_EQ(got.pixel(x, y)[3], scene.pixel(x, y)[3]);
     }
 }
 
@@ -70,7 +72,8 @@ TEST(SmashReference, GradeStageMatchesFloat64Reference) {
                 const double in[3] = {q[0], q[1], q[2]};
                 double o[3];
                 refSmashGrade(lut, in, q[3], o);
-                for (int c = 0; c < 3; ++c) want.at(x, y, c) = o[c];
+                for (int c = 0; c < 3; ++c)
+                    want.at(x, y, c) = o[c];
             }
         EXPECT_LT(maxRelErrRgb(got, want), 1e-5) << s.w << "x" << s.h;
     }
@@ -79,7 +82,8 @@ TEST(SmashReference, GradeStageMatchesFloat64Reference) {
 TEST(SmashReference, DisplayStageMatchesPiecewiseSrgb) {
     Image img(37, 23);
     Rng r(3);
-    for (auto& v : img.pixels()) v = static_cast<float>(-0.2 + 3.0 * r.uniform() * r.uniform());
+    for (auto& v : img.pixels())
+        v = static_cast<float>(-0.2 + 3.0 * r.uniform() * r.uniform());
     const Image in = img;
     makeStage("display")->process(img.view());
     for (int y = 0; y < 23; ++y)
@@ -104,9 +108,11 @@ TEST(SmashReference, FullChainMatchesReference) {
         for (int y = 0; y < s.h; ++y)
             for (int x = 0; x < s.w; ++x) {
                 double in[3], o[3];
-                for (int c = 0; c < 3; ++c) in[c] = sceneRef.at(x, y, c) + bloom.at(x, y, c);
+                for (int c = 0; c < 3; ++c)
+                    in[c] = sceneRef.at(x, y, c) + bloom.at(x, y, c);
                 refSmashGrade(lut, in, sceneRef.at(x, y, 3), o);
-                for (int c = 0; c < 3; ++c) want.at(x, y, c) = refSrgbEncode(o[c]);
+                for (int c = 0; c < 3; ++c)
+                    want.at(x, y, c) = refSrgbEncode(o[c]);
             }
         EXPECT_LT(maxRelErrRgb(got, want), 1e-5) << s.w << "x" << s.h;
     }
@@ -133,8 +139,10 @@ TEST(SmashReference, ScalarGradeMatchesReferenceWithAlpha) {
         const double a = r.uniform() * 1.4 - 0.2;
         double want[3];
         refSmashGrade(lut, x, a, want);
-        const glm::vec3 got = smashGradeMix(glm::vec3(float(x[0]), float(x[1]), float(x[2])), float(a), *sampler);
-        for (int c = 0; c < 3; ++c) EXPECT_LT(relErr(got[c], want[c]), 1e-5);
+        const glm::vec3 got =
+            smashGradeMix(glm::vec3(float(x[0]), float(x[1]), float(x[2])), float(a), *sampler);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_LT(relErr(got[c], want[c]), 1e-5);
     }
 }
 
@@ -147,7 +155,8 @@ TEST(SmashReference, CompensatedLutReproducesTargetsAtLatticePoints) {
             for (int r = 0; r < n; ++r) {
                 const double R = r / 15.0, G = g / 15.0, B = b / 15.0;
                 const double y = 0.3 * R + 0.6 * G + 0.1 * B;
-                const double lin[3] = {std::pow(0.5 * R + 0.5 * y, 2.2), std::pow(0.5 * G + 0.5 * y, 2.2),
+                const double lin[3] = {std::pow(0.5 * R + 0.5 * y, 2.2),
+                                       std::pow(0.5 * G + 0.5 * y, 2.2),
                                        std::pow(0.5 * B + 0.5 * y, 2.2)};
                 target.at(r, g, b) = glm::vec3(float(lin[0]), float(lin[1]), float(lin[2]));
             }
@@ -158,9 +167,11 @@ TEST(SmashReference, CompensatedLutReproducesTargetsAtLatticePoints) {
             for (int r = 0; r < n; r += 2) {
                 const double s[3] = {r / 15.0, g / 15.0, b / 15.0};
                 double x[3], out[3];
-                for (int c = 0; c < 3; ++c) x[c] = std::pow(s[c], 1 / 0.454545);
+                for (int c = 0; c < 3; ++c)
+                    x[c] = std::pow(s[c], 1 / 0.454545);
                 refSmashGrade(ship, x, 1.0, out);
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(out[c], target.at(r, g, b)[c], 2e-5);
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(out[c], target.at(r, g, b)[c], 2e-5);
             }
     // And the closed form of the brighten inverse.
     const glm::vec3 L = smashLutEntryForTarget(glm::vec3(0.25f), glm::vec3(0.4f));

@@ -15,13 +15,15 @@ namespace {
 
 Pipeline everything(Preset pr) {
     Pipeline p(pr);
-    for (const auto& n : stageNames()) p.setEnabled(n, true);
+    for (const auto& n : stageNames())
+        p.setEnabled(n, true);
     return p;
 }
 
 bool allFinite(const Image& img) {
     for (float v : img.pixels())
-        if (!std::isfinite(v)) return false;
+        if (!std::isfinite(v))
+            return false;
     return true;
 }
 
@@ -29,10 +31,12 @@ bool allFinite(const Image& img) {
 
 TEST(PipelineStability, ExtremeValuesGiveFiniteOutput) {
     Image img = makeScene(40, 24, 8, 1.0e4f);
-    const float specials[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f, -5.0f, 1e4f, -0.0f, 1e-40f, 65504.0f};
+    const float specials[] = {NAN,   INFINITY, -INFINITY, 1e30f,  -1e30f,
+                              -5.0f, 1e4f,     -0.0f,     1e-40f, 65504.0f};
     int k = 0;
     for (int y = 0; y < 24; y += 3)
-        for (int x = 0; x < 40; x += 5) img.pixel(x, y)[k % 4] = specials[k % 10], ++k;
+        for (int x = 0; x < 40; x += 5)
+            img.pixel(x, y)[k % 4] = specials[k % 10], ++k;
     for (Preset pr : {Preset::Smash, Preset::Pilot, Preset::Lecture, Preset::None}) {
         Image a = img;
         everything(pr).run(a.view());
@@ -109,5 +113,6 @@ TEST(PipelineStability, HdrTenThousandMatchesReference) {
     const double x[3] = {1e4, 1e4, 1e4};
     double want[3];
     refSmashGrade(lut, x, 1.0, want);
-    for (int c = 0; c < 3; ++c) EXPECT_LT(relErr(img.pixel(0, 0)[c], want[c]), 1e-5);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_LT(relErr(img.pixel(0, 0)[c], want[c]), 1e-5);
 }

@@ -38,8 +38,10 @@ TEST(FastMath, ArrayKernelsAreBitIdenticalToScalar) {
     // skipped/forced runs could differ.
     std::vector<float> in;
     Rng r(9);
-    for (int i = 0; i < 4099; ++i) in.push_back(static_cast<float>((r.uniform() - 0.3) * std::exp((r.uniform() - 0.5) * 30)));
-    for (float v : {0.0f, -0.0f, NAN, INFINITY, -INFINITY, 1e-40f, -1e-40f, 0.0031308f, 1.0f, 65504.0f, 3e38f})
+    for (int i = 0; i < 4099; ++i)
+        in.push_back(static_cast<float>((r.uniform() - 0.3) * std::exp((r.uniform() - 0.5) * 30)));
+    for (float v : {0.0f, -0.0f, NAN, INFINITY, -INFINITY, 1e-40f, -1e-40f, 0.0031308f, 1.0f,
+                    65504.0f, 3e38f})
         in.push_back(v);
     std::vector<float> out(in.size());
     const detail::PowTable& t = detail::powSrgbEncode();
@@ -50,13 +52,15 @@ TEST(FastMath, ArrayKernelsAreBitIdenticalToScalar) {
     }
     detail::srgbEncodeArray(t, in.data(), out.data(), in.size());
     for (std::size_t i = 0; i < in.size(); ++i) {
-        if (std::isnan(in[i])) continue; // never reaches it: frames are sanitized first
+        if (std::isnan(in[i]))
+            continue; // never reaches it: frames are sanitized first
         const float w = detail::srgbEncodeFast(in[i], t);
         EXPECT_EQ(std::memcmp(&out[i], &w, 4), 0) << in[i];
     }
     const detail::UniformTable& u = detail::smashDisplayFromBrightened();
     std::vector<float> rs;
-    for (int i = 0; i < 5000; ++i) rs.push_back(static_cast<float>(2.0 * r.uniform()));
+    for (int i = 0; i < 5000; ++i)
+        rs.push_back(static_cast<float>(2.0 * r.uniform()));
     std::vector<float> ro(rs.size());
     detail::uniformArray(u, rs.data(), ro.data(), rs.size());
     for (std::size_t i = 0; i < rs.size(); ++i) {
@@ -72,7 +76,8 @@ TEST(Stages, ExposureAndTonemapFollowTheirFormulas) {
     Image img(3, 1);
     const float v[3] = {0.5f, 2.0f, 10.0f};
     for (int x = 0; x < 3; ++x)
-        for (int c = 0; c < 3; ++c) img.pixel(x, 0)[c] = v[x];
+        for (int c = 0; c < 3; ++c)
+            img.pixel(x, 0)[c] = v[x];
     auto e = makeStage("exposure");
     e->setParam("stops", "1.5");
     Image a = img;
@@ -92,7 +97,8 @@ TEST(Stages, ExposureAndTonemapFollowTheirFormulas) {
 TEST(Stages, FilterBloomUsesThe9TapKernel) {
     // One bright pixel, knee 0, threshold 0.5, one pass: bloom = colour * w[|dx|] * w[|dy|].
     Image img(21, 21, 0.0f);
-    for (auto i = 3u; i < img.pixels().size(); i += 4) img.pixels()[i] = 1.0f;
+    for (auto i = 3u; i < img.pixels().size(); i += 4)
+        img.pixels()[i] = 1.0f;
     img.pixel(10, 10)[0] = img.pixel(10, 10)[1] = img.pixel(10, 10)[2] = 2.0f;
     auto s = makeStage("filter-bloom");
     s->setParam("knee", "0");
@@ -103,7 +109,8 @@ TEST(Stages, FilterBloomUsesThe9TapKernel) {
     // contribution weight = (l - th) / l with l = 2: 0.75
     for (int dy = -4; dy <= 4; ++dy)
         for (int dx = -4; dx <= 4; ++dx) {
-            const double want = 2.0 * 0.75 * w[std::abs(dx)] * w[std::abs(dy)] + (dx == 0 && dy == 0 ? 2.0 : 0.0);
+            const double want =
+                2.0 * 0.75 * w[std::abs(dx)] * w[std::abs(dy)] + (dx == 0 && dy == 0 ? 2.0 : 0.0);
             EXPECT_NEAR(img.pixel(10 + dx, 10 + dy)[1], want, 1e-6) << dx << "," << dy;
         }
     EXPECT_EQ(img.pixel(10 + 5, 10)[1], 0.0f);
@@ -117,7 +124,8 @@ TEST(Stages, HdrBloomSubtractsOneBlursAndAdds) {
     s->process(img.view());
     // 1D: the vertical pass on a 1-row image is the identity (clamp to edge, weights sum to 1).
     double sum = 0, norm = 0;
-    for (int k = -6; k <= 6; ++k) norm += std::exp(-0.5 * k * k / 4.0);
+    for (int k = -6; k <= 6; ++k)
+        norm += std::exp(-0.5 * k * k / 4.0);
     for (int k = -6; k <= 6; ++k) {
         const double want = 2.0 * std::exp(-0.5 * k * k / 4.0) / norm;
         sum += img.pixel(15 + k, 0)[0] - (k == 0 ? 3.0 : 0.5);
@@ -190,7 +198,8 @@ TEST(Stages, GrainIsSeededAndChangesPerFrame) {
     Image d = p.run(scene, o);
     EXPECT_NE(a.pixels(), d.pixels());
     double mean = 0;
-    for (int i = 0; i < 32 * 32; ++i) mean += a.pixels()[4 * i] - refSrgbEncode(0.4);
+    for (int i = 0; i < 32 * 32; ++i)
+        mean += a.pixels()[4 * i] - refSrgbEncode(0.4);
     EXPECT_NEAR(mean / 1024, 0.0, 0.01); // zero-mean noise
 }
 

@@ -29,8 +29,10 @@ public:
             for (int y = y0; y < y1 && !found.load(std::memory_order_relaxed); ++y) {
                 const float* p = f.row(y);
                 int bad = 0;
-                for (int i = 0; i < 4 * f.width; ++i) bad |= !(std::fabs(p[i]) <= kPipelineMaxValue);
-                if (bad) found = true;
+                for (int i = 0; i < 4 * f.width; ++i)
+                    bad |= !(std::fabs(p[i]) <= kPipelineMaxValue);
+                if (bad)
+                    found = true;
             }
         });
         return found.load();
@@ -39,19 +41,25 @@ public:
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             for (int i = 0; i < 4 * f.width; ++i)
-                if (!(std::fabs(p[i]) <= kPipelineMaxValue)) p[i] = sanitizeValue(p[i], kPipelineMaxValue);
+                if (!(std::fabs(p[i]) <= kPipelineMaxValue))
+                    p[i] = sanitizeValue(p[i], kPipelineMaxValue);
         }
     }
 };
 
 class ExposureStage final : public Stage {
 public:
-    ExposureStage() { addParam(&m_stops, "stops", 0.0f, -20.0f, 20.0f, "exposure in stops: x * 2^stops"); }
+    ExposureStage() {
+        addParam(&m_stops, "stops", 0.0f, -20.0f, 20.0f, "exposure in stops: x * 2^stops");
+    }
     const char* name() const override { return "exposure"; }
-    const char* description() const override { return "exposure control: x * 2^stops (before bloom)"; }
+    const char* description() const override {
+        return "exposure control: x * 2^stops (before bloom)";
+    }
     bool canChange(const ImageView&, int) const override { return m_stops != 0.0f; }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        if (m_stops == 0.0f) return;
+        if (m_stops == 0.0f)
+            return;
         const float k = std::exp2(m_stops);
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
@@ -112,11 +120,16 @@ private:
 class ChromaticAberrationStage final : public Stage {
 public:
     ChromaticAberrationStage() {
-        addParam(&m_strength, "strength", 0.004f, -0.2f, 0.2f, "relative radial offset of red/blue");
+        addParam(&m_strength, "strength", 0.004f, -0.2f, 0.2f,
+                 "relative radial offset of red/blue");
     }
     const char* name() const override { return "chromatic-aberration"; }
-    const char* description() const override { return "red and blue sampled at slightly different radii"; }
-    bool canChange(const ImageView& f, int) const override { return m_strength != 0.0f && f.width * f.height > 1; }
+    const char* description() const override {
+        return "red and blue sampled at slightly different radii";
+    }
+    bool canChange(const ImageView& f, int) const override {
+        return m_strength != 0.0f && f.width * f.height > 1;
+    }
     bool needsPrepare() const override { return m_strength != 0.0f; }
     void prepare(const ImageView& f, const StageContext&) override {
         m_copy.resize(static_cast<std::size_t>(f.width) * f.height * 2);
@@ -131,7 +144,8 @@ public:
     }
     void finish() override { std::vector<float>().swap(m_copy); }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        if (m_strength == 0.0f || m_copy.empty()) return;
+        if (m_strength == 0.0f || m_copy.empty())
+            return;
         const float cx = 0.5f * f.width, cy = 0.5f * f.height;
         auto sample = [&](float fx, float fy, int ch) {
             fx = std::clamp(fx, 0.0f, static_cast<float>(f.width - 1));
@@ -139,7 +153,9 @@ public:
             const int x0 = static_cast<int>(fx), y0i = static_cast<int>(fy);
             const int x1 = std::min(x0 + 1, f.width - 1), y1i = std::min(y0i + 1, f.height - 1);
             const float tx = fx - x0, ty = fy - y0i;
-            auto v = [&](int x, int y) { return m_copy[2 * (static_cast<std::size_t>(y) * f.width + x) + ch]; };
+            auto v = [&](int x, int y) {
+                return m_copy[2 * (static_cast<std::size_t>(y) * f.width + x) + ch];
+            };
             const float top = v(x0, y0i) + (v(x1, y0i) - v(x0, y0i)) * tx;
             const float bot = v(x0, y1i) + (v(x1, y1i) - v(x0, y1i)) * tx;
             return top + (bot - top) * ty;
@@ -166,14 +182,18 @@ class VignetteStage final : public Stage {
 public:
     VignetteStage() {
         addParam(&m_strength, "strength", 0.35f, 0.0f, 1.0f, "darkening at the corners");
-        addParam(&m_radius, "radius", 0.45f, 0.0f, 2.0f, "distance (corner = 1) where darkening starts");
+        addParam(&m_radius, "radius", 0.45f, 0.0f, 2.0f,
+                 "distance (corner = 1) where darkening starts");
         addParam(&m_softness, "softness", 0.6f, 0.001f, 4.0f, "width of the falloff");
     }
     const char* name() const override { return "vignette"; }
     const char* description() const override { return "darken by distance to the centre"; }
-    bool canChange(const ImageView&, int) const override { return m_strength > 0.0f && m_radius < 1.0f; }
+    bool canChange(const ImageView&, int) const override {
+        return m_strength > 0.0f && m_radius < 1.0f;
+    }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        if (!(m_strength > 0.0f)) return;
+        if (!(m_strength > 0.0f))
+            return;
         const float cx = 0.5f * f.width, cy = 0.5f * f.height;
         const float inv = 1.0f / std::sqrt(cx * cx + cy * cy);
         for (int y = y0; y < y1; ++y) {
@@ -214,22 +234,29 @@ public:
         addParam(&m_seed, "seed", 1.0f, 0.0f, 16777216.0f, "random seed (integer)");
     }
     const char* name() const override { return "grain"; }
-    const char* description() const override { return "seeded film grain (changes per frame index)"; }
+    const char* description() const override {
+        return "seeded film grain (changes per frame index)";
+    }
     bool canChange(const ImageView&, int) const override { return m_strength > 0.0f; }
     void processRows(const ImageView& f, int y0, int y1, const StageContext& ctx) const override {
-        if (!(m_strength > 0.0f)) return;
-        const std::uint32_t seed = hash32(static_cast<std::uint32_t>(m_seed) * 0x9E3779B9u ^
-                                          hash32(static_cast<std::uint32_t>(ctx.frameIndex) + 0x632BE5ABu));
+        if (!(m_strength > 0.0f))
+            return;
+        const std::uint32_t seed =
+            hash32(static_cast<std::uint32_t>(m_seed) * 0x9E3779B9u ^
+                   hash32(static_cast<std::uint32_t>(ctx.frameIndex) + 0x632BE5ABu));
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             for (int x = 0; x < f.width; ++x, p += 4) {
-                const std::uint32_t h = hash32(seed ^ hash32(static_cast<std::uint32_t>(y) * 0x10001u + hash32(static_cast<std::uint32_t>(x))));
+                const std::uint32_t h =
+                    hash32(seed ^ hash32(static_cast<std::uint32_t>(y) * 0x10001u +
+                                         hash32(static_cast<std::uint32_t>(x))));
                 const float u1 = static_cast<float>(h & 0xFFFFu) * (1.0f / 65535.0f);
                 const float u2 = static_cast<float>(h >> 16) * (1.0f / 65535.0f);
                 const float n = u1 + u2 - 1.0f;
                 const float lum = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
                 const float amp = m_strength * n * std::sqrt(std::clamp(lum, 0.0f, 1.0f));
-                if (amp == 0.0f) continue;
+                if (amp == 0.0f)
+                    continue;
                 p[0] += amp;
                 p[1] += amp;
                 p[2] += amp;
@@ -248,7 +275,9 @@ public:
         addParam(&m_gamma, "gamma", 2.2f, 0.1f, 10.0f, "gamma of the pure power curve");
     }
     const char* name() const override { return "display"; }
-    const char* description() const override { return "display encode: piecewise sRGB or pure gamma, last"; }
+    const char* description() const override {
+        return "display encode: piecewise sRGB or pure gamma, last";
+    }
     bool canChange(const ImageView&, int) const override { return true; }
     bool isSrgb() const { return m_curve == 0.0f; }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
@@ -257,7 +286,8 @@ public:
         const float inv = 1.0f / m_gamma;
         thread_local std::vector<float> e;
         const std::size_t n = static_cast<std::size_t>(f.width) * 4;
-        if (srgb) e.resize(n);
+        if (srgb)
+            e.resize(n);
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             if (srgb) {
@@ -270,7 +300,8 @@ public:
                 continue;
             }
             for (int x = 0; x < f.width; ++x, p += 4)
-                for (int c = 0; c < 3; ++c) p[c] = p[c] > 0.0f ? std::pow(p[c], inv) : 0.0f;
+                for (int c = 0; c < 3; ++c)
+                    p[c] = p[c] > 0.0f ? std::pow(p[c], inv) : 0.0f;
         }
     }
 
@@ -280,13 +311,27 @@ private:
 
 } // namespace
 
-std::unique_ptr<Stage> makeSanitizeStage() { return std::make_unique<SanitizeStage>(); }
-std::unique_ptr<Stage> makeExposureStage() { return std::make_unique<ExposureStage>(); }
-std::unique_ptr<Stage> makeTonemapStage() { return std::make_unique<TonemapStage>(); }
-std::unique_ptr<Stage> makeChromaticAberrationStage() { return std::make_unique<ChromaticAberrationStage>(); }
-std::unique_ptr<Stage> makeVignetteStage() { return std::make_unique<VignetteStage>(); }
-std::unique_ptr<Stage> makeGrainStage() { return std::make_unique<GrainStage>(); }
-std::unique_ptr<Stage> makeDisplayStage() { return std::make_unique<DisplayStage>(); }
+std::unique_ptr<Stage> makeSanitizeStage() {
+    return std::make_unique<SanitizeStage>();
+}
+std::unique_ptr<Stage> makeExposureStage() {
+    return std::make_unique<ExposureStage>();
+}
+std::unique_ptr<Stage> makeTonemapStage() {
+    return std::make_unique<TonemapStage>();
+}
+std::unique_ptr<Stage> makeChromaticAberrationStage() {
+    return std::make_unique<ChromaticAberrationStage>();
+}
+std::unique_ptr<Stage> makeVignetteStage() {
+    return std::make_unique<VignetteStage>();
+}
+std::unique_ptr<Stage> makeGrainStage() {
+    return std::make_unique<GrainStage>();
+}
+std::unique_ptr<Stage> makeDisplayStage() {
+    return std::make_unique<DisplayStage>();
+}
 
 bool isSrgbDisplay(const Stage& s) {
     const auto* d = dynamic_cast<const DisplayStage*>(&s);

@@ -16,10 +16,12 @@ public:
     bool inspectsColor() const override { return true; }
     void finish() override { m_bloom = RgbBuffer(); }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        if (m_bloom.w != f.width || m_bloom.h != f.height) return;
+        if (m_bloom.w != f.width || m_bloom.h != f.height)
+            return;
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
-            for (int x = 0; x < f.width; ++x, p += 4) addRgb(p, m_bloom.at(x, y));
+            for (int x = 0; x < f.width; ++x, p += 4)
+                addRgb(p, m_bloom.at(x, y));
         }
     }
 
@@ -36,11 +38,15 @@ public:
         addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom");
     }
     const char* name() const override { return "hdr-bloom"; }
-    const char* description() const override { return "lecture HDR bloom: max(x - 1, 0), Gaussian, add"; }
+    const char* description() const override {
+        return "lecture HDR bloom: max(x - 1, 0), Gaussian, add";
+    }
     bool canChange(const ImageView& f, int nthreads) const override {
-        if (!(m_strength > 0.0f)) return false;
+        if (!(m_strength > 0.0f))
+            return false;
         const float th = m_threshold;
-        return anyPixel(f, nthreads, [th](const float* p) { return p[0] > th || p[1] > th || p[2] > th; });
+        return anyPixel(f, nthreads,
+                        [th](const float* p) { return p[0] > th || p[1] > th || p[2] > th; });
     }
     void prepare(const ImageView& f, const StageContext& ctx) override {
         m_bloom.resize(f.width, f.height);
@@ -49,7 +55,8 @@ public:
                 const float* p = f.row(y);
                 for (int x = 0; x < f.width; ++x, p += 4) {
                     float* o = m_bloom.at(x, y);
-                    for (int c = 0; c < 3; ++c) o[c] = std::max(p[c] - m_threshold, 0.0f) * m_strength;
+                    for (int c = 0; c < 3; ++c)
+                        o[c] = std::max(p[c] - m_threshold, 0.0f) * m_strength;
                 }
             }
         });
@@ -84,7 +91,8 @@ public:
         return w > 0.0f ? w / std::max(l, 1e-5f) : 0.0f;
     }
     bool canChange(const ImageView& f, int nthreads) const override {
-        if (!(m_strength > 0.0f)) return false;
+        if (!(m_strength > 0.0f))
+            return false;
         return anyPixel(f, nthreads, [this](const float* p) {
             return weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) > 0.0f;
         });
@@ -95,14 +103,18 @@ public:
             for (int y = y0; y < y1; ++y) {
                 const float* p = f.row(y);
                 for (int x = 0; x < f.width; ++x, p += 4) {
-                    const float w = weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) * m_strength;
+                    const float w =
+                        weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) * m_strength;
                     float* o = m_bloom.at(x, y);
-                    for (int c = 0; c < 3; ++c) o[c] = p[c] * w;
+                    for (int c = 0; c < 3; ++c)
+                        o[c] = p[c] * w;
                 }
             }
         });
-        static const std::vector<float> kWeights = {0.227027f, 0.1945946f, 0.1216216f, 0.054054f, 0.016216f};
-        for (int i = 0; i < static_cast<int>(m_passes); ++i) separableBlur(m_bloom, kWeights, ctx.nthreads);
+        static const std::vector<float> kWeights = {0.227027f, 0.1945946f, 0.1216216f, 0.054054f,
+                                                    0.016216f};
+        for (int i = 0; i < static_cast<int>(m_passes); ++i)
+            separableBlur(m_bloom, kWeights, ctx.nthreads);
     }
 
 private:
@@ -126,10 +138,14 @@ public:
         return "Sugar bloom: threshold on intensity, dilation, mip-pyramid blur, C*f0 + B*(1-i)*f1";
     }
     bool canChange(const ImageView& f, int nthreads) const override {
-        if (m_f0 != 1.0f) return true;
-        if (!(m_f1 > 0.0f)) return false;
+        if (m_f0 != 1.0f)
+            return true;
+        if (!(m_f1 > 0.0f))
+            return false;
         const float th = m_threshold;
-        return anyPixel(f, nthreads, [th](const float* p) { return std::max({p[0], p[1], p[2]}) - th > 0.0f; });
+        return anyPixel(f, nthreads, [th](const float* p) {
+            return std::max({p[0], p[1], p[2]}) - th > 0.0f;
+        });
     }
     void prepare(const ImageView& f, const StageContext& ctx) override {
         const int W = f.width, H = f.height;
@@ -141,7 +157,8 @@ public:
                 for (int x = 0; x < W; ++x, p += 4) {
                     const float i = std::max(std::max({p[0], p[1], p[2]}) - m_threshold, 0.0f);
                     float* o = src.at(x, y);
-                    for (int c = 0; c < 3; ++c) o[c] = p[c] * i;
+                    for (int c = 0; c < 3; ++c)
+                        o[c] = p[c] * i;
                 }
             }
         });
@@ -160,10 +177,12 @@ public:
                             for (int k = -r; k <= r; ++k) {
                                 const float* q = pass == 0 ? in.at(std::clamp(x + k, 0, W - 1), y)
                                                            : in.at(x, std::clamp(y + k, 0, H - 1));
-                                for (int c = 0; c < 3; ++c) m[c] = std::max(m[c], q[c]);
+                                for (int c = 0; c < 3; ++c)
+                                    m[c] = std::max(m[c], q[c]);
                             }
                             float* o = out.at(x, y);
-                            for (int c = 0; c < 3; ++c) o[c] = m[c];
+                            for (int c = 0; c < 3; ++c)
+                                o[c] = m[c];
                         }
                 });
             }
@@ -171,10 +190,11 @@ public:
         // Mip pyramid; the blur is the mean of all levels upsampled bilinearly to full size.
         std::vector<RgbBuffer> mips;
         mips.push_back(std::move(src));
-        for (int l = 1; l < static_cast<int>(m_levels) && (mips.back().w > 1 || mips.back().h > 1); ++l) {
+        for (int l = 1; l < static_cast<int>(m_levels) && (mips.back().w > 1 || mips.back().h > 1);
+             ++l) {
             RgbBuffer next;
-            resampleBilinear(mips.back(), next, std::max(1, mips.back().w / 2), std::max(1, mips.back().h / 2),
-                             ctx.nthreads);
+            resampleBilinear(mips.back(), next, std::max(1, mips.back().w / 2),
+                             std::max(1, mips.back().h / 2), ctx.nthreads);
             mips.push_back(std::move(next));
         }
         const float wl = m_f1 / static_cast<float>(mips.size());
@@ -189,11 +209,13 @@ public:
                 const float* p = f.row(y);
                 for (int x = 0; x < W; ++x, p += 4) {
                     float acc[3] = {0, 0, 0};
-                    for (std::size_t l = 0; l < mips.size(); ++l) bilinearAdd(mips[l], ax[l], x, ay[l], y, wl, acc);
+                    for (std::size_t l = 0; l < mips.size(); ++l)
+                        bilinearAdd(mips[l], ax[l], x, ay[l], y, wl, acc);
                     const float i = std::max(std::max({p[0], p[1], p[2]}) - m_threshold, 0.0f);
                     const float k = clamp01(1.0f - i);
                     float* o = m_bloom.at(x, y);
-                    for (int c = 0; c < 3; ++c) o[c] = acc[c] * k;
+                    for (int c = 0; c < 3; ++c)
+                        o[c] = acc[c] * k;
                 }
             }
         });
@@ -222,23 +244,30 @@ private:
 class SmashBloomStage final : public Stage {
 public:
     SmashBloomStage() {
-        addParam(&m_threshold, "threshold", kSmashBloomThreshold, 0.0f, 1.0f, "brightness threshold (0.4625)");
+        addParam(&m_threshold, "threshold", kSmashBloomThreshold, 0.0f, 1.0f,
+                 "brightness threshold (0.4625)");
         addParam(&m_gain, "gain", kSmashBloomGain, 0.0f, 100.0f, "threshold gain (6.0)");
-        addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom (1 = game)");
+        addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f,
+                 "multiplier of the added bloom (1 = game)");
     }
     const char* name() const override { return "smash-bloom"; }
     const char* description() const override {
-        return "Smash bloom: 1/4-res threshold, 4 blur levels, weighted combine, pow 2.2, upsample, add";
+        return "Smash bloom: 1/4-res threshold, 4 blur levels, weighted combine, pow 2.2, "
+               "upsample, add";
     }
     bool needsPrepare() const override { return true; }
     bool inspectsColor() const override { return true; }
     bool canChange(const ImageView& f, int nthreads) const override {
-        if (!(m_strength > 0.0f) || !(m_gain > 0.0f)) return false;
+        if (!(m_strength > 0.0f) || !(m_gain > 0.0f))
+            return false;
         // The threshold image is zero unless some bilinear sample has a clamped component above
         // the threshold and some alpha above 0; both need such texels to exist.
         const float th = m_threshold;
         const bool bright = anyPixel(f, nthreads, [th](const float* p) {
-            return std::max({clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), kSmashBloomMinComponent}) - th > 0.0f;
+            return std::max(
+                       {clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), kSmashBloomMinComponent}) -
+                       th >
+                   0.0f;
         });
         return bright && anyPixel(f, nthreads, [](const float* p) { return p[3] > 0.0f; });
     }
@@ -314,13 +343,15 @@ public:
         parallelFor(h4, ctx.nthreads, [&](int j0, int j1) {
             // Separable bilinear: each level's two source rows blended once per output row.
             std::vector<float> rows[4];
-            for (int l = 0; l < 4; ++l) rows[l].resize(static_cast<std::size_t>(levels[l].w) * 3);
+            for (int l = 0; l < 4; ++l)
+                rows[l].resize(static_cast<std::size_t>(levels[l].w) * 3);
             for (int j = j0; j < j1; ++j) {
                 for (int l = 0; l < 4; ++l) {
                     const float ty = cy[l].t[j];
                     const float* r0 = levels[l].at(0, cy[l].i0[j]);
                     const float* r1 = levels[l].at(0, cy[l].i1[j]);
-                    for (int k = 0; k < 3 * levels[l].w; ++k) rows[l][k] = r0[k] + (r1[k] - r0[k]) * ty;
+                    for (int k = 0; k < 3 * levels[l].w; ++k)
+                        rows[l][k] = r0[k] + (r1[k] - r0[k]) * ty;
                 }
                 for (int i = 0; i < w4; ++i) {
                     float* o = m_combined.at(i, j);
@@ -328,11 +359,13 @@ public:
                         float b[4];
                         for (int l = 0; l < 4; ++l) {
                             const float tx = cx[l].t[i];
-                            const float a0 = rows[l][3 * cx[l].i0[i] + c], a1 = rows[l][3 * cx[l].i1[i] + c];
+                            const float a0 = rows[l][3 * cx[l].i0[i] + c],
+                                        a1 = rows[l][3 * cx[l].i1[i] + c];
                             b[l] = a0 + (a1 - a0) * tx;
                         }
-                        const float sum = kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
-                                          kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3];
+                        const float sum =
+                            kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
+                            kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3];
                         o[c] = pw(clamp01(sum)) * m_strength;
                     }
                 }
@@ -348,7 +381,8 @@ public:
         m_ay = Axis();
     }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        if (m_combined.w == 0 || static_cast<int>(m_ax.t.size()) != f.width || static_cast<int>(m_ay.t.size()) != f.height)
+        if (m_combined.w == 0 || static_cast<int>(m_ax.t.size()) != f.width ||
+            static_cast<int>(m_ay.t.size()) != f.height)
             return;
         // Separable bilinear: the two source rows blended once per output row, then one lerp
         // per output pixel.
@@ -364,13 +398,15 @@ public:
                 row[i] = r0[i] + (r1[i] - r0[i]) * ty;
                 any |= row[i] != 0.0f;
             }
-            if (!any) continue;
+            if (!any)
+                continue;
             float* p = f.row(y);
             for (int x = 0; x < f.width; ++x, p += 4) {
                 const float tx = m_ax.t[x];
                 const float* a = row.data() + 3 * m_ax.i0[x];
                 const float* b = row.data() + 3 * m_ax.i1[x];
-                const float v[3] = {a[0] + (b[0] - a[0]) * tx, a[1] + (b[1] - a[1]) * tx, a[2] + (b[2] - a[2]) * tx};
+                const float v[3] = {a[0] + (b[0] - a[0]) * tx, a[1] + (b[1] - a[1]) * tx,
+                                    a[2] + (b[2] - a[2]) * tx};
                 addRgb(p, v);
             }
         }
@@ -384,9 +420,17 @@ private:
 
 } // namespace
 
-std::unique_ptr<Stage> makeHdrBloomStage() { return std::make_unique<HdrBloomStage>(); }
-std::unique_ptr<Stage> makeFilterBloomStage() { return std::make_unique<FilterBloomStage>(); }
-std::unique_ptr<Stage> makeSugarBloomStage() { return std::make_unique<SugarBloomStage>(); }
-std::unique_ptr<Stage> makeSmashBloomStage() { return std::make_unique<SmashBloomStage>(); }
+std::unique_ptr<Stage> makeHdrBloomStage() {
+    return std::make_unique<HdrBloomStage>();
+}
+std::unique_ptr<Stage> makeFilterBloomStage() {
+    return std::make_unique<FilterBloomStage>();
+}
+std::unique_ptr<Stage> makeSugarBloomStage() {
+    return std::make_unique<SugarBloomStage>();
+}
+std::unique_ptr<Stage> makeSmashBloomStage() {
+    return std::make_unique<SmashBloomStage>();
+}
 
 } // namespace lut::detail

@@ -17,10 +17,12 @@ public:
     static constexpr int kBits = 12;
     explicit PowTable(double p) : m_p(p), m_mant((1u << kBits) + 1) {
         for (std::uint32_t i = 0; i <= (1u << kBits); ++i)
-            m_mant[i] = static_cast<float>(std::pow(1.0 + static_cast<double>(i) / (1u << kBits), p));
+            m_mant[i] =
+                static_cast<float>(std::pow(1.0 + static_cast<double>(i) / (1u << kBits), p));
         for (int e = 0; e < 256; ++e) {
             double v = e == 0 ? 0.0 : std::pow(2.0, (e - 127) * p);
-            if (!(v < 3.0e38)) v = 3.0e38;
+            if (!(v < 3.0e38))
+                v = 3.0e38;
             m_exp[e] = static_cast<float>(v);
         }
         const double top = static_cast<double>(m_exp[254]) * m_mant[1u << kBits];
@@ -31,10 +33,12 @@ public:
     const float* exponentTable() const { return m_exp; }
     float top() const { return m_top; }
     float operator()(float x) const {
-        if (!(x > 0.0f)) return 0.0f;
+        if (!(x > 0.0f))
+            return 0.0f;
         const std::uint32_t b = std::bit_cast<std::uint32_t>(x);
         const std::uint32_t e = b >> 23;
-        if (e == 255) return m_top;
+        if (e == 255)
+            return m_top;
         const std::uint32_t m = b & 0x7FFFFFu;
         const std::uint32_t idx = m >> (23 - kBits);
         const float frac =
@@ -56,7 +60,8 @@ public:
     template <class F> UniformTable(float hi, int intervals, F&& f) : m_hi(hi), m_n(intervals) {
         m_scale = static_cast<float>(intervals) / hi;
         m_v.resize(static_cast<std::size_t>(intervals) + 2);
-        for (int i = 0; i <= intervals + 1; ++i) m_v[i] = static_cast<float>(f(static_cast<double>(i) * hi / intervals));
+        for (int i = 0; i <= intervals + 1; ++i)
+            m_v[i] = static_cast<float>(f(static_cast<double>(i) * hi / intervals));
     }
     bool covers(float x) const { return x >= 0.0f && x < m_hi; }
     const float* values() const { return m_v.data(); }
@@ -66,7 +71,8 @@ public:
     float operator()(float x) const {
         const float t = x * m_scale;
         int i = static_cast<int>(t);
-        if (i >= m_n) i = m_n - 1;
+        if (i >= m_n)
+            i = m_n - 1;
         const float f = t - static_cast<float>(i);
         return m_v[i] + (m_v[i + 1] - m_v[i]) * f;
     }
@@ -80,10 +86,13 @@ private:
 
 // NaN -> 0; clamps to [-lim, lim].
 inline float sanitizeValue(float v, float lim) {
-    if (!(v == v)) return 0.0f;
+    if (!(v == v))
+        return 0.0f;
     return v > lim ? lim : (v < -lim ? -lim : v);
 }
 
-inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; } // NaN -> 0
+inline float clamp01(float v) {
+    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+} // NaN -> 0
 
 } // namespace lut::detail

@@ -27,7 +27,8 @@ public:
     SmashGradeStage() { setLut(nullptr, Interpolation::Trilinear); }
     const char* name() const override { return "smash-grade"; }
     const char* description() const override {
-        return "Smash grading: gamma 2.2 encode, LUT, brighten (0.99961, 1.3703), decode, alpha mix";
+        return "Smash grading: gamma 2.2 encode, LUT, brighten (0.99961, 1.3703), decode, alpha "
+               "mix";
     }
     void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) override {
         m_lut = lut ? std::move(lut) : neutralSmashLut();
@@ -36,7 +37,8 @@ public:
     }
     void copySettingsFrom(const Stage& other) override {
         Stage::copySettingsFrom(other);
-        if (const auto* o = dynamic_cast<const SmashGradeStage*>(&other)) setLut(o->m_lut, o->m_method);
+        if (const auto* o = dynamic_cast<const SmashGradeStage*>(&other))
+            setLut(o->m_lut, o->m_method);
     }
     // Grading changes every pixel with alpha > 0 (the brighten step alone does, even for a
     // neutral LUT); alpha 0 is left as is.
@@ -64,12 +66,15 @@ public:
             // Pixels left ungraded (alpha <= 0) only get the display encode, 8 at a time.
             bool anyUngraded = false;
             if (fused)
-                for (std::size_t i = 3; i < n; i += 4) anyUngraded |= !(p[i] > 0.0f);
-            if (anyUngraded) srgbEncodeArray(srgb, p, e.data(), n);
+                for (std::size_t i = 3; i < n; i += 4)
+                    anyUngraded |= !(p[i] > 0.0f);
+            if (anyUngraded)
+                srgbEncodeArray(srgb, p, e.data(), n);
             powArray(enc, p, s.data(), n);
             std::memcpy(l.data(), s.data(), n * sizeof(float));
             m_sampler->applyPixels(l.data(), static_cast<std::size_t>(f.width));
-            for (std::size_t i = 0; i < n; ++i) r[i] = ((l[i] - s[i]) * kSmashBrightenMix + s[i]) * kSmashBrightenScale;
+            for (std::size_t i = 0; i < n; ++i)
+                r[i] = ((l[i] - s[i]) * kSmashBrightenMix + s[i]) * kSmashBrightenScale;
             if (fused)
                 uniformArray(disp, r.data(), g.data(), n);
             else
@@ -78,15 +83,19 @@ public:
                 const float a = clamp01(p[3]);
                 if (a <= 0.0f) {
                     if (fused)
-                        for (int c = 0; c < 3; ++c) p[c] = e[i + c];
+                        for (int c = 0; c < 3; ++c)
+                            p[c] = e[i + c];
                     continue;
                 }
                 if (!fused) {
-                    for (int c = 0; c < 3; ++c) p[c] = a >= 1.0f ? g[i + c] : p[c] * (1.0f - a) + g[i + c] * a;
+                    for (int c = 0; c < 3; ++c)
+                        p[c] = a >= 1.0f ? g[i + c] : p[c] * (1.0f - a) + g[i + c] * a;
                     continue;
                 }
-                if (a >= 1.0f && disp.covers(r[i]) && disp.covers(r[i + 1]) && disp.covers(r[i + 2])) {
-                    for (int c = 0; c < 3; ++c) p[c] = g[i + c];
+                if (a >= 1.0f && disp.covers(r[i]) && disp.covers(r[i + 1]) &&
+                    disp.covers(r[i + 2])) {
+                    for (int c = 0; c < 3; ++c)
+                        p[c] = g[i + c];
                     continue;
                 }
                 for (int c = 0; c < 3; ++c) {
@@ -122,15 +131,18 @@ public:
     }
     void copySettingsFrom(const Stage& other) override {
         Stage::copySettingsFrom(other);
-        if (const auto* o = dynamic_cast<const GenericLutStage*>(&other)) setLut(o->m_lut, o->m_method);
+        if (const auto* o = dynamic_cast<const GenericLutStage*>(&other))
+            setLut(o->m_lut, o->m_method);
     }
     bool inspectsColor() const override { return m_identity; }
     bool canChange(const ImageView& f, int nthreads) const override {
-        if (!m_identity) return true;
+        if (!m_identity)
+            return true;
         const glm::vec3 lo = m_min, hi = m_max;
         return anyPixel(f, nthreads, [lo, hi](const float* p) {
             for (int c = 0; c < 3; ++c)
-                if (!(p[c] >= lo[c] && p[c] <= hi[c])) return true;
+                if (!(p[c] >= lo[c] && p[c] <= hi[c]))
+                    return true;
             return false;
         });
     }
@@ -142,7 +154,8 @@ public:
                 continue;
             }
             for (int x = 0; x < f.width; ++x, p += 4)
-                for (int c = 0; c < 3; ++c) p[c] = std::clamp(p[c], m_min[c], m_max[c]);
+                for (int c = 0; c < 3; ++c)
+                    p[c] = std::clamp(p[c], m_min[c], m_max[c]);
         }
     }
 
@@ -156,11 +169,16 @@ private:
 
 } // namespace
 
-std::unique_ptr<Stage> makeSmashGradeStage() { return std::make_unique<SmashGradeStage>(); }
-std::unique_ptr<Stage> makeLutStage() { return std::make_unique<GenericLutStage>(); }
+std::unique_ptr<Stage> makeSmashGradeStage() {
+    return std::make_unique<SmashGradeStage>();
+}
+std::unique_ptr<Stage> makeLutStage() {
+    return std::make_unique<GenericLutStage>();
+}
 
 void setSmashGradeFusedDisplay(Stage& grade, bool on) {
-    if (auto* g = dynamic_cast<SmashGradeStage*>(&grade)) g->setFusedDisplay(on);
+    if (auto* g = dynamic_cast<SmashGradeStage*>(&grade))
+        g->setFusedDisplay(on);
 }
 
 } // namespace lut::detail

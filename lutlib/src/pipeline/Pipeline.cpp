@@ -13,19 +13,27 @@ namespace lut {
 
 const char* toString(Preset p) {
     switch (p) {
-    case Preset::Smash: return "smash";
-    case Preset::Pilot: return "pilot";
-    case Preset::Lecture: return "lecture";
-    case Preset::None: return "none";
+    case Preset::Smash:
+        return "smash";
+    case Preset::Pilot:
+        return "pilot";
+    case Preset::Lecture:
+        return "lecture";
+    case Preset::None:
+        return "none";
     }
     return "?";
 }
 
 Preset parsePreset(std::string_view n) {
-    if (n == "smash") return Preset::Smash;
-    if (n == "pilot") return Preset::Pilot;
-    if (n == "lecture") return Preset::Lecture;
-    if (n == "none") return Preset::None;
+    if (n == "smash")
+        return Preset::Smash;
+    if (n == "pilot")
+        return Preset::Pilot;
+    if (n == "lecture")
+        return Preset::Lecture;
+    if (n == "none")
+        return Preset::None;
     throw Error("unknown preset '" + std::string(n) + "' (expected smash, pilot, lecture or none)");
 }
 
@@ -52,15 +60,21 @@ const Entry kStages[] = {
     {"display", detail::makeDisplayStage},
 };
 
-bool isBloom(std::string_view n) { return n.size() >= 5 && n.substr(n.size() - 5) == "bloom"; }
+bool isBloom(std::string_view n) {
+    return n.size() >= 5 && n.substr(n.size() - 5) == "bloom";
+}
 
 std::vector<std::string> presetStages(Preset p) {
     switch (p) {
-    case Preset::Smash: return {"sanitize", "smash-bloom", "smash-grade", "display"};
-    case Preset::Pilot: return {"sanitize", "tonemap", "filter-bloom", "lut", "display"};
+    case Preset::Smash:
+        return {"sanitize", "smash-bloom", "smash-grade", "display"};
+    case Preset::Pilot:
+        return {"sanitize", "tonemap", "filter-bloom", "lut", "display"};
     case Preset::Lecture:
-        return {"sanitize", "exposure", "hdr-bloom", "chromatic-aberration", "vignette", "grain", "lut", "display"};
-    case Preset::None: return {"sanitize", "display"};
+        return {"sanitize", "exposure", "hdr-bloom", "chromatic-aberration",
+                "vignette", "grain",    "lut",       "display"};
+    case Preset::None:
+        return {"sanitize", "display"};
     }
     return {};
 }
@@ -70,7 +84,8 @@ std::vector<std::string> presetStages(Preset p) {
 const std::vector<std::string>& stageNames() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> v;
-        for (const auto& e : kStages) v.emplace_back(e.name);
+        for (const auto& e : kStages)
+            v.emplace_back(e.name);
         return v;
     }();
     return names;
@@ -78,9 +93,11 @@ const std::vector<std::string>& stageNames() {
 
 std::unique_ptr<Stage> makeStage(std::string_view name) {
     for (const auto& e : kStages)
-        if (name == e.name) return e.make();
+        if (name == e.name)
+            return e.make();
     std::string list;
-    for (const auto& e : kStages) list += (list.empty() ? "" : ", ") + std::string(e.name);
+    for (const auto& e : kStages)
+        list += (list.empty() ? "" : ", ") + std::string(e.name);
     throw Error("unknown stage '" + std::string(name) + "' (stages: " + list + ")");
 }
 
@@ -103,10 +120,14 @@ Pipeline::Pipeline(Preset preset) : m_preset(preset) {
 
 Pipeline::Pipeline(const PipelineSettings& s) : Pipeline(s.preset) {
     setLut(s.lut, s.interpolation);
-    if (!s.bloom) setBloom(false);
-    for (const auto& n : s.enable) setEnabled(n, true);
-    for (const auto& n : s.disable) setEnabled(n, false);
-    for (const auto& a : s.assignments) assign(a);
+    if (!s.bloom)
+        setBloom(false);
+    for (const auto& n : s.enable)
+        setEnabled(n, true);
+    for (const auto& n : s.disable)
+        setEnabled(n, false);
+    for (const auto& a : s.assignments)
+        assign(a);
 }
 
 Pipeline::~Pipeline() = default;
@@ -121,24 +142,29 @@ const Stage* Pipeline::find(std::string_view name) const {
     if (name == "bloom") {
         // The preset's bloom: the first enabled bloom stage, else the preset's natural one.
         for (const auto& s : m_stages)
-            if (s->enabled() && isBloom(s->name())) return s.get();
-        const char* def = m_preset == Preset::Pilot ? "filter-bloom"
-                          : m_preset == Preset::Lecture ? "hdr-bloom" : "smash-bloom";
+            if (s->enabled() && isBloom(s->name()))
+                return s.get();
+        const char* def = m_preset == Preset::Pilot     ? "filter-bloom"
+                          : m_preset == Preset::Lecture ? "hdr-bloom"
+                                                        : "smash-bloom";
         return find(def);
     }
     for (const auto& s : m_stages)
-        if (name == s->name()) return s.get();
+        if (name == s->name())
+            return s.get();
     return nullptr;
 }
 
 Stage& Pipeline::stage(std::string_view name) {
-    if (Stage* s = find(name)) return *s;
+    if (Stage* s = find(name))
+        return *s;
     makeStage(name); // throws the message listing every stage
     throw Error("unknown stage '" + std::string(name) + "'");
 }
 
 void Pipeline::setEnabled(std::string_view name, bool on) {
-    if (name == "sanitize" && !on) throw Error("stage 'sanitize' cannot be disabled (it keeps NaN/Inf from spreading)");
+    if (name == "sanitize" && !on)
+        throw Error("stage 'sanitize' cannot be disabled (it keeps NaN/Inf from spreading)");
     stage(name).setEnabled(on);
 }
 
@@ -152,24 +178,31 @@ void Pipeline::assign(std::string_view a) {
 
 void Pipeline::setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) {
     for (auto& s : m_stages)
-        if (auto* l = dynamic_cast<detail::LutStage*>(s.get())) l->setLut(lut, method);
+        if (auto* l = dynamic_cast<detail::LutStage*>(s.get()))
+            l->setLut(lut, method);
 }
 
 void Pipeline::setBloom(bool on) {
     if (on) {
-        if (Stage* b = find("bloom")) b->setEnabled(true);
+        if (Stage* b = find("bloom"))
+            b->setEnabled(true);
         return;
     }
     for (auto& s : m_stages)
-        if (isBloom(s->name())) s->setEnabled(false);
+        if (isBloom(s->name()))
+            s->setEnabled(false);
 }
 
 std::string PipelineReport::str() const {
     std::ostringstream os;
     char buf[160];
     for (const auto& s : stages) {
-        if (!s.enabled) continue;
-        std::snprintf(buf, sizeof buf, "  %-22s %-8s %9.3f ms\n", s.name.c_str(), s.fused ? "fused" : s.ran ? "ran" : "skipped",
+        if (!s.enabled)
+            continue;
+        std::snprintf(buf, sizeof buf, "  %-22s %-8s %9.3f ms\n", s.name.c_str(),
+                      s.fused ? "fused"
+                      : s.ran ? "ran"
+                              : "skipped",
                       s.milliseconds);
         os << buf;
     }
@@ -194,7 +227,8 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
         r.enabled = s->enabled();
         report.stages.push_back(r);
     }
-    if (frame.empty()) return report;
+    if (frame.empty())
+        return report;
     StageContext ctx;
     ctx.nthreads = options.nthreads;
     ctx.frameIndex = options.frameIndex;
@@ -203,7 +237,8 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
     // Stages whose rows run in the current fused pass (index into m_stages).
     std::vector<std::size_t> pass;
     auto flush = [&] {
-        if (pass.empty()) return;
+        if (pass.empty())
+            return;
         constexpr int kBlock = 8; // rows per tile: a 1920-wide tile is 240 KB, cache-resident
         const int blocks = (frame.height + kBlock - 1) / kBlock;
         std::vector<double> ms(pass.size(), 0.0);
@@ -219,7 +254,8 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
                 }
             }
             std::lock_guard<std::mutex> lock(m);
-            for (std::size_t k = 0; k < pass.size(); ++k) ms[k] += local[k];
+            for (std::size_t k = 0; k < pass.size(); ++k)
+                ms[k] += local[k];
         });
         for (std::size_t k = 0; k < pass.size(); ++k) {
             report.stages[pass[k]].milliseconds += ms[k] / threads;
@@ -229,16 +265,20 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
     };
 
     Stage* grade = find("smash-grade");
-    if (grade) detail::setSmashGradeFusedDisplay(*grade, false);
+    if (grade)
+        detail::setSmashGradeFusedDisplay(*grade, false);
     for (std::size_t i = 0; i < m_stages.size(); ++i) {
         Stage& s = *m_stages[i];
-        if (!s.enabled()) continue;
+        if (!s.enabled())
+            continue;
+        if (s.inspectsColor() || s.needsPrepare())
+            flush(); // timed as the earlier stages' work
         const auto t0 = Clock::now();
-        if (s.inspectsColor() || s.needsPrepare()) flush();
         const bool run = options.forceAll || s.canChange(frame, options.nthreads);
         if (run) {
             report.stages[i].ran = true;
-            if (s.needsPrepare()) s.prepare(frame, ctx);
+            if (s.needsPrepare())
+                s.prepare(frame, ctx);
             // sRGB display right after smash-grade in the same pass: encode inside the grading
             // loop while the pixel is in registers.
             if (!pass.empty() && m_stages[pass.back()].get() == grade && detail::isSrgbDisplay(s)) {
@@ -250,10 +290,12 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
         }
         report.stages[i].milliseconds += msSince(t0);
         // The sanitize stage changes alpha, which later stages may base their decision on.
-        if (std::string_view(s.name()) == "sanitize") flush();
+        if (std::string_view(s.name()) == "sanitize")
+            flush();
     }
     flush();
-    if (grade) detail::setSmashGradeFusedDisplay(*grade, false);
+    if (grade)
+        detail::setSmashGradeFusedDisplay(*grade, false);
     report.totalMilliseconds = msSince(tStart);
     return report;
 }
@@ -261,14 +303,16 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
 Image Pipeline::run(const Image& frame, const RunOptions& options, PipelineReport* report) {
     Image out = frame;
     PipelineReport r = run(out.view(), options);
-    if (report) *report = std::move(r);
+    if (report)
+        *report = std::move(r);
     return out;
 }
 
 Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,
                               const Lut3D* originalLut, Interpolation interp, int nthreads) {
     Diagnostics d;
-    if (!storedIsLinear) srgbDecode(frame, nthreads);
+    if (!storedIsLinear)
+        srgbDecode(frame, nthreads);
     if (fromScreenshot) {
         UngradeResult r = smashUngrade(frame, originalLut, interp, nthreads);
         d = std::move(r.diagnostics);
@@ -277,7 +321,8 @@ Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool 
 }
 
 double benchmarkSmashChain(int width, int height, int iterations, int nthreads) {
-    if (width <= 0 || height <= 0) throw Error("benchmark frame size must be positive");
+    if (width <= 0 || height <= 0)
+        throw Error("benchmark frame size must be positive");
     iterations = std::max(1, iterations);
     // A synthetic HDR scene: smooth gradients, a few highlights well above the bloom threshold,
     // an alpha-0 band (background).
@@ -289,7 +334,8 @@ double benchmarkSmashChain(int width, int height, int iterations, int nthreads) 
             p[0] = 0.6f * u * u;
             p[1] = 0.5f * v;
             p[2] = 0.25f + 0.2f * u * v;
-            if (((x / 64) + (y / 64)) % 7 == 0) p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
+            if (((x / 64) + (y / 64)) % 7 == 0)
+                p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
             p[3] = y < height / 10 ? 0.0f : 1.0f;
         }
     Pipeline pipeline(Preset::Smash);

@@ -18,11 +18,15 @@ float smashEncode(float x) {
     return x > 0.0f ? std::pow(x, kSmashEncodeExponent) : 0.0f;
 }
 
-glm::vec3 smashEncode(glm::vec3 v) { return {smashEncode(v.x), smashEncode(v.y), smashEncode(v.z)}; }
+glm::vec3 smashEncode(glm::vec3 v) {
+    return {smashEncode(v.x), smashEncode(v.y), smashEncode(v.z)};
+}
 
 float smashEncodeInverse(float s) {
     s = sanitizeValue(s, 1.0e6f);
-    return s > 0.0f ? static_cast<float>(std::pow(static_cast<double>(s), 1.0 / kSmashEncodeExponent)) : 0.0f;
+    return s > 0.0f
+               ? static_cast<float>(std::pow(static_cast<double>(s), 1.0 / kSmashEncodeExponent))
+               : 0.0f;
 }
 
 float smashDecode(float r) {
@@ -46,9 +50,11 @@ glm::vec3 smashGrade(glm::vec3 linear, const Sampler& lut) {
 
 glm::vec3 smashGradeMix(glm::vec3 linear, float alpha, const Sampler& lut) {
     const float a = detail::clamp01(alpha);
-    if (a <= 0.0f) return linear;
+    if (a <= 0.0f)
+        return linear;
     const glm::vec3 g = smashGrade(linear, lut);
-    if (a >= 1.0f) return g;
+    if (a >= 1.0f)
+        return g;
     return linear * (1.0f - a) + g * a;
 }
 
@@ -82,7 +88,8 @@ struct GradeMap {
     glm::dvec3 operator()(const glm::dvec3& s) const {
         const glm::vec3 sf(s);
         const glm::vec3 r = smashBrighten(lut.sample(sf), sf);
-        if (a >= 1.0f) return glm::dvec3(r);
+        if (a >= 1.0f)
+            return glm::dvec3(r);
         glm::dvec3 out;
         for (int c = 0; c < 3; ++c) {
             const double x = s[c] > 0.0 ? std::pow(s[c], 1.0 / kSmashEncodeExponent) : 0.0;
@@ -104,12 +111,16 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
                             bool identityLut, bool* converged) {
     const float a = detail::clamp01(alpha);
     glm::vec3 out;
-    for (int c = 0; c < 3; ++c) out[c] = std::max(sanitizeValue(outputLinear[c], kPipelineMaxValue), 0.0f);
-    if (converged) *converged = true;
-    if (a <= 0.0f) return out;
+    for (int c = 0; c < 3; ++c)
+        out[c] = std::max(sanitizeValue(outputLinear[c], kPipelineMaxValue), 0.0f);
+    if (converged)
+        *converged = true;
+    if (a <= 0.0f)
+        return out;
 
     glm::dvec3 target;
-    for (int c = 0; c < 3; ++c) target[c] = out[c] > 0.0f ? std::pow(static_cast<double>(out[c]), 1.0 / 2.2) : 0.0;
+    for (int c = 0; c < 3; ++c)
+        target[c] = out[c] > 0.0f ? std::pow(static_cast<double>(out[c]), 1.0 / 2.2) : 0.0;
     // The neutral solution: exact for an identity LUT with alpha 1, the start point otherwise.
     const double k = 1.0 - static_cast<double>(kSmashBrightenMix);
     glm::dvec3 s;
@@ -119,10 +130,12 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
     }
     auto toLinear = [](const glm::dvec3& sv) {
         glm::vec3 x;
-        for (int c = 0; c < 3; ++c) x[c] = smashEncodeInverse(static_cast<float>(sv[c]));
+        for (int c = 0; c < 3; ++c)
+            x[c] = smashEncodeInverse(static_cast<float>(sv[c]));
         return x;
     };
-    if (identityLut && a >= 1.0f) return toLinear(s);
+    if (identityLut && a >= 1.0f)
+        return toLinear(s);
 
     const GradeMap phi{lut, a};
     const double tol = 1e-6 * std::max(1.0, maxAbs(target));
@@ -137,7 +150,8 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
             glm::dvec3 sp = s;
             sp[c] += h;
             const glm::dvec3 fp = phi(sp) - target;
-            for (int r = 0; r < 3; ++r) J[r][c] = (fp[r] - f[r]) / h;
+            for (int r = 0; r < 3; ++r)
+                J[r][c] = (fp[r] - f[r]) / h;
         }
         const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
                            J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
@@ -149,7 +163,8 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
             auto det3 = [&](int col) {
                 double m[3][3];
                 for (int r = 0; r < 3; ++r)
-                    for (int c = 0; c < 3; ++c) m[r][c] = c == col ? b[r] : J[r][c];
+                    for (int c = 0; c < 3; ++c)
+                        m[r][c] = c == col ? b[r] : J[r][c];
                 return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
                        m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                        m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
@@ -161,7 +176,8 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
         bool accepted = false;
         for (double lambda = 1.0; lambda >= 1.0 / 256.0; lambda *= 0.5) {
             glm::dvec3 sn = s + lambda * d;
-            for (int c = 0; c < 3; ++c) sn[c] = std::clamp(sn[c], 0.0, 1.0e4);
+            for (int c = 0; c < 3; ++c)
+                sn[c] = std::clamp(sn[c], 0.0, 1.0e4);
             const glm::dvec3 fn = phi(sn) - target;
             const double nn = maxAbs(fn);
             if (nn < norm) {
@@ -172,9 +188,11 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
                 break;
             }
         }
-        if (!accepted) break;
+        if (!accepted)
+            break;
     }
-    if (converged) *converged = norm <= tol * 4.0;
+    if (converged)
+        *converged = norm <= tol * 4.0;
     return toLinear(s);
 }
 
@@ -193,8 +211,8 @@ UngradeResult smashUngrade(const ImageView& frame, const Lut3D* originalLut, Int
                 float* p = frame.row(y);
                 for (int x = 0; x < frame.width; ++x, p += 4) {
                     bool ok = true;
-                    const glm::vec3 v = smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3], *sampler,
-                                                          identity, &ok);
+                    const glm::vec3 v = smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3],
+                                                          *sampler, identity, &ok);
                     p[0] = v.x;
                     p[1] = v.y;
                     p[2] = v.z;

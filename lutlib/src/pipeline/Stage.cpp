@@ -22,30 +22,36 @@ std::string StageParam::valueString() const {
 Stage::~Stage() = default;
 
 void Stage::process(const ImageView& frame, const StageContext& ctx) {
-    if (frame.empty()) return;
-    if (needsPrepare()) prepare(frame, ctx);
+    if (frame.empty())
+        return;
+    if (needsPrepare())
+        prepare(frame, ctx);
     // Small row blocks keep the work balanced; each block is written by exactly one thread.
-    parallelFor(frame.height, ctx.nthreads, [&](int y0, int y1) { processRows(frame, y0, y1, ctx); });
+    parallelFor(frame.height, ctx.nthreads,
+                [&](int y0, int y1) { processRows(frame, y0, y1, ctx); });
     finish();
 }
 
 float Stage::param(std::string_view n) const {
     for (const auto& p : m_params)
-        if (p.name == n) return p.value;
+        if (p.name == n)
+            return p.value;
     throw Error(std::string("stage '") + name() + "' has no parameter '" + std::string(n) + "'");
 }
 
 void Stage::setParam(std::string_view n, float value) {
     for (std::size_t i = 0; i < m_params.size(); ++i) {
         StageParam& p = m_params[i];
-        if (p.name != n) continue;
+        if (p.name != n)
+            continue;
         if (!std::isfinite(value) || value < p.min || value > p.max) {
             std::ostringstream os;
             os << "stage '" << name() << "' parameter '" << p.name << "': value " << value
                << " is outside " << p.min << ".." << p.max;
             throw Error(os.str());
         }
-        if (!p.choices.empty()) value = std::round(value);
+        if (!p.choices.empty())
+            value = std::round(value);
         p.value = value;
         *m_targets[i] = value;
         return;
@@ -55,12 +61,15 @@ void Stage::setParam(std::string_view n, float value) {
 
 void Stage::setParam(std::string_view n, std::string_view text) {
     for (const auto& p : m_params) {
-        if (p.name != n) continue;
+        if (p.name != n)
+            continue;
         if (!p.choices.empty()) {
             for (std::size_t c = 0; c < p.choices.size(); ++c)
-                if (p.choices[c] == text) return setParam(n, static_cast<float>(c));
+                if (p.choices[c] == text)
+                    return setParam(n, static_cast<float>(c));
             std::string list;
-            for (const auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
+            for (const auto& c : p.choices)
+                list += (list.empty() ? "" : "|") + c;
             throw Error(std::string("stage '") + name() + "' parameter '" + p.name + "': '" +
                         std::string(text) + "' is not one of " + list);
         }
@@ -78,10 +87,12 @@ void Stage::setParam(std::string_view n, std::string_view text) {
 
 void Stage::copySettingsFrom(const Stage& other) {
     m_enabled = other.m_enabled;
-    for (const auto& p : other.m_params) setParam(p.name, p.value);
+    for (const auto& p : other.m_params)
+        setParam(p.name, p.value);
 }
 
-void Stage::addParam(float* target, std::string n, float def, float min, float max, std::string help) {
+void Stage::addParam(float* target, std::string n, float def, float min, float max,
+                     std::string help) {
     StageParam p;
     p.name = std::move(n);
     p.help = std::move(help);

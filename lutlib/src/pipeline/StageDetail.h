@@ -22,7 +22,6 @@ public:
     virtual void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) = 0;
 };
 
-
 // An RGB float image, 3 interleaved channels, used for bloom intermediates.
 struct RgbBuffer {
     int w = 0, h = 0;
@@ -33,7 +32,9 @@ struct RgbBuffer {
         v.assign(static_cast<std::size_t>(w) * h * 3, 0.0f);
     }
     float* at(int x, int y) { return v.data() + 3 * (static_cast<std::size_t>(y) * w + x); }
-    const float* at(int x, int y) const { return v.data() + 3 * (static_cast<std::size_t>(y) * w + x); }
+    const float* at(int x, int y) const {
+        return v.data() + 3 * (static_cast<std::size_t>(y) * w + x);
+    }
 };
 
 // Bilinear taps along one axis, GPU convention: destination texel i of an axis of outSize texels
@@ -76,7 +77,8 @@ inline void bilinearAdd(const RgbBuffer& b, const Axis& ax, int i, const Axis& a
 }
 
 // Rescales `in` to outW x outH with one bilinear tap per texel (GPU-style down/upsample).
-inline void resampleBilinear(const RgbBuffer& in, RgbBuffer& out, int outW, int outH, int nthreads) {
+inline void resampleBilinear(const RgbBuffer& in, RgbBuffer& out, int outW, int outH,
+                             int nthreads) {
     out.resize(outW, outH);
     const Axis ax = makeAxis(outW, in.w), ay = makeAxis(outH, in.h);
     parallelFor(outH, nthreads, [&](int y0, int y1) {
@@ -95,7 +97,8 @@ inline void resampleBilinear(const RgbBuffer& in, RgbBuffer& out, int outW, int 
 // Separable blur with symmetric weights w[0] (centre), w[1..] (each side), taps one texel apart,
 // clamp to edge; horizontal then vertical.
 inline void separableBlur(RgbBuffer& buf, const std::vector<float>& w, int nthreads) {
-    if (buf.w == 0 || buf.h == 0) return;
+    if (buf.w == 0 || buf.h == 0)
+        return;
     RgbBuffer tmp;
     tmp.resize(buf.w, buf.h);
     const int r = static_cast<int>(w.size()) - 1;
@@ -104,14 +107,17 @@ inline void separableBlur(RgbBuffer& buf, const std::vector<float>& w, int nthre
             for (int x = 0; x < buf.w; ++x) {
                 float acc[3];
                 const float* c0 = buf.at(x, y);
-                for (int c = 0; c < 3; ++c) acc[c] = c0[c] * w[0];
+                for (int c = 0; c < 3; ++c)
+                    acc[c] = c0[c] * w[0];
                 for (int k = 1; k <= r; ++k) {
                     const float* a = buf.at(std::max(x - k, 0), y);
                     const float* b = buf.at(std::min(x + k, buf.w - 1), y);
-                    for (int c = 0; c < 3; ++c) acc[c] += (a[c] + b[c]) * w[k];
+                    for (int c = 0; c < 3; ++c)
+                        acc[c] += (a[c] + b[c]) * w[k];
                 }
                 float* o = tmp.at(x, y);
-                for (int c = 0; c < 3; ++c) o[c] = acc[c];
+                for (int c = 0; c < 3; ++c)
+                    o[c] = acc[c];
             }
     });
     parallelFor(buf.h, nthreads, [&](int y0, int y1) {
@@ -119,14 +125,17 @@ inline void separableBlur(RgbBuffer& buf, const std::vector<float>& w, int nthre
             for (int x = 0; x < buf.w; ++x) {
                 float acc[3];
                 const float* c0 = tmp.at(x, y);
-                for (int c = 0; c < 3; ++c) acc[c] = c0[c] * w[0];
+                for (int c = 0; c < 3; ++c)
+                    acc[c] = c0[c] * w[0];
                 for (int k = 1; k <= r; ++k) {
                     const float* a = tmp.at(x, std::max(y - k, 0));
                     const float* b = tmp.at(x, std::min(y + k, buf.h - 1));
-                    for (int c = 0; c < 3; ++c) acc[c] += (a[c] + b[c]) * w[k];
+                    for (int c = 0; c < 3; ++c)
+                        acc[c] += (a[c] + b[c]) * w[k];
                 }
                 float* o = buf.at(x, y);
-                for (int c = 0; c < 3; ++c) o[c] = acc[c];
+                for (int c = 0; c < 3; ++c)
+                    o[c] = acc[c];
             }
     });
 }
@@ -141,7 +150,8 @@ inline std::vector<float> gaussianWeights(float sigma) {
         sum += k == 0 ? d[k] : 2.0 * d[k];
     }
     std::vector<float> w(r + 1);
-    for (int k = 0; k <= r; ++k) w[k] = static_cast<float>(d[k] / sum);
+    for (int k = 0; k <= r; ++k)
+        w[k] = static_cast<float>(d[k] / sum);
     return w;
 }
 
@@ -163,9 +173,12 @@ template <class Pred> bool anyPixel(const ImageView& f, int nthreads, Pred pred)
 
 // Adds bloom to rows of the frame (skipping exact zeros, so "nothing to add" is bit-exact).
 inline void addRgb(float* p, const float b[3]) {
-    if (b[0] != 0.0f) p[0] += b[0];
-    if (b[1] != 0.0f) p[1] += b[1];
-    if (b[2] != 0.0f) p[2] += b[2];
+    if (b[0] != 0.0f)
+        p[0] += b[0];
+    if (b[1] != 0.0f)
+        p[1] += b[1];
+    if (b[2] != 0.0f)
+        p[2] += b[2];
 }
 
 std::unique_ptr<Stage> makeSanitizeStage();

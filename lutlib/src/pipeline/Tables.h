@@ -17,7 +17,9 @@ inline float srgbEncodeFast(float x, const PowTable& p) {
     const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * p(a) - 0.055f;
     return x < 0.0f ? -e : e;
 }
-inline float srgbEncodeFast(float x) { return srgbEncodeFast(x, powSrgbEncode()); }
+inline float srgbEncodeFast(float x) {
+    return srgbEncodeFast(x, powSrgbEncode());
+}
 
 // srgbEncode(pow(r, 2.2)) for r in [0, 2): the fused grading + display of a fully graded pixel in
 // one lookup (absolute error < 2e-7); r outside needs the two-step form.

@@ -24,18 +24,21 @@ float srgbDecode(float x) {
 
 float gammaEncode(float x, float gamma) {
     x = detail::sanitizeValue(x, kPipelineMaxValue);
-    if (!(x > 0.0f) || !(gamma > 0.0f)) return 0.0f;
+    if (!(x > 0.0f) || !(gamma > 0.0f))
+        return 0.0f;
     return std::pow(x, 1.0f / gamma);
 }
 
 float gammaDecode(float x, float gamma) {
     x = detail::sanitizeValue(x, kPipelineMaxValue);
-    if (!(x > 0.0f) || !(gamma > 0.0f)) return 0.0f;
+    if (!(x > 0.0f) || !(gamma > 0.0f))
+        return 0.0f;
     return std::pow(x, gamma);
 }
 
 template <class F> static void eachRgb(const ImageView& frame, int nthreads, F f) {
-    if (frame.empty()) return;
+    if (frame.empty())
+        return;
     parallelFor(frame.height, nthreads, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             float* p = frame.row(y);

@@ -10,14 +10,12 @@
 //   tonemap               reinhard | aces (Narkowicz fit) | hable (Uncharted 2 filmic)
 //   hdr-bloom             lecture: max(x - 1, 0), Gaussian, add
 //   filter-bloom          Pilot homework: luminance soft-knee filter, separable 9-tap Gaussian, add
-//   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur, C*f0 + B*(1-i)*f1
-//   smash-bloom           Smash Ultimate bloom, exactly (docs/smash-pipeline.md section 1)
-//   chromatic-aberration  r and b sampled at slightly different radial distances
-//   vignette              darken by distance to the centre
-//   grain                 seeded film grain (same seed + frame index -> same frame)
-//   smash-grade           Smash grading LUT + brighten + alpha mix (section 2)
-//   lut                   any 3D LUT with any interpolation
-//   display               sRGB (piecewise) or pure gamma encode, last
+//   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur, C*f0 +
+//   B*(1-i)*f1 smash-bloom           Smash Ultimate bloom, exactly (docs/smash-pipeline.md section
+//   1) chromatic-aberration  r and b sampled at slightly different radial distances vignette darken
+//   by distance to the centre grain                 seeded film grain (same seed + frame index ->
+//   same frame) smash-grade           Smash grading LUT + brighten + alpha mix (section 2) lut any
+//   3D LUT with any interpolation display               sRGB (piecewise) or pure gamma encode, last
 // Presets: smash (sanitize, smash-bloom, smash-grade, display=srgb), pilot (tonemap, filter-bloom,
 // lut, display=gamma 2.2), lecture (exposure, hdr-bloom, chromatic-aberration, vignette, grain,
 // lut, display=gamma 2.2 — the lecture's order), none (sanitize, display).
@@ -49,11 +47,11 @@ std::unique_ptr<Stage> makeStage(std::string_view name);
 // The settings of a pipeline as plain copyable data (what the editor's document keeps).
 struct PipelineSettings {
     Preset preset = Preset::Smash;
-    std::shared_ptr<const Lut3D> lut;       // grading LUT (smash-grade and lut); null = neutral
+    std::shared_ptr<const Lut3D> lut; // grading LUT (smash-grade and lut); null = neutral
     Interpolation interpolation = Interpolation::Trilinear;
-    bool bloom = true;                      // false disables every bloom stage
-    std::vector<std::string> enable;        // stage names to switch on
-    std::vector<std::string> disable;       // stage names to switch off
+    bool bloom = true;                // false disables every bloom stage
+    std::vector<std::string> enable;  // stage names to switch on
+    std::vector<std::string> disable; // stage names to switch off
     // "stage.param=value" assignments applied in order; stage "bloom" means the preset's bloom.
     std::vector<std::string> assignments;
 };
@@ -68,13 +66,13 @@ struct StageReport {
     std::string name;
     bool ran = false;
     bool enabled = true;
-    bool fused = false;          // ran inside the previous stage's loop (display after smash-grade)
-    double milliseconds = 0.0;   // wall time of prepare + this stage's share of the fused passes
+    bool fused = false;        // ran inside the previous stage's loop (display after smash-grade)
+    double milliseconds = 0.0; // wall time of prepare + this stage's share of the fused passes
 };
 struct PipelineReport {
     std::vector<StageReport> stages; // every stage of the pipeline, enabled or not, in order
     double totalMilliseconds = 0.0;
-    std::string str() const;         // a readable table for --verbose
+    std::string str() const; // a readable table for --verbose
 };
 
 class Pipeline {
@@ -89,9 +87,9 @@ public:
 
     Preset preset() const { return m_preset; }
     const std::vector<std::unique_ptr<Stage>>& stages() const { return m_stages; }
-    Stage* find(std::string_view name);        // null if absent; "bloom" = the preset's bloom
+    Stage* find(std::string_view name); // null if absent; "bloom" = the preset's bloom
     const Stage* find(std::string_view name) const;
-    Stage& stage(std::string_view name);       // throws lut::Error if absent
+    Stage& stage(std::string_view name); // throws lut::Error if absent
 
     void setEnabled(std::string_view stageName, bool on);
     // "stage.param=value"; throws lut::Error naming what is wrong.

@@ -29,13 +29,13 @@ namespace lut {
 // The shader's literals.
 constexpr float kSmashEncodeExponent = 0.454545f; // the shader's 1/2.2 (not exactly 1/2.2)
 constexpr float kSmashDecodeExponent = 2.2f;
-constexpr float kSmashLutScale = 0.9375f;         // (N-1)/N for the game's N = 16
-constexpr float kSmashLutOffset = 0.03125f;       // 0.5/N
+constexpr float kSmashLutScale = 0.9375f;   // (N-1)/N for the game's N = 16
+constexpr float kSmashLutOffset = 0.03125f; // 0.5/N
 constexpr int kSmashLutSize = 16;
 constexpr float kSmashBrightenMix = 0.99961f;
-constexpr float kSmashBrightenScale = 1.3703f;    // 1.3703^2.2 = 2.0: ~2x brighter in linear light
+constexpr float kSmashBrightenScale = 1.3703f; // 1.3703^2.2 = 2.0: ~2x brighter in linear light
 // Bloom (section 1).
-constexpr float kSmashBloomThreshold = 0.4625f;   // 0.925 * 0.5
+constexpr float kSmashBloomThreshold = 0.4625f; // 0.925 * 0.5
 constexpr float kSmashBloomGain = 6.0f;
 constexpr float kSmashBloomMinComponent = 0.001f;
 constexpr float kSmashBloomWeights[4] = {0.32f, 0.10f, 0.20f, 0.25f}; // 1/8, 1/16, 1/32, 1/64

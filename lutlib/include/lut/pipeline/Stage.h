@@ -43,7 +43,7 @@ struct StageParam {
 };
 
 struct StageContext {
-    int nthreads = 0;             // 0 = all cores
+    int nthreads = 0;                  // 0 = all cores
     unsigned long long frameIndex = 0; // film grain changes per frame, reproducibly
 };
 
@@ -64,7 +64,8 @@ public:
 
     virtual bool needsPrepare() const { return false; }
     virtual void prepare(const ImageView& frame, const StageContext& ctx) {}
-    virtual void processRows(const ImageView& frame, int y0, int y1, const StageContext& ctx) const = 0;
+    virtual void processRows(const ImageView& frame, int y0, int y1,
+                             const StageContext& ctx) const = 0;
     // Releases what prepare() built.
     virtual void finish() {}
 
@@ -75,7 +76,7 @@ public:
     bool enabled() const { return m_enabled; }
     void setEnabled(bool on) { m_enabled = on; }
     const std::vector<StageParam>& params() const { return m_params; }
-    float param(std::string_view name) const;         // throws lut::Error for an unknown name
+    float param(std::string_view name) const; // throws lut::Error for an unknown name
     // Sets a number ("0.5") or a choice ("aces"); throws lut::Error naming the stage and the
     // parameter for an unknown name, a value that is not a number / choice, or out of range.
     void setParam(std::string_view name, std::string_view value);
