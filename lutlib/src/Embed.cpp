@@ -6,6 +6,7 @@
 #include "lut/Quantize.h"
 #include "lut/Resample.h"
 #include "lut/Sampler.h"
+#include "lut/pipeline/SmashGrading.h"
 
 #include <algorithm>
 #include <array>
@@ -43,13 +44,6 @@ double gameShown(double lutOut, double s) {
     const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
     return srgbEnc(clamp01(std::pow(std::max(r, 0.0), kGammaDecode)));
 }
-// The LUT entry that makes the game display `shown` (display-encoded) at the input s.
-double lutEntryForShown(double shown, double s) {
-    const double targetLinear = srgbDec(clamp01(shown));
-    const double r = std::pow(targetLinear, 1.0 / kGammaDecode);
-    return (r / kBrightenScale - s) / kBrightenMix + s;
-}
-
 // --- Header -----------------------------------------------------------------------------------
 constexpr std::uint32_t kSync = 0xB2;
 constexpr int kHeaderBits = 35;
@@ -890,9 +884,13 @@ ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& option
                 for (int r = 0; r < m; ++r) {
                     const glm::vec3 s = glm::vec3(r, g, b) / static_cast<float>(m - 1);
                     const glm::vec3 want = wanted(s);
+                    glm::vec3 targetLinear;
+                    for (int c = 0; c < 3; ++c) targetLinear[c] = static_cast<float>(srgbDec(clamp01(want[c])));
+                    // the shared inverse of the game's grading (lut/pipeline/SmashGrading.h)
+                    const glm::vec3 exact = smashLutEntryForTarget(targetLinear, s);
                     glm::vec3 entry;
                     for (int c = 0; c < 3; ++c) {
-                        const double l = lutEntryForShown(want[c], s[c]);
+                        const double l = exact[c];
                         const double lc = clamp01(l);
                         // The brighten step keeps 0.039% of s: a black target for a bright
                         // input needs L slightly below 0 (at most 0.1 8-bit steps); counted too.
