@@ -18,7 +18,10 @@
 #include <QAbstractButton>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QMimeData>
 #include <QMessageBox>
 #include <QProcess>
 #include <QSlider>
@@ -86,6 +89,43 @@ private slots:
         QVERIFY(frame->image.pixels() == want.pixels());
         // The displayed 8-bit image is the same pixels through toUnorm8.
         QCOMPARE(qRed(frame->display.pixel(10, 20)), int(toUnorm8(want.pixel(10, 20)[0])));
+    }
+
+    void dropOpensImageAndLut() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(samplePath("sample_grade.cube")),
+                      QUrl::fromLocalFile(samplePath("sample_scene.exr"))});
+        // As a drag manager does: enter (the window accepts files), then drop.
+        QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &drop);
+        QVERIFY2(drop.isAccepted(), qPrintable(w.lastError()));
+        QCOMPARE(w.document()->lutPath(), samplePath("sample_grade.cube"));
+        QCOMPARE(w.document()->imagePath(), samplePath("sample_scene.exr"));
+        QVERIFY(w.document()->imageIsLinear()); // EXR: linear scene values
+        QCOMPARE(w.document()->effectiveLut().size(), 33);
+    }
+
+    void exportDialogOffersEveryLayout() {
+        ExportDialog dlg(QStringLiteral("/tmp/grade"));
+        auto* format = dlg.findChild<QComboBox*>(QStringLiteral("format"));
+        auto* path = dlg.findChild<QLineEdit*>(QStringLiteral("path"));
+        QVERIFY(format && path);
+        QStringList layouts;
+        for (int i = 0; i < format->count(); ++i) {
+            format->setCurrentIndex(i);
+            const ExportChoice c = dlg.choice();
+            QVERIFY(path->text().endsWith(c.extension));
+            if (!c.layout.isEmpty()) layouts << c.layout;
+            QCOMPARE(dlg.smashCompensate(), c.format == QLatin1String("nutexb"));
+            QCOMPARE(QString::fromStdString(dlg.options().layout), c.layout);
+        }
+        for (const char* l : {"pilot", "unity", "smush"}) QVERIFY2(layouts.contains(QLatin1String(l)), l);
     }
 
     void pixelReadoutShowsInputAndOutput() {
