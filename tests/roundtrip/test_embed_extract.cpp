@@ -402,3 +402,27 @@ TEST(PatchFunction, ExactOnTheLatticeAndDefinedEverywhere) {
     const glm::vec3 odd = f(glm::vec3(NAN, INFINITY, -1e30f));
     EXPECT_EQ(odd, glm::vec3(0.0f, 2.0f, 0.0f));
 }
+
+TEST(Find, NonFiniteAndExtremePixelsAreHarmless) {
+    // NaN, infinities and huge values in the screenshot (a float EXR) neither hide the patch nor
+    // leak into the LUT; an image made only of them has no patch.
+    auto e = embedded(32);
+    for (int y = 0; y < e.image.height(); y += 3)
+        for (int x = 0; x < e.image.width(); x += 5) {
+            if (x >= e.placement.frameX - 1 && x <= e.placement.frameX + e.placement.frameWidth &&
+                y >= e.placement.frameY - 1 && y <= e.placement.frameY + e.placement.frameHeight)
+                continue;
+            float* p = e.image.pixel(x, y);
+            p[0] = NAN;
+            p[1] = (x / 5) % 2 ? INFINITY : -INFINITY;
+            p[2] = 1e30f;
+        }
+    const ExtractResult r = extractLut(e.image.view(), {});
+    EXPECT_LT(r.lut.maxDeviationFromIdentity(), 1e-6f);
+    Image bad(200, 100, NAN);
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < 200; ++x)
+            if ((x + y) % 2) bad.pixel(x, y)[0] = INFINITY;
+    EXPECT_EQ(findPatch(bad.view()).status, FindStatus::NotFound);
+    EXPECT_EQ(findPatch(Image().view()).status, FindStatus::NotFound);
+}
