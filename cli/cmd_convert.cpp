@@ -95,9 +95,15 @@ int runConvert(const ConvertOptions& o) {
     formats::registerBuiltinFormats();
     const auto& registry = FormatRegistry::instance();
     const Format* writer = nullptr;
+    for (const std::string* name : {&o.format, &o.inFormat})
+        if (!name->empty() && !registry.byName(*name)) {
+            std::string known;
+            for (const Format* f : registry.all()) known += (known.empty() ? "" : " ") + f->name();
+            std::cerr << "lutkit convert: unknown format '" << *name << "' (known: " << known << ")\n";
+            return kExitUsage;
+        }
     if (!o.format.empty()) {
         writer = registry.byName(o.format);
-        if (!writer) throw Error("unknown output format '" + o.format + "'");
     } else {
         for (const Format* f : registry.forExtension(o.output))
             if (f->canWrite()) {

@@ -221,6 +221,8 @@ TEST(CliConvert, BadUsageExitsTwo) {
     EXPECT_EQ(runCli("convert " + in + " " + out + " --interp cubic").exitCode, 2);
     EXPECT_EQ(runCli("convert " + in + " " + out + " --bit-depth 12").exitCode, 2);
     EXPECT_EQ(runCli("convert " + in + " " + out + " --no-such-option").exitCode, 2);
+    EXPECT_EQ(runCli("convert " + in + " " + out + " --format no-such-format").exitCode, 2);
+    EXPECT_EQ(runCli("convert " + in + " " + out + " --in-format no-such-format").exitCode, 2);
     EXPECT_FALSE(fs::exists(dir + "/o.cube"));
 }
 
