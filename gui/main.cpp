@@ -16,6 +16,7 @@
 #include <QStyleFactory>
 #include <QTimer>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -79,8 +80,9 @@ int main(int argc, char** argv) {
     QCommandLineOption noBrightenOpt(QStringLiteral("no-brighten"), QStringLiteral("Switch the Smash brighten pass off."));
     QCommandLineOption sizeOpt(QStringLiteral("window-size"), QStringLiteral("Window size WxH (default 1480x920)."), QStringLiteral("WxH"));
     QCommandLineOption fromShotOpt(QStringLiteral("from-screenshot"), QStringLiteral("IMAGE is an in-game screenshot: undo the game's grading first (as lutkit preview --from-screenshot)."));
+    QCommandLineOption adjustOpt(QStringLiteral("adjust"), QStringLiteral("Apply an adjustment after opening, e.g. exposure=0.5, gain.r=1.1 (repeatable; one undo step each)."), QStringLiteral("KEY=VALUE"));
     QCommandLineOption verboseOpt(QStringLiteral("verbose"), QStringLiteral("Log each preview update's time to stderr."));
-    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, fromShotOpt, verboseOpt});
+    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, verboseOpt});
     parser.process(app);
 
     lut::gui::MainWindow window;
@@ -113,6 +115,22 @@ int main(int argc, char** argv) {
     bool ok = true;
     if (args.size() >= 1) ok = window.openImageFile(args[0]) && ok;
     if (args.size() >= 2) ok = window.openLutFile(args[1]) && ok;
+    for (const QString& a : parser.values(adjustOpt)) {
+        const QString key = a.section('=', 0, 0).trimmed();
+        bool isNumber = false;
+        const double value = a.section('=', 1).toDouble(&isNumber);
+        const lut::gui::AdjustParamInfo* info = nullptr;
+        for (const auto& p : lut::gui::adjustParams())
+            if (QString::fromStdString(p.key) == key) info = &p;
+        if (!info || !isNumber || !a.contains('=')) {
+            std::fprintf(stderr, "lutkit-editor: --adjust %s: expected KEY=NUMBER with KEY one of", qPrintable(a));
+            for (const auto& p : lut::gui::adjustParams()) std::fprintf(stderr, " %s", p.key.c_str());
+            std::fprintf(stderr, "\n");
+            return 2;
+        }
+        window.document()->editParam(info->id, std::clamp(value, info->min, info->max));
+        window.document()->endGesture();
+    }
     if (headless && !ok) return 1;
 
     window.show();

@@ -171,9 +171,11 @@ void MainWindow::buildActions() {
     QAction* undo = m_doc->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     undo->setIcon(st->standardIcon(QStyle::SP_ArrowBack));
+    undo->setIconText(tr("Undo")); // the toolbar keeps a short label; the menu names the step
     QAction* redo = m_doc->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
     redo->setIcon(st->standardIcon(QStyle::SP_ArrowForward));
+    redo->setIconText(tr("Redo"));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -588,16 +590,22 @@ void MainWindow::setInteractive(bool on) {
 
 void MainWindow::requestPreview() {
     if (!m_doc->hasImage()) return;
-    PreviewJob job;
-    const bool proxy = m_interactive && m_proxyFactor > 1;
-    job.scene = proxy ? m_proxyScene : m_doc->sceneImage();
-    job.proxyFactor = proxy ? m_proxyFactor : 1;
-    job.lut = m_doc->effectiveLutShared();
-    job.options = previewOptions();
-    const auto& cached = m_beforeLutSource[proxy ? 1 : 0];
-    if (cached && cached->scene == job.scene && sameBeforeLut(cached->options, job.options))
-        job.beforeLut = cached->beforeLut;
-    m_scheduler->request(std::move(job));
+    auto job = [this](bool proxy) {
+        PreviewJob j;
+        j.scene = proxy ? m_proxyScene : m_doc->sceneImage();
+        j.proxyFactor = proxy ? m_proxyFactor : 1;
+        j.lut = m_doc->effectiveLutShared();
+        j.options = previewOptions();
+        const auto& cached = m_beforeLutSource[proxy ? 1 : 0];
+        if (cached && cached->scene == j.scene && sameBeforeLut(cached->options, j.options))
+            j.beforeLut = cached->beforeLut;
+        return j;
+    };
+    if (m_proxyFactor > 1 && (m_interactive || !m_scheduler->isBusy()))
+        // The proxy first, so a change shows within a proxy render; then (unless a slider is
+        // still held) the full frame, which a newer request may replace before it starts.
+        m_scheduler->request(job(true));
+    if (!m_interactive || m_proxyFactor == 1) m_scheduler->request(job(false));
 }
 
 void MainWindow::onFrame(std::shared_ptr<const PreviewFrame> frame) {
