@@ -61,6 +61,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 
 namespace lut::formats {
 
@@ -949,8 +950,39 @@ inline char* putFloat(char* p, float v, int decimals) {
 
 // Formats rows [0, count) of v (3 floats each) into dst; returns the number of non-finite values
 // replaced. Plain loop, one bounds check per row.
+// Shortest texts of recently written floats. LUTs repeat values a lot (a neutral N^3 table has N
+// distinct values, one from 8-bit data at most 256), and a lookup costs a fraction of to_chars.
+class FloatTextCache {
+public:
+    FloatTextCache() {
+        for (auto& s : m_slots) s.bits = 0xFFFFFFFFu; // a NaN pattern: never looked up
+    }
+    char* put(char* p, float v) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        Slot& s = m_slots[(bits * 0x9E3779B1u) >> (32 - kBits)];
+        if (s.bits != bits) {
+            s.bits = bits;
+            s.length = static_cast<std::uint8_t>(std::to_chars(s.text, s.text + sizeof s.text, v).ptr - s.text);
+        }
+        std::memcpy(p, s.text, sizeof s.text);
+        return p + s.length;
+    }
+
+private:
+    static constexpr int kBits = 10;
+    struct Slot {
+        std::uint32_t bits;
+        std::uint8_t length;
+        char text[19]; // the longest shortest float text is 15 bytes ("-1.17549435e-38")
+    };
+    std::array<Slot, 1u << kBits> m_slots;
+};
+
 std::size_t formatRows(std::string& dst, const float* v, std::size_t count, int decimals) {
-    const std::size_t rowMax = decimals < 0 ? 3 * 16 : 3 * (static_cast<std::size_t>(decimals) + 42);
+    // Room for the longest row; the cache copies whole 19-byte slots, hence the margin.
+    const std::size_t rowMax = decimals < 0 ? 3 * 20 + 19 : 3 * (static_cast<std::size_t>(decimals) + 42);
+    auto cache = std::make_unique<FloatTextCache>();
     std::size_t nonFinite = 0;
     std::size_t used = dst.size();
     dst.resize(used + count * 3 * 12 + rowMax);
@@ -963,7 +995,7 @@ std::size_t formatRows(std::string& dst, const float* v, std::size_t count, int 
                 ++nonFinite;
                 x = std::isnan(x) ? 0.0f : (x > 0 ? FLT_MAX : -FLT_MAX);
             }
-            p = putFloat(p, x, decimals);
+            p = decimals < 0 ? cache->put(p, x) : putFloat(p, x, decimals);
             *p++ = c == 2 ? '\n' : ' ';
         }
         used = static_cast<std::size_t>(p - dst.data());
