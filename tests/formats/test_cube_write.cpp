@@ -244,3 +244,20 @@ TEST(CubeWrite, SixtyFiveCubedRoundTrip) {
     const LutFile back = parseCube(t, "65.cube");
     EXPECT_TRUE(sameBits(back.cube->entries(), f.cube->entries()));
 }
+
+// Values from 8-bit sources repeat a lot (the writer caches their text): still bit-exact, and
+// the text of each value is the shortest one (k/255 written as std::to_chars writes it).
+TEST(CubeWrite, EightBitValuesRoundTripAndReadWell) {
+    Lut3D l(33);
+    std::mt19937 rng(8);
+    for (auto& v : l.entries())
+        v = glm::vec3(static_cast<float>(rng() % 256) / 255.0f, static_cast<float>(rng() % 256) / 255.0f,
+                      static_cast<float>(rng() % 256) / 255.0f);
+    l.at(0, 0, 0) = glm::vec3(128.0f / 255.0f, 0.0f, 1.0f);
+    LutFile f;
+    f.cube = l;
+    const std::string t = writeCubeString(f);
+    EXPECT_NE(t.find("\n0.5019608 0 1\n"), std::string::npos); // 128/255 in its shortest form
+    const LutFile back = parseCube(t, "8bit.cube");
+    EXPECT_TRUE(sameBits(back.cube->entries(), l.entries()));
+}
