@@ -38,7 +38,19 @@ bool isImageFile(const fs::path& p) {
     return exts.count(e) > 0;
 }
 
+std::string lowerExtension(const std::string& path) {
+    std::string e = fs::path(path).extension().string();
+    std::transform(e.begin(), e.end(), e.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return e;
+}
+
 } // namespace
+
+bool outputCanHoldAlpha(const std::string& path) {
+    const std::string e = lowerExtension(path);
+    return e != ".jpg" && e != ".jpeg" && e != ".bmp" && e != ".hdr";
+}
 
 bool planBatch(const std::vector<std::string>& positionals, const std::string& outputDir,
                const std::string& outExtension, std::vector<BatchJob>& jobs, std::string& error) {
@@ -168,7 +180,8 @@ int runApply(const ApplyOptions& o) {
         sampler->apply(img.image.view(), inner);
         formats::ImageWriteOptions w;
         w.bitDepth = img.info.isFloat || img.info.bitDepth == 0 ? 32 : img.info.bitDepth;
-        w.alpha = img.info.channels == 2 || img.info.channels >= 4;
+        w.alpha =
+            (img.info.channels == 2 || img.info.channels >= 4) && outputCanHoldAlpha(j.output);
         formats::writeImage(j.output, img.image, w);
         return std::string();
     });

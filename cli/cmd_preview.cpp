@@ -121,7 +121,8 @@ int runPreview(const PreviewOptions& o) {
         const PipelineReport report = pipeline.run(img.image.view(), run);
         formats::ImageWriteOptions w;
         w.bitDepth = outputBitDepth(img.info, j.output, o.bitDepth);
-        w.alpha = img.info.channels == 2 || img.info.channels >= 4;
+        w.alpha =
+            (img.info.channels == 2 || img.info.channels >= 4) && outputCanHoldAlpha(j.output);
         formats::writeImage(j.output, img.image, w);
         std::ostringstream text;
         {
