@@ -132,6 +132,9 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
     if (bits == 32 && !out->supports("floatpixels") && std::string(out->format_name()) == "png")
         throw Error(path + ": PNG stores 8 or 16 bits per channel, not float (use .exr or .tif)");
     OIIO::ImageSpec spec(image.width(), image.height(), nch, type);
+    // Our pixels are unassociated (colour not multiplied by alpha): without this OIIO divides
+    // colour by alpha when writing PNG/TIFF, changing every pixel whose alpha is below 1.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (bits == 16 && std::string(out->format_name()) == "jpeg")
         throw Error(path + ": JPEG stores 8 bits per channel only");
     if (!out->open(file.tempPath(), spec))
