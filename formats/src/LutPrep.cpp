@@ -1,8 +1,11 @@
 #include "LutPrep.h"
 
+#include "lut/ErrorStats.h"
+#include "lut/Quantize.h"
 #include "lut/Resample.h"
 #include "lut/Sampler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -78,6 +81,20 @@ void addClampDiagnostic(std::size_t count, int bits, const std::string& path, Di
                                    std::to_string(count) + " channel value" + (count == 1 ? "" : "s") +
                                        " outside 0..1 (or NaN) clamped to fit " + std::to_string(bits) +
                                        "-bit output"));
+}
+
+void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path, Diagnostics& diags) {
+    ErrorAccumulator acc;
+    for (const glm::vec3& v : lut.entries())
+        for (int c = 0; c < 3; ++c) {
+            const float q = bits == 8 ? fromUnorm8(toUnorm8(v[c])) : fromUnorm16(toUnorm16(v[c]));
+            const float ref = std::isfinite(v[c]) ? std::max(0.0f, std::min(1.0f, v[c])) : q;
+            acc.add(q, ref);
+        }
+    const ErrorStats e = acc.result();
+    if (e.maxAbs > 0)
+        diags.push_back(makeDiagnostic(Diagnostic::Severity::Info, path,
+                                       "quantised to " + std::to_string(bits) + " bits: " + e.str()));
 }
 
 } // namespace lut::formats

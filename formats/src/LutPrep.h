@@ -19,6 +19,10 @@ std::size_t countOutOfUnitRange(const Lut3D& lut);
 // Adds "<count> channel values outside 0..1 were clamped" (warning) when count > 0.
 void addClampDiagnostic(std::size_t count, int bits, const std::string& path, Diagnostics& diags);
 
+// Adds "quantised to <bits> bits: <error>" (info) when rounding to nearest changes any in-range
+// value (clamping is reported apart by addClampDiagnostic).
+void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path, Diagnostics& diags);
+
 Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path, std::string message);
 
 } // namespace lut::formats

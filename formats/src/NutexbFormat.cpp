@@ -308,11 +308,19 @@ public:
 
     Diagnostics write(const std::string& path, const LutFile& file, const FormatOptions& options) const override {
         Diagnostics diags;
+        if (options.bitDepth != 0 && options.bitDepth != 8)
+            diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, path,
+                                           "nutexb stores 8-bit values: bit depth " +
+                                               std::to_string(options.bitDepth) + " ignored"));
+        if (options.dither)
+            diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, path,
+                                           "nutexb values are rounded to nearest: dither ignored"));
         const int size = options.size > 0 ? options.size : nutexb::kDefaultSize;
         const Lut3D lut = prepareUnitLut(file, size, path, diags);
         std::size_t clamped = 0;
         const std::string bytes = nutexb::writeBytes(lut, options.name, options.tiled, &clamped);
         addClampDiagnostic(clamped, 8, path, diags);
+        addQuantizationDiagnostic(lut, 8, path, diags);
         writeFileAtomically(path, bytes);
         return diags;
     }

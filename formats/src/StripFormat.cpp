@@ -34,7 +34,6 @@
 #include "LutPrep.h"
 
 #include "lut/Error.h"
-#include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
 
@@ -226,19 +225,7 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source, const 
     const Lut3D lut = prepareUnitLut(source, size, path, diags);
     if (bits != 32) {
         addClampDiagnostic(countOutOfUnitRange(lut), bits, path, diags);
-        if (!options.dither) {
-            ErrorAccumulator acc;
-            for (const glm::vec3& v : lut.entries())
-                for (int c = 0; c < 3; ++c) {
-                    const float q = bits == 8 ? fromUnorm8(toUnorm8(v[c])) : fromUnorm16(toUnorm16(v[c]));
-                    const float ref = std::isfinite(v[c]) ? std::max(0.0f, std::min(1.0f, v[c])) : q;
-                    acc.add(q, ref);
-                }
-            const ErrorStats e = acc.result();
-            if (e.maxAbs > 0)
-                diags.push_back(makeDiagnostic(S::Info, path,
-                                               "quantised to " + std::to_string(bits) + " bits: " + e.str()));
-        }
+        if (!options.dither) addQuantizationDiagnostic(lut, bits, path, diags);
     }
     const Image image = lutToImage(lut, layout);
     ImageWriteOptions wo;

@@ -259,8 +259,25 @@ TEST(Nutexb, ClampsOutOfRangeAndSaysHowMany) {
     bool found = false;
     for (const auto& d : diags) found |= d.message.find("4 channel values outside 0..1") != std::string::npos;
     EXPECT_TRUE(found);
+    bool quantised = false;
+    for (const auto& d : diags) quantised |= d.message.find("quantised to 8 bits") != std::string::npos;
+    EXPECT_FALSE(quantised) << "in-range values are exact 8-bit steps here";
     const lut::LutFile back = lut::formats::readLut(path);
     EXPECT_EQ(back.cube->at(0, 0, 0), glm::vec3(0.0f, 1.0f, 0.0f));
+    // A value between steps is reported as quantised; bit depth and dither requests are refused
+    // with a warning (the format is 8-bit, rounded to nearest).
+    lut.at(2, 0, 0) = glm::vec3(0.5f);
+    f.cube = lut;
+    lut::FormatOptions o;
+    o.bitDepth = 16;
+    o.dither = true;
+    const auto d2 = lut::formats::writeLut(path, f, o);
+    int hits = 0;
+    for (const auto& d : d2)
+        hits += d.message.find("quantised to 8 bits") != std::string::npos ||
+                d.message.find("bit depth 16 ignored") != std::string::npos ||
+                d.message.find("dither ignored") != std::string::npos;
+    EXPECT_EQ(hits, 3);
     EXPECT_EQ(back.cube->at(1, 0, 0).x, 1.0f);
 }
 
