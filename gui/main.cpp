@@ -5,6 +5,7 @@
 #include "Document.h"
 #include "MainWindow.h"
 #include "PreviewRenderer.h"
+#include "PreviewView.h"
 
 #include "lut/Interpolation.h"
 #include "lut/formats/Registry.h"
@@ -81,8 +82,10 @@ int main(int argc, char** argv) {
     QCommandLineOption sizeOpt(QStringLiteral("window-size"), QStringLiteral("Window size WxH (default 1480x920)."), QStringLiteral("WxH"));
     QCommandLineOption fromShotOpt(QStringLiteral("from-screenshot"), QStringLiteral("IMAGE is an in-game screenshot: undo the game's grading first (as lutkit preview --from-screenshot)."));
     QCommandLineOption adjustOpt(QStringLiteral("adjust"), QStringLiteral("Apply an adjustment after opening, e.g. exposure=0.5, gain.r=1.1 (repeatable; one undo step each)."), QStringLiteral("KEY=VALUE"));
+    QCommandLineOption viewOpt(QStringLiteral("view"), QStringLiteral("Preview view: split (default), after or before."), QStringLiteral("MODE"), QStringLiteral("split"));
+    QCommandLineOption zoomOpt(QStringLiteral("zoom"), QStringLiteral("fit (default) or a percentage such as 100."), QStringLiteral("ZOOM"), QStringLiteral("fit"));
     QCommandLineOption verboseOpt(QStringLiteral("verbose"), QStringLiteral("Log each preview update's time to stderr."));
-    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, verboseOpt});
+    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt});
     parser.process(app);
 
     lut::gui::MainWindow window;
@@ -133,7 +136,24 @@ int main(int argc, char** argv) {
     }
     if (headless && !ok) return 1;
 
+    const QString view = parser.value(viewOpt);
+    if (view == QLatin1String("after")) window.previewView()->setMode(lut::gui::PreviewView::Mode::After);
+    else if (view == QLatin1String("before")) window.previewView()->setMode(lut::gui::PreviewView::Mode::Before);
+    else if (view != QLatin1String("split")) {
+        std::fprintf(stderr, "lutkit-editor: --view: expected split, after or before\n");
+        return 2;
+    }
     window.show();
+    QApplication::processEvents(); // lay the window out before zooming about the view centre
+    if (parser.value(zoomOpt) != QLatin1String("fit")) {
+        bool isNumber = false;
+        const double percent = parser.value(zoomOpt).toDouble(&isNumber);
+        if (!isNumber || percent <= 0) {
+            std::fprintf(stderr, "lutkit-editor: --zoom: expected fit or a percentage\n");
+            return 2;
+        }
+        window.previewView()->zoomTo(percent / 100.0);
+    }
     if (!headless) return app.exec();
 
     if (parser.isSet(saveOpt) && !window.savePreviewImage(parser.value(saveOpt))) return 1;

@@ -62,7 +62,8 @@ QRectF PreviewView::imageRect() const {
     if (m_imageSize.isEmpty()) return {};
     const double s = zoom();
     const QSizeF sz(m_imageSize.width() * s, m_imageSize.height() * s);
-    if (m_fit) return QRectF(QPointF((width() - sz.width()) / 2, (height() - sz.height()) / 2), sz);
+    if (m_fit)
+        return QRectF(QPointF(std::round((width() - sz.width()) / 2), std::round((height() - sz.height()) / 2)), sz);
     return QRectF(m_offset, sz);
 }
 
@@ -97,6 +98,8 @@ void PreviewView::clampOffset() {
     else m_offset.setX(std::clamp(m_offset.x(), width() - w, 0.0));
     if (h <= height()) m_offset.setY((height() - h) / 2);
     else m_offset.setY(std::clamp(m_offset.y(), height() - h, 0.0));
+    // Whole-pixel offsets: at 100 % every image pixel lands on exactly one screen pixel.
+    m_offset = QPointF(std::round(m_offset.x()), std::round(m_offset.y()));
 }
 
 double PreviewView::dividerX() const {

@@ -152,6 +152,30 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("out ") + QString::number(double(out[0]), 'f', 4)), qPrintable(text));
     }
 
+    void screenshotAt100PercentHoldsThePreviewPixels() {
+        // What --screenshot grabs: at 100 % in "after" mode each preview pixel is one screen
+        // pixel, so the grab contains the preview exactly.
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        w.waitForPreview();
+        PreviewView* v = w.previewView();
+        v->setMode(PreviewView::Mode::After);
+        v->zoomTo(1.0);
+        const QImage grab = w.grab().toImage().convertToFormat(QImage::Format_RGBX8888);
+        const QImage& want = w.currentFrame()->display;
+        const QPoint origin = v->mapTo(&w, QPoint(int(std::round((v->width() - want.width()) / 2.0)),
+                                                  int(std::round((v->height() - want.height()) / 2.0))));
+        int mismatches = 0;
+        for (int y = 0; y < want.height(); ++y)
+            for (int x = 0; x < want.width(); ++x)
+                mismatches += (grab.pixel(origin + QPoint(x, y)) & 0xffffff) != (want.pixel(x, y) & 0xffffff);
+        QCOMPARE(mismatches, 0);
+    }
+
     void badFilesKeepTheDocument() {
         QTemporaryDir dir;
         MainWindow w;
