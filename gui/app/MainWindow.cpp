@@ -203,6 +203,9 @@ void MainWindow::buildActions() {
         modes->addAction(modeActs[i]);
     }
     modeActs[0]->setChecked(true);
+    connect(m_view, &PreviewView::modeChanged, this, [modeActs = std::vector<QAction*>(modeActs, modeActs + 3)](PreviewView::Mode m) {
+        modeActs[static_cast<std::size_t>(m)]->setChecked(true); // Mode order = action order
+    });
     modeActs[0]->setShortcut(QKeySequence(tr("S")));
     modeActs[1]->setShortcut(QKeySequence(tr("A")));
     modeActs[2]->setShortcut(QKeySequence(tr("B")));

@@ -42,8 +42,10 @@ void PreviewView::clear() {
 }
 
 void PreviewView::setMode(Mode mode) {
+    const bool changed = mode != m_mode;
     m_mode = mode;
     update();
+    if (changed) emit modeChanged(mode);
 }
 
 void PreviewView::setSplit(double fraction) {

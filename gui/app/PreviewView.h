@@ -36,6 +36,7 @@ public:
 signals:
     void hoverPixel(int x, int y); // image coordinates, (-1, -1) when outside
     void zoomChanged(double scale);
+    void modeChanged(lut::gui::PreviewView::Mode mode);
 
 protected:
     void paintEvent(QPaintEvent*) override;
