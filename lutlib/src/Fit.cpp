@@ -229,12 +229,17 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
     FitResult res;
     // --- samples ---
     std::vector<Sample> samples;
-    samples.reserve(static_cast<std::size_t>(before.width) * before.height);
+    samples.reserve(static_cast<std::size_t>(std::min<double>(static_cast<double>(before.width) * before.height, 8.0e6 + 1e5)));
     std::unordered_set<std::uint32_t> colours;
     const int cells = n - 1;
     std::vector<std::uint8_t> cellHit(std::size_t(cells) * cells * cells, 0);
-    for (int y = 0; y < before.height; ++y)
-        for (int x = 0; x < before.width; ++x) {
+    // Beyond ~8 megapixels a regular subsample says as much about a global edit (and bounds the
+    // memory: 28 bytes per sample).
+    constexpr double kMaxSamples = 8.0e6;
+    const double total = static_cast<double>(before.width) * before.height;
+    const int step = total > kMaxSamples ? static_cast<int>(std::ceil(std::sqrt(total / kMaxSamples))) : 1;
+    for (int y = 0; y < before.height; y += step)
+        for (int x = 0; x < before.width; x += step) {
             const float* a = before.pixel(x, y);
             const float* b = after.pixel(x, y);
             Sample s{};

@@ -34,7 +34,7 @@ struct FitOptions {
 
 struct FitResult {
     Lut3D lut;
-    std::size_t pixels = 0;          // pixel pairs used
+    std::size_t pixels = 0;          // pixel pairs used (a regular subsample beyond 8 megapixels)
     std::size_t distinctColours = 0; // distinct input colours (8-bit)
     double rmsSteps8 = 0.0;          // fit error over the pixels, 8-bit steps (trilinear)
     double maxSteps8 = 0.0;
