@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
     lut::gui::MainWindow window;
     window.setVerbose(parser.isSet(verboseOpt));
     window.setInteractiveErrors(!headless);
+    if (!headless) window.restoreWindowState();
 
     lut::gui::PreviewOptions options;
     try {

@@ -468,8 +468,22 @@ bool MainWindow::maybeSave() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (maybeSave()) e->accept();
-    else e->ignore();
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
+    if (m_interactiveErrors) {
+        QSettings settings;
+        settings.setValue("window/geometry", saveGeometry());
+        settings.setValue("window/state", saveState());
+    }
+    e->accept();
+}
+
+void MainWindow::restoreWindowState() {
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* e) {

@@ -60,6 +60,9 @@ public:
     // The last full-resolution preview update times (ms), for logging and benchmarks.
     const QList<double>& previewTimes() const { return m_times; }
     void setInteractive(bool on); // proxy previews while true (a slider is held)
+    // Window geometry and dock layout from the last session (not used by headless modes, so
+    // screenshots do not depend on the user's settings).
+    void restoreWindowState();
 
 protected:
     void closeEvent(QCloseEvent*) override;
