@@ -82,8 +82,8 @@ MainWindow::MainWindow(QWidget* parent)
     buildStatusBar();
 
     connect(m_doc, &Document::effectiveLutChanged, this, [this] {
+        requestPreview(); // first, so the worker starts while the LUT view redraws
         m_lutView->setLut(m_doc->effectiveLut(), m_doc->lutOrigin());
-        requestPreview();
     });
     connect(m_doc, &Document::modifiedChanged, this, [this] { updateTitle(); });
     connect(m_doc, &Document::pathChanged, this, [this] { updateTitle(); });
