@@ -335,6 +335,7 @@ void MainWindow::reportError(const QString& title, const QString& message) {
 }
 
 void MainWindow::addRecent(const QString& key, const QString& path) {
+    if (!m_interactiveErrors) return; // headless runs (tests, --screenshot) leave settings alone
     QSettings settings;
     settings.setValue(key, addRecentFile(settings.value(key).toStringList(), path));
     updateRecentMenus();
