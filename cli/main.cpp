@@ -34,36 +34,16 @@ template <class Fn> void guarded(Fn&& fn) {
 } // namespace
 
 // Subcommand wiring, one file per subcommand, all in this translation unit.
-#if __has_include("setup_neutral.inc")
 #include "setup_neutral.inc"
-#endif
-#if __has_include("setup_convert.inc")
 #include "setup_convert.inc"
-#endif
-#if __has_include("setup_info.inc")
 #include "setup_info.inc"
-#endif
-#if __has_include("setup_validate.inc")
 #include "setup_validate.inc"
-#endif
-#if __has_include("setup_apply.inc")
 #include "setup_apply.inc"
-#endif
-#if __has_include("setup_preview.inc")
 #include "setup_preview.inc"
-#endif
-#if __has_include("setup_embed.inc")
 #include "setup_embed.inc"
-#endif
-#if __has_include("setup_extract.inc")
 #include "setup_extract.inc"
-#endif
-#if __has_include("setup_fit.inc")
 #include "setup_fit.inc"
-#endif
-#if __has_include("setup_bench.inc")
 #include "setup_bench.inc"
-#endif
 
 int main(int argc, char** argv) {
     CLI::App app{"lutkit: author and convert colour grading LUTs", "lutkit"};
@@ -72,37 +52,16 @@ int main(int argc, char** argv) {
 
     // Each setup_NAME.inc (owned with cmd_NAME.cpp) defines setupNAME(CLI::App&), which adds one
     // subcommand whose callback calls guarded([&]{ return runNAME(options); }).
-#define LUTKIT_SETUP(name) setup##name(app)
-#if __has_include("setup_neutral.inc")
-    LUTKIT_SETUP(Neutral);
-#endif
-#if __has_include("setup_convert.inc")
-    LUTKIT_SETUP(Convert);
-#endif
-#if __has_include("setup_info.inc")
-    LUTKIT_SETUP(Info);
-#endif
-#if __has_include("setup_validate.inc")
-    LUTKIT_SETUP(Validate);
-#endif
-#if __has_include("setup_apply.inc")
-    LUTKIT_SETUP(Apply);
-#endif
-#if __has_include("setup_preview.inc")
-    LUTKIT_SETUP(Preview);
-#endif
-#if __has_include("setup_embed.inc")
-    LUTKIT_SETUP(Embed);
-#endif
-#if __has_include("setup_extract.inc")
-    LUTKIT_SETUP(Extract);
-#endif
-#if __has_include("setup_fit.inc")
-    LUTKIT_SETUP(Fit);
-#endif
-#if __has_include("setup_bench.inc")
-    LUTKIT_SETUP(Bench);
-#endif
+    setupNeutral(app);
+    setupConvert(app);
+    setupInfo(app);
+    setupValidate(app);
+    setupApply(app);
+    setupPreview(app);
+    setupEmbed(app);
+    setupExtract(app);
+    setupFit(app);
+    setupBench(app);
 
     try {
         app.parse(argc, argv);
