@@ -110,10 +110,11 @@ TEST(ExitCodes, EverySubcommand) {
         SCOPED_TRACE(args);
         const auto r = runCli(args);
         EXPECT_EQ(r.exitCode, c.code) << r.err;
-        if (c.stderrHas.empty())
+        if (c.stderrHas.empty()) {
             EXPECT_EQ(r.err, "");
-        else
+        } else {
             EXPECT_THAT(r.err, HasSubstr(c.stderrHas));
+        }
     }
 }
 

@@ -181,8 +181,11 @@ TEST(NothingLost, KillDuringAWriteLeavesTheOldOrTheCompleteFile) {
     EXPECT_EQ(oldSeen + newSeen, 10);
     // Only hidden temporary files of killed writers may remain besides the target, never a
     // visible partial file.
-    for (const auto& name : listDir(dir))
-        if (name != "big.cube") EXPECT_EQ(name.rfind(".big.tmp", 0), 0u) << name;
+    for (const auto& name : listDir(dir)) {
+        if (name != "big.cube") {
+            EXPECT_EQ(name.rfind(".big.tmp", 0), 0u) << name;
+        }
+    }
     fs::remove_all(dir);
 }
 
