@@ -122,6 +122,8 @@ TEST(NothingLost, ImageCommandsRefuseToOverwriteTheirInput) {
         "fit " + d + "img.png " + d + "other.png " + d + "img.png",
         "fit " + d + "other.png " + d + "img.png " + d + "hard.png",
         "extract " + d + "img.png " + d + "img.png",
+        "embed " + d + "img.png " + d + "img.png",
+        "embed " + d + "img.png " + d + "hard.png",
     };
     for (const auto& c : commands) {
         SCOPED_TRACE(c);
