@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # ./test.sh   install what is missing, build, and run the whole test suite with ctest.
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer build and fuzzing.
+# Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),
+# each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 45) s (build-fuzz/, scripts/fuzz.sh;
+# findings land in build-fuzz/findings/). The last line says ALL PASSED or the stage that failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
 # A final summary line in every case, naming the stage that failed.
