@@ -8,6 +8,8 @@
 #include "lut/Sampler.h"
 #include "lut/pipeline/SmashGrading.h"
 
+#include "Tetrahedral.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -629,22 +631,8 @@ glm::vec3 PatchFunction::operator()(glm::vec3 in) const {
     locate(in.x, ir, fr);
     locate(in.y, ig, fg);
     locate(in.z, ib, fb);
-    auto e = [&](int r, int g, int b) { return m_values.at(r, g, b); };
-    const int r = ir, g = ig, b = ib;
-    const glm::vec3 c000 = e(r, g, b);
-    const glm::vec3 c111 = e(r + 1, g + 1, b + 1);
-    if (fr > fg) {
-        if (fg > fb)
-            return (1 - fr) * c000 + (fr - fg) * e(r + 1, g, b) + (fg - fb) * e(r + 1, g + 1, b) + fb * c111;
-        if (fr > fb)
-            return (1 - fr) * c000 + (fr - fb) * e(r + 1, g, b) + (fb - fg) * e(r + 1, g, b + 1) + fg * c111;
-        return (1 - fb) * c000 + (fb - fr) * e(r, g, b + 1) + (fr - fg) * e(r + 1, g, b + 1) + fg * c111;
-    }
-    if (fb > fg)
-        return (1 - fb) * c000 + (fb - fg) * e(r, g, b + 1) + (fg - fr) * e(r, g + 1, b + 1) + fr * c111;
-    if (fb > fr)
-        return (1 - fg) * c000 + (fg - fb) * e(r, g + 1, b) + (fb - fr) * e(r, g + 1, b + 1) + fr * c111;
-    return (1 - fg) * c000 + (fg - fr) * e(r, g + 1, b) + (fr - fb) * e(r + 1, g + 1, b) + fb * c111;
+    return detail::tetrahedralBlend([this](int r, int g, int b) -> const glm::vec3& { return m_values.at(r, g, b); },
+                                    ir, ig, ib, fr, fg, fb);
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -25,6 +25,12 @@ void ErrorAccumulator::add(double a, double b) {
     ++m_count;
 }
 
+void ErrorAccumulator::merge(const ErrorAccumulator& other) {
+    if (other.m_max > m_max) m_max = other.m_max;
+    m_sum += other.m_sum;
+    m_count += other.m_count;
+}
+
 ErrorStats ErrorAccumulator::result() const {
     ErrorStats s;
     s.maxAbs = m_max;

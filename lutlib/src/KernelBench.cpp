@@ -120,24 +120,16 @@ Image analyticReference(const Image& frame, int nthreads) {
 
 ErrorStats frameError(const Image& graded, const Image& reference, int nthreads) {
     std::mutex m;
-    double maxAbs = 0, sum = 0;
-    std::size_t count = 0;
+    ErrorAccumulator total;
     parallelFor(graded.height(), nthreads, [&](int y0, int y1) {
         ErrorAccumulator acc;
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < graded.width(); ++x)
                 for (int c = 0; c < 3; ++c) acc.add(graded.pixel(x, y)[c], reference.pixel(x, y)[c]);
-        const ErrorStats s = acc.result();
         std::lock_guard lock(m);
-        maxAbs = std::max(maxAbs, s.maxAbs);
-        sum += s.meanAbs * static_cast<double>(s.count);
-        count += s.count;
+        total.merge(acc);
     });
-    ErrorStats r;
-    r.maxAbs = maxAbs;
-    r.meanAbs = count ? sum / static_cast<double>(count) : 0.0;
-    r.count = count;
-    return r;
+    return total.result();
 }
 
 void parallelCopy(const Image& src, Image& dst, int nthreads) {

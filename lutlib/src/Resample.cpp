@@ -36,8 +36,6 @@ ErrorStats compareLuts(const Lut3D& a, const Lut3D& b, Interpolation method, int
     const glm::vec3 lo = a.domainMin(), hi = a.domainMax();
     std::mutex mutex;
     ErrorAccumulator total;
-    double maxAbs = 0, sum = 0;
-    std::size_t count = 0;
     parallelFor(probes, 0, [&](int z0, int z1) {
         ErrorAccumulator acc;
         for (int z = z0; z < z1; ++z)
@@ -48,17 +46,10 @@ ErrorStats compareLuts(const Lut3D& a, const Lut3D& b, Interpolation method, int
                     const glm::vec3 va = sa->sample(in), vb = sb->sample(in);
                     for (int c = 0; c < 3; ++c) acc.add(va[c], vb[c]);
                 }
-        const ErrorStats s = acc.result();
         std::lock_guard lock(mutex);
-        maxAbs = std::max(maxAbs, s.maxAbs);
-        sum += s.meanAbs * static_cast<double>(s.count);
-        count += s.count;
+        total.merge(acc);
     });
-    ErrorStats r;
-    r.maxAbs = maxAbs;
-    r.meanAbs = count ? sum / static_cast<double>(count) : 0.0;
-    r.count = count;
-    return r;
+    return total.result();
 }
 
 ResampleResult resampleWithError(const Lut3D& source, int size, Interpolation method, int nthreads) {

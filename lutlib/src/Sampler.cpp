@@ -5,6 +5,7 @@
 #include "lut/Sampler.h"
 
 #include "SamplerDetail.h"
+#include "Tetrahedral.h"
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 
@@ -193,24 +194,8 @@ public:
         int i[3];
         float f[3];
         m_map.locate(in, i, f);
-        const int r = i[0], g = i[1], b = i[2];
-        const float fr = f[0], fg = f[1], fb = f[2];
-        const glm::vec3 c000 = e(r, g, b);
-        const glm::vec3 c111 = e(r + 1, g + 1, b + 1);
-        // The cube is split into six tetrahedra by the order of the fractions; each shares the
-        // main diagonal c000-c111, so greys stay on it.
-        if (fr > fg) {
-            if (fg > fb)
-                return (1 - fr) * c000 + (fr - fg) * e(r + 1, g, b) + (fg - fb) * e(r + 1, g + 1, b) + fb * c111;
-            if (fr > fb)
-                return (1 - fr) * c000 + (fr - fb) * e(r + 1, g, b) + (fb - fg) * e(r + 1, g, b + 1) + fg * c111;
-            return (1 - fb) * c000 + (fb - fr) * e(r, g, b + 1) + (fr - fg) * e(r + 1, g, b + 1) + fg * c111;
-        }
-        if (fb > fg)
-            return (1 - fb) * c000 + (fb - fg) * e(r, g, b + 1) + (fg - fr) * e(r, g + 1, b + 1) + fr * c111;
-        if (fb > fr)
-            return (1 - fg) * c000 + (fg - fb) * e(r, g + 1, b) + (fb - fr) * e(r, g + 1, b + 1) + fr * c111;
-        return (1 - fg) * c000 + (fg - fr) * e(r, g + 1, b) + (fr - fb) * e(r + 1, g + 1, b) + fb * c111;
+        return detail::tetrahedralBlend([this](int r, int g, int b) { return e(r, g, b); },
+                                        i[0], i[1], i[2], f[0], f[1], f[2]);
     }
 };
 

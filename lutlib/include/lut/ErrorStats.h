@@ -21,6 +21,8 @@ struct ErrorStats {
 class ErrorAccumulator {
 public:
     void add(double a, double b);
+    // Folds in another accumulator (e.g. one thread's share of the values).
+    void merge(const ErrorAccumulator& other);
     ErrorStats result() const;
 
 private:
