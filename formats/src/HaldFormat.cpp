@@ -33,18 +33,18 @@ public:
     std::vector<std::string> extensions() const override { return {}; }
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
-        checkLayout(options);
+        checkLayout(path, options);
         return readLutImage(path, options, LutLayout::Hald);
     }
     Diagnostics write(const std::string& path, const LutFile& lut, const FormatOptions& options) const override {
-        checkLayout(options);
+        checkLayout(path, options);
         return writeLutImage(path, lut, options, LutLayout::Hald);
     }
 
 private:
-    static void checkLayout(const FormatOptions& options) {
+    static void checkLayout(const std::string& path, const FormatOptions& options) {
         if (!options.layout.empty() && parseLayout(options.layout) != LutLayout::Hald)
-            throw Error("the hald format stores the hald layout only, not '" + options.layout + "'");
+            throw Error(path + ": the hald format stores the hald layout only, not '" + options.layout + "'");
     }
 };
 

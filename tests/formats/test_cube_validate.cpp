@@ -45,7 +45,7 @@ TEST(CubeValidate, LibraryStrictAndLenient) {
 }
 
 TEST(CubeValidate, CliOkLines) {
-    if (!haveCli()) GTEST_SKIP() << "lutkit not built";
+    ASSERT_TRUE(haveCli()) << "lutkit not built (formats_tests depends on it)";
     const auto r = runCli("validate '" + cube("adobe_3d_domain.cube") + "' '" +
                           cube("resolve_shaper_3d.cube") + "' '" + cube("adobe_1d.cube") + "'");
     EXPECT_EQ(r.exitCode, 0) << r.err;
@@ -59,7 +59,7 @@ TEST(CubeValidate, CliOkLines) {
 }
 
 TEST(CubeValidate, CliStrictListsDeparturesAndFails) {
-    if (!haveCli()) GTEST_SKIP() << "lutkit not built";
+    ASSERT_TRUE(haveCli()) << "lutkit not built (formats_tests depends on it)";
     const std::string p = cube("crlf_bom_comments.cube");
     const auto lenient = runCli("validate '" + p + "'");
     EXPECT_EQ(lenient.exitCode, 0);
@@ -81,7 +81,7 @@ TEST(CubeValidate, CliStrictListsDeparturesAndFails) {
 }
 
 TEST(CubeValidate, CliErrorsNameFileLineColumn) {
-    if (!haveCli()) GTEST_SKIP() << "lutkit not built";
+    ASSERT_TRUE(haveCli()) << "lutkit not built (formats_tests depends on it)";
     const std::string bad = dataPath("cube/malformed/data_two_numbers.cube");
     const auto r = runCli("validate '" + bad + "' '" + cube("size2.cube") + "'");
     EXPECT_EQ(r.exitCode, 1);
