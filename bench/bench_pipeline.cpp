@@ -16,20 +16,7 @@ int envInt(const char* name, int def) {
 }
 
 lut::Image benchScene() {
-    const int w = envInt("LUTKIT_BENCH_WIDTH", 1920), h = envInt("LUTKIT_BENCH_HEIGHT", 1080);
-    lut::Image scene(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            float* p = scene.pixel(x, y);
-            const float u = (x + 0.5f) / w, v = (y + 0.5f) / h;
-            p[0] = 0.6f * u * u;
-            p[1] = 0.5f * v;
-            p[2] = 0.25f + 0.2f * u * v;
-            if (((x / 64) + (y / 64)) % 7 == 0)
-                p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
-            p[3] = y < h / 10 ? 0.0f : 1.0f;
-        }
-    return scene;
+    return lut::makeSmashBenchScene(envInt("LUTKIT_BENCH_WIDTH", 1920), envInt("LUTKIT_BENCH_HEIGHT", 1080));
 }
 
 void runPipeline(benchmark::State& state, lut::Pipeline& p) {

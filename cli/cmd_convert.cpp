@@ -105,11 +105,7 @@ int runConvert(const ConvertOptions& o) {
     if (!o.format.empty()) {
         writer = registry.byName(o.format);
     } else {
-        for (const Format* f : registry.forExtension(o.output))
-            if (f->canWrite()) {
-                writer = f;
-                break;
-            }
+        writer = registry.writerForPath(o.output);
     }
     if (!writer || !writer->canWrite())
         throw Error(o.output + ": no format writes '" + extensionOf(o.output) + "' files (use --format)");

@@ -33,11 +33,7 @@ int runNeutral(const NeutralOptions& o) {
             return kExitUsage;
         }
     } else {
-        for (const Format* f : registry.forExtension(o.output))
-            if (f->canWrite()) {
-                writer = f;
-                break;
-            }
+        writer = registry.writerForPath(o.output);
     }
     if (!writer || !writer->canWrite())
         throw Error(o.output + ": no format writes '" + extensionOf(o.output) + "' files (use --format)");

@@ -43,6 +43,12 @@ std::vector<const Format*> FormatRegistry::forExtension(const std::string& path)
     return out;
 }
 
+const Format* FormatRegistry::writerForPath(const std::string& path) const {
+    for (const Format* f : forExtension(path))
+        if (f->canWrite()) return f;
+    return nullptr;
+}
+
 std::vector<const Format*> FormatRegistry::all() const {
     std::vector<const Format*> out;
     for (const auto& f : m_formats) out.push_back(f.get());
@@ -96,11 +102,7 @@ Diagnostics FormatRegistry::write(const std::string& path, const LutFile& lut,
         f = byName(formatName);
         if (!f) throw Error("unknown format '" + formatName + "'");
     } else {
-        for (const Format* c : forExtension(path))
-            if (c->canWrite()) {
-                f = c;
-                break;
-            }
+        f = writerForPath(path);
     }
     if (!f || !f->canWrite())
         throw Error(path + ": no format writes '" + extensionOf(path) +

@@ -48,6 +48,8 @@ public:
     void add(std::unique_ptr<Format> format);
     const Format* byName(const std::string& name) const;
     std::vector<const Format*> forExtension(const std::string& path) const;
+    // The first format that writes files with path's extension, or nullptr.
+    const Format* writerForPath(const std::string& path) const;
     std::vector<const Format*> all() const;
 
     // formatName "" = pick by extension.

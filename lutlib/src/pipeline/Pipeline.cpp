@@ -320,12 +320,7 @@ Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool 
     return d;
 }
 
-double benchmarkSmashChain(int width, int height, int iterations, int nthreads) {
-    if (width <= 0 || height <= 0)
-        throw Error("benchmark frame size must be positive");
-    iterations = std::max(1, iterations);
-    // A synthetic HDR scene: smooth gradients, a few highlights well above the bloom threshold,
-    // an alpha-0 band (background).
+Image makeSmashBenchScene(int width, int height) {
     Image scene(width, height, 0.0f);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
@@ -338,6 +333,14 @@ double benchmarkSmashChain(int width, int height, int iterations, int nthreads) 
                 p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
             p[3] = y < height / 10 ? 0.0f : 1.0f;
         }
+    return scene;
+}
+
+double benchmarkSmashChain(int width, int height, int iterations, int nthreads) {
+    if (width <= 0 || height <= 0)
+        throw Error("benchmark frame size must be positive");
+    iterations = std::max(1, iterations);
+    const Image scene = makeSmashBenchScene(width, height);
     Pipeline pipeline(Preset::Smash);
     RunOptions opt;
     opt.nthreads = nthreads;

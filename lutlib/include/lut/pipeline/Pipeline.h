@@ -116,6 +116,10 @@ Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool 
                               const Lut3D* originalLut,
                               Interpolation interp = Interpolation::Trilinear, int nthreads = 0);
 
+// The synthetic HDR scene the smash-chain benchmarks run on: smooth gradients, highlights well
+// above the bloom threshold, an alpha-0 band (background) along the top tenth.
+Image makeSmashBenchScene(int width, int height);
+
 // Times the full smash chain (neutral 16^3 LUT, bloom on) on a synthetic w x h HDR frame:
 // returns the mean wall milliseconds per frame over `iterations` runs (after one warm-up).
 // Used by `lutkit bench`.
