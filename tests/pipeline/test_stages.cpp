@@ -3,7 +3,6 @@
 
 #include "../../lutlib/src/pipeline/ArrayKernels.h"
 #include "../../lutlib/src/pipeline/FastMath.h"
-#include "../../lutlib/src/pipeline/Tables.h"
 #include "lut/Error.h"
 #include "lut/pipeline/Pipeline.h"
 
@@ -14,61 +13,141 @@
 using namespace lut;
 using namespace lut::test;
 
-TEST(FastMath, PowTableIsWithin3e7Relative) {
-    for (double p : {0.454545, 2.2, 1 / 2.4}) {
-        const detail::PowTable t(p);
+TEST(FastMath, PowFastIsWithin4e7RelativeOfStdPow) {
+    for (float p : {0.454545f, 2.2f, 1.0f / 2.4f, 2.2f / 2.4f}) {
         Rng r(1);
         double worst = 0;
-        for (int i = 0; i < 200000; ++i) {
-            const float x = static_cast<float>(std::exp((r.uniform() - 0.5) * 40.0));
-            const double want = std::pow(double(x), p);
-            worst = std::max(worst, std::fabs(t(x) - want) / want);
+        for (int i = 0; i < 400000; ++i) {
+            // e^-30 .. e^30 (1e-13 .. 1e13): every exponent the pipeline meets, and more.
+            const float x = static_cast<float>(std::exp((r.uniform() - 0.5) * 60.0));
+            const double want = std::pow(double(x), double(p));
+            worst = std::max(worst, std::fabs(detail::powFast(x, p) - want) / want);
         }
-        EXPECT_LT(worst, 3e-7) << p;
-        EXPECT_EQ(t(0.0f), 0.0f);
-        EXPECT_EQ(t(-1.0f), 0.0f);
-        EXPECT_EQ(t(NAN), 0.0f);
-        EXPECT_EQ(t(1.0f), 1.0f);
-        EXPECT_TRUE(std::isfinite(t(INFINITY)));
+        EXPECT_LT(worst, 4e-7) << p;
+        // Powers of two and 1 are exact.
+        EXPECT_EQ(detail::powFast(1.0f, p), 1.0f);
+        EXPECT_EQ(detail::powFast(4.0f, 0.5f), 2.0f);
+        EXPECT_EQ(detail::powFast(0.0f, p), 0.0f);
+        EXPECT_EQ(detail::powFast(-0.0f, p), 0.0f);
+        EXPECT_EQ(detail::powFast(-1.0f, p), 0.0f);
+        EXPECT_EQ(detail::powFast(NAN, p), 0.0f);
+        EXPECT_EQ(detail::powFast(1e-40f, p), 0.0f); // denormal
+        EXPECT_TRUE(std::isfinite(detail::powFast(INFINITY, p)));
+        EXPECT_TRUE(std::isfinite(detail::powFast(3e38f, 2.2f)));
+        EXPECT_GT(detail::powFast(3e38f, 2.2f), 1e38f); // clamped, not wrapped
+        EXPECT_EQ(detail::powFast(1e-30f, 2.2f), 0.0f); // below 2^-126: flushed
     }
 }
 
-TEST(FastMath, ArrayKernelsAreBitIdenticalToScalar) {
-    // The SIMD path (if this CPU has one) must give the scalar bits, or fused/unfused and
-    // skipped/forced runs could differ.
+TEST(FastMath, SrgbAndFusedDisplayFollowTheirFormulas) {
+    Rng r(3);
+    double worstSrgb = 0, worstDisplay = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const float x = static_cast<float>((r.uniform() - 0.2) * 3.0);
+        worstSrgb = std::max(worstSrgb, std::fabs(detail::srgbEncodeFast(x) - refSrgbEncode(x)));
+        const float rr = static_cast<float>(r.uniform() * 4.0);
+        const double want = refSrgbEncode(std::pow(double(rr), 2.2));
+        worstDisplay = std::max(worstDisplay, relErr(detail::smashDisplayFast(rr), want));
+    }
+    EXPECT_LT(worstSrgb, 1e-6);
+    EXPECT_LT(worstDisplay, 1e-6);
+    // Both sides of the linear segment's end, and the limits.
+    for (double x : {0.0031307, 0.0031309, 0.5, 1.0})
+        EXPECT_NEAR(detail::smashDisplayFast(static_cast<float>(std::pow(x, 1 / 2.2))),
+                    refSrgbEncode(x), 1e-6)
+            << x;
+    EXPECT_EQ(detail::smashDisplayFast(0.0f), 0.0f);
+    EXPECT_EQ(detail::smashDisplayFast(-2.0f), 0.0f);
+    EXPECT_EQ(detail::srgbEncodeFast(-0.0f), 0.0f);
+    EXPECT_FALSE(std::signbit(detail::srgbEncodeFast(-0.0f)));
+    EXPECT_NEAR(detail::srgbEncodeFast(-0.5f), -refSrgbEncode(0.5), 1e-6);
+}
+
+namespace {
+std::vector<float> awkwardValues() {
     std::vector<float> in;
     Rng r(9);
     for (int i = 0; i < 4099; ++i)
         in.push_back(static_cast<float>((r.uniform() - 0.3) * std::exp((r.uniform() - 0.5) * 30)));
     for (float v : {0.0f, -0.0f, NAN, INFINITY, -INFINITY, 1e-40f, -1e-40f, 0.0031308f, 1.0f,
-                    65504.0f, 3e38f})
+                    1.41421356f, 1.41421366f, 0.0727212795f, 65504.0f, 3e38f})
         in.push_back(v);
+    return in;
+}
+bool sameBits(float a, float b) {
+    return std::memcmp(&a, &b, 4) == 0;
+}
+} // namespace
+
+TEST(FastMath, ArrayKernelsAreBitIdenticalToScalar) {
+    // The SIMD path (if this CPU has one) must give the scalar bits, or fused/unfused and
+    // skipped/forced runs could differ.
+    const std::vector<float> in = awkwardValues();
     std::vector<float> out(in.size());
-    const detail::PowTable& t = detail::powSrgbEncode();
-    detail::powArray(t, in.data(), out.data(), in.size());
-    for (std::size_t i = 0; i < in.size(); ++i) {
-        const float w = t(in[i]);
-        EXPECT_EQ(std::memcmp(&out[i], &w, 4), 0) << in[i] << " " << detail::arrayKernelIsa();
+    for (float p : {0.454545f, 2.2f}) {
+        detail::powArray(p, in.data(), out.data(), in.size());
+        for (std::size_t i = 0; i < in.size(); ++i)
+            EXPECT_TRUE(sameBits(out[i], detail::powFast(in[i], p)))
+                << in[i] << " " << detail::arrayKernelIsa();
     }
-    detail::srgbEncodeArray(t, in.data(), out.data(), in.size());
+    detail::srgbEncodeArray(in.data(), out.data(), in.size());
     for (std::size_t i = 0; i < in.size(); ++i) {
-        if (std::isnan(in[i]))
+        if (!std::isfinite(in[i]))
             continue; // never reaches it: frames are sanitized first
-        const float w = detail::srgbEncodeFast(in[i], t);
-        EXPECT_EQ(std::memcmp(&out[i], &w, 4), 0) << in[i];
+        EXPECT_TRUE(sameBits(out[i], detail::srgbEncodeFast(in[i]))) << in[i];
     }
-    const detail::UniformTable& u = detail::smashDisplayFromBrightened();
-    std::vector<float> rs;
-    for (int i = 0; i < 5000; ++i)
-        rs.push_back(static_cast<float>(2.0 * r.uniform()));
-    std::vector<float> ro(rs.size());
-    detail::uniformArray(u, rs.data(), ro.data(), rs.size());
-    for (std::size_t i = 0; i < rs.size(); ++i) {
-        const float w = u(rs[i]);
-        EXPECT_EQ(std::memcmp(&ro[i], &w, 4), 0) << rs[i];
-        // and the table is srgb(pow(r, 2.2)) to 2e-7
-        const double x = std::pow(double(rs[i]), 2.2);
-        EXPECT_NEAR(ro[i], refSrgbEncode(x), 2e-7);
+}
+
+TEST(FastMath, GradeKernelsGiveEachPixelTheSameBitsInAnyGroup) {
+    // Runs the two grading halves over a long run of pixels (the 8-wide path) and over each pixel
+    // alone (the scalar path): a pixel's result may not depend on its neighbours or the path.
+    Rng r(21);
+    const std::size_t n = 203; // 25 groups of 8 and a tail of 3
+    std::vector<float> x(4 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c)
+            x[4 * i + c] = static_cast<float>((r.uniform() - 0.1) * std::exp(r.uniform() * 6.0));
+        const double u = r.uniform();
+        x[4 * i + 3] = u < 0.5 ? 1.0f : (u < 0.7 ? 0.0f : static_cast<float>(r.uniform()));
+        if (i >= 80 && i < 96)
+            x[4 * i + 3] = 1.0f; // two groups fully graded
+        if (i >= 96 && i < 104)
+            x[4 * i + 3] = 0.0f; // one group not graded at all
+    }
+    for (bool fused : {false, true}) {
+        std::vector<float> s(4 * n), l(4 * n), sl(4 * n), ll(4 * n);
+        detail::smashEncodePixels(x.data(), s.data(), l.data(), n);
+        for (std::size_t i = 0; i < n; ++i)
+            detail::smashEncodePixels(&x[4 * i], &sl[4 * i], &ll[4 * i], 1);
+        ASSERT_EQ(std::memcmp(s.data(), sl.data(), s.size() * 4), 0);
+        ASSERT_EQ(std::memcmp(l.data(), ll.data(), l.size() * 4), 0);
+        // A stand-in for the LUT lookup: any finite values will do.
+        for (std::size_t i = 0; i < l.size(); ++i)
+            l[i] = l[i] * 0.9f + 0.02f;
+        std::vector<float> wide = x, alone = x;
+        detail::smashFinishPixels(wide.data(), s.data(), l.data(), n, fused);
+        for (std::size_t i = 0; i < n; ++i)
+            detail::smashFinishPixels(&alone[4 * i], &s[4 * i], &l[4 * i], 1, fused);
+        for (std::size_t i = 0; i < 4 * n; ++i)
+            ASSERT_TRUE(sameBits(wide[i], alone[i]))
+                << "pixel " << i / 4 << " channel " << i % 4 << " fused " << fused << " "
+                << detail::arrayKernelIsa();
+        // And against the formula: alpha 0 untouched (or display-encoded), alpha kept.
+        for (std::size_t i = 0; i < n; ++i) {
+            EXPECT_TRUE(sameBits(wide[4 * i + 3], x[4 * i + 3]));
+            if (x[4 * i + 3] == 0.0f)
+                for (int c = 0; c < 3; ++c) {
+                    const float want = fused ? detail::srgbEncodeFast(x[4 * i + c]) : x[4 * i + c];
+                    EXPECT_TRUE(sameBits(wide[4 * i + c], want));
+                }
+            if (x[4 * i + 3] == 1.0f)
+                for (int c = 0; c < 3; ++c) {
+                    const double rr = ((double(l[4 * i + c]) - s[4 * i + c]) * 0.99961 +
+                                       s[4 * i + c]) * 1.3703;
+                    const double g = std::pow(std::max(rr, 0.0), 2.2);
+                    EXPECT_LT(relErr(wide[4 * i + c], fused ? refSrgbEncode(g) : g), 2e-6);
+                }
+        }
     }
 }
 

@@ -1,6 +1,8 @@
 #include "ArrayKernels.h"
 
-#include "Tables.h"
+#include "lut/pipeline/SmashGrading.h"
+
+#include <cstring>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -11,104 +13,296 @@ namespace lut::detail {
 
 namespace {
 
-void powScalar(const PowTable& t, const float* in, float* out, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i)
-        out[i] = t(in[i]);
+// ---- scalar forms (the definition; also the tails of the SIMD loops) ----------------------------
+
+void smashFinishPixel(float* x, const float* s, const float* l, bool fused) {
+    const float a = clamp01(x[3]);
+    if (a <= 0.0f) {
+        if (fused)
+            for (int c = 0; c < 3; ++c)
+                x[c] = srgbEncodeFast(x[c]);
+        return;
+    }
+    for (int c = 0; c < 3; ++c) {
+        const float r = std::fma(l[c] - s[c], kSmashBrightenMix, s[c]) * kSmashBrightenScale;
+        if (a >= 1.0f) {
+            x[c] = fused ? smashDisplayFast(r) : powFast(r, kSmashDecodeExponent);
+            continue;
+        }
+        const float g = powFast(r, kSmashDecodeExponent);
+        const float m = std::fma(g, a, x[c] * (1.0f - a));
+        x[c] = fused ? srgbEncodeFast(m) : m;
+    }
 }
 
-void uniformScalar(const UniformTable& t, const float* in, float* out, std::size_t n) {
-    const float* v = t.values();
-    const float scale = t.scale();
-    const int top = t.intervals() - 1;
-    for (std::size_t i = 0; i < n; ++i) {
-        const float x = in[i];
-        int k = static_cast<int>(x * scale);
-        k = k > top ? top : (k < 0 ? 0 : k);
-        const float f = x * scale - static_cast<float>(k);
-        out[i] = v[k] + (v[k + 1] - v[k]) * f;
+void smashEncodePixel(const float* x, float* s, float* l) {
+    for (int c = 0; c < 3; ++c)
+        s[c] = l[c] = powFast(x[c], kSmashEncodeExponent);
+    s[3] = l[3] = x[3];
+}
+
+void addBloomPixel(float* p, const float* a, const float* b, float t) {
+    for (int c = 0; c < 3; ++c) {
+        const float v = a[c] + (b[c] - a[c]) * t;
+        if (v != 0.0f)
+            p[c] = p[c] + v;
     }
 }
 
 #ifdef LUTKIT_X86
-struct PowConsts {
-    const float* mant;
-    const float* ex;
-    float top;
+#define LUTKIT_AVX2 __attribute__((target("avx2,fma")))
+
+// ---- 8-lane forms of FastMath.h, operation for operation -----------------------------------------
+
+LUTKIT_AVX2 inline __m256 splat(float v) {
+    return _mm256_set1_ps(v);
+}
+
+// K independent 8-lane values computed step by step together, so the long dependency chains of
+// the polynomials interleave (the kernels are latency-bound one value at a time).
+template <int K> struct Vec {
+    __m256 v[K];
 };
 
-__attribute__((target("avx2"))) inline __m256 pow8(const PowConsts& k, __m256 x) {
-    constexpr int kShift = 23 - PowTable::kBits;
-    const __m256i b = _mm256_castps_si256(x);
-    const __m256i e255 = _mm256_set1_epi32(255);
-    const __m256 pos = _mm256_cmp_ps(x, _mm256_setzero_ps(), _CMP_GT_OQ); // NaN and <= 0 -> 0
-    const __m256i e = _mm256_min_epu32(_mm256_srli_epi32(b, 23), e255);
-    const __m256i m = _mm256_and_si256(b, _mm256_set1_epi32(0x7FFFFF));
-    const __m256i idx = _mm256_srli_epi32(m, kShift);
-    const __m256 frac =
-        _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_and_si256(m, _mm256_set1_epi32((1 << kShift) - 1))),
-                      _mm256_set1_ps(1.0f / (1 << kShift)));
-    const __m256 a = _mm256_i32gather_ps(k.mant, idx, 4);
-    const __m256 c = _mm256_i32gather_ps(k.mant + 1, idx, 4);
-    const __m256 s = _mm256_i32gather_ps(k.ex, e, 4);
-    __m256 r = _mm256_mul_ps(s, _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(c, a), frac)));
-    const __m256 isInf = _mm256_castsi256_ps(_mm256_cmpeq_epi32(e, e255));
-    r = _mm256_blendv_ps(r, _mm256_set1_ps(k.top), isInf);
-    return _mm256_and_ps(r, pos);
+template <int K> LUTKIT_AVX2 inline Vec<K> log2Mantissa8(const Vec<K>& x, Vec<K>& e) {
+    Vec<K> u, u2, r;
+    for (int k = 0; k < K; ++k) {
+        const __m256i b = _mm256_castps_si256(x.v[k]);
+        __m256i ei = _mm256_sub_epi32(_mm256_srli_epi32(b, 23), _mm256_set1_epi32(127));
+        __m256 m = _mm256_castsi256_ps(_mm256_or_si256(
+            _mm256_and_si256(b, _mm256_set1_epi32(0x7FFFFF)), _mm256_set1_epi32(0x3F800000)));
+        const __m256 big = _mm256_cmp_ps(m, splat(poly::kSqrt2), _CMP_GT_OQ);
+        m = _mm256_blendv_ps(m, _mm256_mul_ps(m, splat(0.5f)), big);
+        ei = _mm256_sub_epi32(ei, _mm256_castps_si256(big)); // mask is -1: adds 1
+        e.v[k] = _mm256_cvtepi32_ps(ei);
+        u.v[k] = _mm256_div_ps(_mm256_sub_ps(m, splat(1.0f)), _mm256_add_ps(m, splat(1.0f)));
+        u2.v[k] = _mm256_mul_ps(u.v[k], u.v[k]);
+        r.v[k] = splat(poly::kLog[0]);
+    }
+    for (int i = 1; i < 4; ++i)
+        for (int k = 0; k < K; ++k)
+            r.v[k] = _mm256_fmadd_ps(r.v[k], u2.v[k], splat(poly::kLog[i]));
+    for (int k = 0; k < K; ++k)
+        r.v[k] = _mm256_mul_ps(u.v[k], r.v[k]);
+    return r;
 }
 
-__attribute__((target("avx2"))) void powAvx2(const PowTable& t, const float* in, float* out,
-                                             std::size_t n) {
-    const PowConsts k{t.mantissaTable(), t.exponentTable(), t.top()};
-    std::size_t i = 0;
-    for (; i + 8 <= n; i += 8)
-        _mm256_storeu_ps(out + i, pow8(k, _mm256_loadu_ps(in + i)));
-    powScalar(t, in + i, out + i, n - i);
+// 2^(p * (e + l)), p * e carried exactly as hi + err (FastMath.h exp2Times).
+template <int K>
+LUTKIT_AVX2 inline Vec<K> exp2Times8(const Vec<K>& p, const Vec<K>& e, const Vec<K>& l) {
+    constexpr int kNearest = _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC;
+    Vec<K> f, n, q;
+    for (int k = 0; k < K; ++k) {
+        const __m256 hi = _mm256_mul_ps(p.v[k], e.v[k]);
+        const __m256 lo = _mm256_fmadd_ps(p.v[k], l.v[k], _mm256_fmsub_ps(p.v[k], e.v[k], hi));
+        n.v[k] = _mm256_round_ps(_mm256_add_ps(hi, lo), kNearest);
+        f.v[k] = _mm256_add_ps(_mm256_sub_ps(hi, n.v[k]), lo);
+        n.v[k] = _mm256_min_ps(_mm256_max_ps(n.v[k], splat(-127.0f)), splat(127.0f));
+        q.v[k] = splat(poly::kExp2[0]);
+    }
+    for (int i = 1; i < 6; ++i)
+        for (int k = 0; k < K; ++k)
+            q.v[k] = _mm256_fmadd_ps(q.v[k], f.v[k], splat(poly::kExp2[i]));
+    for (int k = 0; k < K; ++k) {
+        q.v[k] = _mm256_fmadd_ps(q.v[k], f.v[k], splat(1.0f));
+        const __m256i bits = _mm256_add_epi32(_mm256_cvttps_epi32(n.v[k]), _mm256_set1_epi32(127));
+        q.v[k] = _mm256_mul_ps(q.v[k], _mm256_castsi256_ps(_mm256_slli_epi32(bits, 23)));
+    }
+    return q;
 }
 
-// srgbEncodeFast, 8 at a time, same operations: e = a <= 0.0031308 ? 12.92 a : 1.055 pow(a) -
-// 0.055, negated for x < 0 (so -0 stays +0 as in the scalar form).
-__attribute__((target("avx2"))) void srgbAvx2(const PowTable& t, const float* in, float* out,
-                                              std::size_t n) {
-    const PowConsts k{t.mantissaTable(), t.exponentTable(), t.top()};
-    const __m256 signMask = _mm256_set1_ps(-0.0f);
-    std::size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const __m256 x = _mm256_loadu_ps(in + i);
-        const __m256 a = _mm256_andnot_ps(signMask, x);
-        const __m256 pw = _mm256_sub_ps(_mm256_mul_ps(_mm256_set1_ps(1.055f), pow8(k, a)),
-                                        _mm256_set1_ps(0.055f));
-        const __m256 lin = _mm256_mul_ps(_mm256_set1_ps(12.92f), a);
+template <int K> LUTKIT_AVX2 inline Vec<K> pow8(const Vec<K>& x, float p) {
+    Vec<K> e, pv;
+    const Vec<K> l = log2Mantissa8(x, e);
+    for (int k = 0; k < K; ++k)
+        pv.v[k] = splat(p);
+    Vec<K> out = exp2Times8(pv, e, l);
+    for (int k = 0; k < K; ++k)
+        out.v[k] = _mm256_and_ps(out.v[k], _mm256_cmp_ps(x.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
+    return out;
+}
+
+template <int K> LUTKIT_AVX2 inline Vec<K> srgb8(const Vec<K>& x) {
+    const __m256 sign = splat(-0.0f);
+    Vec<K> a;
+    for (int k = 0; k < K; ++k)
+        a.v[k] = _mm256_andnot_ps(sign, x.v[k]);
+    Vec<K> out = pow8(a, 1.0f / 2.4f);
+    for (int k = 0; k < K; ++k) {
+        const __m256 pw = _mm256_fmadd_ps(splat(1.055f), out.v[k], splat(-0.055f));
+        const __m256 lin = _mm256_mul_ps(splat(12.92f), a.v[k]);
         const __m256 e =
-            _mm256_blendv_ps(pw, lin, _mm256_cmp_ps(a, _mm256_set1_ps(0.0031308f), _CMP_LE_OQ));
-        const __m256 neg = _mm256_cmp_ps(x, _mm256_setzero_ps(), _CMP_LT_OQ);
-        _mm256_storeu_ps(out + i, _mm256_xor_ps(e, _mm256_and_ps(neg, signMask)));
+            _mm256_blendv_ps(pw, lin, _mm256_cmp_ps(a.v[k], splat(kSrgbLinearLimit), _CMP_LE_OQ));
+        const __m256 neg = _mm256_cmp_ps(x.v[k], _mm256_setzero_ps(), _CMP_LT_OQ);
+        out.v[k] = _mm256_xor_ps(e, _mm256_and_ps(neg, sign));
     }
-    for (; i < n; ++i)
-        out[i] = srgbEncodeFast(in[i], t);
+    return out;
 }
 
-__attribute__((target("avx2"))) void uniformAvx2(const UniformTable& t, const float* in, float* out,
-                                                 std::size_t n) {
-    const float* v = t.values();
-    const __m256 scale = _mm256_set1_ps(t.scale());
-    const __m256i top = _mm256_set1_epi32(t.intervals() - 1);
-    const __m256i zero = _mm256_setzero_si256();
-    std::size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-        const __m256 x = _mm256_mul_ps(_mm256_loadu_ps(in + i), scale);
-        // cvtt of NaN / huge gives INT_MIN: clamped to 0 like the scalar form.
-        __m256i k = _mm256_cvttps_epi32(x);
-        k = _mm256_max_epi32(_mm256_min_epi32(k, top), zero);
-        const __m256 f = _mm256_sub_ps(x, _mm256_cvtepi32_ps(k));
-        const __m256 a = _mm256_i32gather_ps(v, k, 4);
-        const __m256 c = _mm256_i32gather_ps(v + 1, k, 4);
-        _mm256_storeu_ps(out + i, _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(c, a), f)));
+template <int K> LUTKIT_AVX2 inline Vec<K> display8(const Vec<K>& r) {
+    Vec<K> e, p, low;
+    const Vec<K> l = log2Mantissa8(r, e);
+    for (int k = 0; k < K; ++k) {
+        low.v[k] = _mm256_cmp_ps(r.v[k], splat(kSmashDisplayLowR), _CMP_LE_OQ);
+        p.v[k] = _mm256_blendv_ps(splat(kSmashDisplayHighP), splat(2.2f), low.v[k]);
     }
-    uniformScalar(t, in + i, out + i, n - i);
+    Vec<K> out = exp2Times8(p, e, l);
+    for (int k = 0; k < K; ++k) {
+        const __m256 o = _mm256_blendv_ps(_mm256_fmadd_ps(splat(1.055f), out.v[k], splat(-0.055f)),
+                                          _mm256_mul_ps(splat(12.92f), out.v[k]), low.v[k]);
+        out.v[k] = _mm256_and_ps(o, _mm256_cmp_ps(r.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
+    }
+    return out;
+}
+
+// In-lane 4x4 transpose of four registers holding two RGBA pixels each (its own inverse):
+// [p0|p1] [p2|p3] [p4|p5] [p6|p7] <-> R, G, B, A planes in lane order 0 2 4 6 | 1 3 5 7.
+LUTKIT_AVX2 inline void transpose4(__m256& a, __m256& b, __m256& c, __m256& d) {
+    const __m256 t0 = _mm256_unpacklo_ps(a, b);
+    const __m256 t1 = _mm256_unpackhi_ps(a, b);
+    const __m256 t2 = _mm256_unpacklo_ps(c, d);
+    const __m256 t3 = _mm256_unpackhi_ps(c, d);
+    a = _mm256_shuffle_ps(t0, t2, 0x44);
+    b = _mm256_shuffle_ps(t0, t2, 0xEE);
+    c = _mm256_shuffle_ps(t1, t3, 0x44);
+    d = _mm256_shuffle_ps(t1, t3, 0xEE);
+}
+
+struct Planes {
+    __m256 v[4];
+};
+
+LUTKIT_AVX2 inline Planes loadPlanes(const float* p) {
+    Planes q;
+    for (int i = 0; i < 4; ++i)
+        q.v[i] = _mm256_loadu_ps(p + 8 * i);
+    transpose4(q.v[0], q.v[1], q.v[2], q.v[3]);
+    return q;
+}
+
+LUTKIT_AVX2 inline void storePlanes(float* p, Planes q) {
+    transpose4(q.v[0], q.v[1], q.v[2], q.v[3]);
+    for (int i = 0; i < 4; ++i)
+        _mm256_storeu_ps(p + 8 * i, q.v[i]);
+}
+
+// ---- array loops ----------------------------------------------------------------------------------
+
+LUTKIT_AVX2 void powAvx2(float p, const float* in, float* out, std::size_t n) {
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        const Vec<2> o = pow8(Vec<2>{{_mm256_loadu_ps(in + i), _mm256_loadu_ps(in + i + 8)}}, p);
+        _mm256_storeu_ps(out + i, o.v[0]);
+        _mm256_storeu_ps(out + i + 8, o.v[1]);
+    }
+    for (; i + 8 <= n; i += 8)
+        _mm256_storeu_ps(out + i, pow8(Vec<1>{{_mm256_loadu_ps(in + i)}}, p).v[0]);
+    for (; i < n; ++i)
+        out[i] = powFast(in[i], p);
+}
+
+LUTKIT_AVX2 void srgbAvx2(const float* in, float* out, std::size_t n) {
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        const Vec<2> o = srgb8(Vec<2>{{_mm256_loadu_ps(in + i), _mm256_loadu_ps(in + i + 8)}});
+        _mm256_storeu_ps(out + i, o.v[0]);
+        _mm256_storeu_ps(out + i + 8, o.v[1]);
+    }
+    for (; i + 8 <= n; i += 8)
+        _mm256_storeu_ps(out + i, srgb8(Vec<1>{{_mm256_loadu_ps(in + i)}}).v[0]);
+    for (; i < n; ++i)
+        out[i] = srgbEncodeFast(in[i]);
+}
+
+LUTKIT_AVX2 void smashEncodeAvx2(const float* x, float* s, float* l, std::size_t count) {
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8) {
+        Planes q = loadPlanes(x + 4 * i);
+        const Vec<3> sv = pow8(Vec<3>{{q.v[0], q.v[1], q.v[2]}}, kSmashEncodeExponent);
+        for (int c = 0; c < 3; ++c)
+            q.v[c] = sv.v[c];
+        storePlanes(s + 4 * i, q);
+        storePlanes(l + 4 * i, q);
+    }
+    for (; i < count; ++i)
+        smashEncodePixel(x + 4 * i, s + 4 * i, l + 4 * i);
+}
+
+LUTKIT_AVX2 void smashFinishAvx2(float* x, const float* s, const float* l, std::size_t count,
+                                 bool fused) {
+    const __m256 one = splat(1.0f), zero = _mm256_setzero_ps();
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8) {
+        float* px = x + 4 * i;
+        Planes q = loadPlanes(px);
+        const Vec<3> xv{{q.v[0], q.v[1], q.v[2]}};
+        const __m256 a = _mm256_min_ps(_mm256_max_ps(q.v[3], zero), one); // NaN -> 0
+        const __m256 none = _mm256_cmp_ps(a, zero, _CMP_LE_OQ);
+        const __m256 full = _mm256_cmp_ps(a, one, _CMP_GE_OQ);
+        const int noneBits = _mm256_movemask_ps(none), fullBits = _mm256_movemask_ps(full);
+        Vec<3> out;
+        if (noneBits == 0xFF) { // nothing graded: only the display encode
+            if (!fused)
+                continue;
+            out = srgb8(xv);
+        } else {
+            const Planes qs = loadPlanes(s + 4 * i), ql = loadPlanes(l + 4 * i);
+            Vec<3> r;
+            for (int c = 0; c < 3; ++c)
+                r.v[c] = _mm256_mul_ps(_mm256_fmadd_ps(_mm256_sub_ps(ql.v[c], qs.v[c]),
+                                                       splat(kSmashBrightenMix), qs.v[c]),
+                                       splat(kSmashBrightenScale));
+            if (fullBits == 0xFF) { // fully graded: the common case
+                out = fused ? display8(r) : pow8(r, kSmashDecodeExponent);
+            } else {
+                const __m256 inv = _mm256_sub_ps(one, a);
+                const Vec<3> g = pow8(r, kSmashDecodeExponent);
+                Vec<3> m;
+                for (int c = 0; c < 3; ++c)
+                    m.v[c] = _mm256_fmadd_ps(g.v[c], a, _mm256_mul_ps(xv.v[c], inv));
+                if (fused) {
+                    const Vec<3> sm = srgb8(m), d = display8(r), sx = srgb8(xv);
+                    for (int c = 0; c < 3; ++c)
+                        out.v[c] = _mm256_blendv_ps(_mm256_blendv_ps(sm.v[c], d.v[c], full),
+                                                    sx.v[c], none);
+                } else {
+                    for (int c = 0; c < 3; ++c)
+                        out.v[c] = _mm256_blendv_ps(_mm256_blendv_ps(m.v[c], g.v[c], full),
+                                                    xv.v[c], none);
+                }
+            }
+        }
+        for (int c = 0; c < 3; ++c)
+            q.v[c] = out.v[c];
+        storePlanes(px, q);
+    }
+    for (; i < count; ++i)
+        smashFinishPixel(x + 4 * i, s + 4 * i, l + 4 * i, fused);
+}
+
+// Two pixels per register: each half is one pixel's RGBA, the bloom texel's 4th float is 0.
+LUTKIT_AVX2 void addBloomRowAvx2(float* rgba, int width, const float* row4, const int* i0,
+                                 const int* i1, const float* t) {
+    int k = 0;
+    for (; k + 2 <= width; k += 2) {
+        const __m256 a = _mm256_insertf128_ps(
+            _mm256_castps128_ps256(_mm_loadu_ps(row4 + 4 * i0[k])), _mm_loadu_ps(row4 + 4 * i0[k + 1]), 1);
+        const __m256 b = _mm256_insertf128_ps(
+            _mm256_castps128_ps256(_mm_loadu_ps(row4 + 4 * i1[k])), _mm_loadu_ps(row4 + 4 * i1[k + 1]), 1);
+        const __m256 tt = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_set1_ps(t[k])),
+                                               _mm_set1_ps(t[k + 1]), 1);
+        const __m256 v = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), tt));
+        float* p = rgba + 4 * k;
+        const __m256 px = _mm256_loadu_ps(p);
+        const __m256 zero = _mm256_cmp_ps(v, _mm256_setzero_ps(), _CMP_EQ_OQ);
+        _mm256_storeu_ps(p, _mm256_blendv_ps(_mm256_add_ps(px, v), px, zero));
+    }
+    for (; k < width; ++k)
+        addBloomPixel(rgba + 4 * k, row4 + 4 * i0[k], row4 + 4 * i1[k], t[k]);
 }
 
 bool haveAvx2() {
-    static const bool yes = __builtin_cpu_supports("avx2");
+    static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     return yes;
 }
 #else
@@ -119,29 +313,51 @@ bool haveAvx2() {
 
 } // namespace
 
-void powArray(const PowTable& t, const float* in, float* out, std::size_t n) {
+void powArray(float p, const float* in, float* out, std::size_t n) {
 #ifdef LUTKIT_X86
     if (haveAvx2())
-        return powAvx2(t, in, out, n);
-#endif
-    powScalar(t, in, out, n);
-}
-
-void uniformArray(const UniformTable& t, const float* in, float* out, std::size_t n) {
-#ifdef LUTKIT_X86
-    if (haveAvx2())
-        return uniformAvx2(t, in, out, n);
-#endif
-    uniformScalar(t, in, out, n);
-}
-
-void srgbEncodeArray(const PowTable& t, const float* in, float* out, std::size_t n) {
-#ifdef LUTKIT_X86
-    if (haveAvx2())
-        return srgbAvx2(t, in, out, n);
+        return powAvx2(p, in, out, n);
 #endif
     for (std::size_t i = 0; i < n; ++i)
-        out[i] = srgbEncodeFast(in[i], t);
+        out[i] = powFast(in[i], p);
+}
+
+void srgbEncodeArray(const float* in, float* out, std::size_t n) {
+#ifdef LUTKIT_X86
+    if (haveAvx2())
+        return srgbAvx2(in, out, n);
+#endif
+    for (std::size_t i = 0; i < n; ++i)
+        out[i] = srgbEncodeFast(in[i]);
+}
+
+void smashEncodePixels(const float* x, float* s, float* l, std::size_t count) {
+#ifdef LUTKIT_X86
+    if (haveAvx2())
+        return smashEncodeAvx2(x, s, l, count);
+#endif
+    for (std::size_t i = 0; i < count; ++i)
+        smashEncodePixel(x + 4 * i, s + 4 * i, l + 4 * i);
+}
+
+void smashFinishPixels(float* x, const float* s, const float* l, std::size_t count,
+                       bool fusedDisplay) {
+#ifdef LUTKIT_X86
+    if (haveAvx2())
+        return smashFinishAvx2(x, s, l, count, fusedDisplay);
+#endif
+    for (std::size_t i = 0; i < count; ++i)
+        smashFinishPixel(x + 4 * i, s + 4 * i, l + 4 * i, fusedDisplay);
+}
+
+void addBloomRow(float* rgba, int width, const float* row4, const int* i0, const int* i1,
+                 const float* t) {
+#ifdef LUTKIT_X86
+    if (haveAvx2())
+        return addBloomRowAvx2(rgba, width, row4, i0, i1, t);
+#endif
+    for (int k = 0; k < width; ++k)
+        addBloomPixel(rgba + 4 * k, row4 + 4 * i0[k], row4 + 4 * i1[k], t[k]);
 }
 
 const char* arrayKernelIsa() {

@@ -2,7 +2,6 @@
 // film grain, display encode.
 #include "ArrayKernels.h"
 #include "StageDetail.h"
-#include "Tables.h"
 #include "lut/pipeline/SmashGrading.h"
 
 #include <cstdint>
@@ -282,7 +281,6 @@ public:
     bool isSrgb() const { return m_curve == 0.0f; }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         const bool srgb = isSrgb();
-        const PowTable& table = powSrgbEncode();
         const float inv = 1.0f / m_gamma;
         thread_local std::vector<float> e;
         const std::size_t n = static_cast<std::size_t>(f.width) * 4;
@@ -291,7 +289,7 @@ public:
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             if (srgb) {
-                srgbEncodeArray(table, p, e.data(), n);
+                srgbEncodeArray(p, e.data(), n);
                 for (std::size_t i = 0; i < n; i += 4) {
                     p[i] = e[i];
                     p[i + 1] = e[i + 1];

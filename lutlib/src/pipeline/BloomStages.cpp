@@ -2,7 +2,7 @@
 // in processRows(). Exact zeros are never added, so a bloom that finds nothing leaves the frame
 // bit-identical (what makes skipping safe).
 #include "StageDetail.h"
-#include "Tables.h"
+#include "ArrayKernels.h"
 #include "lut/pipeline/SmashGrading.h"
 
 namespace lut::detail {
@@ -274,12 +274,13 @@ public:
     void prepare(const ImageView& f, const StageContext& ctx) override {
         const int W = f.width, H = f.height;
         const int w4 = std::max(1, W / 4), h4 = std::max(1, H / 4);
-        // 1. threshold at quarter resolution
-        RgbBuffer level;
+        // 1. threshold at quarter resolution (the scratch buffers are kept from frame to frame:
+        //    the editor runs this at every slider step)
+        RgbBuffer& level = m_level;
         level.resize(w4, h4);
         {
             const Axis ax = makeAxis(w4, W), ay = makeAxis(h4, H);
-            parallelFor(h4, ctx.nthreads, [&](int j0, int j1) {
+            parallelForDynamic(h4, ctx.nthreads, 8, [&](int j0, int j1) {
                 for (int j = j0; j < j1; ++j)
                     for (int i = 0; i < w4; ++i) {
                         const float tx = ax.t[i], ty = ay.t[j];
@@ -305,7 +306,7 @@ public:
         }
         // 2. four blur levels, each half the size of its input, 3x3 [1 2 1] kernel, taps one
         //    input texel apart, bilinear.
-        RgbBuffer levels[4];
+        RgbBuffer* levels = m_levels;
         const RgbBuffer* in = &level;
         static const float kTap[3] = {0.25f, 0.5f, 0.25f};
         for (int l = 0; l < 4; ++l) {
@@ -339,12 +340,12 @@ public:
             cx[l] = makeAxis(w4, levels[l].w);
             cy[l] = makeAxis(h4, levels[l].h);
         }
-        const PowTable& pw = powSmashDecode();
-        parallelFor(h4, ctx.nthreads, [&](int j0, int j1) {
+        parallelForDynamic(h4, ctx.nthreads, 8, [&](int j0, int j1) {
             // Separable bilinear: each level's two source rows blended once per output row.
             std::vector<float> rows[4];
             for (int l = 0; l < 4; ++l)
                 rows[l].resize(static_cast<std::size_t>(levels[l].w) * 3);
+            std::vector<float> sum(static_cast<std::size_t>(w4) * 3);
             for (int j = j0; j < j1; ++j) {
                 for (int l = 0; l < 4; ++l) {
                     const float ty = cy[l].t[j];
@@ -353,8 +354,7 @@ public:
                     for (int k = 0; k < 3 * levels[l].w; ++k)
                         rows[l][k] = r0[k] + (r1[k] - r0[k]) * ty;
                 }
-                for (int i = 0; i < w4; ++i) {
-                    float* o = m_combined.at(i, j);
+                for (int i = 0; i < w4; ++i)
                     for (int c = 0; c < 3; ++c) {
                         float b[4];
                         for (int l = 0; l < 4; ++l) {
@@ -363,12 +363,14 @@ public:
                                         a1 = rows[l][3 * cx[l].i1[i] + c];
                             b[l] = a0 + (a1 - a0) * tx;
                         }
-                        const float sum =
+                        sum[3 * i + c] = clamp01(
                             kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
-                            kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3];
-                        o[c] = pw(clamp01(sum)) * m_strength;
+                            kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3]);
                     }
-                }
+                float* o = m_combined.at(0, j);
+                powArray(kSmashBloomExponent, sum.data(), o, sum.size());
+                for (std::size_t k = 0; k < sum.size(); ++k)
+                    o[k] *= m_strength;
             }
         });
         // 4. upsample axes for processRows
@@ -376,7 +378,6 @@ public:
         m_ay = makeAxis(H, h4);
     }
     void finish() override {
-        m_combined = RgbBuffer();
         m_ax = Axis();
         m_ay = Axis();
     }
@@ -384,37 +385,31 @@ public:
         if (m_combined.w == 0 || static_cast<int>(m_ax.t.size()) != f.width ||
             static_cast<int>(m_ay.t.size()) != f.height)
             return;
-        // Separable bilinear: the two source rows blended once per output row, then one lerp
-        // per output pixel.
+        // Separable bilinear: the two source rows blended once per output row (into RGB0
+        // texels), then one lerp per output pixel, two pixels per AVX2 register.
         thread_local std::vector<float> row;
         const int w4 = m_combined.w;
-        row.resize(static_cast<std::size_t>(w4) * 3);
+        row.assign(static_cast<std::size_t>(w4) * 4, 0.0f);
         for (int y = y0; y < y1; ++y) {
             const float ty = m_ay.t[y];
             const float* r0 = m_combined.at(0, m_ay.i0[y]);
             const float* r1 = m_combined.at(0, m_ay.i1[y]);
             bool any = false;
-            for (int i = 0; i < 3 * w4; ++i) {
-                row[i] = r0[i] + (r1[i] - r0[i]) * ty;
-                any |= row[i] != 0.0f;
-            }
-            if (!any)
-                continue;
-            float* p = f.row(y);
-            for (int x = 0; x < f.width; ++x, p += 4) {
-                const float tx = m_ax.t[x];
-                const float* a = row.data() + 3 * m_ax.i0[x];
-                const float* b = row.data() + 3 * m_ax.i1[x];
-                const float v[3] = {a[0] + (b[0] - a[0]) * tx, a[1] + (b[1] - a[1]) * tx,
-                                    a[2] + (b[2] - a[2]) * tx};
-                addRgb(p, v);
-            }
+            for (int i = 0; i < w4; ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const float v = r0[3 * i + c] + (r1[3 * i + c] - r0[3 * i + c]) * ty;
+                    row[4 * i + c] = v;
+                    any |= v != 0.0f;
+                }
+            if (any)
+                addBloomRow(f.row(y), f.width, row.data(), m_ax.i0.data(), m_ax.i1.data(),
+                            m_ax.t.data());
         }
     }
 
 private:
     float m_threshold = kSmashBloomThreshold, m_gain = kSmashBloomGain, m_strength = 1.0f;
-    RgbBuffer m_combined;
+    RgbBuffer m_level, m_levels[4], m_combined;
     Axis m_ax, m_ay;
 };
 

@@ -2,10 +2,9 @@
 // LUT stage.
 #include "ArrayKernels.h"
 #include "StageDetail.h"
-#include "Tables.h"
 #include "lut/pipeline/SmashGrading.h"
 
-#include <cstring>
+#include <algorithm>
 
 namespace lut::detail {
 
@@ -18,10 +17,11 @@ std::shared_ptr<const Lut3D> neutralSmashLut() {
 
 // docs/smash-pipeline.md section 2: per pixel, s = x^0.454545; L = trilinear(lut, s);
 // r = ((L - s) * 0.99961 + s) * 1.3703; g = r^2.2; out = mix(x, g, clamp(alpha, 0, 1)).
-// The pow()s are table pows (FastMath.h, < 3e-7 relative); the LUT goes through the sampler's
-// row kernel. When the pipeline fuses the display encode into this pass, the output is
-// srgbEncodeFast(out) -- the same function the display stage uses, so fused == unfused for
-// pixels this stage leaves alone.
+// The pow()s are FastMath.h's polynomial pows (< 4e-7 relative), run 8 pixels at a time by
+// ArrayKernels; the LUT goes through the sampler's own kernel. When the pipeline fuses the display
+// encode into this pass, graded pixels take srgb(r^2.2) in one power (smashDisplayFast) and
+// pixels this stage leaves alone take srgbEncodeFast -- the function the display stage uses, so
+// fused == unfused for them.
 class SmashGradeStage final : public LutStage {
 public:
     SmashGradeStage() { setLut(nullptr, Interpolation::Trilinear); }
@@ -47,61 +47,26 @@ public:
     }
     void setFusedDisplay(bool on) { m_fusedDisplay = on; }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        const PowTable& enc = powSmashEncode();
-        const PowTable& dec = powSmashDecode();
-        const PowTable& srgb = powSrgbEncode();
-        const UniformTable& disp = smashDisplayFromBrightened();
-        const bool fused = m_fusedDisplay;
-        // Row-wide flat arrays so the pows run 8 at a time (ArrayKernels); alpha lanes carry
-        // meaningless values that are never stored.
-        thread_local std::vector<float> s, l, r, g, e;
-        const std::size_t n = static_cast<std::size_t>(f.width) * 4;
-        s.resize(n);
-        l.resize(n);
-        r.resize(n);
-        g.resize(n);
-        e.resize(n);
+        // Chunks of 64 pixels: encode (SIMD), the sampler's own kernel on the encoded copy, then
+        // brighten + decode + mix (+ display) (SIMD); the scratch stays in L1.
+        constexpr int kChunk = 64;
+        alignas(32) float s[4 * kChunk], l[4 * kChunk];
         for (int y = y0; y < y1; ++y) {
-            float* p = f.row(y);
-            // Pixels left ungraded (alpha <= 0) only get the display encode, 8 at a time.
-            bool anyUngraded = false;
-            if (fused)
-                for (std::size_t i = 3; i < n; i += 4)
-                    anyUngraded |= !(p[i] > 0.0f);
-            if (anyUngraded)
-                srgbEncodeArray(srgb, p, e.data(), n);
-            powArray(enc, p, s.data(), n);
-            std::memcpy(l.data(), s.data(), n * sizeof(float));
-            m_sampler->applyPixels(l.data(), static_cast<std::size_t>(f.width));
-            for (std::size_t i = 0; i < n; ++i)
-                r[i] = ((l[i] - s[i]) * kSmashBrightenMix + s[i]) * kSmashBrightenScale;
-            if (fused)
-                uniformArray(disp, r.data(), g.data(), n);
-            else
-                powArray(dec, r.data(), g.data(), n);
-            for (std::size_t i = 0; i < n; i += 4, p += 4) {
-                const float a = clamp01(p[3]);
-                if (a <= 0.0f) {
-                    if (fused)
-                        for (int c = 0; c < 3; ++c)
-                            p[c] = e[i + c];
+            float* row = f.row(y);
+            for (int x0 = 0; x0 < f.width; x0 += kChunk) {
+                const int n = std::min(kChunk, f.width - x0);
+                float* p = row + 4 * x0;
+                bool graded = false;
+                for (int i = 0; i < n; ++i)
+                    graded |= p[4 * i + 3] > 0.0f;
+                if (!graded) { // alpha <= 0 everywhere: at most the display encode
+                    if (m_fusedDisplay)
+                        smashFinishPixels(p, p, p, static_cast<std::size_t>(n), true);
                     continue;
                 }
-                if (!fused) {
-                    for (int c = 0; c < 3; ++c)
-                        p[c] = a >= 1.0f ? g[i + c] : p[c] * (1.0f - a) + g[i + c] * a;
-                    continue;
-                }
-                if (a >= 1.0f && disp.covers(r[i]) && disp.covers(r[i + 1]) &&
-                    disp.covers(r[i + 2])) {
-                    for (int c = 0; c < 3; ++c)
-                        p[c] = g[i + c];
-                    continue;
-                }
-                for (int c = 0; c < 3; ++c) {
-                    const float gl = dec(r[i + c]);
-                    p[c] = srgbEncodeFast(a >= 1.0f ? gl : p[c] * (1.0f - a) + gl * a, srgb);
-                }
+                smashEncodePixels(p, s, l, static_cast<std::size_t>(n));
+                m_sampler->applyPixels(l, static_cast<std::size_t>(n));
+                smashFinishPixels(p, s, l, static_cast<std::size_t>(n), m_fusedDisplay);
             }
         }
     }

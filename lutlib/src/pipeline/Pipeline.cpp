@@ -243,7 +243,7 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
         const int blocks = (frame.height + kBlock - 1) / kBlock;
         std::vector<double> ms(pass.size(), 0.0);
         std::mutex m;
-        parallelFor(blocks, options.nthreads, [&](int b0, int b1) {
+        parallelForDynamic(blocks, options.nthreads, 1, [&](int b0, int b1) {
             std::vector<double> local(pass.size(), 0.0);
             for (int b = b0; b < b1; ++b) {
                 const int y0 = b * kBlock, y1 = std::min(frame.height, y0 + kBlock);
