@@ -305,7 +305,9 @@ public:
             });
         }
         // 2. four blur levels, each half the size of its input, 3x3 [1 2 1] kernel, taps one
-        //    input texel apart, bilinear.
+        //    input texel apart, bilinear. The 9 bilinear taps are separable (weights kTap[dx] *
+        //    kTap[dy], bilinear weights wx * wy), so each level is a horizontal pass (3 taps per
+        //    input row) and a vertical pass (3 taps of that): 12 lerps per texel instead of 36.
         RgbBuffer* levels = m_levels;
         const RgbBuffer* in = &level;
         static const float kTap[3] = {0.25f, 0.5f, 0.25f};
@@ -313,18 +315,41 @@ public:
             const int wo = std::max(1, in->w / 2), ho = std::max(1, in->h / 2);
             RgbBuffer& out = levels[l];
             out.resize(wo, ho);
+            RgbBuffer& h = m_blurH;
+            h.resize(wo, in->h);
             Axis ax[3], ay[3];
             for (int d = 0; d < 3; ++d) {
                 ax[d] = makeAxis(wo, in->w, d - 1.0);
                 ay[d] = makeAxis(ho, in->h, d - 1.0);
             }
-            parallelFor(ho, ctx.nthreads, [&](int j0, int j1) {
+            // Small levels are not worth a thread.
+            const int threads = wo * ho < 8192 ? 1 : ctx.nthreads;
+            parallelFor(in->h, threads, [&](int y0, int y1) {
+                for (int y = y0; y < y1; ++y)
+                    for (int i = 0; i < wo; ++i) {
+                        float acc[3] = {0, 0, 0};
+                        for (int d = 0; d < 3; ++d) {
+                            const float* a = in->at(ax[d].i0[i], y);
+                            const float* b = in->at(ax[d].i1[i], y);
+                            for (int c = 0; c < 3; ++c)
+                                acc[c] += kTap[d] * (a[c] + (b[c] - a[c]) * ax[d].t[i]);
+                        }
+                        float* o = h.at(i, y);
+                        o[0] = acc[0];
+                        o[1] = acc[1];
+                        o[2] = acc[2];
+                    }
+            });
+            parallelFor(ho, threads, [&](int j0, int j1) {
                 for (int j = j0; j < j1; ++j)
                     for (int i = 0; i < wo; ++i) {
                         float acc[3] = {0, 0, 0};
-                        for (int dy = 0; dy < 3; ++dy)
-                            for (int dx = 0; dx < 3; ++dx)
-                                bilinearAdd(*in, ax[dx], i, ay[dy], j, kTap[dx] * kTap[dy], acc);
+                        for (int d = 0; d < 3; ++d) {
+                            const float* a = h.at(i, ay[d].i0[j]);
+                            const float* b = h.at(i, ay[d].i1[j]);
+                            for (int c = 0; c < 3; ++c)
+                                acc[c] += kTap[d] * (a[c] + (b[c] - a[c]) * ay[d].t[j]);
+                        }
                         float* o = out.at(i, j);
                         o[0] = acc[0];
                         o[1] = acc[1];
@@ -333,8 +358,10 @@ public:
             });
             in = &out;
         }
-        // 3. combine at quarter resolution, clamp, pow 2.2
-        m_combined.resize(w4, h4);
+        // 3. combine at quarter resolution, clamp, pow 2.2; stored as RGB0 texels (the zero 4th
+        //    float makes every later loop contiguous)
+        m_cw = w4;
+        m_combined.assign(static_cast<std::size_t>(w4) * h4 * 4, 0.0f);
         Axis cx[4], cy[4];
         for (int l = 0; l < 4; ++l) {
             cx[l] = makeAxis(w4, levels[l].w);
@@ -345,7 +372,7 @@ public:
             std::vector<float> rows[4];
             for (int l = 0; l < 4; ++l)
                 rows[l].resize(static_cast<std::size_t>(levels[l].w) * 3);
-            std::vector<float> sum(static_cast<std::size_t>(w4) * 3);
+            std::vector<float> sum(static_cast<std::size_t>(w4) * 4, 0.0f);
             for (int j = j0; j < j1; ++j) {
                 for (int l = 0; l < 4; ++l) {
                     const float ty = cy[l].t[j];
@@ -363,11 +390,11 @@ public:
                                         a1 = rows[l][3 * cx[l].i1[i] + c];
                             b[l] = a0 + (a1 - a0) * tx;
                         }
-                        sum[3 * i + c] = clamp01(
+                        sum[4 * i + c] = clamp01(
                             kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
                             kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3]);
                     }
-                float* o = m_combined.at(0, j);
+                float* o = m_combined.data() + static_cast<std::size_t>(j) * w4 * 4;
                 powArray(kSmashBloomExponent, sum.data(), o, sum.size());
                 for (std::size_t k = 0; k < sum.size(); ++k)
                     o[k] *= m_strength;
@@ -382,26 +409,25 @@ public:
         m_ay = Axis();
     }
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
-        if (m_combined.w == 0 || static_cast<int>(m_ax.t.size()) != f.width ||
+        if (m_cw == 0 || static_cast<int>(m_ax.t.size()) != f.width ||
             static_cast<int>(m_ay.t.size()) != f.height)
             return;
-        // Separable bilinear: the two source rows blended once per output row (into RGB0
-        // texels), then one lerp per output pixel, two pixels per AVX2 register.
+        // Separable bilinear: the two source rows blended once per output row, then one lerp
+        // per output pixel, two pixels per AVX2 register.
         thread_local std::vector<float> row;
-        const int w4 = m_combined.w;
-        row.assign(static_cast<std::size_t>(w4) * 4, 0.0f);
+        const std::size_t n = static_cast<std::size_t>(m_cw) * 4;
+        row.resize(n);
         for (int y = y0; y < y1; ++y) {
             const float ty = m_ay.t[y];
-            const float* r0 = m_combined.at(0, m_ay.i0[y]);
-            const float* r1 = m_combined.at(0, m_ay.i1[y]);
-            bool any = false;
-            for (int i = 0; i < w4; ++i)
-                for (int c = 0; c < 3; ++c) {
-                    const float v = r0[3 * i + c] + (r1[3 * i + c] - r0[3 * i + c]) * ty;
-                    row[4 * i + c] = v;
-                    any |= v != 0.0f;
-                }
-            if (any)
+            const float* r0 = m_combined.data() + static_cast<std::size_t>(m_ay.i0[y]) * n;
+            const float* r1 = m_combined.data() + static_cast<std::size_t>(m_ay.i1[y]) * n;
+            int nonzero = 0;
+            for (std::size_t k = 0; k < n; ++k) {
+                const float v = r0[k] + (r1[k] - r0[k]) * ty;
+                row[k] = v;
+                nonzero |= v != 0.0f;
+            }
+            if (nonzero)
                 addBloomRow(f.row(y), f.width, row.data(), m_ax.i0.data(), m_ax.i1.data(),
                             m_ax.t.data());
         }
@@ -409,7 +435,9 @@ public:
 
 private:
     float m_threshold = kSmashBloomThreshold, m_gain = kSmashBloomGain, m_strength = 1.0f;
-    RgbBuffer m_level, m_levels[4], m_combined;
+    RgbBuffer m_level, m_levels[4], m_blurH;
+    std::vector<float> m_combined; // h4 rows of m_cw RGB0 texels
+    int m_cw = 0;
     Axis m_ax, m_ay;
 };
 
