@@ -111,15 +111,22 @@ LUTKIT_AVX2 inline Vec<K> exp2Times8(const Vec<K>& p, const Vec<K>& e, const Vec
     return q;
 }
 
-template <int K> LUTKIT_AVX2 inline Vec<K> pow8(const Vec<K>& x, float p) {
-    Vec<K> e, pv;
-    const Vec<K> l = log2Mantissa8(x, e);
+// pow(x, p) from log2(x) = e + l already taken (log2Mantissa8); lanes with x < 2^-126 give 0.
+template <int K>
+LUTKIT_AVX2 inline Vec<K> powFromLog8(const Vec<K>& x, const Vec<K>& e, const Vec<K>& l, float p) {
+    Vec<K> pv;
     for (int k = 0; k < K; ++k)
         pv.v[k] = splat(p);
     Vec<K> out = exp2Times8(pv, e, l);
     for (int k = 0; k < K; ++k)
         out.v[k] = _mm256_and_ps(out.v[k], _mm256_cmp_ps(x.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
     return out;
+}
+
+template <int K> LUTKIT_AVX2 inline Vec<K> pow8(const Vec<K>& x, float p) {
+    Vec<K> e;
+    const Vec<K> l = log2Mantissa8(x, e);
+    return powFromLog8(x, e, l, p);
 }
 
 template <int K> LUTKIT_AVX2 inline Vec<K> srgb8(const Vec<K>& x) {
@@ -139,9 +146,10 @@ template <int K> LUTKIT_AVX2 inline Vec<K> srgb8(const Vec<K>& x) {
     return out;
 }
 
-template <int K> LUTKIT_AVX2 inline Vec<K> display8(const Vec<K>& r) {
-    Vec<K> e, p, low;
-    const Vec<K> l = log2Mantissa8(r, e);
+// smashDisplayFast from log2(r) = e + l already taken.
+template <int K>
+LUTKIT_AVX2 inline Vec<K> displayFromLog8(const Vec<K>& r, const Vec<K>& e, const Vec<K>& l) {
+    Vec<K> p, low;
     for (int k = 0; k < K; ++k) {
         low.v[k] = _mm256_cmp_ps(r.v[k], splat(kSmashDisplayLowR), _CMP_LE_OQ);
         p.v[k] = _mm256_blendv_ps(splat(kSmashDisplayHighP), splat(2.2f), low.v[k]);
@@ -153,6 +161,12 @@ template <int K> LUTKIT_AVX2 inline Vec<K> display8(const Vec<K>& r) {
         out.v[k] = _mm256_and_ps(o, _mm256_cmp_ps(r.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
     }
     return out;
+}
+
+template <int K> LUTKIT_AVX2 inline Vec<K> display8(const Vec<K>& r) {
+    Vec<K> e;
+    const Vec<K> l = log2Mantissa8(r, e);
+    return displayFromLog8(r, e, l);
 }
 
 // In-lane 4x4 transpose of four registers holding two RGBA pixels each (its own inverse):
@@ -255,20 +269,34 @@ LUTKIT_AVX2 void smashFinishAvx2(float* x, const float* s, const float* l, std::
             if (fullBits == 0xFF) { // fully graded: the common case
                 out = fused ? display8(r) : pow8(r, kSmashDecodeExponent);
             } else {
-                const __m256 inv = _mm256_sub_ps(one, a);
-                const Vec<3> g = pow8(r, kSmashDecodeExponent);
-                Vec<3> m;
-                for (int c = 0; c < 3; ++c)
-                    m.v[c] = _mm256_fmadd_ps(g.v[c], a, _mm256_mul_ps(xv.v[c], inv));
-                if (fused) {
-                    const Vec<3> sm = srgb8(m), d = display8(r), sx = srgb8(xv);
+                // A mixed group: each lane gets its own kind's result, and only the kinds
+                // present are computed (partial alpha needs r^2.2 and, fused, the sRGB of the
+                // mix; alpha 0 the sRGB of x, which shares that one encode).
+                const __m256 partial = _mm256_andnot_ps(_mm256_or_ps(none, full),
+                                                        _mm256_castsi256_ps(_mm256_set1_epi32(-1)));
+                const bool anyPartial = _mm256_movemask_ps(partial) != 0;
+                const bool anyFull = fullBits != 0;
+                // log2(r) once for both r^2.2 and the fused display of the full lanes.
+                Vec<3> re;
+                const Vec<3> rl = log2Mantissa8(r, re);
+                Vec<3> g{}, m = xv;
+                if (anyPartial || (anyFull && !fused)) {
+                    g = powFromLog8(r, re, rl, kSmashDecodeExponent);
+                    const __m256 inv = _mm256_sub_ps(one, a);
                     for (int c = 0; c < 3; ++c)
-                        out.v[c] = _mm256_blendv_ps(_mm256_blendv_ps(sm.v[c], d.v[c], full),
-                                                    sx.v[c], none);
+                        m.v[c] = _mm256_blendv_ps(
+                            _mm256_fmadd_ps(g.v[c], a, _mm256_mul_ps(xv.v[c], inv)), xv.v[c], none);
+                }
+                if (fused) {
+                    out = srgb8(m); // alpha 0 lanes: srgb(x); partial lanes: srgb(mix)
+                    if (anyFull) {
+                        const Vec<3> d = displayFromLog8(r, re, rl);
+                        for (int c = 0; c < 3; ++c)
+                            out.v[c] = _mm256_blendv_ps(out.v[c], d.v[c], full);
+                    }
                 } else {
                     for (int c = 0; c < 3; ++c)
-                        out.v[c] = _mm256_blendv_ps(_mm256_blendv_ps(m.v[c], g.v[c], full),
-                                                    xv.v[c], none);
+                        out.v[c] = _mm256_blendv_ps(m.v[c], g.v[c], full);
                 }
             }
         }
