@@ -94,49 +94,61 @@ inline void resampleBilinear(const RgbBuffer& in, RgbBuffer& out, int outW, int 
     });
 }
 
+// One output row of a symmetric blur: out[j] = c[j] * w[0] + sum_k (a_k[j] + b_k[j]) * w[k],
+// accumulated in that order, where a_k / b_k are the rows (or row offsets) k taps away. Done in
+// blocks of 64 floats so the accumulators stay in registers across the taps.
+template <class Tap>
+inline void blurRow(float* out, const float* c, std::size_t n, const std::vector<float>& w,
+                    Tap tap) {
+    constexpr std::size_t kBlock = 64;
+    const int r = static_cast<int>(w.size()) - 1;
+    for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
+        const std::size_t m = std::min(kBlock, n - j0);
+        float acc[kBlock];
+        for (std::size_t j = 0; j < m; ++j)
+            acc[j] = c[j0 + j] * w[0];
+        for (int k = 1; k <= r; ++k) {
+            const float* a = tap(-k) + j0;
+            const float* b = tap(k) + j0;
+            const float wk = w[k];
+            for (std::size_t j = 0; j < m; ++j)
+                acc[j] += (a[j] + b[j]) * wk;
+        }
+        for (std::size_t j = 0; j < m; ++j)
+            out[j0 + j] = acc[j];
+    }
+}
+
 // Separable blur with symmetric weights w[0] (centre), w[1..] (each side), taps one texel apart,
-// clamp to edge; horizontal then vertical.
+// clamp to edge; horizontal (over an edge-padded copy of each row) then vertical. Flat loops over
+// a row's floats, so the compiler vectorizes them.
 inline void separableBlur(RgbBuffer& buf, const std::vector<float>& w, int nthreads) {
     if (buf.w == 0 || buf.h == 0)
         return;
     RgbBuffer tmp;
     tmp.resize(buf.w, buf.h);
     const int r = static_cast<int>(w.size()) - 1;
+    const std::size_t rowFloats = static_cast<std::size_t>(buf.w) * 3;
     parallelFor(buf.h, nthreads, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < buf.w; ++x) {
-                float acc[3];
-                const float* c0 = buf.at(x, y);
-                for (int c = 0; c < 3; ++c)
-                    acc[c] = c0[c] * w[0];
-                for (int k = 1; k <= r; ++k) {
-                    const float* a = buf.at(std::max(x - k, 0), y);
-                    const float* b = buf.at(std::min(x + k, buf.w - 1), y);
-                    for (int c = 0; c < 3; ++c)
-                        acc[c] += (a[c] + b[c]) * w[k];
-                }
-                float* o = tmp.at(x, y);
-                for (int c = 0; c < 3; ++c)
-                    o[c] = acc[c];
+        std::vector<float> padded(static_cast<std::size_t>(buf.w + 2 * r) * 3);
+        for (int y = y0; y < y1; ++y) {
+            const float* src = buf.at(0, y);
+            for (int x = -r; x < buf.w + r; ++x) {
+                const float* q = src + 3 * std::clamp(x, 0, buf.w - 1);
+                float* o = padded.data() + 3 * (x + r);
+                o[0] = q[0];
+                o[1] = q[1];
+                o[2] = q[2];
             }
+            const float* c = padded.data() + 3 * r;
+            blurRow(tmp.at(0, y), c, rowFloats, w, [c](int k) { return c + 3 * k; });
+        }
     });
     parallelFor(buf.h, nthreads, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < buf.w; ++x) {
-                float acc[3];
-                const float* c0 = tmp.at(x, y);
-                for (int c = 0; c < 3; ++c)
-                    acc[c] = c0[c] * w[0];
-                for (int k = 1; k <= r; ++k) {
-                    const float* a = tmp.at(x, std::max(y - k, 0));
-                    const float* b = tmp.at(x, std::min(y + k, buf.h - 1));
-                    for (int c = 0; c < 3; ++c)
-                        acc[c] += (a[c] + b[c]) * w[k];
-                }
-                float* o = buf.at(x, y);
-                for (int c = 0; c < 3; ++c)
-                    o[c] = acc[c];
-            }
+            blurRow(buf.at(0, y), tmp.at(0, y), rowFloats, w, [&](int k) {
+                return static_cast<const float*>(tmp.at(0, std::clamp(y + k, 0, buf.h - 1)));
+            });
     });
 }
 
