@@ -52,7 +52,8 @@ void addBloomPixel(float* p, const float* a, const float* b, float t) {
 #ifdef LUTKIT_X86
 #define LUTKIT_AVX2 __attribute__((target("avx2,fma")))
 
-// ---- 8-lane forms of FastMath.h, operation for operation -----------------------------------------
+// ---- 8-lane forms of FastMath.h, operation for operation
+// -----------------------------------------
 
 LUTKIT_AVX2 inline __m256 splat(float v) {
     return _mm256_set1_ps(v);
@@ -60,9 +61,7 @@ LUTKIT_AVX2 inline __m256 splat(float v) {
 
 // K independent 8-lane values computed step by step together, so the long dependency chains of
 // the polynomials interleave (the kernels are latency-bound one value at a time).
-template <int K> struct Vec {
-    __m256 v[K];
-};
+template <int K> struct Vec { __m256 v[K]; };
 
 template <int K> LUTKIT_AVX2 inline Vec<K> log2Mantissa8(const Vec<K>& x, Vec<K>& e) {
     Vec<K> u, u2, r;
@@ -119,7 +118,8 @@ LUTKIT_AVX2 inline Vec<K> powFromLog8(const Vec<K>& x, const Vec<K>& e, const Ve
         pv.v[k] = splat(p);
     Vec<K> out = exp2Times8(pv, e, l);
     for (int k = 0; k < K; ++k)
-        out.v[k] = _mm256_and_ps(out.v[k], _mm256_cmp_ps(x.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
+        out.v[k] =
+            _mm256_and_ps(out.v[k], _mm256_cmp_ps(x.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
     return out;
 }
 
@@ -200,7 +200,8 @@ LUTKIT_AVX2 inline void storePlanes(float* p, Planes q) {
         _mm256_storeu_ps(p + 8 * i, q.v[i]);
 }
 
-// ---- array loops ----------------------------------------------------------------------------------
+// ---- array loops
+// ----------------------------------------------------------------------------------
 
 LUTKIT_AVX2 void powAvx2(float p, const float* in, float* out, std::size_t n) {
     std::size_t i = 0;
@@ -313,10 +314,12 @@ LUTKIT_AVX2 void addBloomRowAvx2(float* rgba, int width, const float* row4, cons
                                  const int* i1, const float* t) {
     int k = 0;
     for (; k + 2 <= width; k += 2) {
-        const __m256 a = _mm256_insertf128_ps(
-            _mm256_castps128_ps256(_mm_loadu_ps(row4 + 4 * i0[k])), _mm_loadu_ps(row4 + 4 * i0[k + 1]), 1);
-        const __m256 b = _mm256_insertf128_ps(
-            _mm256_castps128_ps256(_mm_loadu_ps(row4 + 4 * i1[k])), _mm_loadu_ps(row4 + 4 * i1[k + 1]), 1);
+        const __m256 a =
+            _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(row4 + 4 * i0[k])),
+                                 _mm_loadu_ps(row4 + 4 * i0[k + 1]), 1);
+        const __m256 b =
+            _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(row4 + 4 * i1[k])),
+                                 _mm_loadu_ps(row4 + 4 * i1[k + 1]), 1);
         const __m256 tt = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_set1_ps(t[k])),
                                                _mm_set1_ps(t[k + 1]), 1);
         const __m256 v = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), tt));

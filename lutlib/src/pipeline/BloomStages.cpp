@@ -1,8 +1,8 @@
 // Bloom stages. Each builds its bloom image in prepare() (reading the sanitized frame) and adds it
 // in processRows(). Exact zeros are never added, so a bloom that finds nothing leaves the frame
 // bit-identical (what makes skipping safe).
-#include "StageDetail.h"
 #include "ArrayKernels.h"
+#include "StageDetail.h"
 #include "lut/pipeline/SmashGrading.h"
 
 namespace lut::detail {
@@ -390,9 +390,9 @@ public:
                                         a1 = rows[l][3 * cx[l].i1[i] + c];
                             b[l] = a0 + (a1 - a0) * tx;
                         }
-                        sum[4 * i + c] = clamp01(
-                            kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
-                            kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3]);
+                        sum[4 * i + c] =
+                            clamp01(kSmashBloomWeights[0] * b[0] + kSmashBloomWeights[1] * b[1] +
+                                    kSmashBloomWeights[2] * b[2] + kSmashBloomWeights[3] * b[3]);
                     }
                 float* o = m_combined.data() + static_cast<std::size_t>(j) * w4 * 4;
                 powArray(kSmashBloomExponent, sum.data(), o, sum.size());

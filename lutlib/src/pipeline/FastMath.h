@@ -62,8 +62,8 @@ inline float exp2Times(float p, float e, float l) {
     for (int i = 1; i < 6; ++i)
         q = std::fma(q, f, poly::kExp2[i]);
     q = std::fma(q, f, 1.0f);
-    const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<int>(n) + 127)
-                                             << 23);
+    const float scale =
+        std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<int>(n) + 127) << 23);
     return q * scale;
 }
 

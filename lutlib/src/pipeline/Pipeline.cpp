@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <glm/common.hpp>
 #include <cstdio>
+#include <glm/common.hpp>
 #include <mutex>
 #include <sstream>
 
@@ -346,9 +346,9 @@ Lut3D makeSmashBenchLut() {
             for (int r = 0; r < n; ++r) {
                 const glm::vec3 v = lut.at(r, g, b);
                 const float luma = 0.2126f * v.x + 0.7152f * v.y + 0.0722f * v.z;
-                glm::vec3 o = v * 0.8f + glm::vec3(luma) * 0.2f;        // desaturate a little
-                o = o * o * (3.0f - 2.0f * o);                          // S-curve
-                o *= glm::vec3(1.05f, 1.0f, 0.9f);                      // warm
+                glm::vec3 o = v * 0.8f + glm::vec3(luma) * 0.2f; // desaturate a little
+                o = o * o * (3.0f - 2.0f * o);                   // S-curve
+                o *= glm::vec3(1.05f, 1.0f, 0.9f);               // warm
                 lut.at(r, g, b) = glm::clamp(o, glm::vec3(0.0f), glm::vec3(1.0f));
             }
     return lut;
@@ -377,8 +377,8 @@ SmashChainTiming benchmarkSmashChain(int width, int height, int iterations, int 
     t.runs = iterations;
     t.bestMs = ms.front();
     t.worstMs = ms.back();
-    t.medianMs = ms.size() % 2 ? ms[ms.size() / 2]
-                               : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+    t.medianMs =
+        ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
     return t;
 }
 
