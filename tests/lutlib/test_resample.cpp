@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 using namespace lut;
@@ -177,6 +178,23 @@ TEST(Quantize, ToUnormRoundsToNearestAndClamps) {
     EXPECT_EQ(toUnorm16(2.0f), 65535);
     EXPECT_EQ(toUnorm16(0.5f), 32768);
     for (int i = 0; i <= 65535; i += 7) EXPECT_EQ(toUnorm16(fromUnorm16(static_cast<std::uint16_t>(i))), i);
+}
+
+TEST(Quantize, ToUnormIsLroundForEveryFloatSampled) {
+    // Every 97th float in (0, 1), against std::lround on the product in double.
+    std::uint32_t bits = 1;
+    const std::uint32_t one = 0x3F800000u;
+    for (; bits < one; bits += 97) {
+        float v;
+        std::memcpy(&v, &bits, 4);
+        ASSERT_EQ(toUnorm8(v), std::lround(static_cast<double>(v) * 255.0)) << v;
+        ASSERT_EQ(toUnorm16(v), std::lround(static_cast<double>(v) * 65535.0)) << v;
+    }
+    // The halves themselves.
+    for (int i = 0; i < 255; ++i) {
+        const float half = static_cast<float>((i + 0.5) / 255.0);
+        EXPECT_EQ(toUnorm8(half), std::lround(static_cast<double>(half) * 255.0)) << i;
+    }
 }
 
 TEST(Quantize, Quantize8ReportsItsError) {
