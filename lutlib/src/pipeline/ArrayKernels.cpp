@@ -24,13 +24,13 @@ void smashFinishPixel(float* x, const float* s, const float* l, bool fused) {
         return;
     }
     for (int c = 0; c < 3; ++c) {
-        const float r = std::fma(l[c] - s[c], kSmashBrightenMix, s[c]) * kSmashBrightenScale;
+        const float r = madd(l[c] - s[c], kSmashBrightenMix, s[c]) * kSmashBrightenScale;
         if (a >= 1.0f) {
             x[c] = fused ? smashDisplayFast(r) : powFast(r, kSmashDecodeExponent);
             continue;
         }
         const float g = powFast(r, kSmashDecodeExponent);
-        const float m = std::fma(g, a, x[c] * (1.0f - a));
+        const float m = madd(g, a, x[c] * (1.0f - a));
         x[c] = fused ? srgbEncodeFast(m) : m;
     }
 }

@@ -6,7 +6,7 @@
 // pixel, and table lookups (gathers) cost more than the arithmetic on the cores we measured.
 //
 // These scalar functions are the definition. ArrayKernels.cpp has 8-lane AVX2 forms that perform
-// the same IEEE operations in the same order -- every multiply-add here is an explicit std::fma,
+// the same IEEE operations in the same order -- every multiply-add here is an explicit madd(),
 // so the compiler has nothing to contract -- and therefore give the same bits: the choice of path
 // never changes a frame, and a pixel's result never depends on its neighbours.
 //
@@ -17,6 +17,26 @@
 #include <cstdint>
 
 namespace lut::detail {
+
+// Multiply-add with one rounding (std::fma) where the CPU has FMA: the bits of the AVX2 + FMA
+// kernels. On an x86-64 without FMA no SIMD path runs at all, and std::fma would be a slow library
+// emulation, so there it is a * b + c (the frame is still the same whatever the tiling).
+#if defined(__x86_64__) || defined(__i386__)
+inline bool cpuHasFma() {
+    static const bool yes = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("fma") != 0;
+    }();
+    return yes;
+}
+#else
+constexpr bool cpuHasFma() {
+    return true;
+}
+#endif
+inline float madd(float a, float b, float c) {
+    return cpuHasFma() ? std::fma(a, b, c) : a * b + c;
+}
 
 namespace poly {
 // log2(m) = u * (c0 + c1 u^2 + c2 u^4 + c3 u^6) with u = (m - 1) / (m + 1), the series of
@@ -45,7 +65,7 @@ inline float log2Mantissa(float x, float& e) {
     const float u2 = u * u;
     float r = poly::kLog[0];
     for (int i = 1; i < 4; ++i)
-        r = std::fma(r, u2, poly::kLog[i]);
+        r = madd(r, u2, poly::kLog[i]);
     return u * r;
 }
 
@@ -54,14 +74,14 @@ inline float log2Mantissa(float x, float& e) {
 // exponent n is clamped to [-127, 127] (2^-127 encodes as 0: results below 2^-126 flush to zero).
 inline float exp2Times(float p, float e, float l) {
     const float hi = p * e;
-    const float lo = std::fma(p, l, std::fma(p, e, -hi));
+    const float lo = madd(p, l, madd(p, e, -hi));
     float n = std::nearbyint(hi + lo);
     const float f = (hi - n) + lo;
     n = n > 127.0f ? 127.0f : (n < -127.0f ? -127.0f : n);
     float q = poly::kExp2[0];
     for (int i = 1; i < 6; ++i)
-        q = std::fma(q, f, poly::kExp2[i]);
-    q = std::fma(q, f, 1.0f);
+        q = madd(q, f, poly::kExp2[i]);
+    q = madd(q, f, 1.0f);
     const float scale =
         std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<int>(n) + 127) << 23);
     return q * scale;
@@ -81,7 +101,7 @@ constexpr float kSrgbLinearLimit = 0.0031308f;
 inline float srgbEncodeFast(float x) {
     const float a = std::fabs(x);
     const float e =
-        a <= kSrgbLinearLimit ? 12.92f * a : std::fma(1.055f, powFast(a, 1.0f / 2.4f), -0.055f);
+        a <= kSrgbLinearLimit ? 12.92f * a : madd(1.055f, powFast(a, 1.0f / 2.4f), -0.055f);
     return x < 0.0f ? -e : e;
 }
 
@@ -96,7 +116,7 @@ inline float smashDisplayFast(float r) {
     const float l = log2Mantissa(r, e);
     if (r <= kSmashDisplayLowR)
         return 12.92f * exp2Times(2.2f, e, l);
-    return std::fma(1.055f, exp2Times(kSmashDisplayHighP, e, l), -0.055f);
+    return madd(1.055f, exp2Times(kSmashDisplayHighP, e, l), -0.055f);
 }
 
 // NaN -> 0; clamps to [-lim, lim].
