@@ -2,9 +2,9 @@
 
 #include "lut/pipeline/SmashGrading.h"
 
-#include <cstring>
-
 #if defined(__x86_64__) || defined(__i386__)
+#include "../simd/Transpose.h"
+
 #include <immintrin.h>
 #define LUTKIT_X86 1
 #endif
@@ -13,7 +13,7 @@ namespace lut::detail {
 
 namespace {
 
-// ---- scalar forms (the definition; also the tails of the SIMD loops) ----------------------------
+// Scalar forms: the definition, and the tails of the SIMD loops.
 
 void smashFinishPixel(float* x, const float* s, const float* l, bool fused) {
     const float a = clamp01(x[3]);
@@ -52,8 +52,7 @@ void addBloomPixel(float* p, const float* a, const float* b, float t) {
 #ifdef LUTKIT_X86
 #define LUTKIT_AVX2 __attribute__((target("avx2,fma")))
 
-// ---- 8-lane forms of FastMath.h, operation for operation
-// -----------------------------------------
+// 8-lane forms of FastMath.h, operation for operation.
 
 LUTKIT_AVX2 inline __m256 splat(float v) {
     return _mm256_set1_ps(v);
@@ -169,39 +168,23 @@ template <int K> LUTKIT_AVX2 inline Vec<K> display8(const Vec<K>& r) {
     return displayFromLog8(r, e, l);
 }
 
-// In-lane 4x4 transpose of four registers holding two RGBA pixels each (its own inverse):
-// [p0|p1] [p2|p3] [p4|p5] [p6|p7] <-> R, G, B, A planes in lane order 0 2 4 6 | 1 3 5 7.
-LUTKIT_AVX2 inline void transpose4(__m256& a, __m256& b, __m256& c, __m256& d) {
-    const __m256 t0 = _mm256_unpacklo_ps(a, b);
-    const __m256 t1 = _mm256_unpackhi_ps(a, b);
-    const __m256 t2 = _mm256_unpacklo_ps(c, d);
-    const __m256 t3 = _mm256_unpackhi_ps(c, d);
-    a = _mm256_shuffle_ps(t0, t2, 0x44);
-    b = _mm256_shuffle_ps(t0, t2, 0xEE);
-    c = _mm256_shuffle_ps(t1, t3, 0x44);
-    d = _mm256_shuffle_ps(t1, t3, 0xEE);
-}
-
-struct Planes {
-    __m256 v[4];
-};
-
-LUTKIT_AVX2 inline Planes loadPlanes(const float* p) {
-    Planes q;
+// Four registers of two RGBA pixels each, transposed to R, G, B, A planes (lane order
+// 0 2 4 6 | 1 3 5 7) on load and back on store.
+LUTKIT_AVX2 inline Vec<4> loadPlanes(const float* p) {
+    Vec<4> q;
     for (int i = 0; i < 4; ++i)
         q.v[i] = _mm256_loadu_ps(p + 8 * i);
     transpose4(q.v[0], q.v[1], q.v[2], q.v[3]);
     return q;
 }
 
-LUTKIT_AVX2 inline void storePlanes(float* p, Planes q) {
+LUTKIT_AVX2 inline void storePlanes(float* p, Vec<4> q) {
     transpose4(q.v[0], q.v[1], q.v[2], q.v[3]);
     for (int i = 0; i < 4; ++i)
         _mm256_storeu_ps(p + 8 * i, q.v[i]);
 }
 
-// ---- array loops
-// ----------------------------------------------------------------------------------
+// Array loops.
 
 LUTKIT_AVX2 void powAvx2(float p, const float* in, float* out, std::size_t n) {
     std::size_t i = 0;
@@ -232,7 +215,7 @@ LUTKIT_AVX2 void srgbAvx2(const float* in, float* out, std::size_t n) {
 LUTKIT_AVX2 void smashEncodeAvx2(const float* x, float* s, float* l, std::size_t count) {
     std::size_t i = 0;
     for (; i + 8 <= count; i += 8) {
-        Planes q = loadPlanes(x + 4 * i);
+        Vec<4> q = loadPlanes(x + 4 * i);
         const Vec<3> sv = pow8(Vec<3>{{q.v[0], q.v[1], q.v[2]}}, kSmashEncodeExponent);
         for (int c = 0; c < 3; ++c)
             q.v[c] = sv.v[c];
@@ -249,7 +232,7 @@ LUTKIT_AVX2 void smashFinishAvx2(float* x, const float* s, const float* l, std::
     std::size_t i = 0;
     for (; i + 8 <= count; i += 8) {
         float* px = x + 4 * i;
-        Planes q = loadPlanes(px);
+        Vec<4> q = loadPlanes(px);
         const Vec<3> xv{{q.v[0], q.v[1], q.v[2]}};
         const __m256 a = _mm256_min_ps(_mm256_max_ps(q.v[3], zero), one); // NaN -> 0
         const __m256 none = _mm256_cmp_ps(a, zero, _CMP_LE_OQ);
@@ -261,7 +244,7 @@ LUTKIT_AVX2 void smashFinishAvx2(float* x, const float* s, const float* l, std::
                 continue;
             out = srgb8(xv);
         } else {
-            const Planes qs = loadPlanes(s + 4 * i), ql = loadPlanes(l + 4 * i);
+            const Vec<4> qs = loadPlanes(s + 4 * i), ql = loadPlanes(l + 4 * i);
             Vec<3> r;
             for (int c = 0; c < 3; ++c)
                 r.v[c] = _mm256_mul_ps(_mm256_fmadd_ps(_mm256_sub_ps(ql.v[c], qs.v[c]),

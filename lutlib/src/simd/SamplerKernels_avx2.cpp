@@ -9,8 +9,9 @@
 // Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the per-pixel loads need
 // no transposition of the result. Alpha is restored from the input by a blend.
 //
-// Only <immintrin.h> and SimdKernels.h are included (see the note there about inline functions).
+// Only <immintrin.h>, SimdKernels.h and Transpose.h are included (see the note there about inline functions).
 #include "SimdKernels.h"
+#include "Transpose.h"
 
 #include <immintrin.h>
 
@@ -45,20 +46,6 @@ struct Consts {
         db = 4 * t.size * t.size;
     }
 };
-
-// In-lane 4x4 transpose of four registers holding two RGBA pixels each:
-// a=[p0|p1] b=[p2|p3] c=[p4|p5] d=[p6|p7]  ->  a=[r0 r2 r4 r6|r1 r3 r5 r7], b=G, c=B, d=A.
-// It is its own inverse, so applying it to four per-lane planes gives one pixel per half again.
-inline void transpose4(__m256& a, __m256& b, __m256& c, __m256& d) {
-    const __m256 t0 = _mm256_unpacklo_ps(a, b);
-    const __m256 t1 = _mm256_unpackhi_ps(a, b);
-    const __m256 t2 = _mm256_unpacklo_ps(c, d);
-    const __m256 t3 = _mm256_unpackhi_ps(c, d);
-    a = _mm256_shuffle_ps(t0, t2, 0x44);
-    b = _mm256_shuffle_ps(t0, t2, 0xEE);
-    c = _mm256_shuffle_ps(t1, t3, 0x44);
-    d = _mm256_shuffle_ps(t1, t3, 0xEE);
-}
 
 // The scalar LatticeMap::locate, 8 lanes at a time, operation for operation.
 inline void locate(const Consts& k, int c, __m256 x, __m256i& cell, __m256& frac) {
