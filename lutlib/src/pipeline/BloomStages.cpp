@@ -9,6 +9,19 @@ namespace lut::detail {
 
 namespace {
 
+// The bloom source of a full-resolution bloom: out (resized to the frame) gets fn(pixel, texel)
+// for every frame pixel, rows in parallel.
+template <class Fn> void makeBloomSource(const ImageView& f, RgbBuffer& out, int nthreads, Fn fn) {
+    out.resize(f.width, f.height);
+    parallelFor(f.height, nthreads, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            const float* p = f.row(y);
+            for (int x = 0; x < f.width; ++x, p += 4)
+                fn(p, out.at(x, y));
+        }
+    });
+}
+
 // Base for blooms that keep a full-resolution RGB bloom image.
 class FullResBloom : public Stage {
 public:
@@ -49,16 +62,9 @@ public:
                         [th](const float* p) { return p[0] > th || p[1] > th || p[2] > th; });
     }
     void prepare(const ImageView& f, const StageContext& ctx) override {
-        m_bloom.resize(f.width, f.height);
-        parallelFor(f.height, ctx.nthreads, [&](int y0, int y1) {
-            for (int y = y0; y < y1; ++y) {
-                const float* p = f.row(y);
-                for (int x = 0; x < f.width; ++x, p += 4) {
-                    float* o = m_bloom.at(x, y);
-                    for (int c = 0; c < 3; ++c)
-                        o[c] = std::max(p[c] - m_threshold, 0.0f) * m_strength;
-                }
-            }
+        makeBloomSource(f, m_bloom, ctx.nthreads, [this](const float* p, float* o) {
+            for (int c = 0; c < 3; ++c)
+                o[c] = std::max(p[c] - m_threshold, 0.0f) * m_strength;
         });
         separableBlur(m_bloom, gaussianWeights(m_sigma), ctx.nthreads);
     }
@@ -98,18 +104,10 @@ public:
         });
     }
     void prepare(const ImageView& f, const StageContext& ctx) override {
-        m_bloom.resize(f.width, f.height);
-        parallelFor(f.height, ctx.nthreads, [&](int y0, int y1) {
-            for (int y = y0; y < y1; ++y) {
-                const float* p = f.row(y);
-                for (int x = 0; x < f.width; ++x, p += 4) {
-                    const float w =
-                        weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) * m_strength;
-                    float* o = m_bloom.at(x, y);
-                    for (int c = 0; c < 3; ++c)
-                        o[c] = p[c] * w;
-                }
-            }
+        makeBloomSource(f, m_bloom, ctx.nthreads, [this](const float* p, float* o) {
+            const float w = weight(0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) * m_strength;
+            for (int c = 0; c < 3; ++c)
+                o[c] = p[c] * w;
         });
         static const std::vector<float> kWeights = {0.227027f, 0.1945946f, 0.1216216f, 0.054054f,
                                                     0.016216f};
@@ -150,17 +148,10 @@ public:
     void prepare(const ImageView& f, const StageContext& ctx) override {
         const int W = f.width, H = f.height;
         RgbBuffer src;
-        src.resize(W, H);
-        parallelFor(H, ctx.nthreads, [&](int y0, int y1) {
-            for (int y = y0; y < y1; ++y) {
-                const float* p = f.row(y);
-                for (int x = 0; x < W; ++x, p += 4) {
-                    const float i = std::max(std::max({p[0], p[1], p[2]}) - m_threshold, 0.0f);
-                    float* o = src.at(x, y);
-                    for (int c = 0; c < 3; ++c)
-                        o[c] = p[c] * i;
-                }
-            }
+        makeBloomSource(f, src, ctx.nthreads, [this](const float* p, float* o) {
+            const float i = std::max(std::max({p[0], p[1], p[2]}) - m_threshold, 0.0f);
+            for (int c = 0; c < 3; ++c)
+                o[c] = p[c] * i;
         });
         // Dilation: separable max filter (a square window).
         const int r = static_cast<int>(m_dilate);
