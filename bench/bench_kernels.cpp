@@ -1,10 +1,10 @@
 // Google Benchmark: the LUT kernels on a 4K float RGBA frame, for every interpolation and LUT
 // size 16, 17, 33, 65, next to OpenColorIO's CPU processor on the same LUT and pixels and a
 // plain copy of the same bytes. Counters: ns_per_pixel, and for our kernels max_err / mean_err
-// against the analytic grade the LUT was sampled from (lut/KernelBench.h, shared with
+// against the analytic grade the LUT was sampled from (lut/bench/KernelBench.h in bench/support, shared with
 // `lutkit bench`). Frame size: LUTKIT_BENCH_WIDTH / LUTKIT_BENCH_HEIGHT (default 3840x2160).
-#include "lut/KernelBench.h"
-#include "lut/Sampler.h"
+#include "lut/bench/KernelBench.h"
+#include "lut/interp/Sampler.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <benchmark/benchmark.h>

@@ -4,11 +4,11 @@
 
 #include "Commands.h"
 
-#include "lut/AtomicFile.h"
+#include "lut/io/AtomicFile.h"
 #include "lut/Error.h"
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/Parallel.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 

@@ -9,9 +9,9 @@
 
 #include "Commands.h"
 #include "lut/Error.h"
-#include "lut/KernelBench.h"
+#include "lut/bench/KernelBench.h"
 #include "lut/Parallel.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 #include "lut/pipeline/Pipeline.h"
 
 #include <OpenColorIO/OpenColorIO.h>

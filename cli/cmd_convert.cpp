@@ -8,10 +8,10 @@
 #include "Commands.h"
 #include "cmd_json.h"
 
-#include "lut/AtomicFile.h"
+#include "lut/io/AtomicFile.h"
 #include "lut/Error.h"
 #include "lut/Limits.h"
-#include "lut/Resample.h"
+#include "lut/ops/Resample.h"
 #include "lut/formats/Registry.h"
 
 #include <chrono>

@@ -1,9 +1,9 @@
 #include "cmd_embed.h"
 
 #include "Commands.h"
-#include "lut/AtomicFile.h"
-#include "lut/Embed.h"
-#include "lut/Format.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/roundtrip/Embed.h"
+#include "lut/io/Format.h"
 #include "lut/formats/ImageIO.h"
 
 #include <iostream>

@@ -1,8 +1,8 @@
 #include "cmd_extract.h"
 
 #include "Commands.h"
-#include "lut/AtomicFile.h"
-#include "lut/Embed.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/roundtrip/Embed.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 

@@ -1,8 +1,8 @@
 #include "cmd_fit.h"
 
 #include "Commands.h"
-#include "lut/AtomicFile.h"
-#include "lut/Fit.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/roundtrip/Fit.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 

@@ -6,7 +6,7 @@
 #include "Commands.h"
 
 #include "lut/Error.h"
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
 

@@ -7,7 +7,7 @@
 #include "PreviewRenderer.h"
 #include "PreviewView.h"
 
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/formats/Registry.h"
 
 #include <QApplication>

@@ -1,6 +1,6 @@
 #pragma once
 // Factories of the built-in formats (internal to formats/). One per format file.
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 
 #include <memory>
 #include <vector>

@@ -2,8 +2,8 @@
 
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
-#include "lut/Resample.h"
-#include "lut/Sampler.h"
+#include "lut/ops/Resample.h"
+#include "lut/interp/Sampler.h"
 
 #include <algorithm>
 #include <cmath>

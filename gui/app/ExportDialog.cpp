@@ -1,6 +1,6 @@
 #include "ExportDialog.h"
 
-#include "lut/Layout.h"
+#include "lut/io/Layout.h"
 #include "lut/formats/Registry.h"
 
 #include <QCheckBox>

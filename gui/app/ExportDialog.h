@@ -1,7 +1,7 @@
 #pragma once
 // Export settings: one entry per (writable format, layout) so every strip layout is a choice,
 // plus size, bit depth, dither and the Smash game compensation, and the target file.
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 
 #include <QDialog>
 

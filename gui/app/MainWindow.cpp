@@ -8,8 +8,8 @@
 #include "RecentFiles.h"
 
 #include "lut/Error.h"
-#include "lut/Format.h"
-#include "lut/Sampler.h"
+#include "lut/io/Format.h"
+#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 

@@ -4,7 +4,7 @@
 #include "PreviewRenderer.h"
 #include "PreviewScheduler.h"
 
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 
 #include <QMainWindow>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The editable adjustment parameters as data: one id per number in lut::Adjustments, with the
 // label, range and default the editor's sliders use. Plain C++ (no Qt).
-#include "lut/Adjust.h"
+#include "lut/ops/Adjust.h"
 
 #include <string>
 #include <vector>

@@ -5,9 +5,9 @@
 #include "ResetAdjustmentsCommand.h"
 #include "SetAdjustmentCommand.h"
 
-#include "lut/Embed.h"
+#include "lut/roundtrip/Embed.h"
 #include "lut/Error.h"
-#include "lut/Layout.h"
+#include "lut/io/Layout.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 

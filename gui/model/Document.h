@@ -8,8 +8,8 @@
 // only then swaps it in, so a failed open throws lut::Error and leaves the document as it was.
 #include "AdjustParam.h"
 
-#include "lut/Adjust.h"
-#include "lut/Format.h"
+#include "lut/ops/Adjust.h"
+#include "lut/io/Format.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/formats/ImageIO.h"

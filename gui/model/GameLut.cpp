@@ -1,6 +1,6 @@
 #include "GameLut.h"
 
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 #include "lut/pipeline/SmashGrading.h"
 
 namespace lut::gui {

@@ -1,6 +1,6 @@
 #include "PreviewRenderer.h"
 
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 #include "lut/Parallel.h"
 #include "lut/pipeline/SmashGrading.h"
 

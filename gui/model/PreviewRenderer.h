@@ -3,7 +3,7 @@
 // as plain C++ so the document model and tests can use it without widgets. The worker thread in
 // the app calls render(); everything here is re-entrant (no shared mutable state).
 #include "lut/Image.h"
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/pipeline/Pipeline.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Undo step for "Reset adjustments": back to neutral adjustments on the base LUT.
-#include "lut/Adjust.h"
+#include "lut/ops/Adjust.h"
 
 #include <QUndoCommand>
 

@@ -2,7 +2,7 @@
 // and OpenColorIO (an independent reader) agreeing with our reading of what we wrote.
 #include "TestSupport.h"
 
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
 

@@ -3,7 +3,7 @@
 #include "TestSupport.h"
 
 #include "lut/Error.h"
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 #include "lut/formats/Registry.h"
 
 #include <OpenColorIO/OpenColorIO.h>

@@ -1,7 +1,7 @@
 // LUT images: pixel positions of each layout checked against hand-computed places in the file
 // (read back with OpenImageIO directly, not with our reader), exact 8/16-bit/float round trips,
 // any N, bit depths, clamping and quantisation diagnostics, dither, Hald through the strip format.
-#include "lut/Layout.h"
+#include "lut/io/Layout.h"
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"

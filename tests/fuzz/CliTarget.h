@@ -8,7 +8,7 @@
 //
 // Include this from exactly one translation unit: it defines the stub run functions.
 #include "lut/Error.h"
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 
 #include <CLI/CLI.hpp>
 

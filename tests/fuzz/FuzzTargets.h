@@ -7,8 +7,8 @@
 // lut::Error. Any other exception escapes (the fuzzer reports it as a crash, the replay test as a
 // failure); a malformed result trips invariant(), which traps.
 #include "lut/Error.h"
-#include "lut/Format.h"
-#include "lut/Interpolation.h"
+#include "lut/io/Format.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/Limits.h"
 #include "lut/LutFile.h"
 #include "lut/formats/Cube.h"

@@ -7,7 +7,7 @@
 #include "PreviewRenderer.h"
 #include "RecentFiles.h"
 
-#include "lut/Embed.h"
+#include "lut/roundtrip/Embed.h"
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"

@@ -1,6 +1,6 @@
 // LUT authoring adjustments against plain float64 formulas written out here, independently of
-// lutlib/src/Adjust.cpp (which composes, clamps and skips neutral steps).
-#include "lut/Adjust.h"
+// lutlib/src/ops/Adjust.cpp (which composes, clamps and skips neutral steps).
+#include "lut/ops/Adjust.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// lut/KernelBench.h: the analytic grade, its sampled LUTs, the synthetic frame and the error
+// lut/bench/KernelBench.h (bench/support): the analytic grade, its sampled LUTs, the synthetic frame and the error
 // measure that `lutkit bench` prints.
-#include "lut/KernelBench.h"
-#include "lut/Sampler.h"
+#include "lut/bench/KernelBench.h"
+#include "lut/interp/Sampler.h"
 
 #include <gtest/gtest.h>
 

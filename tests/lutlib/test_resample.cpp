@@ -3,8 +3,8 @@
 #include "LutTestUtil.h"
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
-#include "lut/Resample.h"
-#include "lut/Sampler.h"
+#include "lut/ops/Resample.h"
+#include "lut/interp/Sampler.h"
 
 #include <gtest/gtest.h>
 

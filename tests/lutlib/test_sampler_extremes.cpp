@@ -2,7 +2,7 @@
 // applyPixels() (the run-time chosen SIMD kernel).
 #include "LutTestUtil.h"
 #include "lut/Error.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 
 #include <gtest/gtest.h>
 

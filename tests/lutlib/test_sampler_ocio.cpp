@@ -1,7 +1,7 @@
 // OpenColorIO as the oracle: our trilinear and tetrahedral samplers (scalar and SIMD) against
 // OCIO's CPU processor for a Lut3DTransform holding the same entries.
 #include "LutTestUtil.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The SIMD kernels (applyPixels) against the scalar reference (sample()) on random and extreme
 // inputs: same cells, same policy, agreement to float rounding; alpha untouched.
 #include "LutTestUtil.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 
 #include <gtest/gtest.h>
 

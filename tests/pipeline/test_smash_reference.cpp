@@ -2,7 +2,7 @@
 // docs/smash-pipeline.md, not from lutlib), on small odd-sized frames, to 1e-5.
 #include "PipelineTestUtil.h"
 
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 #include "lut/pipeline/Pipeline.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"

@@ -2,8 +2,8 @@
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"
 
-#include "lut/Embed.h"
-#include "lut/Sampler.h"
+#include "lut/roundtrip/Embed.h"
+#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 

@@ -1,7 +1,7 @@
 // Embed a patch, edit the image with known global functions, find and extract it again.
 #include "RoundtripTestUtil.h"
 
-#include "lut/Embed.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <gtest/gtest.h>
 

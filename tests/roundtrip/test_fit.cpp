@@ -2,8 +2,8 @@
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"
 
-#include "lut/Fit.h"
-#include "lut/Sampler.h"
+#include "lut/roundtrip/Fit.h"
+#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
 
 #include <gtest/gtest.h>

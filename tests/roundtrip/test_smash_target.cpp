@@ -4,9 +4,9 @@
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"
 
-#include "lut/Embed.h"
-#include "lut/Resample.h"
-#include "lut/Sampler.h"
+#include "lut/roundtrip/Embed.h"
+#include "lut/ops/Resample.h"
+#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"

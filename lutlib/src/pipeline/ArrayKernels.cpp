@@ -3,7 +3,7 @@
 #include "lut/pipeline/SmashGrading.h"
 
 #if defined(__x86_64__) || defined(__i386__)
-#include "../simd/Transpose.h"
+#include "core/simd/Transpose.h"
 
 #include <immintrin.h>
 #define LUTKIT_X86 1

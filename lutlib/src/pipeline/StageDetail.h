@@ -2,10 +2,10 @@
 // Private helpers shared by the stage implementations.
 #include "FastMath.h"
 #include "lut/Image.h"
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
 #include "lut/Parallel.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 #include "lut/pipeline/Stage.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-#include "lut/Format.h"
+#include "lut/io/Format.h"
 
 namespace lut::formats {
 

@@ -24,7 +24,7 @@
 // does not have (see docs/pipeline.md).
 #include "lut/Error.h"
 #include "lut/Image.h"
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
 #include "lut/pipeline/Stage.h"
 

@@ -16,9 +16,9 @@
 // pow); +Inf is clamped to kPipelineMaxValue first. Finite input never gives NaN or Inf.
 #include "lut/Error.h"
 #include "lut/Image.h"
-#include "lut/Interpolation.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
-#include "lut/Sampler.h"
+#include "lut/interp/Sampler.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,0 +1,263 @@
+// LUT images: an N^3 LUT stored as a 2D picture in a named layout (strip-layouts.md).
+//
+//   pilot (unreal, godot)  N^2 x N   x = r + N*b, y = g          (green 0 on the top row)
+//   unity                  N^2 x N   x = r + N*b, y = N-1-g      (green 0 on the bottom row)
+//   smush (lattice)        N^2 x N   x = r + N*g, y = b          (Smush-LUT, ociolutimage)
+//   hald                   L^3 x L^3 i = r + N*g + N^2*b, x = i mod L^3, y = i div L^3, N = L^2
+//
+// Files go through OpenImageIO: 8/16-bit PNG and TIFF, float EXR (also float TIFF). Integer
+// samples are read exactly (v/255, v/65535) and written by rounding to nearest with clamping
+// (lut::toUnorm8/16), optionally dithered (FormatOptions::dither); a diagnostic says how many
+// values were clamped and what the quantisation cost. Default output depth: 8 bits for PNG and
+// TIFF, float for EXR; FormatOptions::bitDepth = 8, 16 or 32 overrides. Any N from 2 to 256.
+//
+// Which layout a file is in (nothing in the file says so):
+//  1. FormatOptions::layout when given (an image of the wrong size is refused, naming both).
+//  2. The picture size: L^3 x L^3 fits hald only, N^2 x N fits pilot, unity and smush
+//     (lut::layoutsForImageSize); other sizes are refused, naming the sizes the layouts need.
+//  3. Among several fitting layouts, read the table in each and ask whether it is "close to
+//     neutral" in the sense that matters for telling layouts apart: each output channel follows
+//     its own input axis. For every layout we take the Pearson correlation of output red with
+//     input r, green with g, blue with b over all N^3 entries; the layout passes when all three
+//     are >= 0.75. A neutral LUT scores 1, 1, 1 in its own layout; in a wrong layout two axes
+//     are swapped (smush vs pilot: green and blue follow the other axis, correlation ~0) or
+//     green runs backwards (unity vs pilot: -1). Ordinary grades (contrast, tint, curves) keep
+//     each channel increasing with its own input, so they pass in their own layout only. If
+//     exactly one layout passes, it is taken and an Info diagnostic says so.
+//  4. If none passes (e.g. a black-and-white or strongly cross-channel grade), the image is read
+//     as pilot, the default layout of an N^2 x N strip, with a Warning -- but only when pilot
+//     scores best or ties (sum of the three correlations, within 0.05); if another layout looks
+//     more plausible, the read is refused with the layouts that fit and their scores, asking for
+//     --layout. Reading never swaps axes silently.
+#include "Formats.h"
+#include "image/LutImage.h"
+#include "LutPrep.h"
+
+#include "lut/Error.h"
+#include "lut/Quantize.h"
+#include "lut/formats/ImageIO.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace lut::formats {
+
+namespace {
+
+using S = Diagnostic::Severity;
+
+constexpr double kAxisCorrelationMin = 0.75;
+// Sums of correlations closer than this count as a tie (pilot, the default, wins ties).
+constexpr double kScoreTie = 0.05;
+
+std::string fmt2(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", v);
+    return buf;
+}
+
+// Pearson correlation of output channel c with input index c, c = 0..2 (NaN/Inf entries skipped;
+// a constant channel correlates 0).
+struct AxisScore {
+    double corr[3] = {0, 0, 0};
+    double sum() const { return corr[0] + corr[1] + corr[2]; }
+    bool followsAxes() const {
+        return corr[0] >= kAxisCorrelationMin && corr[1] >= kAxisCorrelationMin && corr[2] >= kAxisCorrelationMin;
+    }
+    std::string str() const { return "r " + fmt2(corr[0]) + ", g " + fmt2(corr[1]) + ", b " + fmt2(corr[2]); }
+};
+
+AxisScore axisScore(const Lut3D& lut) {
+    AxisScore s;
+    const int n = lut.size();
+    for (int c = 0; c < 3; ++c) {
+        double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, cnt = 0;
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    const double v = lut.at(r, g, b)[c];
+                    if (!std::isfinite(v)) continue;
+                    const double x = c == 0 ? r : c == 1 ? g : b;
+                    sx += x;
+                    sy += v;
+                    sxx += x * x;
+                    syy += v * v;
+                    sxy += x * v;
+                    cnt += 1;
+                }
+        if (cnt < 2) continue;
+        const double vx = sxx - sx * sx / cnt, vy = syy - sy * sy / cnt, cxy = sxy - sx * sy / cnt;
+        if (vx <= 0 || vy <= 1e-20 * cnt) continue;
+        const double r = cxy / std::sqrt(vx * vy);
+        s.corr[c] = std::isfinite(r) ? std::max(-1.0, std::min(1.0, r)) : 0.0;
+    }
+    return s;
+}
+
+std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+std::string fitsText(const std::vector<LayoutFit>& fits) {
+    std::string s;
+    for (const auto& f : fits) s += (s.empty() ? "" : ", ") + std::string(toString(f.layout));
+    return s;
+}
+
+int defaultBitDepth(const std::string& path) {
+    const std::string ext = extensionOf(path);
+    return ext == ".exr" || ext == ".hdr" ? 32 : 8;
+}
+
+} // namespace
+
+LutFile readLutImage(const std::string& path, const FormatOptions& options, std::optional<LutLayout> forced) {
+    // Check the layout name before touching the file, so a typo is reported as such.
+    std::optional<LutLayout> wanted = forced;
+    if (!wanted && !options.layout.empty()) wanted = parseLayout(options.layout);
+
+    const LoadedImage img = readImage(path);
+    const int w = img.image.width(), h = img.image.height();
+    LutFile file;
+    file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
+    const std::vector<LayoutFit> fits = layoutsForImageSize(w, h);
+
+    LutLayout layout = LutLayout::Pilot;
+    int n = 0;
+    if (wanted) {
+        layout = *wanted;
+        for (const auto& f : fits)
+            if (f.layout == layout) n = f.size;
+        if (n == 0) {
+            const std::string need = layout == LutLayout::Hald
+                                         ? "L^3 x L^3 pixels (e.g. 64x64 for 16^3, 512x512 for 64^3)"
+                                         : "N^2 x N pixels with N 2..256 (e.g. 256x16, 1024x32)";
+            throw Error(path + ": image is " + sizeText(w, h) + ", the " + toString(layout) + " layout needs " +
+                        need + (fits.empty() ? "" : "; this size fits " + fitsText(fits)));
+        }
+    } else if (fits.empty()) {
+        throw Error(path + ": image is " + sizeText(w, h) +
+                    ", not a LUT image size: pilot, unity and smush need N^2 x N (e.g. 256x16), hald needs "
+                    "L^3 x L^3 (e.g. 64x64)");
+    } else if (fits.size() == 1) {
+        layout = fits.front().layout;
+        n = fits.front().size;
+    } else {
+        // Several layouts fit: see the rule in the header comment.
+        std::vector<AxisScore> scores;
+        std::vector<std::size_t> passing;
+        for (std::size_t i = 0; i < fits.size(); ++i) {
+            scores.push_back(axisScore(lutFromImage(img.image.view(), fits[i].layout, fits[i].size)));
+            if (scores.back().followsAxes()) passing.push_back(i);
+        }
+        std::string table;
+        for (std::size_t i = 0; i < fits.size(); ++i)
+            table += (table.empty() ? "" : "; ") + std::string(toString(fits[i].layout)) + ": " + scores[i].str();
+        if (passing.size() == 1) {
+            layout = fits[passing.front()].layout;
+            n = fits[passing.front()].size;
+            file.diagnostics.push_back(makeDiagnostic(
+                S::Info, path,
+                std::string("layout detected: ") + toString(layout) + " (" + sizeText(w, h) +
+                    " fits " + fitsText(fits) + "; only in " + toString(layout) +
+                    " does each output channel follow its own input axis, correlations " + table +
+                    "); pass --layout to override"));
+        } else {
+            std::size_t best = 0;
+            for (std::size_t i = 1; i < fits.size(); ++i)
+                if (scores[i].sum() > scores[best].sum()) best = i;
+            std::size_t pilot = fits.size();
+            for (std::size_t i = 0; i < fits.size(); ++i)
+                if (fits[i].layout == LutLayout::Pilot) pilot = i;
+            if (passing.empty() && pilot < fits.size() && scores[pilot].sum() >= scores[best].sum() - kScoreTie) {
+                layout = LutLayout::Pilot;
+                n = fits[pilot].size;
+                file.diagnostics.push_back(makeDiagnostic(
+                    S::Warning, path,
+                    "layout not detectable (" + sizeText(w, h) + " fits " + fitsText(fits) +
+                        " and the table is not close to neutral in any: correlations " + table +
+                        "); read as pilot, the default for N^2 x N images; pass --layout if it is another"));
+            } else {
+                throw Error(path + ": image is " + sizeText(w, h) + ", which fits the layouts " + fitsText(fits) +
+                            (passing.empty() ? " and is close to neutral in none of them"
+                                             : " and looks neutral in more than one") +
+                            " (correlation of each output channel with its input axis: " + table +
+                            "); pass --layout " + (passing.empty() ? std::string("pilot, unity or smush")
+                                                                    : fitsText(fits)));
+            }
+        }
+    }
+
+    file.cube = lutFromImage(img.image.view(), layout, n);
+    file.format = layout == LutLayout::Hald ? "hald" : "strip";
+    file.dialect = toString(layout);
+    if (img.info.channels < 3)
+        file.diagnostics.push_back(makeDiagnostic(S::Warning, path,
+                                                  "grey image: the same value was used for red, green and blue"));
+    std::size_t nonFinite = 0;
+    for (auto& v : file.cube->entries())
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(v[c])) ++nonFinite;
+    if (nonFinite)
+        file.diagnostics.push_back(makeDiagnostic(S::Warning, path,
+                                                  std::to_string(nonFinite) + " channel values are NaN or infinite"));
+    return file;
+}
+
+Diagnostics writeLutImage(const std::string& path, const LutFile& source, const FormatOptions& options,
+                          LutLayout layout) {
+    Diagnostics diags;
+    int bits = options.bitDepth > 0 ? options.bitDepth : defaultBitDepth(path);
+    if (bits != 8 && bits != 16 && bits != 32)
+        throw Error(path + ": bit depth " + std::to_string(bits) + " is not 8, 16 or 32 (float)");
+    const std::string ext = extensionOf(path);
+    if (ext == ".exr" && bits != 32)
+        throw Error(path + ": EXR stores float values; use bit depth 32 or a .png/.tif file for " +
+                    std::to_string(bits) + "-bit output");
+    int size = options.size;
+    if (layout == LutLayout::Hald) {
+        const int own = size > 0 ? size : source.toLut3D(0).size();
+        size = haldSizeFor(own);
+        if (size != own)
+            diags.push_back(makeDiagnostic(S::Info, path,
+                                           "a Hald image stores N = L^2 only: " + std::to_string(own) +
+                                               "^3 written as " + std::to_string(size) + "^3 (level " +
+                                               std::to_string(static_cast<int>(std::lround(std::sqrt(size)))) + ")"));
+    }
+    const Lut3D lut = prepareUnitLut(source, size, path, diags);
+    if (bits != 32) {
+        addClampDiagnostic(countOutOfUnitRange(lut), bits, path, diags);
+        if (!options.dither) addQuantizationDiagnostic(lut, bits, path, diags);
+    }
+    const Image image = lutToImage(lut, layout);
+    ImageWriteOptions wo;
+    wo.bitDepth = bits;
+    wo.dither = options.dither;
+    wo.alpha = true;
+    writeImage(path, image, wo);
+    return diags;
+}
+
+namespace {
+
+class StripFormat final : public Format {
+public:
+    std::string name() const override { return "strip"; }
+    std::string description() const override {
+        return "LUT image in a named layout (pilot/unreal/godot, unity, smush/lattice, hald): PNG/TIFF 8/16-bit, "
+               "float EXR";
+    }
+    std::vector<std::string> extensions() const override { return {".png", ".tif", ".tiff", ".exr"}; }
+
+    LutFile read(const std::string& path, const FormatOptions& options) const override {
+        return readLutImage(path, options);
+    }
+    Diagnostics write(const std::string& path, const LutFile& lut, const FormatOptions& options) const override {
+        const LutLayout layout = options.layout.empty() ? LutLayout::Pilot : parseLayout(options.layout);
+        return writeLutImage(path, lut, options, layout);
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Format> makeStripFormat() { return std::make_unique<StripFormat>(); }
+
+} // namespace lut::formats

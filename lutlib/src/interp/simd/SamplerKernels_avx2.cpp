@@ -1,0 +1,211 @@
+// AVX2 + FMA kernels for the 3D LUT samplers, 8 pixels per iteration.
+//
+// Shape: load 8 RGBA pixels (4 registers of 2 pixels), transpose them in-lane to R, G, B planes,
+// find lattice cells and fractions exactly as the scalar reference does (same float operations,
+// same NaN/Inf clamping, same lattice snapping), then go back to pixels: tetrahedral and nearest
+// work on one pixel per 128-bit half, each entry one aligned 16-byte load (RGB + padding) blended
+// with weights shuffled out of a transposed register; trilinear works on one pixel per register,
+// loading a whole red-axis edge (two adjacent entries) at once with weights as broadcast loads.
+// Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the per-pixel loads need
+// no transposition of the result. Alpha is restored from the input by a blend.
+//
+// Only <immintrin.h>, SimdKernels.h and Transpose.h are included (see the note there about inline functions).
+#include "SimdKernels.h"
+#include "core/simd/Transpose.h"
+
+#include <immintrin.h>
+
+namespace lut::detail {
+namespace {
+
+struct Consts {
+    __m256 offset[3];
+    __m256 scale[3];
+    __m256 snapBias[3];
+    __m256 top;      // N - 1
+    __m256 snapK;    // kSnapRelative
+    __m256 one;
+    __m256 absMask;
+    __m256i maxCell; // N - 2
+    __m256i n;       // N
+    int dr, dg, db;  // float offsets of the +1 neighbour along r, g, b
+    explicit Consts(const KernelTable& t) {
+        for (int c = 0; c < 3; ++c) {
+            offset[c] = _mm256_set1_ps(t.offset[c]);
+            scale[c] = _mm256_set1_ps(t.scale[c]);
+            snapBias[c] = _mm256_set1_ps(t.snapBias[c]);
+        }
+        top = _mm256_set1_ps(static_cast<float>(t.size - 1));
+        snapK = _mm256_set1_ps(kSnapRelative);
+        one = _mm256_set1_ps(1.0f);
+        absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+        maxCell = _mm256_set1_epi32(t.size - 2);
+        n = _mm256_set1_epi32(t.size);
+        dr = 4;
+        dg = 4 * t.size;
+        db = 4 * t.size * t.size;
+    }
+};
+
+// The scalar LatticeMap::locate, 8 lanes at a time, operation for operation.
+inline void locate(const Consts& k, int c, __m256 x, __m256i& cell, __m256& frac) {
+    __m256 t = _mm256_mul_ps(_mm256_sub_ps(x, k.offset[c]), k.scale[c]);
+    // maxps returns its second operand when either is NaN: NaN (and -Inf) land on 0.
+    t = _mm256_max_ps(t, _mm256_setzero_ps());
+    t = _mm256_min_ps(t, k.top);
+    const __m256 r = _mm256_round_ps(t, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+    const __m256 dist = _mm256_and_ps(_mm256_sub_ps(t, r), k.absMask);
+    const __m256 tol = _mm256_mul_ps(_mm256_add_ps(t, k.snapBias[c]), k.snapK);
+    t = _mm256_blendv_ps(t, r, _mm256_cmp_ps(dist, tol, _CMP_LE_OQ));
+    cell = _mm256_min_epi32(_mm256_cvttps_epi32(t), k.maxCell);
+    frac = _mm256_sub_ps(t, _mm256_cvtepi32_ps(cell));
+}
+
+// Float offset of entry (r, g, b) in the padded table (4 floats per entry).
+inline __m256i entryOffset(const Consts& k, __m256i r, __m256i g, __m256i b) {
+    const __m256i idx = _mm256_add_epi32(r, _mm256_mullo_epi32(k.n, _mm256_add_epi32(g, _mm256_mullo_epi32(k.n, b))));
+    return _mm256_slli_epi32(idx, 2);
+}
+
+// Two pixels' entries, one per 128-bit half (the 4th float is padding; alpha is restored later).
+inline __m256 load2(const float* lo, const float* hi) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(lo)), _mm_loadu_ps(hi), 1);
+}
+
+struct Block {
+    __m256 px[4];  // the input pixels, two per register
+    __m256 f[3];   // fractions, lanes in transposed order
+    __m256i base;  // float offset of the cell's origin entry, same lanes
+};
+
+inline void loadBlock(const Consts& k, const float* p, Block& blk) {
+    for (int i = 0; i < 4; ++i) blk.px[i] = _mm256_loadu_ps(p + 8 * i);
+    __m256 r = blk.px[0], g = blk.px[1], b = blk.px[2], a = blk.px[3];
+    transpose4(r, g, b, a);
+    __m256i ir, ig, ib;
+    locate(k, 0, r, ir, blk.f[0]);
+    locate(k, 1, g, ig, blk.f[1]);
+    locate(k, 2, b, ib, blk.f[2]);
+    blk.base = entryOffset(k, ir, ig, ib);
+}
+
+// Runs `block` on every full group of 8 pixels and on the tail through a padded copy, so the
+// tail gets the same arithmetic as the rest.
+template <class BlockFn> inline void forEachBlock(float* rgba, std::size_t count, BlockFn&& block) {
+    std::size_t i = 0;
+    for (; i + 8 <= count; i += 8) block(rgba + 4 * i);
+    if (i < count) {
+        alignas(32) float tmp[32] = {};
+        const std::size_t rest = count - i;
+        for (std::size_t j = 0; j < 4 * rest; ++j) tmp[j] = rgba[4 * i + j];
+        block(tmp);
+        for (std::size_t j = 0; j < 4 * rest; ++j) rgba[4 * i + j] = tmp[j];
+    }
+}
+
+} // namespace
+
+void nearestAvx2(const KernelTable& table, float* rgba, std::size_t count) {
+    const Consts k(table);
+    const float* t = table.rgb;
+    const __m256 half = _mm256_set1_ps(0.5f);
+    forEachBlock(rgba, count, [&](float* p) {
+        Block blk;
+        loadBlock(k, p, blk);
+        // Round half up, as the scalar sampler: the next entry where frac >= 0.5.
+        __m256i off = blk.base;
+        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[0], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.dr)));
+        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[1], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.dg)));
+        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[2], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.db)));
+        alignas(32) int idx[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(idx), off);
+        for (int q = 0; q < 4; ++q) {
+            const __m256 o = load2(t + idx[q], t + idx[q + 4]);
+            _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
+        }
+    });
+}
+
+void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count) {
+    const Consts k(table);
+    const float* t = table.rgb;
+    const int dg = k.dg, db = k.db;
+    forEachBlock(rgba, count, [&](float* p) {
+        Block blk;
+        loadBlock(k, p, blk);
+        const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
+        const __m256 gr = _mm256_sub_ps(k.one, fr), gg = _mm256_sub_ps(k.one, fg), gb = _mm256_sub_ps(k.one, fb);
+        // Weights of the four red-axis edges of the cell; products of 0 and 1 are exact, so
+        // lattice points still return their entries exactly.
+        alignas(32) float w00[8], w10[8], w01[8], w11[8], wr0[8], wr1[8];
+        alignas(32) int idx[8];
+        _mm256_store_ps(w00, _mm256_mul_ps(gg, gb));
+        _mm256_store_ps(w10, _mm256_mul_ps(fg, gb));
+        _mm256_store_ps(w01, _mm256_mul_ps(gg, fb));
+        _mm256_store_ps(w11, _mm256_mul_ps(fg, fb));
+        _mm256_store_ps(wr0, gr);
+        _mm256_store_ps(wr1, fr);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(idx), blk.base);
+        // One pixel per iteration in a full register: entries (r, g, b) and (r+1, g, b) are
+        // adjacent, so one 32-byte load fetches a whole red-axis edge; the weights come in as
+        // broadcast loads, which cost no shuffle.
+        for (int lane = 0; lane < 8; ++lane) {
+            const int pix = lane < 4 ? 2 * lane : 2 * (lane - 4) + 1; // transposed lane order
+            const float* e = t + idx[lane];
+            __m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(&w00[lane]), _mm256_loadu_ps(e));
+            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w10[lane]), _mm256_loadu_ps(e + dg), acc);
+            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w01[lane]), _mm256_loadu_ps(e + db), acc);
+            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w11[lane]), _mm256_loadu_ps(e + db + dg), acc);
+            const __m128 lo = _mm256_castps256_ps128(acc), hi = _mm256_extractf128_ps(acc, 1);
+            const __m128 o = _mm_fmadd_ps(_mm_broadcast_ss(&wr1[lane]), hi, _mm_mul_ps(_mm_broadcast_ss(&wr0[lane]), lo));
+            float* q = p + 4 * pix;
+            _mm_storeu_ps(q, _mm_blend_ps(o, _mm_loadu_ps(q), 0x8));
+        }
+    });
+}
+
+void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count) {
+    const Consts k(table);
+    const float* t = table.rgb;
+    const int dAll = k.dr + k.dg + k.db;
+    const __m256 offR = _mm256_castsi256_ps(_mm256_set1_epi32(k.dr));
+    const __m256 offG = _mm256_castsi256_ps(_mm256_set1_epi32(k.dg));
+    const __m256 offB = _mm256_castsi256_ps(_mm256_set1_epi32(k.db));
+    const __m256i all = _mm256_set1_epi32(dAll);
+    forEachBlock(rgba, count, [&](float* p) {
+        Block blk;
+        loadBlock(k, p, blk);
+        const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
+        // Sort the fractions: the tetrahedron runs c000 -> +max axis -> +max+mid axes -> c111.
+        // Ties pick either tetrahedron; the tied vertex then has weight exactly 0.
+        const __m256 rMax = _mm256_and_ps(_mm256_cmp_ps(fr, fg, _CMP_GE_OQ), _mm256_cmp_ps(fr, fb, _CMP_GE_OQ));
+        const __m256 gMax = _mm256_andnot_ps(rMax, _mm256_cmp_ps(fg, fb, _CMP_GE_OQ));
+        const __m256 bMin = _mm256_and_ps(_mm256_cmp_ps(fb, fr, _CMP_LE_OQ), _mm256_cmp_ps(fb, fg, _CMP_LE_OQ));
+        const __m256 gMin = _mm256_andnot_ps(bMin, _mm256_cmp_ps(fg, fr, _CMP_LE_OQ));
+        const __m256i offMax = _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offB, offG, gMax), offR, rMax));
+        const __m256i offMin = _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offR, offG, gMin), offB, bMin));
+        const __m256 fMax = _mm256_max_ps(fr, _mm256_max_ps(fg, fb));
+        const __m256 fMin = _mm256_min_ps(fr, _mm256_min_ps(fg, fb));
+        const __m256 fMid = _mm256_max_ps(_mm256_min_ps(fr, fg), _mm256_min_ps(_mm256_max_ps(fr, fg), fb));
+        __m256 w0 = _mm256_sub_ps(k.one, fMax), w1 = _mm256_sub_ps(fMax, fMid),
+               w2 = _mm256_sub_ps(fMid, fMin), w3 = fMin;
+        transpose4(w0, w1, w2, w3); // now one register per pixel pair: [w0 w1 w2 w3 | ...]
+        const __m256 wq[4] = {w0, w1, w2, w3};
+        alignas(32) int i0[8], iA[8], iB[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(i0), blk.base);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(iA), _mm256_add_epi32(blk.base, offMax));
+        _mm256_store_si256(reinterpret_cast<__m256i*>(iB),
+                           _mm256_add_epi32(blk.base, _mm256_sub_epi32(all, offMin)));
+        for (int q = 0; q < 4; ++q) {
+            const int a = q, b = q + 4;
+            const __m256 w = wq[q];
+            __m256 o = _mm256_mul_ps(_mm256_permute_ps(w, 0x00), load2(t + i0[a], t + i0[b]));
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0x55), load2(t + iA[a], t + iA[b]), o);
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xAA), load2(t + iB[a], t + iB[b]), o);
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xFF), load2(t + i0[a] + dAll, t + i0[b] + dAll), o);
+            _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
+        }
+    });
+}
+
+} // namespace lut::detail

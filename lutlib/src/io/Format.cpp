@@ -1,0 +1,113 @@
+#include "lut/io/Format.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace lut {
+
+Format::~Format() = default;
+
+FormatRegistry& FormatRegistry::instance() {
+    static FormatRegistry registry;
+    return registry;
+}
+
+void FormatRegistry::add(std::unique_ptr<Format> format) {
+    if (byName(format->name())) return; // registering twice is harmless
+    m_formats.push_back(std::move(format));
+}
+
+const Format* FormatRegistry::byName(const std::string& name) const {
+    for (const auto& f : m_formats)
+        if (f->name() == name) return f.get();
+    return nullptr;
+}
+
+std::string extensionOf(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+    std::string ext = path.substr(dot);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+std::vector<const Format*> FormatRegistry::forExtension(const std::string& path) const {
+    const std::string ext = extensionOf(path);
+    std::vector<const Format*> out;
+    for (const auto& f : m_formats) {
+        const auto exts = f->extensions();
+        if (std::find(exts.begin(), exts.end(), ext) != exts.end()) out.push_back(f.get());
+    }
+    return out;
+}
+
+const Format* FormatRegistry::writerForPath(const std::string& path) const {
+    for (const Format* f : forExtension(path))
+        if (f->canWrite()) return f;
+    return nullptr;
+}
+
+std::vector<const Format*> FormatRegistry::all() const {
+    std::vector<const Format*> out;
+    for (const auto& f : m_formats) out.push_back(f.get());
+    return out;
+}
+
+static std::string knownExtensions(const std::vector<std::unique_ptr<Format>>& formats, bool read) {
+    std::vector<std::string> exts;
+    for (const auto& f : formats)
+        if (read ? f->canRead() : f->canWrite())
+            for (const auto& e : f->extensions())
+                if (std::find(exts.begin(), exts.end(), e) == exts.end()) exts.push_back(e);
+    std::string s;
+    for (const auto& e : exts) s += (s.empty() ? "" : " ") + e;
+    return s;
+}
+
+LutFile FormatRegistry::read(const std::string& path, const FormatOptions& options,
+                             const std::string& formatName) const {
+    std::vector<const Format*> candidates;
+    if (!formatName.empty()) {
+        const Format* f = byName(formatName);
+        if (!f) throw Error("unknown format '" + formatName + "'");
+        candidates.push_back(f);
+    } else {
+        candidates = forExtension(path);
+    }
+    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                    [](const Format* f) { return !f->canRead(); }),
+                     candidates.end());
+    if (candidates.empty())
+        throw Error(path + ": no format reads '" + extensionOf(path) +
+                    "' files (readable: " + knownExtensions(m_formats, true) + ")");
+    if (candidates.size() == 1) return candidates.front()->read(path, options);
+    // Several formats claim the extension: the first that succeeds wins; otherwise report all.
+    std::string reasons;
+    for (const Format* f : candidates) {
+        try {
+            return f->read(path, options);
+        } catch (const Error& e) {
+            reasons += (reasons.empty() ? "" : "; ") + f->name() + ": " + e.what();
+        }
+    }
+    throw Error(path + ": no format could read it (" + reasons + ")");
+}
+
+Diagnostics FormatRegistry::write(const std::string& path, const LutFile& lut,
+                                  const FormatOptions& options, const std::string& formatName) const {
+    const Format* f = nullptr;
+    if (!formatName.empty()) {
+        f = byName(formatName);
+        if (!f) throw Error("unknown format '" + formatName + "'");
+    } else {
+        f = writerForPath(path);
+    }
+    if (!f || !f->canWrite())
+        throw Error(path + ": no format writes '" + extensionOf(path) +
+                    "' files (writable: " + knownExtensions(m_formats, false) + ")");
+    return f->write(path, lut, options);
+}
+
+} // namespace lut

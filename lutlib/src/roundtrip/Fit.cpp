@@ -1,0 +1,411 @@
+// Regularised least-squares LUT fit from a before/after pair: see Fit.h for the model.
+#include "lut/roundtrip/Fit.h"
+
+#include "lut/Limits.h"
+#include "lut/Parallel.h"
+#include "lut/interp/Sampler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <unordered_set>
+
+namespace lut {
+
+namespace {
+
+struct Sample {
+    std::uint32_t base; // lattice index of the cell's lower corner
+    float f[3];         // fractions inside the cell
+    float y[3];         // edited value
+};
+
+// Offsets of the 27-point stencil: o = (dr+1) + 3(dg+1) + 9(db+1).
+constexpr int kStencil = 27;
+constexpr int kCentre = 13;
+
+float sanitize(float v) { return std::isfinite(v) ? v : 0.0f; }
+
+void cornerWeights(const float f[3], double w[8]) {
+    for (int a = 0; a < 8; ++a) {
+        const double wr = (a & 1) ? f[0] : 1.0 - f[0];
+        const double wg = (a & 2) ? f[1] : 1.0 - f[1];
+        const double wb = (a & 4) ? f[2] : 1.0 - f[2];
+        w[a] = wr * wg * wb;
+    }
+}
+
+class System {
+public:
+    System(int n, double lambda, double mu) : m_n(n), m_count(std::size_t(n) * n * n), m_lambda(lambda), m_mu(mu) {
+        m_data.assign(m_count * kStencil, 0.0);
+    }
+    std::size_t count() const { return m_count; }
+    std::vector<double>& data() { return m_data; }
+
+    // Marks the nodes whose stencil row holds data (after assembly): most of a sparsely covered
+    // cube has none, and apply() skips those rows.
+    void finishAssembly() {
+        m_hasData.assign(m_count, 0);
+        for (std::size_t i = 0; i < m_count; ++i)
+            for (int o = 0; o < kStencil; ++o)
+                if (m_data[i * kStencil + o] != 0.0) {
+                    m_hasData[i] = 1;
+                    break;
+                }
+    }
+
+    // y = A v (data + lambda * smoothness + mu * I)
+    void apply(const std::vector<double>& v, std::vector<double>& y) const {
+        const int n = m_n;
+        const std::size_t nn = std::size_t(n) * n;
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    const std::size_t i = std::size_t(r) + std::size_t(n) * g + nn * b;
+                    double acc = m_mu * v[i];
+                    if (m_hasData[i]) {
+                        const double* row = &m_data[i * kStencil];
+                        for (int db = -1; db <= 1; ++db) {
+                            if (b + db < 0 || b + db >= n) continue;
+                            for (int dg = -1; dg <= 1; ++dg) {
+                                if (g + dg < 0 || g + dg >= n) continue;
+                                for (int dr = -1; dr <= 1; ++dr) {
+                                    if (r + dr < 0 || r + dr >= n) continue;
+                                    const double m = row[(dr + 1) + 3 * (dg + 1) + 9 * (db + 1)];
+                                    if (m != 0.0)
+                                        acc += m * v[std::size_t(std::ptrdiff_t(i) + dr + std::ptrdiff_t(n) * dg +
+                                                                 std::ptrdiff_t(nn) * db)];
+                                }
+                            }
+                        }
+                    }
+                    y[i] = acc;
+                }
+        if (m_lambda > 0.0) addSmoothness(v, y);
+    }
+
+    std::vector<double> diagonal() const {
+        std::vector<double> d(m_count);
+        const int n = m_n;
+        auto axisDiag = [n](int i) {
+            double s = 0.0;
+            if (i >= 1 && i <= n - 2) s += 4.0;
+            if (i - 1 >= 1 && i - 1 <= n - 2) s += 1.0;
+            if (i + 1 >= 1 && i + 1 <= n - 2) s += 1.0;
+            return s;
+        };
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    const std::size_t i = std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
+                    d[i] = m_data[i * kStencil + kCentre] + m_mu +
+                           m_lambda * (axisDiag(r) + axisDiag(g) + axisDiag(b));
+                }
+        return d;
+    }
+
+private:
+    void addSmoothness(const std::vector<double>& v, std::vector<double>& y) const {
+        const int n = m_n;
+        const std::ptrdiff_t strides[3] = {1, n, std::ptrdiff_t(n) * n};
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::ptrdiff_t s = strides[axis];
+            for (int b = 0; b < n; ++b)
+                for (int g = 0; g < n; ++g)
+                    for (int r = 0; r < n; ++r) {
+                        const int coord = axis == 0 ? r : axis == 1 ? g : b;
+                        if (coord < 1 || coord > n - 2) continue;
+                        const std::ptrdiff_t i = r + std::ptrdiff_t(n) * (g + std::ptrdiff_t(n) * b);
+                        const double d = m_lambda * (v[i - s] - 2.0 * v[i] + v[i + s]);
+                        y[i - s] += d;
+                        y[i] -= 2.0 * d;
+                        y[i + s] += d;
+                    }
+        }
+    }
+
+    int m_n;
+    std::size_t m_count;
+    double m_lambda;
+    double m_mu;
+    std::vector<double> m_data;
+    std::vector<std::uint8_t> m_hasData;
+};
+
+// Jacobi-preconditioned conjugate gradients; x holds the start and receives the solution.
+int solveCg(const System& sys, const std::vector<double>& diag, const std::vector<double>& rhs,
+            std::vector<double>& x, int maxIterations, double tolerance, bool& converged) {
+    const std::size_t n = sys.count();
+    std::vector<double> r(n), z(n), p(n), q(n);
+    sys.apply(x, q);
+    double bnorm = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        r[i] = rhs[i] - q[i];
+        bnorm += rhs[i] * rhs[i];
+    }
+    bnorm = std::sqrt(bnorm);
+    if (bnorm == 0.0) bnorm = 1.0;
+    double rz = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        z[i] = r[i] / diag[i];
+        p[i] = z[i];
+        rz += r[i] * z[i];
+    }
+    converged = false;
+    int it = 0;
+    for (; it < maxIterations; ++it) {
+        double rnorm = 0.0;
+        for (std::size_t i = 0; i < n; ++i) rnorm += r[i] * r[i];
+        if (std::sqrt(rnorm) <= tolerance * bnorm) {
+            converged = true;
+            break;
+        }
+        sys.apply(p, q);
+        double pq = 0.0;
+        for (std::size_t i = 0; i < n; ++i) pq += p[i] * q[i];
+        if (!(pq > 0.0)) break; // cannot happen for an SPD system; guards round-off
+        const double alpha = rz / pq;
+        for (std::size_t i = 0; i < n; ++i) {
+            x[i] += alpha * p[i];
+            r[i] -= alpha * q[i];
+        }
+        double rzNew = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            z[i] = r[i] / diag[i];
+            rzNew += r[i] * z[i];
+        }
+        const double beta = rzNew / rz;
+        rz = rzNew;
+        for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
+    }
+    return it;
+}
+
+void warn(FitResult& res, RoundtripWarning w, const std::string& message) {
+    res.warnings.push_back(w);
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.message = message;
+    res.diagnostics.push_back(std::move(d));
+}
+
+std::string fmt(const char* f, double a, double b = 0, double c = 0) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, f, a, b, c);
+    return buf;
+}
+
+} // namespace
+
+bool FitResult::has(RoundtripWarning w) const {
+    return std::find(warnings.begin(), warnings.end(), w) != warnings.end();
+}
+
+namespace {
+FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o, const Lut3D* start);
+}
+
+FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptions& o) {
+    return fitImpl(before, after, o, nullptr);
+}
+
+namespace {
+
+FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o, const Lut3D* start) {
+    if (before.empty() || after.empty()) throw Error("fit: empty image");
+    if (before.width != after.width || before.height != after.height)
+        throw Error("fit: the images differ in size (" + std::to_string(before.width) + "x" +
+                    std::to_string(before.height) + " vs " + std::to_string(after.width) + "x" +
+                    std::to_string(after.height) + ")");
+    const int n = o.size;
+    if (n < limits::kMin3DSize || n > 129)
+        throw Error("fit: size must be 2..129, not " + std::to_string(n));
+    if (!(o.smoothness >= 0.0) || !std::isfinite(o.smoothness)) throw Error("fit: smoothness must be >= 0");
+
+    FitResult res;
+    // --- samples ---
+    std::vector<Sample> samples;
+    samples.reserve(static_cast<std::size_t>(std::min<double>(static_cast<double>(before.width) * before.height, 8.0e6 + 1e5)));
+    std::unordered_set<std::uint32_t> colours;
+    const int cells = n - 1;
+    std::vector<std::uint8_t> cellHit(std::size_t(cells) * cells * cells, 0);
+    // Beyond ~8 megapixels a regular subsample says as much about a global edit (and bounds the
+    // memory: 28 bytes per sample).
+    constexpr double kMaxSamples = 8.0e6;
+    const double total = static_cast<double>(before.width) * before.height;
+    const int step = total > kMaxSamples ? static_cast<int>(std::ceil(std::sqrt(total / kMaxSamples))) : 1;
+    for (int y = 0; y < before.height; y += step)
+        for (int x = 0; x < before.width; x += step) {
+            const float* a = before.pixel(x, y);
+            const float* b = after.pixel(x, y);
+            Sample s{};
+            int idx[3];
+            std::uint32_t key = 0;
+            for (int c = 0; c < 3; ++c) {
+                const float v = std::clamp(sanitize(a[c]), 0.0f, 1.0f);
+                const float pos = v * static_cast<float>(cells);
+                idx[c] = std::min(static_cast<int>(pos), cells - 1);
+                s.f[c] = pos - static_cast<float>(idx[c]);
+                s.y[c] = std::clamp(sanitize(b[c]), -1.0f, 2.0f);
+                key = (key << 8) | static_cast<std::uint32_t>(std::lround(v * 255.0f));
+            }
+            s.base = static_cast<std::uint32_t>(idx[0] + n * (idx[1] + n * idx[2]));
+            cellHit[std::size_t(idx[0]) + std::size_t(cells) * (idx[1] + std::size_t(cells) * idx[2])] = 1;
+            if (colours.size() < 100000) colours.insert(key);
+            samples.push_back(s);
+        }
+    res.pixels = samples.size();
+    res.distinctColours = colours.size();
+    std::size_t hit = 0;
+    for (auto h : cellHit) hit += h;
+    res.extrapolatedShare = 1.0 - static_cast<double>(hit) / static_cast<double>(cellHit.size());
+
+    const std::size_t nn = std::size_t(n) * n;
+    const std::ptrdiff_t cornerOffset[8] = {0, 1, n, n + 1, std::ptrdiff_t(nn), std::ptrdiff_t(nn) + 1,
+                                            std::ptrdiff_t(nn) + n, std::ptrdiff_t(nn) + n + 1};
+    auto stencilIndex = [](int a, int b) {
+        const int dr = ((b & 1) - (a & 1)), dg = ((b >> 1 & 1) - (a >> 1 & 1)), db = ((b >> 2 & 1) - (a >> 2 & 1));
+        return (dr + 1) + 3 * (dg + 1) + 9 * (db + 1);
+    };
+
+    // The ridge is tiny next to the data and the smoothness: it only pins directions nothing else
+    // determines, towards the identity.
+    const double mu = 1e-4 * std::max(o.smoothness, 1e-3);
+    std::vector<double> weights(samples.size(), 1.0);
+    std::vector<std::vector<double>> solution(3, std::vector<double>(std::size_t(n) * nn));
+    // Start from a fit on the lattice of half the resolution (recursively): CG removes the
+    // high frequencies quickly and the smooth fill of empty regions slowly, which the coarse
+    // solution already holds (a cascade, the cheap half of multigrid).
+    Lut3D coarse;
+    if (!start && n > 9) {
+        FitOptions co = o;
+        co.size = (n + 1) / 2;
+        co.robustRounds = std::min(o.robustRounds, 2);
+        coarse = fitImpl(before, after, co, nullptr).lut;
+        start = &coarse;
+    }
+    std::unique_ptr<Sampler> startSampler;
+    if (start) startSampler = makeSampler(*start, Interpolation::Trilinear);
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const std::size_t i = std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
+                glm::vec3 v = glm::vec3(r, g, b) / static_cast<float>(cells);
+                if (startSampler) v = startSampler->sample(v);
+                solution[0][i] = v.x;
+                solution[1][i] = v.y;
+                solution[2][i] = v.z;
+            }
+
+    const int rounds = o.robust ? std::max(1, o.robustRounds + 1) : 1;
+    const double delta = o.huberSteps / 255.0;
+    std::mutex mutex;
+    for (int round = 0; round < rounds; ++round) {
+        System sys(n, o.smoothness, mu);
+        std::vector<std::vector<double>> rhs(3, std::vector<double>(sys.count(), 0.0));
+        // identity prior on the right-hand side
+        for (int c = 0; c < 3; ++c)
+            for (int b = 0; b < n; ++b)
+                for (int g = 0; g < n; ++g)
+                    for (int r = 0; r < n; ++r) {
+                        const int coord[3] = {r, g, b};
+                        rhs[c][std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b)] = mu * coord[c] / cells;
+                    }
+        parallelFor(static_cast<int>(samples.size()), o.nthreads, [&](int begin, int end) {
+            std::vector<double> local(sys.count() * kStencil, 0.0);
+            std::vector<double> localRhs(sys.count() * 3, 0.0);
+            double w[8];
+            for (int p = begin; p < end; ++p) {
+                const Sample& s = samples[p];
+                const double pw = weights[p];
+                if (pw <= 0.0) continue;
+                cornerWeights(s.f, w);
+                for (int a = 0; a < 8; ++a) {
+                    if (w[a] == 0.0) continue;
+                    const std::size_t node = s.base + cornerOffset[a];
+                    double* row = &local[node * kStencil];
+                    for (int b = 0; b < 8; ++b) row[stencilIndex(a, b)] += pw * w[a] * w[b];
+                    for (int c = 0; c < 3; ++c) localRhs[node * 3 + c] += pw * w[a] * s.y[c];
+                }
+            }
+            std::lock_guard<std::mutex> lock(mutex);
+            auto& global = sys.data();
+            for (std::size_t i = 0; i < local.size(); ++i) global[i] += local[i];
+            for (std::size_t i = 0; i < sys.count(); ++i)
+                for (int c = 0; c < 3; ++c) rhs[c][i] += localRhs[i * 3 + c];
+        });
+        sys.finishAssembly();
+        const std::vector<double> diag = sys.diagonal();
+        int iterations[3] = {0, 0, 0};
+        bool conv[3] = {true, true, true};
+        parallelFor(3, o.nthreads, [&](int begin, int end) {
+            for (int c = begin; c < end; ++c) {
+                bool cv = false;
+                iterations[c] = solveCg(sys, diag, rhs[c], solution[c], o.maxIterations, o.tolerance, cv);
+                conv[c] = cv;
+            }
+        });
+        res.iterations += std::max({iterations[0], iterations[1], iterations[2]});
+        res.converged = conv[0] && conv[1] && conv[2];
+
+        // residuals -> Huber weights for the next round (and the final statistics)
+        double sumSq = 0.0, maxAbs = 0.0;
+        std::size_t outliers = 0;
+        double w[8];
+        for (std::size_t p = 0; p < samples.size(); ++p) {
+            const Sample& s = samples[p];
+            cornerWeights(s.f, w);
+            double worst = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                double v = 0.0;
+                for (int a = 0; a < 8; ++a)
+                    if (w[a] != 0.0) v += w[a] * std::clamp(solution[c][s.base + cornerOffset[a]], 0.0, 1.0);
+                const double e = std::fabs(v - s.y[c]);
+                sumSq += e * e;
+                worst = std::max(worst, e);
+            }
+            maxAbs = std::max(maxAbs, worst);
+            if (worst > 4.0 * delta) ++outliers;
+            weights[p] = worst <= delta ? 1.0 : delta / worst;
+        }
+        res.rmsSteps8 = samples.empty() ? 0.0 : std::sqrt(sumSq / (3.0 * samples.size())) * 255.0;
+        res.maxSteps8 = maxAbs * 255.0;
+        res.outlierPixels = outliers;
+    }
+
+    res.lut = Lut3D(n);
+    for (std::size_t i = 0; i < res.lut.entryCount(); ++i)
+        res.lut.entries()[i] = glm::vec3(static_cast<float>(std::clamp(solution[0][i], 0.0, 1.0)),
+                                         static_cast<float>(std::clamp(solution[1][i], 0.0, 1.0)),
+                                         static_cast<float>(std::clamp(solution[2][i], 0.0, 1.0)));
+    res.lut.setTitle("fitted from a before/after pair");
+
+    if (!res.converged)
+        warn(res, RoundtripWarning::FewColours,
+             fmt("the solver stopped after %g iterations before converging: the fit may be rough", res.iterations));
+    if (res.distinctColours < 64)
+        warn(res, RoundtripWarning::FewColours,
+             fmt("the before image has only %g distinct colours: the fit is exact at those and a smooth "
+                 "guess everywhere else",
+                 double(res.distinctColours)));
+    if (res.extrapolatedShare > 0.9)
+        warn(res, RoundtripWarning::LowCoverage,
+             fmt("the pixels cover only %.3g%% of the %g^3 lattice cells; %.3g%% of the cube is extrapolated "
+                 "(colours the screenshot does not contain follow a smooth continuation)",
+                 100.0 * (1.0 - res.extrapolatedShare), double(n), 100.0 * res.extrapolatedShare));
+    if (res.pixels > 0 && res.outlierPixels * 100 > res.pixels)
+        warn(res, RoundtripWarning::Outliers,
+             fmt("%.3g%% of the pixels (%g) are more than %g 8-bit steps off any global colour edit (local "
+                 "edits, noise, misaligned images?); the robust fit down-weighted them",
+                 100.0 * double(res.outlierPixels) / double(res.pixels), double(res.outlierPixels),
+                 4.0 * o.huberSteps));
+    return res;
+}
+
+} // namespace
+
+} // namespace lut
