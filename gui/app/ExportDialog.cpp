@@ -78,7 +78,7 @@ ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
     m_compensate = new QCheckBox(tr("Game compensation (Smash): the game shows this LUT's look"), this);
     m_compensate->setObjectName("compensate");
     m_compensate->setToolTip(tr("Writes the 16³ LUT that makes Smash Ultimate's grading and "
-                                "brighten pass reproduce the LUT as edited (docs/smash-pipeline.md)"));
+                                "brighten pass reproduce the LUT as edited (docs/specs/smash-pipeline.md)"));
     form->addRow(QString(), m_compensate);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);

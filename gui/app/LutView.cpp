@@ -54,7 +54,7 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     auto* form = new QFormLayout;
     m_layout = new QComboBox(this);
     for (LutLayout l : allLayouts()) m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
-    m_layout->setToolTip(tr("Layout of the slices (see docs/strip-layouts.md)"));
+    m_layout->setToolTip(tr("Layout of the slices (see docs/specs/strip-layouts.md)"));
     form->addRow(tr("Layout"), m_layout);
     m_wrap = new QCheckBox(tr("Show slices as a grid"), this);
     m_wrap->setChecked(true);

@@ -1,6 +1,6 @@
 #pragma once
 // Authoring for the game: the LUT to ship so that Smash Ultimate's grading + brighten pass
-// (docs/smash-pipeline.md, "The Smush compensation") shows the edited LUT's look.
+// (docs/specs/smash-pipeline.md, "The Smush compensation") shows the edited LUT's look.
 #include "lut/Lut3D.h"
 
 namespace lut::gui {

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers for the pipeline tests: deterministic scenes and float64 reference maths written from
-// docs/smash-pipeline.md (independent of lutlib's implementation).
+// docs/specs/smash-pipeline.md (independent of lutlib's implementation).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 
@@ -61,7 +61,7 @@ inline Lut3D makeWarmLut(int n = 16, double amount = 1.0) {
     return l;
 }
 
-// ---- float64 reference of docs/smash-pipeline.md ----
+// ---- float64 reference of docs/specs/smash-pipeline.md ----
 
 struct RefImg {
     int w = 0, h = 0, ch = 3;

@@ -1,5 +1,5 @@
 // Every Smash stage against the float64 reference in PipelineTestUtil.h (written from
-// docs/smash-pipeline.md, not from lutlib), on small odd-sized frames, to 1e-5.
+// docs/specs/smash-pipeline.md, not from lutlib), on small odd-sized frames, to 1e-5.
 #include "PipelineTestUtil.h"
 
 #include "lut/interp/Sampler.h"

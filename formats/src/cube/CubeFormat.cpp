@@ -1,6 +1,6 @@
 // .cube: Adobe Cube LUT Specification 1.0 and the DaVinci Resolve dialect.
 //
-// The spec in short (docs/cube-format.md): text, one item per line (keyword, '#' comment or
+// The spec in short (docs/specs/cube-format.md): text, one item per line (keyword, '#' comment or
 // data), lines at most 250 bytes, LF ends. Keywords before the data, each once, upper case:
 // TITLE "text", DOMAIN_MIN r g b / DOMAIN_MAX r g b (default 0 0 0 / 1 1 1, min < max), and one of
 // LUT_1D_SIZE N (2..65536) or LUT_3D_SIZE N (2..256). Data: 3 floats per line, N rows (1D) or N^3

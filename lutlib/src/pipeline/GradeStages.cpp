@@ -15,7 +15,7 @@ std::shared_ptr<const Lut3D> neutralSmashLut() {
     return l;
 }
 
-// docs/smash-pipeline.md section 2: per pixel, s = x^0.454545; L = trilinear(lut, s);
+// docs/specs/smash-pipeline.md section 2: per pixel, s = x^0.454545; L = trilinear(lut, s);
 // r = ((L - s) * 0.99961 + s) * 1.3703; g = r^2.2; out = mix(x, g, clamp(alpha, 0, 1)).
 // The pow()s are FastMath.h's polynomial pows (< 4e-7 relative), run 8 pixels at a time by
 // ArrayKernels; the LUT goes through the sampler's own kernel. When the pipeline fuses the display

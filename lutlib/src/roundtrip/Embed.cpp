@@ -1,5 +1,5 @@
 // Embed / find / extract a neutral LUT patch in a screenshot. Design notes in Embed.h and
-// docs/roundtrip.md; the Smash compensation follows ../shared/docs/smash-pipeline.md.
+// docs/roundtrip.md; the Smash compensation follows docs/specs/smash-pipeline.md.
 #include "lut/roundtrip/Embed.h"
 
 #include "lut/Limits.h"

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Builds the nutexb golden files and the malformed corpus (one defect per file) straight from
-the formulas in shared/docs/nutexb.md, independently of lutkit's writer. Re-run to regenerate.
+the formulas in docs/specs/nutexb.md, independently of lutkit's writer. Re-run to regenerate.
 The expected error for each bad_*.nutexb is asserted in tests/formats/test_nutexb_malformed.cpp."""
 import hashlib, os, struct
 

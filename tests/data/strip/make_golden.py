@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Golden LUT images for tests/formats/test_strip_golden.cpp, written with a minimal PNG encoder
-(zlib + struct) straight from the layout formulas of shared/docs/strip-layouts.md, independently
+(zlib + struct) straight from the layout formulas of docs/specs/strip-layouts.md, independently
 of lutkit and OpenImageIO. Re-run to regenerate (also writes ../hald/)."""
 import os, struct, zlib
 

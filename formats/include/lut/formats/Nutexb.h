@@ -1,6 +1,6 @@
 #pragma once
 // Smash Ultimate nutexb volumes (color_grading_lut.nutexb) and the Tegra X1 block-linear tiling
-// they are stored in. The byte contract is ../shared/docs/nutexb.md; this header exposes the
+// they are stored in. The byte contract is docs/specs/nutexb.md; this header exposes the
 // pieces to tests and fuzzers: the tiling maths and reading/writing from bytes in memory.
 #include "lut/io/Format.h"
 #include "lut/Lut3D.h"

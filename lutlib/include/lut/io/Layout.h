@@ -1,6 +1,6 @@
 #pragma once
 // LUT image layouts: where entry (r, g, b) of an N^3 LUT sits in a 2D picture. See
-// ../shared/docs/strip-layouts.md. Pixel (x, y) has y = 0 at the top row.
+// docs/specs/strip-layouts.md. Pixel (x, y) has y = 0 at the top row.
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 

@@ -11,7 +11,7 @@
 //   hdr-bloom             lecture: max(x - 1, 0), Gaussian, add
 //   filter-bloom          Pilot homework: luminance soft-knee filter, separable 9-tap Gaussian, add
 //   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur, C*f0 +
-//   B*(1-i)*f1 smash-bloom           Smash Ultimate bloom, exactly (docs/smash-pipeline.md section
+//   B*(1-i)*f1 smash-bloom           Smash Ultimate bloom, exactly (docs/specs/smash-pipeline.md section
 //   1) chromatic-aberration  r and b sampled at slightly different radial distances vignette darken
 //   by distance to the centre grain                 seeded film grain (same seed + frame index ->
 //   same frame) smash-grade           Smash grading LUT + brighten + alpha mix (section 2) lut any

@@ -1,5 +1,5 @@
 #pragma once
-// The Smash Ultimate colour grading + brighten pass (docs/smash-pipeline.md section 2) as plain
+// The Smash Ultimate colour grading + brighten pass (docs/specs/smash-pipeline.md section 2) as plain
 // functions, shared by the preview pipeline (lutlib/src/pipeline), the screenshot "deprocess" and
 // the round-trip code that authors game-compensated LUTs (embed/extract --target smash).
 //
