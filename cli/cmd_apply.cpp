@@ -9,6 +9,7 @@
 #include "lut/interp/Interpolation.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
+#include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 
@@ -25,32 +26,6 @@
 namespace lut::cli {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-bool isImageFile(const fs::path& p) {
-    std::string e = p.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    static const std::set<std::string> exts = {".png", ".jpg", ".jpeg", ".tif", ".tiff",
-                                               ".exr", ".bmp", ".tga",  ".hdr", ".webp",
-                                               ".dpx", ".psd", ".gif"};
-    return exts.count(e) > 0;
-}
-
-std::string lowerExtension(const std::string& path) {
-    std::string e = fs::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return e;
-}
-
-} // namespace
-
-bool outputCanHoldAlpha(const std::string& path) {
-    const std::string e = lowerExtension(path);
-    return e != ".jpg" && e != ".jpeg" && e != ".bmp" && e != ".hdr";
-}
 
 bool planBatch(const std::vector<std::string>& positionals, const std::string& outputDir,
                const std::string& outExtension, std::vector<BatchJob>& jobs, std::string& error) {
@@ -74,7 +49,7 @@ bool planBatch(const std::vector<std::string>& positionals, const std::string& o
         std::error_code ec;
         if (fs::is_directory(in, ec)) {
             for (const auto& e : fs::directory_iterator(in, ec))
-                if (e.is_regular_file(ec) && isImageFile(e.path()))
+                if (e.is_regular_file(ec) && formats::isImageExtension(e.path().string()))
                     files.push_back(e.path());
             std::sort(files.begin(), files.end());
         } else {
@@ -181,7 +156,7 @@ int runApply(const ApplyOptions& o) {
         formats::ImageWriteOptions w;
         w.bitDepth = img.info.isFloat || img.info.bitDepth == 0 ? 32 : img.info.bitDepth;
         w.alpha =
-            (img.info.channels == 2 || img.info.channels >= 4) && outputCanHoldAlpha(j.output);
+            (img.info.channels == 2 || img.info.channels >= 4) && formats::canHoldAlpha(j.output);
         formats::writeImage(j.output, img.image, w);
         return std::string();
     });

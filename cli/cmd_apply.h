@@ -32,9 +32,6 @@ struct BatchJob {
 bool planBatch(const std::vector<std::string>& positionals, const std::string& outputDir,
                const std::string& outExtension, std::vector<BatchJob>& jobs, std::string& error);
 
-// Whether an output file of this extension can store an alpha channel (JPEG, BMP, HDR cannot).
-bool outputCanHoldAlpha(const std::string& path);
-
 // Runs fn for every job on up to `threads` workers (files in parallel; a single file gets all
 // threads as innerThreads). fn throws on failure; the batch keeps going, shows a progress bar on a
 // terminal (stderr, quiet otherwise), then lists every failure. Returns the exit code (1 if any

@@ -8,6 +8,7 @@
 #include "cmd_apply.h"
 
 #include "lut/Error.h"
+#include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
@@ -23,30 +24,6 @@
 namespace lut::cli {
 
 namespace {
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
-// Output bit depth: the input's when it is integer; for float input what the format holds.
-int outputBitDepth(const formats::ImageInfo& in, const std::string& outPath, int requested) {
-    if (requested)
-        return requested;
-    if (!in.isFloat && (in.bitDepth == 8 || in.bitDepth == 16)) {
-        const std::string e = lower(std::filesystem::path(outPath).extension().string());
-        if (in.bitDepth == 16 && (e == ".jpg" || e == ".jpeg" || e == ".bmp" || e == ".gif"))
-            return 8;
-        return in.bitDepth;
-    }
-    const std::string e = lower(std::filesystem::path(outPath).extension().string());
-    if (e == ".exr" || e == ".hdr" || e == ".pfm")
-        return 32;
-    if (e == ".png" || e == ".tif" || e == ".tiff")
-        return 16;
-    return 8;
-}
 
 std::string listStages(const Pipeline& p) {
     std::ostringstream os;
@@ -119,11 +96,8 @@ int runPreview(const PreviewOptions& o) {
         run.nthreads = inner;
         run.frameIndex = o.frame;
         const PipelineReport report = pipeline.run(img.image.view(), run);
-        formats::ImageWriteOptions w;
-        w.bitDepth = outputBitDepth(img.info, j.output, o.bitDepth);
-        w.alpha =
-            (img.info.channels == 2 || img.info.channels >= 4) && outputCanHoldAlpha(j.output);
-        formats::writeImage(j.output, img.image, w);
+        formats::writeImage(j.output, img.image,
+                            formats::renderedImageWriteOptions(img.info, j.output, o.bitDepth));
         std::ostringstream text;
         {
             std::lock_guard<std::mutex> lock(noteMutex);

@@ -3,6 +3,7 @@
 #include "Commands.h"
 
 #include "lut/Error.h"
+#include "lut/Version.h"
 
 #include <CLI/CLI.hpp>
 
@@ -48,7 +49,7 @@ template <class Fn> void guarded(Fn&& fn) {
 int main(int argc, char** argv) {
     CLI::App app{"lutkit: author and convert colour grading LUTs", "lutkit"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "lutkit 0.1.0");
+    app.set_version_flag("--version", std::string("lutkit ") + LUTKIT_VERSION);
 
     // Each setup_NAME.inc (owned with cmd_NAME.cpp) defines setupNAME(CLI::App&), which adds one
     // subcommand whose callback calls guarded([&]{ return runNAME(options); }).

@@ -10,6 +10,8 @@
 #include "lut/interp/Interpolation.h"
 #include "lut/formats/Registry.h"
 
+#include "lut/Version.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QPalette>
@@ -60,7 +62,7 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("lutkit"));
     QApplication::setApplicationName(QStringLiteral("lutkit-editor"));
-    QApplication::setApplicationVersion(QStringLiteral("0.1"));
+    QApplication::setApplicationVersion(QStringLiteral(LUTKIT_VERSION));
     applyDarkTheme(app);
     lut::formats::registerBuiltinFormats();
 

@@ -10,6 +10,7 @@
 #include "lut/Error.h"
 #include "lut/io/Format.h"
 #include "lut/interp/Sampler.h"
+#include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 
@@ -545,8 +546,8 @@ bool MainWindow::savePreviewImage(const QString& path) {
     try {
         // Always a fresh full-resolution render: the view may show a proxy.
         PreviewResult r = renderPreview(*m_doc->sceneImage(), previewOptions(), m_doc->effectiveLutShared());
-        formats::ImageWriteOptions o;
-        previewWriteFormat(m_doc->imageInfo(), path.toStdString(), o.bitDepth, o.alpha);
+        const formats::ImageWriteOptions o =
+            formats::renderedImageWriteOptions(m_doc->imageInfo(), path.toStdString());
         formats::writeImage(path.toStdString(), r.image, o);
     } catch (const std::exception& e) {
         QApplication::restoreOverrideCursor();

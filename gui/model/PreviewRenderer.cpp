@@ -17,21 +17,6 @@ Image prepareScene(const Image& stored, bool storedIsLinear, bool fromScreenshot
     return scene;
 }
 
-void previewWriteFormat(const formats::ImageInfo& in, const std::string& outPath, int& bitDepth,
-                        bool& alpha) {
-    // Mirrors cli/cmd_preview.cpp: the input's integer depth, else what the format holds.
-    std::string e = extensionOf(outPath);
-    alpha = in.channels == 2 || in.channels >= 4;
-    if (!in.isFloat && (in.bitDepth == 8 || in.bitDepth == 16)) {
-        bitDepth = (in.bitDepth == 16 && (e == ".jpg" || e == ".jpeg" || e == ".bmp" || e == ".gif"))
-                       ? 8 : in.bitDepth;
-        return;
-    }
-    if (e == ".exr" || e == ".hdr" || e == ".pfm") bitDepth = 32;
-    else if (e == ".png" || e == ".tif" || e == ".tiff") bitDepth = 16;
-    else bitDepth = 8;
-}
-
 bool brightenToggleAvailable() {
     static const bool available = [] {
         try {

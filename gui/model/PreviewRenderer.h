@@ -29,10 +29,6 @@ struct PreviewOptions {
 Image prepareScene(const Image& stored, bool storedIsLinear, bool fromScreenshot = false,
                    int nthreads = 0);
 
-// The bit depth and alpha `lutkit preview` writes for an input of this kind to `outPath`.
-void previewWriteFormat(const formats::ImageInfo& input, const std::string& outPath, int& bitDepth,
-                        bool& alpha);
-
 // What a preview settings choice means for the pipeline.
 PipelineSettings pipelineSettings(const PreviewOptions& options,
                                   std::shared_ptr<const Lut3D> lut);
