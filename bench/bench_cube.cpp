@@ -28,12 +28,14 @@ struct CubeFixture {
 const CubeFixture& fixture(int size) {
     static std::map<int, CubeFixture> cache;
     auto it = cache.find(size);
-    if (it != cache.end()) return it->second;
+    if (it != cache.end())
+        return it->second;
     CubeFixture f;
     Lut3D l(size);
     std::mt19937 rng(static_cast<unsigned>(size));
     std::uniform_real_distribution<float> u(-0.05f, 1.05f);
-    for (auto& v : l.entries()) v = glm::vec3(u(rng), u(rng), u(rng));
+    for (auto& v : l.entries())
+        v = glm::vec3(u(rng), u(rng), u(rng));
     l.setTitle("bench");
     f.lut.cube = std::move(l);
     f.text = formats::writeCubeString(f.lut);
@@ -82,7 +84,8 @@ void BM_CubeWriteString(benchmark::State& state) {
 void BM_CubeWriteFile(benchmark::State& state) {
     const CubeFixture& f = fixture(static_cast<int>(state.range(0)));
     const std::string out = f.path + ".out.cube";
-    for (auto _ : state) formats::writeCube(out, f.lut);
+    for (auto _ : state)
+        formats::writeCube(out, f.lut);
     std::filesystem::remove(out);
     counters(state, f);
 }
@@ -108,7 +111,8 @@ void sizes(benchmark::internal::Benchmark* b, bool ocio) {
     const char* env = std::getenv("LUTKIT_BENCH_CUBE_MAX");
     const int max = env ? std::atoi(env) : 65;
     for (int n : {17, 33, 65, 129, 256})
-        if (n <= max && !(ocio && n > 129)) b->Arg(n); // OCIO refuses 3D sizes above 129
+        if (n <= max && !(ocio && n > 129))
+            b->Arg(n); // OCIO refuses 3D sizes above 129
     // Wall time: the writer formats on all cores, and wall time is what a user waits for.
     b->Unit(benchmark::kMillisecond)->UseRealTime();
 }

@@ -1,8 +1,9 @@
 // Google Benchmark: the LUT kernels on a 4K float RGBA frame, for every interpolation and LUT
 // size 16, 17, 33, 65, next to OpenColorIO's CPU processor on the same LUT and pixels and a
 // plain copy of the same bytes. Counters: ns_per_pixel, and for our kernels max_err / mean_err
-// against the analytic grade the LUT was sampled from (lut/bench/KernelBench.h in bench/support, shared with
-// `lutkit bench`). Frame size: LUTKIT_BENCH_WIDTH / LUTKIT_BENCH_HEIGHT (default 3840x2160).
+// against the analytic grade the LUT was sampled from (lut/bench/KernelBench.h in bench/support,
+// shared with `lutkit bench`). Frame size: LUTKIT_BENCH_WIDTH / LUTKIT_BENCH_HEIGHT (default
+// 3840x2160).
 #include "lut/bench/KernelBench.h"
 #include "lut/interp/Sampler.h"
 
@@ -42,20 +43,25 @@ Frames& frames() {
 const Lut3D& gradeLut(int size) {
     static std::map<int, Lut3D> cache;
     auto it = cache.find(size);
-    if (it == cache.end()) it = cache.emplace(size, sampleAnalyticGrade(size)).first;
+    if (it == cache.end())
+        it = cache.emplace(size, sampleAnalyticGrade(size)).first;
     return it->second;
 }
 
-Interpolation methodArg(std::int64_t v) { return static_cast<Interpolation>(v); }
+Interpolation methodArg(std::int64_t v) {
+    return static_cast<Interpolation>(v);
+}
 
 // Times apply() on a fresh copy of the frame each iteration (the copy is not timed).
 void runSampler(benchmark::State& state, bool scalar) {
     Frames& f = frames();
     const Interpolation method = methodArg(state.range(0));
     const int size = static_cast<int>(state.range(1));
-    if (scalar) ::setenv("LUTKIT_SIMD", "scalar", 1);
+    if (scalar)
+        ::setenv("LUTKIT_SIMD", "scalar", 1);
     const auto sampler = makeSampler(gradeLut(size), method);
-    if (scalar) ::unsetenv("LUTKIT_SIMD");
+    if (scalar)
+        ::unsetenv("LUTKIT_SIMD");
     for (auto _ : state) {
         state.PauseTiming();
         parallelCopy(f.frame, f.work);
@@ -65,15 +71,22 @@ void runSampler(benchmark::State& state, bool scalar) {
     }
     const ErrorStats e = frameError(f.work, f.reference);
     state.counters["ns_per_pixel"] =
-        benchmark::Counter(f.pixels() * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+        benchmark::Counter(f.pixels() * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                  benchmark::Counter::kInvert);
     state.counters["max_err"] = e.maxAbs;
     state.counters["mean_err"] = e.meanAbs;
-    state.SetLabel(std::string(toString(method)) + " " + std::to_string(size) + "^3 " + (scalar ? "scalar" : samplerIsa()));
-    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(f.pixels()) * 16);
+    state.SetLabel(std::string(toString(method)) + " " + std::to_string(size) + "^3 " +
+                   (scalar ? "scalar" : samplerIsa()));
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(f.pixels()) * 16);
 }
 
-void BM_Lut(benchmark::State& state) { runSampler(state, false); }
-void BM_LutScalar(benchmark::State& state) { runSampler(state, true); }
+void BM_Lut(benchmark::State& state) {
+    runSampler(state, false);
+}
+void BM_LutScalar(benchmark::State& state) {
+    runSampler(state, true);
+}
 
 // OpenColorIO's CPU processor, called as ocioconvert calls it: one apply() over the frame.
 void BM_Ocio(benchmark::State& state) {
@@ -86,10 +99,11 @@ void BM_Ocio(benchmark::State& state) {
         for (int g = 0; g < size; ++g)
             for (int r = 0; r < size; ++r) {
                 const glm::vec3 e = lut.at(r, g, b);
-                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g), static_cast<unsigned long>(b),
-                            e.r, e.g, e.b);
+                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
+                            static_cast<unsigned long>(b), e.r, e.g, e.b);
             }
-    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL : OCIO::INTERP_LINEAR);
+    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL
+                                                             : OCIO::INTERP_LINEAR);
     const auto cpu = OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
         OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
     for (auto _ : state) {
@@ -102,7 +116,8 @@ void BM_Ocio(benchmark::State& state) {
     }
     const ErrorStats e = frameError(f.work, f.reference);
     state.counters["ns_per_pixel"] =
-        benchmark::Counter(f.pixels() * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+        benchmark::Counter(f.pixels() * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                  benchmark::Counter::kInvert);
     state.counters["max_err"] = e.maxAbs;
     state.counters["mean_err"] = e.meanAbs;
     state.SetLabel(std::string("OCIO ") + toString(method) + " " + std::to_string(size) + "^3");
@@ -116,13 +131,16 @@ void BM_Memcpy(benchmark::State& state) {
         benchmark::ClobberMemory();
     }
     state.counters["ns_per_pixel"] =
-        benchmark::Counter(f.pixels() * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(f.pixels()) * 16);
+        benchmark::Counter(f.pixels() * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                  benchmark::Counter::kInvert);
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                            static_cast<std::int64_t>(f.pixels()) * 16);
 }
 
 void lutArgs(benchmark::internal::Benchmark* b, bool withNearest) {
     for (int m = withNearest ? 0 : 1; m < 3; ++m)
-        for (int size : {16, 17, 33, 65}) b->Args({m, size});
+        for (int size : {16, 17, 33, 65})
+            b->Args({m, size});
     b->ArgNames({"interp", "size"})->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 
@@ -131,6 +149,10 @@ void lutArgs(benchmark::internal::Benchmark* b, bool withNearest) {
 BENCHMARK(BM_Memcpy)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Lut)->Apply([](benchmark::internal::Benchmark* b) { lutArgs(b, true); });
 BENCHMARK(BM_Ocio)->Apply([](benchmark::internal::Benchmark* b) { lutArgs(b, false); });
-BENCHMARK(BM_LutScalar)->Args({2, 33})->ArgNames({"interp", "size"})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_LutScalar)
+    ->Args({2, 33})
+    ->ArgNames({"interp", "size"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK_MAIN();

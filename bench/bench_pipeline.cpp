@@ -17,7 +17,8 @@ int envInt(const char* name, int def) {
 }
 
 lut::Image benchScene() {
-    return lut::makeSmashBenchScene(envInt("LUTKIT_BENCH_WIDTH", 1920), envInt("LUTKIT_BENCH_HEIGHT", 1080));
+    return lut::makeSmashBenchScene(envInt("LUTKIT_BENCH_WIDTH", 1920),
+                                    envInt("LUTKIT_BENCH_HEIGHT", 1080));
 }
 
 // Every smash benchmark grades with the same non-identity 16^3 LUT as `lutkit bench`.

@@ -4,14 +4,14 @@
 
 #include "Commands.h"
 
-#include "lut/io/AtomicFile.h"
 #include "lut/Error.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Parallel.h"
-#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/Interpolation.h"
+#include "lut/interp/Sampler.h"
+#include "lut/io/AtomicFile.h"
 
 #include <algorithm>
 #include <atomic>

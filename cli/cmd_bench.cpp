@@ -9,8 +9,8 @@
 
 #include "Commands.h"
 #include "lut/Error.h"
-#include "lut/bench/KernelBench.h"
 #include "lut/Parallel.h"
+#include "lut/bench/KernelBench.h"
 #include "lut/interp/Sampler.h"
 #include "lut/pipeline/Pipeline.h"
 
@@ -39,10 +39,11 @@ OCIO::ConstCPUProcessorRcPtr ocioProcessor(const Lut3D& lut, Interpolation metho
                 t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
                             static_cast<unsigned long>(b), e.r, e.g, e.b);
             }
-    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL : OCIO::INTERP_LINEAR);
+    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL
+                                                             : OCIO::INTERP_LINEAR);
     auto config = OCIO::Config::CreateRaw();
-    return config->getProcessor(t)->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                              OCIO::OPTIMIZATION_DEFAULT);
+    return config->getProcessor(t)->getOptimizedCPUProcessor(
+        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -76,7 +77,8 @@ std::vector<BenchExtraRow> extraRows(const BenchOptions& options) {
 
 int runBench(const BenchOptions& o) {
     std::vector<Interpolation> methods;
-    for (const auto& m : o.methods) methods.push_back(parseInterpolation(m)); // throws on bad names
+    for (const auto& m : o.methods)
+        methods.push_back(parseInterpolation(m)); // throws on bad names
     if (o.width <= 0 || o.height <= 0) {
         std::fprintf(stderr, "lutkit: error: --width and --height must be positive\n");
         return kExitUsage;
@@ -89,22 +91,27 @@ int runBench(const BenchOptions& o) {
     const Image reference = analyticReference(frame, o.threads);
     Image work(o.width, o.height);
 
-    const double copySeconds = bestSeconds(o.reps + 2, nullptr, [&] { parallelCopy(frame, work, o.threads); });
+    const double copySeconds =
+        bestSeconds(o.reps + 2, nullptr, [&] { parallelCopy(frame, work, o.threads); });
     const double copyNs = copySeconds * 1e9 / pixels;
     double load[1] = {0};
     const bool haveLoad = getloadavg(load, 1) == 1;
-    std::printf("lutkit bench: %dx%d float RGBA frame, %d thread%s, kernels: %s", o.width, o.height, threads,
-                threads == 1 ? "" : "s", samplerIsa());
+    std::printf("lutkit bench: %dx%d float RGBA frame, %d thread%s, kernels: %s", o.width, o.height,
+                threads, threads == 1 ? "" : "s", samplerIsa());
     // Every figure is wall time: on a busy machine (load above the core count) they are noisy.
-    if (haveLoad) std::printf(", load average %.1f on %d cores", load[0], resolveThreads(0));
+    if (haveLoad)
+        std::printf(", load average %.1f on %d cores", load[0], resolveThreads(0));
     std::printf("\n");
     std::printf("memory copy of the same bytes: %.3f ns/pixel (%.1f GB/s read+write)\n", copyNs,
                 2 * bytes / copySeconds / 1e9);
-    std::printf("error: against the analytic grade the LUT was sampled from, over R,G,B of every pixel\n");
-    if (o.ocio) std::printf("OCIO: CPU processor, one apply() over the frame as ocioconvert does (single-threaded)\n");
+    std::printf(
+        "error: against the analytic grade the LUT was sampled from, over R,G,B of every pixel\n");
+    if (o.ocio)
+        std::printf("OCIO: CPU processor, one apply() over the frame as ocioconvert does "
+                    "(single-threaded)\n");
     std::printf("\n");
-    std::printf("%-12s %5s %9s %10s %10s %10s %9s %11s\n", "interp", "size", "ns/pixel", "max err", "mean err",
-                "OCIO ns/px", "OCIO/ours", "ours/memcpy");
+    std::printf("%-12s %5s %9s %10s %10s %10s %9s %11s\n", "interp", "size", "ns/pixel", "max err",
+                "mean err", "OCIO ns/px", "OCIO/ours", "ours/memcpy");
     std::fflush(stdout);
 
     double bestTetra33Ratio = 0, tetra33Copy = 0;
@@ -112,8 +119,9 @@ int runBench(const BenchOptions& o) {
         for (int size : o.sizes) {
             const Lut3D lut = sampleAnalyticGrade(size);
             auto timeSampler = [&](const Sampler& s) {
-                return bestSeconds(o.reps, [&] { parallelCopy(frame, work, o.threads); },
-                                   [&] { s.apply(work.view(), o.threads); });
+                return bestSeconds(
+                    o.reps, [&] { parallelCopy(frame, work, o.threads); },
+                    [&] { s.apply(work.view(), o.threads); });
             };
             const auto sampler = makeSampler(lut, method);
             const double ours = timeSampler(*sampler);
@@ -122,43 +130,50 @@ int runBench(const BenchOptions& o) {
             std::string ocioNs = "-", ocioRatio = "-";
             if (o.ocio && method != Interpolation::Nearest) {
                 const auto cpu = ocioProcessor(lut, method);
-                const double t = bestSeconds(std::max(1, o.reps - 1), [&] { parallelCopy(frame, work, o.threads); },
-                                             [&] {
-                                                 OCIO::PackedImageDesc desc(work.data(), o.width, o.height, 4);
-                                                 cpu->apply(desc);
-                                             });
+                const double t = bestSeconds(
+                    std::max(1, o.reps - 1), [&] { parallelCopy(frame, work, o.threads); },
+                    [&] {
+                        OCIO::PackedImageDesc desc(work.data(), o.width, o.height, 4);
+                        cpu->apply(desc);
+                    });
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%.2f", t * 1e9 / pixels);
                 ocioNs = buf;
                 std::snprintf(buf, sizeof buf, "%.1fx", t / ours);
                 ocioRatio = buf;
-                if (method == Interpolation::Tetrahedral && size == 33) bestTetra33Ratio = t / ours;
+                if (method == Interpolation::Tetrahedral && size == 33)
+                    bestTetra33Ratio = t / ours;
             }
-            if (method == Interpolation::Tetrahedral && size == 33) tetra33Copy = ours / copySeconds;
+            if (method == Interpolation::Tetrahedral && size == 33)
+                tetra33Copy = ours / copySeconds;
             std::printf("%-12s %5d %9.3f %10.2e %10.2e %10s %9s %10.2fx\n", toString(method), size,
-                        ours * 1e9 / pixels, err.maxAbs, err.meanAbs, ocioNs.c_str(), ocioRatio.c_str(),
-                        ours / copySeconds);
+                        ours * 1e9 / pixels, err.maxAbs, err.meanAbs, ocioNs.c_str(),
+                        ocioRatio.c_str(), ours / copySeconds);
             if (o.scalar) {
                 ::setenv("LUTKIT_SIMD", "scalar", 1);
                 const auto scalar = makeSampler(lut, method);
                 ::unsetenv("LUTKIT_SIMD");
                 const double t = timeSampler(*scalar);
-                std::printf("%-12s %5d %9.3f %10s %10s %10s %9s %10.2fx\n", (std::string(toString(method)) + "*").c_str(),
-                            size, t * 1e9 / pixels, "", "", "", "", t / copySeconds);
+                std::printf("%-12s %5d %9.3f %10s %10s %10s %9s %10.2fx\n",
+                            (std::string(toString(method)) + "*").c_str(), size, t * 1e9 / pixels,
+                            "", "", "", "", t / copySeconds);
             }
             std::fflush(stdout);
         }
     }
-    if (o.scalar) std::printf("(* = scalar reference loop, same threads)\n");
+    if (o.scalar)
+        std::printf("(* = scalar reference loop, same threads)\n");
 
     const auto extra = extraRows(o);
     if (!extra.empty()) {
         std::printf("\n%-30s %9s  %s\n", "other", "ns/pixel", "");
-        for (const auto& r : extra) std::printf("%-30s %9.3f  %s\n", r.label.c_str(), r.nsPerPixel, r.note.c_str());
+        for (const auto& r : extra)
+            std::printf("%-30s %9.3f  %s\n", r.label.c_str(), r.nsPerPixel, r.note.c_str());
     }
     if (tetra33Copy > 0) {
         std::printf("\ntetrahedral 33: ");
-        if (bestTetra33Ratio > 0) std::printf("%.1fx faster than OCIO (goal >= 4x), ", bestTetra33Ratio);
+        if (bestTetra33Ratio > 0)
+            std::printf("%.1fx faster than OCIO (goal >= 4x), ", bestTetra33Ratio);
         std::printf("%.2fx a memory copy (goal <= 3x)\n", tetra33Copy);
     }
     return kExitOk;

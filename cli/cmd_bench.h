@@ -7,12 +7,12 @@ namespace lut::cli {
 struct BenchOptions {
     int width = 3840;
     int height = 2160;
-    int threads = 0;                                 // 0 = all cores
-    int reps = 3;                                    // timed runs per row; the best is reported
-    std::vector<int> sizes{16, 17, 33, 65};          // LUT edge sizes
+    int threads = 0;                        // 0 = all cores
+    int reps = 3;                           // timed runs per row; the best is reported
+    std::vector<int> sizes{16, 17, 33, 65}; // LUT edge sizes
     std::vector<std::string> methods{"nearest", "trilinear", "tetrahedral"};
-    bool ocio = true;                                // also time OpenColorIO's CPU processor
-    bool scalar = false;                             // add rows for the scalar reference loop
+    bool ocio = true;    // also time OpenColorIO's CPU processor
+    bool scalar = false; // add rows for the scalar reference loop
 };
 
 // One row another subsystem adds below the kernel table (see cmd_bench.cpp, "EXTRA ROWS").

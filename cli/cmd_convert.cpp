@@ -8,11 +8,11 @@
 #include "Commands.h"
 #include "cmd_json.h"
 
-#include "lut/io/AtomicFile.h"
 #include "lut/Error.h"
 #include "lut/Limits.h"
-#include "lut/ops/Resample.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/ops/Resample.h"
 
 #include <chrono>
 #include <cstdio>
@@ -26,7 +26,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 std::string ms(double seconds) {
     char buf[32];
@@ -40,7 +42,8 @@ std::string ms(double seconds) {
 ErrorStats storageError(const LutFile& written, const LutFile& back) {
     const bool sameShape =
         written.cube && back.cube && written.cube->size() == back.cube->size() &&
-        written.cube->domainMin() == back.cube->domainMin() && written.cube->domainMax() == back.cube->domainMax() &&
+        written.cube->domainMin() == back.cube->domainMin() &&
+        written.cube->domainMax() == back.cube->domainMax() &&
         written.shaper.has_value() == back.shaper.has_value() &&
         (!written.shaper || (written.shaper->size() == back.shaper->size() &&
                              written.shaper->domainMin() == back.shaper->domainMin() &&
@@ -51,27 +54,35 @@ ErrorStats storageError(const LutFile& written, const LutFile& back) {
     const auto& a = written.cube->entries();
     const auto& b = back.cube->entries();
     for (std::size_t i = 0; i < a.size(); ++i)
-        for (int c = 0; c < 3; ++c) acc.add(a[i][c], b[i][c]);
+        for (int c = 0; c < 3; ++c)
+            acc.add(a[i][c], b[i][c]);
     if (written.shaper)
         for (int i = 0; i < written.shaper->size(); ++i)
-            for (int c = 0; c < 3; ++c) acc.add((*written.shaper)[i][c], (*back.shaper)[i][c]);
+            for (int c = 0; c < 3; ++c)
+                acc.add((*written.shaper)[i][c], (*back.shaper)[i][c]);
     return acc.result();
 }
 
 std::string describe(const LutFile& f) {
     std::string s = f.format;
-    if (!f.dialect.empty()) s += " (" + f.dialect + ")";
-    if (f.shaper) s += ", 1D shaper " + std::to_string(f.shaper->size());
-    if (f.cube) s += ", " + std::to_string(f.cube->size()) + "^3";
-    if (f.sourceBitDepth) s += ", " + std::to_string(f.sourceBitDepth) + "-bit";
+    if (!f.dialect.empty())
+        s += " (" + f.dialect + ")";
+    if (f.shaper)
+        s += ", 1D shaper " + std::to_string(f.shaper->size());
+    if (f.cube)
+        s += ", " + std::to_string(f.cube->size()) + "^3";
+    if (f.sourceBitDepth)
+        s += ", " + std::to_string(f.sourceBitDepth) + "-bit";
     return s;
 }
 
 std::string fileJson(const std::string& path, const LutFile& f, double seconds) {
     return "{\"path\": " + json::quote(path) + ", \"format\": " + json::quote(f.format) +
-           ", \"dialect\": " + json::quote(f.dialect) + ", \"size\": " + std::to_string(f.cube ? f.cube->size() : 0) +
+           ", \"dialect\": " + json::quote(f.dialect) +
+           ", \"size\": " + std::to_string(f.cube ? f.cube->size() : 0) +
            ", \"shaper_size\": " + std::to_string(f.shaper ? f.shaper->size() : 0) +
-           ", \"bit_depth\": " + std::to_string(f.sourceBitDepth) + ", \"seconds\": " + json::number(seconds) + "}";
+           ", \"bit_depth\": " + std::to_string(f.sourceBitDepth) +
+           ", \"seconds\": " + json::number(seconds) + "}";
 }
 
 } // namespace
@@ -79,8 +90,8 @@ std::string fileJson(const std::string& path, const LutFile& f, double seconds) 
 int runConvert(const ConvertOptions& o) {
     const auto tStart = Clock::now();
     if (o.size != 0 && (o.size < limits::kMin3DSize || o.size > limits::kMax3DSize)) {
-        std::cerr << "lutkit convert: --size " << o.size << " is outside " << limits::kMin3DSize << ".."
-                  << limits::kMax3DSize << "\n";
+        std::cerr << "lutkit convert: --size " << o.size << " is outside " << limits::kMin3DSize
+                  << ".." << limits::kMax3DSize << "\n";
         return kExitUsage;
     }
     Interpolation interp;
@@ -98,8 +109,10 @@ int runConvert(const ConvertOptions& o) {
     for (const std::string* name : {&o.format, &o.inFormat})
         if (!name->empty() && !registry.byName(*name)) {
             std::string known;
-            for (const Format* f : registry.all()) known += (known.empty() ? "" : " ") + f->name();
-            std::cerr << "lutkit convert: unknown format '" << *name << "' (known: " << known << ")\n";
+            for (const Format* f : registry.all())
+                known += (known.empty() ? "" : " ") + f->name();
+            std::cerr << "lutkit convert: unknown format '" << *name << "' (known: " << known
+                      << ")\n";
             return kExitUsage;
         }
     if (!o.format.empty()) {
@@ -108,7 +121,8 @@ int runConvert(const ConvertOptions& o) {
         writer = registry.writerForPath(o.output);
     }
     if (!writer || !writer->canWrite())
-        throw Error(o.output + ": no format writes '" + extensionOf(o.output) + "' files (use --format)");
+        throw Error(o.output + ": no format writes '" + extensionOf(o.output) +
+                    "' files (use --format)");
 
     // Read.
     auto t0 = Clock::now();
@@ -116,12 +130,14 @@ int runConvert(const ConvertOptions& o) {
     readOptions.layout = o.inLayout;
     LutFile input = formats::readLut(o.input, readOptions, o.inFormat);
     const double readSeconds = since(t0);
-    if (!input.cube && !input.shaper) throw Error(o.input + ": holds no table");
+    if (!input.cube && !input.shaper)
+        throw Error(o.input + ": holds no table");
 
     // Resample when the output stores another lattice size.
     const int sourceSize = input.cube ? input.cube->size() : 0;
     int targetSize = o.size ? o.size : writer->fixedSize();
-    if (targetSize == 0) targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
+    if (targetSize == 0)
+        targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
     LutFile toWrite = input;
     std::optional<ErrorStats> resampleError;
     if (targetSize != 0 && targetSize != sourceSize) {
@@ -164,16 +180,19 @@ int runConvert(const ConvertOptions& o) {
         std::ostringstream js;
         js << "{\"input\": " << fileJson(o.input, input, readSeconds) << ",\n \"output\": "
            << (back ? fileJson(o.output, *back, writeSeconds)
-                    : "{\"path\": " + json::quote(o.output) + ", \"format\": " + json::quote(writer->name()) +
+                    : "{\"path\": " + json::quote(o.output) +
+                          ", \"format\": " + json::quote(writer->name()) +
                           ", \"seconds\": " + json::number(writeSeconds) + "}")
            << ",\n \"output_format\": " << json::quote(writer->name()) << ",\n \"resample\": ";
         if (resampleError)
-            js << "{\"from\": " << sourceSize << ", \"to\": " << targetSize << ", \"interp\": "
-               << json::quote(toString(interp)) << ", \"error\": " << json::stats(*resampleError) << "}";
+            js << "{\"from\": " << sourceSize << ", \"to\": " << targetSize
+               << ", \"interp\": " << json::quote(toString(interp))
+               << ", \"error\": " << json::stats(*resampleError) << "}";
         else
             js << "null";
         js << ",\n \"storage\": " << (storage ? json::stats(*storage) : "null")
-           << ",\n \"read_back_error\": " << (readBackError.empty() ? "null" : json::quote(readBackError))
+           << ",\n \"read_back_error\": "
+           << (readBackError.empty() ? "null" : json::quote(readBackError))
            << ",\n \"input_diagnostics\": " << json::diagnostics(input.diagnostics)
            << ",\n \"diagnostics\": " << json::diagnostics(writeDiags)
            << ",\n \"seconds\": " << json::number(totalSeconds) << "}\n";
@@ -181,21 +200,26 @@ int runConvert(const ConvertOptions& o) {
         return kExitOk;
     }
 
-    std::cout << "read     " << o.input << ": " << describe(input) << ", " << ms(readSeconds) << "\n";
-    for (const auto& d : input.diagnostics) std::cout << "  " << d.str() << "\n";
+    std::cout << "read     " << o.input << ": " << describe(input) << ", " << ms(readSeconds)
+              << "\n";
+    for (const auto& d : input.diagnostics)
+        std::cout << "  " << d.str() << "\n";
     if (resampleError)
-        std::cout << "resample " << sourceSize << "^3 -> " << targetSize << "^3 (" << toString(interp)
-                  << "): " << resampleError->str() << "\n";
+        std::cout << "resample " << sourceSize << "^3 -> " << targetSize << "^3 ("
+                  << toString(interp) << "): " << resampleError->str() << "\n";
     else
         std::cout << "resample none (same size)\n";
     std::cout << "wrote    " << o.output << ": " << writer->name();
-    if (back) std::cout << ", reads back as " << describe(*back);
+    if (back)
+        std::cout << ", reads back as " << describe(*back);
     std::cout << ", " << ms(writeSeconds) << "\n";
-    for (const auto& d : writeDiags) std::cout << "  " << d.str() << "\n";
+    for (const auto& d : writeDiags)
+        std::cout << "  " << d.str() << "\n";
     if (storage)
         std::cout << "storage  (quantisation, written file read back): " << storage->str() << "\n";
     else
-        std::cout << "storage  not measured: cannot read the output back: " << readBackError << "\n";
+        std::cout << "storage  not measured: cannot read the output back: " << readBackError
+                  << "\n";
     std::cout << "total    " << ms(totalSeconds) << "\n";
     return kExitOk;
 }

@@ -12,9 +12,9 @@ struct ConvertOptions {
     std::string inLayout; // input image layout
     int size = 0;         // output lattice size (0 = the format's fixed size, else the input's)
     std::string interp = "tetrahedral";
-    int bitDepth = 0;     // image output bit depth (0 = the format's default)
+    int bitDepth = 0; // image output bit depth (0 = the format's default)
     bool dither = false;
-    std::string name;     // nutexb name field
+    std::string name; // nutexb name field
     bool json = false;
 };
 

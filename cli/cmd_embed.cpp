@@ -1,10 +1,10 @@
 #include "cmd_embed.h"
 
 #include "Commands.h"
-#include "lut/io/AtomicFile.h"
-#include "lut/roundtrip/Embed.h"
-#include "lut/io/Format.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/io/Format.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <iostream>
 
@@ -16,7 +16,8 @@ int runEmbed(const EmbedOptions& o) {
     lut::EmbedOptions eo;
     eo.lattice = o.lattice.empty() ? PatchLattice::Smash : parseLattice(o.lattice);
     eo.size = o.size;
-    if (!o.layout.empty()) eo.layout = parseLayout(o.layout);
+    if (!o.layout.empty())
+        eo.layout = parseLayout(o.layout);
     eo.scale = o.scale;
     eo.corner = parseCorner(o.corner);
     eo.margin = o.margin;
@@ -30,14 +31,17 @@ int runEmbed(const EmbedOptions& o) {
     const std::string ext = extensionOf(o.output);
     if ((ext == ".jpg" || ext == ".jpeg") && o.scale < 4)
         std::cerr << "lutkit: warning: " << o.output
-                  << ": JPEG is lossy; use PNG or TIFF, or at least --scale 4 so blocks can be averaged\n";
-    if (ext == ".png" && eo.bitDepth == 32) wo.bitDepth = 16;
+                  << ": JPEG is lossy; use PNG or TIFF, or at least --scale 4 so blocks can be "
+                     "averaged\n";
+    if (ext == ".png" && eo.bitDepth == 32)
+        wo.bitDepth = 16;
     formats::writeImage(o.output, loaded.image, wo);
-    std::cout << "embedded a " << p.size << "^3 " << toString(p.lattice) << "-lattice " << toString(p.layout)
-              << " patch at scale " << p.scale
-              << " (" << p.frameWidth << "x" << p.frameHeight << " pixels with its frame) at (" << p.frameX
-              << ", " << p.frameY << "), " << wo.bitDepth << "-bit: " << o.output << "\n"
-              << "grade the whole image with global adjustments only, then run: lutkit extract EDITED OUT\n";
+    std::cout << "embedded a " << p.size << "^3 " << toString(p.lattice) << "-lattice "
+              << toString(p.layout) << " patch at scale " << p.scale << " (" << p.frameWidth << "x"
+              << p.frameHeight << " pixels with its frame) at (" << p.frameX << ", " << p.frameY
+              << "), " << wo.bitDepth << "-bit: " << o.output << "\n"
+              << "grade the whole image with global adjustments only, then run: lutkit extract "
+                 "EDITED OUT\n";
     return kExitOk;
 }
 

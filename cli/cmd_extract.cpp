@@ -1,10 +1,10 @@
 #include "cmd_extract.h"
 
 #include "Commands.h"
-#include "lut/io/AtomicFile.h"
-#include "lut/roundtrip/Embed.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <cstdio>
 #include <iostream>
@@ -17,7 +17,8 @@ int runExtract(const ExtractOptions& o) {
     lut::ExtractOptions eo;
     eo.target = parseTarget(o.target);
     eo.outputSize = o.size;
-    if (eo.outputSize == 0 && extensionOf(o.output) == ".nutexb") eo.outputSize = 16;
+    if (eo.outputSize == 0 && extensionOf(o.output) == ".nutexb")
+        eo.outputSize = 16;
     Lut3D original;
     if (!o.originalLut.empty()) {
         if (eo.target != ExtractTarget::Smash)
@@ -39,16 +40,18 @@ int runExtract(const ExtractOptions& o) {
             std::cerr << "lutkit: " << o.input << ": " << d.str() << "\n";
     }
     if (eo.target == ExtractTarget::Smash && res.clampedEntries > 0)
-        std::cout << "clamped " << res.clampedEntries << " values (farthest " << res.clampedMax * 255.0
-                  << " 8-bit steps outside [0,1])\n";
+        std::cout << "clamped " << res.clampedEntries << " values (farthest "
+                  << res.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
 
     LutFile file;
     file.cube = std::move(res.lut);
     FormatOptions fo;
     fo.layout = o.layout;
     const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
-    for (const auto& d : wd) std::cerr << "lutkit: " << d.str() << "\n";
-    std::cout << "wrote " << file.cube->size() << "^3 " << toString(eo.target) << " LUT: " << o.output << "\n";
+    for (const auto& d : wd)
+        std::cerr << "lutkit: " << d.str() << "\n";
+    std::cout << "wrote " << file.cube->size() << "^3 " << toString(eo.target)
+              << " LUT: " << o.output << "\n";
     return kExitOk;
 }
 

@@ -35,7 +35,8 @@ int runInfo(const InfoOptions& o) {
     options.layout = o.layout;
     options.size = o.size;
     const LutFile file = formats::readLut(o.input, options, o.format);
-    if (!file.cube && !file.shaper) throw Error(o.input + ": holds no table");
+    if (!file.cube && !file.shaper)
+        throw Error(o.input + ": holds no table");
 
     // Neutrality of the whole file (shaper then cube), over its input domain.
     double deviation = 0.0;
@@ -43,12 +44,13 @@ int runInfo(const InfoOptions& o) {
         deviation = file.cube->maxDeviationFromIdentity();
     else
         deviation = file.toLut3D(0).maxDeviationFromIdentity();
-    const char* neutral = deviation <= kExactNeutralTolerance ? "exact"
+    const char* neutral = deviation <= kExactNeutralTolerance  ? "exact"
                           : deviation <= kNearNeutralTolerance ? "near"
                                                                : "no";
 
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    if (file.cube) std::tie(lo, hi) = file.cube->valueRange();
+    if (file.cube)
+        std::tie(lo, hi) = file.cube->valueRange();
     else
         for (const auto& e : file.shaper->entries())
             for (int c = 0; c < 3; ++c)
@@ -65,43 +67,51 @@ int runInfo(const InfoOptions& o) {
     if (o.json) {
         std::ostringstream js;
         js << "{\"path\": " << json::quote(o.input) << ", \"format\": " << json::quote(file.format)
-           << ", \"dialect\": " << json::quote(file.dialect) << ", \"size\": " << (file.cube ? file.cube->size() : 0)
+           << ", \"dialect\": " << json::quote(file.dialect)
+           << ", \"size\": " << (file.cube ? file.cube->size() : 0)
            << ", \"title\": " << json::quote(title) << ", \"domain_min\": " << vecJson(dmin)
            << ", \"domain_max\": " << vecJson(dmax) << ", \"shaper\": ";
         if (file.shaper)
-            js << "{\"size\": " << file.shaper->size() << ", \"domain_min\": " << vecJson(file.shaper->domainMin())
+            js << "{\"size\": " << file.shaper->size()
+               << ", \"domain_min\": " << vecJson(file.shaper->domainMin())
                << ", \"domain_max\": " << vecJson(file.shaper->domainMax()) << "}";
         else
             js << "null";
-        js << ", \"neutral\": " << json::quote(neutral) << ", \"max_deviation_from_identity\": "
-           << json::number(deviation) << ", \"value_min\": " << json::number(lo)
-           << ", \"value_max\": " << json::number(hi) << ", \"comments\": " << comments
-           << ", \"source_bit_depth\": " << file.sourceBitDepth
+        js << ", \"neutral\": " << json::quote(neutral)
+           << ", \"max_deviation_from_identity\": " << json::number(deviation)
+           << ", \"value_min\": " << json::number(lo) << ", \"value_max\": " << json::number(hi)
+           << ", \"comments\": " << comments << ", \"source_bit_depth\": " << file.sourceBitDepth
            << ", \"diagnostics\": " << json::diagnostics(file.diagnostics) << "}\n";
         std::cout << js.str();
         return kExitOk;
     }
 
     std::cout << "file        " << o.input << "\n"
-              << "format      " << file.format << (file.dialect.empty() ? "" : " (" + file.dialect + ")") << "\n";
-    if (file.cube) std::cout << "size        " << file.cube->size() << "^3\n";
+              << "format      " << file.format
+              << (file.dialect.empty() ? "" : " (" + file.dialect + ")") << "\n";
+    if (file.cube)
+        std::cout << "size        " << file.cube->size() << "^3\n";
     if (file.shaper)
-        std::cout << "shaper      1D, " << file.shaper->size() << " entries, domain " << vec(file.shaper->domainMin())
-                  << " .. " << vec(file.shaper->domainMax()) << "\n";
+        std::cout << "shaper      1D, " << file.shaper->size() << " entries, domain "
+                  << vec(file.shaper->domainMin()) << " .. " << vec(file.shaper->domainMax())
+                  << "\n";
     else
         std::cout << "shaper      none\n";
     std::cout << "domain      " << vec(dmin) << " .. " << vec(dmax) << "\n"
               << "title       " << (title.empty() ? "(none)" : title) << "\n";
     char buf[128];
-    std::snprintf(buf, sizeof buf, "%s (max deviation from identity %.3g = %.3g 8-bit steps)", neutral, deviation,
-                  deviation * 255.0);
+    std::snprintf(buf, sizeof buf, "%s (max deviation from identity %.3g = %.3g 8-bit steps)",
+                  neutral, deviation, deviation * 255.0);
     std::cout << "neutral     " << buf << "\n";
     std::snprintf(buf, sizeof buf, "%.9g .. %.9g", lo, hi);
     std::cout << "values      " << buf << "\n"
               << "comments    " << comments << "\n"
-              << "bit depth   " << (file.sourceBitDepth ? std::to_string(file.sourceBitDepth) + "-bit integer" : "float")
+              << "bit depth   "
+              << (file.sourceBitDepth ? std::to_string(file.sourceBitDepth) + "-bit integer"
+                                      : "float")
               << "\n";
-    for (const auto& d : file.diagnostics) std::cout << "  " << d.str() << "\n";
+    for (const auto& d : file.diagnostics)
+        std::cout << "  " << d.str() << "\n";
     return kExitOk;
 }
 

@@ -17,13 +17,27 @@ inline std::string quote(std::string_view s) {
     for (const char ch : s) {
         const auto c = static_cast<unsigned char>(ch);
         switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case '\b': out += "\\b"; break;
-        case '\f': out += "\\f"; break;
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        case '\b':
+            out += "\\b";
+            break;
+        case '\f':
+            out += "\\f";
+            break;
         default:
             if (c < 0x20 || c == 0x7f) {
                 char buf[8];
@@ -38,7 +52,8 @@ inline std::string quote(std::string_view s) {
 }
 
 inline std::string number(double v) {
-    if (!std::isfinite(v)) return "null";
+    if (!std::isfinite(v))
+        return "null";
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.9g", v);
     return buf;
@@ -46,15 +61,19 @@ inline std::string number(double v) {
 
 inline std::string stats(const ErrorStats& s) {
     return "{\"max\": " + number(s.maxAbs) + ", \"mean\": " + number(s.meanAbs) +
-           ", \"max_8bit_steps\": " + number(s.maxSteps8()) + ", \"mean_8bit_steps\": " +
-           number(s.meanSteps8()) + ", \"seconds\": " + number(s.seconds) + "}";
+           ", \"max_8bit_steps\": " + number(s.maxSteps8()) +
+           ", \"mean_8bit_steps\": " + number(s.meanSteps8()) +
+           ", \"seconds\": " + number(s.seconds) + "}";
 }
 
 inline const char* severity(Diagnostic::Severity s) {
     switch (s) {
-    case Diagnostic::Severity::Info: return "info";
-    case Diagnostic::Severity::Warning: return "warning";
-    case Diagnostic::Severity::Error: return "error";
+    case Diagnostic::Severity::Info:
+        return "info";
+    case Diagnostic::Severity::Warning:
+        return "warning";
+    case Diagnostic::Severity::Error:
+        return "error";
     }
     return "warning";
 }
@@ -65,7 +84,8 @@ inline std::string diagnostics(const Diagnostics& diags) {
         const auto& d = diags[i];
         out += (i ? ", " : "") + std::string("{\"severity\": ") + quote(severity(d.severity)) +
                ", \"path\": " + quote(d.path) + ", \"line\": " + std::to_string(d.line) +
-               ", \"column\": " + std::to_string(d.column) + ", \"message\": " + quote(d.message) + "}";
+               ", \"column\": " + std::to_string(d.column) + ", \"message\": " + quote(d.message) +
+               "}";
     }
     return out + "]";
 }

@@ -13,12 +13,14 @@
 namespace lut::cli {
 
 int defaultNeutralSize(const std::string& path, int formatFixedSize) {
-    if (formatFixedSize > 0) return formatFixedSize;
-    static const char* const kImageExtensions[] = {".png", ".tif", ".tiff", ".exr", ".jpg", ".jpeg",
-                                                   ".bmp", ".tga", ".dpx", ".webp", ".hdr"};
+    if (formatFixedSize > 0)
+        return formatFixedSize;
+    static const char* const kImageExtensions[] = {
+        ".png", ".tif", ".tiff", ".exr", ".jpg", ".jpeg", ".bmp", ".tga", ".dpx", ".webp", ".hdr"};
     const std::string ext = extensionOf(path);
     for (const char* e : kImageExtensions)
-        if (ext == e) return 16;
+        if (ext == e)
+            return 16;
     return 33;
 }
 
@@ -36,12 +38,13 @@ int runNeutral(const NeutralOptions& o) {
         writer = registry.writerForPath(o.output);
     }
     if (!writer || !writer->canWrite())
-        throw Error(o.output + ": no format writes '" + extensionOf(o.output) + "' files (use --format)");
+        throw Error(o.output + ": no format writes '" + extensionOf(o.output) +
+                    "' files (use --format)");
 
     const int size = o.size ? o.size : defaultNeutralSize(o.output, writer->fixedSize());
     if (size < limits::kMin3DSize || size > limits::kMax3DSize) {
-        std::cerr << "lutkit neutral: --size " << size << " is outside " << limits::kMin3DSize << ".."
-                  << limits::kMax3DSize << "\n";
+        std::cerr << "lutkit neutral: --size " << size << " is outside " << limits::kMin3DSize
+                  << ".." << limits::kMax3DSize << "\n";
         return kExitUsage;
     }
     LutFile file;
@@ -54,10 +57,13 @@ int runNeutral(const NeutralOptions& o) {
     options.name = o.name;
     const Diagnostics diags = writer->write(o.output, file, options);
     std::cout << "wrote " << o.output << ": " << writer->name() << ", neutral " << size << "^3";
-    if (!o.layout.empty()) std::cout << ", layout " << o.layout;
-    if (o.bitDepth) std::cout << ", " << o.bitDepth << "-bit";
+    if (!o.layout.empty())
+        std::cout << ", layout " << o.layout;
+    if (o.bitDepth)
+        std::cout << ", " << o.bitDepth << "-bit";
     std::cout << "\n";
-    for (const auto& d : diags) std::cout << "  " << d.str() << "\n";
+    for (const auto& d : diags)
+        std::cout << "  " << d.str() << "\n";
     return kExitOk;
 }
 

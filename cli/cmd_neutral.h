@@ -5,11 +5,11 @@ namespace lut::cli {
 
 struct NeutralOptions {
     std::string output;
-    std::string format;  // output format name ("" = from the extension)
-    std::string layout;  // image layout
-    int size = 0;        // 0 = default for the format (see defaultNeutralSize)
+    std::string format; // output format name ("" = from the extension)
+    std::string layout; // image layout
+    int size = 0;       // 0 = default for the format (see defaultNeutralSize)
     int bitDepth = 0;
-    std::string name;    // nutexb name field
+    std::string name; // nutexb name field
     std::string title;
 };
 

@@ -6,9 +6,9 @@
 #include "Commands.h"
 
 #include "lut/Error.h"
-#include "lut/io/Format.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/Format.h"
 
 #include <iostream>
 
@@ -18,12 +18,15 @@ namespace {
 
 std::string describe(const LutFile& f) {
     std::string s = f.format;
-    if (!f.dialect.empty()) s += " " + f.dialect;
+    if (!f.dialect.empty())
+        s += " " + f.dialect;
     if (f.shaper && f.cube)
         return s + " 1D " + std::to_string(f.shaper->size()) + " + 3D, " +
                std::to_string(f.cube->size()) + "^3";
-    if (f.cube) return s + " 3D, " + std::to_string(f.cube->size()) + "^3";
-    if (f.shaper) return s + " 1D, " + std::to_string(f.shaper->size());
+    if (f.cube)
+        return s + " 3D, " + std::to_string(f.cube->size()) + "^3";
+    if (f.shaper)
+        return s + " 1D, " + std::to_string(f.shaper->size());
     return s;
 }
 
@@ -40,7 +43,8 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
             }
             std::cout << d.str() << "\n";
         }
-        if (!v.parsed()) return false;
+        if (!v.parsed())
+            return false;
         if (v.ok) {
             std::cout << path << ": ok (" << v.summary() << ")\n";
             return true;
@@ -56,9 +60,11 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
         bool ok = true;
         for (const Diagnostic& d : f.diagnostics) {
             std::cout << d.str() << "\n";
-            if (o.strict && d.severity != Diagnostic::Severity::Info) ok = false;
+            if (o.strict && d.severity != Diagnostic::Severity::Info)
+                ok = false;
         }
-        if (ok) std::cout << path << ": ok (" << describe(f) << ")\n";
+        if (ok)
+            std::cout << path << ": ok (" << describe(f) << ")\n";
         return ok;
     } catch (const Error& e) {
         std::cerr << "lutkit: error: " << e.what() << "\n";
@@ -71,7 +77,8 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
 int runValidate(const ValidateOptions& o) {
     formats::registerBuiltinFormats();
     bool allOk = true;
-    for (const std::string& path : o.inputs) allOk = validateOne(path, o) && allOk;
+    for (const std::string& path : o.inputs)
+        allOk = validateOne(path, o) && allOk;
     return allOk ? kExitOk : kExitFailure;
 }
 

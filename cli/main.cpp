@@ -35,16 +35,16 @@ template <class Fn> void guarded(Fn&& fn) {
 } // namespace
 
 // Subcommand wiring, one file per subcommand, all in this translation unit.
-#include "setup_neutral.inc"
-#include "setup_convert.inc"
-#include "setup_info.inc"
-#include "setup_validate.inc"
 #include "setup_apply.inc"
-#include "setup_preview.inc"
+#include "setup_bench.inc"
+#include "setup_convert.inc"
 #include "setup_embed.inc"
 #include "setup_extract.inc"
 #include "setup_fit.inc"
-#include "setup_bench.inc"
+#include "setup_info.inc"
+#include "setup_neutral.inc"
+#include "setup_preview.inc"
+#include "setup_validate.inc"
 
 int main(int argc, char** argv) {
     CLI::App app{"lutkit: author and convert colour grading LUTs", "lutkit"};

@@ -7,8 +7,8 @@
 #include "PreviewRenderer.h"
 #include "PreviewView.h"
 
-#include "lut/interp/Interpolation.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/Interpolation.h"
 
 #include "lut/Version.h"
 
@@ -54,7 +54,8 @@ int main(int argc, char** argv) {
     // Headless modes need a platform before QApplication exists.
     bool headless = false;
     for (int i = 1; i < argc; ++i)
-        if (!std::strncmp(argv[i], "--screenshot", 12) || !std::strncmp(argv[i], "--save-preview", 14))
+        if (!std::strncmp(argv[i], "--screenshot", 12) ||
+            !std::strncmp(argv[i], "--save-preview", 14))
             headless = true;
     if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -67,33 +68,69 @@ int main(int argc, char** argv) {
     lut::formats::registerBuiltinFormats();
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Preview a colour grading LUT on a screenshot as the game shows it, adjust it "
-                       "and export it."));
+    parser.setApplicationDescription(QStringLiteral(
+        "Preview a colour grading LUT on a screenshot as the game shows it, adjust it "
+        "and export it."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("image"), QStringLiteral("Screenshot or render to preview."), QStringLiteral("[IMAGE"));
-    parser.addPositionalArgument(QStringLiteral("lut"), QStringLiteral("LUT file (any format lutkit reads)."), QStringLiteral("[LUT]]"));
-    QCommandLineOption shotOpt(QStringLiteral("screenshot"), QStringLiteral("Render the window offscreen once the preview is ready, save it to FILE and exit."), QStringLiteral("FILE"));
-    QCommandLineOption saveOpt(QStringLiteral("save-preview"), QStringLiteral("Write the full-resolution preview image to FILE (as lutkit preview does) and exit."), QStringLiteral("FILE"));
-    QCommandLineOption presetOpt(QStringLiteral("preset"), QStringLiteral("Preview preset: smash, pilot, lecture or none (default smash)."), QStringLiteral("NAME"), QStringLiteral("smash"));
-    QCommandLineOption interpOpt(QStringLiteral("interpolation"), QStringLiteral("LUT interpolation: trilinear, tetrahedral or nearest."), QStringLiteral("NAME"), QStringLiteral("trilinear"));
+    parser.addPositionalArgument(QStringLiteral("image"),
+                                 QStringLiteral("Screenshot or render to preview."),
+                                 QStringLiteral("[IMAGE"));
+    parser.addPositionalArgument(QStringLiteral("lut"),
+                                 QStringLiteral("LUT file (any format lutkit reads)."),
+                                 QStringLiteral("[LUT]]"));
+    QCommandLineOption shotOpt(
+        QStringLiteral("screenshot"),
+        QStringLiteral(
+            "Render the window offscreen once the preview is ready, save it to FILE and exit."),
+        QStringLiteral("FILE"));
+    QCommandLineOption saveOpt(
+        QStringLiteral("save-preview"),
+        QStringLiteral(
+            "Write the full-resolution preview image to FILE (as lutkit preview does) and exit."),
+        QStringLiteral("FILE"));
+    QCommandLineOption presetOpt(
+        QStringLiteral("preset"),
+        QStringLiteral("Preview preset: smash, pilot, lecture or none (default smash)."),
+        QStringLiteral("NAME"), QStringLiteral("smash"));
+    QCommandLineOption interpOpt(
+        QStringLiteral("interpolation"),
+        QStringLiteral("LUT interpolation: trilinear, tetrahedral or nearest."),
+        QStringLiteral("NAME"), QStringLiteral("trilinear"));
     QCommandLineOption noBloomOpt(QStringLiteral("no-bloom"), QStringLiteral("Switch bloom off."));
-    QCommandLineOption noLutOpt(QStringLiteral("no-lut"), QStringLiteral("Preview with a neutral LUT."));
-    QCommandLineOption noBrightenOpt(QStringLiteral("no-brighten"), QStringLiteral("Switch the Smash brighten pass off."));
-    QCommandLineOption sizeOpt(QStringLiteral("window-size"), QStringLiteral("Window size WxH (default 1480x920)."), QStringLiteral("WxH"));
-    QCommandLineOption fromShotOpt(QStringLiteral("from-screenshot"), QStringLiteral("IMAGE is an in-game screenshot: undo the game's grading first (as lutkit preview --from-screenshot)."));
-    QCommandLineOption adjustOpt(QStringLiteral("adjust"), QStringLiteral("Apply an adjustment after opening, e.g. exposure=0.5, gain.r=1.1 (repeatable; one undo step each)."), QStringLiteral("KEY=VALUE"));
-    QCommandLineOption viewOpt(QStringLiteral("view"), QStringLiteral("Preview view: split (default), after or before."), QStringLiteral("MODE"), QStringLiteral("split"));
-    QCommandLineOption zoomOpt(QStringLiteral("zoom"), QStringLiteral("fit (default) or a percentage such as 100."), QStringLiteral("ZOOM"), QStringLiteral("fit"));
-    QCommandLineOption verboseOpt(QStringLiteral("verbose"), QStringLiteral("Log each preview update's time to stderr."));
-    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt});
+    QCommandLineOption noLutOpt(QStringLiteral("no-lut"),
+                                QStringLiteral("Preview with a neutral LUT."));
+    QCommandLineOption noBrightenOpt(QStringLiteral("no-brighten"),
+                                     QStringLiteral("Switch the Smash brighten pass off."));
+    QCommandLineOption sizeOpt(QStringLiteral("window-size"),
+                               QStringLiteral("Window size WxH (default 1480x920)."),
+                               QStringLiteral("WxH"));
+    QCommandLineOption fromShotOpt(
+        QStringLiteral("from-screenshot"),
+        QStringLiteral("IMAGE is an in-game screenshot: undo the game's grading first (as lutkit "
+                       "preview --from-screenshot)."));
+    QCommandLineOption adjustOpt(
+        QStringLiteral("adjust"),
+        QStringLiteral("Apply an adjustment after opening, e.g. exposure=0.5, gain.r=1.1 "
+                       "(repeatable; one undo step each)."),
+        QStringLiteral("KEY=VALUE"));
+    QCommandLineOption viewOpt(QStringLiteral("view"),
+                               QStringLiteral("Preview view: split (default), after or before."),
+                               QStringLiteral("MODE"), QStringLiteral("split"));
+    QCommandLineOption zoomOpt(QStringLiteral("zoom"),
+                               QStringLiteral("fit (default) or a percentage such as 100."),
+                               QStringLiteral("ZOOM"), QStringLiteral("fit"));
+    QCommandLineOption verboseOpt(QStringLiteral("verbose"),
+                                  QStringLiteral("Log each preview update's time to stderr."));
+    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt,
+                       sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt});
     parser.process(app);
 
     lut::gui::MainWindow window;
     window.setVerbose(parser.isSet(verboseOpt));
     window.setInteractiveErrors(!headless);
-    if (!headless) window.restoreWindowState();
+    if (!headless)
+        window.restoreWindowState();
 
     lut::gui::PreviewOptions options;
     try {
@@ -110,7 +147,8 @@ int main(int argc, char** argv) {
     window.document()->setFromScreenshot(parser.isSet(fromShotOpt));
     if (parser.isSet(sizeOpt)) {
         const QStringList wh = parser.value(sizeOpt).split('x');
-        if (wh.size() == 2) window.resize(wh[0].toInt(), wh[1].toInt());
+        if (wh.size() == 2)
+            window.resize(wh[0].toInt(), wh[1].toInt());
     }
 
     const QStringList args = parser.positionalArguments();
@@ -119,29 +157,37 @@ int main(int argc, char** argv) {
         return 2;
     }
     bool ok = true;
-    if (args.size() >= 1) ok = window.openImageFile(args[0]) && ok;
-    if (args.size() >= 2) ok = window.openLutFile(args[1]) && ok;
+    if (args.size() >= 1)
+        ok = window.openImageFile(args[0]) && ok;
+    if (args.size() >= 2)
+        ok = window.openLutFile(args[1]) && ok;
     for (const QString& a : parser.values(adjustOpt)) {
         const QString key = a.section('=', 0, 0).trimmed();
         bool isNumber = false;
         const double value = a.section('=', 1).toDouble(&isNumber);
         const lut::gui::AdjustParamInfo* info = nullptr;
         for (const auto& p : lut::gui::adjustParams())
-            if (QString::fromStdString(p.key) == key) info = &p;
+            if (QString::fromStdString(p.key) == key)
+                info = &p;
         if (!info || !isNumber || !a.contains('=')) {
-            std::fprintf(stderr, "lutkit-editor: --adjust %s: expected KEY=NUMBER with KEY one of", qPrintable(a));
-            for (const auto& p : lut::gui::adjustParams()) std::fprintf(stderr, " %s", p.key.c_str());
+            std::fprintf(stderr, "lutkit-editor: --adjust %s: expected KEY=NUMBER with KEY one of",
+                         qPrintable(a));
+            for (const auto& p : lut::gui::adjustParams())
+                std::fprintf(stderr, " %s", p.key.c_str());
             std::fprintf(stderr, "\n");
             return 2;
         }
         window.document()->editParam(info->id, std::clamp(value, info->min, info->max));
         window.document()->endGesture();
     }
-    if (headless && !ok) return 1;
+    if (headless && !ok)
+        return 1;
 
     const QString view = parser.value(viewOpt);
-    if (view == QLatin1String("after")) window.previewView()->setMode(lut::gui::PreviewView::Mode::After);
-    else if (view == QLatin1String("before")) window.previewView()->setMode(lut::gui::PreviewView::Mode::Before);
+    if (view == QLatin1String("after"))
+        window.previewView()->setMode(lut::gui::PreviewView::Mode::After);
+    else if (view == QLatin1String("before"))
+        window.previewView()->setMode(lut::gui::PreviewView::Mode::Before);
     else if (view != QLatin1String("split")) {
         std::fprintf(stderr, "lutkit-editor: --view: expected split, after or before\n");
         return 2;
@@ -157,16 +203,19 @@ int main(int argc, char** argv) {
         }
         window.previewView()->zoomTo(percent / 100.0);
     }
-    if (!headless) return app.exec();
+    if (!headless)
+        return app.exec();
 
-    if (parser.isSet(saveOpt) && !window.savePreviewImage(parser.value(saveOpt))) return 1;
+    if (parser.isSet(saveOpt) && !window.savePreviewImage(parser.value(saveOpt)))
+        return 1;
     if (parser.isSet(shotOpt)) {
         window.waitForPreview();
         QApplication::processEvents();
         const QImage shot = window.grab().toImage();
         QSaveFile out(parser.value(shotOpt)); // atomic: temporary file renamed on commit
         if (!out.open(QIODevice::WriteOnly) || !shot.save(&out, "PNG") || !out.commit()) {
-            std::fprintf(stderr, "lutkit-editor: cannot write %s\n", qPrintable(parser.value(shotOpt)));
+            std::fprintf(stderr, "lutkit-editor: cannot write %s\n",
+                         qPrintable(parser.value(shotOpt)));
             return 1;
         }
         if (parser.isSet(verboseOpt))

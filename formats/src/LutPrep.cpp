@@ -2,8 +2,8 @@
 
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
-#include "lut/ops/Resample.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/Resample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,8 @@
 
 namespace lut::formats {
 
-Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path, std::string message) {
+Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path,
+                          std::string message) {
     Diagnostic d;
     d.severity = severity;
     d.path = path;
@@ -33,7 +34,8 @@ Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Dia
     Lut3D lut = file.toLut3D(0);
     if (file.shaper)
         diags.push_back(makeDiagnostic(S::Info, path,
-                                       "the 1D shaper was baked into a " + std::to_string(lut.size()) +
+                                       "the 1D shaper was baked into a " +
+                                           std::to_string(lut.size()) +
                                            "^3 table (this format stores no shaper)"));
     const int target = size > 0 ? size : lut.size();
     if (!lut.hasDefaultDomain()) {
@@ -47,11 +49,12 @@ Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Dia
             for (int g = 0; g < target; ++g)
                 for (int r = 0; r < target; ++r)
                     out.at(r, g, b) = sampler->sample(glm::vec3(r * inv, g * inv, b * inv));
-        diags.push_back(makeDiagnostic(
-            S::Warning, path,
-            "the domain " + vecStr(lut.domainMin()) + " .. " + vecStr(lut.domainMax()) +
-                " was re-sampled onto 0..1 (this format has no domain; inputs outside the old domain "
-                "take its edge value)"));
+        diags.push_back(makeDiagnostic(S::Warning, path,
+                                       "the domain " + vecStr(lut.domainMin()) + " .. " +
+                                           vecStr(lut.domainMax()) +
+                                           " was re-sampled onto 0..1 (this format has no domain; "
+                                           "inputs outside the old domain "
+                                           "take its edge value)"));
         return out;
     }
     if (target != lut.size()) {
@@ -61,7 +64,8 @@ Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Dia
         rr.lut.comments() = lut.comments();
         diags.push_back(makeDiagnostic(S::Info, path,
                                        "resampled " + std::to_string(from) + "^3 -> " +
-                                           std::to_string(target) + "^3 (tetrahedral): " + rr.error.str()));
+                                           std::to_string(target) +
+                                           "^3 (tetrahedral): " + rr.error.str()));
         return std::move(rr.lut);
     }
     return lut;
@@ -71,19 +75,22 @@ std::size_t countOutOfUnitRange(const Lut3D& lut) {
     std::size_t n = 0;
     for (const glm::vec3& v : lut.entries())
         for (int c = 0; c < 3; ++c)
-            if (!(v[c] >= 0.0f && v[c] <= 1.0f)) ++n;
+            if (!(v[c] >= 0.0f && v[c] <= 1.0f))
+                ++n;
     return n;
 }
 
 void addClampDiagnostic(std::size_t count, int bits, const std::string& path, Diagnostics& diags) {
-    if (count == 0) return;
-    diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, path,
-                                   std::to_string(count) + " channel value" + (count == 1 ? "" : "s") +
-                                       " outside 0..1 (or NaN) clamped to fit " + std::to_string(bits) +
-                                       "-bit output"));
+    if (count == 0)
+        return;
+    diags.push_back(makeDiagnostic(
+        Diagnostic::Severity::Warning, path,
+        std::to_string(count) + " channel value" + (count == 1 ? "" : "s") +
+            " outside 0..1 (or NaN) clamped to fit " + std::to_string(bits) + "-bit output"));
 }
 
-void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path, Diagnostics& diags) {
+void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path,
+                               Diagnostics& diags) {
     ErrorAccumulator acc;
     for (const glm::vec3& v : lut.entries())
         for (int c = 0; c < 3; ++c) {
@@ -93,8 +100,9 @@ void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& pa
         }
     const ErrorStats e = acc.result();
     if (e.maxAbs > 0)
-        diags.push_back(makeDiagnostic(Diagnostic::Severity::Info, path,
-                                       "quantised to " + std::to_string(bits) + " bits: " + e.str()));
+        diags.push_back(
+            makeDiagnostic(Diagnostic::Severity::Info, path,
+                           "quantised to " + std::to_string(bits) + " bits: " + e.str()));
 }
 
 } // namespace lut::formats

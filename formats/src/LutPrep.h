@@ -21,8 +21,10 @@ void addClampDiagnostic(std::size_t count, int bits, const std::string& path, Di
 
 // Adds "quantised to <bits> bits: <error>" (info) when rounding to nearest changes any in-range
 // value (clamping is reported apart by addClampDiagnostic).
-void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path, Diagnostics& diags);
+void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path,
+                               Diagnostics& diags);
 
-Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path, std::string message);
+Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path,
+                          std::string message);
 
 } // namespace lut::formats

@@ -18,11 +18,13 @@ void registerBuiltinFormats() {
         r.add(makeStripFormat());
         r.add(makeHaldFormat());
         r.add(makeOcioReadFormat());
-        for (auto& f : makeOcioBakeFormats()) r.add(std::move(f));
+        for (auto& f : makeOcioBakeFormats())
+            r.add(std::move(f));
     });
 }
 
-LutFile readLut(const std::string& path, const FormatOptions& options, const std::string& formatName) {
+LutFile readLut(const std::string& path, const FormatOptions& options,
+                const std::string& formatName) {
     registerBuiltinFormats();
     return FormatRegistry::instance().read(path, options, formatName);
 }

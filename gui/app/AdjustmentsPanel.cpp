@@ -54,14 +54,17 @@ AdjustmentsPanel::AdjustmentsPanel(Document* doc, QWidget* parent) : QWidget(par
         connect(slider, &QSlider::valueChanged, this, [this, id, slider](int pos) {
             m_doc->editParam(id, sliderToParam(adjustParamInfo(id), pos, kSteps));
             // Keyboard and click steps are one undo step each; drags merge until release.
-            if (!slider->isSliderDown()) m_doc->endGesture();
+            if (!slider->isSliderDown())
+                m_doc->endGesture();
         });
         connect(slider, &QSlider::sliderPressed, this, [this] {
-            if (m_pressed++ == 0) emit interactiveChanged(true);
+            if (m_pressed++ == 0)
+                emit interactiveChanged(true);
         });
         connect(slider, &QSlider::sliderReleased, this, [this] {
             m_doc->endGesture();
-            if (--m_pressed == 0) emit interactiveChanged(false);
+            if (--m_pressed == 0)
+                emit interactiveChanged(false);
         });
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, id](double value) {
             m_doc->editParam(id, value);
@@ -82,8 +85,12 @@ AdjustmentsPanel::AdjustmentsPanel(Document* doc, QWidget* parent) : QWidget(par
     syncFromDocument();
 }
 
-QSlider* AdjustmentsPanel::slider(AdjustParam id) const { return m_rows.at(id).slider; }
-QDoubleSpinBox* AdjustmentsPanel::spinBox(AdjustParam id) const { return m_rows.at(id).spin; }
+QSlider* AdjustmentsPanel::slider(AdjustParam id) const {
+    return m_rows.at(id).slider;
+}
+QDoubleSpinBox* AdjustmentsPanel::spinBox(AdjustParam id) const {
+    return m_rows.at(id).spin;
+}
 
 void AdjustmentsPanel::syncFromDocument() {
     for (auto& [id, row] : m_rows) {
@@ -91,7 +98,8 @@ void AdjustmentsPanel::syncFromDocument() {
         const double value = m_doc->param(id);
         QSignalBlocker b1(row.slider), b2(row.spin);
         // Do not yank a slider the user is dragging back to a rounded position.
-        if (!row.slider->isSliderDown()) row.slider->setValue(paramToSlider(info, value, kSteps));
+        if (!row.slider->isSliderDown())
+            row.slider->setValue(paramToSlider(info, value, kSteps));
         row.spin->setValue(value);
     }
 }

@@ -1,7 +1,7 @@
 #include "ExportDialog.h"
 
-#include "lut/io/Layout.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/Layout.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -18,7 +18,8 @@ namespace lut::gui {
 
 static bool isImageLayoutFormat(const Format& f) {
     for (const auto& e : f.extensions())
-        if (e == ".png" || e == ".tif" || e == ".tiff" || e == ".exr" || e == ".jpg") return true;
+        if (e == ".png" || e == ".tif" || e == ".tiff" || e == ".exr" || e == ".jpg")
+            return true;
     return false;
 }
 
@@ -26,17 +27,21 @@ QList<ExportChoice> exportChoices() {
     formats::registerBuiltinFormats();
     QList<ExportChoice> out;
     for (const Format* f : FormatRegistry::instance().all()) {
-        if (!f->canWrite()) continue;
+        if (!f->canWrite())
+            continue;
         const QString name = QString::fromStdString(f->name());
         const QString desc = QString::fromStdString(f->description());
         // A format reached by name only (hald shares the image extensions with strip) writes PNG.
-        const QString ext = f->extensions().empty() ? QStringLiteral(".png")
-                                                    : QString::fromStdString(f->extensions().front());
+        const QString ext = f->extensions().empty()
+                                ? QStringLiteral(".png")
+                                : QString::fromStdString(f->extensions().front());
         if (isImageLayoutFormat(*f) && !f->name().starts_with("hald")) {
             for (LutLayout l : allLayouts()) {
-                if (l == LutLayout::Hald) continue;
+                if (l == LutLayout::Hald)
+                    continue;
                 const QString ln = QString::fromLatin1(toString(l));
-                out.push_back({name, ln, QStringLiteral("%1 — %2 layout (%3)").arg(desc, ln, ext), ext});
+                out.push_back(
+                    {name, ln, QStringLiteral("%1 — %2 layout (%3)").arg(desc, ln, ext), ext});
             }
         } else {
             out.push_back({name, {}, QStringLiteral("%1 (%2)").arg(desc, ext), ext});
@@ -51,7 +56,8 @@ ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
     auto* form = new QFormLayout(this);
     m_format = new QComboBox(this);
     m_format->setObjectName("format");
-    for (const auto& c : m_choices) m_format->addItem(c.label);
+    for (const auto& c : m_choices)
+        m_format->addItem(c.label);
     form->addRow(tr("Format"), m_format);
 
     auto* pathRow = new QHBoxLayout;
@@ -75,10 +81,12 @@ ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
     form->addRow(tr("Bit depth"), m_bitDepth);
     m_dither = new QCheckBox(tr("Ordered dither for 8-bit images"), this);
     form->addRow(QString(), m_dither);
-    m_compensate = new QCheckBox(tr("Game compensation (Smash): the game shows this LUT's look"), this);
+    m_compensate =
+        new QCheckBox(tr("Game compensation (Smash): the game shows this LUT's look"), this);
     m_compensate->setObjectName("compensate");
-    m_compensate->setToolTip(tr("Writes the 16³ LUT that makes Smash Ultimate's grading and "
-                                "brighten pass reproduce the LUT as edited (docs/specs/smash-pipeline.md)"));
+    m_compensate->setToolTip(
+        tr("Writes the 16³ LUT that makes Smash Ultimate's grading and "
+           "brighten pass reproduce the LUT as edited (docs/specs/smash-pipeline.md)"));
     form->addRow(QString(), m_compensate);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -100,12 +108,16 @@ void ExportDialog::choiceChanged() {
 
 void ExportDialog::browse() {
     const ExportChoice c = choice();
-    const QString file = QFileDialog::getSaveFileName(
-        this, tr("Export LUT"), m_path->text(), QStringLiteral("%1 (*%2)").arg(c.label, c.extension));
-    if (!file.isEmpty()) m_path->setText(file);
+    const QString file =
+        QFileDialog::getSaveFileName(this, tr("Export LUT"), m_path->text(),
+                                     QStringLiteral("%1 (*%2)").arg(c.label, c.extension));
+    if (!file.isEmpty())
+        m_path->setText(file);
 }
 
-QString ExportDialog::path() const { return m_path->text(); }
+QString ExportDialog::path() const {
+    return m_path->text();
+}
 
 ExportChoice ExportDialog::choice() const {
     const int i = m_format->currentIndex();
@@ -121,6 +133,8 @@ FormatOptions ExportDialog::options() const {
     return o;
 }
 
-bool ExportDialog::smashCompensate() const { return m_compensate->isChecked(); }
+bool ExportDialog::smashCompensate() const {
+    return m_compensate->isChecked();
+}
 
 } // namespace lut::gui

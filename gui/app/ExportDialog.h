@@ -13,10 +13,10 @@ class QSpinBox;
 namespace lut::gui {
 
 struct ExportChoice {
-    QString format;      // registry name
-    QString layout;      // "" unless the format is an image layout
+    QString format; // registry name
+    QString layout; // "" unless the format is an image layout
     QString label;
-    QString extension;   // with dot
+    QString extension; // with dot
 };
 
 // Every (format, layout) the registry can write. Image formats are offered once per layout.

@@ -28,8 +28,10 @@ public:
     const QImage& image() const { return m_image; }
     bool hasHeightForWidth() const override { return true; }
     int heightForWidth(int w) const override {
-        if (m_image.isNull()) return 40;
-        return std::max(24, static_cast<int>(std::lround(double(w) * m_image.height() / m_image.width())));
+        if (m_image.isNull())
+            return 40;
+        return std::max(
+            24, static_cast<int>(std::lround(double(w) * m_image.height() / m_image.width())));
     }
     QSize sizeHint() const override { return {320, heightForWidth(320)}; }
 
@@ -37,8 +39,10 @@ protected:
     void paintEvent(QPaintEvent*) override {
         QPainter p(this);
         p.fillRect(rect(), QColor(0x20, 0x20, 0x20));
-        if (m_image.isNull()) return;
-        const double s = std::min(double(width()) / m_image.width(), double(height()) / m_image.height());
+        if (m_image.isNull())
+            return;
+        const double s =
+            std::min(double(width()) / m_image.width(), double(height()) / m_image.height());
         const QSizeF sz(m_image.width() * s, m_image.height() * s);
         const QRectF r(QPointF((width() - sz.width()) / 2, (height() - sz.height()) / 2), sz);
         p.setRenderHint(QPainter::SmoothPixmapTransform, false);
@@ -53,7 +57,8 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     auto* v = new QVBoxLayout(this);
     auto* form = new QFormLayout;
     m_layout = new QComboBox(this);
-    for (LutLayout l : allLayouts()) m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
+    for (LutLayout l : allLayouts())
+        m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
     m_layout->setToolTip(tr("Layout of the slices (see docs/specs/strip-layouts.md)"));
     form->addRow(tr("Layout"), m_layout);
     m_wrap = new QCheckBox(tr("Show slices as a grid"), this);
@@ -72,9 +77,13 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     connect(m_layout, &QComboBox::currentIndexChanged, this, [this] { refresh(); });
 }
 
-LutLayout LutView::layout() const { return static_cast<LutLayout>(m_layout->currentData().toInt()); }
+LutLayout LutView::layout() const {
+    return static_cast<LutLayout>(m_layout->currentData().toInt());
+}
 
-const QImage& LutView::stripImage() const { return m_strip->image(); }
+const QImage& LutView::stripImage() const {
+    return m_strip->image();
+}
 
 void LutView::setLut(const Lut3D& lut, const QString& origin) {
     m_lut = lut;
@@ -83,7 +92,8 @@ void LutView::setLut(const Lut3D& lut, const QString& origin) {
 }
 
 QImage LutView::wrapSlices(const QImage& strip, int n) {
-    if (n <= 0 || strip.width() != n * n || strip.height() != n) return strip;
+    if (n <= 0 || strip.width() != n * n || strip.height() != n)
+        return strip;
     const int cols = static_cast<int>(std::ceil(std::sqrt(double(n))));
     const int rows = (n + cols - 1) / cols;
     const int gap = 1;
@@ -91,7 +101,8 @@ QImage LutView::wrapSlices(const QImage& strip, int n) {
     out.fill(QColor(0x20, 0x20, 0x20));
     QPainter p(&out);
     for (int k = 0; k < n; ++k)
-        p.drawImage(QPoint((k % cols) * (n + gap), (k / cols) * (n + gap)), strip, QRect(k * n, 0, n, n));
+        p.drawImage(QPoint((k % cols) * (n + gap), (k / cols) * (n + gap)), strip,
+                    QRect(k * n, 0, n, n));
     return out;
 }
 
@@ -104,7 +115,8 @@ void LutView::refresh() {
     QString note;
     try {
         QImage img = toDisplayImage(lutToImage(m_lut, layout()));
-        if (m_wrap->isChecked() && layout() != LutLayout::Hald) img = wrapSlices(img, m_lut.size());
+        if (m_wrap->isChecked() && layout() != LutLayout::Hald)
+            img = wrapSlices(img, m_lut.size());
         m_strip->setImage(img);
     } catch (const std::exception& e) { // Hald needs N = L^2
         m_strip->setImage({});
@@ -119,9 +131,14 @@ void LutView::refresh() {
            "<b>Title</b> %9<br><b>Neutral</b> %10<br><b>Values</b> %11 .. %12<br><b>From</b> %13")
             .arg(QString::number(n) + QChar(0x00B3))
             .arg(qulonglong(m_lut.entryCount()))
-            .arg(dmin.x).arg(dmin.y).arg(dmin.z)
-            .arg(dmax.x).arg(dmax.y).arg(dmax.z)
-            .arg(m_lut.title().empty() ? tr("(none)") : QString::fromStdString(m_lut.title()).toHtmlEscaped())
+            .arg(dmin.x)
+            .arg(dmin.y)
+            .arg(dmin.z)
+            .arg(dmax.x)
+            .arg(dmax.y)
+            .arg(dmax.z)
+            .arg(m_lut.title().empty() ? tr("(none)")
+                                       : QString::fromStdString(m_lut.title()).toHtmlEscaped())
             .arg(dev <= 1e-6f ? tr("yes") : tr("no (max deviation %1)").arg(double(dev), 0, 'g', 3))
             .arg(double(range.first), 0, 'g', 4)
             .arg(double(range.second), 0, 'g', 4)

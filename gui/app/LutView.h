@@ -2,8 +2,8 @@
 // The LUT panel: the N slices of the effective LUT as a strip in a chosen layout
 // (lut::lutToImage), scaled with nearest-neighbour so every entry stays a visible square, and
 // the LUT's facts (size, domain, title, neutral or not, value range).
-#include "lut/io/Layout.h"
 #include "lut/Lut3D.h"
+#include "lut/io/Layout.h"
 
 #include <QWidget>
 

@@ -8,11 +8,11 @@
 #include "RecentFiles.h"
 
 #include "lut/Error.h"
-#include "lut/io/Format.h"
-#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/Sampler.h"
+#include "lut/io/Format.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -53,10 +53,12 @@ QString lutFilter() {
     formats::registerBuiltinFormats();
     QStringList patterns;
     for (const Format* f : FormatRegistry::instance().all()) {
-        if (!f->canRead()) continue;
+        if (!f->canRead())
+            continue;
         for (const auto& e : f->extensions()) {
             const QString p = QStringLiteral("*") + QString::fromStdString(e);
-            if (!patterns.contains(p)) patterns << p;
+            if (!patterns.contains(p))
+                patterns << p;
         }
     }
     return QObject::tr("LUT files (%1);;All files (*)").arg(patterns.join(' '));
@@ -96,7 +98,9 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_scheduler, &PreviewScheduler::frameReady, this, &MainWindow::onFrame);
     connect(m_view, &PreviewView::hoverPixel, this, &MainWindow::onHover);
     connect(m_view, &PreviewView::zoomChanged, this, [this](double s) {
-        m_zoomLabel->setText(tr("Zoom %1 %%2").arg(qRound(s * 100)).arg(m_view->fitMode() ? tr(" (fit)") : QString()));
+        m_zoomLabel->setText(tr("Zoom %1 %%2")
+                                 .arg(qRound(s * 100))
+                                 .arg(m_view->fitMode() ? tr(" (fit)") : QString()));
     });
     connect(m_adjust, &AdjustmentsPanel::interactiveChanged, this, &MainWindow::setInteractive);
 
@@ -144,14 +148,16 @@ void MainWindow::buildActions() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QMenu* newMenu = file->addMenu(tr("&New from neutral"));
     for (int size : {16, 17, 32, 33, 64, 65}) {
-        QAction* a = newMenu->addAction(QString::number(size) + QChar(0x00B3) + (size == 16 ? tr(" (Smash)") : QString()));
+        QAction* a = newMenu->addAction(QString::number(size) + QChar(0x00B3) +
+                                        (size == 16 ? tr(" (Smash)") : QString()));
         connect(a, &QAction::triggered, this, [this, size] { newNeutral(size); });
     }
-    QAction* openImage = file->addAction(st->standardIcon(QStyle::SP_DirOpenIcon), tr("Open &Image…"),
-                                         QKeySequence::Open, this, &MainWindow::openImageDialog);
-    QAction* openLut = file->addAction(st->standardIcon(QStyle::SP_FileDialogDetailedView),
-                                       tr("Open &LUT…"), QKeySequence(tr("Ctrl+L")), this,
-                                       &MainWindow::openLutDialog);
+    QAction* openImage =
+        file->addAction(st->standardIcon(QStyle::SP_DirOpenIcon), tr("Open &Image…"),
+                        QKeySequence::Open, this, &MainWindow::openImageDialog);
+    QAction* openLut =
+        file->addAction(st->standardIcon(QStyle::SP_FileDialogDetailedView), tr("Open &LUT…"),
+                        QKeySequence(tr("Ctrl+L")), this, &MainWindow::openLutDialog);
     file->addAction(tr("LUT from &Edited Screenshot…"), this, &MainWindow::openScreenshotDialog)
         ->setToolTip(tr("Extract the LUT from a screenshot with an embedded patch (lutkit embed)"));
     m_recentImages = file->addMenu(tr("Recent Images"));
@@ -160,8 +166,9 @@ void MainWindow::buildActions() {
     QAction* save = file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save LUT"),
                                     QKeySequence::Save, this, [this] { saveDocument(); });
     file->addAction(tr("Save LUT &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAsDialog);
-    QAction* exportAct = file->addAction(st->standardIcon(QStyle::SP_ArrowForward), tr("&Export LUT…"),
-                                         QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportDialog);
+    QAction* exportAct =
+        file->addAction(st->standardIcon(QStyle::SP_ArrowForward), tr("&Export LUT…"),
+                        QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportDialog);
     file->addAction(tr("Save &Preview Image…"), QKeySequence(tr("Ctrl+Shift+P")), this,
                     &MainWindow::savePreviewDialog);
     file->addSeparator();
@@ -188,8 +195,10 @@ void MainWindow::buildActions() {
                                          &PreviewView::zoomToFit);
     QAction* actual = m_viewMenu->addAction(tr("&100 %"), QKeySequence(tr("Ctrl+1")), this,
                                             [this] { m_view->zoomTo(1.0); });
-    m_viewMenu->addAction(tr("Zoom &In"), QKeySequence::ZoomIn, this, [this] { m_view->zoomBy(1.25); });
-    m_viewMenu->addAction(tr("Zoom &Out"), QKeySequence::ZoomOut, this, [this] { m_view->zoomBy(0.8); });
+    m_viewMenu->addAction(tr("Zoom &In"), QKeySequence::ZoomIn, this,
+                          [this] { m_view->zoomBy(1.25); });
+    m_viewMenu->addAction(tr("Zoom &Out"), QKeySequence::ZoomOut, this,
+                          [this] { m_view->zoomBy(0.8); });
     m_viewMenu->addSeparator();
     auto* modes = new QActionGroup(this);
     QAction* modeActs[3];
@@ -199,19 +208,23 @@ void MainWindow::buildActions() {
         {tr("&Before Only"), PreviewView::Mode::Before}};
     for (int i = 0; i < 3; ++i) {
         const auto mode = modeList[i].second;
-        modeActs[i] = m_viewMenu->addAction(modeList[i].first, this, [this, mode] { m_view->setMode(mode); });
+        modeActs[i] =
+            m_viewMenu->addAction(modeList[i].first, this, [this, mode] { m_view->setMode(mode); });
         modeActs[i]->setCheckable(true);
         modes->addAction(modeActs[i]);
     }
     modeActs[0]->setChecked(true);
-    connect(m_view, &PreviewView::modeChanged, this, [modeActs = std::vector<QAction*>(modeActs, modeActs + 3)](PreviewView::Mode m) {
-        modeActs[static_cast<std::size_t>(m)]->setChecked(true); // Mode order = action order
-    });
+    connect(m_view, &PreviewView::modeChanged, this,
+            [modeActs = std::vector<QAction*>(modeActs, modeActs + 3)](PreviewView::Mode m) {
+                modeActs[static_cast<std::size_t>(m)]->setChecked(
+                    true); // Mode order = action order
+            });
     modeActs[0]->setShortcut(QKeySequence(tr("S")));
     modeActs[1]->setShortcut(QKeySequence(tr("A")));
     modeActs[2]->setShortcut(QKeySequence(tr("B")));
     m_viewMenu->addSeparator();
-    for (QDockWidget* d : findChildren<QDockWidget*>()) m_viewMenu->addAction(d->toggleViewAction());
+    for (QDockWidget* d : findChildren<QDockWidget*>())
+        m_viewMenu->addAction(d->toggleViewAction());
 
     // Preview
     QMenu* preview = menuBar()->addMenu(tr("&Preview"));
@@ -221,10 +234,12 @@ void MainWindow::buildActions() {
     m_preset->addItem(tr("Pilot"), int(Preset::Pilot));
     m_preset->addItem(tr("Lecture"), int(Preset::Lecture));
     m_preset->addItem(tr("None"), int(Preset::None));
-    m_preset->setToolTip(tr("Post-processing chain the preview runs (the same as lutkit preview --preset)"));
+    m_preset->setToolTip(
+        tr("Post-processing chain the preview runs (the same as lutkit preview --preset)"));
     m_interp = new QComboBox(this);
     m_interp->setObjectName("interpolation");
-    for (Interpolation i : {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest})
+    for (Interpolation i :
+         {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest})
         m_interp->addItem(QString::fromLatin1(toString(i)), int(i));
     m_interp->setToolTip(tr("LUT interpolation"));
     m_bloomAct = preview->addAction(tr("&Bloom"));
@@ -251,8 +266,9 @@ void MainWindow::buildActions() {
     m_brightenAct->setToolTip(tr("Smash brighten pass (x2 in linear light); needs the smash preset "
                                  "and trilinear or tetrahedral interpolation"));
     auto updateBrighten = [this] {
-        m_brightenAct->setEnabled(m_preset->currentData().toInt() == int(Preset::Smash) &&
-                                  brightenToggleWorks(static_cast<Interpolation>(m_interp->currentData().toInt())));
+        m_brightenAct->setEnabled(
+            m_preset->currentData().toInt() == int(Preset::Smash) &&
+            brightenToggleWorks(static_cast<Interpolation>(m_interp->currentData().toInt())));
     };
     connect(m_preset, &QComboBox::currentIndexChanged, this, [this, updateBrighten] {
         updateBrighten();
@@ -300,7 +316,8 @@ void MainWindow::buildActions() {
     vt->addAction(fit);
     vt->addAction(actual);
     vt->addSeparator();
-    for (QAction* a : modeActs) vt->addAction(a);
+    for (QAction* a : modeActs)
+        vt->addAction(a);
     modeActs[0]->setText(tr("Split"));
     modeActs[1]->setText(tr("After"));
     modeActs[2]->setText(tr("Before"));
@@ -322,7 +339,8 @@ void MainWindow::buildStatusBar() {
 
 void MainWindow::updateTitle() {
     QString title = m_doc->displayName() + QStringLiteral("[*]");
-    if (m_doc->hasImage()) title += QStringLiteral(" — ") + QFileInfo(m_doc->imagePath()).fileName();
+    if (m_doc->hasImage())
+        title += QStringLiteral(" — ") + QFileInfo(m_doc->imagePath()).fileName();
     setWindowTitle(title + QStringLiteral(" — lutkit editor"));
     setWindowModified(m_doc->isModified());
 }
@@ -336,7 +354,8 @@ void MainWindow::reportError(const QString& title, const QString& message) {
 }
 
 void MainWindow::addRecent(const QString& key, const QString& path) {
-    if (!m_interactiveErrors) return; // headless runs (tests, --screenshot) leave settings alone
+    if (!m_interactiveErrors)
+        return; // headless runs (tests, --screenshot) leave settings alone
     QSettings settings;
     settings.setValue(key, addRecentFile(settings.value(key).toStringList(), path));
     updateRecentMenus();
@@ -348,8 +367,9 @@ void MainWindow::updateRecentMenus() {
         menu->clear();
         const QStringList list = settings.value(key).toStringList();
         for (const QString& p : list) {
-            menu->addAction(QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() + ')',
-                            this, [this, p, lut] { lut ? (void)openLutFile(p) : (void)openImageFile(p); });
+            menu->addAction(
+                QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() + ')', this,
+                [this, p, lut] { lut ? (void)openLutFile(p) : (void)openImageFile(p); });
         }
         menu->setEnabled(!list.isEmpty());
     };
@@ -374,7 +394,8 @@ bool MainWindow::openImageFile(const QString& path) {
 }
 
 bool MainWindow::openLutFile(const QString& path) {
-    if (!maybeSave()) return false;
+    if (!maybeSave())
+        return false;
     try {
         m_doc->openLut(path);
     } catch (const std::exception& e) {
@@ -386,7 +407,8 @@ bool MainWindow::openLutFile(const QString& path) {
 }
 
 bool MainWindow::openScreenshotLut(const QString& path) {
-    if (!maybeSave()) return false;
+    if (!maybeSave())
+        return false;
     QStringList notes;
     try {
         notes = m_doc->startFromScreenshot(path);
@@ -404,7 +426,8 @@ bool MainWindow::openScreenshotLut(const QString& path) {
 }
 
 void MainWindow::newNeutral(int size) {
-    if (!maybeSave()) return;
+    if (!maybeSave())
+        return;
     m_doc->newNeutral(size);
 }
 
@@ -413,7 +436,8 @@ bool MainWindow::exportLut(const QString& path, const QString& format, const For
     try {
         const Diagnostics d = m_doc->exportLut(path, format, options, smashCompensate);
         QStringList lines;
-        for (const auto& x : d) lines << QString::fromStdString(x.str());
+        for (const auto& x : d)
+            lines << QString::fromStdString(x.str());
         statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 5000);
         if (!lines.isEmpty() && m_interactiveErrors)
             QMessageBox::information(this, tr("Exported with notes"), lines.join('\n'));
@@ -452,20 +476,25 @@ bool MainWindow::saveDocument() {
 
 void MainWindow::saveAsDialog() {
     QString base = m_doc->lutPath();
-    if (base.isEmpty()) base = QStringLiteral("grade.cube");
+    if (base.isEmpty())
+        base = QStringLiteral("grade.cube");
     const QString path = QFileDialog::getSaveFileName(this, tr("Save LUT"), base,
                                                       tr("Cube LUT (*.cube);;All files (*)"));
-    if (!path.isEmpty()) saveDocumentAs(path);
+    if (!path.isEmpty())
+        saveDocumentAs(path);
 }
 
 bool MainWindow::maybeSave() {
-    if (!m_doc->isModified()) return true;
-    if (!m_interactiveErrors) return true; // headless: never block on a question
+    if (!m_doc->isModified())
+        return true;
+    if (!m_interactiveErrors)
+        return true; // headless: never block on a question
     const auto answer = QMessageBox::warning(
         this, tr("Unsaved changes"),
         tr("The LUT \"%1\" has unsaved changes. Save them?").arg(m_doc->displayName()),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save) return saveDocument();
+    if (answer == QMessageBox::Save)
+        return saveDocument();
     return answer == QMessageBox::Discard;
 }
 
@@ -489,40 +518,50 @@ void MainWindow::restoreWindowState() {
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
-    if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+    if (e->mimeData()->hasUrls())
+        e->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* e) {
     for (const QUrl& url : e->mimeData()->urls()) {
-        if (!url.isLocalFile()) continue;
+        if (!url.isLocalFile())
+            continue;
         const QString path = url.toLocalFile();
-        if (looksLikeLutFile(path)) openLutFile(path);
-        else openImageFile(path);
+        if (looksLikeLutFile(path))
+            openLutFile(path);
+        else
+            openImageFile(path);
     }
     e->acceptProposedAction();
 }
 
 void MainWindow::openImageDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Image"), QString(), imageFilter());
-    if (!path.isEmpty()) openImageFile(path);
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Image"), QString(), imageFilter());
+    if (!path.isEmpty())
+        openImageFile(path);
 }
 
 void MainWindow::openLutDialog() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open LUT"), QString(), lutFilter());
-    if (!path.isEmpty()) openLutFile(path);
+    if (!path.isEmpty())
+        openLutFile(path);
 }
 
 void MainWindow::openScreenshotDialog() {
     const QString path = QFileDialog::getOpenFileName(this, tr("LUT from Edited Screenshot"),
                                                       QString(), imageFilter());
-    if (!path.isEmpty()) openScreenshotLut(path);
+    if (!path.isEmpty())
+        openScreenshotLut(path);
 }
 
 void MainWindow::exportDialog() {
     QString base = m_doc->lutPath();
-    base = base.isEmpty() ? QStringLiteral("grade") : QFileInfo(base).path() + '/' + QFileInfo(base).completeBaseName();
+    base = base.isEmpty() ? QStringLiteral("grade")
+                          : QFileInfo(base).path() + '/' + QFileInfo(base).completeBaseName();
     ExportDialog dlg(base, this);
-    if (dlg.exec() != QDialog::Accepted || dlg.path().isEmpty()) return;
+    if (dlg.exec() != QDialog::Accepted || dlg.path().isEmpty())
+        return;
     exportLut(dlg.path(), dlg.choice().format, dlg.options(), dlg.smashCompensate());
 }
 
@@ -532,9 +571,12 @@ void MainWindow::savePreviewDialog() {
         return;
     }
     const QString base = QFileInfo(m_doc->imagePath()).path() + '/' +
-                         QFileInfo(m_doc->imagePath()).completeBaseName() + QStringLiteral("_preview.png");
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Preview Image"), base, imageFilter());
-    if (!path.isEmpty()) savePreviewImage(path);
+                         QFileInfo(m_doc->imagePath()).completeBaseName() +
+                         QStringLiteral("_preview.png");
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save Preview Image"), base, imageFilter());
+    if (!path.isEmpty())
+        savePreviewImage(path);
 }
 
 bool MainWindow::savePreviewImage(const QString& path) {
@@ -545,7 +587,8 @@ bool MainWindow::savePreviewImage(const QString& path) {
     QApplication::setOverrideCursor(Qt::WaitCursor);
     try {
         // Always a fresh full-resolution render: the view may show a proxy.
-        PreviewResult r = renderPreview(*m_doc->sceneImage(), previewOptions(), m_doc->effectiveLutShared());
+        PreviewResult r =
+            renderPreview(*m_doc->sceneImage(), previewOptions(), m_doc->effectiveLutShared());
         const formats::ImageWriteOptions o =
             formats::renderedImageWriteOptions(m_doc->imageInfo(), path.toStdString());
         formats::writeImage(path.toStdString(), r.image, o);
@@ -587,10 +630,12 @@ void MainWindow::rebuildProxyAndBefore() {
     m_frame.reset();
     m_beforeLutSource[0].reset();
     m_beforeLutSource[1].reset();
-    if (!scene) return;
+    if (!scene)
+        return;
     // Proxy: at most ~1000 pixels wide, what a drag needs to feel live on a 1080p frame.
     m_proxyFactor = std::max(1, (scene->width() + 999) / 1000);
-    m_proxyScene = m_proxyFactor > 1 ? std::make_shared<const Image>(downscale(*scene, m_proxyFactor)) : scene;
+    m_proxyScene =
+        m_proxyFactor > 1 ? std::make_shared<const Image>(downscale(*scene, m_proxyFactor)) : scene;
     // "Before" is the same pipeline with nothing but its display encoding.
     PreviewOptions none;
     none.preset = Preset::None;
@@ -602,13 +647,16 @@ void MainWindow::rebuildProxyAndBefore() {
 }
 
 void MainWindow::setInteractive(bool on) {
-    if (m_interactive == on) return;
+    if (m_interactive == on)
+        return;
     m_interactive = on;
-    if (!on) requestPreview(); // the full-resolution frame after the drag
+    if (!on)
+        requestPreview(); // the full-resolution frame after the drag
 }
 
 void MainWindow::requestPreview() {
-    if (!m_doc->hasImage()) return;
+    if (!m_doc->hasImage())
+        return;
     auto job = [this](bool proxy) {
         PreviewJob j;
         j.scene = proxy ? m_proxyScene : m_doc->sceneImage();
@@ -624,14 +672,16 @@ void MainWindow::requestPreview() {
         // The proxy first, so a change shows within a proxy render; then (unless a slider is
         // still held) the full frame, which a newer request may replace before it starts.
         m_scheduler->request(job(true));
-    if (!m_interactive || m_proxyFactor == 1) m_scheduler->request(job(false));
+    if (!m_interactive || m_proxyFactor == 1)
+        m_scheduler->request(job(false));
 }
 
 void MainWindow::onFrame(std::shared_ptr<const PreviewFrame> frame) {
     if (!frame->error.isEmpty()) {
         m_timeLabel->setText(tr("Preview failed"));
         statusBar()->showMessage(tr("Preview failed: %1").arg(frame->error), 10000);
-        if (m_verbose) std::fprintf(stderr, "preview: error: %s\n", qPrintable(frame->error));
+        if (m_verbose)
+            std::fprintf(stderr, "preview: error: %s\n", qPrintable(frame->error));
         return;
     }
     m_frame = frame;
@@ -639,12 +689,17 @@ void MainWindow::onFrame(std::shared_ptr<const PreviewFrame> frame) {
     if (frame->beforeLut && !frame->reusedBeforeLut)
         m_beforeLutSource[frame->proxyFactor > 1 ? 1 : 0] = frame;
     const QString res = frame->proxyFactor > 1
-                            ? tr("proxy 1/%1, %2×%3").arg(frame->proxyFactor).arg(frame->image.width()).arg(frame->image.height())
+                            ? tr("proxy 1/%1, %2×%3")
+                                  .arg(frame->proxyFactor)
+                                  .arg(frame->image.width())
+                                  .arg(frame->image.height())
                             : tr("%1×%2").arg(frame->image.width()).arg(frame->image.height());
-    m_timeLabel->setText(tr("Preview %1 ms (%2)").arg(frame->totalMilliseconds, 0, 'f', 1).arg(res));
+    m_timeLabel->setText(
+        tr("Preview %1 ms (%2)").arg(frame->totalMilliseconds, 0, 'f', 1).arg(res));
     if (frame->proxyFactor == 1) {
         m_times.append(frame->totalMilliseconds);
-        if (m_times.size() > 1000) m_times.removeFirst();
+        if (m_times.size() > 1000)
+            m_times.removeFirst();
     }
     if (m_verbose)
         std::fprintf(stderr, "preview #%llu: LUT stages %.1f ms, total %.1f ms (%s%s)\n",
@@ -654,7 +709,8 @@ void MainWindow::onFrame(std::shared_ptr<const PreviewFrame> frame) {
 }
 
 void MainWindow::waitForPreview() {
-    if (!m_doc->hasImage()) return;
+    if (!m_doc->hasImage())
+        return;
     m_scheduler->waitForIdle();
     if (!m_frame || m_frame->proxyFactor != 1 || m_frame->serial != m_scheduler->lastRequested()) {
         // The latest frame was a proxy, or failed: ask for (and wait for) a full-resolution one.

@@ -13,16 +13,16 @@ namespace lut::gui {
 QImage toDisplayImage(const Image& image) {
     QImage out(image.width(), image.height(), QImage::Format_RGBX8888);
     parallelFor(image.height(), 0, [&](int y0, int y1) {
-    for (int y = y0; y < y1; ++y) {
-        const float* src = image.pixel(0, y);
-        uchar* dst = out.scanLine(y);
-        for (int x = 0; x < image.width(); ++x) {
-            dst[4 * x + 0] = toUnorm8(src[4 * x + 0]);
-            dst[4 * x + 1] = toUnorm8(src[4 * x + 1]);
-            dst[4 * x + 2] = toUnorm8(src[4 * x + 2]);
-            dst[4 * x + 3] = 255;
+        for (int y = y0; y < y1; ++y) {
+            const float* src = image.pixel(0, y);
+            uchar* dst = out.scanLine(y);
+            for (int x = 0; x < image.width(); ++x) {
+                dst[4 * x + 0] = toUnorm8(src[4 * x + 0]);
+                dst[4 * x + 1] = toUnorm8(src[4 * x + 1]);
+                dst[4 * x + 2] = toUnorm8(src[4 * x + 2]);
+                dst[4 * x + 3] = 255;
+            }
         }
-    }
     });
     return out;
 }
@@ -31,7 +31,9 @@ PreviewScheduler::PreviewScheduler(QObject* parent) : QObject(parent) {
     connect(&m_watcher, &QFutureWatcherBase::finished, this, &PreviewScheduler::onFinished);
 }
 
-PreviewScheduler::~PreviewScheduler() { m_watcher.waitForFinished(); }
+PreviewScheduler::~PreviewScheduler() {
+    m_watcher.waitForFinished();
+}
 
 quint64 PreviewScheduler::request(PreviewJob job) {
     job.serial = ++m_serial;
@@ -57,9 +59,10 @@ void PreviewScheduler::start(PreviewJob job) {
         try {
             if (job.scene && !job.scene->empty()) {
                 frame->reusedBeforeLut = job.beforeLut != nullptr;
-                frame->beforeLut = job.beforeLut ? job.beforeLut
-                                                 : std::make_shared<const Image>(
-                                                       renderBeforeLut(*job.scene, job.options));
+                frame->beforeLut =
+                    job.beforeLut
+                        ? job.beforeLut
+                        : std::make_shared<const Image>(renderBeforeLut(*job.scene, job.options));
                 PreviewResult r = renderFromLut(*frame->beforeLut, job.options, job.lut);
                 frame->image = std::move(r.image);
                 frame->milliseconds = r.milliseconds;
@@ -83,7 +86,8 @@ void PreviewScheduler::onFinished() {
         m_pending = {};
     }
     emit frameReady(frame);
-    if (!isBusy()) emit idle();
+    if (!isBusy())
+        emit idle();
 }
 
 void PreviewScheduler::waitForIdle() {
@@ -91,7 +95,8 @@ void PreviewScheduler::waitForIdle() {
         QEventLoop loop;
         connect(this, &PreviewScheduler::idle, &loop, &QEventLoop::quit);
         // The frame may have finished before the loop ran.
-        if (!isBusy()) break;
+        if (!isBusy())
+            break;
         loop.exec();
     }
     QCoreApplication::processEvents();

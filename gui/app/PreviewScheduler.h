@@ -16,7 +16,7 @@ struct PreviewJob {
     std::shared_ptr<const Image> scene; // prepared linear frame (full size or proxy)
     std::shared_ptr<const Lut3D> lut;
     PreviewOptions options;
-    int proxyFactor = 1;                // 1 = full resolution
+    int proxyFactor = 1; // 1 = full resolution
     quint64 serial = 0;
     // The scene after the stages before the LUT (PreviewRenderer.h), when the caller has it
     // for this scene and these options; else the worker makes it and returns it in the frame.
@@ -24,13 +24,13 @@ struct PreviewJob {
 };
 
 struct PreviewFrame {
-    Image image;       // display-encoded float RGBA, what `lutkit preview` writes
-    QImage display;    // the same as 8-bit for drawing (alpha forced opaque)
-    double milliseconds = 0.0; // pipeline time
+    Image image;                    // display-encoded float RGBA, what `lutkit preview` writes
+    QImage display;                 // the same as 8-bit for drawing (alpha forced opaque)
+    double milliseconds = 0.0;      // pipeline time
     double totalMilliseconds = 0.0; // pipeline + conversion
     int proxyFactor = 1;
     quint64 serial = 0;
-    QString error;     // non-empty if the pipeline threw
+    QString error; // non-empty if the pipeline threw
     QString report;
     bool reusedBeforeLut = false;
     // What the frame was made from, so the caller can cache the before-LUT frame.

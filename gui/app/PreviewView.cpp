@@ -20,7 +20,8 @@ PreviewView::PreviewView(QWidget* parent) : QWidget(parent) {
 void PreviewView::setImageSize(QSize size) {
     const bool changed = size != m_imageSize;
     m_imageSize = size;
-    if (changed) zoomToFit();
+    if (changed)
+        zoomToFit();
     update();
 }
 
@@ -45,7 +46,8 @@ void PreviewView::setMode(Mode mode) {
     const bool changed = mode != m_mode;
     m_mode = mode;
     update();
-    if (changed) emit modeChanged(mode);
+    if (changed)
+        emit modeChanged(mode);
 }
 
 void PreviewView::setSplit(double fraction) {
@@ -54,18 +56,22 @@ void PreviewView::setSplit(double fraction) {
 }
 
 double PreviewView::zoom() const {
-    if (!m_fit || m_imageSize.isEmpty()) return m_scale;
+    if (!m_fit || m_imageSize.isEmpty())
+        return m_scale;
     const double sx = (width() - 16.0) / m_imageSize.width();
     const double sy = (height() - 16.0) / m_imageSize.height();
     return std::max(1e-3, std::min(sx, sy));
 }
 
 QRectF PreviewView::imageRect() const {
-    if (m_imageSize.isEmpty()) return {};
+    if (m_imageSize.isEmpty())
+        return {};
     const double s = zoom();
     const QSizeF sz(m_imageSize.width() * s, m_imageSize.height() * s);
     if (m_fit)
-        return QRectF(QPointF(std::round((width() - sz.width()) / 2), std::round((height() - sz.height()) / 2)), sz);
+        return QRectF(QPointF(std::round((width() - sz.width()) / 2),
+                              std::round((height() - sz.height()) / 2)),
+                      sz);
     return QRectF(m_offset, sz);
 }
 
@@ -76,9 +82,11 @@ void PreviewView::zoomToFit() {
 }
 
 void PreviewView::zoomTo(double scale, QPointF anchor) {
-    if (m_imageSize.isEmpty()) return;
+    if (m_imageSize.isEmpty())
+        return;
     scale = std::clamp(scale, 0.02, 64.0);
-    if (anchor.x() < 0) anchor = QPointF(width() / 2.0, height() / 2.0);
+    if (anchor.x() < 0)
+        anchor = QPointF(width() / 2.0, height() / 2.0);
     const QRectF r = imageRect();
     // Keep the image point under the anchor in place.
     const QPointF imgPt = (anchor - r.topLeft()) / zoom();
@@ -90,16 +98,23 @@ void PreviewView::zoomTo(double scale, QPointF anchor) {
     emit zoomChanged(m_scale);
 }
 
-void PreviewView::zoomBy(double factor) { zoomTo(zoom() * factor); }
+void PreviewView::zoomBy(double factor) {
+    zoomTo(zoom() * factor);
+}
 
 void PreviewView::clampOffset() {
-    if (m_fit || m_imageSize.isEmpty()) return;
+    if (m_fit || m_imageSize.isEmpty())
+        return;
     const double w = m_imageSize.width() * m_scale, h = m_imageSize.height() * m_scale;
     // Centre an axis that fits; otherwise keep the image covering the view.
-    if (w <= width()) m_offset.setX((width() - w) / 2);
-    else m_offset.setX(std::clamp(m_offset.x(), width() - w, 0.0));
-    if (h <= height()) m_offset.setY((height() - h) / 2);
-    else m_offset.setY(std::clamp(m_offset.y(), height() - h, 0.0));
+    if (w <= width())
+        m_offset.setX((width() - w) / 2);
+    else
+        m_offset.setX(std::clamp(m_offset.x(), width() - w, 0.0));
+    if (h <= height())
+        m_offset.setY((height() - h) / 2);
+    else
+        m_offset.setY(std::clamp(m_offset.y(), height() - h, 0.0));
     // Whole-pixel offsets: at 100 % every image pixel lands on exactly one screen pixel.
     m_offset = QPointF(std::round(m_offset.x()), std::round(m_offset.y()));
 }
@@ -127,7 +142,8 @@ void PreviewView::paintEvent(QPaintEvent*) {
     const bool smooth = zoom() < 1.0;
     p.setRenderHint(QPainter::SmoothPixmapTransform, smooth);
     auto drawClipped = [&](const QImage& img, const QRectF& clip) {
-        if (img.isNull() || clip.isEmpty()) return;
+        if (img.isNull() || clip.isEmpty())
+            return;
         p.save();
         p.setClipRect(clip);
         p.drawImage(r, img);
@@ -135,8 +151,12 @@ void PreviewView::paintEvent(QPaintEvent*) {
     };
     const QImage& after = m_after.isNull() ? m_before : m_after;
     switch (m_mode) {
-    case Mode::After: drawClipped(after, r); break;
-    case Mode::Before: drawClipped(m_before, r); break;
+    case Mode::After:
+        drawClipped(after, r);
+        break;
+    case Mode::Before:
+        drawClipped(m_before, r);
+        break;
     case Mode::Split: {
         const double dx = dividerX();
         drawClipped(m_before, QRectF(r.topLeft(), QPointF(dx, r.bottom())));
@@ -163,8 +183,10 @@ void PreviewView::paintEvent(QPaintEvent*) {
             p.setPen(Qt::white);
             p.drawText(box, Qt::AlignCenter, text);
         };
-        if (dx - r.left() > 100) label(tr("Before"), dx - 6, Qt::AlignRight);
-        if (r.right() - dx > 100) label(tr("After"), dx + 6, Qt::AlignLeft);
+        if (dx - r.left() > 100)
+            label(tr("Before"), dx - 6, Qt::AlignRight);
+        if (r.right() - dx > 100)
+            label(tr("After"), dx + 6, Qt::AlignLeft);
         break;
     }
     }
@@ -172,12 +194,14 @@ void PreviewView::paintEvent(QPaintEvent*) {
 
 void PreviewView::resizeEvent(QResizeEvent*) {
     clampOffset();
-    if (m_fit) emit zoomChanged(zoom());
+    if (m_fit)
+        emit zoomChanged(zoom());
 }
 
 void PreviewView::wheelEvent(QWheelEvent* e) {
     const double steps = e->angleDelta().y() / 120.0;
-    if (steps == 0) return;
+    if (steps == 0)
+        return;
     zoomTo(zoom() * std::pow(1.25, steps), e->position());
     e->accept();
 }
@@ -202,7 +226,8 @@ void PreviewView::mouseMoveEvent(QMouseEvent* e) {
     const QPointF p = e->position();
     if (m_drag == Drag::Divider) {
         const QRectF r = imageRect();
-        if (r.width() > 0) setSplit((p.x() - r.left()) / r.width());
+        if (r.width() > 0)
+            setSplit((p.x() - r.left()) / r.width());
     } else if (m_drag == Drag::Pan) {
         m_offset = m_offsetStart + (p - m_dragStart);
         clampOffset();
@@ -213,8 +238,9 @@ void PreviewView::mouseMoveEvent(QMouseEvent* e) {
     const QRectF r = imageRect();
     if (r.contains(p)) {
         const double s = zoom();
-        emit hoverPixel(std::clamp(static_cast<int>((p.x() - r.left()) / s), 0, m_imageSize.width() - 1),
-                        std::clamp(static_cast<int>((p.y() - r.top()) / s), 0, m_imageSize.height() - 1));
+        emit hoverPixel(
+            std::clamp(static_cast<int>((p.x() - r.left()) / s), 0, m_imageSize.width() - 1),
+            std::clamp(static_cast<int>((p.y() - r.top()) / s), 0, m_imageSize.height() - 1));
     } else {
         emit hoverPixel(-1, -1);
     }
@@ -225,6 +251,8 @@ void PreviewView::mouseReleaseEvent(QMouseEvent*) {
     unsetCursor();
 }
 
-void PreviewView::leaveEvent(QEvent*) { emit hoverPixel(-1, -1); }
+void PreviewView::leaveEvent(QEvent*) {
+    emit hoverPixel(-1, -1);
+}
 
 } // namespace lut::gui

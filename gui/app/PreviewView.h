@@ -22,11 +22,11 @@ public:
 
     void setMode(Mode mode);
     Mode mode() const { return m_mode; }
-    double split() const { return m_split; }     // divider position, 0..1 of the image width
+    double split() const { return m_split; } // divider position, 0..1 of the image width
     void setSplit(double fraction);
 
     bool fitMode() const { return m_fit; }
-    double zoom() const;                          // current scale (screen px per image px)
+    double zoom() const; // current scale (screen px per image px)
     void zoomToFit();
     void zoomTo(double scale, QPointF anchorWidget = QPointF(-1, -1));
     void zoomBy(double factor);
@@ -48,8 +48,8 @@ protected:
     void leaveEvent(QEvent*) override;
 
 private:
-    QRectF imageRect() const;          // where the full image lands in widget coordinates
-    double dividerX() const;           // widget x of the divider
+    QRectF imageRect() const; // where the full image lands in widget coordinates
+    double dividerX() const;  // widget x of the divider
     bool nearDivider(QPointF p) const;
     void clampOffset();
 
@@ -60,7 +60,7 @@ private:
     double m_split = 0.5;
     bool m_fit = true;
     double m_scale = 1.0;
-    QPointF m_offset;                  // top-left of the image in widget coordinates (non-fit)
+    QPointF m_offset; // top-left of the image in widget coordinates (non-fit)
     enum class Drag { None, Divider, Pan } m_drag = Drag::None;
     QPointF m_dragStart;
     QPointF m_offsetStart;

@@ -33,30 +33,48 @@ const std::vector<AdjustParamInfo>& adjustParams() {
 
 const AdjustParamInfo& adjustParamInfo(AdjustParam id) {
     for (const auto& p : adjustParams())
-        if (p.id == id) return p;
+        if (p.id == id)
+            return p;
     throw Error("unknown adjustment parameter");
 }
 
 double getParam(const Adjustments& a, AdjustParam id) {
     using P = AdjustParam;
     switch (id) {
-    case P::Exposure: return a.exposure;
-    case P::Contrast: return a.contrast;
-    case P::Saturation: return a.saturation;
-    case P::Temperature: return a.temperature;
-    case P::Tint: return a.tint;
-    case P::LiftMaster: return a.liftMaster;
-    case P::LiftR: return a.lift.x;
-    case P::LiftG: return a.lift.y;
-    case P::LiftB: return a.lift.z;
-    case P::GammaMaster: return a.gammaMaster;
-    case P::GammaR: return a.gamma.x;
-    case P::GammaG: return a.gamma.y;
-    case P::GammaB: return a.gamma.z;
-    case P::GainMaster: return a.gainMaster;
-    case P::GainR: return a.gain.x;
-    case P::GainG: return a.gain.y;
-    case P::GainB: return a.gain.z;
+    case P::Exposure:
+        return a.exposure;
+    case P::Contrast:
+        return a.contrast;
+    case P::Saturation:
+        return a.saturation;
+    case P::Temperature:
+        return a.temperature;
+    case P::Tint:
+        return a.tint;
+    case P::LiftMaster:
+        return a.liftMaster;
+    case P::LiftR:
+        return a.lift.x;
+    case P::LiftG:
+        return a.lift.y;
+    case P::LiftB:
+        return a.lift.z;
+    case P::GammaMaster:
+        return a.gammaMaster;
+    case P::GammaR:
+        return a.gamma.x;
+    case P::GammaG:
+        return a.gamma.y;
+    case P::GammaB:
+        return a.gamma.z;
+    case P::GainMaster:
+        return a.gainMaster;
+    case P::GainR:
+        return a.gain.x;
+    case P::GainG:
+        return a.gain.y;
+    case P::GainB:
+        return a.gain.z;
     }
     return 0.0;
 }
@@ -64,28 +82,63 @@ double getParam(const Adjustments& a, AdjustParam id) {
 void setParam(Adjustments& a, AdjustParam id, double v) {
     using P = AdjustParam;
     switch (id) {
-    case P::Exposure: a.exposure = v; break;
-    case P::Contrast: a.contrast = v; break;
-    case P::Saturation: a.saturation = v; break;
-    case P::Temperature: a.temperature = v; break;
-    case P::Tint: a.tint = v; break;
-    case P::LiftMaster: a.liftMaster = v; break;
-    case P::LiftR: a.lift.x = v; break;
-    case P::LiftG: a.lift.y = v; break;
-    case P::LiftB: a.lift.z = v; break;
-    case P::GammaMaster: a.gammaMaster = v; break;
-    case P::GammaR: a.gamma.x = v; break;
-    case P::GammaG: a.gamma.y = v; break;
-    case P::GammaB: a.gamma.z = v; break;
-    case P::GainMaster: a.gainMaster = v; break;
-    case P::GainR: a.gain.x = v; break;
-    case P::GainG: a.gain.y = v; break;
-    case P::GainB: a.gain.z = v; break;
+    case P::Exposure:
+        a.exposure = v;
+        break;
+    case P::Contrast:
+        a.contrast = v;
+        break;
+    case P::Saturation:
+        a.saturation = v;
+        break;
+    case P::Temperature:
+        a.temperature = v;
+        break;
+    case P::Tint:
+        a.tint = v;
+        break;
+    case P::LiftMaster:
+        a.liftMaster = v;
+        break;
+    case P::LiftR:
+        a.lift.x = v;
+        break;
+    case P::LiftG:
+        a.lift.y = v;
+        break;
+    case P::LiftB:
+        a.lift.z = v;
+        break;
+    case P::GammaMaster:
+        a.gammaMaster = v;
+        break;
+    case P::GammaR:
+        a.gamma.x = v;
+        break;
+    case P::GammaG:
+        a.gamma.y = v;
+        break;
+    case P::GammaB:
+        a.gamma.z = v;
+        break;
+    case P::GainMaster:
+        a.gainMaster = v;
+        break;
+    case P::GainR:
+        a.gain.x = v;
+        break;
+    case P::GainG:
+        a.gain.y = v;
+        break;
+    case P::GainB:
+        a.gain.z = v;
+        break;
     }
 }
 
 int paramToSlider(const AdjustParamInfo& info, double value, int steps) {
-    if (!std::isfinite(value)) value = info.defaultValue;
+    if (!std::isfinite(value))
+        value = info.defaultValue;
     value = std::clamp(value, info.min, info.max);
     double t = info.logScale ? std::log(value / info.min) / std::log(info.max / info.min)
                              : (value - info.min) / (info.max - info.min);
@@ -97,7 +150,8 @@ double sliderToParam(const AdjustParamInfo& info, int position, int steps) {
     double v = info.logScale ? info.min * std::pow(info.max / info.min, t)
                              : info.min + t * (info.max - info.min);
     // The default's own position gives the default exactly, so a slider can return to neutral.
-    if (position == paramToSlider(info, info.defaultValue, steps)) return info.defaultValue;
+    if (position == paramToSlider(info, info.defaultValue, steps))
+        return info.defaultValue;
     const double scale = std::pow(10.0, info.decimals + 1);
     return std::clamp(std::round(v * scale) / scale, info.min, info.max);
 }

@@ -37,7 +37,7 @@ struct AdjustParamInfo {
     double max;
     double defaultValue;
     int decimals;
-    bool logScale;     // slider moves in log space (gamma, gain multipliers)
+    bool logScale; // slider moves in log space (gamma, gain multipliers)
 };
 
 // Every parameter, in the order the editor shows them.

@@ -5,11 +5,11 @@
 #include "ResetAdjustmentsCommand.h"
 #include "SetAdjustmentCommand.h"
 
-#include "lut/roundtrip/Embed.h"
 #include "lut/Error.h"
-#include "lut/io/Layout.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/Layout.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <QFileInfo>
 #include <QUndoStack>
@@ -23,7 +23,8 @@ bool looksLikeLutFile(const QString& path) {
     const bool pictureExt = ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr" ||
                             ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tga" ||
                             ext == ".webp" || ext == ".hdr" || ext == ".dpx";
-    if (!pictureExt) return !FormatRegistry::instance().forExtension(p).empty();
+    if (!pictureExt)
+        return !FormatRegistry::instance().forExtension(p).empty();
     try {
         const formats::ImageInfo info = formats::readImageInfo(p);
         return !layoutsForImageSize(info.width, info.height).empty();
@@ -43,7 +44,9 @@ QString Document::displayName() const {
     return m_lutPath.isEmpty() ? tr("Untitled") : QFileInfo(m_lutPath).fileName();
 }
 
-bool Document::isModified() const { return m_unsavedOrigin || !m_undo->isClean(); }
+bool Document::isModified() const {
+    return m_unsavedOrigin || !m_undo->isClean();
+}
 
 void Document::emitModifiedIfChanged() {
     const bool now = isModified();
@@ -85,7 +88,8 @@ void Document::openLut(const QString& path) {
 }
 
 void Document::startFrom(Lut3D base, const QString& origin) {
-    if (base.empty()) throw Error("the LUT is empty");
+    if (base.empty())
+        throw Error("the LUT is empty");
     replaceLut(std::move(base), {}, origin, {}, true);
 }
 
@@ -95,25 +99,29 @@ QStringList Document::startFromScreenshot(const QString& path) {
     options.target = ExtractTarget::Raw;
     ExtractResult result = extractLut(loaded.image.view(), options);
     QStringList notes;
-    for (const Diagnostic& d : result.diagnostics) notes << QString::fromStdString(d.str());
+    for (const Diagnostic& d : result.diagnostics)
+        notes << QString::fromStdString(d.str());
     startFrom(std::move(result.lut), tr("extracted from %1").arg(QFileInfo(path).fileName()));
     return notes;
 }
 
 void Document::editParam(AdjustParam id, double value) {
     const double before = param(id);
-    if (before == value) return;
+    if (before == value)
+        return;
     m_undo->push(new SetAdjustmentCommand(this, id, before, value, m_gesture));
 }
 
 void Document::resetAdjustments() {
-    if (m_adjustments.isNeutral()) return;
+    if (m_adjustments.isNeutral())
+        return;
     m_undo->push(new ResetAdjustmentsCommand(this, m_adjustments));
     ++m_gesture;
 }
 
 void Document::applyAdjustmentsState(const Adjustments& a) {
-    if (a == m_adjustments) return;
+    if (a == m_adjustments)
+        return;
     m_adjustments = a;
     rebuildEffective();
     emit adjustmentsChanged();
@@ -149,7 +157,8 @@ void Document::openImage(const QString& path) {
     formats::LoadedImage loaded = formats::readImage(path.toStdString());
     // A screenshot holds display-encoded values whatever its bit depth (as lutkit preview).
     const bool linear = loaded.info.isFloat && !m_fromScreenshot;
-    auto scene = std::make_shared<const Image>(prepareScene(loaded.image, linear, m_fromScreenshot));
+    auto scene =
+        std::make_shared<const Image>(prepareScene(loaded.image, linear, m_fromScreenshot));
     m_image = std::make_shared<const Image>(std::move(loaded.image));
     m_scene = std::move(scene);
     m_imagePath = path;
@@ -159,9 +168,11 @@ void Document::openImage(const QString& path) {
 }
 
 void Document::setFromScreenshot(bool on) {
-    if (on == m_fromScreenshot) return;
+    if (on == m_fromScreenshot)
+        return;
     m_fromScreenshot = on;
-    if (!m_image) return;
+    if (!m_image)
+        return;
     m_imageLinear = m_imageInfo.isFloat && !on;
     m_scene = std::make_shared<const Image>(prepareScene(*m_image, m_imageLinear, on));
     emit imageChanged();

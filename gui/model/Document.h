@@ -8,11 +8,11 @@
 // only then swaps it in, so a failed open throws lut::Error and leaves the document as it was.
 #include "AdjustParam.h"
 
-#include "lut/ops/Adjust.h"
-#include "lut/io/Format.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/io/Format.h"
+#include "lut/ops/Adjust.h"
 
 #include <QObject>
 #include <QString>
@@ -50,10 +50,10 @@ public:
     const Lut3D& effectiveLut() const { return *m_effective; }
     // The effective LUT as an immutable shared object for the preview worker.
     std::shared_ptr<const Lut3D> effectiveLutShared() const { return m_effective; }
-    QString lutPath() const { return m_lutPath; }     // "" = untitled
-    QString lutOrigin() const { return m_origin; }    // "neutral 33^3", the file, "extracted ..."
-    QString displayName() const;                       // file name or "Untitled"
-    QString lutFormat() const { return m_format; }     // registry name of the format read
+    QString lutPath() const { return m_lutPath; }  // "" = untitled
+    QString lutOrigin() const { return m_origin; } // "neutral 33^3", the file, "extracted ..."
+    QString displayName() const;                   // file name or "Untitled"
+    QString lutFormat() const { return m_format; } // registry name of the format read
 
     // ---- adjustments (undoable) --------------------------------------------------------------
     const Adjustments& adjustments() const { return m_adjustments; }
@@ -97,8 +97,8 @@ public:
     bool fromScreenshot() const { return m_fromScreenshot; }
 
 signals:
-    void lutReplaced();            // a different base LUT (open / new)
-    void effectiveLutChanged();    // any change of the effective LUT
+    void lutReplaced();         // a different base LUT (open / new)
+    void effectiveLutChanged(); // any change of the effective LUT
     void adjustmentsChanged();
     void modifiedChanged(bool modified);
     void imageChanged();

@@ -14,7 +14,8 @@ Lut3D smashGameLut(const Lut3D& edited) {
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r) {
                 const glm::vec3 e = sampler->sample(lattice.at(r, g, b));
-                target.at(r, g, b) = glm::vec3(smashDecode(e.x), smashDecode(e.y), smashDecode(e.z));
+                target.at(r, g, b) =
+                    glm::vec3(smashDecode(e.x), smashDecode(e.y), smashDecode(e.z));
             }
     target.setTitle(edited.title());
     return smashCompensateLut(target);

@@ -1,7 +1,7 @@
 #include "PreviewRenderer.h"
 
-#include "lut/io/Format.h"
 #include "lut/Parallel.h"
+#include "lut/io/Format.h"
 #include "lut/pipeline/SmashGrading.h"
 
 #include <algorithm>
@@ -22,7 +22,8 @@ bool brightenToggleAvailable() {
         try {
             const auto stage = makeStage("smash-grade");
             for (const auto& p : stage->params())
-                if (p.name == "brighten") return true;
+                if (p.name == "brighten")
+                    return true;
         } catch (const std::exception&) {
         }
         return false;
@@ -78,7 +79,9 @@ PreviewResult renderPreview(const Image& scene, const PreviewOptions& options,
 
 namespace {
 
-bool isLutStage(const std::string& name) { return name == "smash-grade" || name == "lut"; }
+bool isLutStage(const std::string& name) {
+    return name == "smash-grade" || name == "lut";
+}
 
 // Enables only the stages before (before = true) or from (false) the first LUT stage, keeping
 // the preset's choice for the rest.
@@ -86,7 +89,8 @@ void keepPart(Pipeline& pipeline, bool before) {
     bool reached = false;
     for (const auto& stage : pipeline.stages()) {
         reached = reached || isLutStage(stage->name());
-        if (reached == before) stage->setEnabled(false);
+        if (reached == before)
+            stage->setEnabled(false);
     }
 }
 
@@ -121,7 +125,8 @@ PreviewResult renderFromLut(const Image& beforeLut, const PreviewOptions& option
 }
 
 Image downscale(const Image& image, int factor) {
-    if (factor <= 1 || image.empty()) return image;
+    if (factor <= 1 || image.empty())
+        return image;
     const int w = std::max(1, image.width() / factor);
     const int h = std::max(1, image.height() / factor);
     Image out(w, h);
@@ -135,12 +140,14 @@ Image downscale(const Image& image, int factor) {
                     for (int dx = 0; dx < factor; ++dx) {
                         const int sx = std::min(x * factor + dx, image.width() - 1);
                         const float* p = image.pixel(sx, sy);
-                        for (int c = 0; c < 4; ++c) acc[c] += p[c];
+                        for (int c = 0; c < 4; ++c)
+                            acc[c] += p[c];
                         ++n;
                     }
                 }
                 float* o = out.pixel(x, y);
-                for (int c = 0; c < 4; ++c) o[c] = acc[c] / static_cast<float>(n);
+                for (int c = 0; c < 4; ++c)
+                    o[c] = acc[c] / static_cast<float>(n);
             }
     });
     return out;

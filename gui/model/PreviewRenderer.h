@@ -3,9 +3,9 @@
 // as plain C++ so the document model and tests can use it without widgets. The worker thread in
 // the app calls render(); everything here is re-entrant (no shared mutable state).
 #include "lut/Image.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Pipeline.h"
 
 #include <memory>
@@ -16,8 +16,8 @@ namespace lut::gui {
 struct PreviewOptions {
     Preset preset = Preset::Smash;
     bool bloom = true;
-    bool lutEnabled = true;   // off: the pipeline runs with a neutral LUT
-    bool brighten = true;     // smash-grade's brighten pass (only where the pipeline offers it)
+    bool lutEnabled = true; // off: the pipeline runs with a neutral LUT
+    bool brighten = true;   // smash-grade's brighten pass (only where the pipeline offers it)
     Interpolation interpolation = Interpolation::Trilinear;
     bool operator==(const PreviewOptions&) const = default;
 };
@@ -30,8 +30,7 @@ Image prepareScene(const Image& stored, bool storedIsLinear, bool fromScreenshot
                    int nthreads = 0);
 
 // What a preview settings choice means for the pipeline.
-PipelineSettings pipelineSettings(const PreviewOptions& options,
-                                  std::shared_ptr<const Lut3D> lut);
+PipelineSettings pipelineSettings(const PreviewOptions& options, std::shared_ptr<const Lut3D> lut);
 // Whether the pipeline's smash-grade stage has a switch for its brighten pass.
 bool brightenToggleAvailable();
 // Whether "brighten off" can be previewed: with the stage's switch, or else by grading with
@@ -44,9 +43,9 @@ bool brightenToggleWorks(Interpolation method);
 Lut3D withoutBrighten(const Lut3D& lut);
 
 struct PreviewResult {
-    Image image;              // display-encoded RGBA float, what `lutkit preview` writes
+    Image image;               // display-encoded RGBA float, what `lutkit preview` writes
     double milliseconds = 0.0; // wall time of the pipeline run
-    std::string report;       // PipelineReport::str()
+    std::string report;        // PipelineReport::str()
 };
 
 // Runs the pipeline on a copy of `scene` (the prepared linear frame).

@@ -8,7 +8,8 @@ QStringList addRecentFile(QStringList list, const QString& path, int maxEntries)
     const QString canonical = QFileInfo(path).absoluteFilePath();
     list.removeAll(canonical);
     list.prepend(canonical);
-    while (list.size() > maxEntries) list.removeLast();
+    while (list.size() > maxEntries)
+        list.removeLast();
     return list;
 }
 

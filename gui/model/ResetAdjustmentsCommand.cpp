@@ -11,7 +11,11 @@ ResetAdjustmentsCommand::ResetAdjustmentsCommand(Document* doc, const Adjustment
     setText(QCoreApplication::translate("Document", "Reset adjustments"));
 }
 
-void ResetAdjustmentsCommand::undo() { m_doc->applyAdjustmentsState(m_before); }
-void ResetAdjustmentsCommand::redo() { m_doc->applyAdjustmentsState(Adjustments{}); }
+void ResetAdjustmentsCommand::undo() {
+    m_doc->applyAdjustmentsState(m_before);
+}
+void ResetAdjustmentsCommand::redo() {
+    m_doc->applyAdjustmentsState(Adjustments{});
+}
 
 } // namespace lut::gui

@@ -27,10 +27,12 @@ void SetAdjustmentCommand::redo() {
 
 bool SetAdjustmentCommand::mergeWith(const QUndoCommand* other) {
     const auto* o = dynamic_cast<const SetAdjustmentCommand*>(other);
-    if (!o || o->m_param != m_param || o->m_gesture != m_gesture) return false;
+    if (!o || o->m_param != m_param || o->m_gesture != m_gesture)
+        return false;
     m_after = o->m_after;
     // A drag that ends where it started is no step at all.
-    if (m_after == m_before) setObsolete(true);
+    if (m_after == m_before)
+        setObsolete(true);
     return true;
 }
 

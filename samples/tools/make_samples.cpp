@@ -23,11 +23,15 @@ float linearToSrgb(float c) {
 struct Rgb {
     float r, g, b;
 };
-Rgb lin(float r, float g, float b) { return {srgbToLinear(r), srgbToLinear(g), srgbToLinear(b)}; }
+Rgb lin(float r, float g, float b) {
+    return {srgbToLinear(r), srgbToLinear(g), srgbToLinear(b)};
+}
 Rgb mix(Rgb a, Rgb b, float t) {
     return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
 }
-Rgb scale(Rgb a, float s) { return {a.r * s, a.g * s, a.b * s}; }
+Rgb scale(Rgb a, float s) {
+    return {a.r * s, a.g * s, a.b * s};
+}
 
 lut::Image makeScene(int w, int h) {
     lut::Image img(w, h);
@@ -54,7 +58,8 @@ lut::Image makeScene(int w, int h) {
             {
                 const float dx = (u - 0.82f) * w / h, dy = v - 0.16f;
                 const float d = std::sqrt(dx * dx + dy * dy);
-                if (d < 0.06f) c = {12.0f, 10.5f, 8.0f};
+                if (d < 0.06f)
+                    c = {12.0f, 10.5f, 8.0f};
                 else if (d < 0.16f) {
                     const float k = 1.0f - (d - 0.06f) / 0.10f;
                     c = mix(c, {2.2f, 1.8f, 1.3f}, k * k);
@@ -64,20 +69,25 @@ lut::Image makeScene(int w, int h) {
             if (inCircle(0.18f, 0.70f, 0.10f)) {
                 const float shade = 0.6f + 0.4f * (0.70f - v + 0.1f) / 0.2f;
                 c = scale(lin(0.90f, 0.06f, 0.08f), shade);
-                if (inCircle(0.16f, 0.65f, 0.02f)) c = {3.0f, 2.9f, 2.8f}; // specular highlight
+                if (inCircle(0.16f, 0.65f, 0.02f))
+                    c = {3.0f, 2.9f, 2.8f}; // specular highlight
             }
-            if (u > 0.34f && u < 0.46f && v > 0.55f && v < 0.85f) c = lin(0.10f, 0.80f, 0.20f);
+            if (u > 0.34f && u < 0.46f && v > 0.55f && v < 0.85f)
+                c = lin(0.10f, 0.80f, 0.20f);
             if (std::fabs(u - 0.88f) * w / h + std::fabs(v - 0.72f) * 0.6f < 0.07f) {
                 c = lin(0.15f, 0.25f, 0.95f);
-                if (std::fabs(u - 0.875f) < 0.004f) c = {1.6f, 1.8f, 4.0f};
+                if (std::fabs(u - 0.875f) < 0.004f)
+                    c = {1.6f, 1.8f, 4.0f};
             }
-            if (inCircle(0.58f, 0.40f, 0.05f)) c = lin(0.98f, 0.86f, 0.10f);
+            if (inCircle(0.58f, 0.40f, 0.05f))
+                c = lin(0.98f, 0.86f, 0.10f);
             // Skin-like tones: a face with a lit and a shadowed side, and a darker hand.
             if (inCircle(0.70f, 0.60f, 0.085f)) {
                 const float side = u < 0.70f ? 1.0f : 0.7f;
                 c = scale(lin(0.87f, 0.64f, 0.52f), side);
             }
-            if (inCircle(0.62f, 0.78f, 0.04f)) c = lin(0.55f, 0.36f, 0.25f);
+            if (inCircle(0.62f, 0.78f, 0.04f))
+                c = lin(0.55f, 0.36f, 0.25f);
             float* p = img.pixel(x, y);
             p[0] = c.r;
             p[1] = c.g;
@@ -103,7 +113,8 @@ void grade(double r, double g, double b, double out[3]) {
 
 bool writeCube(const std::string& path, int n) {
     FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) return false;
+    if (!f)
+        return false;
     std::fprintf(f, "# lutkit sample grade: warm highlights, teal shadows, +15%% saturation.\n");
     std::fprintf(f, "# Made by samples/tools/make_samples.cpp.\n");
     std::fprintf(f, "TITLE \"lutkit sample sunset grade\"\nLUT_3D_SIZE %d\n", n);
@@ -129,7 +140,8 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < scene.pixels().size(); ++i)
             shot.pixels()[i] = (i % 4 == 3) ? 1.0f : linearToSrgb(scene.pixels()[i]);
         lut::formats::writeImage(dir + "/sample_scene.png", shot, {8, false, false});
-        if (!writeCube(dir + "/sample_grade.cube", 33)) throw std::runtime_error("cannot write cube");
+        if (!writeCube(dir + "/sample_grade.cube", 33))
+            throw std::runtime_error("cannot write cube");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "make_samples: %s\n", e.what());
         return 1;

@@ -29,7 +29,9 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -58,7 +60,8 @@ Vec3d trilinear(const lut::Lut3D& l, const double in[3]) {
         const int dr = corner & 1, dg = (corner >> 1) & 1, db = (corner >> 2) & 1;
         const double w = (dr ? f[0] : 1 - f[0]) * (dg ? f[1] : 1 - f[1]) * (db ? f[2] : 1 - f[2]);
         const glm::vec3 e = l.at(i0[0] + dr, i0[1] + dg, i0[2] + db);
-        for (int c = 0; c < 3; ++c) out.v[c] += w * e[c];
+        for (int c = 0; c < 3; ++c)
+            out.v[c] += w * e[c];
     }
     return out;
 }
@@ -74,7 +77,8 @@ lut::Lut3D readCube(const std::string& path) {
 TEST(CliConvert, CubeToCubeIsExact) {
     const std::string dir = workDir();
     const std::string out = dir + "/copy.cube";
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
+    const auto r =
+        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     EXPECT_TRUE(js["resample"].isNull());
@@ -84,7 +88,8 @@ TEST(CliConvert, CubeToCubeIsExact) {
     const lut::Lut3D b = readCube(out);
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t i = 0; i < a.entryCount(); ++i)
-        for (int c = 0; c < 3; ++c) ASSERT_EQ(a.entries()[i][c], b.entries()[i][c]) << i;
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(a.entries()[i][c], b.entries()[i][c]) << i;
     EXPECT_EQ(a.title(), b.title());
     EXPECT_EQ(a.comments(), b.comments());
 }
@@ -111,7 +116,8 @@ TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
             for (int rr = 0; rr < 17; ++rr) {
                 const double in[3] = {rr / 16.0, g / 16.0, b / 16.0};
                 const Vec3d want = trilinear(src, in);
-                for (int c = 0; c < 3; ++c) ASSERT_NEAR(dst.at(rr, g, b)[c], want.v[c], 2e-6);
+                for (int c = 0; c < 3; ++c)
+                    ASSERT_NEAR(dst.at(rr, g, b)[c], want.v[c], 2e-6);
             }
     // The reported error: both tables evaluated (trilinear) on a probe grid spanning the domain,
     // 2 * 33 + 1 = 67 points per axis, so that probes fall between the lattice points of both.
@@ -121,7 +127,8 @@ TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
     for (int z = 0; z < probes; ++z)
         for (int y = 0; y < probes; ++y)
             for (int x = 0; x < probes; ++x) {
-                const double in[3] = {double(x) / (probes - 1), double(y) / (probes - 1), double(z) / (probes - 1)};
+                const double in[3] = {double(x) / (probes - 1), double(y) / (probes - 1),
+                                      double(z) / (probes - 1)};
                 const Vec3d a = trilinear(src, in), b2 = trilinear(dst, in);
                 for (int c = 0; c < 3; ++c) {
                     const double d = std::fabs(a.v[c] - b2.v[c]);
@@ -134,7 +141,8 @@ TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
     ASSERT_GT(maxAbs, 1e-4); // the grade is curved: resampling it to 17^3 must cost something
     EXPECT_NEAR(js["resample"]["error"]["max"].number, maxAbs, 1e-5 + 1e-3 * maxAbs);
     EXPECT_NEAR(js["resample"]["error"]["mean"].number, mean, 1e-6 + 1e-3 * mean);
-    EXPECT_NEAR(js["resample"]["error"]["max_8bit_steps"].number, maxAbs * 255, 255 * (1e-5 + 1e-3 * maxAbs));
+    EXPECT_NEAR(js["resample"]["error"]["max_8bit_steps"].number, maxAbs * 255,
+                255 * (1e-5 + 1e-3 * maxAbs));
     // A float .cube stores the resampled floats: no storage loss.
     EXPECT_LE(js["storage"]["max"].number, 1e-7);
 }
@@ -142,7 +150,8 @@ TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
 TEST(CliConvert, EightBitQuantisationMatchesReference) {
     const std::string dir = workDir();
     const std::string out = dir + "/strip.png";
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
+    const auto r =
+        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     ASSERT_FALSE(js["storage"].isNull()) << r.out;
@@ -165,7 +174,8 @@ TEST(CliConvert, EightBitQuantisationMatchesReference) {
 TEST(CliConvert, ToNutexbResamplesTo16Tetrahedral) {
     const std::string dir = workDir();
     const std::string out = dir + "/color_grading_lut.nutexb";
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
+    const auto r =
+        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     ASSERT_FALSE(js["resample"].isNull()) << r.out;
@@ -178,7 +188,8 @@ TEST(CliConvert, ToNutexbResamplesTo16Tetrahedral) {
 
 TEST(CliConvert, TextReportNamesBothErrors) {
     const std::string dir = workDir();
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/x.cube") + " --size 9");
+    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " +
+                          q(dir + "/x.cube") + " --size 9");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("resample 33^3 -> 9^3 (tetrahedral): max"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("8-bit steps"), std::string::npos) << r.out;
@@ -231,7 +242,8 @@ TEST(CliConvert, BadInputExitsOneNamingTheFile) {
     const auto r = runCli("convert " + q(dir + "/missing.cube") + " " + q(dir + "/o.cube"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("missing.cube"), std::string::npos) << r.err;
-    const auto r2 = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/o.unknownext"));
+    const auto r2 =
+        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/o.unknownext"));
     EXPECT_EQ(r2.exitCode, 1);
     EXPECT_NE(r2.err.find("o.unknownext"), std::string::npos) << r2.err;
 }
@@ -239,7 +251,8 @@ TEST(CliConvert, BadInputExitsOneNamingTheFile) {
 TEST(CliConvert, ThroughOcioFormatsAndBack) {
     const std::string dir = workDir();
     // cube -> .3dl (12-bit) -> cube: the report's storage error is the 12-bit rounding.
-    auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/g.3dl") + " --json");
+    auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/g.3dl") +
+                    " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto js = lut::test::json::parse(r.out);
     EXPECT_EQ(js["output_format"].string, "flame");
@@ -254,5 +267,6 @@ TEST(CliConvert, ThroughOcioFormatsAndBack) {
     const lut::Lut3D b = readCube(dir + "/back.cube");
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t i = 0; i < a.entryCount(); ++i)
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(a.entries()[i][c], b.entries()[i][c], 0.5 / 4095 + 1e-6);
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(a.entries()[i][c], b.entries()[i][c], 0.5 / 4095 + 1e-6);
 }

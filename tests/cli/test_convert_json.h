@@ -21,7 +21,8 @@ struct Value {
 
     const Value& operator[](const std::string& key) const {
         const auto it = object.find(key);
-        if (type != Type::Object || it == object.end()) throw std::runtime_error("no key '" + key + "'");
+        if (type != Type::Object || it == object.end())
+            throw std::runtime_error("no key '" + key + "'");
         return it->second;
     }
     const Value& operator[](std::size_t i) const { return array.at(i); }
@@ -35,7 +36,8 @@ public:
     Value parse() {
         Value v = value();
         ws();
-        if (m_i != m_s.size()) fail("trailing characters");
+        if (m_i != m_s.size())
+            fail("trailing characters");
         return v;
     }
 
@@ -44,7 +46,9 @@ private:
         throw std::runtime_error("invalid JSON at " + std::to_string(m_i) + ": " + what);
     }
     void ws() {
-        while (m_i < m_s.size() && (m_s[m_i] == ' ' || m_s[m_i] == '\n' || m_s[m_i] == '\r' || m_s[m_i] == '\t')) ++m_i;
+        while (m_i < m_s.size() &&
+               (m_s[m_i] == ' ' || m_s[m_i] == '\n' || m_s[m_i] == '\r' || m_s[m_i] == '\t'))
+            ++m_i;
     }
     bool eat(char c) {
         ws();
@@ -55,7 +59,8 @@ private:
         return false;
     }
     void expect(char c) {
-        if (!eat(c)) fail(std::string("expected '") + c + "'");
+        if (!eat(c))
+            fail(std::string("expected '") + c + "'");
     }
     bool word(const char* w) {
         const std::string s(w);
@@ -69,46 +74,71 @@ private:
         expect('"');
         std::string out;
         while (true) {
-            if (m_i >= m_s.size()) fail("unterminated string");
+            if (m_i >= m_s.size())
+                fail("unterminated string");
             const unsigned char c = static_cast<unsigned char>(m_s[m_i++]);
-            if (c == '"') return out;
-            if (c < 0x20) fail("raw control character in string");
+            if (c == '"')
+                return out;
+            if (c < 0x20)
+                fail("raw control character in string");
             if (c != '\\') {
                 out += static_cast<char>(c);
                 continue;
             }
-            if (m_i >= m_s.size()) fail("bad escape");
+            if (m_i >= m_s.size())
+                fail("bad escape");
             const char e = m_s[m_i++];
             switch (e) {
-            case '"': out += '"'; break;
-            case '\\': out += '\\'; break;
-            case '/': out += '/'; break;
-            case 'b': out += '\b'; break;
-            case 'f': out += '\f'; break;
-            case 'n': out += '\n'; break;
-            case 'r': out += '\r'; break;
-            case 't': out += '\t'; break;
+            case '"':
+                out += '"';
+                break;
+            case '\\':
+                out += '\\';
+                break;
+            case '/':
+                out += '/';
+                break;
+            case 'b':
+                out += '\b';
+                break;
+            case 'f':
+                out += '\f';
+                break;
+            case 'n':
+                out += '\n';
+                break;
+            case 'r':
+                out += '\r';
+                break;
+            case 't':
+                out += '\t';
+                break;
             case 'u': {
-                if (m_i + 4 > m_s.size()) fail("bad \\u escape");
+                if (m_i + 4 > m_s.size())
+                    fail("bad \\u escape");
                 const unsigned long cp = std::strtoul(m_s.substr(m_i, 4).c_str(), nullptr, 16);
                 m_i += 4;
-                if (cp >= 0x80) fail("test parser handles only ASCII \\u escapes");
+                if (cp >= 0x80)
+                    fail("test parser handles only ASCII \\u escapes");
                 out += static_cast<char>(cp);
                 break;
             }
-            default: fail("bad escape");
+            default:
+                fail("bad escape");
             }
         }
     }
     Value value() {
         ws();
-        if (m_i >= m_s.size()) fail("unexpected end");
+        if (m_i >= m_s.size())
+            fail("unexpected end");
         Value v;
         const char c = m_s[m_i];
         if (c == '{') {
             v.type = Value::Type::Object;
             ++m_i;
-            if (eat('}')) return v;
+            if (eat('}'))
+                return v;
             do {
                 ws();
                 std::string k = str();
@@ -119,8 +149,10 @@ private:
         } else if (c == '[') {
             v.type = Value::Type::Array;
             ++m_i;
-            if (eat(']')) return v;
-            do v.array.push_back(value());
+            if (eat(']'))
+                return v;
+            do
+                v.array.push_back(value());
             while (eat(','));
             expect(']');
         } else if (c == '"') {
@@ -137,7 +169,8 @@ private:
             const char* begin = m_s.c_str() + m_i;
             char* end = nullptr;
             v.number = std::strtod(begin, &end);
-            if (end == begin) fail("bad number");
+            if (end == begin)
+                fail("bad number");
             m_i += static_cast<std::size_t>(end - begin);
         } else {
             fail(std::string("unexpected '") + c + "'");
@@ -149,6 +182,8 @@ private:
     std::size_t m_i = 0;
 };
 
-inline Value parse(const std::string& text) { return Parser(text).parse(); }
+inline Value parse(const std::string& text) {
+    return Parser(text).parse();
+}
 
 } // namespace lut::test::json

@@ -19,7 +19,9 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
 
 } // namespace
 

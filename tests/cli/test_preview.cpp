@@ -1,5 +1,5 @@
-// lutkit preview: output pixels against the float64 reference of docs/specs/smash-pipeline.md (shared
-// with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
+// lutkit preview: output pixels against the float64 reference of docs/specs/smash-pipeline.md
+// (shared with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
 #include "../pipeline/PipelineTestUtil.h"
 #include "TestSupport.h"
 

@@ -53,11 +53,13 @@ TEST(CubeLimits, LargestSizesAccepted) {
         parseCube("LUT_3D_SIZE 256\n0 0 0\n", "max.cube");
         FAIL();
     } catch (const ParseError& e) {
-        EXPECT_EQ(e.message(),
-                  "expected 16777216 data rows for LUT_3D_SIZE 256, found 1 before the end of the file");
+        EXPECT_EQ(
+            e.message(),
+            "expected 16777216 data rows for LUT_3D_SIZE 256, found 1 before the end of the file");
     }
     std::string text = "LUT_1D_SIZE 65536\n";
-    for (int i = 0; i < 65536; ++i) text += "0.5 0.25 1\n";
+    for (int i = 0; i < 65536; ++i)
+        text += "0.5 0.25 1\n";
     EXPECT_EQ(parseCube(text, "big1d.cube").shaper->size(), 65536);
 }
 
@@ -77,7 +79,8 @@ TEST(CubeLimits, LineOfAGigabyteRefusedAtTheLimit) {
 }
 
 TEST(CubeLimits, LongLineAtTheLimitIsFine) {
-    // A comment of exactly kMaxTextLineBytes bytes is accepted (CR LF not counted); one more is not.
+    // A comment of exactly kMaxTextLineBytes bytes is accepted (CR LF not counted), one more
+    // byte is not.
     const std::string okComment = "#" + std::string(limits::kMaxTextLineBytes - 1, 'x');
     const std::string body = "LUT_1D_SIZE 2\n0 0 0\n1 1 1\n";
     EXPECT_NO_THROW(parseCube(okComment + "\r\n" + body, "ok.cube"));
@@ -94,14 +97,16 @@ TEST(CubeLimits, EndlessRowsStopAtTheFirstExtraRow) {
     // Ten million rows after a 2^3 cube: refused at row 9 (line 10) without reading the rest.
     std::string text = "LUT_3D_SIZE 2\n";
     text.reserve(14 + 10'000'000 * 6);
-    for (int i = 0; i < 10'000'000; ++i) text += "0 0 0\n";
+    for (int i = 0; i < 10'000'000; ++i)
+        text += "0 0 0\n";
     try {
         parseCube(text, "endless.cube");
         FAIL();
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 10);
         EXPECT_EQ(e.column(), 1);
-        EXPECT_EQ(e.message(), "too many data rows: expected 8 data rows for LUT_3D_SIZE 2, this is row 9");
+        EXPECT_EQ(e.message(),
+                  "too many data rows: expected 8 data rows for LUT_3D_SIZE 2, this is row 9");
     }
 }
 
@@ -126,7 +131,8 @@ TEST(CubeLimits, MissingFileAndDirectory) {
 
 TEST(CubeLimits, BinaryGarbageIsAnErrorNotACrash) {
     std::string junk;
-    for (int i = 0; i < 4096; ++i) junk += static_cast<char>((i * 7919) & 0xff);
+    for (int i = 0; i < 4096; ++i)
+        junk += static_cast<char>((i * 7919) & 0xff);
     EXPECT_THROW(parseCube(junk, "junk.cube"), ParseError);
     EXPECT_THROW(parseCube(std::string("LUT_3D_SIZE 2\n\0\0\0", 17), "nul.cube"), ParseError);
 }

@@ -15,7 +15,8 @@ std::vector<std::pair<int, std::string>> lines(std::string_view data, std::size_
     TextLineReader r(data, "t.txt", max);
     std::vector<std::pair<int, std::string>> out;
     TextLine l;
-    while (r.next(l)) out.emplace_back(l.number, std::string(l.text));
+    while (r.next(l))
+        out.emplace_back(l.number, std::string(l.text));
     return out;
 }
 
@@ -72,7 +73,8 @@ TEST(CubeTextLines, LongLineRefusedWithLineAndLimit) {
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 2);
         EXPECT_EQ(e.column(), 65);
-        EXPECT_EQ(e.message(), "line is longer than the limit of 64 bytes (lut::limits::kMaxTextLineBytes)");
+        EXPECT_EQ(e.message(),
+                  "line is longer than the limit of 64 bytes (lut::limits::kMaxTextLineBytes)");
     }
     // Exactly at the limit, with CR LF, is fine.
     EXPECT_EQ(lines(std::string(64, 'y') + "\r\nz", 64).size(), 2u);

@@ -32,8 +32,8 @@ const Case kCases[] = {
      "-inf"},
     {"data_float_overflow", 5, 1, "number is out of the 32-bit float range", "1e40"},
     {"data_trailing_garbage", 11, 5, "expected a number", "1x"},
-    {"size3d_too_large", 4, 13, "LUT_3D_SIZE 100000 is over the limit of 256 (lut::limits::kMax3DSize)",
-     "100000"},
+    {"size3d_too_large", 4, 13,
+     "LUT_3D_SIZE 100000 is over the limit of 256 (lut::limits::kMax3DSize)", "100000"},
     {"size3d_too_small", 3, 13, "LUT_3D_SIZE 1 is below the minimum of 2", "1"},
     {"size3d_not_integer", 3, 13, "expected an integer size after LUT_3D_SIZE", "2.0"},
     {"size3d_negative", 3, 13, "LUT_3D_SIZE -5 is below the minimum of 2", "-5"},
@@ -41,10 +41,12 @@ const Case kCases[] = {
     {"size3d_extra_text", 3, 15, "unexpected text after LUT_3D_SIZE 2", "3"},
     {"size1d_too_large", 3, 13,
      "LUT_1D_SIZE 70000 is over the limit of 65536 (lut::limits::kMax1DSize)", "70000"},
-    {"size_missing", 4, 1, "expected LUT_3D_SIZE or LUT_1D_SIZE before the first data line", "0 0 0"},
-    {"empty", 1, 1, "the file is empty: expected a .cube header with LUT_3D_SIZE or LUT_1D_SIZE", ""},
-    {"header_only", 5, 1, "expected 8 data rows for LUT_3D_SIZE 2, found 0 before the end of the file",
+    {"size_missing", 4, 1, "expected LUT_3D_SIZE or LUT_1D_SIZE before the first data line",
+     "0 0 0"},
+    {"empty", 1, 1, "the file is empty: expected a .cube header with LUT_3D_SIZE or LUT_1D_SIZE",
      ""},
+    {"header_only", 5, 1,
+     "expected 8 data rows for LUT_3D_SIZE 2, found 0 before the end of the file", ""},
     {"too_few_rows", 12, 1,
      "expected 8 data rows for LUT_3D_SIZE 2, found 7 before the end of the file", ""},
     {"too_many_rows", 14, 1,
@@ -92,9 +94,10 @@ TEST_P(CubeMalformed, ExactMessageLineAndColumn) {
         EXPECT_EQ(e.column(), c.column);
         EXPECT_EQ(e.message(), c.message);
         EXPECT_EQ(e.offending(), c.found);
-        std::string what = path + ":" + std::to_string(c.line) + ":" + std::to_string(c.column) +
-                           ": " + c.message;
-        if (*c.found) what += std::string(" (found '") + c.found + "')";
+        std::string what =
+            path + ":" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": " + c.message;
+        if (*c.found)
+            what += std::string(" (found '") + c.found + "')";
         EXPECT_EQ(std::string(e.what()), what);
     }
     // Strict mode refuses the same way: departures never hide an error.
@@ -130,11 +133,13 @@ TEST(CubeMalformedCorpus, EveryFileIsListed) {
     namespace fs = std::filesystem;
     std::size_t files = 0;
     for (const auto& entry : fs::directory_iterator(lut::test::dataPath("cube/malformed"))) {
-        if (entry.path().extension() != ".cube") continue;
+        if (entry.path().extension() != ".cube")
+            continue;
         ++files;
         const std::string stem = entry.path().stem().string();
         bool listed = false;
-        for (const Case& c : kCases) listed = listed || stem == c.file;
+        for (const Case& c : kCases)
+            listed = listed || stem == c.file;
         EXPECT_TRUE(listed) << stem;
     }
     EXPECT_EQ(files, std::size(kCases));

@@ -17,7 +17,9 @@ using lut::test::dataPath;
 
 namespace {
 
-std::string cubePath(const std::string& name) { return dataPath("cube/" + name); }
+std::string cubePath(const std::string& name) {
+    return dataPath("cube/" + name);
+}
 
 bool hasDiagnostic(const Diagnostics& d, int line, int column, const std::string& text) {
     for (const auto& x : d)
@@ -28,7 +30,8 @@ bool hasDiagnostic(const Diagnostics& d, int line, int column, const std::string
 
 std::string dump(const Diagnostics& d) {
     std::string s;
-    for (const auto& x : d) s += x.str() + "\n";
+    for (const auto& x : d)
+        s += x.str() + "\n";
     return s;
 }
 
@@ -51,8 +54,8 @@ TEST(CubeRead, AdobeThreeDWithDomain) {
     for (int b = 0; b < 2; ++b)
         for (int g = 0; g < 2; ++g)
             for (int r = 0; r < 2; ++r)
-                EXPECT_EQ(c.at(r, g, b), glm::vec3(0.125f + 0.75f * r, 0.25f + 0.5f * g,
-                                                   -0.25f + 1.5f * b))
+                EXPECT_EQ(c.at(r, g, b),
+                          glm::vec3(0.125f + 0.75f * r, 0.25f + 0.5f * g, -0.25f + 1.5f * b))
                     << r << g << b;
     EXPECT_TRUE(f.diagnostics.empty()) << dump(f.diagnostics);
 }
@@ -107,9 +110,8 @@ TEST(CubeRead, CrlfBomCommentsAnywhere) {
     ASSERT_TRUE(f.cube);
     EXPECT_EQ(f.cube->title(), "crlf bom");
     EXPECT_TRUE(f.cube->isIdentity(0.0f));
-    const std::vector<std::string> expected = {"leading comment", "indented comment",
-                                               "before data", "in the middle of the data",
-                                               "trailing comment"};
+    const std::vector<std::string> expected = {"leading comment", "indented comment", "before data",
+                                               "in the middle of the data", "trailing comment"};
     EXPECT_EQ(f.cube->comments(), expected);
     // Non-strict: departures are not reported.
     EXPECT_TRUE(f.diagnostics.empty()) << dump(f.diagnostics);
@@ -144,7 +146,8 @@ TEST(CubeRead, StrictReportsEveryDepartureWithPlace) {
     EXPECT_TRUE(hasDiagnostic(d, 4, 3, "comment does not start at column 1")) << dump(d);
     // 19 lines end in CR LF: one reported, the rest counted.
     EXPECT_TRUE(hasDiagnostic(d, 0, 0, "and 18 more: lines end with CR LF")) << dump(d);
-    for (const auto& x : d) EXPECT_EQ(x.severity, Diagnostic::Severity::Warning);
+    for (const auto& x : d)
+        EXPECT_EQ(x.severity, Diagnostic::Severity::Warning);
     // Reported in file order.
     for (std::size_t i = 1; i < d.size(); ++i)
         if (d[i].line != 0) {
@@ -172,9 +175,10 @@ TEST(CubeRead, StrictOtherDepartures) {
     CubeReadOptions strict;
     strict.strict = true;
     const std::string longComment = "#" + std::string(260, 'x');
-    const std::string text = "TITLE unquoted words\nLUT_3D_SIZE 2\nLUT_3D_SIZE 2\n" + longComment +
-                             "\nFOO_BAR 1\n0 0 0 # black\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n"
-                             "1 1 1\n";
+    const std::string text =
+        "TITLE unquoted words\nLUT_3D_SIZE 2\nLUT_3D_SIZE 2\n" + longComment +
+        "\nFOO_BAR 1\n0 0 0 # black\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n"
+        "1 1 1\n";
     const LutFile f = parseCube(text, "s.cube", strict);
     const auto& d = f.diagnostics;
     EXPECT_EQ(f.cube->title(), "unquoted words");
@@ -188,11 +192,13 @@ TEST(CubeRead, StrictOtherDepartures) {
 TEST(CubeRead, UnknownKeywordWarnsEvenWhenNotStrict) {
     const LutFile f = parseCube("VENDOR_THING 3\nLUT_1D_SIZE 2\n0 0 0\n1 1 1\n", "u.cube");
     ASSERT_EQ(f.diagnostics.size(), 1u);
-    EXPECT_EQ(f.diagnostics[0].str(), "u.cube:1:1: warning: unknown keyword 'VENDOR_THING' ignored");
+    EXPECT_EQ(f.diagnostics[0].str(),
+              "u.cube:1:1: warning: unknown keyword 'VENDOR_THING' ignored");
 }
 
 TEST(CubeRead, KeywordCaseAndSignsAccepted) {
-    const LutFile f = parseCube("lut_1d_size 2\ndomain_max 2 2 2\n+0.5 -0 1e-50\n.5 1. +2e0\n", "k.cube");
+    const LutFile f =
+        parseCube("lut_1d_size 2\ndomain_max 2 2 2\n+0.5 -0 1e-50\n.5 1. +2e0\n", "k.cube");
     ASSERT_TRUE(f.shaper);
     EXPECT_EQ(f.shaper->domainMax(), glm::vec3(2.0f));
     EXPECT_EQ((*f.shaper)[0].x, 0.5f);
@@ -222,14 +228,18 @@ TEST(CubeRead, FloatParsingMatchesFromChars) {
         tokens.reserve(3 * n);
         for (int i = 0; i < 3 * n; ++i) {
             std::string t;
-            if (rng() % 2) t += '-';
+            if (rng() % 2)
+                t += '-';
             const int intDigits = static_cast<int>(rng() % 8);
             const int fracDigits = static_cast<int>(rng() % (round < 3 ? 10 : 21));
-            for (int k = 0; k < intDigits; ++k) t += static_cast<char>('0' + rng() % 10);
-            if (intDigits == 0 && fracDigits == 0) t += '0';
+            for (int k = 0; k < intDigits; ++k)
+                t += static_cast<char>('0' + rng() % 10);
+            if (intDigits == 0 && fracDigits == 0)
+                t += '0';
             if (fracDigits) {
                 t += '.';
-                for (int k = 0; k < fracDigits; ++k) t += static_cast<char>('0' + rng() % 10);
+                for (int k = 0; k < fracDigits; ++k)
+                    t += static_cast<char>('0' + rng() % 10);
             }
             if (rng() % 4 == 0) {
                 t += 'e';
@@ -247,7 +257,7 @@ TEST(CubeRead, FloatParsingMatchesFromChars) {
             }
             tokens.push_back(t);
         }
-        tokens[0] = "16777217";         // halfway between 2^24 and 2^24 + 2: ties to even
+        tokens[0] = "16777217";                  // halfway between 2^24 and 2^24 + 2: ties to even
         tokens[1] = "1.00000005960464477539062"; // just below 1 + 2^-24 (halfway)
         tokens[2] = "0.3";
         std::string text = "LUT_1D_SIZE " + std::to_string(n) + "\n";
@@ -266,10 +276,11 @@ TEST(CubeRead, FloatParsingMatchesFromChars) {
             const char* b = t.data();
             auto r = std::from_chars(b, b + t.size(), expected);
             ASSERT_EQ(r.ptr, b + t.size()) << t;
-            if (r.ec == std::errc::result_out_of_range) continue; // below float range: 0 or denormal
+            if (r.ec == std::errc::result_out_of_range)
+                continue; // below float range: 0 or denormal
             const float got = (*f.shaper)[i / 3][i % 3];
-            ASSERT_EQ(std::memcmp(&got, &expected, 4), 0) << "text '" << t << "' read as " << got
-                                                         << ", from_chars gives " << expected;
+            ASSERT_EQ(std::memcmp(&got, &expected, 4), 0)
+                << "text '" << t << "' read as " << got << ", from_chars gives " << expected;
         }
     }
 }
@@ -281,7 +292,8 @@ TEST(CubeRead, LargeFilesSameResultOnEveryPath) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-0.2f, 1.2f);
     Lut3D l(n);
-    for (auto& v : l.entries()) v = glm::vec3(u(rng), u(rng), u(rng));
+    for (auto& v : l.entries())
+        v = glm::vec3(u(rng), u(rng), u(rng));
     LutFile f;
     f.cube = l;
     const std::string plain = writeCubeString(f);
@@ -294,8 +306,10 @@ TEST(CubeRead, LargeFilesSameResultOnEveryPath) {
     // CR LF everywhere and blank lines between rows.
     std::string crlf;
     for (char c : plain) {
-        if (c == '\n') crlf += "\r\n\r\n";
-        else crlf += c;
+        if (c == '\n')
+            crlf += "\r\n\r\n";
+        else
+            crlf += c;
     }
     sameAsSource(parseCube(crlf, "crlf.cube"));
 
@@ -323,8 +337,9 @@ TEST(CubeRead, LargeFilesSameResultOnEveryPath) {
         FAIL();
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 1 + n * n * n);
-        EXPECT_EQ(e.message(), "expected 64000 data rows for LUT_3D_SIZE 40, found 63999 before the end "
-                               "of the file");
+        EXPECT_EQ(e.message(),
+                  "expected 64000 data rows for LUT_3D_SIZE 40, found 63999 before the end "
+                  "of the file");
     }
     try {
         parseCube(plain + "1 1 1\n", "long.cube");

@@ -15,10 +15,14 @@ using lut::test::runCli;
 
 namespace {
 
-std::string cube(const std::string& name) { return dataPath("cube/" + name); }
+std::string cube(const std::string& name) {
+    return dataPath("cube/" + name);
+}
 
 // The CLI tests need the lutkit binary of this build tree (formats_tests does not depend on it).
-bool haveCli() { return std::filesystem::exists(LUTKIT_CLI); }
+bool haveCli() {
+    return std::filesystem::exists(LUTKIT_CLI);
+}
 
 } // namespace
 
@@ -49,12 +53,14 @@ TEST(CubeValidate, CliOkLines) {
     const auto r = runCli("validate '" + cube("adobe_3d_domain.cube") + "' '" +
                           cube("resolve_shaper_3d.cube") + "' '" + cube("adobe_1d.cube") + "'");
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find(cube("adobe_3d_domain.cube") + ": ok (adobe 3D, 2^3)\n"), std::string::npos)
+    EXPECT_NE(r.out.find(cube("adobe_3d_domain.cube") + ": ok (adobe 3D, 2^3)\n"),
+              std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find(cube("resolve_shaper_3d.cube") + ": ok (resolve 1D 4 + 3D, 2^3)\n"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find(cube("adobe_1d.cube") + ": ok (adobe 1D, 5)\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(cube("adobe_1d.cube") + ": ok (adobe 1D, 5)\n"), std::string::npos)
+        << r.out;
     EXPECT_EQ(r.err, "");
 }
 
@@ -67,13 +73,15 @@ TEST(CubeValidate, CliStrictListsDeparturesAndFails) {
 
     const auto strict = runCli("validate --strict '" + p + "'");
     EXPECT_EQ(strict.exitCode, 1);
-    EXPECT_EQ(strict.out,
-              p + ":1:1: warning: file starts with a UTF-8 byte order mark\n" +
-              p + ":1:18: warning: line ends with CR LF; the Adobe spec uses LF\n" +
-              p + ":3:1: warning: keyword 'title' is not upper case; the Adobe spec spells it TITLE\n" +
-              p + ":4:3: warning: comment does not start at column 1; the Adobe spec wants '#' first\n" +
-              p + ": warning: and 18 more: lines end with CR LF\n" +
-              p + ": 22 departures from the Adobe .cube 1.0 spec (adobe 3D, 2^3)\n");
+    EXPECT_EQ(
+        strict.out,
+        p + ":1:1: warning: file starts with a UTF-8 byte order mark\n" + p +
+            ":1:18: warning: line ends with CR LF; the Adobe spec uses LF\n" + p +
+            ":3:1: warning: keyword 'title' is not upper case; the Adobe spec spells it TITLE\n" +
+            p +
+            ":4:3: warning: comment does not start at column 1; the Adobe spec wants '#' first\n" +
+            p + ": warning: and 18 more: lines end with CR LF\n" + p +
+            ": 22 departures from the Adobe .cube 1.0 spec (adobe 3D, 2^3)\n");
 
     const auto clean = runCli("validate --strict '" + cube("size2.cube") + "'");
     EXPECT_EQ(clean.exitCode, 0);
@@ -85,13 +93,15 @@ TEST(CubeValidate, CliErrorsNameFileLineColumn) {
     const std::string bad = dataPath("cube/malformed/data_two_numbers.cube");
     const auto r = runCli("validate '" + bad + "' '" + cube("size2.cube") + "'");
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_EQ(r.err, bad + ":7:9: error: expected 3 numbers on a data line, found 2 (found '0.1 0.2')\n");
+    EXPECT_EQ(r.err,
+              bad + ":7:9: error: expected 3 numbers on a data line, found 2 (found '0.1 0.2')\n");
     // The good file after the bad one is still checked.
     EXPECT_EQ(r.out, cube("size2.cube") + ": ok (adobe 3D, 2^3)\n");
 
     const auto missing = runCli("validate /nonexistent/x.cube");
     EXPECT_EQ(missing.exitCode, 1);
-    EXPECT_NE(missing.err.find("/nonexistent/x.cube: cannot open"), std::string::npos) << missing.err;
+    EXPECT_NE(missing.err.find("/nonexistent/x.cube: cannot open"), std::string::npos)
+        << missing.err;
 
     const auto usage = runCli("validate");
     EXPECT_EQ(usage.exitCode, 2);

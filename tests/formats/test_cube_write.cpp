@@ -2,9 +2,9 @@
 // and OpenColorIO (an independent reader) agreeing with our reading of what we wrote.
 #include "TestSupport.h"
 
-#include "lut/interp/Sampler.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/Sampler.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <gtest/gtest.h>
@@ -31,14 +31,16 @@ std::string slurp(const std::string& path) {
 }
 
 bool sameBits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
 }
 
 Lut3D randomLut(int size, unsigned seed, float lo, float hi) {
     Lut3D l(size);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(lo, hi);
-    for (auto& v : l.entries()) v = glm::vec3(u(rng), u(rng), u(rng));
+    for (auto& v : l.entries())
+        v = glm::vec3(u(rng), u(rng), u(rng));
     return l;
 }
 
@@ -60,9 +62,11 @@ TEST(CubeWrite, RoundTripIsBitExactForAnyFiniteFloat) {
             v[c] = f;
         }
     // ... and the named extremes.
-    const float special[] = {1e-30f, -5.0f, 1e20f, 0.0f, -0.0f, 1.0f, FLT_MAX, -FLT_MAX,
-                             FLT_MIN, FLT_TRUE_MIN, 0.1f, 1.0f / 3.0f, 16777216.0f, -1e-45f};
-    for (std::size_t i = 0; i < std::size(special); ++i) e[i] = glm::vec3(special[i], -special[i], special[i]);
+    const float special[] = {1e-30f, -5.0f,       1e20f,       0.0f,    -0.0f,
+                             1.0f,   FLT_MAX,     -FLT_MAX,    FLT_MIN, FLT_TRUE_MIN,
+                             0.1f,   1.0f / 3.0f, 16777216.0f, -1e-45f};
+    for (std::size_t i = 0; i < std::size(special); ++i)
+        e[i] = glm::vec3(special[i], -special[i], special[i]);
     l.setTitle("round trip");
     l.comments() = {"first", " indented", ""};
     l.setDomain(glm::vec3(-0.125f, 0.0f, 1e-3f), glm::vec3(1.5f, 3.0f, 7.0f));
@@ -97,7 +101,9 @@ TEST(CubeWrite, HeaderLayout) {
                                   "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n");
     f.cube->setDomain(glm::vec3(0.0f), glm::vec3(2.0f, 2.0f, 4.0f));
     const std::string t = writeCubeString(f);
-    EXPECT_NE(t.find("LUT_3D_SIZE 2\nDOMAIN_MIN 0 0 0\nDOMAIN_MAX 2 2 4\n0 0 0\n"), std::string::npos) << t;
+    EXPECT_NE(t.find("LUT_3D_SIZE 2\nDOMAIN_MIN 0 0 0\nDOMAIN_MAX 2 2 4\n0 0 0\n"),
+              std::string::npos)
+        << t;
 }
 
 TEST(CubeWrite, FixedDecimalsWhenAsked) {
@@ -128,8 +134,9 @@ TEST(CubeWrite, ShaperAndCubeInResolveDialect) {
     Diagnostics d;
     const std::string t = writeCubeString(src, &d);
     EXPECT_TRUE(d.empty());
-    EXPECT_NE(t.find("LUT_1D_SIZE 4\nLUT_1D_INPUT_RANGE 0 4\nLUT_3D_SIZE 2\nLUT_3D_INPUT_RANGE 0 1\n"),
-              std::string::npos)
+    EXPECT_NE(
+        t.find("LUT_1D_SIZE 4\nLUT_1D_INPUT_RANGE 0 4\nLUT_3D_SIZE 2\nLUT_3D_INPUT_RANGE 0 1\n"),
+        std::string::npos)
         << t;
     const LutFile back = parseCube(t, "r.cube");
     EXPECT_EQ(back.dialect, "resolve");
@@ -174,14 +181,14 @@ TEST(CubeWrite, OneDOnly) {
     EXPECT_EQ(writeCubeString(f), "TITLE \"ramp\"\nLUT_1D_SIZE 3\n0 0 0\n0.5 0.5 0.5\n1 1 1\n");
 }
 
-TEST(CubeWrite, EmptyLutIsAnError) { EXPECT_THROW(writeCubeString(LutFile{}), Error); }
+TEST(CubeWrite, EmptyLutIsAnError) {
+    EXPECT_THROW(writeCubeString(LutFile{}), Error);
+}
 
 TEST(CubeWrite, AtomicFileAndRegistry) {
     const std::string dir = lut::test::tempDir();
     const std::string path = dir + "/out.cube";
-    {
-        std::ofstream(path) << "old content";
-    }
+    { std::ofstream(path) << "old content"; }
     LutFile f;
     f.cube = randomLut(5, 3, 0.0f, 1.0f);
     const Diagnostics d = writeLut(path, f); // through the registry, picked by extension
@@ -227,11 +234,13 @@ TEST(CubeWrite, OcioReadsOurOutputAndAgrees) {
         float worst = 0.0f;
         for (int i = 0; i < 4000; ++i) {
             glm::vec3 in(u(rng), u(rng), u(rng));
-            if (i < 8) in = glm::vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); // the corners
+            if (i < 8)
+                in = glm::vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); // the corners
             float rgb[3] = {in.x, in.y, in.z};
             cpu->applyRGB(rgb);
             const glm::vec3 mine = sampler->sample(in);
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(mine[c] - rgb[c]));
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::fabs(mine[c] - rgb[c]));
         }
         EXPECT_LT(worst, 1e-5f) << "size " << size;
     }
@@ -251,7 +260,8 @@ TEST(CubeWrite, EightBitValuesRoundTripAndReadWell) {
     Lut3D l(33);
     std::mt19937 rng(8);
     for (auto& v : l.entries())
-        v = glm::vec3(static_cast<float>(rng() % 256) / 255.0f, static_cast<float>(rng() % 256) / 255.0f,
+        v = glm::vec3(static_cast<float>(rng() % 256) / 255.0f,
+                      static_cast<float>(rng() % 256) / 255.0f,
                       static_cast<float>(rng() % 256) / 255.0f);
     l.at(0, 0, 0) = glm::vec3(128.0f / 255.0f, 0.0f, 1.0f);
     LutFile f;

@@ -22,44 +22,67 @@ namespace {
 // A plain FIPS 180-4 SHA-256, the oracle for the reference hash.
 std::string sha256Hex(const std::string& msg) {
     static const std::uint32_t k[64] = {
-        0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
-        0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
-        0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
-        0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
-        0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
-        0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
-        0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
-        0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
+        0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4,
+        0xab1c5ed5, 0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe,
+        0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f,
+        0x4a7484aa, 0x5cb0a9dc, 0x76f988da, 0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7,
+        0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967, 0x27b70a85, 0x2e1b2138, 0x4d2c6dfc,
+        0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85, 0xa2bfe8a1, 0xa81a664b,
+        0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070, 0x19a4c116,
+        0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
+        0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7,
+        0xc67178f2};
     std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
                           0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
     std::string m = msg;
     const std::uint64_t bits = static_cast<std::uint64_t>(msg.size()) * 8;
     m.push_back(static_cast<char>(0x80));
-    while (m.size() % 64 != 56) m.push_back('\0');
-    for (int i = 7; i >= 0; --i) m.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
+    while (m.size() % 64 != 56)
+        m.push_back('\0');
+    for (int i = 7; i >= 0; --i)
+        m.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
     auto rotr = [](std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); };
     for (std::size_t off = 0; off < m.size(); off += 64) {
         std::uint32_t w[64];
         for (int i = 0; i < 16; ++i)
-            w[i] = (static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i])) << 24) |
-                   (static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 1])) << 16) |
-                   (static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 2])) << 8) |
-                   static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 3]));
+            w[i] =
+                (static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i])) << 24) |
+                (static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 1])) << 16) |
+                (static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 2])) << 8) |
+                static_cast<std::uint32_t>(static_cast<unsigned char>(m[off + 4 * i + 3]));
         for (int i = 16; i < 64; ++i) {
             const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
             const std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
             w[i] = w[i - 16] + s0 + w[i - 7] + s1;
         }
-        std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], hh = h[7];
+        std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6],
+                      hh = h[7];
         for (int i = 0; i < 64; ++i) {
-            const std::uint32_t t1 = hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + k[i] + w[i];
-            const std::uint32_t t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
-            hh = g; g = f; f = e; e = d + t1; d = c; c = b; b = a; a = t1 + t2;
+            const std::uint32_t t1 =
+                hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + k[i] + w[i];
+            const std::uint32_t t2 =
+                (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
+            hh = g;
+            g = f;
+            f = e;
+            e = d + t1;
+            d = c;
+            c = b;
+            b = a;
+            a = t1 + t2;
         }
-        h[0] += a; h[1] += b; h[2] += c; h[3] += d; h[4] += e; h[5] += f; h[6] += g; h[7] += hh;
+        h[0] += a;
+        h[1] += b;
+        h[2] += c;
+        h[3] += d;
+        h[4] += e;
+        h[5] += f;
+        h[6] += g;
+        h[7] += hh;
     }
     char out[65];
-    for (int i = 0; i < 8; ++i) std::snprintf(out + 8 * i, 9, "%08x", h[i]);
+    for (int i = 0; i < 8; ++i)
+        std::snprintf(out + 8 * i, 9, "%08x", h[i]);
     return std::string(out, 64);
 }
 
@@ -71,7 +94,8 @@ std::string slurp(const std::string& path) {
 }
 
 void put32(std::string& s, std::size_t at, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) s[at + i] = static_cast<char>((v >> (8 * i)) & 0xFF);
+    for (int i = 0; i < 4; ++i)
+        s[at + i] = static_cast<char>((v >> (8 * i)) & 0xFF);
 }
 
 // The neutral 16^3 file from nutexb.md alone: the 16^3 closed-form offset, the mip table, the
@@ -109,7 +133,8 @@ std::string referenceNeutral16() {
 
 // The graded pattern of make_corpus.py.
 std::array<int, 3> graded(int x, int y, int z) {
-    return {(x * 37 + y * 11 + z * 5) % 256, (x * 3 + y * 71 + z * 13) % 256, (x * 7 + y * 17 + z * 101) % 256};
+    return {(x * 37 + y * 11 + z * 5) % 256, (x * 3 + y * 71 + z * 13) % 256,
+            (x * 7 + y * 17 + z * 101) % 256};
 }
 
 const char* kReferenceSha = "0320481c091b10c63b605ce1045e66d15fcc0b568ca99d91400bb566f816f272";
@@ -140,7 +165,8 @@ TEST(Nutexb, RegisteredFormatWritesReferenceFileByDefault) {
     const auto diags = lut::formats::writeLut(out, f);
     EXPECT_EQ(sha256Hex(slurp(out)), kReferenceSha);
     bool saysResampled = false;
-    for (const auto& d : diags) saysResampled |= d.message.find("33^3 -> 16^3") != std::string::npos;
+    for (const auto& d : diags)
+        saysResampled |= d.message.find("33^3 -> 16^3") != std::string::npos;
     EXPECT_TRUE(saysResampled);
 }
 
@@ -166,7 +192,8 @@ TEST(Nutexb, ReadsReferenceAsExactNeutral) {
 TEST(Nutexb, ReadsTiledLinearAndSrgbFromIndependentBuilder) {
     for (const char* name : {"graded4_tiled", "graded4_linear", "graded4_srgb"}) {
         SCOPED_TRACE(name);
-        const lut::LutFile f = lut::formats::readLut(dataPath(std::string("nutexb/") + name + ".nutexb"));
+        const lut::LutFile f =
+            lut::formats::readLut(dataPath(std::string("nutexb/") + name + ".nutexb"));
         ASSERT_TRUE(f.cube);
         ASSERT_EQ(f.cube->size(), 4);
         EXPECT_EQ(f.dialect, std::string(name) == "graded4_linear" ? "linear" : "tiled");
@@ -208,7 +235,8 @@ TEST(Nutexb, OtherSizesHaveTheDocumentedLength) {
     // Padding of the 8^3 volume is zero: only 2048 of 4096 data bytes carry texels (alpha 255).
     const std::string b8 = nx::writeBytes(lut::Lut3D::identity(8), "", true);
     int alpha = 0;
-    for (std::size_t i = 0; i < 4096; ++i) alpha += static_cast<unsigned char>(b8[i]) == 255;
+    for (std::size_t i = 0; i < 4096; ++i)
+        alpha += static_cast<unsigned char>(b8[i]) == 255;
     EXPECT_GE(alpha, 512);
     std::size_t nonzeroPad = 0;
     const auto g = nx::tileGeometry(8, 8, 8, 4);
@@ -216,9 +244,11 @@ TEST(Nutexb, OtherSizesHaveTheDocumentedLength) {
     for (int z = 0; z < 8; ++z)
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x)
-                for (int k = 0; k < 4; ++k) used[nx::tiledOffset(g, x, y, z) + k] = true;
+                for (int k = 0; k < 4; ++k)
+                    used[nx::tiledOffset(g, x, y, z) + k] = true;
     for (std::size_t i = 0; i < 4096; ++i)
-        if (!used[i] && b8[i] != 0) ++nonzeroPad;
+        if (!used[i] && b8[i] != 0)
+            ++nonzeroPad;
     EXPECT_EQ(nonzeroPad, 0u);
 }
 
@@ -237,7 +267,8 @@ TEST(Nutexb, SizeOptionLinearOptionAndRoundTripAnySize) {
             lut::FormatOptions o;
             o.size = n;
             o.tiled = tiled;
-            const std::string path = dir + "/x" + std::to_string(n) + (tiled ? "t" : "l") + ".nutexb";
+            const std::string path =
+                dir + "/x" + std::to_string(n) + (tiled ? "t" : "l") + ".nutexb";
             lut::formats::writeLut(path, f, o);
             const lut::LutFile back = lut::formats::readLut(path);
             ASSERT_TRUE(back.cube);
@@ -257,10 +288,12 @@ TEST(Nutexb, ClampsOutOfRangeAndSaysHowMany) {
     const std::string path = tempDir() + "/clamp.nutexb";
     const auto diags = lut::formats::writeLut(path, f);
     bool found = false;
-    for (const auto& d : diags) found |= d.message.find("4 channel values outside 0..1") != std::string::npos;
+    for (const auto& d : diags)
+        found |= d.message.find("4 channel values outside 0..1") != std::string::npos;
     EXPECT_TRUE(found);
     bool quantised = false;
-    for (const auto& d : diags) quantised |= d.message.find("quantised to 8 bits") != std::string::npos;
+    for (const auto& d : diags)
+        quantised |= d.message.find("quantised to 8 bits") != std::string::npos;
     EXPECT_FALSE(quantised) << "in-range values are exact 8-bit steps here";
     const lut::LutFile back = lut::formats::readLut(path);
     EXPECT_EQ(back.cube->at(0, 0, 0), glm::vec3(0.0f, 1.0f, 0.0f));
@@ -288,7 +321,8 @@ TEST(Nutexb, AlphaIgnoredWithDiagnostic) {
     const lut::LutFile f = nx::readBytes(bytes, "mem.nutexb");
     EXPECT_EQ(f.cube->at(0, 0, 0), glm::vec3(0.0f));
     bool found = false;
-    for (const auto& d : f.diagnostics) found |= d.message.find("2 texels have alpha") != std::string::npos;
+    for (const auto& d : f.diagnostics)
+        found |= d.message.find("2 texels have alpha") != std::string::npos;
     EXPECT_TRUE(found);
 }
 

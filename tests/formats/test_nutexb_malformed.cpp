@@ -30,7 +30,8 @@ TEST_P(NutexbMalformed, RefusedNamingFileFieldAndValues) {
     } catch (const lut::Error& e) {
         const std::string msg = e.what();
         EXPECT_NE(msg.find(path), std::string::npos) << msg;
-        for (const auto& s : c.expected) EXPECT_NE(msg.find(s), std::string::npos) << "missing '" << s << "' in: " << msg;
+        for (const auto& s : c.expected)
+            EXPECT_NE(msg.find(s), std::string::npos) << "missing '" << s << "' in: " << msg;
     }
 }
 
@@ -64,8 +65,11 @@ TEST(NutexbMalformedBytes, EveryTruncationOfAGoodFileIsRefused) {
     const std::string good = lut::formats::nutexb::writeBytes(lut::Lut3D::identity(4), "", true);
     for (std::size_t len = 0; len < good.size(); len += 37) {
         // Cut from the front (data lost) and from the back (footer lost).
-        EXPECT_THROW(lut::formats::nutexb::readBytes(std::string_view(good).substr(good.size() - len), "front"), lut::Error);
-        EXPECT_THROW(lut::formats::nutexb::readBytes(std::string_view(good).substr(0, len), "back"), lut::Error);
+        EXPECT_THROW(lut::formats::nutexb::readBytes(
+                         std::string_view(good).substr(good.size() - len), "front"),
+                     lut::Error);
+        EXPECT_THROW(lut::formats::nutexb::readBytes(std::string_view(good).substr(0, len), "back"),
+                     lut::Error);
     }
 }
 

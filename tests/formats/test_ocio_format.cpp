@@ -3,8 +3,8 @@
 #include "TestSupport.h"
 
 #include "lut/Error.h"
-#include "lut/io/Format.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/Format.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <gtest/gtest.h>
@@ -28,12 +28,15 @@ glm::vec3 grade(glm::vec3 x) {
 
 lut::Lut3D gradeLut(int n) {
     lut::Lut3D l = lut::Lut3D::identity(n);
-    for (auto& e : l.entries()) e = grade(e);
+    for (auto& e : l.entries())
+        e = grade(e);
     l.setTitle("ocio bridge test");
     return l;
 }
 
-glm::vec3 affine(glm::vec3 x) { return {0.1f + 0.8f * x.x, 0.2f + 0.1f * x.x + 0.5f * x.y, 0.9f - 0.7f * x.z}; }
+glm::vec3 affine(glm::vec3 x) {
+    return {0.1f + 0.8f * x.x, 0.2f + 0.1f * x.x + 0.5f * x.y, 0.9f - 0.7f * x.z};
+}
 
 // A fresh folder of our own: TestSupport's tempDir() clears the test's folder on every call.
 std::string workDir() {
@@ -46,7 +49,8 @@ std::string workDir() {
 double maxEntryDiff(const lut::Lut3D& a, const lut::Lut3D& b) {
     double m = 0;
     for (std::size_t i = 0; i < a.entryCount(); ++i)
-        for (int c = 0; c < 3; ++c) m = std::max(m, std::fabs(double(a.entries()[i][c]) - b.entries()[i][c]));
+        for (int c = 0; c < 3; ++c)
+            m = std::max(m, std::fabs(double(a.entries()[i][c]) - b.entries()[i][c]));
     return m;
 }
 
@@ -59,9 +63,15 @@ struct BakeCase {
 // .3dl stores 12-bit integers: rounding costs at most half a step, 0.5/4095. The text formats
 // print floats with enough digits to come back within float rounding of the value written.
 const BakeCase kBakeCases[] = {
-    {"flame", ".3dl", 0.5 / 4095 + 1e-6}, {"lustre", ".3dl", 0.5 / 4095 + 1e-6}, {"csp", ".csp", 2e-6},
-    {"clf", ".clf", 2e-6},                {"ctf", ".ctf", 2e-6},                 {"cub", ".cub", 2e-6},
-    {"itx", ".itx", 2e-6},                {"houdini", ".lut", 2e-6},               {"spi3d", ".spi3d", 0.0},
+    {"flame", ".3dl", 0.5 / 4095 + 1e-6},
+    {"lustre", ".3dl", 0.5 / 4095 + 1e-6},
+    {"csp", ".csp", 2e-6},
+    {"clf", ".clf", 2e-6},
+    {"ctf", ".ctf", 2e-6},
+    {"cub", ".cub", 2e-6},
+    {"itx", ".itx", 2e-6},
+    {"houdini", ".lut", 2e-6},
+    {"spi3d", ".spi3d", 0.0},
 };
 
 } // namespace
@@ -71,12 +81,15 @@ TEST(OcioFormat, ReaderClaimsEveryOcioExtensionButCube) {
     const lut::Format* f = lut::FormatRegistry::instance().byName("ocio");
     ASSERT_NE(f, nullptr);
     std::set<std::string> ours;
-    for (const auto& e : f->extensions()) ours.insert(e);
+    for (const auto& e : f->extensions())
+        ours.insert(e);
     std::set<std::string> theirs;
     for (int i = 0; i < OCIO::FileTransform::GetNumFormats(); ++i) {
         std::string e = std::string(".") + OCIO::FileTransform::GetFormatExtensionByIndex(i);
-        std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        if (e != ".cube") theirs.insert(e);
+        std::transform(e.begin(), e.end(), e.begin(),
+                       [](unsigned char c) { return char(std::tolower(c)); });
+        if (e != ".cube")
+            theirs.insert(e);
     }
     EXPECT_EQ(ours, theirs);
     EXPECT_EQ(ours.count(".cube"), 0u);
@@ -87,10 +100,12 @@ TEST(OcioFormat, EveryBakerFormatHasAWriter) {
     std::set<std::string> exts;
     for (const auto* f : lut::FormatRegistry::instance().all())
         if (f->canWrite())
-            for (const auto& e : f->extensions()) exts.insert(e);
+            for (const auto& e : f->extensions())
+                exts.insert(e);
     for (int i = 0; i < OCIO::Baker::getNumFormats(); ++i) {
         const std::string e = std::string(".") + OCIO::Baker::getFormatExtensionByIndex(i);
-        EXPECT_EQ(exts.count(e), 1u) << "no writer for " << OCIO::Baker::getFormatNameByIndex(i) << " " << e;
+        EXPECT_EQ(exts.count(e), 1u)
+            << "no writer for " << OCIO::Baker::getFormatNameByIndex(i) << " " << e;
     }
 }
 
@@ -122,7 +137,8 @@ TEST(OcioFormat, TinyThreeDlTablesAreUpsampledExactly) {
     const std::string path = workDir() + "/tiny.3dl";
     lut::LutFile file;
     file.cube = lut::Lut3D::identity(2);
-    for (auto& e : file.cube->entries()) e = affine(e);
+    for (auto& e : file.cube->entries())
+        e = affine(e);
     const auto diags = lut::formats::writeLut(path, file);
     EXPECT_FALSE(diags.empty());
     const lut::LutFile back = lut::formats::readLut(path);
@@ -131,7 +147,8 @@ TEST(OcioFormat, TinyThreeDlTablesAreUpsampledExactly) {
         for (int g = 0; g < 4; ++g)
             for (int r = 0; r < 4; ++r)
                 for (int c = 0; c < 3; ++c)
-                    EXPECT_NEAR(back.cube->at(r, g, b)[c], affine(glm::vec3(r, g, b) / 3.0f)[c], 0.5 / 4095 + 1e-6);
+                    EXPECT_NEAR(back.cube->at(r, g, b)[c], affine(glm::vec3(r, g, b) / 3.0f)[c],
+                                0.5 / 4095 + 1e-6);
 }
 
 TEST(OcioFormat, FlameStoresTwelveBitIntegers) {
@@ -155,11 +172,13 @@ TEST(OcioFormat, NonDefaultDomainIsResampledOverUnitInputs) {
     l.setDomain(glm::vec3(0.0f), glm::vec3(2.0f));
     for (int b = 0; b < 5; ++b)
         for (int g = 0; g < 5; ++g)
-            for (int r = 0; r < 5; ++r) l.at(r, g, b) = affine(l.latticeInput(r, g, b) * 0.5f);
+            for (int r = 0; r < 5; ++r)
+                l.at(r, g, b) = affine(l.latticeInput(r, g, b) * 0.5f);
     file.cube = l;
     const auto diags = lut::formats::writeLut(path, file, {}, "csp");
-    EXPECT_TRUE(std::any_of(diags.begin(), diags.end(),
-                            [](const lut::Diagnostic& d) { return d.message.find("domain") != std::string::npos; }));
+    EXPECT_TRUE(std::any_of(diags.begin(), diags.end(), [](const lut::Diagnostic& d) {
+        return d.message.find("domain") != std::string::npos;
+    }));
     const lut::LutFile back = lut::formats::readLut(path);
     ASSERT_TRUE(back.cube);
     // The file maps input x in [0,1] to affine(x / 2): the table over [0,2] evaluated there.
@@ -168,7 +187,8 @@ TEST(OcioFormat, NonDefaultDomainIsResampledOverUnitInputs) {
             for (int r = 0; r < 5; ++r) {
                 const glm::vec3 want = affine(glm::vec3(r, g, b) / 4.0f * 0.5f);
                 const glm::vec3 got = back.cube->at(r, g, b);
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-5) << r << g << b;
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(got[c], want[c], 1e-5) << r << g << b;
             }
 }
 
@@ -207,13 +227,15 @@ TEST_P(OcioHandWritten, ReadsTheValuesComputedHere) {
                     const glm::vec3 want = affine(glm::vec3(r, g, b) / float(n - 1));
                     const glm::vec3 got = f.cube->at(r, g, b);
                     for (int ch = 0; ch < 3; ++ch)
-                        ASSERT_NEAR(got[ch], want[ch], c.tolerance) << c.file << " n=" << n << " at " << r << g << b;
+                        ASSERT_NEAR(got[ch], want[ch], c.tolerance)
+                            << c.file << " n=" << n << " at " << r << g << b;
                 }
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, OcioHandWritten,
-                         ::testing::Values(HandCase{"affine.spi3d", 2, 2e-6}, HandCase{"affine.csp", 2, 2e-6},
+                         ::testing::Values(HandCase{"affine.spi3d", 2, 2e-6},
+                                           HandCase{"affine.csp", 2, 2e-6},
                                            HandCase{"affine.3dl", 5, 0.5 / 4095 + 1e-6}),
                          [](const auto& info) {
                              std::string s = info.param.file;
@@ -255,7 +277,8 @@ TEST(OcioFormat, OneDimensionalFilesStayOneDimensional) {
     EXPECT_FALSE(f.cube);
     ASSERT_EQ(f.shaper->size(), 5);
     for (int i = 0; i < 5; ++i)
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR((*f.shaper)[i][c], curve(i / 4.0f)[c], 2e-6) << i;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR((*f.shaper)[i][c], curve(i / 4.0f)[c], 2e-6) << i;
     // Asked for a lattice, it is one: each channel follows its own curve.
     lut::FormatOptions o;
     o.size = 5;

@@ -32,7 +32,8 @@ lut::Lut3D random8(int n, unsigned seed) {
     std::uniform_int_distribution<int> byte(0, 255);
     lut::Lut3D lut(n);
     for (auto& e : lut.entries())
-        e = glm::vec3(static_cast<float>(byte(rng)), static_cast<float>(byte(rng)), static_cast<float>(byte(rng))) /
+        e = glm::vec3(static_cast<float>(byte(rng)), static_cast<float>(byte(rng)),
+                      static_cast<float>(byte(rng))) /
             255.0f;
     return lut;
 }
@@ -53,7 +54,8 @@ TEST(RoundTripFormats, NeutralThroughEveryFormatKeepsItsEightBitValues) {
     for (int b = 0; b < 16; ++b)
         for (int g = 0; g < 16; ++g)
             for (int r = 0; r < 16; ++r)
-                ASSERT_EQ(end.cube->at(r, g, b), glm::vec3(17.0f * r, 17.0f * g, 17.0f * b) / 255.0f);
+                ASSERT_EQ(end.cube->at(r, g, b),
+                          glm::vec3(17.0f * r, 17.0f * g, 17.0f * b) / 255.0f);
     // And the nutexb in the middle is the reference file.
     const lut::LutFile mid = lut::formats::readLut(d + "/c.nutexb");
     EXPECT_EQ(mid.cube->entries(), end.cube->entries());
@@ -71,12 +73,15 @@ TEST(RoundTripFormats, AnyEightBitLutIsBitExactThroughNutexbPngCube) {
             o.size = n;
             lut::formats::writeLut(d + "/s.nutexb", f, o);
             // nutexb -> png -> cube -> nutexb -> cube -> png
-            EXPECT_EQ(convert(d + "/s.nutexb", d + "/1.png", layout).cube->entries(), lut.entries());
-            EXPECT_EQ(convert(d + "/1.png", d + "/2.cube", {}, layout).cube->entries(), lut.entries());
+            EXPECT_EQ(convert(d + "/s.nutexb", d + "/1.png", layout).cube->entries(),
+                      lut.entries());
+            EXPECT_EQ(convert(d + "/1.png", d + "/2.cube", {}, layout).cube->entries(),
+                      lut.entries());
             EXPECT_EQ(convert(d + "/2.cube", d + "/3.nutexb").cube->entries(), lut.entries());
             EXPECT_EQ(convert(d + "/3.nutexb", d + "/4.cube").cube->entries(), lut.entries());
             EXPECT_EQ(convert(d + "/4.cube", d + "/5.png", layout).cube->entries(), lut.entries());
-            EXPECT_EQ(convert(d + "/5.png", d + "/6.nutexb", {}, layout).cube->entries(), lut.entries());
+            EXPECT_EQ(convert(d + "/5.png", d + "/6.nutexb", {}, layout).cube->entries(),
+                      lut.entries());
         }
     }
 }
@@ -87,7 +92,8 @@ TEST(RoundTripFormats, SixteenBitAndFloatImagesThroughCubeExact) {
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> word(0, 65535);
     for (auto& e : lut.entries())
-        e = glm::vec3(static_cast<float>(word(rng)), static_cast<float>(word(rng)), static_cast<float>(word(rng))) /
+        e = glm::vec3(static_cast<float>(word(rng)), static_cast<float>(word(rng)),
+                      static_cast<float>(word(rng))) /
             65535.0f;
     lut::LutFile f;
     f.cube = lut;

@@ -1,10 +1,10 @@
 // LUT images: pixel positions of each layout checked against hand-computed places in the file
 // (read back with OpenImageIO directly, not with our reader), exact 8/16-bit/float round trips,
 // any N, bit depths, clamping and quantisation diagnostics, dither, Hald through the strip format.
-#include "lut/io/Layout.h"
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/Layout.h"
 
 #include "TestSupport.h"
 
@@ -22,7 +22,9 @@ struct Raw {
     int w = 0, h = 0, ch = 0;
     OIIO::TypeDesc type;
     std::vector<float> px; // as float in the file's own units (0..255, 0..65535 or float)
-    float at(int x, int y, int c) const { return px[(static_cast<std::size_t>(y) * w + x) * ch + c]; }
+    float at(int x, int y, int c) const {
+        return px[(static_cast<std::size_t>(y) * w + x) * ch + c];
+    }
 };
 
 Raw rawRead(const std::string& path) {
@@ -35,9 +37,12 @@ Raw rawRead(const std::string& path) {
     r.type = in->spec().format;
     std::vector<float> buf(static_cast<std::size_t>(r.w) * r.h * r.ch);
     in->read_image(0, 0, 0, r.ch, OIIO::TypeDesc::FLOAT, buf.data());
-    const double scale = r.type == OIIO::TypeDesc::UINT8 ? 255.0 : r.type == OIIO::TypeDesc::UINT16 ? 65535.0 : 1.0;
+    const double scale = r.type == OIIO::TypeDesc::UINT8    ? 255.0
+                         : r.type == OIIO::TypeDesc::UINT16 ? 65535.0
+                                                            : 1.0;
     if (scale > 1.0)
-        for (auto& v : buf) v = static_cast<float>(std::round(v * scale));
+        for (auto& v : buf)
+            v = static_cast<float>(std::round(v * scale));
     r.px = std::move(buf);
     return r;
 }
@@ -48,9 +53,10 @@ lut::Lut3D graded8(int n) {
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r)
-                lut.at(r, g, b) = glm::vec3(static_cast<float>((r * 37 + g * 11 + b * 5) % 256) / 255.0f,
-                                            static_cast<float>((r * 3 + g * 71 + b * 13) % 256) / 255.0f,
-                                            static_cast<float>((r * 7 + g * 17 + b * 101) % 256) / 255.0f);
+                lut.at(r, g, b) =
+                    glm::vec3(static_cast<float>((r * 37 + g * 11 + b * 5) % 256) / 255.0f,
+                              static_cast<float>((r * 3 + g * 71 + b * 13) % 256) / 255.0f,
+                              static_cast<float>((r * 7 + g * 17 + b * 101) % 256) / 255.0f);
     return lut;
 }
 
@@ -60,8 +66,8 @@ lut::LutFile fileOf(const lut::Lut3D& l) {
     return f;
 }
 
-lut::Diagnostics write(const std::string& path, const lut::Lut3D& l, const std::string& layout, int bits = 0,
-                       const std::string& format = {}) {
+lut::Diagnostics write(const std::string& path, const lut::Lut3D& l, const std::string& layout,
+                       int bits = 0, const std::string& format = {}) {
     lut::FormatOptions o;
     o.layout = layout;
     o.bitDepth = bits;
@@ -76,7 +82,8 @@ lut::LutFile read(const std::string& path, const std::string& layout = {}) {
 
 bool hasMessage(const lut::Diagnostics& d, const std::string& s) {
     for (const auto& x : d)
-        if (x.message.find(s) != std::string::npos) return true;
+        if (x.message.find(s) != std::string::npos)
+            return true;
     return false;
 }
 
@@ -114,16 +121,17 @@ TEST(StripLayouts, HandComputedPixelPositions) {
     const Raw h = rawRead(dir + "/h.png");
     EXPECT_EQ(h.w, 64);
     EXPECT_EQ(h.h, 64);
-    // Pilot: green 0 on the top row, red to the right: pixel (15, 0) is entry (15, 0, 0) = 255, 0, 0.
+    // Pilot: green 0 on the top row, red to the right: pixel (15, 0) is entry (15, 0, 0),
+    // stored as (255, 0, 0).
     const Raw p = rawRead(dir + "/p.png");
     EXPECT_EQ(p.w, 256);
     EXPECT_EQ(p.h, 16);
     EXPECT_EQ(p.at(15, 0, 0), 255.0f);
     EXPECT_EQ(p.at(15, 0, 1), 0.0f);
-    EXPECT_EQ(p.at(0, 15, 1), 255.0f);   // green 15 on the bottom row
+    EXPECT_EQ(p.at(0, 15, 1), 255.0f);      // green 15 on the bottom row
     EXPECT_EQ(p.at(16 * 15, 0, 2), 255.0f); // blue 15 in the last tile
     const Raw u = rawRead(dir + "/un.png");
-    EXPECT_EQ(u.at(0, 0, 1), 255.0f);     // unity: green 15 on the top row
+    EXPECT_EQ(u.at(0, 0, 1), 255.0f); // unity: green 15 on the top row
 }
 
 TEST(StripLayouts, ReadsEachLayoutBackAtTheMarkedEntry) {
@@ -149,7 +157,8 @@ TEST(StripRoundTrip, EightBitExactAnySizeAndLayout) {
             const std::string path = dir + "/g" + std::to_string(n) + layout + ".png";
             const lut::Lut3D lut = graded8(n);
             const auto diags = write(path, lut, layout);
-            EXPECT_FALSE(hasMessage(diags, "quantised")) << "8-bit values must not be reported as quantised";
+            EXPECT_FALSE(hasMessage(diags, "quantised"))
+                << "8-bit values must not be reported as quantised";
             const lut::LutFile back = read(path, layout);
             ASSERT_EQ(back.cube->size(), n);
             EXPECT_EQ(back.cube->entries(), lut.entries());
@@ -162,9 +171,10 @@ TEST(StripRoundTrip, SixteenBitPngAndTiffExact) {
     const std::string dir = tempDir();
     lut::Lut3D lut(9);
     for (std::size_t i = 0; i < lut.entryCount(); ++i)
-        lut.entries()[i] = glm::vec3(lut::fromUnorm16(static_cast<std::uint16_t>((i * 2741) % 65536)),
-                                     lut::fromUnorm16(static_cast<std::uint16_t>((i * 911 + 5) % 65536)),
-                                     lut::fromUnorm16(static_cast<std::uint16_t>((i * 40503 + 1) % 65536)));
+        lut.entries()[i] =
+            glm::vec3(lut::fromUnorm16(static_cast<std::uint16_t>((i * 2741) % 65536)),
+                      lut::fromUnorm16(static_cast<std::uint16_t>((i * 911 + 5) % 65536)),
+                      lut::fromUnorm16(static_cast<std::uint16_t>((i * 40503 + 1) % 65536)));
     for (const char* ext : {".png", ".tif", ".tiff"}) {
         SCOPED_TRACE(ext);
         const std::string path = dir + "/s16" + ext;
@@ -233,7 +243,8 @@ TEST(StripWrite, DitherStaysWithinOneStepAndKeepsExactValues) {
             differsFromRounding += got != lut::fromUnorm8(lut::toUnorm8(v));
         }
     EXPECT_GT(differsFromRounding, 0) << "dither changed nothing";
-    EXPECT_EQ(back.cube->at(0, 0, 0), glm::vec3(0.0f, 1.0f, 128 / 255.0f)) << "exact steps must survive dither";
+    EXPECT_EQ(back.cube->at(0, 0, 0), glm::vec3(0.0f, 1.0f, 128 / 255.0f))
+        << "exact steps must survive dither";
 }
 
 TEST(StripRead, WrongSizesAreRefusedNamingWhatFits) {
@@ -287,7 +298,8 @@ TEST(Hald, WritesNextSquareAndReadsBackBySizeAlone) {
     // The hald format refuses another layout.
     lut::FormatOptions smush;
     smush.layout = "smush";
-    EXPECT_THROW(lut::formats::writeLut(dir + "/x.png", fileOf(graded8(4)), smush, "hald"), lut::Error);
+    EXPECT_THROW(lut::formats::writeLut(dir + "/x.png", fileOf(graded8(4)), smush, "hald"),
+                 lut::Error);
 }
 
 TEST(StripWrite, ShaperAndDomainAreBakedWithDiagnostics) {
@@ -296,7 +308,8 @@ TEST(StripWrite, ShaperAndDomainAreBakedWithDiagnostics) {
     lut.setDomain(glm::vec3(0.0f), glm::vec3(2.0f)); // identity over 0..2: on 0..1 still identity
     for (int b = 0; b < 5; ++b)
         for (int g = 0; g < 5; ++g)
-            for (int r = 0; r < 5; ++r) lut.at(r, g, b) = lut.latticeInput(r, g, b);
+            for (int r = 0; r < 5; ++r)
+                lut.at(r, g, b) = lut.latticeInput(r, g, b);
     const auto diags = write(dir + "/d.exr", lut, "pilot");
     EXPECT_TRUE(hasMessage(diags, "re-sampled onto 0..1"));
     const lut::LutFile back = read(dir + "/d.exr", "pilot");

@@ -29,7 +29,8 @@ void write(const std::string& path, const lut::Lut3D& l, const std::string& layo
 
 const lut::Diagnostic* find(const lut::Diagnostics& d, const std::string& s) {
     for (const auto& x : d)
-        if (x.message.find(s) != std::string::npos) return &x;
+        if (x.message.find(s) != std::string::npos)
+            return &x;
     return nullptr;
 }
 
@@ -62,7 +63,8 @@ TEST(StripDetect, NeutralInEachLayoutIsFoundAndSaid) {
             const lut::LutFile f = lut::formats::readLut(path);
             EXPECT_EQ(f.dialect, layout);
             EXPECT_LE(f.cube->maxDeviationFromIdentity(), 0.5f / 255.0f + 1e-6f);
-            const lut::Diagnostic* d = find(f.diagnostics, std::string("layout detected: ") + layout);
+            const lut::Diagnostic* d =
+                find(f.diagnostics, std::string("layout detected: ") + layout);
             ASSERT_NE(d, nullptr);
             EXPECT_EQ(d->severity, lut::Diagnostic::Severity::Info);
         }
@@ -109,7 +111,8 @@ TEST(StripDetect, AmbiguousAndNotPilotLikeIsRefusedNamingLayouts) {
     lut::Lut3D odd(16);
     for (int b = 0; b < 16; ++b)
         for (int g = 0; g < 16; ++g)
-            for (int r = 0; r < 16; ++r) odd.at(r, g, b) = glm::vec3(r / 15.0f, (15 - g) / 15.0f, 0.5f);
+            for (int r = 0; r < 16; ++r)
+                odd.at(r, g, b) = glm::vec3(r / 15.0f, (15 - g) / 15.0f, 0.5f);
     write(dir + "/odd.png", odd, "pilot");
     try {
         (void)lut::formats::readLut(dir + "/odd.png");
@@ -123,5 +126,6 @@ TEST(StripDetect, AmbiguousAndNotPilotLikeIsRefusedNamingLayouts) {
     // Given the layout, it reads.
     lut::FormatOptions o;
     o.layout = "pilot";
-    EXPECT_EQ(lut::formats::readLut(dir + "/odd.png", o).cube->at(3, 4, 5), glm::vec3(3 / 15.0f, 11 / 15.0f, 128 / 255.0f));
+    EXPECT_EQ(lut::formats::readLut(dir + "/odd.png", o).cube->at(3, 4, 5),
+              glm::vec3(3 / 15.0f, 11 / 15.0f, 128 / 255.0f));
 }

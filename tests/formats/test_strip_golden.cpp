@@ -17,7 +17,8 @@ glm::vec3 gradedExpected(int r, int g, int b, float max) {
                      static_cast<float>((r * 7 + g * 17 + b * 101) % m) / max);
 }
 
-lut::LutFile read(const std::string& name, const std::string& layout = {}, const std::string& format = {}) {
+lut::LutFile read(const std::string& name, const std::string& layout = {},
+                  const std::string& format = {}) {
     lut::FormatOptions o;
     o.layout = layout;
     return lut::formats::readLut(dataPath(name), o, format);
@@ -35,7 +36,8 @@ TEST(StripGolden, NeutralInEachLayoutAutoDetected) {
         for (int b = 0; b < 4; ++b)
             for (int g = 0; g < 4; ++g)
                 for (int r = 0; r < 4; ++r)
-                    ASSERT_EQ(f.cube->at(r, g, b), glm::vec3(85.0f * r, 85.0f * g, 85.0f * b) / 255.0f);
+                    ASSERT_EQ(f.cube->at(r, g, b),
+                              glm::vec3(85.0f * r, 85.0f * g, 85.0f * b) / 255.0f);
     }
 }
 
@@ -51,7 +53,8 @@ TEST(StripGolden, GradedRgba8SmushAndSixteenBitUnity) {
     ASSERT_EQ(f.cube->size(), 5);
     for (int b = 0; b < 5; ++b)
         for (int g = 0; g < 5; ++g)
-            for (int r = 0; r < 5; ++r) ASSERT_EQ(f.cube->at(r, g, b), gradedExpected(r, g, b, 255.0f));
+            for (int r = 0; r < 5; ++r)
+                ASSERT_EQ(f.cube->at(r, g, b), gradedExpected(r, g, b, 255.0f));
     f = read("strip/graded3_unity16.png", "unity");
     EXPECT_EQ(f.sourceBitDepth, 16);
     ASSERT_EQ(f.cube->size(), 3);
@@ -75,7 +78,8 @@ TEST(HaldGolden, ReadsLevel2And3BySizeAndByFormatName) {
     ASSERT_EQ(f.cube->size(), 9);
     for (int b = 0; b < 9; ++b)
         for (int g = 0; g < 9; ++g)
-            for (int r = 0; r < 9; ++r) ASSERT_EQ(f.cube->at(r, g, b), gradedExpected(r, g, b, 255.0f));
+            for (int r = 0; r < 9; ++r)
+                ASSERT_EQ(f.cube->at(r, g, b), gradedExpected(r, g, b, 255.0f));
     // A strip is not a Hald image.
     EXPECT_THROW(read("strip/neutral4_pilot.png", "", "hald"), lut::Error);
 }

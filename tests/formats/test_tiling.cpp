@@ -32,7 +32,8 @@ TEST(Tiling, GobSwizzleMatchesSpecExamples) {
     // Every byte of a GOB lands on a distinct place in 0..511.
     std::set<std::uint32_t> seen;
     for (std::uint32_t y = 0; y < 8; ++y)
-        for (std::uint32_t x = 0; x < 64; ++x) seen.insert(nx::gobOffset(x, y));
+        for (std::uint32_t x = 0; x < 64; ++x)
+            seen.insert(nx::gobOffset(x, y));
     EXPECT_EQ(seen.size(), 512u);
     EXPECT_EQ(*seen.rbegin(), 511u);
 }
@@ -52,8 +53,9 @@ TEST(Tiling, General3DMatches16CubedClosedForm) {
     for (int b = 0; b < 16; ++b)
         for (int gg = 0; gg < 16; ++gg)
             for (int r = 0; r < 16; ++r) {
-                const std::uint64_t expected = 8192 * (gg >> 3) + 512 * b + 256 * (r >> 3) + 64 * ((gg >> 1) & 3) +
-                                               32 * ((r >> 2) & 1) + 16 * (gg & 1) + 4 * (r & 3);
+                const std::uint64_t expected = 8192 * (gg >> 3) + 512 * b + 256 * (r >> 3) +
+                                               64 * ((gg >> 1) & 3) + 32 * ((r >> 2) & 1) +
+                                               16 * (gg & 1) + 4 * (r & 3);
                 ASSERT_EQ(nx::tiledOffset(g, r, gg, b), expected) << r << "," << gg << "," << b;
             }
 }
@@ -81,11 +83,13 @@ TEST_P(TilingSizes, BijectiveRoundTripZeroPadding) {
     const auto g = nx::tileGeometry(w, h, d, bpp);
     const std::size_t n = static_cast<std::size_t>(w) * h * d * bpp;
     std::vector<std::uint8_t> linear(n);
-    for (std::size_t i = 0; i < n; ++i) linear[i] = static_cast<std::uint8_t>(1 + (i * 7919) % 251); // never 0
+    for (std::size_t i = 0; i < n; ++i)
+        linear[i] = static_cast<std::uint8_t>(1 + (i * 7919) % 251); // never 0
     const auto tiled = nx::tile(g, linear.data());
     ASSERT_EQ(tiled.size(), nx::tiledSize(g));
     std::size_t nonZero = 0;
-    for (auto v : tiled) nonZero += v != 0;
+    for (auto v : tiled)
+        nonZero += v != 0;
     EXPECT_EQ(nonZero, n) << "each texel byte placed once, padding zero";
     EXPECT_EQ(nx::untile(g, tiled.data()), linear);
     if (16 % bpp == 0) {
@@ -99,9 +103,10 @@ TEST_P(TilingSizes, BijectiveRoundTripZeroPadding) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Sizes, TilingSizes,
-                         ::testing::Values(std::make_tuple(16, 16, 16, 4), std::make_tuple(2, 2, 2, 4),
-                                           std::make_tuple(3, 3, 3, 4), std::make_tuple(8, 8, 8, 4),
-                                           std::make_tuple(17, 17, 17, 4), std::make_tuple(33, 33, 33, 4),
-                                           std::make_tuple(20, 9, 5, 4), std::make_tuple(70, 3, 1, 1),
-                                           std::make_tuple(13, 11, 7, 3), std::make_tuple(9, 17, 6, 16)));
+INSTANTIATE_TEST_SUITE_P(
+    Sizes, TilingSizes,
+    ::testing::Values(std::make_tuple(16, 16, 16, 4), std::make_tuple(2, 2, 2, 4),
+                      std::make_tuple(3, 3, 3, 4), std::make_tuple(8, 8, 8, 4),
+                      std::make_tuple(17, 17, 17, 4), std::make_tuple(33, 33, 33, 4),
+                      std::make_tuple(20, 9, 5, 4), std::make_tuple(70, 3, 1, 1),
+                      std::make_tuple(13, 11, 7, 3), std::make_tuple(9, 17, 6, 16)));

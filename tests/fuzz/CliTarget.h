@@ -26,7 +26,9 @@ inline void check(bool ok, const char* what) {
         std::abort();
     }
 }
-inline void checkSize(int size) { check(size == 0 || (size >= 2 && size <= 256), "--size outside 2..256"); }
+inline void checkSize(int size) {
+    check(size == 0 || (size >= 2 && size <= 256), "--size outside 2..256");
+}
 inline void checkBitDepth(int bits) {
     check(bits == 0 || bits == 8 || bits == 16 || bits == 32, "--bit-depth not 8/16/32");
 }
@@ -39,7 +41,9 @@ inline void checkInterp(const std::string& name) {
 }
 
 inline int g_exitCode = 0;
-template <class Fn> void guarded(Fn&& fn) { g_exitCode = fn(); }
+template <class Fn> void guarded(Fn&& fn) {
+    g_exitCode = fn();
+}
 
 } // namespace lut::fuzz::cli_stub
 
@@ -73,31 +77,45 @@ int lut::cli::runInfo(const InfoOptions& o) {
 
 #if __has_include("../../cli/setup_validate.inc")
 #include "../../cli/setup_validate.inc"
-int lut::cli::runValidate(const ValidateOptions&) { return 0; }
+int lut::cli::runValidate(const ValidateOptions&) {
+    return 0;
+}
 #endif
 #if __has_include("../../cli/setup_apply.inc")
 #include "../../cli/setup_apply.inc"
-int lut::cli::runApply(const ApplyOptions&) { return 0; }
+int lut::cli::runApply(const ApplyOptions&) {
+    return 0;
+}
 #endif
 #if __has_include("../../cli/setup_preview.inc")
 #include "../../cli/setup_preview.inc"
-int lut::cli::runPreview(const PreviewOptions&) { return 0; }
+int lut::cli::runPreview(const PreviewOptions&) {
+    return 0;
+}
 #endif
 #if __has_include("../../cli/setup_embed.inc")
 #include "../../cli/setup_embed.inc"
-int lut::cli::runEmbed(const EmbedOptions&) { return 0; }
+int lut::cli::runEmbed(const EmbedOptions&) {
+    return 0;
+}
 #endif
 #if __has_include("../../cli/setup_extract.inc")
 #include "../../cli/setup_extract.inc"
-int lut::cli::runExtract(const ExtractOptions&) { return 0; }
+int lut::cli::runExtract(const ExtractOptions&) {
+    return 0;
+}
 #endif
 #if __has_include("../../cli/setup_fit.inc")
 #include "../../cli/setup_fit.inc"
-int lut::cli::runFit(const FitOptions&) { return 0; }
+int lut::cli::runFit(const FitOptions&) {
+    return 0;
+}
 #endif
 #if __has_include("../../cli/setup_bench.inc")
 #include "../../cli/setup_bench.inc"
-int lut::cli::runBench(const BenchOptions&) { return 0; }
+int lut::cli::runBench(const BenchOptions&) {
+    return 0;
+}
 #endif
 
 namespace lut::fuzz {
@@ -115,10 +133,13 @@ inline bool runCliArgs(const std::uint8_t* data, std::size_t size) {
             cur += c;
         }
     }
-    if (!cur.empty()) args.push_back(cur);
-    if (args.size() > 64) return false;
+    if (!cur.empty())
+        args.push_back(cur);
+    if (args.size() > 64)
+        return false;
     std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
+    for (auto& a : args)
+        argv.push_back(a.data());
 
     CLI::App app{"lutkit", "lutkit"};
     app.require_subcommand(1);

@@ -7,13 +7,13 @@
 // lut::Error. Any other exception escapes (the fuzzer reports it as a crash, the replay test as a
 // failure); a malformed result trips invariant(), which traps.
 #include "lut/Error.h"
-#include "lut/io/Format.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Limits.h"
 #include "lut/LutFile.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/Interpolation.h"
+#include "lut/io/Format.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -54,7 +54,8 @@ inline const std::filesystem::path& scratchDir() {
     return dir;
 }
 
-inline std::string writeScratch(const std::string& name, const std::uint8_t* data, std::size_t size) {
+inline std::string writeScratch(const std::string& name, const std::uint8_t* data,
+                                std::size_t size) {
     const std::string path = (scratchDir() / name).string();
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
@@ -71,7 +72,8 @@ inline void checkLutFile(const LutFile& f) {
                   "3D entry count differs from size^3");
         const auto lo = f.cube->domainMin(), hi = f.cube->domainMax();
         for (int c = 0; c < 3; ++c)
-            invariant(std::isfinite(lo[c]) && std::isfinite(hi[c]) && lo[c] < hi[c], "bad 3D domain");
+            invariant(std::isfinite(lo[c]) && std::isfinite(hi[c]) && lo[c] < hi[c],
+                      "bad 3D domain");
     }
     if (f.shaper) {
         const int n = f.shaper->size();
@@ -112,7 +114,8 @@ inline Outcome runCube(const std::uint8_t* data, std::size_t size) {
         // What we accept we must be able to write, and read back.
         const LutFile f = formats::parseCube(text, "fuzz.cube");
         const std::string again = formats::writeCubeString(f);
-        invariant(checkedCall([&] { return formats::parseCube(again, "again.cube"); }) == Outcome::Accepted,
+        invariant(checkedCall([&] { return formats::parseCube(again, "again.cube"); }) ==
+                      Outcome::Accepted,
                   "a .cube file we wrote does not read back");
     }
     return o;
@@ -151,21 +154,35 @@ struct ImageSpecFromBytes {
 };
 
 inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
-    if (size < 5) return Outcome::Refused;
+    if (size < 5)
+        return Outcome::Refused;
     FormatOptions options;
     if (data[0] & 0x80) {
         options.layout = hald ? "hald" : "";
-        return readChecked(writeScratch(hald ? "raw-hald.png" : "raw-strip.png", data + 1, size - 1),
-                           options);
+        return readChecked(
+            writeScratch(hald ? "raw-hald.png" : "raw-strip.png", data + 1, size - 1), options);
     }
-    static const char* const kLayouts[] = {"pilot", "unity", "smush", "unreal", "godot", "lattice", "", "hald"};
+    static const char* const kLayouts[] = {"pilot", "unity",   "smush", "unreal",
+                                           "godot", "lattice", "",      "hald"};
     ImageSpecFromBytes s;
     s.layout = hald ? "hald" : kLayouts[data[0] & 7];
     switch ((data[0] >> 3) & 3) {
-    case 0: s.ext = ".png"; s.type = OIIO::TypeDesc::UINT8; break;
-    case 1: s.ext = ".png"; s.type = OIIO::TypeDesc::UINT16; break;
-    case 2: s.ext = ".tif"; s.type = OIIO::TypeDesc::UINT16; break;
-    default: s.ext = ".exr"; s.type = OIIO::TypeDesc::FLOAT; break;
+    case 0:
+        s.ext = ".png";
+        s.type = OIIO::TypeDesc::UINT8;
+        break;
+    case 1:
+        s.ext = ".png";
+        s.type = OIIO::TypeDesc::UINT16;
+        break;
+    case 2:
+        s.ext = ".tif";
+        s.type = OIIO::TypeDesc::UINT16;
+        break;
+    default:
+        s.ext = ".exr";
+        s.type = OIIO::TypeDesc::FLOAT;
+        break;
     }
     if (s.layout == "hald") {
         const int level = 2 + data[1] % 3; // 2..4: up to 64x64, N = 16
@@ -189,21 +206,28 @@ inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
     const std::size_t total = static_cast<std::size_t>(s.width) * s.height * s.channels * bytesPer;
     std::vector<std::uint8_t> pixels(total, 0);
     if (pxSize > 0)
-        for (std::size_t i = 0; i < total; ++i) pixels[i] = px[i % pxSize];
+        for (std::size_t i = 0; i < total; ++i)
+            pixels[i] = px[i % pxSize];
 
     const std::string path = (scratchDir() / ((hald ? "hald" : "strip") + s.ext)).string();
     {
         auto out = OIIO::ImageOutput::create(path);
-        if (!out) return Outcome::Refused;
+        if (!out)
+            return Outcome::Refused;
         OIIO::ImageSpec spec(s.width, s.height, s.channels, s.type);
-        if (!out->open(path, spec) || !out->write_image(s.type, pixels.data())) return Outcome::Refused;
+        if (!out->open(path, spec) || !out->write_image(s.type, pixels.data()))
+            return Outcome::Refused;
         out->close();
     }
     return readChecked(path, options);
 }
 
-inline Outcome runStrip(const std::uint8_t* data, std::size_t size) { return runImage(data, size, false); }
-inline Outcome runHald(const std::uint8_t* data, std::size_t size) { return runImage(data, size, true); }
+inline Outcome runStrip(const std::uint8_t* data, std::size_t size) {
+    return runImage(data, size, false);
+}
+inline Outcome runHald(const std::uint8_t* data, std::size_t size) {
+    return runImage(data, size, true);
+}
 
 // Parse helpers the CLI uses for user-typed words and numbers. The bytes are one argument.
 inline Outcome runCliWords(const std::uint8_t* data, std::size_t size) {

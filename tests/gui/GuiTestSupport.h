@@ -21,7 +21,8 @@ inline double exposureRef(double e, double stops) {
 
 // Largest |a - b| over every channel of two LUTs of the same size (infinity if sizes differ).
 inline double maxDiff(const Lut3D& a, const Lut3D& b) {
-    if (a.size() != b.size()) return INFINITY;
+    if (a.size() != b.size())
+        return INFINITY;
     double m = 0;
     for (std::size_t i = 0; i < a.entryCount(); ++i)
         for (int c = 0; c < 3; ++c)

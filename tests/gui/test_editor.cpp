@@ -17,13 +17,13 @@
 #include "lut/formats/Registry.h"
 
 #include <QAbstractButton>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
-#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMimeData>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QProcess>
 #include <QSlider>
 #include <QStandardPaths>
@@ -45,7 +45,8 @@ namespace {
 void dragSlider(QSlider* s, int position) {
     s->setSliderDown(true);
     const int start = s->value();
-    for (int i = 1; i <= 4; ++i) s->setValue(start + (position - start) * i / 4);
+    for (int i = 1; i <= 4; ++i)
+        s->setValue(start + (position - start) * i / 4);
     s->setSliderDown(false);
 }
 
@@ -60,8 +61,10 @@ double processCpuMs() {
 bool runsOk(const QString& program, const QStringList& args, QString* err = nullptr) {
     QProcess p;
     p.start(program, args);
-    if (!p.waitForFinished(120000)) return false;
-    if (err) *err = QString::fromLocal8Bit(p.readAllStandardError());
+    if (!p.waitForFinished(120000))
+        return false;
+    if (err)
+        *err = QString::fromLocal8Bit(p.readAllStandardError());
     return p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
 }
 
@@ -86,7 +89,8 @@ private slots:
         QVERIFY(frame);
         QCOMPARE(frame->proxyFactor, 1);
         const Image want = renderPreview(*w.document()->sceneImage(), w.previewOptions(),
-                                         w.document()->effectiveLutShared()).image;
+                                         w.document()->effectiveLutShared())
+                               .image;
         QVERIFY(frame->image.pixels() == want.pixels());
         // The displayed 8-bit image is the same pixels through toUnorm8.
         QCOMPARE(qRed(frame->display.pixel(10, 20)), int(toUnorm8(want.pixel(10, 20)[0])));
@@ -100,7 +104,8 @@ private slots:
         mime.setUrls({QUrl::fromLocalFile(samplePath("sample_grade.cube")),
                       QUrl::fromLocalFile(samplePath("sample_scene.exr"))});
         // As a drag manager does: enter (the window accepts files), then drop.
-        QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &mime, Qt::LeftButton,
+                              Qt::NoModifier);
         QApplication::sendEvent(&w, &enter);
         QVERIFY(enter.isAccepted());
         QDropEvent drop(QPointF(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
@@ -122,11 +127,13 @@ private slots:
             format->setCurrentIndex(i);
             const ExportChoice c = dlg.choice();
             QVERIFY(path->text().endsWith(c.extension));
-            if (!c.layout.isEmpty()) layouts << c.layout;
+            if (!c.layout.isEmpty())
+                layouts << c.layout;
             QCOMPARE(dlg.smashCompensate(), c.format == QLatin1String("nutexb"));
             QCOMPARE(QString::fromStdString(dlg.options().layout), c.layout);
         }
-        for (const char* l : {"pilot", "unity", "smush"}) QVERIFY2(layouts.contains(QLatin1String(l)), l);
+        for (const char* l : {"pilot", "unity", "smush"})
+            QVERIFY2(layouts.contains(QLatin1String(l)), l);
     }
 
     void pixelReadoutShowsInputAndOutput() {
@@ -149,7 +156,8 @@ private slots:
         const float* in = w.document()->storedImage()->pixel(100, 50);
         const float* out = w.currentFrame()->image.pixel(100, 50);
         QVERIFY2(text.contains(QString::number(double(in[0]), 'f', 4)), qPrintable(text));
-        QVERIFY2(text.contains(QStringLiteral("out ") + QString::number(double(out[0]), 'f', 4)), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("out ") + QString::number(double(out[0]), 'f', 4)),
+                 qPrintable(text));
     }
 
     void screenshotAt100PercentHoldsThePreviewPixels() {
@@ -167,12 +175,14 @@ private slots:
         v->zoomTo(1.0);
         const QImage grab = w.grab().toImage().convertToFormat(QImage::Format_RGBX8888);
         const QImage& want = w.currentFrame()->display;
-        const QPoint origin = v->mapTo(&w, QPoint(int(std::round((v->width() - want.width()) / 2.0)),
-                                                  int(std::round((v->height() - want.height()) / 2.0))));
+        const QPoint origin =
+            v->mapTo(&w, QPoint(int(std::round((v->width() - want.width()) / 2.0)),
+                                int(std::round((v->height() - want.height()) / 2.0))));
         int mismatches = 0;
         for (int y = 0; y < want.height(); ++y)
             for (int x = 0; x < want.width(); ++x)
-                mismatches += (grab.pixel(origin + QPoint(x, y)) & 0xffffff) != (want.pixel(x, y) & 0xffffff);
+                mismatches +=
+                    (grab.pixel(origin + QPoint(x, y)) & 0xffffff) != (want.pixel(x, y) & 0xffffff);
         QCOMPARE(mismatches, 0);
     }
 
@@ -223,19 +233,22 @@ private slots:
 
         const QString out = dir.filePath("edited.cube");
         QVERIFY(w.exportLut(out, QStringLiteral("cube"), {}, false));
-        const Lut3D base = formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D();
+        const Lut3D base =
+            formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D();
         const Lut3D back = formats::readLut(out.toStdString()).toLut3D();
         QCOMPARE(back.size(), base.size());
         double worst = 0;
         for (std::size_t i = 0; i < base.entryCount(); ++i)
             for (int c = 0; c < 3; ++c)
-                worst = std::max(worst, std::abs(double(back.entries()[i][c]) - exposureRef(base.entries()[i][c], stops)));
+                worst = std::max(worst, std::abs(double(back.entries()[i][c]) -
+                                                 exposureRef(base.entries()[i][c], stops)));
         QVERIFY2(worst < 2e-5, qPrintable(QString::number(worst)));
 
         // Undo through the window's action: slider, spin box, document and title follow.
         QAction* undo = nullptr;
         for (QAction* a : w.findChildren<QAction*>())
-            if (a->shortcut() == QKeySequence(QKeySequence::Undo)) undo = a;
+            if (a->shortcut() == QKeySequence(QKeySequence::Undo))
+                undo = a;
         QVERIFY(undo);
         undo->trigger();
         QCOMPARE(w.document()->param(AdjustParam::Exposure), 0.0);
@@ -259,12 +272,14 @@ private slots:
             const QString path = dir.filePath(QStringLiteral("x%1%2").arg(n++).arg(c.extension));
             FormatOptions o;
             o.layout = c.layout.toStdString();
-            QVERIFY2(w.exportLut(path, c.format, o, false), qPrintable(c.label + ": " + w.lastError()));
+            QVERIFY2(w.exportLut(path, c.format, o, false),
+                     qPrintable(c.label + ": " + w.lastError()));
             QVERIFY2(QFileInfo(path).size() > 0, qPrintable(c.label));
         }
         // The game-compensated nutexb holds smashGameLut of the edit, to 8 bits.
         bool haveNutexb = false;
-        for (const auto& c : choices) haveNutexb = haveNutexb || c.format == QLatin1String("nutexb");
+        for (const auto& c : choices)
+            haveNutexb = haveNutexb || c.format == QLatin1String("nutexb");
         if (haveNutexb) {
             const QString path = dir.filePath("color_grading_lut.nutexb");
             QVERIFY(w.exportLut(path, QStringLiteral("nutexb"), {}, true));
@@ -274,8 +289,9 @@ private slots:
             double worst = 0;
             for (std::size_t i = 0; i < want.entryCount(); ++i)
                 for (int c = 0; c < 3; ++c)
-                    worst = std::max(worst, std::abs(double(back.entries()[i][c]) -
-                                                     std::clamp(double(want.entries()[i][c]), 0.0, 1.0)));
+                    worst = std::max(worst,
+                                     std::abs(double(back.entries()[i][c]) -
+                                              std::clamp(double(want.entries()[i][c]), 0.0, 1.0)));
             QVERIFY2(worst <= 0.5 / 255 + 1e-6, qPrintable(QString::number(worst)));
         }
     }
@@ -310,11 +326,15 @@ private slots:
         QString err;
         QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
                         {QStringLiteral("--save-preview"), preview, samplePath("sample_scene.png"),
-                         samplePath("sample_grade.cube")}, &err), qPrintable(err));
+                         samplePath("sample_grade.cube")},
+                        &err),
+                 qPrintable(err));
         QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
                         {QStringLiteral("--screenshot"), shot, QStringLiteral("--window-size"),
                          QStringLiteral("1200x800"), samplePath("sample_scene.png"),
-                         samplePath("sample_grade.cube")}, &err), qPrintable(err));
+                         samplePath("sample_grade.cube")},
+                        &err),
+                 qPrintable(err));
         const QImage s(shot);
         QCOMPARE(s.size(), QSize(1200, 800));
 
@@ -322,7 +342,8 @@ private slots:
         Document doc;
         doc.openImage(samplePath("sample_scene.png"));
         doc.openLut(samplePath("sample_grade.cube"));
-        const Image want = renderPreview(*doc.sceneImage(), PreviewOptions{}, doc.effectiveLutShared()).image;
+        const Image want =
+            renderPreview(*doc.sceneImage(), PreviewOptions{}, doc.effectiveLutShared()).image;
         const formats::LoadedImage got = formats::readImage(preview.toStdString());
         QCOMPARE(got.image.width(), want.width());
         QCOMPARE(got.image.height(), want.height());
@@ -330,7 +351,8 @@ private slots:
         for (int y = 0; y < want.height(); ++y)
             for (int x = 0; x < want.width(); ++x)
                 for (int c = 0; c < 3; ++c)
-                    mismatches += toUnorm8(got.image.pixel(x, y)[c]) != toUnorm8(want.pixel(x, y)[c]);
+                    mismatches +=
+                        toUnorm8(got.image.pixel(x, y)[c]) != toUnorm8(want.pixel(x, y)[c]);
         QCOMPARE(mismatches, 0);
 
         // Against the CLI (gui_editor_tests depends on lutkit).
@@ -343,23 +365,33 @@ private slots:
         const QList<Case> cases = {
             {"sample_scene.png", {}, {}},
             {"sample_scene.exr", {}, {}},
-            {"sample_scene.png", {QStringLiteral("--preset"), QStringLiteral("pilot"), QStringLiteral("--interpolation"), QStringLiteral("tetrahedral")},
-             {QStringLiteral("--preset"), QStringLiteral("pilot"), QStringLiteral("--interp"), QStringLiteral("tetrahedral")}},
-            {"sample_scene.png", {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")},
+            {"sample_scene.png",
+             {QStringLiteral("--preset"), QStringLiteral("pilot"),
+              QStringLiteral("--interpolation"), QStringLiteral("tetrahedral")},
+             {QStringLiteral("--preset"), QStringLiteral("pilot"), QStringLiteral("--interp"),
+              QStringLiteral("tetrahedral")}},
+            {"sample_scene.png",
+             {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")},
              {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")}},
         };
         int n = 0;
         for (const Case& c : cases) {
-            const QString ext = QString::fromLatin1(c.image).endsWith(QLatin1String(".exr")) ? QStringLiteral(".exr") : QStringLiteral(".png");
+            const QString ext = QString::fromLatin1(c.image).endsWith(QLatin1String(".exr"))
+                                    ? QStringLiteral(".exr")
+                                    : QStringLiteral(".png");
             const QString mine = dir.filePath(QStringLiteral("editor%1%2").arg(n).arg(ext));
             const QString cli = dir.filePath(QStringLiteral("cli%1%2").arg(n++).arg(ext));
             QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
                             QStringList{QStringLiteral("--save-preview"), mine} + c.editorArgs +
-                                QStringList{samplePath(c.image), samplePath("sample_grade.cube")}, &err),
+                                QStringList{samplePath(c.image), samplePath("sample_grade.cube")},
+                            &err),
                      qPrintable(err));
             QVERIFY2(runsOk(QStringLiteral(LUTKIT_CLI),
-                            QStringList{QStringLiteral("preview"), QStringLiteral("-q"), samplePath(c.image), cli,
-                                        QStringLiteral("--lut"), samplePath("sample_grade.cube")} + c.cliArgs, &err),
+                            QStringList{QStringLiteral("preview"), QStringLiteral("-q"),
+                                        samplePath(c.image), cli, QStringLiteral("--lut"),
+                                        samplePath("sample_grade.cube")} +
+                                c.cliArgs,
+                            &err),
                      qPrintable(err));
             const formats::LoadedImage a = formats::readImage(mine.toStdString());
             const formats::LoadedImage b = formats::readImage(cli.toStdString());
@@ -395,7 +427,8 @@ private slots:
         QList<double> full, proxy, fullLut, proxyLut, fullCpu, proxyCpu, firstFrame;
         double firstAt = -1;
         connect(w.scheduler(), &PreviewScheduler::frameReady, this, [&] {
-            if (firstAt < 0) firstAt = t.nsecsElapsed() / 1e6;
+            if (firstAt < 0)
+                firstAt = t.nsecsElapsed() / 1e6;
         });
         const double firstAllStages = w.currentFrame()->totalMilliseconds;
         for (int i = 0; i < 5; ++i) {
@@ -423,7 +456,8 @@ private slots:
         w.waitForPreview();
         auto fmt = [](const QList<double>& l) {
             QStringList s;
-            for (double v : l) s << QString::number(v, 'f', 1);
+            for (double v : l)
+                s << QString::number(v, 'f', 1);
             return s.join(QStringLiteral(", "));
         };
         qInfo("1920x1080 first frame (every stage + 8-bit conversion): %.1f ms", firstAllStages);

@@ -7,11 +7,11 @@
 #include "PreviewRenderer.h"
 #include "RecentFiles.h"
 
-#include "lut/roundtrip/Embed.h"
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -159,7 +159,8 @@ private slots:
     void screenshotWithoutPatchIsRefused() {
         Document doc;
         doc.editParam(AdjustParam::Exposure, 0.5);
-        QVERIFY_THROWS_EXCEPTION(lut::Error, doc.startFromScreenshot(samplePath("sample_scene.png")));
+        QVERIFY_THROWS_EXCEPTION(lut::Error,
+                                 doc.startFromScreenshot(samplePath("sample_scene.png")));
         QCOMPARE(doc.param(AdjustParam::Exposure), 0.5);
     }
 
@@ -167,15 +168,18 @@ private slots:
         // Embed a neutral patch, apply a global edit to the whole picture (stored values x 0.8,
         // channel-wise), save at 8 bits: the document's LUT must be that edit.
         QTemporaryDir dir;
-        formats::LoadedImage shot = formats::readImage(samplePath("sample_scene.png").toStdString());
+        formats::LoadedImage shot =
+            formats::readImage(samplePath("sample_scene.png").toStdString());
         Image big(640, 360, 0.25f);
         for (int y = 0; y < 180; ++y)
             for (int x = 0; x < 320; ++x)
-                for (int c = 0; c < 4; ++c) big.pixel(x, y)[c] = shot.image.pixel(x, y)[c];
+                for (int c = 0; c < 4; ++c)
+                    big.pixel(x, y)[c] = shot.image.pixel(x, y)[c];
         embedPatch(big.view(), EmbedOptions{});
         // RGB only: PNG colour is stored unassociated, so scaling alpha would cancel the edit.
         for (std::size_t i = 0; i < big.pixels().size(); ++i)
-            if (i % 4 != 3) big.pixels()[i] *= 0.8f;
+            if (i % 4 != 3)
+                big.pixels()[i] *= 0.8f;
         const QString path = dir.filePath("edited.png");
         formats::writeImage(path.toStdString(), big, {});
         Document doc;
@@ -188,11 +192,19 @@ private slots:
             for (int g = 0; g < l.size(); ++g)
                 for (int r = 0; r < l.size(); ++r) {
                     const glm::vec3 in = l.latticeInput(r, g, b);
-                    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(l.at(r, g, b)[c]) - 0.8 * in[c]));
+                    for (int c = 0; c < 3; ++c)
+                        worst = std::max(worst, std::abs(double(l.at(r, g, b)[c]) - 0.8 * in[c]));
                 }
-        const glm::vec3 top = l.at(l.size() - 1, l.size() - 1, l.size() - 1), mid = l.at(l.size() / 2, 0, 0);
-        QVERIFY2(worst < 1.5 / 255, qPrintable(QStringLiteral("%1 steps; N %2, top %3 %4 %5, mid-r %6")
-                                                   .arg(worst * 255).arg(l.size()).arg(top.x).arg(top.y).arg(top.z).arg(mid.x)));
+        const glm::vec3 top = l.at(l.size() - 1, l.size() - 1, l.size() - 1),
+                        mid = l.at(l.size() / 2, 0, 0);
+        QVERIFY2(worst < 1.5 / 255,
+                 qPrintable(QStringLiteral("%1 steps; N %2, top %3 %4 %5, mid-r %6")
+                                .arg(worst * 255)
+                                .arg(l.size())
+                                .arg(top.x)
+                                .arg(top.y)
+                                .arg(top.z)
+                                .arg(mid.x)));
     }
 
     void startFromMemoryIsModified() {
@@ -208,11 +220,13 @@ private slots:
         Document doc;
         doc.openImage(samplePath("sample_scene.png"));
         doc.openLut(samplePath("sample_grade.cube"));
-        formats::LoadedImage loaded = formats::readImage(samplePath("sample_scene.png").toStdString());
+        formats::LoadedImage loaded =
+            formats::readImage(samplePath("sample_scene.png").toStdString());
         prepareSceneFrame(loaded.image.view(), false, false, nullptr);
         PipelineSettings s;
         s.preset = Preset::Smash;
-        s.lut = std::make_shared<const Lut3D>(formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D());
+        s.lut = std::make_shared<const Lut3D>(
+            formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D());
         Pipeline pipeline(s);
         const Image want = pipeline.run(loaded.image);
 
@@ -223,7 +237,8 @@ private slots:
         QVERIFY(got.image.pixels() == want.pixels());
         // And the LUT matters: the neutral preview differs.
         o.lutEnabled = false;
-        QVERIFY(renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared()).image.pixels() != want.pixels());
+        QVERIFY(renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared()).image.pixels() !=
+                want.pixels());
     }
 
     void splitAtTheLutIsBitIdentical() {
@@ -236,11 +251,13 @@ private slots:
                 PreviewOptions o;
                 o.preset = preset;
                 o.bloom = bloom;
-                const Image whole = renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared()).image;
+                const Image whole =
+                    renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared()).image;
                 const Image before = renderBeforeLut(*doc.sceneImage(), o);
                 const Image split = renderFromLut(before, o, doc.effectiveLutShared()).image;
-                QVERIFY2(whole.pixels() == split.pixels(),
-                         qPrintable(QStringLiteral("%1 bloom %2").arg(toString(preset)).arg(bloom)));
+                QVERIFY2(
+                    whole.pixels() == split.pixels(),
+                    qPrintable(QStringLiteral("%1 bloom %2").arg(toString(preset)).arg(bloom)));
             }
     }
 
@@ -278,7 +295,8 @@ private slots:
     void downscaleAveragesBlocks() {
         Image img(4, 2);
         for (int x = 0; x < 4; ++x)
-            for (int y = 0; y < 2; ++y) img.pixel(x, y)[0] = float(x + 4 * y);
+            for (int y = 0; y < 2; ++y)
+                img.pixel(x, y)[0] = float(x + 4 * y);
         const Image d = downscale(img, 2);
         QCOMPARE(d.width(), 2);
         QCOMPARE(d.height(), 1);
@@ -302,7 +320,8 @@ private slots:
 
     void recentFilesAreUniqueAndBounded() {
         QStringList l;
-        for (int i = 0; i < 15; ++i) l = addRecentFile(l, QStringLiteral("/tmp/f%1.cube").arg(i), 10);
+        for (int i = 0; i < 15; ++i)
+            l = addRecentFile(l, QStringLiteral("/tmp/f%1.cube").arg(i), 10);
         QCOMPARE(l.size(), 10);
         QCOMPARE(l.first(), QStringLiteral("/tmp/f14.cube"));
         l = addRecentFile(l, QStringLiteral("/tmp/f10.cube"), 10);
@@ -327,7 +346,8 @@ private slots:
                         // E(s) by trilinear interpolation of the 33^3 edit = the exposure curve
                         // interpolated between lattice points i/32 (s = i/15 falls between them).
                         const double x = s * 32, lo = std::floor(x), f = x - lo;
-                        const double e0 = exposureRef(lo / 32, 0.5), e1 = exposureRef(std::min(lo + 1, 32.0) / 32, 0.5);
+                        const double e0 = exposureRef(lo / 32, 0.5),
+                                     e1 = exposureRef(std::min(lo + 1, 32.0) / 32, 0.5);
                         const double e = e0 + (e1 - e0) * f;
                         const double want = (e / 1.3703 - s) / 0.99961 + s;
                         worst = std::max(worst, std::abs(double(game.at(r, g, b)[c]) - want));

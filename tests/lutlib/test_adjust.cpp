@@ -11,11 +11,14 @@ namespace {
 
 using glm::dvec3;
 
-double spowRef(double x, double p) { return x < 0 ? -std::pow(-x, p) : std::pow(x, p); }
+double spowRef(double x, double p) {
+    return x < 0 ? -std::pow(-x, p) : std::pow(x, p);
+}
 
 dvec3 refExposure(dvec3 e, double stops) {
     dvec3 o;
-    for (int c = 0; c < 3; ++c) o[c] = spowRef(spowRef(e[c], 2.2) * std::pow(2.0, stops), 1 / 2.2);
+    for (int c = 0; c < 3; ++c)
+        o[c] = spowRef(spowRef(e[c], 2.2) * std::pow(2.0, stops), 1 / 2.2);
     return o;
 }
 
@@ -25,19 +28,22 @@ dvec3 refWhiteBalance(dvec3 e, double t, double n) {
     const double norm = 0.2126 * gr + 0.7152 * gg + 0.0722 * gb;
     const double g[3] = {gr / norm, gg / norm, gb / norm};
     dvec3 o;
-    for (int c = 0; c < 3; ++c) o[c] = spowRef(spowRef(e[c], 2.2) * g[c], 1 / 2.2);
+    for (int c = 0; c < 3; ++c)
+        o[c] = spowRef(spowRef(e[c], 2.2) * g[c], 1 / 2.2);
     return o;
 }
 
 dvec3 refContrast(dvec3 e, double k) {
     dvec3 o;
-    for (int c = 0; c < 3; ++c) o[c] = (e[c] - 0.5) * (1 + k) + 0.5;
+    for (int c = 0; c < 3; ++c)
+        o[c] = (e[c] - 0.5) * (1 + k) + 0.5;
     return o;
 }
 
 dvec3 refLgg(dvec3 e, dvec3 lift, dvec3 gamma, dvec3 gain) {
     dvec3 o;
-    for (int c = 0; c < 3; ++c) o[c] = spowRef(gain[c] * (e[c] + lift[c] * (1 - e[c])), 1 / gamma[c]);
+    for (int c = 0; c < 3; ++c)
+        o[c] = spowRef(gain[c] * (e[c] + lift[c] * (1 - e[c])), 1 / gamma[c]);
     return o;
 }
 
@@ -47,11 +53,12 @@ dvec3 refSaturation(dvec3 e, double s) {
 }
 
 void expectNear(dvec3 a, dvec3 b, double tol = 1e-12) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], tol) << "channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(a[c], b[c], tol) << "channel " << c;
 }
 
-const dvec3 kColors[] = {{0, 0, 0}, {1, 1, 1}, {0.5, 0.25, 0.75}, {0.1, 0.9, 0.3},
-                         {-0.05, 0.2, 1.3}, {2.0, 0.001, 0.6}};
+const dvec3 kColors[] = {{0, 0, 0},       {1, 1, 1},         {0.5, 0.25, 0.75},
+                         {0.1, 0.9, 0.3}, {-0.05, 0.2, 1.3}, {2.0, 0.001, 0.6}};
 
 } // namespace
 
@@ -108,7 +115,8 @@ TEST(Adjust, ComposedOrderOnLutEntries) {
                 e = refLgg(e, liftE, gammaE, gainE);
                 e = refSaturation(e, a.saturation);
                 const glm::vec3 got = out.at(r, g, b);
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], e[c], 2e-6);
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(got[c], e[c], 2e-6);
             }
 }
 
@@ -139,8 +147,8 @@ TEST(Adjust, ExtremeEntriesStayFinite) {
     a.contrast = 2;
     a.saturation = 3;
     a.temperature = 1;
-    a.gammaMaster = 0.0;  // clamped to 0.01
-    a.gainMaster = 1e30;  // clamped
+    a.gammaMaster = 0.0; // clamped to 0.01
+    a.gainMaster = 1e30; // clamped
     for (dvec3 e : {dvec3(nan, 0.5, 0.5), dvec3(inf, -inf, 1e30), dvec3(-1e30, 0, 1)}) {
         const dvec3 o = lut::adjustColor(e, a);
         for (int c = 0; c < 3; ++c) {

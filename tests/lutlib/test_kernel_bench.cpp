@@ -1,5 +1,5 @@
-// lut/bench/KernelBench.h (bench/support): the analytic grade, its sampled LUTs, the synthetic frame and the error
-// measure that `lutkit bench` prints.
+// lut/bench/KernelBench.h (bench/support): the analytic grade, its sampled LUTs, the synthetic
+// frame and the error measure that `lutkit bench` prints.
 #include "lut/bench/KernelBench.h"
 #include "lut/interp/Sampler.h"
 
@@ -30,7 +30,8 @@ TEST(KernelBench, SampledLutHoldsTheGradeAtLatticePoints) {
         for (int g = 0; g < 9; g += 2)
             for (int r = 0; r < 9; ++r) {
                 const glm::dvec3 want = analyticGrade(glm::dvec3(l.latticeInput(r, g, b)));
-                for (int ch = 0; ch < 3; ++ch) EXPECT_EQ(l.at(r, g, b)[ch], static_cast<float>(want[ch]));
+                for (int ch = 0; ch < 3; ++ch)
+                    EXPECT_EQ(l.at(r, g, b)[ch], static_cast<float>(want[ch]));
             }
 }
 
@@ -59,8 +60,8 @@ TEST(KernelBench, ErrorShrinksWithLatticeSizeAndMatchesADirectSum) {
         for (int y = 0; y < frame.height(); ++y)
             for (int x = 0; x < frame.width(); ++x)
                 for (int c = 0; c < 3; ++c) {
-                    const double want = analyticGrade(glm::dvec3(frame.pixel(x, y)[0], frame.pixel(x, y)[1],
-                                                                 frame.pixel(x, y)[2]))[c];
+                    const double want = analyticGrade(glm::dvec3(
+                        frame.pixel(x, y)[0], frame.pixel(x, y)[1], frame.pixel(x, y)[2]))[c];
                     const double d = std::fabs(work.pixel(x, y)[c] - want);
                     maxAbs = std::max(maxAbs, d);
                     sum += d;
@@ -79,7 +80,8 @@ TEST(KernelBench, ParallelCopyAndBestSeconds) {
     parallelCopy(a, b, 4);
     EXPECT_EQ(a.pixels(), b.pixels());
     int prepared = 0, ran = 0;
-    const double s = bestSeconds(3, [&] { ++prepared; }, [&] { ++ran; });
+    const double s = bestSeconds(
+        3, [&] { ++prepared; }, [&] { ++ran; });
     EXPECT_EQ(prepared, 3);
     EXPECT_EQ(ran, 3);
     EXPECT_GE(s, 0.0);

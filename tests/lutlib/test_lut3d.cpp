@@ -64,7 +64,8 @@ TEST(Lut3D, DomainValidation) {
     EXPECT_TRUE(l.hasDefaultDomain());
     EXPECT_THROW(l.setDomain(glm::vec3(1), glm::vec3(0)), Error);
     EXPECT_THROW(l.setDomain(glm::vec3(0), glm::vec3(0)), Error);
-    EXPECT_THROW(l.setDomain(glm::vec3(0), glm::vec3(std::numeric_limits<float>::infinity())), Error);
+    EXPECT_THROW(l.setDomain(glm::vec3(0), glm::vec3(std::numeric_limits<float>::infinity())),
+                 Error);
     EXPECT_THROW(l.setDomain(glm::vec3(std::nanf("")), glm::vec3(1)), Error);
     l.setDomain(glm::vec3(-0.5f, 0, 0), glm::vec3(2, 1, 1e-30f));
     EXPECT_FALSE(l.hasDefaultDomain());
@@ -92,7 +93,8 @@ TEST(Lut3D, ValueRangeIgnoresNaN) {
 
 TEST(Lut1D, IdentityAndInterpolation) {
     const Lut1D id = Lut1D::identity(1024);
-    for (float x : {0.0f, 0.1f, 0.25f, 0.5f, 0.7771f, 1.0f}) EXPECT_NEAR(id.apply(glm::vec3(x)).r, x, 1e-7f) << x;
+    for (float x : {0.0f, 0.1f, 0.25f, 0.5f, 0.7771f, 1.0f})
+        EXPECT_NEAR(id.apply(glm::vec3(x)).r, x, 1e-7f) << x;
     EXPECT_EQ(id.apply(glm::vec3(1.0f)).g, 1.0f);
     Lut1D l(3);
     l[0] = glm::vec3(0, 10, -1);

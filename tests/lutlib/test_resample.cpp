@@ -3,8 +3,8 @@
 #include "LutTestUtil.h"
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
-#include "lut/ops/Resample.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/Resample.h"
 
 #include <gtest/gtest.h>
 
@@ -29,12 +29,14 @@ glm::dvec3 affine(glm::dvec3 c) {
             -0.05 * c.x + 0.1 * c.y + 0.9 * c.z};
 }
 
-template <class F> Lut3D sampled(int n, F f, glm::vec3 lo = glm::vec3(0), glm::vec3 hi = glm::vec3(1)) {
+template <class F>
+Lut3D sampled(int n, F f, glm::vec3 lo = glm::vec3(0), glm::vec3 hi = glm::vec3(1)) {
     Lut3D l(n);
     l.setDomain(lo, hi);
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) l.at(r, g, b) = glm::vec3(f(glm::dvec3(l.latticeInput(r, g, b))));
+            for (int r = 0; r < n; ++r)
+                l.at(r, g, b) = glm::vec3(f(glm::dvec3(l.latticeInput(r, g, b))));
     return l;
 }
 
@@ -75,7 +77,8 @@ TEST(Resample, TrilinearReproducesMultilinearFunctions) {
             for (int g = 0; g < n; ++g)
                 for (int r = 0; r < n; ++r) {
                     const glm::dvec3 want = multilinear(glm::dvec3(out.latticeInput(r, g, b)));
-                    for (int c = 0; c < 3; ++c) ASSERT_NEAR(out.at(r, g, b)[c], want[c], 1e-6) << n;
+                    for (int c = 0; c < 3; ++c)
+                        ASSERT_NEAR(out.at(r, g, b)[c], want[c], 1e-6) << n;
                 }
     }
 }
@@ -91,7 +94,8 @@ TEST(Resample, TetrahedralReproducesAffineFunctionsOnAnyDomain) {
             for (int g = 0; g < n; ++g)
                 for (int r = 0; r < n; ++r) {
                     const glm::dvec3 want = affine(glm::dvec3(out.latticeInput(r, g, b)));
-                    for (int c = 0; c < 3; ++c) ASSERT_NEAR(out.at(r, g, b)[c], want[c], 2e-6);
+                    for (int c = 0; c < 3; ++c)
+                        ASSERT_NEAR(out.at(r, g, b)[c], want[c], 2e-6);
                 }
     }
 }
@@ -115,7 +119,8 @@ TEST(Resample, DownAndUpKeepLatticeValuesWhereLatticesCoincide) {
     const Lut3D out = resample(src, 17, Interpolation::Tetrahedral);
     for (int b = 0; b < 17; ++b)
         for (int g = 0; g < 17; ++g)
-            for (int r = 0; r < 17; ++r) ASSERT_EQ(out.at(r, g, b), src.at(2 * r, 2 * g, 2 * b));
+            for (int r = 0; r < 17; ++r)
+                ASSERT_EQ(out.at(r, g, b), src.at(2 * r, 2 * g, 2 * b));
 }
 
 TEST(Resample, WithErrorMatchesAFloat64Reference) {
@@ -142,7 +147,8 @@ TEST(Resample, WithErrorMatchesAFloat64Reference) {
         EXPECT_EQ(res.error.count, count);
         EXPECT_NEAR(res.error.maxAbs, maxAbs, 1e-5 + 1e-3 * maxAbs) << n;
         EXPECT_NEAR(res.error.meanAbs, sum / static_cast<double>(count), 1e-6 + 1e-3 * maxAbs) << n;
-        EXPECT_GT(res.error.maxAbs, 1e-4) << "a 33 -> " << n << " resample of a curved grade must lose something";
+        EXPECT_GT(res.error.maxAbs, 1e-4)
+            << "a 33 -> " << n << " resample of a curved grade must lose something";
         EXPECT_GE(res.error.seconds, 0.0);
     }
     // Finer target, smaller error.
@@ -153,7 +159,8 @@ TEST(Resample, WithErrorMatchesAFloat64Reference) {
 TEST(Resample, CompareLutsIsZeroForEqualAndSymmetric) {
     const Lut3D a = test::randomLut(9, 1), b = test::randomLut(9, 2);
     EXPECT_EQ(compareLuts(a, a, Interpolation::Tetrahedral).maxAbs, 0.0);
-    const ErrorStats ab = compareLuts(a, b, Interpolation::Trilinear), ba = compareLuts(b, a, Interpolation::Trilinear);
+    const ErrorStats ab = compareLuts(a, b, Interpolation::Trilinear),
+                     ba = compareLuts(b, a, Interpolation::Trilinear);
     EXPECT_DOUBLE_EQ(ab.maxAbs, ba.maxAbs);
     EXPECT_NEAR(ab.meanAbs, ba.meanAbs, 1e-12);
     EXPECT_GT(ab.maxAbs, 0.1);
@@ -172,12 +179,14 @@ TEST(Quantize, ToUnormRoundsToNearestAndClamps) {
     EXPECT_EQ(toUnorm8(0.5f), 128); // 127.5 rounds away from zero
     EXPECT_EQ(toUnorm8(0.49f), 125);
     EXPECT_EQ(toUnorm8(1e-40f), 0);
-    for (int i = 0; i <= 255; ++i) EXPECT_EQ(toUnorm8(fromUnorm8(static_cast<std::uint8_t>(i))), i);
+    for (int i = 0; i <= 255; ++i)
+        EXPECT_EQ(toUnorm8(fromUnorm8(static_cast<std::uint8_t>(i))), i);
     EXPECT_EQ(toUnorm16(std::nanf("")), 0);
     EXPECT_EQ(toUnorm16(1.0f), 65535);
     EXPECT_EQ(toUnorm16(2.0f), 65535);
     EXPECT_EQ(toUnorm16(0.5f), 32768);
-    for (int i = 0; i <= 65535; i += 7) EXPECT_EQ(toUnorm16(fromUnorm16(static_cast<std::uint16_t>(i))), i);
+    for (int i = 0; i <= 65535; i += 7)
+        EXPECT_EQ(toUnorm16(fromUnorm16(static_cast<std::uint16_t>(i))), i);
 }
 
 TEST(Quantize, ToUnormIsLroundForEveryFloatSampled) {
@@ -217,7 +226,8 @@ TEST(Quantize, Quantize8ReportsItsError) {
     EXPECT_EQ(e.count, 3 * l.entryCount());
     Lut3D clean = test::smoothLut(5);
     for (auto& v : clean.entries())
-        for (int c = 0; c < 3; ++c) v[c] = std::clamp(v[c], 0.0f, 1.0f);
+        for (int c = 0; c < 3; ++c)
+            v[c] = std::clamp(v[c], 0.0f, 1.0f);
     EXPECT_LE(quantize8(clean).maxAbs, 0.5 / 255 + 1e-7);
 }
 

@@ -25,7 +25,8 @@ glm::vec3 viaKernel(const Sampler& s, glm::vec3 in) {
 
 // Same bits (so -0 vs 0 and NaN would show).
 void expectSame(glm::vec3 a, glm::vec3 b, const std::string& what) {
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(a[c], b[c]) << what << " channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(a[c], b[c]) << what << " channel " << c;
 }
 
 class Policy : public ::testing::TestWithParam<Interpolation> {};
@@ -45,9 +46,8 @@ TEST_P(Policy, SpecialValuesMapToDomainEnds) {
                 x[c] = v;
                 return x;
             };
-            for (auto eval : {+[](const Sampler& s, glm::vec3 x) { return s.sample(x); }, +[](const Sampler& s, glm::vec3 x) {
-                                  return viaKernel(s, x);
-                              }}) {
+            for (auto eval : {+[](const Sampler&s, glm::vec3 x) { return s.sample(x); },
+                              +[](const Sampler&s, glm::vec3 x) { return viaKernel(s, x); }}) {
                 const glm::vec3 atMin = eval(*s, with(lo[c])), atMax = eval(*s, with(hi[c]));
                 expectSame(eval(*s, with(kNaN)), atMin, "NaN");
                 expectSame(eval(*s, with(-kNaN)), atMin, "-NaN");
@@ -63,10 +63,14 @@ TEST_P(Policy, SpecialValuesMapToDomainEnds) {
         // -0 is 0, and a denormal in a [0,1] domain is (almost) 0.
         Lut3D unit = test::randomLut(n, 22);
         const auto u = makeSampler(unit, GetParam());
-        expectSame(u->sample(glm::vec3(-0.0f, 0.5f, -0.0f)), u->sample(glm::vec3(0.0f, 0.5f, 0.0f)), "-0");
-        expectSame(viaKernel(*u, glm::vec3(-0.0f, 0.5f, -0.0f)), viaKernel(*u, glm::vec3(0.0f, 0.5f, 0.0f)), "-0 simd");
-        const glm::vec3 den = u->sample(glm::vec3(1e-40f, 1e-45f, -1e-40f)), zero = u->sample(glm::vec3(0.0f));
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(den[c], zero[c], 1e-30f);
+        expectSame(u->sample(glm::vec3(-0.0f, 0.5f, -0.0f)), u->sample(glm::vec3(0.0f, 0.5f, 0.0f)),
+                   "-0");
+        expectSame(viaKernel(*u, glm::vec3(-0.0f, 0.5f, -0.0f)),
+                   viaKernel(*u, glm::vec3(0.0f, 0.5f, 0.0f)), "-0 simd");
+        const glm::vec3 den = u->sample(glm::vec3(1e-40f, 1e-45f, -1e-40f)),
+                        zero = u->sample(glm::vec3(0.0f));
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(den[c], zero[c], 1e-30f);
     }
 }
 
@@ -84,7 +88,8 @@ TEST_P(Policy, FiniteTablesNeverGiveNaNOrInfAndStayInTheirRange) {
             const auto s = makeSampler(lut, GetParam());
             const auto inputs = test::stressInputs(1000);
             std::vector<float> px;
-            for (const auto& in : inputs) px.insert(px.end(), {in.x, in.y, in.z, kNaN});
+            for (const auto& in : inputs)
+                px.insert(px.end(), {in.x, in.y, in.z, kNaN});
             s->applyPixels(px.data(), inputs.size());
             for (std::size_t i = 0; i < inputs.size(); ++i) {
                 const glm::vec3 a = s->sample(inputs[i]);
@@ -105,24 +110,28 @@ TEST_P(Policy, FiniteTablesNeverGiveNaNOrInfAndStayInTheirRange) {
 TEST_P(Policy, LatticePointsReturnEntriesExactly) {
     for (int n : {2, 16, 17, 33, 256}) {
         const Lut3D base = test::randomLut(n, 41);
-        for (const auto& dom : {std::pair{glm::vec3(0.0f), glm::vec3(1.0f)},
-                                std::pair{glm::vec3(-0.25f, 0.0f, 0.1f), glm::vec3(1.75f, 4.0f, 0.9f)},
-                                std::pair{glm::vec3(0.0f), glm::vec3(1e-30f)}}) {
-            if (n == 256 && !(dom.first == glm::vec3(0.0f) && dom.second == glm::vec3(1.0f))) continue; // time
+        for (const auto& dom :
+             {std::pair{glm::vec3(0.0f), glm::vec3(1.0f)},
+              std::pair{glm::vec3(-0.25f, 0.0f, 0.1f), glm::vec3(1.75f, 4.0f, 0.9f)},
+              std::pair{glm::vec3(0.0f), glm::vec3(1e-30f)}}) {
+            if (n == 256 && !(dom.first == glm::vec3(0.0f) && dom.second == glm::vec3(1.0f)))
+                continue; // time
             Lut3D lut = base;
             lut.setDomain(dom.first, dom.second);
             const auto s = makeSampler(lut, GetParam());
             const int step = n > 40 ? 17 : 1;
             std::vector<int> idx;
-            for (int i = 0; i < n; i += step) idx.push_back(i);
-            if (idx.back() != n - 1) idx.push_back(n - 1);
+            for (int i = 0; i < n; i += step)
+                idx.push_back(i);
+            if (idx.back() != n - 1)
+                idx.push_back(n - 1);
             for (int b : idx)
                 for (int g : idx)
                     for (int r : idx) {
                         const glm::vec3 in = lut.latticeInput(r, g, b);
                         expectSame(s->sample(in), lut.at(r, g, b),
-                                   "N=" + std::to_string(n) + " lattice " + std::to_string(r) + "," +
-                                       std::to_string(g) + "," + std::to_string(b));
+                                   "N=" + std::to_string(n) + " lattice " + std::to_string(r) +
+                                       "," + std::to_string(g) + "," + std::to_string(b));
                         expectSame(viaKernel(*s, in), lut.at(r, g, b), "simd lattice");
                     }
             // Exactly domainMax is the last entry.
@@ -132,8 +141,11 @@ TEST_P(Policy, LatticePointsReturnEntriesExactly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, Policy,
-                         ::testing::Values(Interpolation::Nearest, Interpolation::Trilinear, Interpolation::Tetrahedral),
-                         [](const ::testing::TestParamInfo<Interpolation>& i) { return std::string(toString(i.param)); });
+                         ::testing::Values(Interpolation::Nearest, Interpolation::Trilinear,
+                                           Interpolation::Tetrahedral),
+                         [](const ::testing::TestParamInfo<Interpolation>& i) {
+                             return std::string(toString(i.param));
+                         });
 
 class Smooth : public ::testing::TestWithParam<Interpolation> {};
 
@@ -145,30 +157,40 @@ TEST_P(Smooth, NeutralLutReturnsInputUnchanged) {
         // Only in-domain inputs: the neutral LUT clamps the rest.
         std::vector<glm::vec3> in;
         for (const auto& v : inputs)
-            if (v.x >= 0 && v.x <= 1 && v.y >= 0 && v.y <= 1 && v.z >= 0 && v.z <= 1) in.push_back(v);
-        for (float t : {1e-6f, 1e-20f, 0.1f, 0.2f, 0.3f, 0.7f, 0.9f}) in.emplace_back(t, 1.0f - t, t * 0.5f);
+            if (v.x >= 0 && v.x <= 1 && v.y >= 0 && v.y <= 1 && v.z >= 0 && v.z <= 1)
+                in.push_back(v);
+        for (float t : {1e-6f, 1e-20f, 0.1f, 0.2f, 0.3f, 0.7f, 0.9f})
+            in.emplace_back(t, 1.0f - t, t * 0.5f);
         std::vector<float> px;
-        for (const auto& v : in) px.insert(px.end(), {v.x, v.y, v.z, 1.0f});
+        for (const auto& v : in)
+            px.insert(px.end(), {v.x, v.y, v.z, 1.0f});
         s->applyPixels(px.data(), in.size());
         for (std::size_t i = 0; i < in.size(); ++i) {
             const glm::vec3 a = s->sample(in[i]);
             for (int c = 0; c < 3; ++c) {
                 // A few float ulps of the value, plus the rounding of i/(N-1) entries near 1.
-                const float tol = 4.0f * std::numeric_limits<float>::epsilon() * std::max(in[i][c], 1.0f / 64);
+                const float tol =
+                    4.0f * std::numeric_limits<float>::epsilon() * std::max(in[i][c], 1.0f / 64);
                 ASSERT_NEAR(a[c], in[i][c], tol) << "N=" << n << " value " << in[i][c];
-                ASSERT_NEAR(px[4 * i + c], in[i][c], tol) << "simd N=" << n << " value " << in[i][c];
+                ASSERT_NEAR(px[4 * i + c], in[i][c], tol)
+                    << "simd N=" << n << " value " << in[i][c];
             }
         }
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Interpolating, Smooth, ::testing::Values(Interpolation::Trilinear, Interpolation::Tetrahedral),
-                         [](const ::testing::TestParamInfo<Interpolation>& i) { return std::string(toString(i.param)); });
+INSTANTIATE_TEST_SUITE_P(Interpolating, Smooth,
+                         ::testing::Values(Interpolation::Trilinear, Interpolation::Tetrahedral),
+                         [](const ::testing::TestParamInfo<Interpolation>& i) {
+                             return std::string(toString(i.param));
+                         });
 
 TEST(Tetrahedral, KeepsGreysGrey) {
     for (int n : {2, 17, 33}) {
         Lut3D lut = test::randomLut(n, 51);
-        for (int i = 0; i < n; ++i) lut.at(i, i, i) = glm::vec3(static_cast<float>(i * i) / ((n - 1) * (n - 1)) * 0.8f + 0.1f);
+        for (int i = 0; i < n; ++i)
+            lut.at(i, i, i) =
+                glm::vec3(static_cast<float>(i * i) / ((n - 1) * (n - 1)) * 0.8f + 0.1f);
         const auto s = makeSampler(lut, Interpolation::Tetrahedral);
         std::mt19937 rng(3);
         std::uniform_real_distribution<float> u(-0.1f, 1.1f);
@@ -188,12 +210,15 @@ TEST(Tetrahedral, KeepsGreysGrey) {
     }
     // Trilinear does not have this property on the same LUT: the test above can fail.
     Lut3D lut = test::randomLut(5, 51);
-    for (int i = 0; i < 5; ++i) lut.at(i, i, i) = glm::vec3(i / 4.0f);
+    for (int i = 0; i < 5; ++i)
+        lut.at(i, i, i) = glm::vec3(i / 4.0f);
     const glm::vec3 o = makeSampler(lut, Interpolation::Trilinear)->sample(glm::vec3(0.4f));
     EXPECT_FALSE(o.r == o.g && o.g == o.b);
 }
 
-TEST(Sampler, EmptyLutThrows) { EXPECT_THROW(makeSampler(Lut3D(), Interpolation::Trilinear), Error); }
+TEST(Sampler, EmptyLutThrows) {
+    EXPECT_THROW(makeSampler(Lut3D(), Interpolation::Trilinear), Error);
+}
 
 TEST(Sampler, ApplyUsesAnyThreadCountAndKeepsAlphaAndRowPadding) {
     const Lut3D lut = test::smoothLut(17);
@@ -202,7 +227,8 @@ TEST(Sampler, ApplyUsesAnyThreadCountAndKeepsAlphaAndRowPadding) {
     std::vector<float> src(static_cast<std::size_t>(stride) * h);
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> u(-0.2f, 1.2f);
-    for (auto& v : src) v = u(rng);
+    for (auto& v : src)
+        v = u(rng);
     std::vector<float> ref = src;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -216,7 +242,8 @@ TEST(Sampler, ApplyUsesAnyThreadCountAndKeepsAlphaAndRowPadding) {
         for (std::size_t i = 0; i < img.size(); ++i) {
             const std::size_t inRow = i % stride;
             if (inRow >= 4u * w || inRow % 4 == 3)
-                ASSERT_EQ(img[i], src[i]) << "alpha/padding changed at " << i << " threads " << threads;
+                ASSERT_EQ(img[i], src[i])
+                    << "alpha/padding changed at " << i << " threads " << threads;
             else
                 ASSERT_NEAR(img[i], ref[i], 2e-6f) << i << " threads " << threads;
         }

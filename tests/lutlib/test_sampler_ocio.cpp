@@ -23,21 +23,25 @@ OCIO::ConstCPUProcessorRcPtr ocioProcessor(const Lut3D& lut, Interpolation metho
                 t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
                             static_cast<unsigned long>(b), e.r, e.g, e.b);
             }
-    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL : OCIO::INTERP_LINEAR);
+    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL
+                                                             : OCIO::INTERP_LINEAR);
     auto config = OCIO::Config::CreateRaw();
-    return config->getProcessor(t)->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                              OCIO::OPTIMIZATION_NONE);
+    return config->getProcessor(t)->getOptimizedCPUProcessor(
+        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
 }
 
 std::vector<glm::vec3> oracleInputs(int n) {
     std::vector<glm::vec3> v;
     std::mt19937 rng(1234);
     std::uniform_real_distribution<float> u(0.0f, 1.0f), wide(-0.5f, 1.5f);
-    for (int i = 0; i < 30000; ++i) v.emplace_back(u(rng), u(rng), u(rng));
-    for (int i = 0; i < 3000; ++i) v.emplace_back(wide(rng), wide(rng), wide(rng)); // clamped by both
+    for (int i = 0; i < 30000; ++i)
+        v.emplace_back(u(rng), u(rng), u(rng));
+    for (int i = 0; i < 3000; ++i)
+        v.emplace_back(wide(rng), wide(rng), wide(rng)); // clamped by both
     // Edges: lattice points, midpoints, 0, 1, and their neighbours in float, in every combination.
-    std::vector<float> e = {0.0f, 1.0f, 0.5f, std::nextafter(1.0f, 0.0f), std::nextafter(0.0f, 1.0f), 1e-7f,
-                            1e30f, -1e30f, -0.0f};
+    std::vector<float> e = {
+        0.0f,  1.0f,   0.5f, std::nextafter(1.0f, 0.0f), std::nextafter(0.0f, 1.0f), 1e-7f,
+        1e30f, -1e30f, -0.0f};
     for (int i = 0; i < n; i += std::max(1, n / 5)) {
         const float x = static_cast<float>(i) / static_cast<float>(n - 1);
         e.push_back(x);
@@ -47,7 +51,8 @@ std::vector<glm::vec3> oracleInputs(int n) {
     }
     for (float r : e)
         for (float g : e)
-            for (float b : e) v.emplace_back(r, g, b);
+            for (float b : e)
+                v.emplace_back(r, g, b);
     // Exact greys and near-greys (tetrahedral tie-breaking).
     for (int i = 0; i < 1000; ++i) {
         const float x = u(rng);
@@ -75,7 +80,8 @@ TEST_P(AgainstOcio, AgreesWithin1e5) {
     const auto in = oracleInputs(c.size);
 
     std::vector<float> theirs, simd;
-    for (const auto& v : in) theirs.insert(theirs.end(), {v.x, v.y, v.z, 0.75f});
+    for (const auto& v : in)
+        theirs.insert(theirs.end(), {v.x, v.y, v.z, 0.75f});
     simd = theirs;
     OCIO::PackedImageDesc desc(theirs.data(), static_cast<long>(in.size()), 1, 4);
     oracle->apply(desc);
@@ -86,10 +92,11 @@ TEST_P(AgainstOcio, AgreesWithin1e5) {
         const glm::vec3 s = ours->sample(in[i]);
         for (int ch = 0; ch < 3; ++ch) {
             const float o = theirs[4 * i + ch];
-            ASSERT_NEAR(s[ch], o, 1e-5) << "scalar vs OCIO at (" << in[i].x << ", " << in[i].y << ", " << in[i].z
-                                        << ") channel " << ch;
-            ASSERT_NEAR(simd[4 * i + ch], o, 1e-5) << "SIMD vs OCIO at (" << in[i].x << ", " << in[i].y << ", "
-                                                   << in[i].z << ") channel " << ch;
+            ASSERT_NEAR(s[ch], o, 1e-5) << "scalar vs OCIO at (" << in[i].x << ", " << in[i].y
+                                        << ", " << in[i].z << ") channel " << ch;
+            ASSERT_NEAR(simd[4 * i + ch], o, 1e-5)
+                << "SIMD vs OCIO at (" << in[i].x << ", " << in[i].y << ", " << in[i].z
+                << ") channel " << ch;
             worst = std::max(worst, static_cast<double>(std::fabs(simd[4 * i + ch] - o)));
         }
         ASSERT_EQ(simd[4 * i + 3], 0.75f);
@@ -99,12 +106,13 @@ TEST_P(AgainstOcio, AgreesWithin1e5) {
 
 INSTANTIATE_TEST_SUITE_P(
     Luts, AgainstOcio,
-    ::testing::Values(Case{Interpolation::Trilinear, 2, false}, Case{Interpolation::Trilinear, 17, false},
-                      Case{Interpolation::Trilinear, 33, false}, Case{Interpolation::Trilinear, 2, true},
-                      Case{Interpolation::Trilinear, 17, true}, Case{Interpolation::Trilinear, 33, true},
-                      Case{Interpolation::Tetrahedral, 2, false}, Case{Interpolation::Tetrahedral, 17, false},
-                      Case{Interpolation::Tetrahedral, 33, false}, Case{Interpolation::Tetrahedral, 2, true},
-                      Case{Interpolation::Tetrahedral, 17, true}, Case{Interpolation::Tetrahedral, 33, true}),
+    ::testing::Values(
+        Case{Interpolation::Trilinear, 2, false}, Case{Interpolation::Trilinear, 17, false},
+        Case{Interpolation::Trilinear, 33, false}, Case{Interpolation::Trilinear, 2, true},
+        Case{Interpolation::Trilinear, 17, true}, Case{Interpolation::Trilinear, 33, true},
+        Case{Interpolation::Tetrahedral, 2, false}, Case{Interpolation::Tetrahedral, 17, false},
+        Case{Interpolation::Tetrahedral, 33, false}, Case{Interpolation::Tetrahedral, 2, true},
+        Case{Interpolation::Tetrahedral, 17, true}, Case{Interpolation::Tetrahedral, 33, true}),
     [](const ::testing::TestParamInfo<Case>& i) {
         return std::string(toString(i.param.method)) + "_" + std::to_string(i.param.size) +
                (i.param.random ? "_random" : "_smooth");
@@ -113,18 +121,22 @@ INSTANTIATE_TEST_SUITE_P(
 // NaN and infinities: OCIO's CPU renderer clamps them the same way (NaN -> domain min).
 TEST(AgainstOcio, SpecialValues) {
     const Lut3D lut = test::randomLut(17, 5);
-    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity(),
+                nan = std::numeric_limits<float>::quiet_NaN();
     for (auto method : {Interpolation::Trilinear, Interpolation::Tetrahedral}) {
         const auto ours = makeSampler(lut, method);
         const auto oracle = ocioProcessor(lut, method);
-        const std::vector<glm::vec3> in = {{inf, 0.5f, 0.2f}, {-inf, 0.5f, 0.2f}, {0.3f, inf, -inf}, {inf, inf, inf}};
+        const std::vector<glm::vec3> in = {
+            {inf, 0.5f, 0.2f}, {-inf, 0.5f, 0.2f}, {0.3f, inf, -inf}, {inf, inf, inf}};
         std::vector<float> theirs;
-        for (const auto& v : in) theirs.insert(theirs.end(), {v.x, v.y, v.z, 1.0f});
+        for (const auto& v : in)
+            theirs.insert(theirs.end(), {v.x, v.y, v.z, 1.0f});
         OCIO::PackedImageDesc desc(theirs.data(), static_cast<long>(in.size()), 1, 4);
         oracle->apply(desc);
         for (std::size_t i = 0; i < in.size(); ++i) {
             const glm::vec3 s = ours->sample(in[i]);
-            for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(s[ch], theirs[4 * i + ch], 1e-5) << i;
+            for (int ch = 0; ch < 3; ++ch)
+                EXPECT_NEAR(s[ch], theirs[4 * i + ch], 1e-5) << i;
         }
         // NaN: ours is defined as domain min; OCIO's result is only required to be finite here.
         float p[4] = {nan, 0.5f, 0.5f, 1.0f};

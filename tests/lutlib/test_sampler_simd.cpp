@@ -44,9 +44,9 @@ void checkAgreement(const Lut3D& lut, Interpolation method, const std::vector<gl
             const float got = px[4 * i + c];
             if (!(std::fabs(got - ref[c]) <= tol)) {
                 ++bad;
-                ADD_FAILURE() << toString(method) << " N=" << lut.size() << " input (" << inputs[i].x << ", "
-                              << inputs[i].y << ", " << inputs[i].z << ") channel " << c << ": simd " << got
-                              << " scalar " << ref[c];
+                ADD_FAILURE() << toString(method) << " N=" << lut.size() << " input ("
+                              << inputs[i].x << ", " << inputs[i].y << ", " << inputs[i].z
+                              << ") channel " << c << ": simd " << got << " scalar " << ref[c];
             }
         }
         EXPECT_EQ(px[4 * i + 3], static_cast<float>(i) * 0.25f - 3.0f);
@@ -89,18 +89,19 @@ TEST_P(SimdVsScalar, LatticeInputsAreExact) {
             }
     s->applyPixels(px.data(), want.size());
     for (std::size_t i = 0; i < want.size(); ++i)
-        for (int c = 0; c < 3; ++c) ASSERT_EQ(px[4 * i + c], want[i][c]) << "lattice point " << i;
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(px[4 * i + c], want[i][c]) << "lattice point " << i;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     AllMethods, SimdVsScalar,
-    ::testing::Values(Case{Interpolation::Nearest, 2}, Case{Interpolation::Nearest, 17}, Case{Interpolation::Nearest, 33},
-                      Case{Interpolation::Trilinear, 2}, Case{Interpolation::Trilinear, 3},
-                      Case{Interpolation::Trilinear, 16}, Case{Interpolation::Trilinear, 33},
-                      Case{Interpolation::Trilinear, 65}, Case{Interpolation::Tetrahedral, 2},
-                      Case{Interpolation::Tetrahedral, 3}, Case{Interpolation::Tetrahedral, 16},
-                      Case{Interpolation::Tetrahedral, 17}, Case{Interpolation::Tetrahedral, 33},
-                      Case{Interpolation::Tetrahedral, 65}),
+    ::testing::Values(Case{Interpolation::Nearest, 2}, Case{Interpolation::Nearest, 17},
+                      Case{Interpolation::Nearest, 33}, Case{Interpolation::Trilinear, 2},
+                      Case{Interpolation::Trilinear, 3}, Case{Interpolation::Trilinear, 16},
+                      Case{Interpolation::Trilinear, 33}, Case{Interpolation::Trilinear, 65},
+                      Case{Interpolation::Tetrahedral, 2}, Case{Interpolation::Tetrahedral, 3},
+                      Case{Interpolation::Tetrahedral, 16}, Case{Interpolation::Tetrahedral, 17},
+                      Case{Interpolation::Tetrahedral, 33}, Case{Interpolation::Tetrahedral, 65}),
     [](const ::testing::TestParamInfo<Case>& i) {
         return std::string(toString(i.param.method)) + "_" + std::to_string(i.param.size);
     });
@@ -109,7 +110,8 @@ TEST(SamplerIsa, ReportsAKnownPath) {
     const std::string isa = samplerIsa();
     EXPECT_TRUE(isa == "avx2" || isa == "scalar") << isa;
 #if defined(__x86_64__)
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && !std::getenv("LUTKIT_SIMD")) {
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+        !std::getenv("LUTKIT_SIMD")) {
         EXPECT_EQ(isa, "avx2");
     }
 #endif
@@ -119,7 +121,8 @@ TEST(SamplerIsa, ScalarCanBeForcedAndAgrees) {
     const Lut3D lut = test::smoothLut(17);
     const auto inputs = stressInputs(1000);
     std::vector<float> a, b;
-    for (const auto& v : inputs) a.insert(a.end(), {v.x, v.y, v.z, 0.5f});
+    for (const auto& v : inputs)
+        a.insert(a.end(), {v.x, v.y, v.z, 0.5f});
     b = a;
     const auto fast = makeSampler(lut, Interpolation::Tetrahedral);
     ::setenv("LUTKIT_SIMD", "scalar", 1);
@@ -128,5 +131,6 @@ TEST(SamplerIsa, ScalarCanBeForcedAndAgrees) {
     ::unsetenv("LUTKIT_SIMD");
     fast->applyPixels(a.data(), inputs.size());
     slow->applyPixels(b.data(), inputs.size());
-    for (std::size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(a[i], b[i], 2e-6f) << i;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        ASSERT_NEAR(a[i], b[i], 2e-6f) << i;
 }

@@ -142,8 +142,8 @@ TEST(FastMath, GradeKernelsGiveEachPixelTheSameBitsInAnyGroup) {
                 }
             if (x[4 * i + 3] == 1.0f)
                 for (int c = 0; c < 3; ++c) {
-                    const double rr = ((double(l[4 * i + c]) - s[4 * i + c]) * 0.99961 +
-                                       s[4 * i + c]) * 1.3703;
+                    const double rr =
+                        ((double(l[4 * i + c]) - s[4 * i + c]) * 0.99961 + s[4 * i + c]) * 1.3703;
                     const double g = std::pow(std::max(rr, 0.0), 2.2);
                     EXPECT_LT(relErr(wide[4 * i + c], fused ? refSrgbEncode(g) : g), 2e-6);
                 }

@@ -29,8 +29,8 @@ Outcome runCli(const std::uint8_t* data, std::size_t size) {
 
 const std::map<std::string, Target>& targets() {
     static const std::map<std::string, Target> t = {
-        {"cube", lut::fuzz::runCube},     {"strip", lut::fuzz::runStrip},
-        {"hald", lut::fuzz::runHald},     {"nutexb", lut::fuzz::runNutexb},
+        {"cube", lut::fuzz::runCube}, {"strip", lut::fuzz::runStrip},
+        {"hald", lut::fuzz::runHald}, {"nutexb", lut::fuzz::runNutexb},
         {"cli_numbers", runCli},
     };
     return t;
@@ -41,7 +41,8 @@ std::vector<fs::path> corpusFiles(const std::string& fuzzer) {
     const fs::path dir = lut::test::dataPath("fuzz-regress/" + fuzzer);
     if (fs::is_directory(dir))
         for (const auto& e : fs::directory_iterator(dir))
-            if (e.is_regular_file()) files.push_back(e.path());
+            if (e.is_regular_file())
+                files.push_back(e.path());
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -73,7 +74,8 @@ TEST(FuzzRegressCorpus, HasOnlyKnownFuzzersAndSomeInputs) {
     ASSERT_TRUE(fs::is_directory(root));
     std::size_t total = 0;
     for (const auto& e : fs::directory_iterator(root)) {
-        if (!e.is_directory()) continue;
+        if (!e.is_directory())
+            continue;
         EXPECT_TRUE(targets().count(e.path().filename().string())) << e.path();
         total += corpusFiles(e.path().filename().string()).size();
     }

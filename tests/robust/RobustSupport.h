@@ -27,14 +27,16 @@ inline std::string readBytes(const std::string& path) {
 // Replaces every occurrence of dir + "/" in text by "" (messages name the full path).
 inline std::string stripDir(std::string text, const std::string& dir) {
     const std::string prefix = dir + "/";
-    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;)
+        text.erase(at, prefix.size());
     return text;
 }
 
 // Files in dir (names only), sorted, hidden ones included: temporary files must not survive.
 inline std::vector<std::string> listDir(const std::string& dir) {
     std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -45,8 +47,8 @@ inline std::string neutralCube(int n, const std::string& header = {}) {
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r)
-                s += std::to_string(r / double(n - 1)) + " " + std::to_string(g / double(n - 1)) + " " +
-                     std::to_string(b / double(n - 1)) + "\n";
+                s += std::to_string(r / double(n - 1)) + " " + std::to_string(g / double(n - 1)) +
+                     " " + std::to_string(b / double(n - 1)) + "\n";
     return s;
 }
 
@@ -59,7 +61,8 @@ struct NutexbFields {
 };
 
 inline void putU32(std::string& s, std::size_t at, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) s[at + static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xFF);
+    for (int i = 0; i < 4; ++i)
+        s[at + static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xFF);
 }
 
 // data bytes + 0x40 mip table + 0x70 footer.
@@ -69,8 +72,10 @@ inline std::string nutexbFile(const NutexbFields& f, std::size_t dataBytes) {
     const std::size_t F = dataBytes + 0x40;
     std::memcpy(s.data() + F, f.magic1, 4);
     std::memcpy(s.data() + F + 4, "color_grading_lut", 17);
-    const std::uint32_t v[] = {f.width, f.height, f.depth, f.format, f.type, f.mips, f.tiling, f.layers, f.dataSize};
-    for (int i = 0; i < 9; ++i) putU32(s, F + 0x44 + 4 * static_cast<std::size_t>(i), v[i]);
+    const std::uint32_t v[] = {f.width, f.height, f.depth,  f.format,  f.type,
+                               f.mips,  f.tiling, f.layers, f.dataSize};
+    for (int i = 0; i < 9; ++i)
+        putU32(s, F + 0x44 + 4 * static_cast<std::size_t>(i), v[i]);
     std::memcpy(s.data() + F + 0x68, f.magic2, 4);
     s[F + 0x6C] = 1;
     s[F + 0x6E] = 2;

@@ -23,14 +23,16 @@ void writePng(const std::string& path, int w, int h) {
     auto out = OIIO::ImageOutput::create(path);
     ASSERT_TRUE(out);
     std::vector<float> px(static_cast<std::size_t>(w) * h * 3);
-    for (std::size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>(i % 7) / 7.0f;
+    for (std::size_t i = 0; i < px.size(); ++i)
+        px[i] = static_cast<float>(i % 7) / 7.0f;
     ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::UINT8)));
     ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
     out->close();
 }
 
 std::string expand(std::string s, const std::string& dir) {
-    for (std::size_t at; (at = s.find("@/")) != std::string::npos;) s.replace(at, 2, "'" + dir + "'/");
+    for (std::size_t at; (at = s.find("@/")) != std::string::npos;)
+        s.replace(at, 2, "'" + dir + "'/");
     return s;
 }
 
@@ -42,11 +44,15 @@ TEST(ExitCodes, EverySubcommand) {
     writePng(dir + "/img.png", 64, 48);
     writePng(dir + "/big.png", 400, 300);
     const std::string unexpected = "The following argument was not expected: --no-such-option";
-    const std::string missingCube = "lutkit: error: " + dir + "/missing.cube: cannot open: No such file or directory";
-    const std::string missingPng = "lutkit: error: " + dir + "/missing.png: cannot read image: Could not open file";
-    const std::string badCube = "lutkit: error: " + dir +
-                                "/bad.cube:3:1: expected 8 data rows for LUT_3D_SIZE 2, found 1 before the end of the file";
-    const std::string badPng = "lutkit: error: " + dir + "/bad.png: cannot read image: Not a PNG file";
+    const std::string missingCube =
+        "lutkit: error: " + dir + "/missing.cube: cannot open: No such file or directory";
+    const std::string missingPng =
+        "lutkit: error: " + dir + "/missing.png: cannot read image: Could not open file";
+    const std::string badCube =
+        "lutkit: error: " + dir +
+        "/bad.cube:3:1: expected 8 data rows for LUT_3D_SIZE 2, found 1 before the end of the file";
+    const std::string badPng =
+        "lutkit: error: " + dir + "/bad.png: cannot read image: Not a PNG file";
     const std::vector<Case> cases = {
         // usage of lutkit itself
         {"", 2, "A subcommand is required"},
@@ -56,7 +62,8 @@ TEST(ExitCodes, EverySubcommand) {
         {"convert @/a.cube @/x.cube --interp cubic", 2, "--interp: cubic not in"},
         // neutral (no input file: a folder that does not exist stands for the missing file)
         {"neutral @/n.cube --no-such-option", 2, unexpected},
-        {"neutral @/nowhere/n.cube", 1, "lutkit: error: " + dir + "/nowhere/n.cube: cannot write: No such file or directory"},
+        {"neutral @/nowhere/n.cube", 1,
+         "lutkit: error: " + dir + "/nowhere/n.cube: cannot write: No such file or directory"},
         {"neutral @/n.cube --size 4", 0, ""},
         // convert
         {"convert @/a.cube @/c.nutexb --no-such-option", 2, unexpected},
@@ -71,7 +78,8 @@ TEST(ExitCodes, EverySubcommand) {
         // validate
         {"validate @/a.cube --no-such-option", 2, unexpected},
         {"validate @/missing.cube", 1, missingCube},
-        {"validate @/bad.cube", 1, dir + "/bad.cube:3:1: error: expected 8 data rows for LUT_3D_SIZE 2, found 1"},
+        {"validate @/bad.cube", 1,
+         dir + "/bad.cube:3:1: error: expected 8 data rows for LUT_3D_SIZE 2, found 1"},
         {"validate @/a.cube", 0, ""},
         // apply
         {"apply --lut @/a.cube @/img.png @/o.png --no-such-option", 2, unexpected},

@@ -42,7 +42,8 @@ TEST(Limits, CubeSize100000IsRefusedAtItsLineNamingTheLimit) {
     // checking would die here (12 PB).
     writeBytes(dir + "/huge.cube", "LUT_3D_SIZE 100000\n0 0 0\n");
     EXPECT_EQ(stripDir(readError(dir + "/huge.cube"), dir),
-              "huge.cube:1:13: LUT_3D_SIZE 100000 is over the limit of 256 (lut::limits::kMax3DSize) (found "
+              "huge.cube:1:13: LUT_3D_SIZE 100000 is over the limit of 256 "
+              "(lut::limits::kMax3DSize) (found "
               "'100000')");
     writeBytes(dir + "/huge1d.cube", "LUT_1D_SIZE 4294967296\n");
     EXPECT_THAT(readError(dir + "/huge1d.cube"), HasSubstr("65536"));
@@ -59,8 +60,9 @@ TEST(Limits, NutexbWidth2Pow31IsRefusedNamingTheLimit) {
     NutexbFields g;
     g.width = 1u << 31;
     writeBytes(dir + "/wide2.nutexb", nutexbFile(g, 1024));
-    EXPECT_EQ(stripDir(readError(dir + "/wide2.nutexb"), dir),
-              "wide2.nutexb: nutexb height: found 2, expected 2147483648 (equal to width for a LUT)");
+    EXPECT_EQ(
+        stripDir(readError(dir + "/wide2.nutexb"), dir),
+        "wide2.nutexb: nutexb height: found 2, expected 2147483648 (equal to width for a LUT)");
 }
 
 TEST(Limits, NutexbFileLargerThanAny256CubeIsRefusedBeforeReading) {
@@ -77,12 +79,14 @@ TEST(Limits, CubeWithFiftyMegabytesOfExtraRowsStopsAtTheFirstExtraRow) {
     const std::string row = "0.5 0.5 0.5\n";
     std::string extra;
     extra.reserve(50u << 20);
-    while (extra.size() < (50u << 20)) extra += row;
+    while (extra.size() < (50u << 20))
+        extra += row;
     writeBytes(dir + "/rows.cube", text + extra);
     // Line 1 is the size, lines 2..9 the 8 rows, line 10 the first row too many.
-    EXPECT_EQ(stripDir(readError(dir + "/rows.cube"), dir),
-              "rows.cube:10:1: too many data rows: expected 8 data rows for LUT_3D_SIZE 2, this is row 9 "
-              "(found '0.5 0.5 0.5')");
+    EXPECT_EQ(
+        stripDir(readError(dir + "/rows.cube"), dir),
+        "rows.cube:10:1: too many data rows: expected 8 data rows for LUT_3D_SIZE 2, this is row 9 "
+        "(found '0.5 0.5 0.5')");
     std::filesystem::remove_all(dir); // 50 MB
 }
 
@@ -91,8 +95,9 @@ TEST(Limits, CubeLineOfAGigabyteIsRefusedAfterTheLineLimit) {
     // A comment line that goes on for 1 GiB (zero bytes in a hole: nothing on disk).
     writeSparse(dir + "/longline.cube", "LUT_3D_SIZE 2\n# ", (1ull << 30) + 2);
     const std::string msg = stripDir(readError(dir + "/longline.cube"), dir);
-    EXPECT_THAT(msg, HasSubstr("longline.cube:2:65537: line is longer than the limit of 65536 bytes "
-                               "(lut::limits::kMaxTextLineBytes)"));
+    EXPECT_THAT(msg,
+                HasSubstr("longline.cube:2:65537: line is longer than the limit of 65536 bytes "
+                          "(lut::limits::kMaxTextLineBytes)"));
     // A data line of 100 MB of digits, really written.
     writeBytes(dir + "/longrow.cube", "LUT_3D_SIZE 2\n" + std::string(100u << 20, '1') + " 0 0\n");
     EXPECT_THAT(stripDir(readError(dir + "/longrow.cube"), dir),
@@ -112,26 +117,31 @@ TEST(Limits, CubeFileOverTheFileSizeLimitIsRefusedBeforeReading) {
 TEST(Limits, ImageHeaderClaimingFourGigapixelsIsALimitError) {
     const std::string dir = lut::test::tempDir();
     // Same crafted header as in the malformed table; here the error type is checked too.
-    auto be = [](std::uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+    auto be = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
     auto crc = [](const std::string& s) {
         std::uint32_t c = 0xFFFFFFFFu;
         for (unsigned char ch : s) {
             c ^= ch;
-            for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+            for (int k = 0; k < 8; ++k)
+                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
         }
         return ~c;
     };
-    const std::string ihdr = "IHDR" + be(65536) + be(65536) + std::string("\x08\x02\x00\x00\x00", 5);
+    const std::string ihdr =
+        "IHDR" + be(65536) + be(65536) + std::string("\x08\x02\x00\x00\x00", 5);
     const std::string idat = std::string("IDAT") + "\x78\x01";
-    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr + be(crc(ihdr)) + be(2) + idat +
-                            be(crc(idat)) + be(0) + "IEND" + be(crc("IEND"));
+    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr + be(crc(ihdr)) +
+                            be(2) + idat + be(crc(idat)) + be(0) + "IEND" + be(crc("IEND"));
     writeBytes(dir + "/huge.png", png);
     try {
         (void)lut::formats::readLut(dir + "/huge.png");
         FAIL() << "accepted";
     } catch (const lut::LimitError& e) {
-        EXPECT_EQ(stripDir(e.what(), dir), "huge.png: image is 65536x65536 with 3 channels, over the limit of "
-                                           "268435456 pixels and 64 channels");
+        EXPECT_EQ(stripDir(e.what(), dir),
+                  "huge.png: image is 65536x65536 with 3 channels, over the limit of "
+                  "268435456 pixels and 64 channels");
     }
 }
 

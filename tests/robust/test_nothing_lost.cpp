@@ -25,7 +25,9 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
 
 void writePng(const std::string& path, int w, int h, float r, float g, float b) {
     auto out = OIIO::ImageOutput::create(path);
@@ -42,7 +44,8 @@ void writePng(const std::string& path, int w, int h, float r, float g, float b) 
 }
 
 const std::string kGood = neutralCube(2);
-const std::string kDarkening = "LUT_3D_SIZE 2\n" + std::string("0 0 0\n") + "0.5 0 0\n0 0.5 0\n0.5 0.5 0\n0 0 0.5\n"
+const std::string kDarkening = "LUT_3D_SIZE 2\n" + std::string("0 0 0\n") +
+                               "0.5 0 0\n0 0.5 0\n0.5 0.5 0\n0 0 0.5\n"
                                "0.5 0 0.5\n0 0.5 0.5\n0.5 0.5 0.5\n";
 
 TEST(NothingLost, ReadErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
@@ -62,7 +65,8 @@ TEST(NothingLost, WriteErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
     writePng(dir + "/out.png", 64, 8, 0.25f, 0.5f, 0.75f);
     const std::string before = readBytes(dir + "/out.png");
     // PNG cannot hold float: refused by the writer, after the output was chosen.
-    auto r = runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/out.png") + " --bit-depth 32");
+    auto r =
+        runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/out.png") + " --bit-depth 32");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("out.png: PNG stores 8 or 16 bits per channel, not float"));
     EXPECT_EQ(readBytes(dir + "/out.png"), before);
@@ -139,7 +143,8 @@ pid_t spawnCli(const std::vector<std::string>& args) {
     std::vector<char*> argv;
     std::vector<std::string> store = args;
     store.insert(store.begin(), "lutkit");
-    for (auto& a : store) argv.push_back(a.data());
+    for (auto& a : store)
+        argv.push_back(a.data());
     argv.push_back(nullptr);
     const pid_t pid = ::fork();
     if (pid == 0) {

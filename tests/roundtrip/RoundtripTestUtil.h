@@ -21,19 +21,24 @@ namespace lut::rt {
 
 using Edit = std::function<glm::dvec3(glm::dvec3)>;
 
-inline double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
+inline double clamp01(double v) {
+    return std::clamp(v, 0.0, 1.0);
+}
 
 // Monotone cubic (Fritsch-Carlson) through control points: what a "curves" dialog draws.
 class MonotoneCurve {
 public:
-    MonotoneCurve(std::vector<double> x, std::vector<double> y) : m_x(std::move(x)), m_y(std::move(y)) {
+    MonotoneCurve(std::vector<double> x, std::vector<double> y)
+        : m_x(std::move(x)), m_y(std::move(y)) {
         const std::size_t n = m_x.size();
         std::vector<double> d(n - 1);
-        for (std::size_t i = 0; i + 1 < n; ++i) d[i] = (m_y[i + 1] - m_y[i]) / (m_x[i + 1] - m_x[i]);
+        for (std::size_t i = 0; i + 1 < n; ++i)
+            d[i] = (m_y[i + 1] - m_y[i]) / (m_x[i + 1] - m_x[i]);
         m_m.resize(n);
         m_m[0] = d[0];
         m_m[n - 1] = d[n - 2];
-        for (std::size_t i = 1; i + 1 < n; ++i) m_m[i] = d[i - 1] * d[i] <= 0 ? 0.0 : (d[i - 1] + d[i]) / 2;
+        for (std::size_t i = 1; i + 1 < n; ++i)
+            m_m[i] = d[i - 1] * d[i] <= 0 ? 0.0 : (d[i - 1] + d[i]) / 2;
         for (std::size_t i = 0; i + 1 < n; ++i) {
             if (d[i] == 0) {
                 m_m[i] = m_m[i + 1] = 0;
@@ -51,11 +56,12 @@ public:
     double operator()(double v) const {
         v = clamp01(v);
         std::size_t i = 0;
-        while (i + 2 < m_x.size() && v > m_x[i + 1]) ++i;
+        while (i + 2 < m_x.size() && v > m_x[i + 1])
+            ++i;
         const double h = m_x[i + 1] - m_x[i], t = (v - m_x[i]) / h;
         const double t2 = t * t, t3 = t2 * t;
-        return (2 * t3 - 3 * t2 + 1) * m_y[i] + (t3 - 2 * t2 + t) * h * m_m[i] + (-2 * t3 + 3 * t2) * m_y[i + 1] +
-               (t3 - t2) * h * m_m[i + 1];
+        return (2 * t3 - 3 * t2 + 1) * m_y[i] + (t3 - 2 * t2 + t) * h * m_m[i] +
+               (-2 * t3 + 3 * t2) * m_y[i + 1] + (t3 - t2) * h * m_m[i + 1];
     }
 
 private:
@@ -70,8 +76,8 @@ inline Edit curvesEdit() {
     return [=](glm::dvec3 c) { return glm::dvec3(r(c.x), g(c.y), b(c.z)); };
 }
 // Levels: input black/white, midtone gamma, output range.
-inline Edit levelsEdit(double black = 0.06, double white = 0.92, double gamma = 1.2, double outLo = 0.02,
-                       double outHi = 0.98) {
+inline Edit levelsEdit(double black = 0.06, double white = 0.92, double gamma = 1.2,
+                       double outLo = 0.02, double outHi = 0.98) {
     return [=](glm::dvec3 c) {
         glm::dvec3 o;
         for (int i = 0; i < 3; ++i) {
@@ -81,11 +87,14 @@ inline Edit levelsEdit(double black = 0.06, double white = 0.92, double gamma = 
         return o;
     };
 }
-inline double luma(glm::dvec3 c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+inline double luma(glm::dvec3 c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
 inline Edit saturationEdit(double amount = 1.4) {
     return [=](glm::dvec3 c) {
         const double l = luma(c);
-        return glm::dvec3(clamp01(l + amount * (c.x - l)), clamp01(l + amount * (c.y - l)), clamp01(l + amount * (c.z - l)));
+        return glm::dvec3(clamp01(l + amount * (c.x - l)), clamp01(l + amount * (c.y - l)),
+                          clamp01(l + amount * (c.z - l)));
     };
 }
 // A gradient map: luminance through a piecewise-linear gradient (may invert).
@@ -93,7 +102,8 @@ inline Edit gradientMapEdit(std::vector<double> stops, std::vector<glm::dvec3> c
     return [=](glm::dvec3 c) {
         const double l = clamp01(luma(c));
         std::size_t i = 0;
-        while (i + 2 < stops.size() && l > stops[i + 1]) ++i;
+        while (i + 2 < stops.size() && l > stops[i + 1])
+            ++i;
         const double t = clamp01((l - stops[i]) / (stops[i + 1] - stops[i]));
         return colours[i] * (1.0 - t) + colours[i + 1] * t;
     };
@@ -122,12 +132,15 @@ inline void applyEdit(Image& img, const Edit& f, int bitDepth) {
             const glm::dvec3 o = f(glm::dvec3(p[0], p[1], p[2]));
             for (int c = 0; c < 3; ++c) {
                 const float v = static_cast<float>(o[c]);
-                p[c] = bitDepth == 8 ? fromUnorm8(toUnorm8(v)) : bitDepth == 16 ? fromUnorm16(toUnorm16(v)) : v;
+                p[c] = bitDepth == 8    ? fromUnorm8(toUnorm8(v))
+                       : bitDepth == 16 ? fromUnorm16(toUnorm16(v))
+                                        : v;
             }
         }
 }
 inline void quantize(Image& img, int bitDepth) {
-    applyEdit(img, [](glm::dvec3 c) { return c; }, bitDepth);
+    applyEdit(
+        img, [](glm::dvec3 c) { return c; }, bitDepth);
 }
 
 // A screenshot-like image: smooth gradients, some saturated shapes, deterministic noise.
@@ -142,8 +155,10 @@ inline Image syntheticScreenshot(int w = 400, int h = 260, int bitDepth = 8) {
             p[0] = 0.2f + 0.6f * fx + u(rng);
             p[1] = 0.3f + 0.5f * fy + u(rng);
             p[2] = 0.5f + 0.4f * std::sin(6.0f * fx + 3.0f * fy) * 0.5f + u(rng);
-            if ((x / 40 + y / 40) % 5 == 0) p[0] = 0.9f, p[1] = 0.1f, p[2] = 0.15f;
-            for (int c = 0; c < 3; ++c) p[c] = std::clamp(p[c], 0.0f, 1.0f);
+            if ((x / 40 + y / 40) % 5 == 0)
+                p[0] = 0.9f, p[1] = 0.1f, p[2] = 0.15f;
+            for (int c = 0; c < 3; ++c)
+                p[c] = std::clamp(p[c], 0.0f, 1.0f);
             p[3] = 1.0f;
         }
     quantize(img, bitDepth);
@@ -158,7 +173,8 @@ inline Image cropOrPad(const Image& src, int x0, int y0, int w, int h, float fil
             const int sx = x0 + x, sy = y0 + y;
             float* d = out.pixel(x, y);
             d[3] = 1.0f;
-            if (sx < 0 || sy < 0 || sx >= src.width() || sy >= src.height()) continue;
+            if (sx < 0 || sy < 0 || sx >= src.width() || sy >= src.height())
+                continue;
             const float* s = src.pixel(sx, sy);
             std::copy(s, s + 4, d);
         }
@@ -174,7 +190,8 @@ inline Image resizeBilinear(const Image& src, double factor) {
         for (int x = 0; x < w; ++x) {
             const double sx = std::clamp((x + 0.5) / factor - 0.5, 0.0, src.width() - 1.0);
             const double sy = std::clamp((y + 0.5) / factor - 0.5, 0.0, src.height() - 1.0);
-            const int x0 = std::min(static_cast<int>(sx), src.width() - 2), y0 = std::min(static_cast<int>(sy), src.height() - 2);
+            const int x0 = std::min(static_cast<int>(sx), src.width() - 2),
+                      y0 = std::min(static_cast<int>(sy), src.height() - 2);
             const double fx = sx - x0, fy = sy - y0;
             for (int c = 0; c < 4; ++c)
                 out.pixel(x, y)[c] = static_cast<float>(

@@ -2,10 +2,10 @@
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"
 
-#include "lut/roundtrip/Embed.h"
-#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/Sampler.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,9 @@ using lut::test::runCli;
 
 namespace {
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
 
 std::string writeScreenshot(const std::string& dir, int bitDepth) {
     const std::string path = dir + "/shot" + std::to_string(bitDepth) + ".png";
@@ -62,8 +64,10 @@ TEST(RoundtripCli, EmbedKeepsTheBitDepthAndTheScreenshot) {
     const std::string shot = writeScreenshot(dir, 8);
     EXPECT_EQ(runCli("embed " + q(shot) + " " + q(shot)).exitCode, 1);
     EXPECT_EQ(runCli("embed " + q(shot)).exitCode, 2);
-    EXPECT_EQ(runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --corner middle").exitCode, 2);
-    const auto tooBig = runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --size 40 --scale 3");
+    EXPECT_EQ(runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --corner middle").exitCode,
+              2);
+    const auto tooBig =
+        runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --size 40 --scale 3");
     EXPECT_EQ(tooBig.exitCode, 1);
     EXPECT_NE(tooBig.err.find("needs"), std::string::npos);
 }
@@ -86,11 +90,13 @@ TEST(RoundtripCli, ExtractRawMatchesTheEdit) {
         for (int g = 0; g < 16; ++g)
             for (int rr = 0; rr < 16; ++rr) {
                 const glm::dvec3 want = f(glm::dvec3(rr, g, b) / 15.0);
-                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(lut.at(rr, g, b)[c] - want[c]) * 255.0);
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::fabs(lut.at(rr, g, b)[c] - want[c]) * 255.0);
             }
     EXPECT_LE(worst, 0.51);
     // an output size and a strip image work too
-    ASSERT_EQ(runCli("extract " + q(edited) + " " + q(dir + "/out33.cube") + " --size 33").exitCode, 0);
+    ASSERT_EQ(runCli("extract " + q(edited) + " " + q(dir + "/out33.cube") + " --size 33").exitCode,
+              0);
     EXPECT_EQ(formats::readLut(dir + "/out33.cube").toLut3D().size(), 33);
 }
 
@@ -119,12 +125,14 @@ TEST(RoundtripCli, ExtractSmashWritesTheCompensatedNutexb) {
     nf.cube = Lut3D::identity(16);
     formats::writeLut(neutral, nf);
     const std::string withOrig = dir + "/with_original.cube";
-    ASSERT_EQ(runCli("extract " + q(edited) + " " + q(withOrig) + " --target smash --original-lut " + q(neutral))
+    ASSERT_EQ(runCli("extract " + q(edited) + " " + q(withOrig) +
+                     " --target smash --original-lut " + q(neutral))
                   .exitCode,
               0);
     const Lut3D w = formats::readLut(withOrig).toLut3D();
     for (std::size_t i = 0; i < w.entryCount(); ++i)
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(w.entries()[i][c], lib.lut.entries()[i][c], 1e-5);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(w.entries()[i][c], lib.lut.entries()[i][c], 1e-5);
 }
 
 TEST(RoundtripCli, ExtractFailsAndWarnsClearly) {
@@ -134,11 +142,13 @@ TEST(RoundtripCli, ExtractFailsAndWarnsClearly) {
     EXPECT_EQ(none.exitCode, 1);
     EXPECT_NE(none.err.find("no LUT patch found"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(dir + "/x.cube"));
-    EXPECT_EQ(runCli("extract " + q(shot) + " " + q(dir + "/x.cube") + " --target game").exitCode, 2);
+    EXPECT_EQ(runCli("extract " + q(shot) + " " + q(dir + "/x.cube") + " --target game").exitCode,
+              2);
     // a clipping edit: the LUT is written, with a warning on stderr
     const std::string emb = dir + "/emb.png";
     ASSERT_EQ(runCli("embed " + q(shot) + " " + q(emb)).exitCode, 0);
-    const std::string edited = editFile(emb, dir + "/clipped.png", levelsEdit(0.3, 0.6, 1.0, 0.0, 1.0));
+    const std::string edited =
+        editFile(emb, dir + "/clipped.png", levelsEdit(0.3, 0.6, 1.0, 0.0, 1.0));
     const auto r = runCli("extract " + q(edited) + " " + q(dir + "/clipped.cube"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("warning: "), std::string::npos);
@@ -156,7 +166,8 @@ TEST(RoundtripCli, FitWritesTheLutAndReportsTheError) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("error rms"), std::string::npos);
     EXPECT_NE(r.out.find("extrapolated"), std::string::npos);
-    EXPECT_NE(r.err.find("cover only"), std::string::npos); // a screenshot covers little of the cube
+    EXPECT_NE(r.err.find("cover only"),
+              std::string::npos); // a screenshot covers little of the cube
     const Lut3D lut = formats::readLut(out).toLut3D();
     ASSERT_EQ(lut.size(), 17);
     // where the screenshot has pixels, the fit follows the edit
@@ -168,7 +179,8 @@ TEST(RoundtripCli, FitWritesTheLutAndReportsTheError) {
             const float* p = img.image.pixel(x, y);
             const glm::vec3 got = s->sample(glm::vec3(p[0], p[1], p[2]));
             const glm::dvec3 want = f(glm::dvec3(p[0], p[1], p[2]));
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(got[c] - want[c]) * 255.0);
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::fabs(got[c] - want[c]) * 255.0);
         }
     EXPECT_LE(worst, 3.0);
     // mismatched sizes are bad input

@@ -21,7 +21,8 @@ double latticeErrorSteps(const Lut3D& lut, const Edit& f) {
             for (int r = 0; r < n; ++r) {
                 const glm::dvec3 want = f(glm::dvec3(r, g, b) / double(n - 1));
                 const glm::vec3 got = lut.at(r, g, b);
-                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(got[c] - want[c]) * 255.0);
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::fabs(got[c] - want[c]) * 255.0);
             }
     return worst;
 }
@@ -35,7 +36,8 @@ EmbedOptions uniform16() {
     o.lattice = PatchLattice::Uniform;
     return o;
 }
-Embedded embedded(int bitDepth = 8, EmbedOptions o = uniform16(), int width = 400, int height = 260) {
+Embedded embedded(int bitDepth = 8, EmbedOptions o = uniform16(), int width = 400,
+                  int height = 260) {
     Embedded e{syntheticScreenshot(width, height, bitDepth), {}};
     o.bitDepth = bitDepth;
     e.placement = embedPatch(e.image.view(), o);
@@ -89,9 +91,11 @@ TEST(Embed, SmashLatticeIsTheDefault) {
     EXPECT_EQ(e.placement.frameHeight, 32);
     // the lattice values: what the game shows for i/15 through a neutral LUT
     for (int i = 0; i < kSmashLatticeSize; ++i) {
-        const double want = i == 11 ? 1.0 : srgbEnc(std::min(1.0, std::pow(1.3703 * i / 15.0, 2.2)));
+        const double want =
+            i == 11 ? 1.0 : srgbEnc(std::min(1.0, std::pow(1.3703 * i / 15.0, 2.2)));
         EXPECT_NEAR(patchInputValue(PatchLattice::Smash, i, 12, 32), want, 1e-6) << i;
-        EXPECT_EQ(patchInputValue(PatchLattice::Smash, i, 12, 8), fromUnorm8(toUnorm8(float(want))));
+        EXPECT_EQ(patchInputValue(PatchLattice::Smash, i, 12, 8),
+                  fromUnorm8(toUnorm8(float(want))));
     }
     const FindResult f = findPatch(e.image.view());
     ASSERT_EQ(f.status, FindStatus::Found);
@@ -125,7 +129,8 @@ TEST(Embed, EveryLayoutCornerAndScaleIsFound) {
         o.corner = c.corner;
         auto e = embedded(8, o);
         const FindResult f = findPatch(e.image.view());
-        ASSERT_EQ(f.status, FindStatus::Found) << toString(c.layout) << " " << c.size << ": " << f.message;
+        ASSERT_EQ(f.status, FindStatus::Found)
+            << toString(c.layout) << " " << c.size << ": " << f.message;
         EXPECT_EQ(f.placement.layout, c.layout);
         EXPECT_EQ(f.placement.size, c.size);
         EXPECT_EQ(f.placement.frameX, e.placement.frameX);
@@ -140,11 +145,12 @@ TEST(Embed, EveryLayoutCornerAndScaleIsFound) {
 }
 
 TEST(Extract, KnownGlobalEditsAreRecoveredAtTheLattice8Bit) {
-    const std::pair<const char*, Edit> edits[] = {{"curves", curvesEdit()},
-                                                  {"levels", levelsEdit()},
-                                                  {"saturation", saturationEdit()},
-                                                  {"gradient map", warmGradientMap()},
-                                                  {"inverting gradient map", invertingGradientMap()}};
+    const std::pair<const char*, Edit> edits[] = {
+        {"curves", curvesEdit()},
+        {"levels", levelsEdit()},
+        {"saturation", saturationEdit()},
+        {"gradient map", warmGradientMap()},
+        {"inverting gradient map", invertingGradientMap()}};
     for (const auto& [name, edit] : edits) {
         auto e = embedded(8);
         applyEdit(e.image, edit, 8);
@@ -180,8 +186,9 @@ TEST(Extract, OutputSizeResamplesTheEditExactly) {
     const double err = latticeErrorSteps(r.lut, edit);
     EXPECT_GT(err, 0.0);
     EXPECT_LE(err, 2.0 * r.subLatticeError.maxSteps8() + 0.05);
-    std::printf("[ measured ] curves at 33^3 from a 16^3 patch: %.3f steps (sub-lattice %.3f, expected %.3f)\n", err,
-                r.subLatticeError.maxSteps8(), r.expectedError.maxSteps8());
+    std::printf("[ measured ] curves at 33^3 from a 16^3 patch: %.3f steps (sub-lattice %.3f, "
+                "expected %.3f)\n",
+                err, r.subLatticeError.maxSteps8(), r.expectedError.maxSteps8());
 }
 
 TEST(Find, SurvivesCropAndMoveByWholePixels) {
@@ -205,7 +212,8 @@ TEST(Find, BackgroundOfTheMarkerColourDoesNotHideTheFrame) {
     for (float bg : {1.0f, 0.0f}) {
         Image img(300, 200, bg);
         for (int y = 0; y < 200; ++y)
-            for (int x = 0; x < 300; ++x) img.pixel(x, y)[3] = 1.0f;
+            for (int x = 0; x < 300; ++x)
+                img.pixel(x, y)[3] = 1.0f;
         EmbedOptions o;
         o.margin = 0;
         const auto p = embedPatch(img.view(), o);
@@ -225,7 +233,8 @@ TEST(Find, NotFoundIsAnError) {
     // a frame whose header was painted over is not trusted
     auto e = embedded(8);
     for (int y = e.placement.frameY + 2; y < e.placement.frameY + 4; ++y)
-        for (int x = e.placement.frameX + 2; x < e.placement.frameX + 40; ++x) e.image.pixel(x, y)[0] = 0.5f;
+        for (int x = e.placement.frameX + 2; x < e.placement.frameX + 40; ++x)
+            e.image.pixel(x, y)[0] = 0.5f;
     EXPECT_EQ(findPatch(e.image.view()).status, FindStatus::NotFound);
     try {
         extractLut(e.image.view(), {});
@@ -273,7 +282,9 @@ TEST(Checks, NoiseInsideBlocksIsANonGlobalEdit) {
     std::normal_distribution<float> noise(0.0f, 3.0f / 255.0f);
     for (int y = 0; y < e.image.height(); ++y)
         for (int x = 0; x < e.image.width(); ++x)
-            for (int c = 0; c < 3; ++c) e.image.pixel(x, y)[c] = std::clamp(e.image.pixel(x, y)[c] + noise(rng), 0.0f, 1.0f);
+            for (int c = 0; c < 3; ++c)
+                e.image.pixel(x, y)[c] =
+                    std::clamp(e.image.pixel(x, y)[c] + noise(rng), 0.0f, 1.0f);
     quantize(e.image, 8);
     const ExtractResult r = extractLut(e.image.view(), {});
     EXPECT_TRUE(r.has(RoundtripWarning::NonGlobalEdit));
@@ -291,9 +302,11 @@ TEST(Checks, BrushStrokeOnAScaleOnePatchIsANonGlobalEdit) {
     for (int y = cy - 6; y <= cy + 6; ++y)
         for (int x = cx - 6; x <= cx + 6; ++x) {
             const double d = std::hypot(x - cx, y - cy) / 6.0;
-            if (d > 1.0) continue;
+            if (d > 1.0)
+                continue;
             float* p = e.image.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = float(p[c] * d + 0.8 * (1 - d));
+            for (int c = 0; c < 3; ++c)
+                p[c] = float(p[c] * d + 0.8 * (1 - d));
         }
     quantize(e.image, 8);
     const ExtractResult r = extractLut(e.image.view(), {});
@@ -314,7 +327,8 @@ TEST(Checks, BlurIsANonGlobalEdit) {
                 for (int c = 0; c < 3; ++c) {
                     double acc = 0;
                     for (int dy = -1; dy <= 1; ++dy)
-                        for (int dx = -1; dx <= 1; ++dx) acc += e.image.pixel(x + dx, y + dy)[c];
+                        for (int dx = -1; dx <= 1; ++dx)
+                            acc += e.image.pixel(x + dx, y + dy)[c];
                     blurred.pixel(x, y)[c] = float(acc / 9.0);
                 }
         quantize(blurred, 8);
@@ -332,10 +346,12 @@ TEST(Checks, BlurIsANonGlobalEdit) {
 TEST(Checks, ProfileConversionIsRecognised) {
     // sRGB -> gamma 2.2 profile conversion of the stored values, and a pure gamma change
     const Edit toGamma22 = [](glm::dvec3 c) {
-        return glm::dvec3(std::pow(srgbDec(c.x), 1 / 2.2), std::pow(srgbDec(c.y), 1 / 2.2), std::pow(srgbDec(c.z), 1 / 2.2));
+        return glm::dvec3(std::pow(srgbDec(c.x), 1 / 2.2), std::pow(srgbDec(c.y), 1 / 2.2),
+                          std::pow(srgbDec(c.z), 1 / 2.2));
     };
     const Edit gamma18 = [](glm::dvec3 c) {
-        return glm::dvec3(std::pow(c.x, 2.2 / 1.8), std::pow(c.y, 2.2 / 1.8), std::pow(c.z, 2.2 / 1.8));
+        return glm::dvec3(std::pow(c.x, 2.2 / 1.8), std::pow(c.y, 2.2 / 1.8),
+                          std::pow(c.z, 2.2 / 1.8));
     };
     for (const auto& edit : {toGamma22, gamma18}) {
         auto e = embedded(8);
@@ -377,12 +393,14 @@ TEST(Extract, ExpectedErrorPredictsTheErrorBetweenLatticePoints) {
                     const glm::dvec3 in = (glm::dvec3(rr, g, b) + 0.5) / 15.0;
                     const glm::vec3 got = fn(glm::vec3(in));
                     const glm::dvec3 want = edit(in);
-                    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(got[c] - want[c]) * 255.0);
+                    for (int c = 0; c < 3; ++c)
+                        worst = std::max(worst, std::fabs(got[c] - want[c]) * 255.0);
                 }
         EXPECT_LE(worst, 2.0 * r.expectedError.maxSteps8() + 0.5);
         EXPECT_GE(worst, 0.25 * r.expectedError.maxSteps8());
-        std::printf("[ measured ] 16^3 patch between lattice points: true max %.3f steps, predicted %.3f\n", worst,
-                    r.expectedError.maxSteps8());
+        std::printf(
+            "[ measured ] 16^3 patch between lattice points: true max %.3f steps, predicted %.3f\n",
+            worst, r.expectedError.maxSteps8());
     }
 }
 
@@ -391,7 +409,8 @@ TEST(PatchFunction, ExactOnTheLatticeAndDefinedEverywhere) {
     std::vector<float> axis = {0.0f, 0.2f, 0.5f, 0.7f, 1.0f}; // rectilinear
     for (int b = 0; b < 5; ++b)
         for (int g = 0; g < 5; ++g)
-            for (int r = 0; r < 5; ++r) v.at(r, g, b) = glm::vec3(axis[r], axis[g], axis[b]) * 2.0f;
+            for (int r = 0; r < 5; ++r)
+                v.at(r, g, b) = glm::vec3(axis[r], axis[g], axis[b]) * 2.0f;
     const PatchFunction f(v, axis);
     EXPECT_EQ(f(glm::vec3(0.5f, 0.2f, 0.7f)), glm::vec3(1.0f, 0.4f, 1.4f));
     // a linear function on a rectilinear grid is reproduced between points too
@@ -422,7 +441,8 @@ TEST(Find, NonFiniteAndExtremePixelsAreHarmless) {
     Image bad(200, 100, NAN);
     for (int y = 0; y < 100; ++y)
         for (int x = 0; x < 200; ++x)
-            if ((x + y) % 2) bad.pixel(x, y)[0] = INFINITY;
+            if ((x + y) % 2)
+                bad.pixel(x, y)[0] = INFINITY;
     EXPECT_EQ(findPatch(bad.view()).status, FindStatus::NotFound);
     EXPECT_EQ(findPatch(Image().view()).status, FindStatus::NotFound);
 }

@@ -2,9 +2,9 @@
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"
 
-#include "lut/roundtrip/Fit.h"
-#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/interp/Sampler.h"
+#include "lut/roundtrip/Fit.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,8 @@ Edit smoothEdit() {
     return [curves](glm::dvec3 c) {
         const glm::dvec3 k = curves(c);
         const double l = luma(k);
-        return glm::dvec3(clamp01(0.9 * k.x + 0.1 * l + 0.02), clamp01(k.y), clamp01(0.85 * k.z + 0.15 * l));
+        return glm::dvec3(clamp01(0.9 * k.x + 0.1 * l + 0.02), clamp01(k.y),
+                          clamp01(0.85 * k.z + 0.15 * l));
     };
 }
 
@@ -33,7 +34,8 @@ Image randomColours(int w, int h, unsigned seed) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float* p = img.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = fromUnorm8(toUnorm8(u(rng)));
+            for (int c = 0; c < 3; ++c)
+                p[c] = fromUnorm8(toUnorm8(u(rng)));
         }
     return img;
 }
@@ -52,7 +54,8 @@ double latticeError(const Lut3D& lut, const Edit& f) {
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r) {
                 const glm::dvec3 want = f(glm::dvec3(r, g, b) / double(n - 1));
-                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(lut.at(r, g, b)[c] - want[c]) * 255.0);
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::fabs(lut.at(r, g, b)[c] - want[c]) * 255.0);
             }
     return worst;
 }
@@ -77,7 +80,8 @@ TEST(Fit, RecoversAKnownLutFromADensePair) {
         const FitResult r = fitLut(before.view(), edited(before, f, depth).view(), o);
         EXPECT_TRUE(r.converged);
         const double err = latticeError(r.lut, f);
-        std::printf("[ measured ] fit 17^3 from 65k random colours (%d-bit): lattice max %.3f steps, pixel rms %.3f "
+        std::printf("[ measured ] fit 17^3 from 65k random colours (%d-bit): lattice max %.3f "
+                    "steps, pixel rms %.3f "
                     "max %.3f, extrapolated %.3f%%, %d CG iterations\n",
                     depth, err, r.rmsSteps8, r.maxSteps8, 100 * r.extrapolatedShare, r.iterations);
         EXPECT_LE(err, 1.0) << depth;
@@ -102,7 +106,8 @@ TEST(Fit, FewColoursStayExactAndBounded) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(0.05f, 0.95f);
     std::vector<glm::vec3> palette(12);
-    for (auto& p : palette) p = glm::vec3(u(rng), u(rng), u(rng));
+    for (auto& p : palette)
+        p = glm::vec3(u(rng), u(rng), u(rng));
     for (int y = 0; y < 90; ++y)
         for (int x = 0; x < 120; ++x) {
             const glm::vec3 c = palette[(x / 30) + 4 * (y / 30)];
@@ -124,7 +129,8 @@ TEST(Fit, FewColoursStayExactAndBounded) {
     for (const auto& c : palette) {
         const glm::vec3 got = s->sample(c);
         const glm::dvec3 want = f(glm::dvec3(c));
-        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[ch], want[ch], 1.0 / 255.0);
+        for (int ch = 0; ch < 3; ++ch)
+            EXPECT_NEAR(got[ch], want[ch], 1.0 / 255.0);
     }
 }
 
@@ -134,15 +140,18 @@ TEST(Fit, NoiseIsAveragedAway) {
     Image after = edited(before, f, 32);
     std::mt19937 rng(9);
     std::normal_distribution<float> noise(0.0f, 3.0f / 255.0f);
-    for (auto& v : after.pixels()) v += noise(rng);
+    for (auto& v : after.pixels())
+        v += noise(rng);
     for (int y = 0; y < after.height(); ++y)
-        for (int x = 0; x < after.width(); ++x) after.pixel(x, y)[3] = 1.0f;
+        for (int x = 0; x < after.width(); ++x)
+            after.pixel(x, y)[3] = 1.0f;
     quantize(after, 8);
     FitOptions o;
     o.size = 17;
     const FitResult r = fitLut(before.view(), after.view(), o);
     const double err = latticeError(r.lut, f);
-    std::printf("[ measured ] fit with 3-step noise: lattice max %.3f steps, pixel rms %.3f\n", err, r.rmsSteps8);
+    std::printf("[ measured ] fit with 3-step noise: lattice max %.3f steps, pixel rms %.3f\n", err,
+                r.rmsSteps8);
     EXPECT_GT(r.rmsSteps8, 2.5); // the noise is in the data, not in the fit
     EXPECT_LT(r.rmsSteps8, 3.6);
     // single pixels are off by up to 12 steps; the lattice (about 16 pixels per cell, fewer at
@@ -160,14 +169,16 @@ TEST(Fit, OutliersAreDownWeighted) {
     for (int y = 0; y < after.height(); ++y)
         for (int x = 0; x < after.width(); ++x)
             if (u(rng) < 0.05f)
-                for (int c = 0; c < 3; ++c) after.pixel(x, y)[c] = fromUnorm8(toUnorm8(u(rng)));
+                for (int c = 0; c < 3; ++c)
+                    after.pixel(x, y)[c] = fromUnorm8(toUnorm8(u(rng)));
     FitOptions o;
     o.size = 17;
     const FitResult robust = fitLut(before.view(), after.view(), o);
     o.robust = false;
     const FitResult plain = fitLut(before.view(), after.view(), o);
     const double eRobust = latticeError(robust.lut, f), ePlain = latticeError(plain.lut, f);
-    std::printf("[ measured ] fit with 5%% outliers: lattice max %.3f steps robust, %.3f plain\n", eRobust, ePlain);
+    std::printf("[ measured ] fit with 5%% outliers: lattice max %.3f steps robust, %.3f plain\n",
+                eRobust, ePlain);
     EXPECT_TRUE(robust.has(RoundtripWarning::Outliers));
     EXPECT_GT(robust.outlierPixels, 2000u);
     EXPECT_LE(eRobust, 3.0);
@@ -176,16 +187,19 @@ TEST(Fit, OutliersAreDownWeighted) {
 
 TEST(Fit, NaturalImageWarnsAboutCoverage) {
     const std::string path = lut::test::samplePath("sample_scene.png");
-    const Image before = std::filesystem::exists(path) ? formats::readImage(path).image : syntheticScreenshot();
+    const Image before =
+        std::filesystem::exists(path) ? formats::readImage(path).image : syntheticScreenshot();
     const Edit f = curvesEdit();
     const FitResult r = fitLut(before.view(), edited(before, f, 8).view());
     EXPECT_TRUE(r.has(RoundtripWarning::LowCoverage));
     EXPECT_LE(r.rmsSteps8, 0.7);
     EXPECT_LE(r.maxSteps8, 2.5);
     expectSane(r.lut);
-    std::printf("[ measured ] fit 33^3 to the sample scene: rms %.3f max %.3f steps, %.2f%% extrapolated, %d CG "
+    std::printf("[ measured ] fit 33^3 to the sample scene: rms %.3f max %.3f steps, %.2f%% "
+                "extrapolated, %d CG "
                 "iterations%s\n",
-                r.rmsSteps8, r.maxSteps8, 100 * r.extrapolatedShare, r.iterations, r.converged ? "" : " (not converged)");
+                r.rmsSteps8, r.maxSteps8, 100 * r.extrapolatedShare, r.iterations,
+                r.converged ? "" : " (not converged)");
 }
 
 TEST(Fit, RejectsMismatchedAndDegenerateInput) {

@@ -4,12 +4,12 @@
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"
 
-#include "lut/roundtrip/Embed.h"
-#include "lut/ops/Resample.h"
-#include "lut/interp/Sampler.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/interp/Sampler.h"
+#include "lut/ops/Resample.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <gtest/gtest.h>
 
@@ -25,9 +25,11 @@ namespace {
 // Display-encoded frame the game shows for a linear scene pixel with its LUT (nullptr = neutral).
 glm::dvec3 gameDisplay(const float* px, const Sampler* lut) {
     glm::dvec3 lin(px[0], px[1], px[2]), s;
-    for (int c = 0; c < 3; ++c) s[c] = std::pow(std::max(lin[c], 0.0), 0.454545);
+    for (int c = 0; c < 3; ++c)
+        s[c] = std::pow(std::max(lin[c], 0.0), 0.454545);
     glm::dvec3 l = s;
-    if (lut) l = glm::dvec3(lut->sample(glm::vec3(s)));
+    if (lut)
+        l = glm::dvec3(lut->sample(glm::vec3(s)));
     const double a = clamp01(px[3]);
     glm::dvec3 out;
     for (int c = 0; c < 3; ++c) {
@@ -44,14 +46,16 @@ Image screenshot(const Image& scene, const Sampler* lut) {
         for (int x = 0; x < scene.width(); ++x) {
             const glm::dvec3 d = gameDisplay(scene.pixel(x, y), lut);
             float* p = shot.pixel(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = fromUnorm8(toUnorm8(static_cast<float>(d[c])));
+            for (int c = 0; c < 3; ++c)
+                p[c] = fromUnorm8(toUnorm8(static_cast<float>(d[c])));
         }
     return shot;
 }
 
 Image loadScene() {
     const std::string path = lut::test::samplePath("sample_scene.exr");
-    if (std::filesystem::exists(path)) return formats::readImage(path).image;
+    if (std::filesystem::exists(path))
+        return formats::readImage(path).image;
     // a synthetic HDR scene: gradients up to 1.5 in linear light, all alpha 1
     Image img(320, 180, 1.0f);
     for (int y = 0; y < 180; ++y)
@@ -80,19 +84,21 @@ Lut3D oracleLut(const Edit& edit) {
             for (int r = 0; r < 16; ++r) {
                 const glm::dvec3 s = glm::dvec3(r, g, b) / 15.0;
                 glm::dvec3 q;
-                for (int c = 0; c < 3; ++c) q[c] = srgbEnc(clamp01(std::pow(s[c] * 1.3703, 2.2)));
+                for (int c = 0; c < 3; ++c)
+                    q[c] = srgbEnc(clamp01(std::pow(s[c] * 1.3703, 2.2)));
                 const glm::dvec3 e = edit(q);
                 for (int c = 0; c < 3; ++c) {
                     const double t = std::pow(srgbDec(clamp01(e[c])), 1 / 2.2);
-                    L.at(r, g, b)[c] = float(std::clamp((t / 1.3703 - s[c]) / 0.99961 + s[c], 0.0, 1.0));
+                    L.at(r, g, b)[c] =
+                        float(std::clamp((t / 1.3703 - s[c]) / 0.99961 + s[c], 0.0, 1.0));
                 }
             }
     return L;
 }
 
 // Game output with `lut` vs the edited screenshot, on alpha-1 pixels outside the patch frame.
-Compare compareWithGame(const Image& scene, const Image& edited, const Lut3D& lut, const PatchPlacement& p,
-                        const Lut3D* oracle = nullptr) {
+Compare compareWithGame(const Image& scene, const Image& edited, const Lut3D& lut,
+                        const PatchPlacement& p, const Lut3D* oracle = nullptr) {
     Lut3D shipped = lut;
     quantize8(shipped); // what the nutexb holds
     const auto sampler = makeSampler(shipped, Interpolation::Trilinear);
@@ -106,11 +112,15 @@ Compare compareWithGame(const Image& scene, const Image& edited, const Lut3D& lu
     double sum = 0.0;
     for (int y = 0; y < scene.height(); ++y)
         for (int x = 0; x < scene.width(); ++x) {
-            if (scene.pixel(x, y)[3] < 1.0f) continue;
-            if (x >= p.frameX && x < p.frameX + p.frameWidth && y >= p.frameY && y < p.frameY + p.frameHeight) continue;
+            if (scene.pixel(x, y)[3] < 1.0f)
+                continue;
+            if (x >= p.frameX && x < p.frameX + p.frameWidth && y >= p.frameY &&
+                y < p.frameY + p.frameHeight)
+                continue;
             const glm::dvec3 g = gameDisplay(scene.pixel(x, y), sampler.get());
             glm::dvec3 gb(0.0);
-            if (best) gb = gameDisplay(scene.pixel(x, y), best.get());
+            if (best)
+                gb = gameDisplay(scene.pixel(x, y), best.get());
             for (int ch = 0; ch < 3; ++ch) {
                 // the game's frame is 8-bit too
                 const double shown = fromUnorm8(toUnorm8(static_cast<float>(g[ch])));
@@ -119,7 +129,8 @@ Compare compareWithGame(const Image& scene, const Image& edited, const Lut3D& lu
                 sum += d;
                 if (best) {
                     const double sb = fromUnorm8(toUnorm8(static_cast<float>(gb[ch])));
-                    c.maxExcess = std::max(c.maxExcess, d - std::fabs(sb - edited.pixel(x, y)[ch]) * 255.0);
+                    c.maxExcess =
+                        std::max(c.maxExcess, d - std::fabs(sb - edited.pixel(x, y)[ch]) * 255.0);
                 }
             }
             ++c.pixels;
@@ -168,10 +179,12 @@ TEST(SmashTarget, GameShowsTheEditedScreenshot) {
         const Compare c = compareWithGame(scene, shot, r.lut, p, &best);
         const Compare ob = compareWithGame(scene, shot, best, p);
         ASSERT_GT(c.pixels, 1000u);
-        std::printf("[ measured ] smash %-10s game vs edited: max %.2f mean %.3f 8-bit steps (%zu px); best 16^3 "
-                    "LUT: max %.2f mean %.3f; worst excess %.2f; predicted in-game %.2f max %.3f mean\n",
-                    name, c.maxSteps, c.meanSteps, c.pixels, ob.maxSteps, ob.meanSteps, c.maxExcess,
-                    r.gameError.maxSteps8(), r.gameError.meanSteps8());
+        std::printf(
+            "[ measured ] smash %-10s game vs edited: max %.2f mean %.3f 8-bit steps (%zu px); "
+            "best 16^3 "
+            "LUT: max %.2f mean %.3f; worst excess %.2f; predicted in-game %.2f max %.3f mean\n",
+            name, c.maxSteps, c.meanSteps, c.pixels, ob.maxSteps, ob.meanSteps, c.maxExcess,
+            r.gameError.maxSteps8(), r.gameError.meanSteps8());
         // On every pixel within 2 steps of what the best possible 16^3 game LUT shows (the game's
         // own lattice cannot follow a clamped saturation between its points: 8 steps there)...
         EXPECT_LE(c.maxExcess, 2.0 + 1e-3) << name;
@@ -204,14 +217,20 @@ TEST(SmashTarget, ThePreviewPipelineShowsTheEditedScreenshotToo) {
     for (int y = 0; y < scene.height(); ++y)
         for (int x = 0; x < scene.width(); ++x) {
             const float* px = scene.pixel(x, y);
-            if (px[3] < 1.0f) continue;
-            if (x >= p.frameX && x < p.frameX + p.frameWidth && y >= p.frameY && y < p.frameY + p.frameHeight) continue;
+            if (px[3] < 1.0f)
+                continue;
+            if (x >= p.frameX && x < p.frameX + p.frameWidth && y >= p.frameY &&
+                y < p.frameY + p.frameHeight)
+                continue;
             const glm::vec3 lin = smashGradeMix(glm::vec3(px[0], px[1], px[2]), px[3], *sampler);
             const glm::dvec3 model = gameDisplay(px, sampler.get());
             for (int c = 0; c < 3; ++c) {
-                const float shown = fromUnorm8(toUnorm8(srgbEncode(std::clamp(lin[c], 0.0f, 1.0f))));
+                const float shown =
+                    fromUnorm8(toUnorm8(srgbEncode(std::clamp(lin[c], 0.0f, 1.0f))));
                 worst = std::max(worst, std::fabs(shown - shot.pixel(x, y)[c]) * 255.0);
-                worstModel = std::max(worstModel, std::fabs(srgbEncode(std::clamp(lin[c], 0.0f, 1.0f)) - model[c]) * 255.0);
+                worstModel = std::max(
+                    worstModel,
+                    std::fabs(srgbEncode(std::clamp(lin[c], 0.0f, 1.0f)) - model[c]) * 255.0);
             }
         }
     EXPECT_LE(worstModel, 0.05);
@@ -221,7 +240,8 @@ TEST(SmashTarget, ThePreviewPipelineShowsTheEditedScreenshotToo) {
 TEST(SmashTarget, OriginalLutIsCompensated) {
     // The stage already had a warm LUT; the modder only brightens the shadows a little.
     Lut3D warm = Lut3D::identity(16);
-    for (auto& e : warm.entries()) e = glm::vec3(std::min(1.0f, e.x * 1.05f + 0.02f), e.y, e.z * 0.92f);
+    for (auto& e : warm.entries())
+        e = glm::vec3(std::min(1.0f, e.x * 1.05f + 0.02f), e.y, e.z * 0.92f);
     const auto warmSampler = makeSampler(warm, Interpolation::Trilinear);
     const Image scene = loadScene();
     Image shot = screenshot(scene, warmSampler.get());
@@ -260,7 +280,6 @@ TEST(SmashTarget, UnreachableColoursAreClampedAndReported) {
             EXPECT_LE(e[c], 1.0f);
         }
 }
-
 
 // The numbers behind the default patch (docs/roundtrip.md): how far the smash-target LUT from
 // each patch lies from the best 16^3 LUT (the exact edit at the exact points), at the lattice.
@@ -304,16 +323,20 @@ TEST(SmashTarget, DefaultPatchIsTheMostAccurate) {
                         for (int ch = 0; ch < 3; ++ch) {
                             const double s = (ch == 0 ? rr : ch == 1 ? g : b) / 15.0;
                             auto shown = [s](double l) {
-                                return srgbEnc(clamp01(std::pow(std::max(((l - s) * 0.99961 + s) * 1.3703, 0.0), 2.2)));
+                                return srgbEnc(clamp01(std::pow(
+                                    std::max(((l - s) * 0.99961 + s) * 1.3703, 0.0), 2.2)));
                             };
                             acc.add(shown(r.lut.at(rr, g, b)[ch]), shown(best.at(rr, g, b)[ch]));
                         }
             const ErrorStats e = acc.result();
-            std::printf("[ measured ] %-12s %-13s game display vs best LUT at the lattice: max %.2f mean %.3f 8-bit "
+            std::printf("[ measured ] %-12s %-13s game display vs best LUT at the lattice: max "
+                        "%.2f mean %.3f 8-bit "
                         "steps\n",
                         ename, c.name, e.maxSteps8(), e.meanSteps8());
-            if (c.lattice == PatchLattice::Smash) smashMax = e.maxSteps8();
-            if (c.size == 16) uniform16Max = e.maxSteps8();
+            if (c.lattice == PatchLattice::Smash)
+                smashMax = e.maxSteps8();
+            if (c.size == 16)
+                uniform16Max = e.maxSteps8();
         }
         EXPECT_LE(smashMax, uniform16Max + 0.05) << ename;
         EXPECT_LE(smashMax, 1.0) << ename; // the 8-bit rounding of the patch and of the edit

@@ -13,14 +13,19 @@ namespace fs = std::filesystem;
 
 namespace lut::test {
 
-std::string dataPath(const std::string& name) { return std::string(LUTKIT_TEST_DATA_DIR) + "/" + name; }
-std::string samplePath(const std::string& name) { return std::string(LUTKIT_SAMPLES_DIR) + "/" + name; }
+std::string dataPath(const std::string& name) {
+    return std::string(LUTKIT_TEST_DATA_DIR) + "/" + name;
+}
+std::string samplePath(const std::string& name) {
+    return std::string(LUTKIT_SAMPLES_DIR) + "/" + name;
+}
 
 std::string tempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "misc";
     for (auto& c : name)
-        if (c == '/') c = '_';
+        if (c == '/')
+            c = '_';
     fs::path dir = fs::path(LUTKIT_BINARY_DIR) / "test-tmp" / name;
     fs::remove_all(dir);
     fs::create_directories(dir);

@@ -4,8 +4,8 @@
 
 namespace lut::test {
 
-std::string dataPath(const std::string& name);    // tests/data/<name>
-std::string samplePath(const std::string& name);  // samples/<name>
+std::string dataPath(const std::string& name);   // tests/data/<name>
+std::string samplePath(const std::string& name); // samples/<name>
 // A fresh empty folder under the build tree, unique per test (removed at start, kept after).
 std::string tempDir();
 

@@ -38,7 +38,8 @@ Lut3D sampleAnalyticGrade(int size) {
         for (int b = b0; b < b1; ++b)
             for (int g = 0; g < size; ++g)
                 for (int r = 0; r < size; ++r)
-                    lut.at(r, g, b) = glm::vec3(analyticGrade(glm::dvec3(lut.latticeInput(r, g, b))));
+                    lut.at(r, g, b) =
+                        glm::vec3(analyticGrade(glm::dvec3(lut.latticeInput(r, g, b))));
     });
     return lut;
 }
@@ -56,13 +57,16 @@ float grain(std::uint32_t x, std::uint32_t y, std::uint32_t c) {
     return static_cast<float>(h & 0xFFFFu) / 65535.0f - 0.5f;
 }
 
-float clamp01(float v) { return std::min(1.0f, std::max(0.0f, v)); }
+float clamp01(float v) {
+    return std::min(1.0f, std::max(0.0f, v));
+}
 
 } // namespace
 
 Image makeBenchFrame(int width, int height, int nthreads) {
     Image img(width, height);
-    const float w = static_cast<float>(std::max(1, width)), h = static_cast<float>(std::max(1, height));
+    const float w = static_cast<float>(std::max(1, width)),
+                h = static_cast<float>(std::max(1, height));
     parallelFor(height, nthreads, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const float v = static_cast<float>(y) / h;
@@ -85,15 +89,22 @@ Image makeBenchFrame(int width, int height, int nthreads) {
                     const float dx = (u - cx) * w / h, dy = v - cy;
                     return dx * dx + dy * dy < rad * rad;
                 };
-                if (disc(0.2f, 0.65f, 0.12f)) r = 0.9f, g = 0.1f, b = 0.12f;
-                if (disc(0.45f, 0.7f, 0.1f)) r = 0.1f, g = 0.75f, b = 0.2f;
-                if (disc(0.8f, 0.62f, 0.15f)) r = 0.85f - 0.3f * v, g = 0.6f - 0.2f * v, b = 0.48f - 0.15f * v;
-                if (disc(0.65f, 0.15f, 0.05f)) r = g = b = 0.99f;
+                if (disc(0.2f, 0.65f, 0.12f))
+                    r = 0.9f, g = 0.1f, b = 0.12f;
+                if (disc(0.45f, 0.7f, 0.1f))
+                    r = 0.1f, g = 0.75f, b = 0.2f;
+                if (disc(0.8f, 0.62f, 0.15f))
+                    r = 0.85f - 0.3f * v, g = 0.6f - 0.2f * v, b = 0.48f - 0.15f * v;
+                if (disc(0.65f, 0.15f, 0.05f))
+                    r = g = b = 0.99f;
                 const float n = 0.02f;
                 float* p = img.pixel(x, y);
-                p[0] = clamp01(r + n * grain(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0));
-                p[1] = clamp01(g + n * grain(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 1));
-                p[2] = clamp01(b + n * grain(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 2));
+                p[0] = clamp01(
+                    r + n * grain(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 0));
+                p[1] = clamp01(
+                    g + n * grain(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 1));
+                p[2] = clamp01(
+                    b + n * grain(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), 2));
                 p[3] = 1.0f;
             }
         }
@@ -125,7 +136,8 @@ ErrorStats frameError(const Image& graded, const Image& reference, int nthreads)
         ErrorAccumulator acc;
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < graded.width(); ++x)
-                for (int c = 0; c < 3; ++c) acc.add(graded.pixel(x, y)[c], reference.pixel(x, y)[c]);
+                for (int c = 0; c < 3; ++c)
+                    acc.add(graded.pixel(x, y)[c], reference.pixel(x, y)[c]);
         std::lock_guard lock(m);
         total.merge(acc);
     });
@@ -135,17 +147,21 @@ ErrorStats frameError(const Image& graded, const Image& reference, int nthreads)
 void parallelCopy(const Image& src, Image& dst, int nthreads) {
     const std::size_t rowBytes = 4 * sizeof(float) * static_cast<std::size_t>(src.width());
     parallelFor(src.height(), nthreads, [&](int y0, int y1) {
-        std::memcpy(dst.pixel(0, y0), src.pixel(0, y0), rowBytes * static_cast<std::size_t>(y1 - y0));
+        std::memcpy(dst.pixel(0, y0), src.pixel(0, y0),
+                    rowBytes * static_cast<std::size_t>(y1 - y0));
     });
 }
 
-double bestSeconds(int reps, const std::function<void()>& prepare, const std::function<void()>& run) {
+double bestSeconds(int reps, const std::function<void()>& prepare,
+                   const std::function<void()>& run) {
     double best = INFINITY;
     for (int i = 0; i < std::max(1, reps); ++i) {
-        if (prepare) prepare();
+        if (prepare)
+            prepare();
         const auto t0 = std::chrono::steady_clock::now();
         run();
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        best = std::min(
+            best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
     return best;
 }

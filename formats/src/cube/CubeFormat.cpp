@@ -48,16 +48,16 @@
 #include "Formats.h"
 #include "cube/TextLineReader.h"
 
-#include "lut/io/AtomicFile.h"
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
+#include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cfloat>
-#include <climits>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -69,20 +69,27 @@ namespace {
 
 constexpr std::size_t kAdobeMaxLineBytes = 250;
 
-inline bool isSpace(char c) { return c == ' ' || c == '\t'; }
+inline bool isSpace(char c) {
+    return c == ' ' || c == '\t';
+}
 inline const char* skipSpace(const char* p, const char* e) {
-    while (p < e && isSpace(*p)) ++p;
+    while (p < e && isSpace(*p))
+        ++p;
     return p;
 }
 inline const char* tokenEnd(const char* p, const char* e) {
-    while (p < e && !isSpace(*p)) ++p;
+    while (p < e && !isSpace(*p))
+        ++p;
     return p;
 }
 inline const char* trimRight(const char* b, const char* e) {
-    while (e > b && isSpace(e[-1])) --e;
+    while (e > b && isSpace(e[-1]))
+        --e;
     return e;
 }
-inline bool isAlpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+inline bool isAlpha(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
 
 std::string floatText(float v) {
     char buf[32];
@@ -98,19 +105,23 @@ NumStatus parseFloat(std::string_view tok, float& out) {
     const char* e = p + tok.size();
     if (p < e && *p == '+') {
         ++p;
-        if (p < e && (*p == '+' || *p == '-')) return NumStatus::NotNumber;
+        if (p < e && (*p == '+' || *p == '-'))
+            return NumStatus::NotNumber;
     }
-    if (p == e) return NumStatus::NotNumber;
+    if (p == e)
+        return NumStatus::NotNumber;
     float v = 0.0f;
     const auto r = std::from_chars(p, e, v);
-    if (r.ptr != e || r.ec == std::errc::invalid_argument) return NumStatus::NotNumber;
+    if (r.ptr != e || r.ec == std::errc::invalid_argument)
+        return NumStatus::NotNumber;
     if (r.ec == std::errc::result_out_of_range) {
         // Too large or too small for a float: tell which from the double value (or exponent).
         double d = 0.0;
         const auto r2 = std::from_chars(p, e, d);
         const bool negative = *p == '-';
         if (r2.ec == std::errc{} && std::isfinite(d)) {
-            if (std::fabs(d) >= 1.0) return NumStatus::TooLarge;
+            if (std::fabs(d) >= 1.0)
+                return NumStatus::TooLarge;
             out = static_cast<float>(d);
             return NumStatus::Ok;
         }
@@ -121,14 +132,14 @@ NumStatus parseFloat(std::string_view tok, float& out) {
         }
         return NumStatus::TooLarge;
     }
-    if (!std::isfinite(v)) return NumStatus::NonFinite;
+    if (!std::isfinite(v))
+        return NumStatus::NonFinite;
     out = v;
     return NumStatus::Ok;
 }
 
-constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                             1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                             1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 // Decimal text to float with the same result as std::from_chars, for the common case (at most
 // 19 digits, exponent within +-22): m and 10^k are exact doubles, so m * 10^k or m / 10^k is
@@ -143,7 +154,8 @@ inline const char* fastFloat(const char* p, const char* e, float& out) {
     }
     std::uint64_t m = 0;
     const char* q = p;
-    while (q < e && static_cast<unsigned>(*q - '0') < 10) m = m * 10 + static_cast<unsigned>(*q++ - '0');
+    while (q < e && static_cast<unsigned>(*q - '0') < 10)
+        m = m * 10 + static_cast<unsigned>(*q++ - '0');
     std::ptrdiff_t digits = q - p;
     int exp10 = 0;
     if (q < e && *q == '.') {
@@ -153,15 +165,20 @@ inline const char* fastFloat(const char* p, const char* e, float& out) {
         exp10 = -static_cast<int>(q - f);
         digits += q - f;
     }
-    if (digits == 0 || digits > 19) return nullptr;
+    if (digits == 0 || digits > 19)
+        return nullptr;
     if (q < e && (*q == 'e' || *q == 'E')) {
         const char* x = q + 1;
         bool expNegative = false;
-        if (x < e && (*x == '-' || *x == '+')) expNegative = *x++ == '-';
-        if (x == e || static_cast<unsigned>(*x - '0') >= 10) return nullptr;
+        if (x < e && (*x == '-' || *x == '+'))
+            expNegative = *x++ == '-';
+        if (x == e || static_cast<unsigned>(*x - '0') >= 10)
+            return nullptr;
         int v = 0;
-        while (x < e && static_cast<unsigned>(*x - '0') < 10 && v < 1000) v = v * 10 + (*x++ - '0');
-        if (x < e && static_cast<unsigned>(*x - '0') < 10) return nullptr;
+        while (x < e && static_cast<unsigned>(*x - '0') < 10 && v < 1000)
+            v = v * 10 + (*x++ - '0');
+        if (x < e && static_cast<unsigned>(*x - '0') < 10)
+            return nullptr;
         exp10 += expNegative ? -v : v;
         q = x;
     }
@@ -169,12 +186,14 @@ inline const char* fastFloat(const char* p, const char* e, float& out) {
         out = negative ? -0.0f : 0.0f;
         return q;
     }
-    if (m > (std::uint64_t(1) << 53) || exp10 < -22 || exp10 > 22) return nullptr;
+    if (m > (std::uint64_t(1) << 53) || exp10 < -22 || exp10 > 22)
+        return nullptr;
     double d = static_cast<double>(m);
     d = exp10 < 0 ? d / kPow10[-exp10] : d * kPow10[exp10];
     std::uint64_t bits;
     std::memcpy(&bits, &d, sizeof bits);
-    if ((bits & 0x1FFFFFFFu) == 0x10000000u) return nullptr; // exactly halfway between floats
+    if ((bits & 0x1FFFFFFFu) == 0x10000000u)
+        return nullptr; // exactly halfway between floats
     const float f = static_cast<float>(d);
     out = negative ? -f : f;
     return q;
@@ -188,12 +207,15 @@ inline bool fastRow(const char* p, const char* e, float* out) {
         const char* q = fastFloat(p, e, out[i]);
         if (!q) {
             const auto r = std::from_chars(p, e, out[i]);
-            if (r.ec != std::errc{} || r.ptr == p) return false;
-            if (!std::isfinite(out[i])) return false;
+            if (r.ec != std::errc{} || r.ptr == p)
+                return false;
+            if (!std::isfinite(out[i]))
+                return false;
             q = r.ptr;
         }
         p = q;
-        if (p < e && !isSpace(*p)) return false;
+        if (p < e && !isSpace(*p))
+            return false;
     }
     return skipSpace(p, e) == e;
 }
@@ -203,7 +225,9 @@ struct RowTarget {
     float* first;
     std::size_t firstRows;
     float* second;
-    float* row(std::size_t i) const { return i < firstRows ? first + 3 * i : second + 3 * (i - firstRows); }
+    float* row(std::size_t i) const {
+        return i < firstRows ? first + 3 * i : second + 3 * (i - firstRows);
+    }
 };
 
 // The data rows of a plain file (nothing but data rows and blank lines from the first data line
@@ -213,14 +237,17 @@ struct RowTarget {
 // which owns every message and line number, reads the file from the first data line again.
 bool parallelRows(const char* begin, const char* end, std::size_t rows, const RowTarget& target) {
     const int chunks = resolveThreads(0);
-    if (chunks < 2) return false;
+    if (chunks < 2)
+        return false;
     std::vector<const char*> cut(static_cast<std::size_t>(chunks) + 1);
     cut[0] = begin;
     cut[static_cast<std::size_t>(chunks)] = end;
     for (int i = 1; i < chunks; ++i) {
         const char* p = begin + (end - begin) * i / chunks;
-        if (p < cut[static_cast<std::size_t>(i) - 1]) p = cut[static_cast<std::size_t>(i) - 1];
-        const auto* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+        if (p < cut[static_cast<std::size_t>(i) - 1])
+            p = cut[static_cast<std::size_t>(i) - 1];
+        const auto* nl =
+            static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
         cut[static_cast<std::size_t>(i)] = nl ? nl + 1 : end;
     }
     // Calls fn(start, lineEnd) for each non-blank line of chunk c (CR of CR LF removed); stops
@@ -229,15 +256,20 @@ bool parallelRows(const char* begin, const char* end, std::size_t rows, const Ro
         const char* p = cut[static_cast<std::size_t>(c)];
         const char* e = cut[static_cast<std::size_t>(c) + 1];
         while (p < e) {
-            const auto* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(e - p)));
+            const auto* nl =
+                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(e - p)));
             const char* le = nl ? nl : e;
             const char* next = nl ? nl + 1 : e;
-            if (static_cast<std::size_t>(le - p) > limits::kMaxTextLineBytes) return false;
-            if (le > p && le[-1] == '\r') --le;
+            if (static_cast<std::size_t>(le - p) > limits::kMaxTextLineBytes)
+                return false;
+            if (le > p && le[-1] == '\r')
+                --le;
             const char* s = skipSpace(p, le);
             if (s != le) {
-                if (*s == '#' || isAlpha(*s)) return false;
-                if (!fn(s, le)) return false;
+                if (*s == '#' || isAlpha(*s))
+                    return false;
+                if (!fn(s, le))
+                    return false;
             }
             p = next;
         }
@@ -250,52 +282,63 @@ bool parallelRows(const char* begin, const char* end, std::size_t rows, const Ro
             std::size_t n = 0;
             // A chunk with more rows than the whole table stops at once (a file with a billion
             // rows is not scanned to its end).
-            ok[static_cast<std::size_t>(c)] = eachRow(c, [&](const char*, const char*) {
-                return ++n <= rows;
-            });
+            ok[static_cast<std::size_t>(c)] =
+                eachRow(c, [&](const char*, const char*) { return ++n <= rows; });
             count[static_cast<std::size_t>(c)] = n;
         }
     });
     std::vector<std::size_t> first(static_cast<std::size_t>(chunks), 0);
     std::size_t total = 0;
     for (int c = 0; c < chunks; ++c) {
-        if (!ok[static_cast<std::size_t>(c)]) return false;
+        if (!ok[static_cast<std::size_t>(c)])
+            return false;
         first[static_cast<std::size_t>(c)] = total;
         total += count[static_cast<std::size_t>(c)];
     }
-    if (total != rows) return false;
+    if (total != rows)
+        return false;
     parallelFor(chunks, chunks, [&](int c0, int c1) {
         for (int c = c0; c < c1; ++c) {
             std::size_t r = first[static_cast<std::size_t>(c)];
-            ok[static_cast<std::size_t>(c)] = eachRow(c, [&](const char* s, const char* le) {
-                return fastRow(s, le, target.row(r++));
-            });
+            ok[static_cast<std::size_t>(c)] = eachRow(
+                c, [&](const char* s, const char* le) { return fastRow(s, le, target.row(r++)); });
         }
     });
     for (char c : ok)
-        if (!c) return false;
+        if (!c)
+            return false;
     return true;
 }
 
 enum class Key { Title, DomainMin, DomainMax, Size1D, Size3D, Range1D, Range3D, InVideo, OutVideo };
 constexpr int kKeyCount = 9;
-constexpr const char* kKeyNames[kKeyCount] = {
-    "TITLE",       "DOMAIN_MIN",         "DOMAIN_MAX",         "LUT_1D_SIZE",       "LUT_3D_SIZE",
-    "LUT_1D_INPUT_RANGE", "LUT_3D_INPUT_RANGE", "LUT_IN_VIDEO_RANGE", "LUT_OUT_VIDEO_RANGE"};
+constexpr const char* kKeyNames[kKeyCount] = {"TITLE",
+                                              "DOMAIN_MIN",
+                                              "DOMAIN_MAX",
+                                              "LUT_1D_SIZE",
+                                              "LUT_3D_SIZE",
+                                              "LUT_1D_INPUT_RANGE",
+                                              "LUT_3D_INPUT_RANGE",
+                                              "LUT_IN_VIDEO_RANGE",
+                                              "LUT_OUT_VIDEO_RANGE"};
 
 bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
+    if (a.size() != b.size())
+        return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
         char x = a[i];
-        if (x >= 'a' && x <= 'z') x = static_cast<char>(x - 'a' + 'A');
-        if (x != b[i]) return false;
+        if (x >= 'a' && x <= 'z')
+            x = static_cast<char>(x - 'a' + 'A');
+        if (x != b[i])
+            return false;
     }
     return true;
 }
 
 int lookupKey(std::string_view tok) {
     for (int k = 0; k < kKeyCount; ++k)
-        if (equalsIgnoreCase(tok, kKeyNames[k])) return k;
+        if (equalsIgnoreCase(tok, kKeyNames[k]))
+            return k;
     return -1;
 }
 
@@ -317,8 +360,8 @@ enum class Departure {
 };
 
 struct DepartureInfo {
-    int cap;           // reports of this kind before only counting
-    const char* rest;  // "and N more: <rest>"
+    int cap;          // reports of this kind before only counting
+    const char* rest; // "and N more: <rest>"
 };
 constexpr DepartureInfo kDepartureInfo[] = {
     {1, "byte order marks"},
@@ -336,7 +379,6 @@ constexpr DepartureInfo kDepartureInfo[] = {
     {3, "ignored keywords"},
 };
 static_assert(std::size(kDepartureInfo) == static_cast<std::size_t>(Departure::Count));
-
 
 struct Token {
     std::string_view text;
@@ -356,15 +398,16 @@ Tokens splitTokens(const TextLine& line, const char* p, const char* e) {
     t.contentEnd = p;
     for (;;) {
         p = skipSpace(p, e);
-        if (p == e) break;
+        if (p == e)
+            break;
         if (*p == '#') {
             t.comment = p;
             break;
         }
         const char* q = tokenEnd(p, e);
         if (t.count < 4)
-            t.tok[static_cast<std::size_t>(t.count)] = {std::string_view(p, static_cast<std::size_t>(q - p)),
-                                                      columnOf(line, p)};
+            t.tok[static_cast<std::size_t>(t.count)] = {
+                std::string_view(p, static_cast<std::size_t>(q - p)), columnOf(line, p)};
         ++t.count;
         t.contentEnd = q;
         p = q;
@@ -375,8 +418,8 @@ Tokens splitTokens(const TextLine& line, const char* p, const char* e) {
 struct KeySeen {
     int line = 0;
     int column = 0;
-    std::string args;                // argument text, for "repeated with another value"
-    std::array<int, 3> argColumn{};  // columns of the numbers
+    std::string args;               // argument text, for "repeated with another value"
+    std::array<int, 3> argColumn{}; // columns of the numbers
 };
 
 class CubeParser {
@@ -388,7 +431,8 @@ public:
     LutFile parse();
     int departures() const {
         int n = 0;
-        for (int d : m_departures) n += d;
+        for (int d : m_departures)
+            n += d;
         return n;
     }
 
@@ -420,16 +464,18 @@ private:
         m_diags.push_back({s, path(), line, column, std::move(message)});
     }
     void depart(Departure d, int line, int column, std::string message, bool always = false) {
-        if (!m_strict && !always) return;
+        if (!m_strict && !always)
+            return;
         const int n = m_departures[static_cast<int>(d)]++;
         if (n < kDepartureInfo[static_cast<int>(d)].cap)
             diag(Diagnostic::Severity::Warning, line, column, std::move(message));
     }
     void finishDepartures() {
         // Report in file order; the "and N more" summaries (line 0) go last.
-        std::stable_sort(m_diags.begin(), m_diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
-            return (a.line == 0 ? INT_MAX : a.line) < (b.line == 0 ? INT_MAX : b.line);
-        });
+        std::stable_sort(
+            m_diags.begin(), m_diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
+                return (a.line == 0 ? INT_MAX : a.line) < (b.line == 0 ? INT_MAX : b.line);
+            });
         for (int d = 0; d < static_cast<int>(Departure::Count); ++d) {
             const int extra = m_departures[static_cast<std::size_t>(d)] - kDepartureInfo[d].cap;
             if (extra > 0)
@@ -456,7 +502,8 @@ private:
             depart(Departure::CommentIndent, line.number, columnOf(line, hash),
                    "comment does not start at column 1; the Adobe spec wants '#' first");
         const char* c = hash + 1;
-        if (c < e && *c == ' ') ++c;
+        if (c < e && *c == ' ')
+            ++c;
         m_comments.emplace_back(c, static_cast<std::size_t>(trimRight(c, e) - c));
     }
 
@@ -467,7 +514,8 @@ private:
     }
 
     bool isKeywordLine(const char* s, const char* e) const {
-        if (!isAlpha(*s)) return false;
+        if (!isAlpha(*s))
+            return false;
         float ignored;
         // "nan" and "inf" start with a letter but are (refused) numbers, not keywords.
         return parseFloat(std::string_view(s, static_cast<std::size_t>(tokenEnd(s, e) - s)),
@@ -484,27 +532,30 @@ private:
     void slowRow(const TextLine& line, const char* s, float* out);
     std::string rowsExpected() const;
     std::size_t expectedRows() const {
-        return static_cast<std::size_t>(m_size1D) +
-               static_cast<std::size_t>(m_size3D) * static_cast<std::size_t>(m_size3D) *
-                   static_cast<std::size_t>(m_size3D);
+        return static_cast<std::size_t>(m_size1D) + static_cast<std::size_t>(m_size3D) *
+                                                        static_cast<std::size_t>(m_size3D) *
+                                                        static_cast<std::size_t>(m_size3D);
     }
 };
 
-void CubeParser::readNumbers(const TextLine& line, const Tokens& t, const char* keyword,
-                             int count, float* out, const char* lineEnd) {
+void CubeParser::readNumbers(const TextLine& line, const Tokens& t, const char* keyword, int count,
+                             float* out, const char* lineEnd) {
     const std::string what = "expected " + std::to_string(count) + " numbers after " + keyword;
     for (int i = 0; i < std::min(t.count, count); ++i) {
         const Token& tok = t.tok[static_cast<std::size_t>(i)];
         switch (parseFloat(tok.text, out[i])) {
-        case NumStatus::Ok: break;
-        case NumStatus::NotNumber: fail(line, tok.column, what, std::string(tok.text));
+        case NumStatus::Ok:
+            break;
+        case NumStatus::NotNumber:
+            fail(line, tok.column, what, std::string(tok.text));
         case NumStatus::NonFinite:
             fail(line, tok.column,
                  std::string(keyword) + " values must be finite numbers (NaN and infinity are "
                                         "not allowed)",
                  std::string(tok.text));
         case NumStatus::TooLarge:
-            fail(line, tok.column, "number is out of the 32-bit float range", std::string(tok.text));
+            fail(line, tok.column, "number is out of the 32-bit float range",
+                 std::string(tok.text));
         }
     }
     if (t.count < count)
@@ -521,13 +572,14 @@ int CubeParser::readSize(const TextLine& line, const Tokens& t, const char* keyw
         fail(line, columnOf(line, t.contentEnd) + 1,
              std::string("expected a size after ") + keyword, content(line.text.data(), lineEnd));
     if (t.count > 1)
-        fail(line, t.tok[1].column, std::string("unexpected text after ") + keyword + " " +
-                                        std::string(t.tok[0].text),
+        fail(line, t.tok[1].column,
+             std::string("unexpected text after ") + keyword + " " + std::string(t.tok[0].text),
              std::string(t.tok[1].text));
     const Token& tok = t.tok[0];
     const char* p = tok.text.data();
     const char* e = p + tok.text.size();
-    if (p < e && *p == '+') ++p;
+    if (p < e && *p == '+')
+        ++p;
     long long v = 0;
     const auto r = std::from_chars(p, e, v);
     const bool digitsOnly = r.ptr == e && p < e && *p != '-';
@@ -575,10 +627,10 @@ void CubeParser::keyword(const TextLine& line, const char* s, const char* e) {
                "keyword '" + std::string(tok) + "' is not upper case; the Adobe spec spells it " +
                    name);
     if (key == Key::Range1D || key == Key::Range3D || key == Key::InVideo || key == Key::OutVideo)
-        depart(Departure::ResolveKeyword, line.number, col,
-               std::string(name) + " is a Resolve keyword, not in the Adobe spec" +
-                   (key == Key::Range1D || key == Key::Range3D ? " (use DOMAIN_MIN/DOMAIN_MAX)"
-                                                               : ""));
+        depart(
+            Departure::ResolveKeyword, line.number, col,
+            std::string(name) + " is a Resolve keyword, not in the Adobe spec" +
+                (key == Key::Range1D || key == Key::Range3D ? " (use DOMAIN_MIN/DOMAIN_MAX)" : ""));
 
     // The argument text (without a trailing comment) decides "repeated" vs "conflicting".
     Tokens t = splitTokens(line, kEnd, e);
@@ -589,7 +641,8 @@ void CubeParser::keyword(const TextLine& line, const char* s, const char* e) {
         args = content(argsBegin, e);
     } else {
         args = content(argsBegin, t.comment ? t.comment : e);
-        if (t.comment) trailingComment(line, t.comment);
+        if (t.comment)
+            trailingComment(line, t.comment);
     }
     KeySeen& seen = m_seen[static_cast<std::size_t>(k)];
     if (seen.line != 0) {
@@ -613,10 +666,12 @@ void CubeParser::keyword(const TextLine& line, const char* s, const char* e) {
     case Key::Title: {
         const char* a = argsBegin;
         const char* end = trimRight(a, e);
-        if (a == end) fail(line, columnOf(line, kEnd) + 1, "expected a quoted title after TITLE");
+        if (a == end)
+            fail(line, columnOf(line, kEnd) + 1, "expected a quoted title after TITLE");
         if (*a == '"') {
             const char* close = end - 1;
-            while (close > a && *close != '"') --close;
+            while (close > a && *close != '"')
+                --close;
             if (close == a) {
                 fail(line, columnOf(line, end), "TITLE has no closing quote",
                      std::string(a, static_cast<std::size_t>(end - a)));
@@ -646,20 +701,20 @@ void CubeParser::keyword(const TextLine& line, const char* s, const char* e) {
         break;
     }
     case Key::Size1D:
-        m_size1D = readSize(line, t, name, limits::kMin1DSize, limits::kMax1DSize, "kMax1DSize",
-                            lineEnd);
+        m_size1D =
+            readSize(line, t, name, limits::kMin1DSize, limits::kMax1DSize, "kMax1DSize", lineEnd);
         break;
     case Key::Size3D:
-        m_size3D = readSize(line, t, name, limits::kMin3DSize, limits::kMax3DSize, "kMax3DSize",
-                            lineEnd);
+        m_size3D =
+            readSize(line, t, name, limits::kMin3DSize, limits::kMax3DSize, "kMax3DSize", lineEnd);
         break;
     case Key::Range1D:
     case Key::Range3D: {
         float* r = key == Key::Range1D ? m_range1D : m_range3D;
         readNumbers(line, t, name, 2, r, lineEnd);
         if (!(r[0] < r[1]))
-            fail(line, t.tok[1].column,
-                 std::string(name) + " min must be below max", content(argsBegin, lineEnd));
+            fail(line, t.tok[1].column, std::string(name) + " min must be below max",
+                 content(argsBegin, lineEnd));
         break;
     }
     case Key::InVideo:
@@ -714,7 +769,8 @@ void CubeParser::finishHeader(const TextLine* firstData, const char* s) {
     const bool domainIs1D = m_size1D != 0;
     for (Key rk : {Key::Range1D, Key::Range3D}) {
         const auto& r = m_seen[static_cast<int>(rk)];
-        if (!r.line) continue;
+        if (!r.line)
+            continue;
         const bool is1D = rk == Key::Range1D;
         if ((is1D && !m_size1D) || (!is1D && !m_size3D)) {
             depart(Departure::IgnoredKeyword, r.line, r.column,
@@ -726,17 +782,17 @@ void CubeParser::finishHeader(const TextLine* firstData, const char* s) {
         if (hasDomain && is1D == domainIs1D) {
             const auto& d = dmin.line > dmax.line ? dmin : dmax;
             const auto& later = d.line > r.line ? d : r;
-            m_reader.fail(later.line, later.column,
-                          std::string("DOMAIN_MIN/DOMAIN_MAX and ") +
-                              kKeyNames[static_cast<int>(rk)] +
-                              " both set the input domain of the " + (is1D ? "1D" : "3D") +
-                              " table");
+            m_reader.fail(
+                later.line, later.column,
+                std::string("DOMAIN_MIN/DOMAIN_MAX and ") + kKeyNames[static_cast<int>(rk)] +
+                    " both set the input domain of the " + (is1D ? "1D" : "3D") + " table");
         }
     }
     if (hasDomain) {
         static const char* const channel[] = {"red", "green", "blue"};
         for (int c = 0; c < 3; ++c) {
-            if (m_domainMin[c] < m_domainMax[c]) continue;
+            if (m_domainMin[c] < m_domainMax[c])
+                continue;
             // Point at the value on whichever of the two lines came last.
             const auto& d = dmax.line >= dmin.line ? dmax : dmin;
             const bool isMax = &d == &dmax;
@@ -756,7 +812,8 @@ void CubeParser::slowRow(const TextLine& line, const char* s, float* out) {
     for (int i = 0; i < std::min(t.count, 3); ++i) {
         const Token& tok = t.tok[static_cast<std::size_t>(i)];
         switch (parseFloat(tok.text, out[i])) {
-        case NumStatus::Ok: break;
+        case NumStatus::Ok:
+            break;
         case NumStatus::NotNumber:
             if (i == 0 && isAlpha(tok.text[0]) && lookupKey(tok.text) >= 0)
                 fail(line, tok.column,
@@ -782,7 +839,8 @@ void CubeParser::slowRow(const TextLine& line, const char* s, float* out) {
         fail(line, t.tok[3].column,
              "expected 3 numbers on a data line, found " + std::to_string(t.count),
              content(s, lineEnd));
-    if (t.comment) trailingComment(line, t.comment);
+    if (t.comment)
+        trailingComment(line, t.comment);
 }
 
 LutFile CubeParser::parse() {
@@ -793,10 +851,12 @@ LutFile CubeParser::parse() {
     const char* e = nullptr;
     bool haveData = false;
     while (m_reader.next(line)) {
-        if (m_strict) checkLine(line);
+        if (m_strict)
+            checkLine(line);
         e = line.text.data() + line.text.size();
         s = skipSpace(line.text.data(), e);
-        if (s == e) continue;
+        if (s == e)
+            continue;
         if (*s == '#') {
             comment(line, s, e);
             continue;
@@ -837,7 +897,8 @@ LutFile CubeParser::parse() {
         segments[segmentCount++] = {&file.shaper->entries()[0].x,
                                     &file.shaper->entries()[0].x + 3 * std::size_t(m_size1D)};
     if (file.cube)
-        segments[segmentCount++] = {file.cube->data(), file.cube->data() + 3 * file.cube->entryCount()};
+        segments[segmentCount++] = {file.cube->data(),
+                                    file.cube->data() + 3 * file.cube->entryCount()};
 
     // Big plain files: all cores. Strict mode reports per-line departures, so it stays sequential.
     constexpr std::size_t kParallelMinRows = 32768;
@@ -856,11 +917,13 @@ LutFile CubeParser::parse() {
     std::size_t rows = 0;
     for (; !done;) {
         // `line` is a data line starting at s.
-        if (!fastRow(s, e, out)) slowRow(line, s, out);
+        if (!fastRow(s, e, out))
+            slowRow(line, s, out);
         ++rows;
         out += 3;
         if (out == outEnd) {
-            if (++segment == segmentCount) break;
+            if (++segment == segmentCount)
+                break;
             out = segments[segment].begin;
             outEnd = segments[segment].end;
         }
@@ -871,10 +934,12 @@ LutFile CubeParser::parse() {
                               "expected " + rowsExpected() + ", found " + std::to_string(rows) +
                                   " before the end of the file");
             }
-            if (m_strict) checkLine(line);
+            if (m_strict)
+                checkLine(line);
             e = line.text.data() + line.text.size();
             s = skipSpace(line.text.data(), e);
-            if (s == e) continue;
+            if (s == e)
+                continue;
             if (*s == '#') {
                 comment(line, s, e);
                 continue;
@@ -886,10 +951,12 @@ LutFile CubeParser::parse() {
     // After the last row: only blank lines and comments. Stop at the first extra row, so a file
     // with a billion rows is refused without reading them.
     while (!done && m_reader.next(line)) {
-        if (m_strict) checkLine(line);
+        if (m_strict)
+            checkLine(line);
         e = line.text.data() + line.text.size();
         s = skipSpace(line.text.data(), e);
-        if (s == e) continue;
+        if (s == e)
+            continue;
         if (*s == '#') {
             comment(line, s, e);
             continue;
@@ -935,7 +1002,8 @@ LutFile CubeParser::parse() {
     }
     bool resolve = m_size1D && m_size3D;
     for (Key k : {Key::Range1D, Key::Range3D, Key::InVideo, Key::OutVideo})
-        if (m_seen[static_cast<int>(k)].line) resolve = true;
+        if (m_seen[static_cast<int>(k)].line)
+            resolve = true;
     file.dialect = resolve ? "resolve" : "adobe";
     finishDepartures();
     file.diagnostics = m_diags;
@@ -944,7 +1012,8 @@ LutFile CubeParser::parse() {
 
 // Appends the shortest round-trip text of v (or fixed decimals).
 inline char* putFloat(char* p, float v, int decimals) {
-    if (decimals < 0) return std::to_chars(p, p + 48, v).ptr;
+    if (decimals < 0)
+        return std::to_chars(p, p + 48, v).ptr;
     return std::to_chars(p, p + 80, v, std::chars_format::fixed, decimals).ptr;
 }
 
@@ -955,7 +1024,8 @@ inline char* putFloat(char* p, float v, int decimals) {
 class FloatTextCache {
 public:
     FloatTextCache() {
-        for (auto& s : m_slots) s.bits = 0xFFFFFFFFu; // a NaN pattern: never looked up
+        for (auto& s : m_slots)
+            s.bits = 0xFFFFFFFFu; // a NaN pattern: never looked up
     }
     char* put(char* p, float v) {
         std::uint32_t bits;
@@ -963,7 +1033,8 @@ public:
         Slot& s = m_slots[(bits * 0x9E3779B1u) >> (32 - kBits)];
         if (s.bits != bits) {
             s.bits = bits;
-            s.length = static_cast<std::uint8_t>(std::to_chars(s.text, s.text + sizeof s.text, v).ptr - s.text);
+            s.length = static_cast<std::uint8_t>(
+                std::to_chars(s.text, s.text + sizeof s.text, v).ptr - s.text);
         }
         std::memcpy(p, s.text, sizeof s.text);
         return p + s.length;
@@ -981,13 +1052,15 @@ private:
 
 std::size_t formatRows(std::string& dst, const float* v, std::size_t count, int decimals) {
     // Room for the longest row; the cache copies whole 19-byte slots, hence the margin.
-    const std::size_t rowMax = decimals < 0 ? 3 * 20 + 19 : 3 * (static_cast<std::size_t>(decimals) + 42);
+    const std::size_t rowMax =
+        decimals < 0 ? 3 * 20 + 19 : 3 * (static_cast<std::size_t>(decimals) + 42);
     auto cache = std::make_unique<FloatTextCache>();
     std::size_t nonFinite = 0;
     std::size_t used = dst.size();
     dst.resize(used + count * 3 * 12 + rowMax);
     for (std::size_t r = 0; r < count; ++r) {
-        if (dst.size() - used < rowMax) dst.resize(dst.size() + (count - r) * 3 * 12 + rowMax);
+        if (dst.size() - used < rowMax)
+            dst.resize(dst.size() + (count - r) * 3 * 12 + rowMax);
         char* p = dst.data() + used;
         for (int c = 0; c < 3; ++c) {
             float x = v[r * 3 + static_cast<std::size_t>(c)];
@@ -1010,7 +1083,8 @@ std::size_t putRows(std::string& out, const float* v, std::size_t count, int dec
     constexpr std::size_t kParallelMin = 16384;
     constexpr std::size_t kRoundRows = std::size_t(1) << 20;
     const int threads = count < kParallelMin ? 1 : resolveThreads(0);
-    if (threads <= 1) return formatRows(out, v, count, decimals);
+    if (threads <= 1)
+        return formatRows(out, v, count, decimals);
     std::vector<std::string> parts(static_cast<std::size_t>(threads));
     std::vector<std::size_t> bad(static_cast<std::size_t>(threads));
     std::size_t nonFinite = 0;
@@ -1033,7 +1107,9 @@ std::size_t putRows(std::string& out, const float* v, std::size_t count, int dec
     return nonFinite;
 }
 
-bool uniform(glm::vec3 v) { return v.x == v.y && v.y == v.z; }
+bool uniform(glm::vec3 v) {
+    return v.x == v.y && v.y == v.z;
+}
 
 std::string oneLine(std::string s, const char* what, Diagnostics& d, bool isTitle) {
     bool changed = false;
@@ -1049,7 +1125,10 @@ std::string oneLine(std::string s, const char* what, Diagnostics& d, bool isTitl
         changed = true;
     }
     if (changed)
-        d.push_back({Diagnostic::Severity::Warning, {}, 0, 0,
+        d.push_back({Diagnostic::Severity::Warning,
+                     {},
+                     0,
+                     0,
                      std::string(what) + " changed to fit one .cube line (quotes, line breaks or "
                                          "length)"});
     return s;
@@ -1070,7 +1149,8 @@ LutFile readCube(const std::string& path, const CubeReadOptions& options) {
 
 std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
                             const CubeWriteOptions& options) {
-    if (!lut.cube && !lut.shaper) throw Error("cannot write a .cube: the LUT holds no table");
+    if (!lut.cube && !lut.shaper)
+        throw Error("cannot write a .cube: the LUT holds no table");
     Diagnostics local;
     Diagnostics& diags = diagnostics ? *diagnostics : local;
     const Lut1D* shaper = lut.shaper ? &*lut.shaper : nullptr;
@@ -1085,7 +1165,10 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
             baked = lut.toLut3D(cube->size());
             cube = &*baked;
             shaper = nullptr;
-            diags.push_back({Diagnostic::Severity::Warning, {}, 0, 0,
+            diags.push_back({Diagnostic::Severity::Warning,
+                             {},
+                             0,
+                             0,
                              options.dialect == Dialect::Adobe
                                  ? "1D shaper baked into the 3D table: the Adobe dialect has no "
                                    "shaper"
@@ -1101,7 +1184,10 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
         const glm::vec3 mx = cube ? cube->domainMax() : shaper->domainMax();
         resolve = uniform(mn) && uniform(mx);
         if (!resolve && options.dialect == Dialect::Resolve)
-            diags.push_back({Diagnostic::Severity::Warning, {}, 0, 0,
+            diags.push_back({Diagnostic::Severity::Warning,
+                             {},
+                             0,
+                             0,
                              "written in the Adobe dialect: the domain differs per channel, and "
                              "the Resolve dialect has one input range for all channels"});
     }
@@ -1118,16 +1204,20 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
         std::size_t start = 0;
         for (;;) {
             const std::size_t nl = c.find('\n', start);
-            std::string part = c.substr(start, nl == std::string::npos ? std::string::npos : nl - start);
-            if (!part.empty() && part.back() == '\r') part.pop_back();
+            std::string part =
+                c.substr(start, nl == std::string::npos ? std::string::npos : nl - start);
+            if (!part.empty() && part.back() == '\r')
+                part.pop_back();
             part = oneLine(std::move(part), "a comment", diags, false);
             out += part.empty() ? "#\n" : "# " + part + "\n";
-            if (nl == std::string::npos) break;
+            if (nl == std::string::npos)
+                break;
             start = nl + 1;
         }
     }
     const std::string& title = cube ? cube->title() : shaper->title();
-    if (!title.empty()) out += "TITLE \"" + oneLine(title, "the title", diags, true) + "\"\n";
+    if (!title.empty())
+        out += "TITLE \"" + oneLine(title, "the title", diags, true) + "\"\n";
 
     char buf[256];
     auto putTriple = [&](const char* keyword, glm::vec3 v) {
@@ -1175,24 +1265,30 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
     }
 
     const int decimals = std::min(options.decimals, 40);
-    const std::size_t nonFinite = (shaper ? putRows(out, &shaper->entries()[0].x,
-                                                    static_cast<std::size_t>(shaper->size()), decimals)
-                                          : 0) +
-                                  (cube ? putRows(out, cube->data(), cube->entryCount(), decimals) : 0);
+    const std::size_t nonFinite =
+        (shaper ? putRows(out, &shaper->entries()[0].x, static_cast<std::size_t>(shaper->size()),
+                          decimals)
+                : 0) +
+        (cube ? putRows(out, cube->data(), cube->entryCount(), decimals) : 0);
     if (nonFinite)
-        diags.push_back({Diagnostic::Severity::Warning, {}, 0, 0,
+        diags.push_back({Diagnostic::Severity::Warning,
+                         {},
+                         0,
+                         0,
                          std::to_string(nonFinite) +
                              " non-finite value(s) written as 0 (NaN) or +-3.40282347e+38 "
                              "(infinity): .cube readers refuse NaN and Inf"});
     return out;
 }
 
-Diagnostics writeCube(const std::string& path, const LutFile& lut, const CubeWriteOptions& options) {
+Diagnostics writeCube(const std::string& path, const LutFile& lut,
+                      const CubeWriteOptions& options) {
     Diagnostics diags;
     const std::string text = writeCubeString(lut, &diags, options);
     writeFileAtomically(path, text);
     for (auto& d : diags)
-        if (d.path.empty()) d.path = path;
+        if (d.path.empty())
+            d.path = path;
     return diags;
 }
 
@@ -1201,12 +1297,16 @@ std::string describeCube(const LutFile& lut) {
     if (lut.shaper && lut.cube)
         return s + " 1D " + std::to_string(lut.shaper->size()) + " + 3D, " +
                std::to_string(lut.cube->size()) + "^3";
-    if (lut.cube) return s + " 3D, " + std::to_string(lut.cube->size()) + "^3";
-    if (lut.shaper) return s + " 1D, " + std::to_string(lut.shaper->size());
+    if (lut.cube)
+        return s + " 3D, " + std::to_string(lut.cube->size()) + "^3";
+    if (lut.shaper)
+        return s + " 1D, " + std::to_string(lut.shaper->size());
     return s;
 }
 
-std::string CubeValidation::summary() const { return lut ? describeCube(*lut) : std::string(); }
+std::string CubeValidation::summary() const {
+    return lut ? describeCube(*lut) : std::string();
+}
 
 CubeValidation validateCube(const std::string& path, bool strict) {
     CubeValidation v;
@@ -1225,12 +1325,15 @@ CubeValidation validateCube(const std::string& path, bool strict) {
         std::string prefix = e.path();
         if (e.line() > 0) {
             prefix += ":" + std::to_string(e.line());
-            if (e.column() > 0) prefix += ":" + std::to_string(e.column());
+            if (e.column() > 0)
+                prefix += ":" + std::to_string(e.column());
         }
         prefix += ": ";
         std::string what = e.what();
-        if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
-        v.diagnostics.push_back({Diagnostic::Severity::Error, e.path(), e.line(), e.column(), what});
+        if (what.compare(0, prefix.size(), prefix) == 0)
+            what.erase(0, prefix.size());
+        v.diagnostics.push_back(
+            {Diagnostic::Severity::Error, e.path(), e.line(), e.column(), what});
     } catch (const Error& e) {
         v.diagnostics = std::move(diags);
         v.diagnostics.push_back({Diagnostic::Severity::Error, {}, 0, 0, e.what()});
@@ -1238,7 +1341,8 @@ CubeValidation validateCube(const std::string& path, bool strict) {
     v.ok = v.lut.has_value();
     if (strict)
         for (const auto& d : v.diagnostics)
-            if (d.severity != Diagnostic::Severity::Info) v.ok = false;
+            if (d.severity != Diagnostic::Severity::Info)
+                v.ok = false;
     return v;
 }
 
@@ -1264,8 +1368,7 @@ public:
             Diagnostics d = writeCube(path, resized);
             d.insert(d.begin(), {Diagnostic::Severity::Info, path, 0, 0,
                                  "3D table resampled from " + std::to_string(lut.cube->size()) +
-                                     "^3 to " + std::to_string(options.size) +
-                                     "^3 (tetrahedral)"});
+                                     "^3 to " + std::to_string(options.size) + "^3 (tetrahedral)"});
             return d;
         }
         return writeCube(path, lut);
@@ -1274,6 +1377,8 @@ public:
 
 } // namespace
 
-std::unique_ptr<Format> makeCubeFormat() { return std::make_unique<CubeFormat>(); }
+std::unique_ptr<Format> makeCubeFormat() {
+    return std::make_unique<CubeFormat>();
+}
 
 } // namespace lut::formats

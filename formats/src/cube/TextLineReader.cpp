@@ -13,7 +13,8 @@ namespace lut::formats {
 
 FileView::FileView(const std::string& path, std::uint64_t maxBytes) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
+    if (fd < 0)
+        throw Error(path + ": cannot open: " + std::strerror(errno));
     struct stat st {};
     if (::fstat(fd, &st) != 0) {
         const int err = errno;
@@ -27,9 +28,8 @@ FileView::FileView(const std::string& path, std::uint64_t maxBytes) {
     const auto size = static_cast<std::uint64_t>(st.st_size);
     if (size > maxBytes) {
         ::close(fd);
-        throw LimitError(path + ": file is " + std::to_string(size) +
-                         " bytes, over the limit of " + std::to_string(maxBytes) +
-                         " bytes (lut::limits::kMaxLutFileBytes)");
+        throw LimitError(path + ": file is " + std::to_string(size) + " bytes, over the limit of " +
+                         std::to_string(maxBytes) + " bytes (lut::limits::kMaxLutFileBytes)");
     }
     if (size == 0) {
         ::close(fd);
@@ -38,11 +38,13 @@ FileView::FileView(const std::string& path, std::uint64_t maxBytes) {
     // Small files are read ahead in one go (fewer page faults); big ones are faulted in as the
     // reader advances, so a file refused on line 3 costs nothing more.
     int flags = MAP_PRIVATE;
-    if (size <= (64u << 20)) flags |= MAP_POPULATE;
+    if (size <= (64u << 20))
+        flags |= MAP_POPULATE;
     void* map = ::mmap(nullptr, static_cast<std::size_t>(size), PROT_READ, flags, fd, 0);
     const int err = errno;
     ::close(fd);
-    if (map == MAP_FAILED) throw Error(path + ": cannot map: " + std::strerror(err));
+    if (map == MAP_FAILED)
+        throw Error(path + ": cannot map: " + std::strerror(err));
     ::madvise(map, static_cast<std::size_t>(size), MADV_SEQUENTIAL);
     m_map = map;
     m_data = static_cast<const char*>(map);
@@ -50,7 +52,8 @@ FileView::FileView(const std::string& path, std::uint64_t maxBytes) {
 }
 
 FileView::~FileView() {
-    if (m_map) ::munmap(m_map, m_size);
+    if (m_map)
+        ::munmap(m_map, m_size);
 }
 
 TextLineReader::TextLineReader(std::string_view data, std::string path, std::size_t maxLineBytes)
@@ -66,17 +69,21 @@ TextLineReader::TextLineReader(std::string_view data, std::string path, std::siz
     const std::size_t window = std::min(m_data.size() - m_pos, m_maxLineBytes + 2);
     const char* begin = m_data.data() + m_pos;
     for (std::size_t i = 0; i < window; ++i) {
-        if (begin[i] == '\n') break;
+        if (begin[i] == '\n')
+            break;
         if (begin[i] == '\r') {
-            if (i + 1 >= m_data.size() - m_pos || begin[i + 1] != '\n') m_terminator = '\r';
+            if (i + 1 >= m_data.size() - m_pos || begin[i + 1] != '\n')
+                m_terminator = '\r';
             break;
         }
     }
 }
 
 bool TextLineReader::next(TextLine& line) {
-    if (m_pos >= m_data.size()) return false;
-    if (m_line < INT_MAX) ++m_line;
+    if (m_pos >= m_data.size())
+        return false;
+    if (m_line < INT_MAX)
+        ++m_line;
     const char* begin = m_data.data() + m_pos;
     const std::size_t remaining = m_data.size() - m_pos;
     const std::size_t window = std::min(remaining, m_maxLineBytes + 2);
@@ -106,8 +113,7 @@ bool TextLineReader::next(TextLine& line) {
         }
     }
     if (length > m_maxLineBytes) {
-        std::string message = "line is longer than the limit of " +
-                              std::to_string(m_maxLineBytes) +
+        std::string message = "line is longer than the limit of " + std::to_string(m_maxLineBytes) +
                               " bytes (lut::limits::kMaxTextLineBytes)";
         if (m_terminator == '\n' && std::memchr(begin, '\r', window))
             message += "; its line ends may be a lone CR (classic Mac OS)";
@@ -124,8 +130,10 @@ bool TextLineReader::next(TextLine& line) {
 }
 
 std::pair<int, int> TextLineReader::endPosition() const {
-    if (m_line == 0) return {1, 1};
-    if (m_lastTerminated) return {m_line < INT_MAX ? m_line + 1 : m_line, 1};
+    if (m_line == 0)
+        return {1, 1};
+    if (m_lastTerminated)
+        return {m_line < INT_MAX ? m_line + 1 : m_line, 1};
     return {m_line, static_cast<int>(m_lastLength) + 1};
 }
 

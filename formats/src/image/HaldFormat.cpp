@@ -16,9 +16,12 @@
 namespace lut::formats {
 
 int haldSizeFor(int size) {
-    int level = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(size < 4 ? 4 : size)) - 1e-9));
-    if (level < 2) level = 2;
-    if (level * level > 256) level = 16;
+    int level =
+        static_cast<int>(std::ceil(std::sqrt(static_cast<double>(size < 4 ? 4 : size)) - 1e-9));
+    if (level < 2)
+        level = 2;
+    if (level * level > 256)
+        level = 16;
     return level * level;
 }
 
@@ -28,7 +31,8 @@ class HaldFormat final : public Format {
 public:
     std::string name() const override { return "hald"; }
     std::string description() const override {
-        return "Hald CLUT image (level L: L^3 x L^3 pixels, N = L^2), PNG/TIFF 8/16-bit or float EXR";
+        return "Hald CLUT image (level L: L^3 x L^3 pixels, N = L^2), PNG/TIFF 8/16-bit or float "
+               "EXR";
     }
     std::vector<std::string> extensions() const override { return {}; }
 
@@ -36,7 +40,8 @@ public:
         checkLayout(path, options);
         return readLutImage(path, options, LutLayout::Hald);
     }
-    Diagnostics write(const std::string& path, const LutFile& lut, const FormatOptions& options) const override {
+    Diagnostics write(const std::string& path, const LutFile& lut,
+                      const FormatOptions& options) const override {
         checkLayout(path, options);
         return writeLutImage(path, lut, options, LutLayout::Hald);
     }
@@ -44,12 +49,15 @@ public:
 private:
     static void checkLayout(const std::string& path, const FormatOptions& options) {
         if (!options.layout.empty() && parseLayout(options.layout) != LutLayout::Hald)
-            throw Error(path + ": the hald format stores the hald layout only, not '" + options.layout + "'");
+            throw Error(path + ": the hald format stores the hald layout only, not '" +
+                        options.layout + "'");
     }
 };
 
 } // namespace
 
-std::unique_ptr<Format> makeHaldFormat() { return std::make_unique<HaldFormat>(); }
+std::unique_ptr<Format> makeHaldFormat() {
+    return std::make_unique<HaldFormat>();
+}
 
 } // namespace lut::formats

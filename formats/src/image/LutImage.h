@@ -14,8 +14,8 @@ namespace lut::formats {
 LutFile readLutImage(const std::string& path, const FormatOptions& options,
                      std::optional<LutLayout> forced = std::nullopt);
 // Writes a LUT image in `layout`; bit depth from options (0 = 8 for PNG/TIFF, float for EXR).
-Diagnostics writeLutImage(const std::string& path, const LutFile& file, const FormatOptions& options,
-                          LutLayout layout);
+Diagnostics writeLutImage(const std::string& path, const LutFile& file,
+                          const FormatOptions& options, LutLayout layout);
 
 // The Hald lattice size to write for a requested size: itself when it is L^2 (L >= 2), else the
 // next larger square (a Hald image stores N = L^2 only), capped at 256.

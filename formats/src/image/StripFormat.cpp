@@ -30,8 +30,8 @@
 //     more plausible, the read is refused with the layouts that fit and their scores, asking for
 //     --layout. Reading never swaps axes silently.
 #include "Formats.h"
-#include "image/LutImage.h"
 #include "LutPrep.h"
+#include "image/LutImage.h"
 
 #include "lut/Error.h"
 #include "lut/Quantize.h"
@@ -62,9 +62,12 @@ struct AxisScore {
     double corr[3] = {0, 0, 0};
     double sum() const { return corr[0] + corr[1] + corr[2]; }
     bool followsAxes() const {
-        return corr[0] >= kAxisCorrelationMin && corr[1] >= kAxisCorrelationMin && corr[2] >= kAxisCorrelationMin;
+        return corr[0] >= kAxisCorrelationMin && corr[1] >= kAxisCorrelationMin &&
+               corr[2] >= kAxisCorrelationMin;
     }
-    std::string str() const { return "r " + fmt2(corr[0]) + ", g " + fmt2(corr[1]) + ", b " + fmt2(corr[2]); }
+    std::string str() const {
+        return "r " + fmt2(corr[0]) + ", g " + fmt2(corr[1]) + ", b " + fmt2(corr[2]);
+    }
 };
 
 AxisScore axisScore(const Lut3D& lut) {
@@ -76,7 +79,8 @@ AxisScore axisScore(const Lut3D& lut) {
             for (int g = 0; g < n; ++g)
                 for (int r = 0; r < n; ++r) {
                     const double v = lut.at(r, g, b)[c];
-                    if (!std::isfinite(v)) continue;
+                    if (!std::isfinite(v))
+                        continue;
                     const double x = c == 0 ? r : c == 1 ? g : b;
                     sx += x;
                     sy += v;
@@ -85,20 +89,25 @@ AxisScore axisScore(const Lut3D& lut) {
                     sxy += x * v;
                     cnt += 1;
                 }
-        if (cnt < 2) continue;
+        if (cnt < 2)
+            continue;
         const double vx = sxx - sx * sx / cnt, vy = syy - sy * sy / cnt, cxy = sxy - sx * sy / cnt;
-        if (vx <= 0 || vy <= 1e-20 * cnt) continue;
+        if (vx <= 0 || vy <= 1e-20 * cnt)
+            continue;
         const double r = cxy / std::sqrt(vx * vy);
         s.corr[c] = std::isfinite(r) ? std::max(-1.0, std::min(1.0, r)) : 0.0;
     }
     return s;
 }
 
-std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+std::string sizeText(int w, int h) {
+    return std::to_string(w) + "x" + std::to_string(h);
+}
 
 std::string fitsText(const std::vector<LayoutFit>& fits) {
     std::string s;
-    for (const auto& f : fits) s += (s.empty() ? "" : ", ") + std::string(toString(f.layout));
+    for (const auto& f : fits)
+        s += (s.empty() ? "" : ", ") + std::string(toString(f.layout));
     return s;
 }
 
@@ -109,10 +118,12 @@ int defaultBitDepth(const std::string& path) {
 
 } // namespace
 
-LutFile readLutImage(const std::string& path, const FormatOptions& options, std::optional<LutLayout> forced) {
+LutFile readLutImage(const std::string& path, const FormatOptions& options,
+                     std::optional<LutLayout> forced) {
     // Check the layout name before touching the file, so a typo is reported as such.
     std::optional<LutLayout> wanted = forced;
-    if (!wanted && !options.layout.empty()) wanted = parseLayout(options.layout);
+    if (!wanted && !options.layout.empty())
+        wanted = parseLayout(options.layout);
 
     const LoadedImage img = readImage(path);
     const int w = img.image.width(), h = img.image.height();
@@ -125,18 +136,22 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options, std:
     if (wanted) {
         layout = *wanted;
         for (const auto& f : fits)
-            if (f.layout == layout) n = f.size;
+            if (f.layout == layout)
+                n = f.size;
         if (n == 0) {
-            const std::string need = layout == LutLayout::Hald
-                                         ? "L^3 x L^3 pixels (e.g. 64x64 for 16^3, 512x512 for 64^3)"
-                                         : "N^2 x N pixels with N 2..256 (e.g. 256x16, 1024x32)";
-            throw Error(path + ": image is " + sizeText(w, h) + ", the " + toString(layout) + " layout needs " +
-                        need + (fits.empty() ? "" : "; this size fits " + fitsText(fits)));
+            const std::string need =
+                layout == LutLayout::Hald
+                    ? "L^3 x L^3 pixels (e.g. 64x64 for 16^3, 512x512 for 64^3)"
+                    : "N^2 x N pixels with N 2..256 (e.g. 256x16, 1024x32)";
+            throw Error(path + ": image is " + sizeText(w, h) + ", the " + toString(layout) +
+                        " layout needs " + need +
+                        (fits.empty() ? "" : "; this size fits " + fitsText(fits)));
         }
     } else if (fits.empty()) {
-        throw Error(path + ": image is " + sizeText(w, h) +
-                    ", not a LUT image size: pilot, unity and smush need N^2 x N (e.g. 256x16), hald needs "
-                    "L^3 x L^3 (e.g. 64x64)");
+        throw Error(
+            path + ": image is " + sizeText(w, h) +
+            ", not a LUT image size: pilot, unity and smush need N^2 x N (e.g. 256x16), hald needs "
+            "L^3 x L^3 (e.g. 64x64)");
     } else if (fits.size() == 1) {
         layout = fits.front().layout;
         n = fits.front().size;
@@ -145,12 +160,15 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options, std:
         std::vector<AxisScore> scores;
         std::vector<std::size_t> passing;
         for (std::size_t i = 0; i < fits.size(); ++i) {
-            scores.push_back(axisScore(lutFromImage(img.image.view(), fits[i].layout, fits[i].size)));
-            if (scores.back().followsAxes()) passing.push_back(i);
+            scores.push_back(
+                axisScore(lutFromImage(img.image.view(), fits[i].layout, fits[i].size)));
+            if (scores.back().followsAxes())
+                passing.push_back(i);
         }
         std::string table;
         for (std::size_t i = 0; i < fits.size(); ++i)
-            table += (table.empty() ? "" : "; ") + std::string(toString(fits[i].layout)) + ": " + scores[i].str();
+            table += (table.empty() ? "" : "; ") + std::string(toString(fits[i].layout)) + ": " +
+                     scores[i].str();
         if (passing.size() == 1) {
             layout = fits[passing.front()].layout;
             n = fits[passing.front()].size;
@@ -163,25 +181,31 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options, std:
         } else {
             std::size_t best = 0;
             for (std::size_t i = 1; i < fits.size(); ++i)
-                if (scores[i].sum() > scores[best].sum()) best = i;
+                if (scores[i].sum() > scores[best].sum())
+                    best = i;
             std::size_t pilot = fits.size();
             for (std::size_t i = 0; i < fits.size(); ++i)
-                if (fits[i].layout == LutLayout::Pilot) pilot = i;
-            if (passing.empty() && pilot < fits.size() && scores[pilot].sum() >= scores[best].sum() - kScoreTie) {
+                if (fits[i].layout == LutLayout::Pilot)
+                    pilot = i;
+            if (passing.empty() && pilot < fits.size() &&
+                scores[pilot].sum() >= scores[best].sum() - kScoreTie) {
                 layout = LutLayout::Pilot;
                 n = fits[pilot].size;
                 file.diagnostics.push_back(makeDiagnostic(
                     S::Warning, path,
                     "layout not detectable (" + sizeText(w, h) + " fits " + fitsText(fits) +
                         " and the table is not close to neutral in any: correlations " + table +
-                        "); read as pilot, the default for N^2 x N images; pass --layout if it is another"));
+                        "); read as pilot, the default for N^2 x N images; pass --layout if it is "
+                        "another"));
             } else {
-                throw Error(path + ": image is " + sizeText(w, h) + ", which fits the layouts " + fitsText(fits) +
-                            (passing.empty() ? " and is close to neutral in none of them"
-                                             : " and looks neutral in more than one") +
-                            " (correlation of each output channel with its input axis: " + table +
-                            "); pass --layout " + (passing.empty() ? std::string("pilot, unity or smush")
-                                                                    : fitsText(fits)));
+                throw Error(
+                    path + ": image is " + sizeText(w, h) + ", which fits the layouts " +
+                    fitsText(fits) +
+                    (passing.empty() ? " and is close to neutral in none of them"
+                                     : " and looks neutral in more than one") +
+                    " (correlation of each output channel with its input axis: " + table +
+                    "); pass --layout " +
+                    (passing.empty() ? std::string("pilot, unity or smush") : fitsText(fits)));
             }
         }
     }
@@ -190,20 +214,21 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options, std:
     file.format = layout == LutLayout::Hald ? "hald" : "strip";
     file.dialect = toString(layout);
     if (img.info.channels < 3)
-        file.diagnostics.push_back(makeDiagnostic(S::Warning, path,
-                                                  "grey image: the same value was used for red, green and blue"));
+        file.diagnostics.push_back(makeDiagnostic(
+            S::Warning, path, "grey image: the same value was used for red, green and blue"));
     std::size_t nonFinite = 0;
     for (auto& v : file.cube->entries())
         for (int c = 0; c < 3; ++c)
-            if (!std::isfinite(v[c])) ++nonFinite;
+            if (!std::isfinite(v[c]))
+                ++nonFinite;
     if (nonFinite)
-        file.diagnostics.push_back(makeDiagnostic(S::Warning, path,
-                                                  std::to_string(nonFinite) + " channel values are NaN or infinite"));
+        file.diagnostics.push_back(makeDiagnostic(
+            S::Warning, path, std::to_string(nonFinite) + " channel values are NaN or infinite"));
     return file;
 }
 
-Diagnostics writeLutImage(const std::string& path, const LutFile& source, const FormatOptions& options,
-                          LutLayout layout) {
+Diagnostics writeLutImage(const std::string& path, const LutFile& source,
+                          const FormatOptions& options, LutLayout layout) {
     Diagnostics diags;
     int bits = options.bitDepth > 0 ? options.bitDepth : defaultBitDepth(path);
     if (bits != 8 && bits != 16 && bits != 32)
@@ -217,15 +242,17 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source, const 
         const int own = size > 0 ? size : source.toLut3D(0).size();
         size = haldSizeFor(own);
         if (size != own)
-            diags.push_back(makeDiagnostic(S::Info, path,
-                                           "a Hald image stores N = L^2 only: " + std::to_string(own) +
-                                               "^3 written as " + std::to_string(size) + "^3 (level " +
-                                               std::to_string(static_cast<int>(std::lround(std::sqrt(size)))) + ")"));
+            diags.push_back(makeDiagnostic(
+                S::Info, path,
+                "a Hald image stores N = L^2 only: " + std::to_string(own) + "^3 written as " +
+                    std::to_string(size) + "^3 (level " +
+                    std::to_string(static_cast<int>(std::lround(std::sqrt(size)))) + ")"));
     }
     const Lut3D lut = prepareUnitLut(source, size, path, diags);
     if (bits != 32) {
         addClampDiagnostic(countOutOfUnitRange(lut), bits, path, diags);
-        if (!options.dither) addQuantizationDiagnostic(lut, bits, path, diags);
+        if (!options.dither)
+            addQuantizationDiagnostic(lut, bits, path, diags);
     }
     const Image image = lutToImage(lut, layout);
     ImageWriteOptions wo;
@@ -242,22 +269,29 @@ class StripFormat final : public Format {
 public:
     std::string name() const override { return "strip"; }
     std::string description() const override {
-        return "LUT image in a named layout (pilot/unreal/godot, unity, smush/lattice, hald): PNG/TIFF 8/16-bit, "
+        return "LUT image in a named layout (pilot/unreal/godot, unity, smush/lattice, hald): "
+               "PNG/TIFF 8/16-bit, "
                "float EXR";
     }
-    std::vector<std::string> extensions() const override { return {".png", ".tif", ".tiff", ".exr"}; }
+    std::vector<std::string> extensions() const override {
+        return {".png", ".tif", ".tiff", ".exr"};
+    }
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         return readLutImage(path, options);
     }
-    Diagnostics write(const std::string& path, const LutFile& lut, const FormatOptions& options) const override {
-        const LutLayout layout = options.layout.empty() ? LutLayout::Pilot : parseLayout(options.layout);
+    Diagnostics write(const std::string& path, const LutFile& lut,
+                      const FormatOptions& options) const override {
+        const LutLayout layout =
+            options.layout.empty() ? LutLayout::Pilot : parseLayout(options.layout);
         return writeLutImage(path, lut, options, layout);
     }
 };
 
 } // namespace
 
-std::unique_ptr<Format> makeStripFormat() { return std::make_unique<StripFormat>(); }
+std::unique_ptr<Format> makeStripFormat() {
+    return std::make_unique<StripFormat>();
+}
 
 } // namespace lut::formats

@@ -3,10 +3,10 @@
 // bit-exactly. No colour-space conversion is ever applied: LUT images store values, not colours.
 #include "lut/formats/ImageIO.h"
 
-#include "lut/io/AtomicFile.h"
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/Quantize.h"
+#include "lut/io/AtomicFile.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -24,15 +24,21 @@ static ImageInfo infoFromSpec(const OIIO::ImageSpec& spec, const std::string& fo
     info.channels = spec.nchannels;
     info.format = format;
     switch (spec.format.basetype) {
-    case OIIO::TypeDesc::UINT8: info.bitDepth = 8; break;
-    case OIIO::TypeDesc::UINT16: info.bitDepth = 16; break;
+    case OIIO::TypeDesc::UINT8:
+        info.bitDepth = 8;
+        break;
+    case OIIO::TypeDesc::UINT16:
+        info.bitDepth = 16;
+        break;
     case OIIO::TypeDesc::HALF:
     case OIIO::TypeDesc::FLOAT:
     case OIIO::TypeDesc::DOUBLE:
         info.bitDepth = 32;
         info.isFloat = true;
         break;
-    default: info.bitDepth = 0; break;
+    default:
+        info.bitDepth = 0;
+        break;
     }
     return info;
 }
@@ -46,7 +52,8 @@ static std::unique_ptr<OIIO::ImageInput> openInput(const std::string& path) {
     if (!in) {
         std::string err = OIIO::geterror();
         err = err.substr(0, err.find('\n')); // OIIO stacks libpng's lines; errors are one line
-        if (err.empty()) err = "not an image OpenImageIO can read";
+        if (err.empty())
+            err = "not an image OpenImageIO can read";
         throw Error(path + ": cannot read image: " + err);
     }
     return in;
@@ -55,12 +62,15 @@ static std::unique_ptr<OIIO::ImageInput> openInput(const std::string& path) {
 static void checkSize(const std::string& path, const OIIO::ImageSpec& spec) {
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throw Error(path + ": image has no pixels (" + std::to_string(spec.width) + "x" +
-                    std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
-    if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) > limits::kMaxImagePixels ||
+                    std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) +
+                    " channels)");
+    if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) >
+            limits::kMaxImagePixels ||
         spec.nchannels > 64)
-        throw LimitError(path + ": image is " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                         " with " + std::to_string(spec.nchannels) + " channels, over the limit of " +
-                         std::to_string(limits::kMaxImagePixels) + " pixels and 64 channels");
+        throw LimitError(path + ": image is " + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height) + " with " + std::to_string(spec.nchannels) +
+                         " channels, over the limit of " + std::to_string(limits::kMaxImagePixels) +
+                         " pixels and 64 channels");
 }
 
 ImageInfo readImageInfo(const std::string& path) {
@@ -81,7 +91,8 @@ LoadedImage readImage(const std::string& path) {
     if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, buf.data())) {
         std::string err = in->geterror();
         err = err.substr(0, err.find('\n')); // one line: OIIO appends libpng's own lines
-        throw Error(path + ": cannot read image data: " + (err.empty() ? "truncated or corrupt" : err));
+        throw Error(path +
+                    ": cannot read image data: " + (err.empty() ? "truncated or corrupt" : err));
     }
     in->close();
     // OIIO converts integers with v * (1/max); recompute from the exact integer so that
@@ -104,7 +115,8 @@ LoadedImage readImage(const std::string& path) {
         }
         for (int c = 0; c < 4; ++c) {
             float x = v[c];
-            if (maxv > 0.0) x = static_cast<float>(std::round(static_cast<double>(x) * maxv) / maxv);
+            if (maxv > 0.0)
+                x = static_cast<float>(std::round(static_cast<double>(x) * maxv) / maxv);
             dst[4 * i + c] = x;
         }
     }
@@ -118,15 +130,18 @@ static float bayer(int x, int y) {
 }
 
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
-    if (image.empty()) throw Error(path + ": cannot write an empty image");
+    if (image.empty())
+        throw Error(path + ": cannot write an empty image");
     const int bits = options.bitDepth;
     if (bits != 8 && bits != 16 && bits != 32)
-        throw Error(path + ": unsupported bit depth " + std::to_string(bits) + " (expected 8, 16 or 32)");
+        throw Error(path + ": unsupported bit depth " + std::to_string(bits) +
+                    " (expected 8, 16 or 32)");
     AtomicFile file(path);
     auto out = OIIO::ImageOutput::create(file.tempPath());
-    if (!out) throw Error(path + ": no image writer for this extension: " + OIIO::geterror());
+    if (!out)
+        throw Error(path + ": no image writer for this extension: " + OIIO::geterror());
     const int nch = options.alpha ? 4 : 3;
-    const OIIO::TypeDesc type = bits == 8 ? OIIO::TypeDesc::UINT8
+    const OIIO::TypeDesc type = bits == 8    ? OIIO::TypeDesc::UINT8
                                 : bits == 16 ? OIIO::TypeDesc::UINT16
                                              : OIIO::TypeDesc::FLOAT;
     if (bits == 32 && !out->supports("floatpixels") && std::string(out->format_name()) == "png")
@@ -144,7 +159,8 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
     const float* src = image.data();
     const float step = bits == 8 ? 1.0f / 255.0f : 1.0f / 65535.0f;
     auto dith = [&](std::size_t i) {
-        if (!options.dither) return 0.0f;
+        if (!options.dither)
+            return 0.0f;
         const int x = static_cast<int>(i % static_cast<std::size_t>(image.width()));
         const int y = static_cast<int>(i / static_cast<std::size_t>(image.width()));
         return bayer(x, y) * step;
@@ -153,24 +169,29 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
         std::vector<std::uint8_t> buf(n * nch);
         for (std::size_t i = 0; i < n; ++i) {
             const float d = dith(i);
-            for (int c = 0; c < nch; ++c) buf[i * nch + c] = toUnorm8(src[4 * i + c] + (c < 3 ? d : 0.0f));
+            for (int c = 0; c < nch; ++c)
+                buf[i * nch + c] = toUnorm8(src[4 * i + c] + (c < 3 ? d : 0.0f));
         }
         ok = out->write_image(type, buf.data());
     } else if (bits == 16) {
         std::vector<std::uint16_t> buf(n * nch);
         for (std::size_t i = 0; i < n; ++i) {
             const float d = dith(i);
-            for (int c = 0; c < nch; ++c) buf[i * nch + c] = toUnorm16(src[4 * i + c] + (c < 3 ? d : 0.0f));
+            for (int c = 0; c < nch; ++c)
+                buf[i * nch + c] = toUnorm16(src[4 * i + c] + (c < 3 ? d : 0.0f));
         }
         ok = out->write_image(type, buf.data());
     } else {
         std::vector<float> buf(n * nch);
         for (std::size_t i = 0; i < n; ++i)
-            for (int c = 0; c < nch; ++c) buf[i * nch + c] = src[4 * i + c];
+            for (int c = 0; c < nch; ++c)
+                buf[i * nch + c] = src[4 * i + c];
         ok = out->write_image(type, buf.data());
     }
-    if (!ok) throw Error(path + ": cannot write image: " + out->geterror());
-    if (!out->close()) throw Error(path + ": cannot write image: " + out->geterror());
+    if (!ok)
+        throw Error(path + ": cannot write image: " + out->geterror());
+    if (!out->close())
+        throw Error(path + ": cannot write image: " + out->geterror());
     out.reset();
     file.commit();
 }

@@ -22,7 +22,8 @@ namespace {
 std::string executableDir() {
     std::vector<char> buf(4096);
     const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-    if (n <= 0) return {};
+    if (n <= 0)
+        return {};
     std::string p(buf.data(), static_cast<std::size_t>(n));
     const auto slash = p.find_last_of('/');
     return slash == std::string::npos ? std::string() : p.substr(0, slash);
@@ -34,7 +35,8 @@ const module::ImageIOApi& api() {
     static std::once_flag once;
     std::call_once(once, [] {
         std::vector<std::string> candidates;
-        if (const char* env = std::getenv("LUTKIT_IMAGEIO_MODULE"); env && *env) candidates.emplace_back(env);
+        if (const char* env = std::getenv("LUTKIT_IMAGEIO_MODULE"); env && *env)
+            candidates.emplace_back(env);
         const std::string exeDir = executableDir();
         if (!exeDir.empty()) {
             candidates.push_back(exeDir + "/" + module::kImageIOModuleName);
@@ -52,13 +54,16 @@ const module::ImageIOApi& api() {
             void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
             if (!handle) {
                 const char* err = ::dlerror();
-                tried += (tried.empty() ? "" : ", ") + path + " (" + (err ? err : "dlopen failed") + ")";
+                tried +=
+                    (tried.empty() ? "" : ", ") + path + " (" + (err ? err : "dlopen failed") + ")";
                 continue;
             }
-            auto entry = reinterpret_cast<module::ImageIOEntryPoint>(::dlsym(handle, module::kImageIOEntryPoint));
+            auto entry = reinterpret_cast<module::ImageIOEntryPoint>(
+                ::dlsym(handle, module::kImageIOEntryPoint));
             const module::ImageIOApi* table = entry ? entry() : nullptr;
             if (!table || table->version != module::kImageIOApiVersion) {
-                tried += (tried.empty() ? "" : ", ") + path + " (not a matching lutkit image module)";
+                tried +=
+                    (tried.empty() ? "" : ", ") + path + " (not a matching lutkit image module)";
                 continue;
             }
             loaded = table; // never dlclose'd: OIIO keeps threads and plugins alive until exit
@@ -67,16 +72,21 @@ const module::ImageIOApi& api() {
         failure = std::string("image support (") + module::kImageIOModuleName +
                   ", OpenImageIO) could not be loaded; tried: " + tried;
     });
-    if (!loaded) throw Error(failure);
+    if (!loaded)
+        throw Error(failure);
     return *loaded;
 }
 
 void rethrow(int status, const std::string& error) {
     switch (status) {
-    case module::kOk: return;
-    case module::kLimitError: throw LimitError(error);
-    case module::kOutOfMemory: throw std::bad_alloc();
-    default: throw Error(error);
+    case module::kOk:
+        return;
+    case module::kLimitError:
+        throw LimitError(error);
+    case module::kOutOfMemory:
+        throw std::bad_alloc();
+    default:
+        throw Error(error);
     }
 }
 

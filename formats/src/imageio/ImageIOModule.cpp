@@ -39,11 +39,13 @@ int writeImageEntry(const std::string& path, const Image& image, const ImageWrit
     return guarded(error, [&] { lut::formats::writeImage(path, image, options); });
 }
 
-const ImageIOApi kApi = {kImageIOApiVersion, &readImageEntry, &readImageInfoEntry, &writeImageEntry};
+const ImageIOApi kApi = {kImageIOApiVersion, &readImageEntry, &readImageInfoEntry,
+                         &writeImageEntry};
 
 } // namespace
 } // namespace lut::formats::module
 
-extern "C" __attribute__((visibility("default"))) const lut::formats::module::ImageIOApi* lutkit_imageio_api() {
+extern "C" __attribute__((visibility("default"))) const lut::formats::module::ImageIOApi*
+lutkit_imageio_api() {
     return &lut::formats::module::kApi;
 }

@@ -14,10 +14,14 @@ namespace lut::formats::nutexb {
 
 int blockDepthFor(int depth) {
     const long long d = static_cast<long long>(depth) + depth / 2;
-    if (d >= 16) return 16;
-    if (d >= 8) return 8;
-    if (d >= 4) return 4;
-    if (d >= 2) return 2;
+    if (d >= 16)
+        return 16;
+    if (d >= 8)
+        return 8;
+    if (d >= 4)
+        return 4;
+    if (d >= 2)
+        return 2;
     return 1;
 }
 
@@ -41,7 +45,9 @@ std::uint32_t gobOffset(std::uint32_t xb, std::uint32_t yg) {
     return (xb / 32) * 256 + (yg / 2) * 64 + ((xb % 32) / 16) * 32 + (yg % 2) * 16 + (xb % 16);
 }
 
-static std::uint64_t ceilDiv(std::uint64_t a, std::uint64_t b) { return (a + b - 1) / b; }
+static std::uint64_t ceilDiv(std::uint64_t a, std::uint64_t b) {
+    return (a + b - 1) / b;
+}
 
 std::uint64_t tiledSize(const TileGeometry& g) {
     const std::uint64_t bh = static_cast<std::uint64_t>(g.blockHeight);
@@ -77,8 +83,10 @@ static void copyTexels(const TileGeometry& g, const std::uint8_t* src, std::uint
                 if (whole) {
                     const std::uint64_t t = tiledOffset(g, x, y, z);
                     for (std::size_t k = 0; k < bpp; ++k) {
-                        if (ToTiled) dst[t + k] = src[lin + k];
-                        else dst[lin + k] = src[t + k];
+                        if (ToTiled)
+                            dst[t + k] = src[lin + k];
+                        else
+                            dst[lin + k] = src[t + k];
                     }
                 } else {
                     // Byte-wise: address of byte column xb = x*bpp + k computed directly.
@@ -87,8 +95,10 @@ static void copyTexels(const TileGeometry& g, const std::uint8_t* src, std::uint
                         one.bpp = 1;
                         const int xb = static_cast<int>(static_cast<std::uint64_t>(x) * bpp + k);
                         const std::uint64_t t = tiledOffset(one, xb, y, z);
-                        if (ToTiled) dst[t] = src[lin + k];
-                        else dst[lin + k] = src[t];
+                        if (ToTiled)
+                            dst[t] = src[lin + k];
+                        else
+                            dst[lin + k] = src[t];
                     }
                 }
             }
@@ -101,7 +111,8 @@ std::vector<std::uint8_t> tile(const TileGeometry& g, const std::uint8_t* linear
 }
 
 std::vector<std::uint8_t> untile(const TileGeometry& g, const std::uint8_t* tiled) {
-    std::vector<std::uint8_t> out(static_cast<std::size_t>(g.width) * g.height * g.depth * g.bpp, 0);
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(g.width) * g.height * g.depth * g.bpp,
+                                  0);
     copyTexels<false>(g, tiled, out.data());
     return out;
 }

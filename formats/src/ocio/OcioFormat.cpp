@@ -19,17 +19,17 @@
 #include "Formats.h"
 #include "LutPrep.h"
 
-#include "lut/io/AtomicFile.h"
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
+#include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <mutex>
 #include <sstream>
@@ -50,7 +50,8 @@ std::string oneLine(const char* message) {
             space = !out.empty();
             continue;
         }
-        if (space) out += ' ';
+        if (space)
+            out += ' ';
         space = false;
         out += *p;
     }
@@ -125,20 +126,28 @@ std::string lowered(std::string s) {
 std::string ocioFormatNamesFor(const std::string& ext) {
     std::string names;
     for (int i = 0; i < OCIO::FileTransform::GetNumFormats(); ++i) {
-        if ("." + lowered(OCIO::FileTransform::GetFormatExtensionByIndex(i)) != ext) continue;
-        names += (names.empty() ? "" : "/") + std::string(OCIO::FileTransform::GetFormatNameByIndex(i));
+        if ("." + lowered(OCIO::FileTransform::GetFormatExtensionByIndex(i)) != ext)
+            continue;
+        names +=
+            (names.empty() ? "" : "/") + std::string(OCIO::FileTransform::GetFormatNameByIndex(i));
     }
     return names;
 }
 
 int bitDepthBits(OCIO::BitDepth d) {
     switch (d) {
-    case OCIO::BIT_DEPTH_UINT8: return 8;
-    case OCIO::BIT_DEPTH_UINT10: return 10;
-    case OCIO::BIT_DEPTH_UINT12: return 12;
-    case OCIO::BIT_DEPTH_UINT14: return 14;
-    case OCIO::BIT_DEPTH_UINT16: return 16;
-    default: return 0;
+    case OCIO::BIT_DEPTH_UINT8:
+        return 8;
+    case OCIO::BIT_DEPTH_UINT10:
+        return 10;
+    case OCIO::BIT_DEPTH_UINT12:
+        return 12;
+    case OCIO::BIT_DEPTH_UINT14:
+        return 14;
+    case OCIO::BIT_DEPTH_UINT16:
+        return 16;
+    default:
+        return 0;
     }
 }
 
@@ -157,12 +166,14 @@ struct ProcessorFacts {
 void collectMetadata(const OCIO::FormatMetadata& md, ProcessorFacts& facts) {
     if (facts.title.empty()) {
         const char* name = md.getName();
-        if (name && *name) facts.title = name;
+        if (name && *name)
+            facts.title = name;
     }
     for (int i = 0; i < md.getNumChildrenElements(); ++i) {
         const auto& child = md.getChildElement(i);
         const char* v = child.getElementValue();
-        if (v && *v && facts.comments.size() < 1000) facts.comments.emplace_back(v);
+        if (v && *v && facts.comments.size() < 1000)
+            facts.comments.emplace_back(v);
     }
 }
 
@@ -194,14 +205,15 @@ ProcessorFacts inspect(const OCIO::ConstProcessorRcPtr& processor) {
 // checks this list against FileTransform::GetFormatExtensionByIndex so it cannot drift; it is
 // spelled out here so that looking a format up never has to load OCIO's format registry.
 const std::vector<std::string> kOcioReadExtensions = {
-    ".3dl", ".cc", ".ccc", ".cdl", ".clf", ".ctf", ".csp", ".lut", ".icc", ".icm", ".pf",
-    ".itx", ".look", ".mga", ".m3d", ".spi1d", ".spi3d", ".spimtx", ".cub", ".vf"};
+    ".3dl", ".cc",  ".ccc",  ".cdl", ".clf", ".ctf",   ".csp",   ".lut",    ".icc", ".icm",
+    ".pf",  ".itx", ".look", ".mga", ".m3d", ".spi1d", ".spi3d", ".spimtx", ".cub", ".vf"};
 
 class OcioReadFormat final : public Format {
 public:
     std::string name() const override { return "ocio"; }
     std::string description() const override {
-        return "any LUT file OpenColorIO reads (.3dl .csp .spi1d .spi3d .clf .ctf .cub .cc .ccc .cdl "
+        return "any LUT file OpenColorIO reads (.3dl .csp .spi1d .spi3d .clf .ctf .cub .cc .ccc "
+               ".cdl "
                ".look .itx .mga .m3d .vf .lut .icc), sampled on a lattice";
     }
     std::vector<std::string> extensions() const override { return kOcioReadExtensions; }
@@ -210,13 +222,17 @@ public:
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         std::error_code ec;
         const auto fileSize = std::filesystem::file_size(path, ec);
-        if (ec) throw Error(path + ": cannot open: " + ec.message());
+        if (ec)
+            throw Error(path + ": cannot open: " + ec.message());
         if (fileSize > limits::kMaxLutFileBytes)
-            throw LimitError(path + ": file is " + std::to_string(fileSize) + " bytes, over the limit of " +
+            throw LimitError(path + ": file is " + std::to_string(fileSize) +
+                             " bytes, over the limit of " +
                              std::to_string(limits::kMaxLutFileBytes));
-        if (options.size != 0 && (options.size < limits::kMin3DSize || options.size > limits::kMax3DSize))
+        if (options.size != 0 &&
+            (options.size < limits::kMin3DSize || options.size > limits::kMax3DSize))
             throw Error(path + ": lattice size " + std::to_string(options.size) + " is outside " +
-                        std::to_string(limits::kMin3DSize) + ".." + std::to_string(limits::kMax3DSize));
+                        std::to_string(limits::kMin3DSize) + ".." +
+                        std::to_string(limits::kMax3DSize));
 
         OcioSession session(path);
         LutFile out;
@@ -234,13 +250,14 @@ public:
             out.dialect = ocioFormatNamesFor(extensionOf(path));
             out.sourceBitDepth = facts.bitDepth;
 
-            const auto cpu = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                                 OCIO::OPTIMIZATION_NONE);
+            const auto cpu = processor->getOptimizedCPUProcessor(
+                OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
             // A file of 1D tables only (.spi1d, a 1D .csp, a Discreet .lut) stays a per-channel
             // table: sampled on its own length along the grey ramp, which for per-channel tables
             // is the whole function. Asking for --size makes it a 3D lattice like everything else.
-            if (options.size == 0 && facts.lut1dCount > 0 && facts.lut3dCount == 0 && facts.otherCount == 0 &&
-                !facts.halfDomain && facts.length1d >= static_cast<unsigned long>(limits::kMin1DSize) &&
+            if (options.size == 0 && facts.lut1dCount > 0 && facts.lut3dCount == 0 &&
+                facts.otherCount == 0 && !facts.halfDomain &&
+                facts.length1d >= static_cast<unsigned long>(limits::kMin1DSize) &&
                 facts.length1d <= static_cast<unsigned long>(limits::kMax1DSize)) {
                 Lut1D shaper = Lut1D::identity(static_cast<int>(facts.length1d));
                 shaper.setTitle(facts.title);
@@ -248,7 +265,8 @@ public:
                 cpu->apply(desc);
                 for (auto& v : shaper.entries())
                     for (int c = 0; c < 3; ++c)
-                        if (!std::isfinite(v[c])) v[c] = 0.0f;
+                        if (!std::isfinite(v[c]))
+                            v[c] = 0.0f;
                 out.shaper = std::move(shaper);
                 session.appendDiagnostics(out.diagnostics);
                 return out;
@@ -267,15 +285,17 @@ public:
             // so no index order has to be translated. Rows of one (g,b) line each, in parallel.
             float* data = lut.data();
             parallelFor(size * size, 0, [&](int l0, int l1) {
-                OCIO::PackedImageDesc desc(data + static_cast<std::size_t>(l0) * size * 3, size, l1 - l0, 3);
+                OCIO::PackedImageDesc desc(data + static_cast<std::size_t>(l0) * size * 3, size,
+                                           l1 - l0, 3);
                 cpu->apply(desc);
             });
             if (facts.lut3dCount == 0 || facts.lut1dCount > 0 || facts.otherCount > 0 ||
                 facts.gridSize != static_cast<unsigned long>(size))
                 out.diagnostics.push_back(info(
-                    path, "sampled OpenColorIO's processor (" + std::to_string(facts.lut1dCount) + " 1D LUT, " +
-                              std::to_string(facts.lut3dCount) + " 3D LUT, " + std::to_string(facts.otherCount) +
-                              " other ops) on a " + std::to_string(size) + "^3 lattice over [0,1]"));
+                    path, "sampled OpenColorIO's processor (" + std::to_string(facts.lut1dCount) +
+                              " 1D LUT, " + std::to_string(facts.lut3dCount) + " 3D LUT, " +
+                              std::to_string(facts.otherCount) + " other ops) on a " +
+                              std::to_string(size) + "^3 lattice over [0,1]"));
         } catch (const OCIO::Exception& e) {
             throw Error(path + ": OpenColorIO cannot read it: " + oneLine(e.what()));
         }
@@ -287,14 +307,16 @@ public:
                     ++nonFinite;
                 }
         if (nonFinite)
-            out.diagnostics.push_back(info(path, std::to_string(nonFinite) + " NaN/Inf values replaced by 0",
-                                           Diagnostic::Severity::Warning));
+            out.diagnostics.push_back(
+                info(path, std::to_string(nonFinite) + " NaN/Inf values replaced by 0",
+                     Diagnostic::Severity::Warning));
         session.appendDiagnostics(out.diagnostics);
         out.cube = std::move(lut);
         return out;
     }
 
-    Diagnostics write(const std::string& path, const LutFile&, const FormatOptions&) const override {
+    Diagnostics write(const std::string& path, const LutFile&,
+                      const FormatOptions&) const override {
         throw Error(path + ": the 'ocio' reader does not write; pick a format with --format");
     }
 };
@@ -318,35 +340,42 @@ public:
         throw Error(path + ": read it with the 'ocio' format");
     }
 
-    Diagnostics write(const std::string& path, const LutFile& file, const FormatOptions& options) const override {
+    Diagnostics write(const std::string& path, const LutFile& file,
+                      const FormatOptions& options) const override {
         Diagnostics diags;
         if (file.shaper)
-            diags.push_back(info(path, "the 1D shaper was baked into the 3D table", Diagnostic::Severity::Warning));
+            diags.push_back(info(path, "the 1D shaper was baked into the 3D table",
+                                 Diagnostic::Severity::Warning));
         Lut3D lut = file.toLut3D(options.size);
         if (lut.size() < m_minSize) {
             // A .3dl's first line lists the input lattice; with fewer than 4 entries OCIO takes it
             // for a row of values and cannot read the file back. Upsampling is exact here: the
             // finer tetrahedral lattice interpolates the coarse one's tetrahedra unchanged.
-            diags.push_back(info(path, "a " + std::to_string(lut.size()) + "^3 table is written as " +
-                                           std::to_string(m_minSize) + "^3 (" + m_name + " needs at least " +
-                                           std::to_string(m_minSize) + " lattice points per axis)"));
+            diags.push_back(
+                info(path, "a " + std::to_string(lut.size()) + "^3 table is written as " +
+                               std::to_string(m_minSize) + "^3 (" + m_name + " needs at least " +
+                               std::to_string(m_minSize) + " lattice points per axis)"));
             lut = resample(lut, m_minSize, Interpolation::Tetrahedral);
         }
         if (lut.size() > kOcioMaxGrid)
-            throw Error(path + ": OpenColorIO writes tables up to " + std::to_string(kOcioMaxGrid) + "^3; this one is " +
-                        std::to_string(lut.size()) + "^3 (use --size)");
+            throw Error(path + ": OpenColorIO writes tables up to " + std::to_string(kOcioMaxGrid) +
+                        "^3; this one is " + std::to_string(lut.size()) + "^3 (use --size)");
         if (!lut.hasDefaultDomain())
-            diags.push_back(info(path, "domain is not [0,1]: the table was re-sampled over [0,1] inputs",
+            diags.push_back(info(path,
+                                 "domain is not [0,1]: the table was re-sampled over [0,1] inputs",
                                  Diagnostic::Severity::Warning));
         if (m_storedBits) {
             const auto [lo, hi] = lut.valueRange();
             if (lo < 0.0f || hi > 1.0f)
-                diags.push_back(info(path, "values outside [0,1] (" + std::to_string(lo) + ".." + std::to_string(hi) +
-                                               ") are clipped: " + m_name + " stores " + std::to_string(m_storedBits) +
-                                               "-bit integers",
+                diags.push_back(info(path,
+                                     "values outside [0,1] (" + std::to_string(lo) + ".." +
+                                         std::to_string(hi) + ") are clipped: " + m_name +
+                                         " stores " + std::to_string(m_storedBits) +
+                                         "-bit integers",
                                      Diagnostic::Severity::Warning));
             else
-                diags.push_back(info(path, m_name + " stores " + std::to_string(m_storedBits) + "-bit integers"));
+                diags.push_back(info(path, m_name + " stores " + std::to_string(m_storedBits) +
+                                               "-bit integers"));
         }
 
         OcioSession session(path);
@@ -398,7 +427,8 @@ public:
                 md.addChildElement(OCIO::METADATA_DESCRIPTION, lut.title().c_str());
             }
             for (const auto& c : lut.comments())
-                if (!c.empty()) md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
+                if (!c.empty())
+                    md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
             baker->bake(os);
         } catch (const OCIO::Exception& e) {
             throw Error(path + ": OpenColorIO cannot write " + m_name + ": " + oneLine(e.what()));
@@ -422,13 +452,16 @@ private:
 class Spi3dFormat final : public Format {
 public:
     std::string name() const override { return "spi3d"; }
-    std::string description() const override { return "Sony Imageworks .spi3d (written here, read via OpenColorIO)"; }
+    std::string description() const override {
+        return "Sony Imageworks .spi3d (written here, read via OpenColorIO)";
+    }
     std::vector<std::string> extensions() const override { return {".spi3d"}; }
     bool canRead() const override { return false; }
     LutFile read(const std::string& path, const FormatOptions&) const override {
         throw Error(path + ": read it with the 'ocio' format");
     }
-    Diagnostics write(const std::string& path, const LutFile& file, const FormatOptions& options) const override {
+    Diagnostics write(const std::string& path, const LutFile& file,
+                      const FormatOptions& options) const override {
         Diagnostics diags;
         const Lut3D lut = prepareUnitLut(file, options.size, path, diags);
         const int n = lut.size();
@@ -441,8 +474,8 @@ public:
                 for (int b = 0; b < n; ++b) {
                     const glm::vec3 v = lut.at(r, g, b);
                     // %.9g: every float reads back as itself.
-                    std::snprintf(buf, sizeof buf, "%d %d %d %.9g %.9g %.9g\n", r, g, b, double(v.x), double(v.y),
-                                  double(v.z));
+                    std::snprintf(buf, sizeof buf, "%d %d %d %.9g %.9g %.9g\n", r, g, b,
+                                  double(v.x), double(v.y), double(v.z));
                     text += buf;
                 }
         writeFileAtomically(path, text);
@@ -452,24 +485,33 @@ public:
 
 } // namespace
 
-std::unique_ptr<Format> makeOcioReadFormat() { return std::make_unique<OcioReadFormat>(); }
+std::unique_ptr<Format> makeOcioReadFormat() {
+    return std::make_unique<OcioReadFormat>();
+}
 
 std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
     std::vector<std::unique_ptr<Format>> v;
     // Order matters where two share an extension: the first is the default writer (.3dl -> flame).
-    v.push_back(std::make_unique<OcioBakeFormat>("flame", "flame", ".3dl",
-                                                 "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4));
-    v.push_back(std::make_unique<OcioBakeFormat>("lustre", "lustre", ".3dl",
-                                                 "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12, 4));
-    v.push_back(std::make_unique<OcioBakeFormat>("csp", "cinespace", ".csp", "Cinespace .csp, via OpenColorIO", 0));
-    v.push_back(std::make_unique<OcioBakeFormat>("clf", "Academy/ASC Common LUT Format", ".clf",
-                                                 "Academy/ASC Common LUT Format .clf, via OpenColorIO", 0));
-    v.push_back(std::make_unique<OcioBakeFormat>("ctf", "Color Transform Format", ".ctf",
-                                                 "Autodesk Color Transform Format .ctf, via OpenColorIO", 0));
-    v.push_back(std::make_unique<OcioBakeFormat>("cub", "truelight", ".cub", "Truelight .cub, via OpenColorIO", 0));
-    v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx", "Iridas .itx, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "flame", "flame", ".3dl", "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "lustre", "lustre", ".3dl", "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12,
+        4));
+    v.push_back(std::make_unique<OcioBakeFormat>("csp", "cinespace", ".csp",
+                                                 "Cinespace .csp, via OpenColorIO", 0));
+    v.push_back(
+        std::make_unique<OcioBakeFormat>("clf", "Academy/ASC Common LUT Format", ".clf",
+                                         "Academy/ASC Common LUT Format .clf, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "ctf", "Color Transform Format", ".ctf",
+        "Autodesk Color Transform Format .ctf, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>("cub", "truelight", ".cub",
+                                                 "Truelight .cub, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx",
+                                                 "Iridas .itx, via OpenColorIO", 0));
     v.push_back(std::make_unique<Spi3dFormat>());
-    v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut", "Houdini .lut, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut",
+                                                 "Houdini .lut, via OpenColorIO", 0));
     return v;
 }
 

@@ -43,7 +43,7 @@ struct Diagnostic {
     enum class Severity { Info, Warning, Error };
     Severity severity = Severity::Warning;
     std::string path;
-    int line = 0;   // 0 = not tied to a line
+    int line = 0; // 0 = not tied to a line
     int column = 0;
     std::string message;
     std::string str() const; // "path:line:col: warning: message"

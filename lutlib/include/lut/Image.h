@@ -30,7 +30,9 @@ public:
     ImageView view() const; // the view is mutable; constness is the caller's promise
     float* data() { return m_pixels.data(); }
     const float* data() const { return m_pixels.data(); }
-    float* pixel(int x, int y) { return m_pixels.data() + 4 * (static_cast<std::size_t>(y) * m_width + x); }
+    float* pixel(int x, int y) {
+        return m_pixels.data() + 4 * (static_cast<std::size_t>(y) * m_width + x);
+    }
     const float* pixel(int x, int y) const {
         return m_pixels.data() + 4 * (static_cast<std::size_t>(y) * m_width + x);
     }

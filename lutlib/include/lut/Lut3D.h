@@ -56,7 +56,9 @@ public:
 
     // Largest absolute difference of any entry from the identity over this LUT's domain.
     float maxDeviationFromIdentity() const;
-    bool isIdentity(float tolerance = 1e-6f) const { return maxDeviationFromIdentity() <= tolerance; }
+    bool isIdentity(float tolerance = 1e-6f) const {
+        return maxDeviationFromIdentity() <= tolerance;
+    }
     // Smallest and largest entry value over all channels (NaN entries ignored).
     std::pair<float, float> valueRange() const;
 

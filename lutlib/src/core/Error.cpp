@@ -7,7 +7,8 @@ static std::string formatParseError(const std::string& path, int line, int colum
     std::string s = path;
     if (line > 0) {
         s += ":" + std::to_string(line);
-        if (column > 0) s += ":" + std::to_string(column);
+        if (column > 0)
+            s += ":" + std::to_string(column);
     }
     s += ": " + message;
     if (!offending.empty()) {
@@ -24,7 +25,8 @@ static std::string formatParseError(const std::string& path, int line, int colum
                 shown += c;
             }
         }
-        if (offending.size() > 60) shown += "...";
+        if (offending.size() > 60)
+            shown += "...";
         s += " (found '" + shown + "')";
     }
     return s;
@@ -40,13 +42,21 @@ std::string Diagnostic::str() const {
     std::string s = path;
     if (line > 0) {
         s += ":" + std::to_string(line);
-        if (column > 0) s += ":" + std::to_string(column);
+        if (column > 0)
+            s += ":" + std::to_string(column);
     }
-    if (!s.empty()) s += ": ";
+    if (!s.empty())
+        s += ": ";
     switch (severity) {
-    case Severity::Info: s += "note: "; break;
-    case Severity::Warning: s += "warning: "; break;
-    case Severity::Error: s += "error: "; break;
+    case Severity::Info:
+        s += "note: ";
+        break;
+    case Severity::Warning:
+        s += "warning: ";
+        break;
+    case Severity::Error:
+        s += "error: ";
+        break;
     }
     return s + message;
 }

@@ -19,14 +19,17 @@ std::string ErrorStats::str() const {
 
 void ErrorAccumulator::add(double a, double b) {
     double d = std::fabs(a - b);
-    if (std::isnan(d)) d = (std::isnan(a) && std::isnan(b)) ? 0.0 : INFINITY;
-    if (d > m_max) m_max = d;
+    if (std::isnan(d))
+        d = (std::isnan(a) && std::isnan(b)) ? 0.0 : INFINITY;
+    if (d > m_max)
+        m_max = d;
     m_sum += d;
     ++m_count;
 }
 
 void ErrorAccumulator::merge(const ErrorAccumulator& other) {
-    if (other.m_max > m_max) m_max = other.m_max;
+    if (other.m_max > m_max)
+        m_max = other.m_max;
     m_sum += other.m_sum;
     m_count += other.m_count;
 }

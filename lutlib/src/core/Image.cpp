@@ -7,9 +7,11 @@ namespace lut {
 
 Image::Image(int width, int height, float fill) {
     if (width < 0 || height < 0 ||
-        static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > limits::kMaxImagePixels)
+        static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) >
+            limits::kMaxImagePixels)
         throw LimitError("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                         " exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+                         " exceeds the limit of " + std::to_string(limits::kMaxImagePixels) +
+                         " pixels");
     m_width = width;
     m_height = height;
     m_pixels.assign(static_cast<std::size_t>(width) * height * 4, fill);

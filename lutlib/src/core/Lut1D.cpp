@@ -17,7 +17,8 @@ Lut1D::Lut1D(int size) {
 Lut1D Lut1D::identity(int size) {
     Lut1D l(size);
     for (int i = 0; i < size; ++i)
-        l[i] = glm::vec3(i == size - 1 ? 1.0f : static_cast<float>(i) / static_cast<float>(size - 1));
+        l[i] =
+            glm::vec3(i == size - 1 ? 1.0f : static_cast<float>(i) / static_cast<float>(size - 1));
     return l;
 }
 
@@ -32,16 +33,21 @@ void Lut1D::setDomain(glm::vec3 min, glm::vec3 max) {
 glm::vec3 Lut1D::apply(glm::vec3 in) const {
     glm::vec3 out(0.0f);
     const int n = size();
-    if (n == 0) return in;
+    if (n == 0)
+        return in;
     for (int c = 0; c < 3; ++c) {
         double x = in[c];
-        if (std::isnan(x)) x = m_domainMin[c];
-        double t = (x - m_domainMin[c]) / (static_cast<double>(m_domainMax[c]) - m_domainMin[c]) *
-                   (n - 1);
-        if (!(t > 0.0)) t = 0.0; // also catches -Inf
-        if (t > n - 1) t = n - 1;
+        if (std::isnan(x))
+            x = m_domainMin[c];
+        double t =
+            (x - m_domainMin[c]) / (static_cast<double>(m_domainMax[c]) - m_domainMin[c]) * (n - 1);
+        if (!(t > 0.0))
+            t = 0.0; // also catches -Inf
+        if (t > n - 1)
+            t = n - 1;
         int i0 = static_cast<int>(t);
-        if (i0 > n - 2) i0 = n - 2;
+        if (i0 > n - 2)
+            i0 = n - 2;
         const double f = t - i0;
         const double a = m_entries[static_cast<std::size_t>(i0)][c];
         const double b = m_entries[static_cast<std::size_t>(i0 + 1)][c];

@@ -21,12 +21,14 @@ Lut3D Lut3D::identity(int size) {
     // i/(N-1) as a correctly rounded division (not i * (1/(N-1)), which is off by an ulp for
     // some i), so entries equal latticeInput() and the last entry is exactly 1.
     std::vector<float> v(static_cast<std::size_t>(size));
-    for (int i = 0; i < size; ++i) v[static_cast<std::size_t>(i)] = static_cast<float>(i) / static_cast<float>(size - 1);
+    for (int i = 0; i < size; ++i)
+        v[static_cast<std::size_t>(i)] = static_cast<float>(i) / static_cast<float>(size - 1);
     for (int b = 0; b < size; ++b)
         for (int g = 0; g < size; ++g)
             for (int r = 0; r < size; ++r)
-                l.at(r, g, b) = glm::vec3(v[static_cast<std::size_t>(r)], v[static_cast<std::size_t>(g)],
-                                          v[static_cast<std::size_t>(b)]);
+                l.at(r, g, b) =
+                    glm::vec3(v[static_cast<std::size_t>(r)], v[static_cast<std::size_t>(g)],
+                              v[static_cast<std::size_t>(b)]);
     return l;
 }
 
@@ -59,9 +61,9 @@ glm::vec3 Lut3D::latticeInput(int r, int g, int b) const {
         // Exact at both ends: the last lattice point is exactly domainMax.
         out[c] = i == m_size - 1
                      ? m_domainMax[c]
-                     : static_cast<float>(m_domainMin[c] + (static_cast<double>(m_domainMax[c]) -
-                                                            m_domainMin[c]) *
-                                                               idx[c] / (m_size - 1));
+                     : static_cast<float>(m_domainMin[c] +
+                                          (static_cast<double>(m_domainMax[c]) - m_domainMin[c]) *
+                                              idx[c] / (m_size - 1));
     }
     return out;
 }
@@ -75,7 +77,8 @@ float Lut3D::maxDeviationFromIdentity() const {
                 const glm::vec3 v = at(r, g, b);
                 for (int c = 0; c < 3; ++c) {
                     const double d = std::fabs(static_cast<double>(v[c]) - in[c]);
-                    if (std::isnan(d)) return INFINITY;
+                    if (std::isnan(d))
+                        return INFINITY;
                     dev = std::max(dev, d);
                 }
             }
@@ -86,7 +89,8 @@ std::pair<float, float> Lut3D::valueRange() const {
     float lo = INFINITY, hi = -INFINITY;
     for (const auto& v : m_entries)
         for (int c = 0; c < 3; ++c) {
-            if (std::isnan(v[c])) continue;
+            if (std::isnan(v[c]))
+                continue;
             lo = std::min(lo, v[c]);
             hi = std::max(hi, v[c]);
         }

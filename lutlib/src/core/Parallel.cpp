@@ -9,13 +9,15 @@
 namespace lut {
 
 int resolveThreads(int nthreads) {
-    if (nthreads > 0) return nthreads;
+    if (nthreads > 0)
+        return nthreads;
     const unsigned hw = std::thread::hardware_concurrency();
     return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
 void parallelFor(int count, int nthreads, const std::function<void(int, int)>& fn) {
-    if (count <= 0) return;
+    if (count <= 0)
+        return;
     const int n = std::min(resolveThreads(nthreads), count);
     if (n <= 1) {
         fn(0, count);
@@ -33,16 +35,20 @@ void parallelFor(int count, int nthreads, const std::function<void(int, int)>& f
             errors[static_cast<std::size_t>(i)] = std::current_exception();
         }
     };
-    for (int i = 1; i < n; ++i) threads.emplace_back(chunk, i);
+    for (int i = 1; i < n; ++i)
+        threads.emplace_back(chunk, i);
     chunk(0);
-    for (auto& t : threads) t.join();
+    for (auto& t : threads)
+        t.join();
     for (auto& e : errors)
-        if (e) std::rethrow_exception(e);
+        if (e)
+            std::rethrow_exception(e);
 }
 
 void parallelForDynamic(int count, int nthreads, int grain,
                         const std::function<void(int, int)>& fn) {
-    if (count <= 0) return;
+    if (count <= 0)
+        return;
     grain = std::max(1, grain);
     const int chunks = (count + grain - 1) / grain;
     const int n = std::min(resolveThreads(nthreads), chunks);
@@ -56,9 +62,11 @@ void parallelForDynamic(int count, int nthreads, int grain,
     auto worker = [&](int i) {
         try {
             for (;;) {
-                if (failed.load(std::memory_order_relaxed)) return;
+                if (failed.load(std::memory_order_relaxed))
+                    return;
                 const int c = next.fetch_add(1, std::memory_order_relaxed);
-                if (c >= chunks) return;
+                if (c >= chunks)
+                    return;
                 const int begin = c * grain;
                 fn(begin, std::min(count, begin + grain));
             }
@@ -69,11 +77,14 @@ void parallelForDynamic(int count, int nthreads, int grain,
     };
     std::vector<std::thread> threads;
     threads.reserve(static_cast<std::size_t>(n - 1));
-    for (int i = 1; i < n; ++i) threads.emplace_back(worker, i);
+    for (int i = 1; i < n; ++i)
+        threads.emplace_back(worker, i);
     worker(0);
-    for (auto& t : threads) t.join();
+    for (auto& t : threads)
+        t.join();
     for (auto& e : errors)
-        if (e) std::rethrow_exception(e);
+        if (e)
+            std::rethrow_exception(e);
 }
 
 } // namespace lut

@@ -21,22 +21,27 @@ namespace lut {
 Sampler::~Sampler() = default;
 
 void Sampler::apply(const ImageView& image, int nthreads) const {
-    if (image.empty()) return;
+    if (image.empty())
+        return;
     const int threads = std::min(resolveThreads(nthreads), image.height);
     // Workers take bands of rows from a shared counter instead of one fixed half each: on a busy
     // machine a descheduled thread then delays the frame by one band, not by half of it.
     const std::size_t w = static_cast<std::size_t>(image.width);
-    const int band = std::max(1, std::min(64, static_cast<int>((1u << 16) / std::max<std::size_t>(w, 1))));
+    const int band =
+        std::max(1, std::min(64, static_cast<int>((1u << 16) / std::max<std::size_t>(w, 1))));
     std::atomic<int> next{0};
     parallelFor(threads, threads, [&](int, int) {
         for (;;) {
             const int y0 = next.fetch_add(band, std::memory_order_relaxed);
-            if (y0 >= image.height) break;
+            if (y0 >= image.height)
+                break;
             const int y1 = std::min(image.height, y0 + band);
             if (image.strideFloats == static_cast<std::ptrdiff_t>(4 * w))
-                applyPixels(image.row(y0), w * static_cast<std::size_t>(y1 - y0)); // contiguous rows
+                applyPixels(image.row(y0),
+                            w * static_cast<std::size_t>(y1 - y0)); // contiguous rows
             else
-                for (int y = y0; y < y1; ++y) applyPixels(image.row(y), w);
+                for (int y = y0; y < y1; ++y)
+                    applyPixels(image.row(y), w);
         }
     });
 }
@@ -48,10 +53,12 @@ LatticeMap::LatticeMap(const Lut3D& lut) : size(lut.size()) {
         const double lo = lut.domainMin()[c], hi = lut.domainMax()[c];
         double s = (size - 1) / (hi - lo);
         // Degenerate domain: keep the scale (and the snapping bias) finite in float.
-        if (!(s <= FLT_MAX)) s = FLT_MAX;
+        if (!(s <= FLT_MAX))
+            s = FLT_MAX;
         scale[c] = static_cast<float>(s);
         offset[c] = static_cast<float>(lo);
-        snapBias[c] = static_cast<float>(std::min(std::fabs(lo) * s, static_cast<double>(FLT_MAX) / 4));
+        snapBias[c] =
+            static_cast<float>(std::min(std::fabs(lo) * s, static_cast<double>(FLT_MAX) / 4));
     }
 }
 
@@ -60,15 +67,19 @@ void LatticeMap::locate(glm::vec3 in, int idx[3], float frac[3]) const {
     for (int c = 0; c < 3; ++c) {
         float t = (in[c] - offset[c]) * scale[c];
         // NaN and -Inf fail the comparison and land on 0; +Inf clamps to the top.
-        if (!(t > 0.0f)) t = 0.0f;
-        if (t > top) t = top;
+        if (!(t > 0.0f))
+            t = 0.0f;
+        if (t > top)
+            t = top;
         // A lattice input given as a float is off its lattice point by rounding only: snap it.
         // Round to nearest (t is in [0, 255]); the SIMD kernel rounds ties to even, which picks
         // a different r only at |t - r| = 0.5, far outside the snapping tolerance.
         const float r = static_cast<float>(static_cast<int>(t + 0.5f));
-        if (std::fabs(t - r) <= (t + snapBias[c]) * kSnapRelative) t = r;
+        if (std::fabs(t - r) <= (t + snapBias[c]) * kSnapRelative)
+            t = r;
         int i = static_cast<int>(t);
-        if (i > size - 2) i = size - 2;
+        if (i > size - 2)
+            i = size - 2;
         idx[c] = i;
         frac[c] = t - static_cast<float>(i);
     }
@@ -78,7 +89,8 @@ std::vector<float> packTable(const Lut3D& lut) {
     std::vector<float> t(4 * lut.entryCount(), 0.0f);
     const float* src = lut.data();
     for (std::size_t i = 0; i < lut.entryCount(); ++i)
-        for (int c = 0; c < 3; ++c) t[4 * i + c] = src[3 * i + c];
+        for (int c = 0; c < 3; ++c)
+            t[4 * i + c] = src[3 * i + c];
     return t;
 }
 
@@ -95,7 +107,8 @@ enum class Isa { Scalar, Avx2 };
 Isa detectIsa() {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return Isa::Avx2;
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return Isa::Avx2;
 #endif
     return Isa::Scalar;
 }
@@ -106,14 +119,16 @@ Isa detectIsa() {
 Isa chosenIsa() {
     static const Isa best = detectIsa();
     const char* env = std::getenv("LUTKIT_SIMD");
-    if (env && std::strcmp(env, "scalar") == 0) return Isa::Scalar;
+    if (env && std::strcmp(env, "scalar") == 0)
+        return Isa::Scalar;
     return best;
 }
 
 class SamplerBase : public Sampler {
 public:
     SamplerBase(const Lut3D& lut, KernelFn simd)
-        : m_map(lut), m_table(detail::packTable(lut)), m_kernel(chosenIsa() == Isa::Avx2 ? simd : nullptr) {
+        : m_map(lut), m_table(detail::packTable(lut)),
+          m_kernel(chosenIsa() == Isa::Avx2 ? simd : nullptr) {
         m_view.rgb = m_table.data();
         m_view.size = m_map.size;
         for (int c = 0; c < 3; ++c) {
@@ -142,7 +157,8 @@ protected:
 
     glm::vec3 e(int r, int g, int b) const {
         const std::size_t n = static_cast<std::size_t>(m_map.size);
-        const float* p = &m_table[4 * (static_cast<std::size_t>(r) + n * (static_cast<std::size_t>(g) + n * b))];
+        const float* p =
+            &m_table[4 * (static_cast<std::size_t>(r) + n * (static_cast<std::size_t>(g) + n * b))];
         return glm::vec3(p[0], p[1], p[2]);
     }
     LatticeMap m_map;
@@ -155,7 +171,9 @@ class NearestSampler final : public SamplerBase {
 public:
     explicit NearestSampler(const Lut3D& lut) : SamplerBase(lut, &detail::nearestAvx2) {}
     Interpolation method() const override { return Interpolation::Nearest; }
-    void applyPixels(float* rgba, std::size_t count) const override { applyWith(*this, rgba, count); }
+    void applyPixels(float* rgba, std::size_t count) const override {
+        applyWith(*this, rgba, count);
+    }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
@@ -169,14 +187,18 @@ class TrilinearSampler final : public SamplerBase {
 public:
     explicit TrilinearSampler(const Lut3D& lut) : SamplerBase(lut, &detail::trilinearAvx2) {}
     Interpolation method() const override { return Interpolation::Trilinear; }
-    void applyPixels(float* rgba, std::size_t count) const override { applyWith(*this, rgba, count); }
+    void applyPixels(float* rgba, std::size_t count) const override {
+        applyWith(*this, rgba, count);
+    }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
         m_map.locate(in, i, f);
         const int r = i[0], g = i[1], b = i[2];
         // (1-f)*a + f*b returns a exactly at f = 0 and b exactly at f = 1.
-        auto lerp = [](const glm::vec3& a, const glm::vec3& c, float t) { return (1.0f - t) * a + t * c; };
+        auto lerp = [](const glm::vec3& a, const glm::vec3& c, float t) {
+            return (1.0f - t) * a + t * c;
+        };
         const glm::vec3 c00 = lerp(e(r, g, b), e(r + 1, g, b), f[0]);
         const glm::vec3 c10 = lerp(e(r, g + 1, b), e(r + 1, g + 1, b), f[0]);
         const glm::vec3 c01 = lerp(e(r, g, b + 1), e(r + 1, g, b + 1), f[0]);
@@ -189,28 +211,36 @@ class TetrahedralSampler final : public SamplerBase {
 public:
     explicit TetrahedralSampler(const Lut3D& lut) : SamplerBase(lut, &detail::tetrahedralAvx2) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
-    void applyPixels(float* rgba, std::size_t count) const override { applyWith(*this, rgba, count); }
+    void applyPixels(float* rgba, std::size_t count) const override {
+        applyWith(*this, rgba, count);
+    }
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
         m_map.locate(in, i, f);
-        return detail::tetrahedralBlend([this](int r, int g, int b) { return e(r, g, b); },
-                                        i[0], i[1], i[2], f[0], f[1], f[2]);
+        return detail::tetrahedralBlend([this](int r, int g, int b) { return e(r, g, b); }, i[0],
+                                        i[1], i[2], f[0], f[1], f[2]);
     }
 };
 
 } // namespace
 
 std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method) {
-    if (lut.empty()) throw Error("cannot sample an empty LUT");
+    if (lut.empty())
+        throw Error("cannot sample an empty LUT");
     switch (method) {
-    case Interpolation::Nearest: return std::make_unique<NearestSampler>(lut);
-    case Interpolation::Trilinear: return std::make_unique<TrilinearSampler>(lut);
-    case Interpolation::Tetrahedral: return std::make_unique<TetrahedralSampler>(lut);
+    case Interpolation::Nearest:
+        return std::make_unique<NearestSampler>(lut);
+    case Interpolation::Trilinear:
+        return std::make_unique<TrilinearSampler>(lut);
+    case Interpolation::Tetrahedral:
+        return std::make_unique<TetrahedralSampler>(lut);
     }
     throw Error("unknown interpolation");
 }
 
-const char* samplerIsa() { return chosenIsa() == Isa::Avx2 ? "avx2" : "scalar"; }
+const char* samplerIsa() {
+    return chosenIsa() == Isa::Avx2 ? "avx2" : "scalar";
+}
 
 } // namespace lut

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to lutlib: the input -> lattice mapping every sampler (scalar and SIMD) shares.
-#include "lut/Lut3D.h"
 #include "interp/simd/SimdKernels.h"
+#include "lut/Lut3D.h"
 
 #include <vector>
 

@@ -18,17 +18,20 @@ namespace lut {
 static std::string makeTempPath(const std::string& path) {
     const fs::path p(path);
     std::random_device rd;
-    const unsigned long tag = (static_cast<unsigned long>(rd()) << 16) ^ static_cast<unsigned long>(::getpid());
+    const unsigned long tag =
+        (static_cast<unsigned long>(rd()) << 16) ^ static_cast<unsigned long>(::getpid());
     // Hidden, in the same folder (so rename is atomic), ending in the same extension.
-    return (p.parent_path() / ("." + p.stem().string() + ".tmp" + std::to_string(tag) +
-                               p.extension().string()))
+    return (p.parent_path() /
+            ("." + p.stem().string() + ".tmp" + std::to_string(tag) + p.extension().string()))
         .string();
 }
 
-AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)), m_tempPath(makeTempPath(m_path)) {}
+AtomicFile::AtomicFile(std::string path)
+    : m_path(std::move(path)), m_tempPath(makeTempPath(m_path)) {}
 
 AtomicFile::~AtomicFile() {
-    if (!m_committed) std::remove(m_tempPath.c_str());
+    if (!m_committed)
+        std::remove(m_tempPath.c_str());
 }
 
 void AtomicFile::commit() {
@@ -44,25 +47,29 @@ void AtomicFile::commit() {
 void writeFileAtomically(const std::string& path, std::string_view bytes) {
     AtomicFile file(path);
     const int fd = ::open(file.tempPath().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) throw Error(path + ": cannot write: " + std::strerror(errno));
+    if (fd < 0)
+        throw Error(path + ": cannot write: " + std::strerror(errno));
     std::size_t done = 0;
     while (done < bytes.size()) {
         const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
         if (n < 0) {
-            if (errno == EINTR) continue;
+            if (errno == EINTR)
+                continue;
             const int err = errno;
             ::close(fd);
             throw Error(path + ": cannot write: " + std::strerror(err));
         }
         done += static_cast<std::size_t>(n);
     }
-    if (::close(fd) != 0) throw Error(path + ": cannot write: " + std::strerror(errno));
+    if (::close(fd) != 0)
+        throw Error(path + ": cannot write: " + std::strerror(errno));
     file.commit();
 }
 
 std::string readFile(const std::string& path, std::size_t maxBytes) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
+    if (fd < 0)
+        throw Error(path + ": cannot open: " + std::strerror(errno));
     struct stat st {};
     if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
         ::close(fd);
@@ -70,16 +77,18 @@ std::string readFile(const std::string& path, std::size_t maxBytes) {
     }
     if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
         ::close(fd);
-        throw LimitError(path + ": file is " + std::to_string(st.st_size) + " bytes, over the limit of " +
-                         std::to_string(maxBytes) + " bytes");
+        throw LimitError(path + ": file is " + std::to_string(st.st_size) +
+                         " bytes, over the limit of " + std::to_string(maxBytes) + " bytes");
     }
     std::string data;
     data.resize(static_cast<std::size_t>(st.st_size));
     std::size_t done = 0;
     while (done < data.size()) {
         const ssize_t n = ::read(fd, data.data() + done, data.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
         done += static_cast<std::size_t>(n);
     }
     ::close(fd);
@@ -92,7 +101,8 @@ void checkNotSameFile(const std::string& input, const std::string& output) {
     if (!fs::exists(output, ec)) {
         // Not existing yet: only the same path spelled differently can match.
         if (fs::weakly_canonical(input, ec) == fs::weakly_canonical(output, ec))
-            throw Error(output + ": output is the same file as input " + input + "; refusing to overwrite it");
+            throw Error(output + ": output is the same file as input " + input +
+                        "; refusing to overwrite it");
         return;
     }
     if (fs::equivalent(input, output, ec) && !ec)

@@ -13,20 +13,23 @@ FormatRegistry& FormatRegistry::instance() {
 }
 
 void FormatRegistry::add(std::unique_ptr<Format> format) {
-    if (byName(format->name())) return; // registering twice is harmless
+    if (byName(format->name()))
+        return; // registering twice is harmless
     m_formats.push_back(std::move(format));
 }
 
 const Format* FormatRegistry::byName(const std::string& name) const {
     for (const auto& f : m_formats)
-        if (f->name() == name) return f.get();
+        if (f->name() == name)
+            return f.get();
     return nullptr;
 }
 
 std::string extensionOf(const std::string& path) {
     const auto slash = path.find_last_of('/');
     const auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+        return {};
     std::string ext = path.substr(dot);
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -38,20 +41,23 @@ std::vector<const Format*> FormatRegistry::forExtension(const std::string& path)
     std::vector<const Format*> out;
     for (const auto& f : m_formats) {
         const auto exts = f->extensions();
-        if (std::find(exts.begin(), exts.end(), ext) != exts.end()) out.push_back(f.get());
+        if (std::find(exts.begin(), exts.end(), ext) != exts.end())
+            out.push_back(f.get());
     }
     return out;
 }
 
 const Format* FormatRegistry::writerForPath(const std::string& path) const {
     for (const Format* f : forExtension(path))
-        if (f->canWrite()) return f;
+        if (f->canWrite())
+            return f;
     return nullptr;
 }
 
 std::vector<const Format*> FormatRegistry::all() const {
     std::vector<const Format*> out;
-    for (const auto& f : m_formats) out.push_back(f.get());
+    for (const auto& f : m_formats)
+        out.push_back(f.get());
     return out;
 }
 
@@ -60,9 +66,11 @@ static std::string knownExtensions(const std::vector<std::unique_ptr<Format>>& f
     for (const auto& f : formats)
         if (read ? f->canRead() : f->canWrite())
             for (const auto& e : f->extensions())
-                if (std::find(exts.begin(), exts.end(), e) == exts.end()) exts.push_back(e);
+                if (std::find(exts.begin(), exts.end(), e) == exts.end())
+                    exts.push_back(e);
     std::string s;
-    for (const auto& e : exts) s += (s.empty() ? "" : " ") + e;
+    for (const auto& e : exts)
+        s += (s.empty() ? "" : " ") + e;
     return s;
 }
 
@@ -71,7 +79,8 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
     std::vector<const Format*> candidates;
     if (!formatName.empty()) {
         const Format* f = byName(formatName);
-        if (!f) throw Error("unknown format '" + formatName + "'");
+        if (!f)
+            throw Error("unknown format '" + formatName + "'");
         candidates.push_back(f);
     } else {
         candidates = forExtension(path);
@@ -82,7 +91,8 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
     if (candidates.empty())
         throw Error(path + ": no format reads '" + extensionOf(path) +
                     "' files (readable: " + knownExtensions(m_formats, true) + ")");
-    if (candidates.size() == 1) return candidates.front()->read(path, options);
+    if (candidates.size() == 1)
+        return candidates.front()->read(path, options);
     // Several formats claim the extension: the first that succeeds wins; otherwise report all.
     std::string reasons;
     for (const Format* f : candidates) {
@@ -96,11 +106,13 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
 }
 
 Diagnostics FormatRegistry::write(const std::string& path, const LutFile& lut,
-                                  const FormatOptions& options, const std::string& formatName) const {
+                                  const FormatOptions& options,
+                                  const std::string& formatName) const {
     const Format* f = nullptr;
     if (!formatName.empty()) {
         f = byName(formatName);
-        if (!f) throw Error("unknown format '" + formatName + "'");
+        if (!f)
+            throw Error("unknown format '" + formatName + "'");
     } else {
         f = writerForPath(path);
     }

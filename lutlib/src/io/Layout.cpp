@@ -8,19 +8,27 @@ namespace lut {
 
 const char* toString(LutLayout l) {
     switch (l) {
-    case LutLayout::Pilot: return "pilot";
-    case LutLayout::Unity: return "unity";
-    case LutLayout::Smush: return "smush";
-    case LutLayout::Hald: return "hald";
+    case LutLayout::Pilot:
+        return "pilot";
+    case LutLayout::Unity:
+        return "unity";
+    case LutLayout::Smush:
+        return "smush";
+    case LutLayout::Hald:
+        return "hald";
     }
     return "?";
 }
 
 LutLayout parseLayout(std::string_view name) {
-    if (name == "pilot" || name == "unreal" || name == "godot") return LutLayout::Pilot;
-    if (name == "unity") return LutLayout::Unity;
-    if (name == "smush" || name == "lattice") return LutLayout::Smush;
-    if (name == "hald") return LutLayout::Hald;
+    if (name == "pilot" || name == "unreal" || name == "godot")
+        return LutLayout::Pilot;
+    if (name == "unity")
+        return LutLayout::Unity;
+    if (name == "smush" || name == "lattice")
+        return LutLayout::Smush;
+    if (name == "hald")
+        return LutLayout::Hald;
     throw Error("unknown layout '" + std::string(name) +
                 "' (expected pilot, unreal, godot, unity, smush, lattice or hald)");
 }
@@ -39,7 +47,8 @@ void layoutImageSize(LutLayout layout, int size, int& width, int& height) {
         const int level = haldLevel(size);
         if (level < 2)
             throw Error("a Hald image needs a LUT size that is a square of a level >= 2 (4, 9, 16, "
-                        "25, 36, 49, 64, ...), not " + std::to_string(size));
+                        "25, 36, 49, 64, ...), not " +
+                        std::to_string(size));
         width = height = level * level * level;
         return;
     }
@@ -64,9 +73,18 @@ std::vector<LayoutFit> layoutsForImageSize(int width, int height) {
 
 void layoutPixel(LutLayout layout, int n, int r, int g, int b, int& x, int& y) {
     switch (layout) {
-    case LutLayout::Pilot: x = r + n * b; y = g; return;
-    case LutLayout::Unity: x = r + n * b; y = n - 1 - g; return;
-    case LutLayout::Smush: x = r + n * g; y = b; return;
+    case LutLayout::Pilot:
+        x = r + n * b;
+        y = g;
+        return;
+    case LutLayout::Unity:
+        x = r + n * b;
+        y = n - 1 - g;
+        return;
+    case LutLayout::Smush:
+        x = r + n * g;
+        y = b;
+        return;
     case LutLayout::Hald: {
         const int level = haldLevel(n);
         const long long side = static_cast<long long>(level) * level * level;
@@ -78,13 +96,15 @@ void layoutPixel(LutLayout layout, int n, int r, int g, int b, int& x, int& y) {
     }
 }
 
-static void checkPatch(const ImageView& image, LutLayout layout, int size, int x0, int y0, int block) {
+static void checkPatch(const ImageView& image, LutLayout layout, int size, int x0, int y0,
+                       int block) {
     int w = 0, h = 0;
     layoutImageSize(layout, size, w, h);
-    if (block < 1 || x0 < 0 || y0 < 0 || static_cast<long long>(x0) + static_cast<long long>(w) * block > image.width ||
+    if (block < 1 || x0 < 0 || y0 < 0 ||
+        static_cast<long long>(x0) + static_cast<long long>(w) * block > image.width ||
         static_cast<long long>(y0) + static_cast<long long>(h) * block > image.height)
-        throw Error("a " + std::to_string(size) + "^3 LUT in the " + toString(layout) + " layout needs " +
-                    std::to_string(static_cast<long long>(w) * block) + "x" +
+        throw Error("a " + std::to_string(size) + "^3 LUT in the " + toString(layout) +
+                    " layout needs " + std::to_string(static_cast<long long>(w) * block) + "x" +
                     std::to_string(static_cast<long long>(h) * block) + " pixels at (" +
                     std::to_string(x0) + ", " + std::to_string(y0) + "), the image is " +
                     std::to_string(image.width) + "x" + std::to_string(image.height));
@@ -103,15 +123,18 @@ Lut3D lutFromImage(const ImageView& image, LutLayout layout, int size, int x0, i
                 for (int dy = 0; dy < block; ++dy)
                     for (int dx = 0; dx < block; ++dx) {
                         const float* p = image.pixel(x0 + x * block + dx, y0 + y * block + dy);
-                        for (int c = 0; c < 3; ++c) acc[c] += p[c];
+                        for (int c = 0; c < 3; ++c)
+                            acc[c] += p[c];
                     }
-                lut.at(r, g, b) = glm::vec3(static_cast<float>(acc[0] * inv), static_cast<float>(acc[1] * inv),
-                                            static_cast<float>(acc[2] * inv));
+                lut.at(r, g, b) =
+                    glm::vec3(static_cast<float>(acc[0] * inv), static_cast<float>(acc[1] * inv),
+                              static_cast<float>(acc[2] * inv));
             }
     return lut;
 }
 
-void drawLut(const Lut3D& lut, LutLayout layout, const ImageView& image, int x0, int y0, int block) {
+void drawLut(const Lut3D& lut, LutLayout layout, const ImageView& image, int x0, int y0,
+             int block) {
     const int size = lut.size();
     checkPatch(image, layout, size, x0, y0, block);
     for (int b = 0; b < size; ++b)

@@ -15,42 +15,58 @@ constexpr glm::dvec3 kLuma{0.2126, 0.7152, 0.0722};
 
 // NaN -> 0, +-Inf and huge values -> +-kAdjustMaxValue: every step below stays finite.
 double sanitize(double v) {
-    if (std::isnan(v)) return 0.0;
+    if (std::isnan(v))
+        return 0.0;
     return std::clamp(v, -kAdjustMaxValue, kAdjustMaxValue);
 }
-glm::dvec3 sanitize(glm::dvec3 v) { return {sanitize(v.x), sanitize(v.y), sanitize(v.z)}; }
+glm::dvec3 sanitize(glm::dvec3 v) {
+    return {sanitize(v.x), sanitize(v.y), sanitize(v.z)};
+}
 double sanitizeParam(double v, double lo, double hi, double fallback) {
-    if (!std::isfinite(v)) return fallback;
+    if (!std::isfinite(v))
+        return fallback;
     return std::clamp(v, lo, hi);
 }
 
 // Odd extension of pow so negative entries (wide-gamut grades) stay defined.
-double spow(double x, double p) { return x < 0.0 ? -std::pow(-x, p) : std::pow(x, p); }
+double spow(double x, double p) {
+    return x < 0.0 ? -std::pow(-x, p) : std::pow(x, p);
+}
 glm::dvec3 spow(glm::dvec3 v, glm::dvec3 p) {
     return {spow(v.x, p.x), spow(v.y, p.y), spow(v.z, p.z)};
 }
-glm::dvec3 spow(glm::dvec3 v, double p) { return spow(v, glm::dvec3(p)); }
+glm::dvec3 spow(glm::dvec3 v, double p) {
+    return spow(v, glm::dvec3(p));
+}
 
-double dot3(glm::dvec3 a, glm::dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double dot3(glm::dvec3 a, glm::dvec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 // Linear-light gains (white balance times exposure); identity gains skip the decode/encode so a
 // neutral setting returns entries bit for bit.
 glm::dvec3 applyLinearGains(glm::dvec3 e, glm::dvec3 gains) {
-    if (gains == glm::dvec3(1.0)) return e;
+    if (gains == glm::dvec3(1.0))
+        return e;
     const glm::dvec3 lin = spow(e, kGamma) * gains;
     return sanitize(spow(sanitize(lin), 1.0 / kGamma));
 }
 
-double clampedGamma(double g) { return sanitizeParam(g, 0.01, 100.0, 1.0); }
+double clampedGamma(double g) {
+    return sanitizeParam(g, 0.01, 100.0, 1.0);
+}
 
 } // namespace
 
-bool Adjustments::isNeutral() const { return *this == Adjustments{}; }
+bool Adjustments::isNeutral() const {
+    return *this == Adjustments{};
+}
 
 glm::dvec3 whiteBalanceGains(double temperature, double tint) {
     const double t = sanitizeParam(temperature, -4.0, 4.0, 0.0);
     const double n = sanitizeParam(tint, -4.0, 4.0, 0.0);
-    if (t == 0.0 && n == 0.0) return glm::dvec3(1.0);
+    if (t == 0.0 && n == 0.0)
+        return glm::dvec3(1.0);
     const glm::dvec3 g{std::exp2(0.25 * t), std::exp2(-0.25 * n), std::exp2(-0.25 * t)};
     return g / dot3(g, kLuma);
 }
@@ -67,7 +83,8 @@ glm::dvec3 adjustExposure(glm::dvec3 e, double stops) {
 glm::dvec3 adjustContrast(glm::dvec3 e, double contrast) {
     e = sanitize(e);
     const double c = sanitizeParam(contrast, -1.0, 10.0, 0.0);
-    if (c == 0.0) return e;
+    if (c == 0.0)
+        return e;
     return sanitize((e - 0.5) * (1.0 + c) + 0.5);
 }
 
@@ -79,8 +96,10 @@ glm::dvec3 adjustLiftGammaGain(glm::dvec3 e, glm::dvec3 lift, glm::dvec3 gamma, 
         const double g = clampedGamma(gamma[c]);
         const double k = sanitizeParam(gain[c], -kAdjustMaxValue, kAdjustMaxValue, 1.0);
         double v = e[c];
-        if (l != 0.0 || k != 1.0) v = sanitize(k * (v + l * (1.0 - v)));
-        if (g != 1.0) v = sanitize(spow(v, 1.0 / g));
+        if (l != 0.0 || k != 1.0)
+            v = sanitize(k * (v + l * (1.0 - v)));
+        if (g != 1.0)
+            v = sanitize(spow(v, 1.0 / g));
         out[c] = v;
     }
     return out;
@@ -89,7 +108,8 @@ glm::dvec3 adjustLiftGammaGain(glm::dvec3 e, glm::dvec3 lift, glm::dvec3 gamma, 
 glm::dvec3 adjustSaturation(glm::dvec3 e, double saturation) {
     e = sanitize(e);
     const double s = sanitizeParam(saturation, -kAdjustMaxValue, kAdjustMaxValue, 1.0);
-    if (s == 1.0) return e;
+    if (s == 1.0)
+        return e;
     const double y = dot3(e, kLuma);
     return sanitize(glm::dvec3(y) + s * (e - y));
 }
@@ -106,9 +126,11 @@ glm::dvec3 adjustColor(glm::dvec3 e, const Adjustments& a) {
 }
 
 void applyAdjustments(const Lut3D& base, const Adjustments& a, Lut3D& dst, int nthreads) {
-    if (&dst == &base) throw Error("applyAdjustments: destination may not alias the source");
+    if (&dst == &base)
+        throw Error("applyAdjustments: destination may not alias the source");
     dst = base; // keeps size, domain, title and comments
-    if (base.empty() || a.isNeutral()) return;
+    if (base.empty() || a.isNeutral())
+        return;
     const auto& in = base.entries();
     auto& out = dst.entries();
     const int count = static_cast<int>(in.size());

@@ -24,13 +24,15 @@ Lut3D resample(const Lut3D& source, int size, Interpolation method, int nthreads
     parallelFor(size, nthreads, [&](int b0, int b1) {
         for (int b = b0; b < b1; ++b)
             for (int g = 0; g < size; ++g)
-                for (int r = 0; r < size; ++r) out.at(r, g, b) = sampler->sample(out.latticeInput(r, g, b));
+                for (int r = 0; r < size; ++r)
+                    out.at(r, g, b) = sampler->sample(out.latticeInput(r, g, b));
     });
     return out;
 }
 
 ErrorStats compareLuts(const Lut3D& a, const Lut3D& b, Interpolation method, int probes) {
-    if (probes <= 0) probes = std::min(97, 2 * std::max(a.size(), b.size()) + 1);
+    if (probes <= 0)
+        probes = std::min(97, 2 * std::max(a.size(), b.size()) + 1);
     const auto sa = makeSampler(a, method);
     const auto sb = makeSampler(b, method);
     const glm::vec3 lo = a.domainMin(), hi = a.domainMax();
@@ -44,7 +46,8 @@ ErrorStats compareLuts(const Lut3D& a, const Lut3D& b, Interpolation method, int
                     const glm::vec3 t(x, y, z);
                     const glm::vec3 in = lo + (hi - lo) * t / static_cast<float>(probes - 1);
                     const glm::vec3 va = sa->sample(in), vb = sb->sample(in);
-                    for (int c = 0; c < 3; ++c) acc.add(va[c], vb[c]);
+                    for (int c = 0; c < 3; ++c)
+                        acc.add(va[c], vb[c]);
                 }
         std::lock_guard lock(mutex);
         total.merge(acc);
@@ -52,7 +55,8 @@ ErrorStats compareLuts(const Lut3D& a, const Lut3D& b, Interpolation method, int
     return total.result();
 }
 
-ResampleResult resampleWithError(const Lut3D& source, int size, Interpolation method, int nthreads) {
+ResampleResult resampleWithError(const Lut3D& source, int size, Interpolation method,
+                                 int nthreads) {
     const auto t0 = std::chrono::steady_clock::now();
     ResampleResult result{resample(source, size, method, nthreads), {}};
     const auto t1 = std::chrono::steady_clock::now();

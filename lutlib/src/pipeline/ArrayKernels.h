@@ -14,8 +14,8 @@ void powArray(float p, const float* in, float* out, std::size_t n);
 // out[i] = srgbEncodeFast(in[i]) (finite input); in == out allowed.
 void srgbEncodeArray(const float* in, float* out, std::size_t n);
 
-// The Smash grading pass (docs/specs/smash-pipeline.md section 2) on `count` RGBA pixels, in two halves
-// around the LUT lookup, so any sampler can do the lookup in between:
+// The Smash grading pass (docs/specs/smash-pipeline.md section 2) on `count` RGBA pixels, in two
+// halves around the LUT lookup, so any sampler can do the lookup in between:
 //   smashEncodePixels: s = (x^0.454545 per channel, x.alpha), written to both s and l (the caller
 //                      then runs the sampler on l in place);
 //   smashFinishPixels: r = ((l - s) * 0.99961 + s) * 1.3703 per channel, then with

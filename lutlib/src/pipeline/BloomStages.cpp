@@ -228,10 +228,10 @@ private:
     float m_threshold = 0.8f, m_dilate = 1.0f, m_levels = 5.0f, m_f0 = 1.0f, m_f1 = 1.0f;
 };
 
-// Smash Ultimate bloom, docs/specs/smash-pipeline.md section 1. Texel-centre convention (GPU): texel i
-// of a w-texel image is centred at u = (i + 0.5) / w; sampling image B (size wb) at u reads texel
-// coordinate u * wb - 0.5 bilinearly with clamp to edge. Sizes: quarter = max(1, W/4) (integer
-// division, as render-target sizes are), each blur level max(1, previous/2).
+// Smash Ultimate bloom, docs/specs/smash-pipeline.md section 1. Texel-centre convention (GPU):
+// texel i of a w-texel image is centred at u = (i + 0.5) / w; sampling image B (size wb) at u reads
+// texel coordinate u * wb - 0.5 bilinearly with clamp to edge. Sizes: quarter = max(1, W/4)
+// (integer division, as render-target sizes are), each blur level max(1, previous/2).
 class SmashBloomStage final : public Stage {
 public:
     SmashBloomStage() {

@@ -2,9 +2,9 @@
 // Private helpers shared by the stage implementations.
 #include "FastMath.h"
 #include "lut/Image.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
 #include "lut/Parallel.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/interp/Sampler.h"
 #include "lut/pipeline/Stage.h"
 

@@ -27,7 +27,9 @@ struct Sample {
 constexpr int kStencil = 27;
 constexpr int kCentre = 13;
 
-float sanitize(float v) { return std::isfinite(v) ? v : 0.0f; }
+float sanitize(float v) {
+    return std::isfinite(v) ? v : 0.0f;
+}
 
 void cornerWeights(const float f[3], double w[8]) {
     for (int a = 0; a < 8; ++a) {
@@ -40,7 +42,8 @@ void cornerWeights(const float f[3], double w[8]) {
 
 class System {
 public:
-    System(int n, double lambda, double mu) : m_n(n), m_count(std::size_t(n) * n * n), m_lambda(lambda), m_mu(mu) {
+    System(int n, double lambda, double mu)
+        : m_n(n), m_count(std::size_t(n) * n * n), m_lambda(lambda), m_mu(mu) {
         m_data.assign(m_count * kStencil, 0.0);
     }
     std::size_t count() const { return m_count; }
@@ -70,14 +73,18 @@ public:
                     if (m_hasData[i]) {
                         const double* row = &m_data[i * kStencil];
                         for (int db = -1; db <= 1; ++db) {
-                            if (b + db < 0 || b + db >= n) continue;
+                            if (b + db < 0 || b + db >= n)
+                                continue;
                             for (int dg = -1; dg <= 1; ++dg) {
-                                if (g + dg < 0 || g + dg >= n) continue;
+                                if (g + dg < 0 || g + dg >= n)
+                                    continue;
                                 for (int dr = -1; dr <= 1; ++dr) {
-                                    if (r + dr < 0 || r + dr >= n) continue;
+                                    if (r + dr < 0 || r + dr >= n)
+                                        continue;
                                     const double m = row[(dr + 1) + 3 * (dg + 1) + 9 * (db + 1)];
                                     if (m != 0.0)
-                                        acc += m * v[std::size_t(std::ptrdiff_t(i) + dr + std::ptrdiff_t(n) * dg +
+                                        acc += m * v[std::size_t(std::ptrdiff_t(i) + dr +
+                                                                 std::ptrdiff_t(n) * dg +
                                                                  std::ptrdiff_t(nn) * db)];
                                 }
                             }
@@ -85,7 +92,8 @@ public:
                     }
                     y[i] = acc;
                 }
-        if (m_lambda > 0.0) addSmoothness(v, y);
+        if (m_lambda > 0.0)
+            addSmoothness(v, y);
     }
 
     std::vector<double> diagonal() const {
@@ -93,15 +101,19 @@ public:
         const int n = m_n;
         auto axisDiag = [n](int i) {
             double s = 0.0;
-            if (i >= 1 && i <= n - 2) s += 4.0;
-            if (i - 1 >= 1 && i - 1 <= n - 2) s += 1.0;
-            if (i + 1 >= 1 && i + 1 <= n - 2) s += 1.0;
+            if (i >= 1 && i <= n - 2)
+                s += 4.0;
+            if (i - 1 >= 1 && i - 1 <= n - 2)
+                s += 1.0;
+            if (i + 1 >= 1 && i + 1 <= n - 2)
+                s += 1.0;
             return s;
         };
         for (int b = 0; b < n; ++b)
             for (int g = 0; g < n; ++g)
                 for (int r = 0; r < n; ++r) {
-                    const std::size_t i = std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
+                    const std::size_t i =
+                        std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
                     d[i] = m_data[i * kStencil + kCentre] + m_mu +
                            m_lambda * (axisDiag(r) + axisDiag(g) + axisDiag(b));
                 }
@@ -118,8 +130,10 @@ private:
                 for (int g = 0; g < n; ++g)
                     for (int r = 0; r < n; ++r) {
                         const int coord = axis == 0 ? r : axis == 1 ? g : b;
-                        if (coord < 1 || coord > n - 2) continue;
-                        const std::ptrdiff_t i = r + std::ptrdiff_t(n) * (g + std::ptrdiff_t(n) * b);
+                        if (coord < 1 || coord > n - 2)
+                            continue;
+                        const std::ptrdiff_t i =
+                            r + std::ptrdiff_t(n) * (g + std::ptrdiff_t(n) * b);
                         const double d = m_lambda * (v[i - s] - 2.0 * v[i] + v[i + s]);
                         y[i - s] += d;
                         y[i] -= 2.0 * d;
@@ -148,7 +162,8 @@ int solveCg(const System& sys, const std::vector<double>& diag, const std::vecto
         bnorm += rhs[i] * rhs[i];
     }
     bnorm = std::sqrt(bnorm);
-    if (bnorm == 0.0) bnorm = 1.0;
+    if (bnorm == 0.0)
+        bnorm = 1.0;
     double rz = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         z[i] = r[i] / diag[i];
@@ -159,15 +174,18 @@ int solveCg(const System& sys, const std::vector<double>& diag, const std::vecto
     int it = 0;
     for (; it < maxIterations; ++it) {
         double rnorm = 0.0;
-        for (std::size_t i = 0; i < n; ++i) rnorm += r[i] * r[i];
+        for (std::size_t i = 0; i < n; ++i)
+            rnorm += r[i] * r[i];
         if (std::sqrt(rnorm) <= tolerance * bnorm) {
             converged = true;
             break;
         }
         sys.apply(p, q);
         double pq = 0.0;
-        for (std::size_t i = 0; i < n; ++i) pq += p[i] * q[i];
-        if (!(pq > 0.0)) break; // cannot happen for an SPD system; guards round-off
+        for (std::size_t i = 0; i < n; ++i)
+            pq += p[i] * q[i];
+        if (!(pq > 0.0))
+            break; // cannot happen for an SPD system; guards round-off
         const double alpha = rz / pq;
         for (std::size_t i = 0; i < n; ++i) {
             x[i] += alpha * p[i];
@@ -180,7 +198,8 @@ int solveCg(const System& sys, const std::vector<double>& diag, const std::vecto
         }
         const double beta = rzNew / rz;
         rz = rzNew;
-        for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
+        for (std::size_t i = 0; i < n; ++i)
+            p[i] = z[i] + beta * p[i];
     }
     return it;
 }
@@ -206,7 +225,8 @@ bool FitResult::has(RoundtripWarning w) const {
 }
 
 namespace {
-FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o, const Lut3D* start);
+FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o,
+                  const Lut3D* start);
 }
 
 FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptions& o) {
@@ -215,8 +235,10 @@ FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptio
 
 namespace {
 
-FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o, const Lut3D* start) {
-    if (before.empty() || after.empty()) throw Error("fit: empty image");
+FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOptions& o,
+                  const Lut3D* start) {
+    if (before.empty() || after.empty())
+        throw Error("fit: empty image");
     if (before.width != after.width || before.height != after.height)
         throw Error("fit: the images differ in size (" + std::to_string(before.width) + "x" +
                     std::to_string(before.height) + " vs " + std::to_string(after.width) + "x" +
@@ -224,12 +246,14 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
     const int n = o.size;
     if (n < limits::kMin3DSize || n > 129)
         throw Error("fit: size must be 2..129, not " + std::to_string(n));
-    if (!(o.smoothness >= 0.0) || !std::isfinite(o.smoothness)) throw Error("fit: smoothness must be >= 0");
+    if (!(o.smoothness >= 0.0) || !std::isfinite(o.smoothness))
+        throw Error("fit: smoothness must be >= 0");
 
     FitResult res;
     // --- samples ---
     std::vector<Sample> samples;
-    samples.reserve(static_cast<std::size_t>(std::min<double>(static_cast<double>(before.width) * before.height, 8.0e6 + 1e5)));
+    samples.reserve(static_cast<std::size_t>(
+        std::min<double>(static_cast<double>(before.width) * before.height, 8.0e6 + 1e5)));
     std::unordered_set<std::uint32_t> colours;
     const int cells = n - 1;
     std::vector<std::uint8_t> cellHit(std::size_t(cells) * cells * cells, 0);
@@ -237,7 +261,8 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
     // memory: 28 bytes per sample).
     constexpr double kMaxSamples = 8.0e6;
     const double total = static_cast<double>(before.width) * before.height;
-    const int step = total > kMaxSamples ? static_cast<int>(std::ceil(std::sqrt(total / kMaxSamples))) : 1;
+    const int step =
+        total > kMaxSamples ? static_cast<int>(std::ceil(std::sqrt(total / kMaxSamples))) : 1;
     for (int y = 0; y < before.height; y += step)
         for (int x = 0; x < before.width; x += step) {
             const float* a = before.pixel(x, y);
@@ -254,21 +279,31 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
                 key = (key << 8) | static_cast<std::uint32_t>(std::lround(v * 255.0f));
             }
             s.base = static_cast<std::uint32_t>(idx[0] + n * (idx[1] + n * idx[2]));
-            cellHit[std::size_t(idx[0]) + std::size_t(cells) * (idx[1] + std::size_t(cells) * idx[2])] = 1;
-            if (colours.size() < 100000) colours.insert(key);
+            cellHit[std::size_t(idx[0]) +
+                    std::size_t(cells) * (idx[1] + std::size_t(cells) * idx[2])] = 1;
+            if (colours.size() < 100000)
+                colours.insert(key);
             samples.push_back(s);
         }
     res.pixels = samples.size();
     res.distinctColours = colours.size();
     std::size_t hit = 0;
-    for (auto h : cellHit) hit += h;
+    for (auto h : cellHit)
+        hit += h;
     res.extrapolatedShare = 1.0 - static_cast<double>(hit) / static_cast<double>(cellHit.size());
 
     const std::size_t nn = std::size_t(n) * n;
-    const std::ptrdiff_t cornerOffset[8] = {0, 1, n, n + 1, std::ptrdiff_t(nn), std::ptrdiff_t(nn) + 1,
-                                            std::ptrdiff_t(nn) + n, std::ptrdiff_t(nn) + n + 1};
+    const std::ptrdiff_t cornerOffset[8] = {0,
+                                            1,
+                                            n,
+                                            n + 1,
+                                            std::ptrdiff_t(nn),
+                                            std::ptrdiff_t(nn) + 1,
+                                            std::ptrdiff_t(nn) + n,
+                                            std::ptrdiff_t(nn) + n + 1};
     auto stencilIndex = [](int a, int b) {
-        const int dr = ((b & 1) - (a & 1)), dg = ((b >> 1 & 1) - (a >> 1 & 1)), db = ((b >> 2 & 1) - (a >> 2 & 1));
+        const int dr = ((b & 1) - (a & 1)), dg = ((b >> 1 & 1) - (a >> 1 & 1)),
+                  db = ((b >> 2 & 1) - (a >> 2 & 1));
         return (dr + 1) + 3 * (dg + 1) + 9 * (db + 1);
     };
 
@@ -289,13 +324,15 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
         start = &coarse;
     }
     std::unique_ptr<Sampler> startSampler;
-    if (start) startSampler = makeSampler(*start, Interpolation::Trilinear);
+    if (start)
+        startSampler = makeSampler(*start, Interpolation::Trilinear);
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r) {
                 const std::size_t i = std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
                 glm::vec3 v = glm::vec3(r, g, b) / static_cast<float>(cells);
-                if (startSampler) v = startSampler->sample(v);
+                if (startSampler)
+                    v = startSampler->sample(v);
                 solution[0][i] = v.x;
                 solution[1][i] = v.y;
                 solution[2][i] = v.z;
@@ -313,7 +350,8 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
                 for (int g = 0; g < n; ++g)
                     for (int r = 0; r < n; ++r) {
                         const int coord[3] = {r, g, b};
-                        rhs[c][std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b)] = mu * coord[c] / cells;
+                        rhs[c][std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b)] =
+                            mu * coord[c] / cells;
                     }
         parallelFor(static_cast<int>(samples.size()), o.nthreads, [&](int begin, int end) {
             std::vector<double> local(sys.count() * kStencil, 0.0);
@@ -322,21 +360,27 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
             for (int p = begin; p < end; ++p) {
                 const Sample& s = samples[p];
                 const double pw = weights[p];
-                if (pw <= 0.0) continue;
+                if (pw <= 0.0)
+                    continue;
                 cornerWeights(s.f, w);
                 for (int a = 0; a < 8; ++a) {
-                    if (w[a] == 0.0) continue;
+                    if (w[a] == 0.0)
+                        continue;
                     const std::size_t node = s.base + cornerOffset[a];
                     double* row = &local[node * kStencil];
-                    for (int b = 0; b < 8; ++b) row[stencilIndex(a, b)] += pw * w[a] * w[b];
-                    for (int c = 0; c < 3; ++c) localRhs[node * 3 + c] += pw * w[a] * s.y[c];
+                    for (int b = 0; b < 8; ++b)
+                        row[stencilIndex(a, b)] += pw * w[a] * w[b];
+                    for (int c = 0; c < 3; ++c)
+                        localRhs[node * 3 + c] += pw * w[a] * s.y[c];
                 }
             }
             std::lock_guard<std::mutex> lock(mutex);
             auto& global = sys.data();
-            for (std::size_t i = 0; i < local.size(); ++i) global[i] += local[i];
+            for (std::size_t i = 0; i < local.size(); ++i)
+                global[i] += local[i];
             for (std::size_t i = 0; i < sys.count(); ++i)
-                for (int c = 0; c < 3; ++c) rhs[c][i] += localRhs[i * 3 + c];
+                for (int c = 0; c < 3; ++c)
+                    rhs[c][i] += localRhs[i * 3 + c];
         });
         sys.finishAssembly();
         const std::vector<double> diag = sys.diagonal();
@@ -345,7 +389,8 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
         parallelFor(3, o.nthreads, [&](int begin, int end) {
             for (int c = begin; c < end; ++c) {
                 bool cv = false;
-                iterations[c] = solveCg(sys, diag, rhs[c], solution[c], o.maxIterations, o.tolerance, cv);
+                iterations[c] =
+                    solveCg(sys, diag, rhs[c], solution[c], o.maxIterations, o.tolerance, cv);
                 conv[c] = cv;
             }
         });
@@ -363,13 +408,15 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
             for (int c = 0; c < 3; ++c) {
                 double v = 0.0;
                 for (int a = 0; a < 8; ++a)
-                    if (w[a] != 0.0) v += w[a] * std::clamp(solution[c][s.base + cornerOffset[a]], 0.0, 1.0);
+                    if (w[a] != 0.0)
+                        v += w[a] * std::clamp(solution[c][s.base + cornerOffset[a]], 0.0, 1.0);
                 const double e = std::fabs(v - s.y[c]);
                 sumSq += e * e;
                 worst = std::max(worst, e);
             }
             maxAbs = std::max(maxAbs, worst);
-            if (worst > 4.0 * delta) ++outliers;
+            if (worst > 4.0 * delta)
+                ++outliers;
             weights[p] = worst <= delta ? 1.0 : delta / worst;
         }
         res.rmsSteps8 = samples.empty() ? 0.0 : std::sqrt(sumSq / (3.0 * samples.size())) * 255.0;
@@ -386,20 +433,24 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
 
     if (!res.converged)
         warn(res, RoundtripWarning::FewColours,
-             fmt("the solver stopped after %g iterations before converging: the fit may be rough", res.iterations));
+             fmt("the solver stopped after %g iterations before converging: the fit may be rough",
+                 res.iterations));
     if (res.distinctColours < 64)
         warn(res, RoundtripWarning::FewColours,
-             fmt("the before image has only %g distinct colours: the fit is exact at those and a smooth "
+             fmt("the before image has only %g distinct colours: the fit is exact at those and a "
+                 "smooth "
                  "guess everywhere else",
                  double(res.distinctColours)));
     if (res.extrapolatedShare > 0.9)
         warn(res, RoundtripWarning::LowCoverage,
-             fmt("the pixels cover only %.3g%% of the %g^3 lattice cells; %.3g%% of the cube is extrapolated "
+             fmt("the pixels cover only %.3g%% of the %g^3 lattice cells; %.3g%% of the cube is "
+                 "extrapolated "
                  "(colours the screenshot does not contain follow a smooth continuation)",
                  100.0 * (1.0 - res.extrapolatedShare), double(n), 100.0 * res.extrapolatedShare));
     if (res.pixels > 0 && res.outlierPixels * 100 > res.pixels)
         warn(res, RoundtripWarning::Outliers,
-             fmt("%.3g%% of the pixels (%g) are more than %g 8-bit steps off any global colour edit (local "
+             fmt("%.3g%% of the pixels (%g) are more than %g 8-bit steps off any global colour "
+                 "edit (local "
                  "edits, noise, misaligned images?); the robust fit down-weighted them",
                  100.0 * double(res.outlierPixels) / double(res.pixels), double(res.outlierPixels),
                  4.0 * o.huberSteps));

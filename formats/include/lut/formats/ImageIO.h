@@ -9,10 +9,10 @@ namespace lut::formats {
 struct ImageInfo {
     int width = 0;
     int height = 0;
-    int channels = 0;    // channels in the file (1 = grey, 2 = grey+alpha, 3, 4)
-    int bitDepth = 0;    // 8 or 16 for integer files, 32 for float (half counts as 32), 0 other
+    int channels = 0; // channels in the file (1 = grey, 2 = grey+alpha, 3, 4)
+    int bitDepth = 0; // 8 or 16 for integer files, 32 for float (half counts as 32), 0 other
     bool isFloat = false;
-    std::string format;  // OIIO format name ("png", "openexr", "tiff", ...)
+    std::string format; // OIIO format name ("png", "openexr", "tiff", ...)
 };
 
 struct LoadedImage {
@@ -27,9 +27,9 @@ LoadedImage readImage(const std::string& path);
 ImageInfo readImageInfo(const std::string& path);
 
 struct ImageWriteOptions {
-    int bitDepth = 8;     // 8, 16 (rounded to nearest, clamped) or 32 (float)
-    bool dither = false;  // 8/16-bit: ordered (4x4 Bayer) dither before rounding
-    bool alpha = true;    // write the alpha channel (else RGB)
+    int bitDepth = 8;    // 8, 16 (rounded to nearest, clamped) or 32 (float)
+    bool dither = false; // 8/16-bit: ordered (4x4 Bayer) dither before rounding
+    bool alpha = true;   // write the alpha channel (else RGB)
 };
 
 // Writes atomically (temporary file in the same folder, renamed when complete). The format

@@ -2,8 +2,8 @@
 // Smash Ultimate nutexb volumes (color_grading_lut.nutexb) and the Tegra X1 block-linear tiling
 // they are stored in. The byte contract is docs/specs/nutexb.md; this header exposes the
 // pieces to tests and fuzzers: the tiling maths and reading/writing from bytes in memory.
-#include "lut/io/Format.h"
 #include "lut/Lut3D.h"
+#include "lut/io/Format.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -15,7 +15,7 @@ namespace lut::formats::nutexb {
 
 // Format constants, in one place.
 constexpr std::size_t kFooterSize = 0x70;
-constexpr std::size_t kMipTableSize = 0x40; // per layer
+constexpr std::size_t kMipTableSize = 0x40;                       // per layer
 constexpr std::size_t kMinFileSize = kMipTableSize + kFooterSize; // 0xB0
 constexpr std::size_t kNameSize = 64;
 constexpr std::uint32_t kFormatRgba8 = 0x0400;
@@ -26,15 +26,15 @@ constexpr std::uint32_t kTilingLinear = 0;
 constexpr std::uint16_t kVersionMajor = 1;
 constexpr std::uint16_t kVersionMinor = 2;
 constexpr const char* kDefaultName = "color_grading_lut";
-constexpr int kDefaultSize = 16; // every stage LUT of the game is 16^3
+constexpr int kDefaultSize = 16;  // every stage LUT of the game is 16^3
 constexpr int kBytesPerTexel = 4; // RGBA8
 
 // Tegra X1 block-linear tiling of one mip of a width x height x depth texture with `bpp` bytes
 // per texel, block height 1 GOB (3D textures). General: any size, any bpp >= 1.
 struct TileGeometry {
     int width = 0, height = 0, depth = 0, bpp = 0;
-    int blockHeight = 1;  // GOBs per block in y (bh)
-    int blockDepth = 1;   // GOBs per block in z (bd), from blockDepthFor(depth)
+    int blockHeight = 1;          // GOBs per block in y (bh)
+    int blockDepth = 1;           // GOBs per block in z (bd), from blockDepthFor(depth)
     std::uint64_t gobsAcross = 0; // W = ceil(width*bpp/64)
 };
 // bd: d' = d + d/2; d' >= 16 -> 16, >= 8 -> 8, >= 4 -> 4, >= 2 -> 2, else 1.

@@ -1,7 +1,7 @@
 #pragma once
 #include "lut/Image.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
 
 #include <glm/vec3.hpp>
 

@@ -9,20 +9,20 @@ namespace lut {
 
 // Options understood by format readers and writers; each format uses what applies to it.
 struct FormatOptions {
-    std::string layout;   // LUT image layout: pilot, unity, smush, hald ("" = auto/default)
-    int size = 0;         // lattice size when sampling foreign formats or writing (0 = own/default)
-    int bitDepth = 0;     // image output: 8, 16 or 32 (float); 0 = the format's default
-    bool dither = false;  // 8-bit image output: ordered dither instead of plain rounding
-    bool strict = false;  // report every departure from the spec as a diagnostic
-    bool tiled = true;    // nutexb: block-linear tiled (true) or linear rows
-    std::string name;     // nutexb name field ("" = color_grading_lut)
+    std::string layout;  // LUT image layout: pilot, unity, smush, hald ("" = auto/default)
+    int size = 0;        // lattice size when sampling foreign formats or writing (0 = own/default)
+    int bitDepth = 0;    // image output: 8, 16 or 32 (float); 0 = the format's default
+    bool dither = false; // 8-bit image output: ordered dither instead of plain rounding
+    bool strict = false; // report every departure from the spec as a diagnostic
+    bool tiled = true;   // nutexb: block-linear tiled (true) or linear rows
+    std::string name;    // nutexb name field ("" = color_grading_lut)
 };
 
 // One concrete file format. Formats live in formats/ and are registered from one list.
 class Format {
 public:
     virtual ~Format();
-    virtual std::string name() const = 0;                    // "cube", "nutexb", "png-strip"...
+    virtual std::string name() const = 0; // "cube", "nutexb", "png-strip"...
     virtual std::string description() const = 0;
     virtual std::vector<std::string> extensions() const = 0; // lower case, with dot: ".cube"
     virtual bool canRead() const { return true; }

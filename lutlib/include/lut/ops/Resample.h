@@ -1,7 +1,7 @@
 #pragma once
 #include "lut/ErrorStats.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
 
 namespace lut {
 

@@ -4,18 +4,23 @@
 //
 // Stages, in their one canonical order (a preset enables some of them; any can be switched on or
 // off and tuned: setParam("smash-bloom.strength", "0.5")):
+// clang-format off
 //   sanitize              NaN -> 0, +-Inf and |x| > 65504 -> +-65504 (always first; keeps one bad
 //                         pixel from spreading through the blurs)
 //   exposure              x * 2^stops
 //   tonemap               reinhard | aces (Narkowicz fit) | hable (Uncharted 2 filmic)
 //   hdr-bloom             lecture: max(x - 1, 0), Gaussian, add
 //   filter-bloom          Pilot homework: luminance soft-knee filter, separable 9-tap Gaussian, add
-//   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur, C*f0 +
-//   B*(1-i)*f1 smash-bloom           Smash Ultimate bloom, exactly (docs/specs/smash-pipeline.md section
-//   1) chromatic-aberration  r and b sampled at slightly different radial distances vignette darken
-//   by distance to the centre grain                 seeded film grain (same seed + frame index ->
-//   same frame) smash-grade           Smash grading LUT + brighten + alpha mix (section 2) lut any
-//   3D LUT with any interpolation display               sRGB (piecewise) or pure gamma encode, last
+//   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur,
+//                         C*f0 + B*(1-i)*f1
+//   smash-bloom           Smash Ultimate bloom, exactly (docs/specs/smash-pipeline.md section 1)
+//   chromatic-aberration  r and b sampled at slightly different radial distances
+//   vignette              darken by distance to the centre
+//   grain                 seeded film grain (same seed + frame index -> same frame)
+//   smash-grade           Smash grading LUT + brighten + alpha mix (section 2)
+//   lut                   any 3D LUT with any interpolation
+//   display               sRGB (piecewise) or pure gamma encode, last
+// clang-format on
 // Presets: smash (sanitize, smash-bloom, smash-grade, display=srgb), pilot (tonemap, filter-bloom,
 // lut, display=gamma 2.2), lecture (exposure, hdr-bloom, chromatic-aberration, vignette, grain,
 // lut, display=gamma 2.2 — the lecture's order), none (sanitize, display).
@@ -24,8 +29,8 @@
 // does not have (see docs/pipeline.md).
 #include "lut/Error.h"
 #include "lut/Image.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Stage.h"
 
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
-// The Smash Ultimate colour grading + brighten pass (docs/specs/smash-pipeline.md section 2) as plain
-// functions, shared by the preview pipeline (lutlib/src/pipeline), the screenshot "deprocess" and
-// the round-trip code that authors game-compensated LUTs (embed/extract --target smash).
+// The Smash Ultimate colour grading + brighten pass (docs/specs/smash-pipeline.md section 2) as
+// plain functions, shared by the preview pipeline (lutlib/src/pipeline), the screenshot "deprocess"
+// and the round-trip code that authors game-compensated LUTs (embed/extract --target smash).
 //
 // The shader, GetPostProcessingResult(linear):
 //     s   = pow(linear, 0.454545)                    gamma 2.2 encode
@@ -16,8 +16,8 @@
 // pow); +Inf is clamped to kPipelineMaxValue first. Finite input never gives NaN or Inf.
 #include "lut/Error.h"
 #include "lut/Image.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/interp/Sampler.h"
 
 #include <glm/vec3.hpp>

@@ -14,8 +14,8 @@
 #include "lut/Error.h"
 #include "lut/ErrorStats.h"
 #include "lut/Image.h"
-#include "lut/io/Layout.h"
 #include "lut/Lut3D.h"
+#include "lut/io/Layout.h"
 
 #include <cstddef>
 #include <optional>
@@ -53,11 +53,11 @@ PatchCorner parseCorner(std::string_view name);
 struct PatchPlacement {
     PatchLattice lattice = PatchLattice::Uniform;
     LutLayout layout = LutLayout::Hald;
-    int size = 0;       // N
-    int scale = 1;      // pixels per entry (edge of the square block) as embedded
-    int cell = 1;       // pixels per entry as found (== scale unless the image was upscaled)
-    int bitDepth = 8;   // what the patch values were quantised to when embedded (8, 16, 32)
-    int frameX = 0;     // top-left pixel of the marker frame
+    int size = 0;     // N
+    int scale = 1;    // pixels per entry (edge of the square block) as embedded
+    int cell = 1;     // pixels per entry as found (== scale unless the image was upscaled)
+    int bitDepth = 8; // what the patch values were quantised to when embedded (8, 16, 32)
+    int frameX = 0;   // top-left pixel of the marker frame
     int frameY = 0;
     int frameWidth = 0; // frame size in pixels
     int frameHeight = 0;
@@ -71,12 +71,13 @@ void patchFrameSize(LutLayout layout, int size, int scale, int& width, int& heig
 
 struct EmbedOptions {
     PatchLattice lattice = PatchLattice::Smash;
-    int size = kDefaultPatchSize; // uniform lattice only (the smash lattice is 12^3)
+    int size = kDefaultPatchSize;    // uniform lattice only (the smash lattice is 12^3)
     std::optional<LutLayout> layout; // default: hald when N is a square, else pilot
     int scale = kDefaultPatchScale;
     PatchCorner corner = PatchCorner::TopLeft;
     int margin = kDefaultPatchMargin;
-    int bitDepth = 8; // the bit depth the image will be written at: patch values are quantised to it
+    int bitDepth =
+        8; // the bit depth the image will be written at: patch values are quantised to it
 };
 LutLayout defaultPatchLayout(int size);
 
@@ -110,14 +111,14 @@ ExtractTarget parseTarget(std::string_view name);
 
 // The warnings extract can give, each with a test that triggers it.
 enum class RoundtripWarning {
-    NonGlobalEdit,   // blocks not uniform / entries a smooth global edit cannot give
-    ProfileChange,   // greys follow a pure gamma / sRGB<->2.2 curve: a colour-profile conversion?
-    Clipping,        // many entries at 0 or 1
-    Rescaled,        // the image was upscaled by a whole number (read anyway)
-    OutOfRange,      // smash: entries the game cannot reach, clamped
-    LowCoverage,     // fit: the pixels cover little of the cube
-    FewColours,      // fit: too few distinct colours for a 3D fit
-    Outliers,        // fit: pixels the robust fit down-weighted
+    NonGlobalEdit, // blocks not uniform / entries a smooth global edit cannot give
+    ProfileChange, // greys follow a pure gamma / sRGB<->2.2 curve: a colour-profile conversion?
+    Clipping,      // many entries at 0 or 1
+    Rescaled,      // the image was upscaled by a whole number (read anyway)
+    OutOfRange,    // smash: entries the game cannot reach, clamped
+    LowCoverage,   // fit: the pixels cover little of the cube
+    FewColours,    // fit: too few distinct colours for a 3D fit
+    Outliers,      // fit: pixels the robust fit down-weighted
 };
 const char* toString(RoundtripWarning);
 
@@ -131,10 +132,10 @@ struct ExtractOptions {
 // What the patch says before any target is applied.
 struct PatchReading {
     PatchPlacement placement;
-    Lut3D values;               // the edit E at the patch lattice, entry (r,g,b) = E(axis[r], axis[g], axis[b])
-    std::vector<float> axis;    // input value of each lattice index (quantised neutral values)
-    double blockMaxDeviation = 0.0;     // largest pixel deviation from its block mean (8-bit steps)
-    std::size_t nonUniformBlocks = 0;   // blocks with a deviation above 2.5 8-bit steps
+    Lut3D values; // the edit E at the patch lattice, entry (r,g,b) = E(axis[r], axis[g], axis[b])
+    std::vector<float> axis;        // input value of each lattice index (quantised neutral values)
+    double blockMaxDeviation = 0.0; // largest pixel deviation from its block mean (8-bit steps)
+    std::size_t nonUniformBlocks = 0; // blocks with a deviation above 2.5 8-bit steps
 };
 PatchReading readPatch(const ImageView& image, const PatchPlacement& placement);
 
@@ -161,7 +162,7 @@ struct ExtractResult {
     // Sub-lattice check: the patch's even lattice points predict the odd ones (spacing 2h);
     // between lattice points at spacing h the error is expected to be about a quarter of this.
     ErrorStats subLatticeError;
-    ErrorStats expectedError;   // subLatticeError / 4: the interpolation error at the patch spacing
+    ErrorStats expectedError; // subLatticeError / 4: the interpolation error at the patch spacing
     // Smash: what the game shows with the written (8-bit) LUT vs the edited look, on probes
     // between the 16^3 lattice points, display-encoded (8-bit steps via maxSteps8()).
     ErrorStats gameError;
@@ -169,7 +170,7 @@ struct ExtractResult {
     double clampedMax = 0.0;        // ... and the farthest one (in [0,1] units)
     std::size_t clippedValues = 0;  // channel values at 0 or 1 that were not 0 or 1 in the neutral
     std::size_t suspiciousEntries = 0; // entries no smooth or piecewise-smooth edit explains
-    double gamma = 1.0;             // fitted grey-axis exponent
+    double gamma = 1.0;                // fitted grey-axis exponent
 };
 
 // Finds the patch (throws lut::Error when not found or scaled by a non-integer factor), reads it,

@@ -9,10 +9,10 @@
 // the system positive definite when the data leave directions undetermined (few colours).
 // The normal equations are SPD; they are solved per channel by conjugate gradients with a Jacobi
 // preconditioner. Outliers are down-weighted by iteratively reweighted least squares (Huber).
-#include "lut/roundtrip/Embed.h"
 #include "lut/Error.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/roundtrip/Embed.h"
 
 #include <cstddef>
 #include <vector>
@@ -24,11 +24,11 @@ struct FitOptions {
     // lambda, in units of pixels: a lattice point with much more than ~lambda*20 pixel weight
     // follows its pixels exactly, one with little follows its neighbours.
     double smoothness = 1.0;
-    bool robust = true;        // Huber IRLS against outliers
-    double huberSteps = 4.0;   // Huber threshold in 8-bit steps
+    bool robust = true;      // Huber IRLS against outliers
+    double huberSteps = 4.0; // Huber threshold in 8-bit steps
     int robustRounds = 4;
-    int maxIterations = 4000;  // per CG solve
-    double tolerance = 1e-6;   // relative residual of the preconditioned CG
+    int maxIterations = 4000; // per CG solve
+    double tolerance = 1e-6;  // relative residual of the preconditioned CG
     int nthreads = 0;
 };
 
@@ -38,9 +38,9 @@ struct FitResult {
     std::size_t distinctColours = 0; // distinct input colours (8-bit)
     double rmsSteps8 = 0.0;          // fit error over the pixels, 8-bit steps (trilinear)
     double maxSteps8 = 0.0;
-    double extrapolatedShare = 0.0;  // share of lattice cells no pixel falls in
-    std::size_t outlierPixels = 0;   // pixels off the fit by more than 4x the Huber threshold
-    int iterations = 0;              // CG iterations, summed over the robust rounds (largest channel)
+    double extrapolatedShare = 0.0; // share of lattice cells no pixel falls in
+    std::size_t outlierPixels = 0;  // pixels off the fit by more than 4x the Huber threshold
+    int iterations = 0; // CG iterations, summed over the robust rounds (largest channel)
     bool converged = true;
     Diagnostics diagnostics;
     std::vector<RoundtripWarning> warnings;

@@ -9,7 +9,8 @@
 // Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the per-pixel loads need
 // no transposition of the result. Alpha is restored from the input by a blend.
 //
-// Only <immintrin.h>, SimdKernels.h and Transpose.h are included (see the note there about inline functions).
+// Only <immintrin.h>, SimdKernels.h and Transpose.h are included (see the note there about inline
+// functions).
 #include "SimdKernels.h"
 #include "core/simd/Transpose.h"
 
@@ -22,8 +23,8 @@ struct Consts {
     __m256 offset[3];
     __m256 scale[3];
     __m256 snapBias[3];
-    __m256 top;      // N - 1
-    __m256 snapK;    // kSnapRelative
+    __m256 top;   // N - 1
+    __m256 snapK; // kSnapRelative
     __m256 one;
     __m256 absMask;
     __m256i maxCell; // N - 2
@@ -63,7 +64,8 @@ inline void locate(const Consts& k, int c, __m256 x, __m256i& cell, __m256& frac
 
 // Float offset of entry (r, g, b) in the padded table (4 floats per entry).
 inline __m256i entryOffset(const Consts& k, __m256i r, __m256i g, __m256i b) {
-    const __m256i idx = _mm256_add_epi32(r, _mm256_mullo_epi32(k.n, _mm256_add_epi32(g, _mm256_mullo_epi32(k.n, b))));
+    const __m256i idx = _mm256_add_epi32(
+        r, _mm256_mullo_epi32(k.n, _mm256_add_epi32(g, _mm256_mullo_epi32(k.n, b))));
     return _mm256_slli_epi32(idx, 2);
 }
 
@@ -73,13 +75,14 @@ inline __m256 load2(const float* lo, const float* hi) {
 }
 
 struct Block {
-    __m256 px[4];  // the input pixels, two per register
-    __m256 f[3];   // fractions, lanes in transposed order
-    __m256i base;  // float offset of the cell's origin entry, same lanes
+    __m256 px[4]; // the input pixels, two per register
+    __m256 f[3];  // fractions, lanes in transposed order
+    __m256i base; // float offset of the cell's origin entry, same lanes
 };
 
 inline void loadBlock(const Consts& k, const float* p, Block& blk) {
-    for (int i = 0; i < 4; ++i) blk.px[i] = _mm256_loadu_ps(p + 8 * i);
+    for (int i = 0; i < 4; ++i)
+        blk.px[i] = _mm256_loadu_ps(p + 8 * i);
     __m256 r = blk.px[0], g = blk.px[1], b = blk.px[2], a = blk.px[3];
     transpose4(r, g, b, a);
     __m256i ir, ig, ib;
@@ -93,13 +96,16 @@ inline void loadBlock(const Consts& k, const float* p, Block& blk) {
 // tail gets the same arithmetic as the rest.
 template <class BlockFn> inline void forEachBlock(float* rgba, std::size_t count, BlockFn&& block) {
     std::size_t i = 0;
-    for (; i + 8 <= count; i += 8) block(rgba + 4 * i);
+    for (; i + 8 <= count; i += 8)
+        block(rgba + 4 * i);
     if (i < count) {
         alignas(32) float tmp[32] = {};
         const std::size_t rest = count - i;
-        for (std::size_t j = 0; j < 4 * rest; ++j) tmp[j] = rgba[4 * i + j];
+        for (std::size_t j = 0; j < 4 * rest; ++j)
+            tmp[j] = rgba[4 * i + j];
         block(tmp);
-        for (std::size_t j = 0; j < 4 * rest; ++j) rgba[4 * i + j] = tmp[j];
+        for (std::size_t j = 0; j < 4 * rest; ++j)
+            rgba[4 * i + j] = tmp[j];
     }
 }
 
@@ -114,9 +120,15 @@ void nearestAvx2(const KernelTable& table, float* rgba, std::size_t count) {
         loadBlock(k, p, blk);
         // Round half up, as the scalar sampler: the next entry where frac >= 0.5.
         __m256i off = blk.base;
-        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[0], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.dr)));
-        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[1], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.dg)));
-        off = _mm256_add_epi32(off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[2], half, _CMP_GE_OQ)), _mm256_set1_epi32(k.db)));
+        off = _mm256_add_epi32(
+            off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[0], half, _CMP_GE_OQ)),
+                                  _mm256_set1_epi32(k.dr)));
+        off = _mm256_add_epi32(
+            off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[1], half, _CMP_GE_OQ)),
+                                  _mm256_set1_epi32(k.dg)));
+        off = _mm256_add_epi32(
+            off, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(blk.f[2], half, _CMP_GE_OQ)),
+                                  _mm256_set1_epi32(k.db)));
         alignas(32) int idx[8];
         _mm256_store_si256(reinterpret_cast<__m256i*>(idx), off);
         for (int q = 0; q < 4; ++q) {
@@ -134,7 +146,8 @@ void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count) {
         Block blk;
         loadBlock(k, p, blk);
         const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
-        const __m256 gr = _mm256_sub_ps(k.one, fr), gg = _mm256_sub_ps(k.one, fg), gb = _mm256_sub_ps(k.one, fb);
+        const __m256 gr = _mm256_sub_ps(k.one, fr), gg = _mm256_sub_ps(k.one, fg),
+                     gb = _mm256_sub_ps(k.one, fb);
         // Weights of the four red-axis edges of the cell; products of 0 and 1 are exact, so
         // lattice points still return their entries exactly.
         alignas(32) float w00[8], w10[8], w01[8], w11[8], wr0[8], wr1[8];
@@ -155,9 +168,11 @@ void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count) {
             __m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(&w00[lane]), _mm256_loadu_ps(e));
             acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w10[lane]), _mm256_loadu_ps(e + dg), acc);
             acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w01[lane]), _mm256_loadu_ps(e + db), acc);
-            acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&w11[lane]), _mm256_loadu_ps(e + db + dg), acc);
+            acc =
+                _mm256_fmadd_ps(_mm256_broadcast_ss(&w11[lane]), _mm256_loadu_ps(e + db + dg), acc);
             const __m128 lo = _mm256_castps256_ps128(acc), hi = _mm256_extractf128_ps(acc, 1);
-            const __m128 o = _mm_fmadd_ps(_mm_broadcast_ss(&wr1[lane]), hi, _mm_mul_ps(_mm_broadcast_ss(&wr0[lane]), lo));
+            const __m128 o = _mm_fmadd_ps(_mm_broadcast_ss(&wr1[lane]), hi,
+                                          _mm_mul_ps(_mm_broadcast_ss(&wr0[lane]), lo));
             float* q = p + 4 * pix;
             _mm_storeu_ps(q, _mm_blend_ps(o, _mm_loadu_ps(q), 0x8));
         }
@@ -178,15 +193,20 @@ void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count) {
         const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
         // Sort the fractions: the tetrahedron runs c000 -> +max axis -> +max+mid axes -> c111.
         // Ties pick either tetrahedron; the tied vertex then has weight exactly 0.
-        const __m256 rMax = _mm256_and_ps(_mm256_cmp_ps(fr, fg, _CMP_GE_OQ), _mm256_cmp_ps(fr, fb, _CMP_GE_OQ));
+        const __m256 rMax =
+            _mm256_and_ps(_mm256_cmp_ps(fr, fg, _CMP_GE_OQ), _mm256_cmp_ps(fr, fb, _CMP_GE_OQ));
         const __m256 gMax = _mm256_andnot_ps(rMax, _mm256_cmp_ps(fg, fb, _CMP_GE_OQ));
-        const __m256 bMin = _mm256_and_ps(_mm256_cmp_ps(fb, fr, _CMP_LE_OQ), _mm256_cmp_ps(fb, fg, _CMP_LE_OQ));
+        const __m256 bMin =
+            _mm256_and_ps(_mm256_cmp_ps(fb, fr, _CMP_LE_OQ), _mm256_cmp_ps(fb, fg, _CMP_LE_OQ));
         const __m256 gMin = _mm256_andnot_ps(bMin, _mm256_cmp_ps(fg, fr, _CMP_LE_OQ));
-        const __m256i offMax = _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offB, offG, gMax), offR, rMax));
-        const __m256i offMin = _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offR, offG, gMin), offB, bMin));
+        const __m256i offMax =
+            _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offB, offG, gMax), offR, rMax));
+        const __m256i offMin =
+            _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offR, offG, gMin), offB, bMin));
         const __m256 fMax = _mm256_max_ps(fr, _mm256_max_ps(fg, fb));
         const __m256 fMin = _mm256_min_ps(fr, _mm256_min_ps(fg, fb));
-        const __m256 fMid = _mm256_max_ps(_mm256_min_ps(fr, fg), _mm256_min_ps(_mm256_max_ps(fr, fg), fb));
+        const __m256 fMid =
+            _mm256_max_ps(_mm256_min_ps(fr, fg), _mm256_min_ps(_mm256_max_ps(fr, fg), fb));
         __m256 w0 = _mm256_sub_ps(k.one, fMax), w1 = _mm256_sub_ps(fMax, fMid),
                w2 = _mm256_sub_ps(fMid, fMin), w3 = fMin;
         transpose4(w0, w1, w2, w3); // now one register per pixel pair: [w0 w1 w2 w3 | ...]
@@ -202,7 +222,8 @@ void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count) {
             __m256 o = _mm256_mul_ps(_mm256_permute_ps(w, 0x00), load2(t + i0[a], t + i0[b]));
             o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0x55), load2(t + iA[a], t + iA[b]), o);
             o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xAA), load2(t + iB[a], t + iB[b]), o);
-            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xFF), load2(t + i0[a] + dAll, t + i0[b] + dAll), o);
+            o = _mm256_fmadd_ps(_mm256_permute_ps(w, 0xFF),
+                                load2(t + i0[a] + dAll, t + i0[b] + dAll), o);
             _mm256_storeu_ps(p + 8 * q, _mm256_blend_ps(o, blk.px[q], 0x88));
         }
     });

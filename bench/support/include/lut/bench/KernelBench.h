@@ -4,8 +4,8 @@
 // (OpenColorIO's side of the comparison lives with the callers: lutlib does not link OCIO.)
 #include "lut/ErrorStats.h"
 #include "lut/Image.h"
-#include "lut/interp/Interpolation.h"
 #include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
 #include "lut/interp/Sampler.h"
 
 #include <functional>
@@ -38,6 +38,7 @@ ErrorStats frameError(const Image& graded, const Image& reference, int nthreads 
 void parallelCopy(const Image& src, Image& dst, int nthreads = 0);
 
 // Smallest wall time of `run` over `reps` runs (at least 1), calling `prepare` untimed first.
-double bestSeconds(int reps, const std::function<void()>& prepare, const std::function<void()>& run);
+double bestSeconds(int reps, const std::function<void()>& prepare,
+                   const std::function<void()>& run);
 
 } // namespace lut
