@@ -15,7 +15,7 @@ jobs="$(nproc)"
 
 stage="release"
 echo "== Release build and tests"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DLUTKIT_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build "$root/build" -j"$jobs"
 (cd "$root/build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs")
 

@@ -4,7 +4,7 @@
 set -euo pipefail
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
-  libcli11-dev libbenchmark-dev xvfb xauth clang libclang-rt-14-dev "$@")
+  libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev "$@")
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
