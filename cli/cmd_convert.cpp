@@ -10,8 +10,10 @@
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
+#include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/ops/Resample.h"
 
 #include <chrono>
@@ -127,7 +129,7 @@ int runConvert(const ConvertOptions& o) {
     // Read.
     auto t0 = Clock::now();
     FormatOptions readOptions;
-    readOptions.layout = o.inLayout;
+    readOptions.layout = layoutOption("--in-layout", o.inLayout);
     LutFile input = formats::readLut(o.input, readOptions, o.inFormat);
     const double readSeconds = since(t0);
     if (!input.cube && !input.shaper)
@@ -151,11 +153,12 @@ int runConvert(const ConvertOptions& o) {
 
     // Write.
     FormatOptions writeOptions;
-    writeOptions.layout = o.layout;
+    writeOptions.layout = layoutOption("--layout", o.layout);
     writeOptions.size = targetSize;
     writeOptions.bitDepth = o.bitDepth;
     writeOptions.dither = o.dither;
-    writeOptions.name = o.name;
+    if (!o.name.empty())
+        writeOptions.setAttribute(formats::nutexb::kNameAttribute, o.name);
     t0 = Clock::now();
     const Diagnostics writeDiags = writer->write(o.output, toWrite, writeOptions);
     const double writeSeconds = since(t0);
@@ -167,7 +170,7 @@ int runConvert(const ConvertOptions& o) {
     t0 = Clock::now();
     try {
         FormatOptions backOptions;
-        backOptions.layout = o.layout;
+        backOptions.layout = layoutOption("--layout", o.layout);
         back = formats::readLut(o.output, backOptions);
         storage = storageError(toWrite, *back);
         storage->seconds = since(t0);

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/Format.h"
 #include "lut/roundtrip/Embed.h"
 

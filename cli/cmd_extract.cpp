@@ -4,6 +4,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/roundtrip/Embed.h"
 
 #include <cstdio>
@@ -46,7 +47,7 @@ int runExtract(const ExtractOptions& o) {
     LutFile file;
     file.cube = std::move(res.lut);
     FormatOptions fo;
-    fo.layout = o.layout;
+    fo.layout = layoutOption("--layout", o.layout);
     const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
     for (const auto& d : wd)
         std::cerr << "lutkit: " << d.str() << "\n";

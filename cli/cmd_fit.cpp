@@ -34,7 +34,7 @@ int runFit(const FitOptions& o) {
     LutFile file;
     file.cube = std::move(res.lut);
     FormatOptions wo;
-    wo.layout = o.layout;
+    wo.layout = layoutOption("--layout", o.layout);
     const Diagnostics wd = formats::writeLut(o.output, file, wo, o.format);
     for (const auto& d : wd)
         std::cerr << "lutkit: " << d.str() << "\n";

@@ -32,7 +32,7 @@ std::string vecJson(glm::vec3 v) {
 
 int runInfo(const InfoOptions& o) {
     FormatOptions options;
-    options.layout = o.layout;
+    options.layout = layoutOption("--layout", o.layout);
     options.size = o.size;
     const LutFile file = formats::readLut(o.input, options, o.format);
     if (!file.cube && !file.shaper)

@@ -5,7 +5,9 @@
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
+#include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
 
 #include <algorithm>
 #include <iostream>
@@ -51,10 +53,11 @@ int runNeutral(const NeutralOptions& o) {
     file.cube = Lut3D::identity(size);
     file.cube->setTitle(o.title.empty() ? "neutral " + std::to_string(size) : o.title);
     FormatOptions options;
-    options.layout = o.layout;
+    options.layout = layoutOption("--layout", o.layout);
     options.size = size;
     options.bitDepth = o.bitDepth;
-    options.name = o.name;
+    if (!o.name.empty())
+        options.setAttribute(formats::nutexb::kNameAttribute, o.name);
     const Diagnostics diags = writer->write(o.output, file, options);
     std::cout << "wrote " << o.output << ": " << writer->name() << ", neutral " << size << "^3";
     if (!o.layout.empty())

@@ -8,6 +8,7 @@
 #include "lut/Error.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/Format.h"
 
 #include <iostream>

@@ -20,6 +20,9 @@ int g_exitCode = kExitOk;
 template <class Fn> void guarded(Fn&& fn) {
     try {
         g_exitCode = fn();
+    } catch (const UsageError& e) {
+        std::cerr << "lutkit: " << e.what() << "\n";
+        g_exitCode = kExitUsage;
     } catch (const lut::Error& e) {
         std::cerr << "lutkit: error: " << e.what() << "\n";
         g_exitCode = kExitFailure;

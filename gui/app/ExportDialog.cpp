@@ -126,7 +126,7 @@ ExportChoice ExportDialog::choice() const {
 
 FormatOptions ExportDialog::options() const {
     FormatOptions o;
-    o.layout = choice().layout.toStdString();
+    o.layout = parseOptionalLayout(choice().layout.toStdString());
     o.size = m_size->value();
     o.bitDepth = m_bitDepth->currentData().toInt();
     o.dither = m_dither->isChecked();

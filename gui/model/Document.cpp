@@ -8,6 +8,7 @@
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
 #include "lut/roundtrip/Embed.h"
 

@@ -266,7 +266,8 @@ TEST(Nutexb, SizeOptionLinearOptionAndRoundTripAnySize) {
             f.cube = lut;
             lut::FormatOptions o;
             o.size = n;
-            o.tiled = tiled;
+            o.setAttribute(lut::formats::nutexb::kTilingAttribute,
+                           tiled ? "block-linear" : "linear");
             const std::string path =
                 dir + "/x" + std::to_string(n) + (tiled ? "t" : "l") + ".nutexb";
             lut::formats::writeLut(path, f, o);

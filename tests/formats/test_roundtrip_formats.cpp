@@ -16,14 +16,14 @@ namespace {
 lut::LutFile convert(const std::string& in, const std::string& out, const std::string& layout = {},
                      const std::string& inLayout = {}) {
     lut::FormatOptions ro;
-    ro.layout = inLayout;
+    ro.layout = lut::parseOptionalLayout(inLayout);
     const lut::LutFile f = lut::formats::readLut(in, ro);
     lut::FormatOptions wo;
-    wo.layout = layout;
+    wo.layout = lut::parseOptionalLayout(layout);
     wo.size = f.cube ? f.cube->size() : 0;
     lut::formats::writeLut(out, f, wo);
     lut::FormatOptions back;
-    back.layout = layout;
+    back.layout = lut::parseOptionalLayout(layout);
     return lut::formats::readLut(out, back);
 }
 
@@ -98,7 +98,7 @@ TEST(RoundTripFormats, SixteenBitAndFloatImagesThroughCubeExact) {
     lut::LutFile f;
     f.cube = lut;
     lut::FormatOptions o;
-    o.layout = "unity";
+    o.layout = lut::parseOptionalLayout("unity");
     o.bitDepth = 16;
     lut::formats::writeLut(d + "/a.tif", f, o);
     EXPECT_EQ(convert(d + "/a.tif", d + "/b.cube", {}, "unity").cube->entries(), lut.entries());
@@ -106,6 +106,6 @@ TEST(RoundTripFormats, SixteenBitAndFloatImagesThroughCubeExact) {
     o.bitDepth = 32;
     lut::formats::writeLut(d + "/c.exr", c, o);
     lut::FormatOptions ro;
-    ro.layout = "unity";
+    ro.layout = lut::parseOptionalLayout("unity");
     EXPECT_EQ(lut::formats::readLut(d + "/c.exr", ro).cube->entries(), lut.entries());
 }

@@ -69,14 +69,14 @@ lut::LutFile fileOf(const lut::Lut3D& l) {
 lut::Diagnostics write(const std::string& path, const lut::Lut3D& l, const std::string& layout,
                        int bits = 0, const std::string& format = {}) {
     lut::FormatOptions o;
-    o.layout = layout;
+    o.layout = lut::parseOptionalLayout(layout);
     o.bitDepth = bits;
     return lut::formats::writeLut(path, fileOf(l), o, format);
 }
 
 lut::LutFile read(const std::string& path, const std::string& layout = {}) {
     lut::FormatOptions o;
-    o.layout = layout;
+    o.layout = lut::parseOptionalLayout(layout);
     return lut::formats::readLut(path, o);
 }
 
@@ -297,7 +297,7 @@ TEST(Hald, WritesNextSquareAndReadsBackBySizeAlone) {
     EXPECT_LE(f.cube->maxDeviationFromIdentity(), 0.5f / 255.0f + 1e-6f);
     // The hald format refuses another layout.
     lut::FormatOptions smush;
-    smush.layout = "smush";
+    smush.layout = lut::parseOptionalLayout("smush");
     EXPECT_THROW(lut::formats::writeLut(dir + "/x.png", fileOf(graded8(4)), smush, "hald"),
                  lut::Error);
 }

@@ -23,7 +23,7 @@ lut::LutFile fileOf(const lut::Lut3D& l) {
 
 void write(const std::string& path, const lut::Lut3D& l, const std::string& layout) {
     lut::FormatOptions o;
-    o.layout = layout;
+    o.layout = lut::parseOptionalLayout(layout);
     lut::formats::writeLut(path, fileOf(l), o);
 }
 
@@ -81,7 +81,7 @@ TEST(StripDetect, GradedLutIsFoundInItsOwnLayout) {
         EXPECT_EQ(f.dialect, layout);
         // Same values as reading with the layout given.
         lut::FormatOptions o;
-        o.layout = layout;
+        o.layout = lut::parseOptionalLayout(layout);
         EXPECT_EQ(f.cube->entries(), lut::formats::readLut(path, o).cube->entries());
     }
 }
@@ -125,7 +125,7 @@ TEST(StripDetect, AmbiguousAndNotPilotLikeIsRefusedNamingLayouts) {
     }
     // Given the layout, it reads.
     lut::FormatOptions o;
-    o.layout = "pilot";
+    o.layout = lut::parseOptionalLayout("pilot");
     EXPECT_EQ(lut::formats::readLut(dir + "/odd.png", o).cube->at(3, 4, 5),
               glm::vec3(3 / 15.0f, 11 / 15.0f, 128 / 255.0f));
 }

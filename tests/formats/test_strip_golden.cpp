@@ -20,7 +20,7 @@ glm::vec3 gradedExpected(int r, int g, int b, float max) {
 lut::LutFile read(const std::string& name, const std::string& layout = {},
                   const std::string& format = {}) {
     lut::FormatOptions o;
-    o.layout = layout;
+    o.layout = lut::parseOptionalLayout(layout);
     return lut::formats::readLut(dataPath(name), o, format);
 }
 

@@ -158,7 +158,8 @@ inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
         return Outcome::Refused;
     FormatOptions options;
     if (data[0] & 0x80) {
-        options.layout = hald ? "hald" : "";
+        if (hald)
+            options.layout = LutLayout::Hald;
         return readChecked(
             writeScratch(hald ? "raw-hald.png" : "raw-strip.png", data + 1, size - 1), options);
     }
@@ -198,7 +199,8 @@ inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
     }
     static const int kChannels[] = {3, 4, 1, 2};
     s.channels = kChannels[(data[2] >> 1) & 3];
-    options.layout = s.layout;
+    if (!s.layout.empty())
+        options.layout = parseLayout(s.layout);
 
     const std::uint8_t* px = data + 5;
     const std::size_t pxSize = size - 5;

@@ -130,7 +130,8 @@ private slots:
             if (!c.layout.isEmpty())
                 layouts << c.layout;
             QCOMPARE(dlg.smashCompensate(), c.format == QLatin1String("nutexb"));
-            QCOMPARE(QString::fromStdString(dlg.options().layout), c.layout);
+            const auto layout = dlg.options().layout;
+            QCOMPARE(layout ? QString::fromLatin1(toString(*layout)) : QString(), c.layout);
         }
         for (const char* l : {"pilot", "unity", "smush"})
             QVERIFY2(layouts.contains(QLatin1String(l)), l);
@@ -271,7 +272,7 @@ private slots:
         for (const ExportChoice& c : choices) {
             const QString path = dir.filePath(QStringLiteral("x%1%2").arg(n++).arg(c.extension));
             FormatOptions o;
-            o.layout = c.layout.toStdString();
+            o.layout = lut::parseOptionalLayout(c.layout.toStdString());
             QVERIFY2(w.exportLut(path, c.format, o, false),
                      qPrintable(c.label + ": " + w.lastError()));
             QVERIFY2(QFileInfo(path).size() > 0, qPrintable(c.label));

@@ -60,6 +60,11 @@ TEST(ExitCodes, EverySubcommand) {
         {"neutral", 2, "OUT is required"},
         {"neutral @/x.cube --size 1", 2, "--size: Value 1 not in range 2 to 256"},
         {"convert @/a.cube @/x.cube --interp cubic", 2, "--interp: cubic not in"},
+        // an unknown layout is bad usage like an unknown format (it used to exit 1)
+        {"info @/img.png --layout diagonal", 2,
+         "lutkit: --layout: unknown layout 'diagonal' (expected pilot, unreal, godot, unity, "
+         "smush, lattice or hald)"},
+        {"convert @/a.cube @/x.png --layout diagonal", 2, "lutkit: --layout: unknown layout"},
         // neutral (no input file: a folder that does not exist stands for the missing file)
         {"neutral @/n.cube --no-such-option", 2, unexpected},
         {"neutral @/nowhere/n.cube", 1,

@@ -1360,6 +1360,16 @@ public:
         o.strict = options.strict;
         return readCube(path, o);
     }
+    LutFile readMemory(std::string_view bytes, const std::string& name,
+                       const FormatOptions& options) const override {
+        if (bytes.size() > limits::kMaxLutFileBytes)
+            throw LimitError(name + ": " + std::to_string(bytes.size()) +
+                             " bytes, over the limit of " +
+                             std::to_string(limits::kMaxLutFileBytes) + " for a LUT file");
+        CubeReadOptions o;
+        o.strict = options.strict;
+        return parseCube(bytes, name, o);
+    }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {
         if (options.size != 0 && lut.cube && options.size != lut.cube->size()) {

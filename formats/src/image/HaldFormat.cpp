@@ -48,9 +48,9 @@ public:
 
 private:
     static void checkLayout(const std::string& path, const FormatOptions& options) {
-        if (!options.layout.empty() && parseLayout(options.layout) != LutLayout::Hald)
+        if (options.layout && *options.layout != LutLayout::Hald)
             throw Error(path + ": the hald format stores the hald layout only, not '" +
-                        options.layout + "'");
+                        toString(*options.layout) + "'");
     }
 };
 

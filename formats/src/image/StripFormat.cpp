@@ -36,6 +36,7 @@
 #include "lut/Error.h"
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/io/FileNames.h"
 
 #include <cmath>
 #include <cstdio>
@@ -120,10 +121,7 @@ int defaultBitDepth(const std::string& path) {
 
 LutFile readLutImage(const std::string& path, const FormatOptions& options,
                      std::optional<LutLayout> forced) {
-    // Check the layout name before touching the file, so a typo is reported as such.
-    std::optional<LutLayout> wanted = forced;
-    if (!wanted && !options.layout.empty())
-        wanted = parseLayout(options.layout);
+    const std::optional<LutLayout> wanted = forced ? forced : options.layout;
 
     const LoadedImage img = readImage(path);
     const int w = img.image.width(), h = img.image.height();
@@ -282,8 +280,7 @@ public:
     }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {
-        const LutLayout layout =
-            options.layout.empty() ? LutLayout::Pilot : parseLayout(options.layout);
+        const LutLayout layout = options.layout.value_or(LutLayout::Pilot);
         return writeLutImage(path, lut, options, layout);
     }
 };

@@ -1,6 +1,7 @@
 // Image file names: see lut/formats/ImageFiles.h. No OpenImageIO here (names only), so callers do
 // not load the image module to ask.
 #include "lut/formats/ImageFiles.h"
+#include "lut/io/FileNames.h"
 
 #include "lut/io/Format.h"
 

@@ -365,6 +365,10 @@ public:
                                                     nutexb::kFooterSize));
         return nutexb::readBytes(bytes, path);
     }
+    LutFile readMemory(std::string_view bytes, const std::string& name,
+                       const FormatOptions&) const override {
+        return nutexb::readBytes(bytes, name);
+    }
 
     Diagnostics write(const std::string& path, const LutFile& file,
                       const FormatOptions& options) const override {
@@ -379,7 +383,14 @@ public:
         const int size = options.size > 0 ? options.size : nutexb::kDefaultSize;
         const Lut3D lut = prepareUnitLut(file, size, path, diags);
         std::size_t clamped = 0;
-        const std::string bytes = nutexb::writeBytes(lut, options.name, options.tiled, &clamped);
+        const std::string tiling =
+            options.attribute(nutexb::kTilingAttribute).value_or("block-linear");
+        if (tiling != "block-linear" && tiling != "linear")
+            throw Error(path + ": " + nutexb::kTilingAttribute + " is '" + tiling +
+                        "', expected block-linear or linear");
+        const std::string bytes =
+            nutexb::writeBytes(lut, options.attribute(nutexb::kNameAttribute).value_or(""),
+                               tiling == "block-linear", &clamped);
         addClampDiagnostic(clamped, 8, path, diags);
         addQuantizationDiagnostic(lut, 8, path, diags);
         writeFileAtomically(path, bytes);

@@ -23,6 +23,7 @@
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/ops/Resample.h"
 
 #include <OpenColorIO/OpenColorIO.h>

@@ -33,6 +33,12 @@ LutLayout parseLayout(std::string_view name) {
                 "' (expected pilot, unreal, godot, unity, smush, lattice or hald)");
 }
 
+std::optional<LutLayout> parseOptionalLayout(std::string_view name) {
+    if (name.empty())
+        return std::nullopt;
+    return parseLayout(name);
+}
+
 std::vector<LutLayout> allLayouts() {
     return {LutLayout::Pilot, LutLayout::Unity, LutLayout::Smush, LutLayout::Hald};
 }

@@ -29,6 +29,11 @@ constexpr const char* kDefaultName = "color_grading_lut";
 constexpr int kDefaultSize = 16;  // every stage LUT of the game is 16^3
 constexpr int kBytesPerTexel = 4; // RGBA8
 
+// FormatOptions attributes the nutexb writer reads: the name field ("" = color_grading_lut) and
+// the tiling, "block-linear" (the default, what the game ships) or "linear" rows.
+constexpr const char* kNameAttribute = "nutexb:name";
+constexpr const char* kTilingAttribute = "nutexb:tiling";
+
 // Tegra X1 block-linear tiling of one mip of a width x height x depth texture with `bpp` bytes
 // per texel, block height 1 GOB (3D textures). General: any size, any bpp >= 1.
 struct TileGeometry {

@@ -1,5 +1,5 @@
 #pragma once
-#include "lut/io/Format.h"
+#include "lut/io/FormatRegistry.h"
 
 namespace lut::formats {
 

@@ -4,6 +4,7 @@
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,8 @@ enum class LutLayout {
 const char* toString(LutLayout);
 // Accepts the names and aliases above; throws lut::Error listing the valid names.
 LutLayout parseLayout(std::string_view name);
+// The same, with "" meaning "not given" (nullopt): for options whose default is auto-detection.
+std::optional<LutLayout> parseOptionalLayout(std::string_view name);
 std::vector<LutLayout> allLayouts();
 
 struct LayoutFit {
