@@ -54,52 +54,74 @@ TEST(PipelineParts, BeforeThenFromLutIsTheWholeRunBitForBit) {
 }
 
 TEST(PipelineParts, ThePartsSplitAtTheFirstLutStage) {
-    Pipeline p(Preset::Smash);
-    const auto& names = stageNames();
-    const std::size_t grade = std::find(names.begin(), names.end(), "smash-grade") - names.begin();
-    EXPECT_EQ(p.firstLutStage(), grade);
-    PipelineReport before, from;
+    // No stage names here: the split is found by the pipeline, not by a list of names.
     Image scene = makeScene(20, 12, 4);
     scene.pixel(1, 1)[2] = NAN; // something for sanitize to do
-    const Image mid = inPart(p, scene, PipelinePart::BeforeLut, &before);
-    inPart(p, mid, PipelinePart::FromLut, &from);
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        const bool on = p.stages()[i]->enabled();
-        EXPECT_EQ(before.stages[i].enabled, on && i < grade) << names[i];
-        EXPECT_EQ(from.stages[i].enabled, on && i >= grade) << names[i];
-        EXPECT_FALSE(before.stages[i].ran && i >= grade) << names[i];
-        EXPECT_FALSE(from.stages[i].ran && i < grade) << names[i];
+    PipelineSettings warm, cool;
+    warm.lut = std::make_shared<const Lut3D>(makeWarmLut(16, 1.0));
+    cool.lut = std::make_shared<const Lut3D>(makeWarmLut(16, -1.0));
+    Pipeline a(warm), b(cool);
+    const std::size_t split = a.firstLutStage();
+    ASSERT_LT(split, a.stages().size());
+    // Before the LUT nothing depends on the LUT; from it on, everything after does.
+    PipelineReport before, from;
+    const Image midA = inPart(a, scene, PipelinePart::BeforeLut, &before);
+    const Image midB = inPart(b, scene, PipelinePart::BeforeLut);
+    EXPECT_TRUE(bitEqual(midA, midB));
+    EXPECT_FALSE(bitEqual(midA, scene));
+    EXPECT_FALSE(bitEqual(inPart(a, midA, PipelinePart::FromLut, &from),
+                          inPart(b, midA, PipelinePart::FromLut)));
+    for (std::size_t i = 0; i < a.stages().size(); ++i) {
+        const bool on = a.stages()[i]->enabled();
+        EXPECT_EQ(before.stages[i].enabled, on && i < split) << i;
+        EXPECT_EQ(from.stages[i].enabled, on && i >= split) << i;
+        EXPECT_FALSE(before.stages[i].ran && i >= split) << i;
+        EXPECT_FALSE(from.stages[i].ran && i < split) << i;
     }
-    EXPECT_TRUE(before.stages[0].ran);              // sanitize
-    EXPECT_TRUE(from.stages[grade].ran);            // smash-grade
-    EXPECT_TRUE(from.stages[names.size() - 1].ran); // display
+    EXPECT_TRUE(before.stages[0].ran); // sanitize
+    EXPECT_TRUE(from.stages[split].ran);
 }
 
 TEST(PipelineParts, SameBeforeLutFollowsTheStagesBeforeTheLut) {
-    PipelineSettings a;
-    a.preset = Preset::Smash;
-    PipelineSettings b = a;
-    // What only the LUT part sees: the LUT, its interpolation, display settings.
-    b.lut = std::make_shared<const Lut3D>(makeWarmLut(16));
-    b.interpolation = Interpolation::Tetrahedral;
-    b.assignments = {"display.curve=gamma"};
-    EXPECT_TRUE(Pipeline(a).sameBeforeLut(Pipeline(b)));
-    // What the first part sees.
-    PipelineSettings c = a;
-    c.bloom = false;
-    EXPECT_FALSE(Pipeline(a).sameBeforeLut(Pipeline(c)));
-    PipelineSettings d = a;
-    d.assignments = {"smash-bloom.strength=0.5"};
-    EXPECT_FALSE(Pipeline(a).sameBeforeLut(Pipeline(d)));
-    PipelineSettings e = a;
-    e.enable = {"vignette"};
-    EXPECT_FALSE(Pipeline(a).sameBeforeLut(Pipeline(e)));
-    PipelineSettings f = a;
-    f.preset = Preset::Pilot;
-    EXPECT_FALSE(Pipeline(a).sameBeforeLut(Pipeline(f)));
-    // A parameter of a stage that is switched off does not matter.
-    PipelineSettings g = a, h = a;
-    g.assignments = {"vignette.strength=0.1"};
-    h.assignments = {"vignette.strength=0.9"};
-    EXPECT_TRUE(Pipeline(g).sameBeforeLut(Pipeline(h)));
+    PipelineSettings base;
+    base.preset = Preset::Smash;
+    const Pipeline a(base);
+    const std::size_t split = a.firstLutStage();
+    // What only the LUT part sees: the LUT, its interpolation, settings of the last stage.
+    PipelineSettings lutOnly = base;
+    lutOnly.lut = std::make_shared<const Lut3D>(makeWarmLut(16));
+    lutOnly.interpolation = Interpolation::Tetrahedral;
+    Pipeline b(lutOnly);
+    Stage& last = *b.stages().back();
+    ASSERT_FALSE(last.params().empty());
+    const StageParam& p = last.params().front();
+    last.setParam(p.name, p.value == p.min ? p.max : p.min);
+    EXPECT_TRUE(a.sameBeforeLut(b));
+    // What the first part sees: bloom on/off, a bloom setting, another stage, another preset.
+    PipelineSettings noBloom = base;
+    noBloom.bloom = false;
+    EXPECT_FALSE(a.sameBeforeLut(Pipeline(noBloom)));
+    PipelineSettings weakBloom = base;
+    weakBloom.assignments = {"bloom.strength=0.5"};
+    EXPECT_FALSE(a.sameBeforeLut(Pipeline(weakBloom)));
+    PipelineSettings pilot = base;
+    pilot.preset = Preset::Pilot;
+    EXPECT_FALSE(a.sameBeforeLut(Pipeline(pilot)));
+    // A stage before the LUT that the preset leaves off: switching it on matters, its
+    // parameters while it is off do not.
+    std::size_t off = 0;
+    while (off < split && a.stages()[off]->enabled())
+        ++off;
+    ASSERT_LT(off, split);
+    const std::string name = a.stages()[off]->name();
+    Pipeline tuned(base);
+    Stage& s = *tuned.stages()[off];
+    if (!s.params().empty()) {
+        const StageParam& q = s.params().front();
+        s.setParam(q.name, q.value == q.min ? q.max : q.min);
+    }
+    EXPECT_TRUE(a.sameBeforeLut(tuned)) << name;
+    PipelineSettings extra = base;
+    extra.enable = {name};
+    EXPECT_FALSE(a.sameBeforeLut(Pipeline(extra))) << name;
 }
