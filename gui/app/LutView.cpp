@@ -1,6 +1,6 @@
 #include "LutView.h"
 
-#include "PreviewScheduler.h"
+#include "PreviewFrame.h"
 
 #include <QCheckBox>
 #include <QComboBox>

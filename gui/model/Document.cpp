@@ -1,6 +1,5 @@
 #include "Document.h"
 
-#include "GameLut.h"
 #include "PreviewRenderer.h"
 #include "ResetAdjustmentsCommand.h"
 #include "SetAdjustmentCommand.h"
@@ -10,6 +9,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
+#include "lut/pipeline/SmashCompensation.h"
 #include "lut/roundtrip/Embed.h"
 
 #include <QFileInfo>

@@ -73,7 +73,8 @@ public:
     // ---- saving ---------------------------------------------------------------------------
     // Writes the effective LUT with a registered format ("" = by extension); throws lut::Error.
     // Export never changes the document's path or modified state. smashCompensate writes the
-    // game-compensated 16^3 LUT (GameLut.h) instead of the LUT as edited.
+    // game-compensated 16^3 LUT (lut::smashGameLut,
+    // lut/pipeline/SmashCompensation.h) instead of the LUT as edited.
     Diagnostics exportLut(const QString& path, const QString& formatName = {},
                           const FormatOptions& options = {}, bool smashCompensate = false) const;
     // Save: export to path (format by extension), then path becomes the document's file and the

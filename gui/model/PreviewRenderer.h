@@ -1,7 +1,7 @@
 #pragma once
 // The editor's preview: the same lutlib pipeline `lutkit preview` runs (lut/pipeline/Pipeline.h),
-// as plain C++ so the document model and tests can use it without widgets. The worker thread in
-// the app calls render(); everything here is re-entrant (no shared mutable state).
+// as plain C++ so the document model and tests can use it without widgets. The preview worker
+// (PreviewController) calls these; everything here is re-entrant (no shared mutable state).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/formats/ImageIO.h"
@@ -17,7 +17,7 @@ struct PreviewOptions {
     Preset preset = Preset::Smash;
     bool bloom = true;
     bool lutEnabled = true; // off: the pipeline runs with a neutral LUT
-    bool brighten = true;   // smash-grade's brighten pass (only where the pipeline offers it)
+    bool brighten = true;   // smash-grade's brighten step (the smash preset has one, no other)
     Interpolation interpolation = Interpolation::Trilinear;
     bool operator==(const PreviewOptions&) const = default;
 };
@@ -29,18 +29,16 @@ struct PreviewOptions {
 Image prepareScene(const Image& stored, bool storedIsLinear, bool fromScreenshot = false,
                    int nthreads = 0);
 
+// Whether the preview with these options has a brighten step the user can switch: only the
+// smash preset has one. Brighten off grades with lut::smashWithoutBrighten(lut), which shows the
+// LUT with no brighten step, exactly for trilinear and tetrahedral interpolation and within
+// lut::smashWithoutBrightenError (< 2e-5) for nearest (lut/pipeline/SmashCompensation.h).
+bool brightenSwitchable(const PreviewOptions& options);
+// Whether the preview applies the brighten step: the smash preset with brighten on.
+bool brightenApplied(const PreviewOptions& options);
+
 // What a preview settings choice means for the pipeline.
 PipelineSettings pipelineSettings(const PreviewOptions& options, std::shared_ptr<const Lut3D> lut);
-// Whether the pipeline's smash-grade stage has a switch for its brighten pass.
-bool brightenToggleAvailable();
-// Whether "brighten off" can be previewed: with the stage's switch, or else by grading with
-// withoutBrighten(lut), which is exact for trilinear and tetrahedral interpolation (the brighten
-// inverse is affine in the input s, and both interpolations reproduce affine functions), not for
-// nearest.
-bool brightenToggleWorks(Interpolation method);
-// The LUT L' with ((L'(s) - s) * 0.99961 + s) * 1.3703 == L(s) at every lattice point, so the
-// Smash grading pass with L' shows L without its brighten step.
-Lut3D withoutBrighten(const Lut3D& lut);
 
 struct PreviewResult {
     Image image;               // display-encoded RGBA float, what `lutkit preview` writes
@@ -52,20 +50,20 @@ struct PreviewResult {
 PreviewResult renderPreview(const Image& scene, const PreviewOptions& options,
                             std::shared_ptr<const Lut3D> lut, int nthreads = 0);
 
-// The same preview in two parts, so a LUT edit re-runs only what the LUT affects:
+// The same preview in the pipeline's two parts (lut::PipelinePart), so a LUT edit re-runs only
+// what the LUT affects:
 //   renderBeforeLut  the stages before the first LUT stage (sanitize, bloom, vignette...: what
 //                    depends only on the image and the preset), run once and cached;
 //   renderFromLut    the LUT stage and everything after it (grading, brighten, display).
-// Running stages one after the other is bit-identical to the fused whole-pipeline run
-// (lut/pipeline/Stage.h), so renderFromLut(renderBeforeLut(x)) == renderPreview(x) (tested).
+// renderFromLut(renderBeforeLut(x)) == renderPreview(x) bit for bit (tested).
 Image renderBeforeLut(const Image& scene, const PreviewOptions& options, int nthreads = 0);
 PreviewResult renderFromLut(const Image& beforeLut, const PreviewOptions& options,
                             std::shared_ptr<const Lut3D> lut, int nthreads = 0);
-// Whether a before-LUT frame made with options `a` is valid for options `b`.
+// Whether a before-LUT frame made with options `a` is valid for options `b`
+// (lut::Pipeline::sameBeforeLut of the two pipelines).
 bool sameBeforeLut(const PreviewOptions& a, const PreviewOptions& b);
 
-// A box-filtered copy of `image` reduced by an integer factor (>= 1) in each direction: the
-// proxy the editor previews on while a slider is being dragged.
-Image downscale(const Image& image, int factor);
+// The "before" picture: `scene` with nothing but the display encoding (the `none` preset).
+Image renderBefore(const Image& scene, int nthreads = 0);
 
 } // namespace lut::gui

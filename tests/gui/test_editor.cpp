@@ -6,15 +6,17 @@
 #include "AdjustmentsPanel.h"
 #include "Document.h"
 #include "ExportDialog.h"
-#include "GameLut.h"
 #include "MainWindow.h"
+#include "PreviewController.h"
 #include "PreviewRenderer.h"
-#include "PreviewScheduler.h"
 #include "PreviewView.h"
+#include "WindowActions.h"
 
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/SmashCompensation.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
@@ -115,6 +117,56 @@ private slots:
         QCOMPARE(w.document()->imagePath(), samplePath("sample_scene.exr"));
         QVERIFY(w.document()->imageIsLinear()); // EXR: linear scene values
         QCOMPARE(w.document()->effectiveLut().size(), 33);
+    }
+
+    void brightenToggleShowsWhatThePreviewDoes() {
+        // Checked = the picture has the brighten step. Smash: switchable for every
+        // interpolation (nearest included); other presets have no brighten step.
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        QAction* brighten = w.windowActions()->brightenAction();
+        QComboBox* preset = w.windowActions()->presetBox();
+        QComboBox* interp = w.windowActions()->interpolationBox();
+        QVERIFY(brighten->isEnabled() && brighten->isChecked());
+
+        // As a user picks "nearest" in the toolbar and switches brighten off.
+        interp->setFocus();
+        while (interp->currentData().toInt() != int(Interpolation::Nearest))
+            QTest::keyClick(interp, Qt::Key_Down);
+        QCOMPARE(w.previewOptions().interpolation, Interpolation::Nearest);
+        QVERIFY(brighten->isEnabled());
+        brighten->trigger();
+        QVERIFY(!brighten->isChecked());
+        QVERIFY(!w.previewOptions().brighten);
+        w.waitForPreview();
+        PipelineSettings s;
+        s.interpolation = Interpolation::Nearest;
+        s.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(w.document()->effectiveLut()));
+        QVERIFY(w.currentFrame()->image.pixels() ==
+                Pipeline(s).run(*w.document()->sceneImage()).pixels());
+
+        // Pilot has no brighten step: disabled and unchecked, whatever the choice was.
+        preset->setFocus();
+        while (preset->currentData().toInt() != int(Preset::Pilot))
+            QTest::keyClick(preset, Qt::Key_Down);
+        QCOMPARE(w.previewOptions().preset, Preset::Pilot);
+        QVERIFY(!brighten->isEnabled());
+        QVERIFY(!brighten->isChecked());
+        // Back to Smash: the choice (off) is kept.
+        while (preset->currentData().toInt() != int(Preset::Smash))
+            QTest::keyClick(preset, Qt::Key_Up);
+        QVERIFY(brighten->isEnabled());
+        QVERIFY(!brighten->isChecked());
+        // Options set from outside (the command line) show in the widgets.
+        PreviewOptions o = w.previewOptions();
+        o.brighten = true;
+        o.bloom = false;
+        w.setPreviewOptions(o);
+        QVERIFY(brighten->isChecked());
+        QVERIFY(!w.windowActions()->bloomAction()->isChecked());
     }
 
     void exportDialogOffersEveryLayout() {
@@ -421,13 +473,16 @@ private slots:
         MainWindow w;
         w.setInteractiveErrors(false);
         w.show();
-        QVERIFY(w.openImageFile(path));
-        w.waitForPreview();
-        QSlider* slider = w.adjustmentsPanel()->slider(AdjustParam::Saturation);
         QElapsedTimer t;
+        t.start();
+        QVERIFY(w.openImageFile(path));
+        const double openMs = t.nsecsElapsed() / 1e6; // the UI thread is busy this long
+        w.waitForPreview();
+        const double openToFullMs = t.nsecsElapsed() / 1e6;
+        QSlider* slider = w.adjustmentsPanel()->slider(AdjustParam::Saturation);
         QList<double> full, proxy, fullLut, proxyLut, fullCpu, proxyCpu, firstFrame;
         double firstAt = -1;
-        connect(w.scheduler(), &PreviewScheduler::frameReady, this, [&] {
+        connect(w.preview(), &PreviewController::frameReady, this, [&] {
             if (firstAt < 0)
                 firstAt = t.nsecsElapsed() / 1e6;
         });
@@ -437,7 +492,7 @@ private slots:
             firstAt = -1;
             double cpu = processCpuMs();
             slider->setValue(slider->value() + 20); // a click step: proxy, then full resolution
-            w.scheduler()->waitForIdle();
+            w.preview()->waitForIdle();
             full << t.nsecsElapsed() / 1e6;
             firstFrame << firstAt;
             fullCpu << processCpuMs() - cpu;
@@ -448,7 +503,7 @@ private slots:
             t.restart();
             double cpu = processCpuMs();
             slider->setValue(slider->value() + 20);
-            w.scheduler()->waitForIdle();
+            w.preview()->waitForIdle();
             proxy << t.nsecsElapsed() / 1e6;
             proxyCpu << processCpuMs() - cpu;
             proxyLut << w.currentFrame()->milliseconds;
@@ -461,6 +516,9 @@ private slots:
                 s << QString::number(v, 'f', 1);
             return s.join(QStringLiteral(", "));
         };
+        qInfo(
+            "1920x1080 open image: UI thread busy %.1f ms (read, scene), full frame after %.1f ms",
+            openMs, openToFullMs);
         qInfo("1920x1080 first frame (every stage + 8-bit conversion): %.1f ms", firstAllStages);
         qInfo("1920x1080 click step -> first (proxy) frame: %s ms", qPrintable(fmt(firstFrame)));
         qInfo("1920x1080 click step -> full-resolution frame: %s ms (its LUT stages %s)",

@@ -3,7 +3,6 @@
 #include "GuiTestSupport.h"
 
 #include "Document.h"
-#include "GameLut.h"
 #include "PreviewRenderer.h"
 #include "RecentFiles.h"
 
@@ -11,6 +10,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/SmashCompensation.h"
 #include "lut/roundtrip/Embed.h"
 
 #include <QFile>
@@ -283,25 +283,29 @@ private slots:
         smash.brighten = true;
         const Image c = renderPreview(*doc.sceneImage(), smash, nullptr).image;
         QVERIFY(c.pixel(160, 150)[1] > a.pixel(160, 150)[1] + 0.05f); // about 2x in linear light
-        // withoutBrighten at the lattice: the brighten formula gives back the LUT.
-        const Lut3D l = Lut3D::identity(5);
-        const Lut3D w = withoutBrighten(l);
-        for (int i = 0; i < 5; ++i) {
-            const double s = i / 4.0;
-            QVERIFY(std::abs(((w.at(i, 0, 0).x - s) * 0.99961 + s) * 1.3703 - s) < 1e-6);
+        // Brighten off grades with smashWithoutBrighten(LUT): the same picture as the pipeline
+        // run with that LUT directly.
+        doc.openLut(samplePath("sample_grade.cube"));
+        smash.brighten = false;
+        smash.lutEnabled = true;
+        PipelineSettings direct;
+        direct.bloom = false;
+        direct.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(doc.effectiveLut()));
+        QVERIFY(renderPreview(*doc.sceneImage(), smash, doc.effectiveLutShared()).image.pixels() ==
+                Pipeline(direct).run(*doc.sceneImage()).pixels());
+        // Only the smash preset has a brighten step; it is switchable for every interpolation.
+        for (Interpolation m :
+             {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest}) {
+            smash.interpolation = m;
+            QVERIFY(brightenSwitchable(smash));
         }
-    }
-
-    void downscaleAveragesBlocks() {
-        Image img(4, 2);
-        for (int x = 0; x < 4; ++x)
-            for (int y = 0; y < 2; ++y)
-                img.pixel(x, y)[0] = float(x + 4 * y);
-        const Image d = downscale(img, 2);
-        QCOMPARE(d.width(), 2);
-        QCOMPARE(d.height(), 1);
-        QCOMPARE(d.pixel(0, 0)[0], (0 + 1 + 4 + 5) / 4.0f);
-        QCOMPARE(d.pixel(1, 0)[0], (2 + 3 + 6 + 7) / 4.0f);
+        QVERIFY(!brightenApplied(smash));
+        none.brighten = true;
+        QVERIFY(!brightenSwitchable(none));
+        QVERIFY(!brightenApplied(none));
+        // Brighten off with another preset changes nothing.
+        none.brighten = false;
+        QVERIFY(pipelineSettings(none, doc.effectiveLutShared()).lut == doc.effectiveLutShared());
     }
 
     void sliderMappingRoundTrips() {

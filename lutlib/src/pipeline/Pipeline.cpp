@@ -195,6 +195,35 @@ void Pipeline::setBloom(bool on) {
             s->setEnabled(false);
 }
 
+std::size_t Pipeline::firstLutStage() const {
+    for (std::size_t i = 0; i < m_stages.size(); ++i)
+        if (dynamic_cast<const detail::LutStage*>(m_stages[i].get()))
+            return i;
+    return m_stages.size();
+}
+
+bool Pipeline::sameBeforeLut(const Pipeline& other) const {
+    const std::size_t n = firstLutStage();
+    if (n != other.firstLutStage())
+        return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Stage& a = *m_stages[i];
+        const Stage& b = *other.m_stages[i];
+        if (std::string_view(a.name()) != b.name() || a.enabled() != b.enabled())
+            return false;
+        if (!a.enabled())
+            continue;
+        const auto& pa = a.params();
+        const auto& pb = b.params();
+        if (pa.size() != pb.size())
+            return false;
+        for (std::size_t k = 0; k < pa.size(); ++k)
+            if (pa[k].value != pb[k].value)
+                return false;
+    }
+    return true;
+}
+
 std::string PipelineReport::str() const {
     std::ostringstream os;
     char buf[160];
@@ -222,11 +251,15 @@ double msSince(Clock::time_point t0) {
 
 PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) {
     const auto tStart = Clock::now();
+    // The stages [first, last) of the part to run.
+    const std::size_t split = firstLutStage();
+    const std::size_t first = options.part == PipelinePart::FromLut ? split : 0;
+    const std::size_t last = options.part == PipelinePart::BeforeLut ? split : m_stages.size();
     PipelineReport report;
-    for (const auto& s : m_stages) {
+    for (std::size_t i = 0; i < m_stages.size(); ++i) {
         StageReport r;
-        r.name = s->name();
-        r.enabled = s->enabled();
+        r.name = m_stages[i]->name();
+        r.enabled = m_stages[i]->enabled() && i >= first && i < last;
         report.stages.push_back(r);
     }
     if (frame.empty())
@@ -269,7 +302,7 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
     Stage* grade = find("smash-grade");
     if (grade)
         detail::setSmashGradeFusedDisplay(*grade, false);
-    for (std::size_t i = 0; i < m_stages.size(); ++i) {
+    for (std::size_t i = first; i < last; ++i) {
         Stage& s = *m_stages[i];
         if (!s.enabled())
             continue;

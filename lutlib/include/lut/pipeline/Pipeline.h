@@ -33,6 +33,7 @@
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Stage.h"
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -61,16 +62,26 @@ struct PipelineSettings {
     std::vector<std::string> assignments;
 };
 
+// A pipeline in two parts around its LUT, so a LUT edit re-runs only what the LUT affects:
+//   BeforeLut  the stages before the first LUT stage (smash-grade or lut): sanitize, bloom,
+//              vignette... what depends only on the frame and the settings of those stages;
+//   FromLut    the first LUT stage and every stage after it (grading, display).
+// Running BeforeLut, then FromLut on its output, is bit-identical to running Whole: the parts
+// are the same stages run one after the other (lut/pipeline/Stage.h), and the one fusion that
+// is not bit-identical (sRGB display into smash-grade) happens inside FromLut as in Whole.
+enum class PipelinePart { Whole, BeforeLut, FromLut };
+
 struct RunOptions {
     int nthreads = 0;                  // 0 = all cores
     bool forceAll = false;             // run enabled stages even when they say they cannot change
     unsigned long long frameIndex = 0; // for film grain
+    PipelinePart part = PipelinePart::Whole;
 };
 
 struct StageReport {
     std::string name;
     bool ran = false;
-    bool enabled = true;
+    bool enabled = true;       // switched on and in the part that ran (RunOptions::part)
     bool fused = false;        // ran inside the previous stage's loop (display after smash-grade)
     double milliseconds = 0.0; // wall time of prepare + this stage's share of the fused passes
 };
@@ -102,6 +113,14 @@ public:
     // The grading LUT for smash-grade and lut (copied; sampled with `method`). Null = neutral.
     void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method = Interpolation::Trilinear);
     void setBloom(bool on); // every *bloom stage
+
+    // Index in stages() of the first LUT stage (smash-grade, lut), where PipelinePart::FromLut
+    // starts; stages().size() if there is none.
+    std::size_t firstLutStage() const;
+    // Whether this pipeline's BeforeLut part makes the same frame as `other`'s from the same
+    // input: the same stages, switched on or off alike, with the same parameter values. A frame
+    // cached from one can then stand in for the other's BeforeLut run.
+    bool sameBeforeLut(const Pipeline& other) const;
 
     // Runs the enabled stages in place on `frame`.
     PipelineReport run(const ImageView& frame, const RunOptions& options = {});

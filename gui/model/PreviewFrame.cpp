@@ -1,0 +1,58 @@
+#include "PreviewFrame.h"
+
+#include "lut/Parallel.h"
+#include "lut/Quantize.h"
+
+#include <QElapsedTimer>
+
+namespace lut::gui {
+
+QImage toDisplayImage(const Image& image) {
+    QImage out(image.width(), image.height(), QImage::Format_RGBX8888);
+    parallelFor(image.height(), 0, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            const float* src = image.pixel(0, y);
+            uchar* dst = out.scanLine(y);
+            for (int x = 0; x < image.width(); ++x) {
+                dst[4 * x + 0] = toUnorm8(src[4 * x + 0]);
+                dst[4 * x + 1] = toUnorm8(src[4 * x + 1]);
+                dst[4 * x + 2] = toUnorm8(src[4 * x + 2]);
+                dst[4 * x + 3] = 255;
+            }
+        }
+    });
+    return out;
+}
+
+std::shared_ptr<const PreviewFrame> renderFrame(const PreviewJob& job) {
+    auto frame = std::make_shared<PreviewFrame>();
+    frame->proxyFactor = job.proxyFactor;
+    frame->serial = job.serial;
+    frame->scene = job.scene;
+    frame->lut = job.lut;
+    frame->options = job.options;
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        if (job.scene && !job.scene->empty()) {
+            frame->reusedBeforeLut = job.beforeLut != nullptr;
+            frame->beforeLut =
+                job.beforeLut
+                    ? job.beforeLut
+                    : std::make_shared<const Image>(renderBeforeLut(*job.scene, job.options));
+            PreviewResult r = renderFromLut(*frame->beforeLut, job.options, job.lut);
+            frame->image = std::move(r.image);
+            frame->milliseconds = r.milliseconds;
+            frame->report = QString::fromStdString(r.report);
+            frame->display = toDisplayImage(frame->image);
+        }
+    } catch (const std::exception& e) {
+        frame->error = QString::fromUtf8(e.what());
+        frame->image = Image();
+        frame->display = QImage();
+    }
+    frame->totalMilliseconds = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+    return frame;
+}
+
+} // namespace lut::gui

@@ -1,0 +1,43 @@
+#include "lut/pipeline/SmashCompensation.h"
+
+#include "lut/interp/Sampler.h"
+#include "lut/pipeline/SmashGrading.h"
+
+#include <algorithm>
+
+namespace lut {
+
+Lut3D smashGameLut(const Lut3D& edited, Interpolation editInterpolation) {
+    const int n = kSmashLutSize;
+    const auto sampler = makeSampler(edited, editInterpolation);
+    const Lut3D lattice = Lut3D::identity(n);
+    Lut3D target(n);
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 e = sampler->sample(lattice.at(r, g, b));
+                target.at(r, g, b) =
+                    glm::vec3(smashDecode(e.x), smashDecode(e.y), smashDecode(e.z));
+            }
+    target.setTitle(edited.title());
+    return smashCompensateLut(target);
+}
+
+Lut3D smashWithoutBrighten(const Lut3D& lut) {
+    Lut3D out = lut;
+    for (int b = 0; b < lut.size(); ++b)
+        for (int g = 0; g < lut.size(); ++g)
+            for (int r = 0; r < lut.size(); ++r)
+                out.at(r, g, b) = smashBrightenInverse(lut.at(r, g, b), lut.latticeInput(r, g, b));
+    return out;
+}
+
+double smashWithoutBrightenError(const Lut3D& lut, Interpolation method) {
+    if (method != Interpolation::Nearest || lut.size() < 2)
+        return 0.0;
+    const glm::vec3 span = lut.domainMax() - lut.domainMin();
+    const double step = std::max({span.x, span.y, span.z}) / (lut.size() - 1);
+    return double(kSmashBrightenScale) * (1.0 - double(kSmashBrightenMix)) * step / 2;
+}
+
+} // namespace lut

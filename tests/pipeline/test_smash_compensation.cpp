@@ -1,0 +1,159 @@
+// The LUTs that cancel Smash's brighten step (lut/pipeline/SmashCompensation.h) against the
+// game's shader evaluated in float64 (PipelineTestUtil.h, from docs/specs/smash-pipeline.md).
+#include "PipelineTestUtil.h"
+
+#include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/SmashCompensation.h"
+
+#include <gtest/gtest.h>
+
+using namespace lut;
+using namespace lut::test;
+
+namespace {
+
+// Tetrahedral interpolation of a LUT over [0,1] in double (clamp to edge): the cube cell is cut
+// into six tetrahedra along its main diagonal, chosen by the order of the fractions.
+void refTetrahedral(const Lut3D& lut, const double in[3], double out[3]) {
+    const int n = lut.size();
+    int i[3];
+    double f[3];
+    for (int c = 0; c < 3; ++c) {
+        const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
+        i[c] = std::min(static_cast<int>(std::floor(t)), n - 2);
+        f[c] = t - i[c];
+    }
+    // Walk from corner 000 to 111 one axis at a time, largest fraction first.
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int a, int b) { return f[a] > f[b]; });
+    int corner[3] = {i[0], i[1], i[2]};
+    auto entry = [&](int k) {
+        const glm::vec3 v = lut.at(corner[0], corner[1], corner[2]);
+        return static_cast<double>(v[k]);
+    };
+    double acc[3], prev[3];
+    for (int k = 0; k < 3; ++k)
+        acc[k] = prev[k] = entry(k);
+    for (int step = 0; step < 3; ++step) {
+        const int axis = order[step];
+        const double w = f[axis];
+        corner[axis] += 1;
+        for (int k = 0; k < 3; ++k) {
+            const double v = entry(k);
+            acc[k] += w * (v - prev[k]);
+            prev[k] = v;
+        }
+    }
+    for (int k = 0; k < 3; ++k)
+        out[k] = acc[k];
+}
+
+// Nearest lattice entry, in double.
+void refNearest(const Lut3D& lut, const double in[3], double out[3]) {
+    const int n = lut.size();
+    int i[3];
+    for (int c = 0; c < 3; ++c)
+        i[c] = static_cast<int>(std::lround(std::clamp(in[c], 0.0, 1.0) * (n - 1)));
+    for (int c = 0; c < 3; ++c)
+        out[c] = lut.at(i[0], i[1], i[2])[c];
+}
+
+double refSrgbDecode(double e) {
+    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+
+void refInterp(Interpolation m, const Lut3D& lut, const double in[3], double out[3]) {
+    if (m == Interpolation::Tetrahedral)
+        refTetrahedral(lut, in, out);
+    else if (m == Interpolation::Nearest)
+        refNearest(lut, in, out);
+    else
+        refTrilinear(lut, in, out);
+}
+
+} // namespace
+
+TEST(SmashCompensation, GameLutMakesTheGameShowTheEdit) {
+    // A 33^3 edit: its lattice does not hold the points i/15, so the edit is interpolated there.
+    const Lut3D edited = makeWarmLut(33, 2.0);
+    for (Interpolation m : {Interpolation::Trilinear, Interpolation::Tetrahedral}) {
+        const Lut3D game = smashGameLut(edited, m);
+        ASSERT_EQ(game.size(), 16);
+        double worst = 0;
+        for (int b = 0; b < 16; ++b)
+            for (int g = 0; g < 16; ++g)
+                for (int r = 0; r < 16; ++r) {
+                    const double s[3] = {r / 15.0, g / 15.0, b / 15.0};
+                    double e[3], x[3], shown[3];
+                    refInterp(m, edited, s, e);
+                    for (int c = 0; c < 3; ++c)
+                        x[c] = std::pow(s[c], 2.2); // the scene colour the game encodes to s
+                    refSmashGrade(game, x, 1.0, shown);
+                    for (int c = 0; c < 3; ++c)
+                        worst = std::max(worst, relErr(shown[c], std::pow(e[c], 2.2)));
+                }
+        EXPECT_LT(worst, 1e-5) << toString(m);
+    }
+}
+
+TEST(SmashCompensation, GameLutOfTheNeutralEditUndoesTheBrighten) {
+    // Neutral edit: the game must show the scene unchanged, L = (s / 1.3703 - s) / 0.99961 + s.
+    const Lut3D game = smashGameLut(Lut3D::identity(17));
+    double worst = 0;
+    for (int b = 0; b < 16; ++b)
+        for (int g = 0; g < 16; ++g)
+            for (int r = 0; r < 16; ++r) {
+                const int idx[3] = {r, g, b};
+                for (int c = 0; c < 3; ++c) {
+                    const double s = idx[c] / 15.0;
+                    const double want = (s / 1.3703 - s) / 0.99961 + s;
+                    worst = std::max(worst, std::abs(double(game.at(r, g, b)[c]) - want));
+                }
+            }
+    EXPECT_LT(worst, 1e-6);
+}
+
+TEST(SmashCompensation, WithoutBrightenShowsTheLutAloneBetweenLatticePoints) {
+    // Scene values in [0,1] at random (not lattice) points; the smash chain without bloom grades
+    // with smashWithoutBrighten(L). Undoing the sRGB display and the 2.2 decode of the output (in
+    // double) must give back L(s), s = x^0.454545, interpolated as the pipeline does.
+    const Lut3D lut = makeWarmLut(17, 1.5);
+    Image scene(61, 7);
+    Rng rng(42);
+    for (float& v : scene.pixels())
+        v = static_cast<float>(0.002 + 0.998 * rng.uniform());
+    for (int y = 0; y < scene.height(); ++y)
+        for (int x = 0; x < scene.width(); ++x)
+            scene.pixel(x, y)[3] = 1.0f;
+    for (Interpolation m :
+         {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest}) {
+        PipelineSettings settings;
+        settings.preset = Preset::Smash;
+        settings.bloom = false;
+        settings.interpolation = m;
+        settings.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(lut));
+        const Image got = Pipeline(settings).run(scene);
+        double worst = 0;
+        for (int y = 0; y < scene.height(); ++y)
+            for (int x = 0; x < scene.width(); ++x) {
+                double s[3], l[3];
+                for (int c = 0; c < 3; ++c)
+                    s[c] = std::pow(double(scene.pixel(x, y)[c]), 0.454545);
+                refInterp(m, lut, s, l);
+                for (int c = 0; c < 3; ++c) {
+                    const double shown =
+                        std::pow(refSrgbDecode(double(got.pixel(x, y)[c])), 1 / 2.2);
+                    worst = std::max(worst, std::abs(shown - l[c]));
+                }
+            }
+        const double bound = smashWithoutBrightenError(lut, m);
+        EXPECT_LT(worst, bound + 2e-6) << toString(m);
+        if (m == Interpolation::Nearest) {
+            // The bound is what nearest really shows, not a loose guess: 1.3703 * 0.00039 / 32.
+            EXPECT_NEAR(bound, 1.3703 * (1 - 0.99961) / 32, 1e-9);
+            EXPECT_GT(worst, bound / 2);
+        } else {
+            EXPECT_EQ(bound, 0.0);
+        }
+    }
+}
