@@ -123,7 +123,18 @@ void Canvas::blend(int x, int y, glm::vec3 colour, float coverage) {
     p[3] = 1.0f;
 }
 
-void Canvas::line(double x0, double y0, double x1, double y1, glm::vec3 colour, double thickness) {
+void Canvas::add(int x, int y, glm::vec3 colour, float coverage) {
+    if (x < 0 || y < 0 || x >= width() || y >= height() || !(coverage > 0.0f))
+        return;
+    const float a = std::min(1.0f, coverage);
+    float* p = m_image.pixel(x, y);
+    for (int c = 0; c < 3; ++c)
+        p[c] = std::min(1.0f, p[c] + a * colour[c]);
+    p[3] = 1.0f;
+}
+
+void Canvas::line(double x0, double y0, double x1, double y1, glm::vec3 colour, double thickness,
+                  bool additive) {
     if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1))
         return;
     const double r = 0.5 * thickness;
@@ -134,7 +145,60 @@ void Canvas::line(double x0, double y0, double x1, double y1, glm::vec3 colour, 
     for (int y = std::max(0, by0); y <= std::min(height() - 1, by1); ++y)
         for (int x = std::max(0, bx0); x <= std::min(width() - 1, bx1); ++x) {
             const double d = segmentDistance(x, y, x0, y0, x1, y1);
-            blend(x, y, colour, static_cast<float>(std::clamp(r + 0.5 - d, 0.0, 1.0)));
+            const float coverage = static_cast<float>(std::clamp(r + 0.5 - d, 0.0, 1.0));
+            if (additive)
+                add(x, y, colour, coverage);
+            else
+                blend(x, y, colour, coverage);
+        }
+}
+
+void Canvas::polyline(const std::vector<glm::dvec2>& points, glm::vec3 colour, double thickness,
+                      bool additive) {
+    if (points.size() < 2)
+        return;
+    const double r = 0.5 * thickness;
+    double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    for (const auto& p : points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            return;
+        minX = std::min(minX, p.x);
+        minY = std::min(minY, p.y);
+        maxX = std::max(maxX, p.x);
+        maxY = std::max(maxY, p.y);
+    }
+    const int x0 = std::max(0, static_cast<int>(std::floor(minX - r - 1)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(minY - r - 1)));
+    const int x1 = std::min(width() - 1, static_cast<int>(std::ceil(maxX + r + 1)));
+    const int y1 = std::min(height() - 1, static_cast<int>(std::ceil(maxY + r + 1)));
+    if (x1 < x0 || y1 < y0)
+        return;
+    const int w = x1 - x0 + 1;
+    std::vector<float> coverage(static_cast<std::size_t>(w) * static_cast<std::size_t>(y1 - y0 + 1),
+                                0.0f);
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const glm::dvec2 a = points[i - 1], b = points[i];
+        const int sx0 = std::max(x0, static_cast<int>(std::floor(std::min(a.x, b.x) - r - 1)));
+        const int sx1 = std::min(x1, static_cast<int>(std::ceil(std::max(a.x, b.x) + r + 1)));
+        const int sy0 = std::max(y0, static_cast<int>(std::floor(std::min(a.y, b.y) - r - 1)));
+        const int sy1 = std::min(y1, static_cast<int>(std::ceil(std::max(a.y, b.y) + r + 1)));
+        for (int y = sy0; y <= sy1; ++y)
+            for (int x = sx0; x <= sx1; ++x) {
+                const double d = segmentDistance(x, y, a.x, a.y, b.x, b.y);
+                float& c = coverage[static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(w) +
+                                    static_cast<std::size_t>(x - x0)];
+                c = std::max(c, static_cast<float>(std::clamp(r + 0.5 - d, 0.0, 1.0)));
+            }
+    }
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const float c =
+                coverage[static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(w) +
+                         static_cast<std::size_t>(x - x0)];
+            if (additive)
+                add(x, y, colour, c);
+            else
+                blend(x, y, colour, c);
         }
 }
 

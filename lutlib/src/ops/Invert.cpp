@@ -78,11 +78,11 @@ public:
         const glm::dvec3 nearest = gridStart(y);
         if (attempt(nearest, false))
             return best;
+        // No start reached the target: what is left is the least-squares answer (the closest A
+        // gets). A damped pass from the best point polishes it where the undamped steps stalled.
         usedLeastSquares = true;
-        const glm::dvec3 from = best.x;
-        if (attempt(from, true) || best.err2 <= tol2)
-            return best;
-        attempt(nearest, true);
+        if (best.err2 > tol2)
+            attempt(best.x, true);
         return best;
     }
 
@@ -115,50 +115,54 @@ private:
         return m_gridIn[best];
     }
 
-    // Newton steps (damped = false; Levenberg-Marquardt where the Jacobian is singular) or
-    // Levenberg-Marquardt throughout (damped = true), each with a backtracking line search on
-    // |A(x) - y|^2 and x projected onto the domain.
+    // Gauss-Newton on |A(x) - y|^2 with x kept in the domain: channels at a bound whose descent
+    // direction points out of the domain are held there (active set) and the step is solved for
+    // the others, so a target outside A's gamut converges to its closest reachable point as
+    // quickly as a reachable one converges to its preimage. Where the Jacobian is invertible and
+    // nothing is held, the step is Newton's (damped = false starts undamped); a step that does
+    // not lower the residual after backtracking raises the Levenberg-Marquardt damping.
     Sol descend(glm::dvec3 x0, glm::dvec3 y, bool damped) const {
         Sol s = at(clampX(x0), y);
-        double lambda = 1e-3;
-        const int iterations = damped ? 3 * m_o.maxIterations : m_o.maxIterations;
-        for (int it = 0; it < iterations; ++it) {
+        double lambda = damped ? 1e-3 : 0.0;
+        for (int it = 0; it < m_o.maxIterations; ++it) {
             if (maxAbs(s.fx - y) <= 0.01 * m_o.tolerance)
                 break;
             glm::dmat3 j;
             m_f(s.x, &j);
             const glm::dvec3 r = y - s.fx;
-            glm::dvec3 delta;
-            const double det = glm::determinant(j);
-            if (!damped && std::fabs(det) > 1e-12) {
-                delta = glm::inverse(j) * r;
-            } else {
-                const glm::dmat3 jt = glm::transpose(j);
-                const glm::dmat3 jtj = jt * j;
-                const double trace = jtj[0][0] + jtj[1][1] + jtj[2][2];
-                const double mu = lambda * std::max(trace / 3.0, 1e-12);
-                const glm::dmat3 m = jtj + glm::dmat3(mu);
-                const glm::dvec3 g = jt * r;
-                delta = std::fabs(glm::determinant(m)) > 0.0 ? glm::inverse(m) * g : g;
-            }
+            const glm::dvec3 g = glm::transpose(j) * r; // descent direction of |r|^2 / 2
+            bool held[3];
+            for (int c = 0; c < 3; ++c)
+                held[c] = (s.x[c] <= m_lo[c] && g[c] < 0.0) || (s.x[c] >= m_hi[c] && g[c] > 0.0);
+            for (int c = 0; c < 3; ++c)
+                if (held[c])
+                    j[c] = glm::dvec3(0.0);
+            glm::dmat3 jtj = glm::transpose(j) * j;
+            const double trace = jtj[0][0] + jtj[1][1] + jtj[2][2];
+            if (!(trace > 0.0))
+                break; // A is flat here in every free direction: a stationary point
+            const double mu = std::max(lambda, 1e-12) * trace / 3.0;
+            for (int c = 0; c < 3; ++c)
+                jtj[c][c] += held[c] ? 1.0 : mu;
+            const glm::dvec3 gf = glm::transpose(j) * r;
+            const glm::dvec3 delta = glm::inverse(jtj) * gf;
             bool accepted = false;
             double step = 1.0;
-            for (int k = 0; k < 30 && !accepted; ++k, step *= 0.5) {
+            for (int k = 0; k < 12 && !accepted; ++k, step *= 0.5) {
                 const Sol n = at(clampX(s.x + step * delta), y);
                 if (n.err2 < s.err2) {
+                    accepted = n.err2 < s.err2 * (1.0 - 1e-12) || maxAbs(n.x - s.x) > 1e-12;
                     s = n;
-                    accepted = true;
+                    if (!accepted)
+                        return s; // no measurable progress: converged as far as it goes
                 }
             }
-            if (accepted) {
-                lambda = std::max(lambda / 3.0, 1e-9);
-            } else if (lambda < 1e8) {
-                lambda *= 10.0; // more gradient-like, shorter steps
-                if (!damped)
-                    damped = true;
-            } else {
+            if (accepted)
+                lambda = lambda / 4.0;
+            else if (lambda < 1e6)
+                lambda = std::max(lambda * 10.0, 1e-3);
+            else
                 break;
-            }
         }
         return s;
     }

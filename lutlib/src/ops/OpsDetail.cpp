@@ -6,15 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <numeric>
 
 namespace lut::detail {
-
-float sanitizeValue(float v) {
-    if (std::isnan(v))
-        return 0.0f;
-    const float m = static_cast<float>(kOpsMaxValue);
-    return std::clamp(v, -m, m);
-}
 
 Lut3D sanitizedCopy(const Lut3D& lut, std::size_t& replaced) {
     Lut3D out = lut;
@@ -69,7 +63,16 @@ glm::dvec3 TetraEval::operator()(glm::dvec3 in, glm::dmat3* jacobian) const {
 }
 
 int probeCount(int latticeSize) {
-    return std::clamp(2 * (latticeSize - 1) + 1, 9, 129);
+    const int full = 2 * (latticeSize - 1) + 1;
+    if (full <= 129)
+        return std::max(full, 9);
+    // Too many to hit every cell centre: use a grid whose spacing shares no factor with the
+    // lattice's, so the probes fall at every kind of position inside the cells instead of on
+    // the lattice points (where the error is 0 and would be reported as such).
+    for (int intervals = 127; intervals > 64; --intervals)
+        if (std::gcd(intervals, latticeSize - 1) == 1)
+            return intervals + 1;
+    return 128;
 }
 
 ErrorStats probeError(glm::vec3 lo, glm::vec3 hi, int probes, int nthreads, const ProbeFn& fn) {

@@ -17,7 +17,12 @@ namespace lut::detail {
 constexpr double kOpsMaxValue = 65504.0;
 
 // NaN -> 0, +-Inf and |v| > kOpsMaxValue -> +-kOpsMaxValue.
-float sanitizeValue(float v);
+inline float sanitizeValue(float v) {
+    if (v != v)
+        return 0.0f;
+    constexpr float m = static_cast<float>(kOpsMaxValue);
+    return v < -m ? -m : v > m ? m : v;
+}
 
 // A copy of `lut` with every entry sanitized; `replaced` counts the entries that changed.
 Lut3D sanitizedCopy(const Lut3D& lut, std::size_t& replaced);
@@ -43,7 +48,8 @@ private:
 
 // Probe points for measuring an operation's error: `probes` points per axis spanning [lo, hi]
 // (both ends included). A grid of 2(N-1)+1 points per axis hits every lattice point and every cell
-// centre of an N lattice, where interpolation errors peak.
+// centre of an N lattice, where interpolation errors peak; above 129 points per axis a grid of
+// about 128 whose spacing is coprime with the lattice's, so probes sample the cells' insides.
 int probeCount(int latticeSize);
 
 // Runs compare(input) -> (exact, approximate) over a probes^3 grid on up to nthreads threads and

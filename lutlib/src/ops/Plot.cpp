@@ -76,18 +76,15 @@ void drawCurves(detail::Canvas& cv, const Sampler& s, const Lut3D& lut, PlotLayo
     // The identity, dashed.
     for (int k = 0; k < 20; k += 2)
         cv.line(px(k / 20.0), py(k / 20.0), px((k + 1) / 20.0), py((k + 1) / 20.0), kDim, 1.0);
-    for (int c = 0; c < 3; ++c)
-        for (int i = 1; i < kSamples; ++i) {
-            const double t0 = static_cast<double>(i - 1) / (kSamples - 1);
-            const double t1 = static_cast<double>(i) / (kSamples - 1);
-            cv.line(px(t0),
-                    py(std::clamp<double>(out[static_cast<std::size_t>(i - 1)][c], layout.curveMin,
-                                          layout.curveMax)),
-                    px(t1),
-                    py(std::clamp<double>(out[static_cast<std::size_t>(i)][c], layout.curveMin,
-                                          layout.curveMax)),
-                    kChannel[c], 2.0);
-        }
+    // Added, so where curves coincide they mix: all three on top of each other draw white.
+    for (int c = 0; c < 3; ++c) {
+        std::vector<glm::dvec2> pts;
+        for (int i = 0; i < kSamples; ++i)
+            pts.emplace_back(px(static_cast<double>(i) / (kSamples - 1)),
+                             py(std::clamp<double>(out[static_cast<std::size_t>(i)][c],
+                                                   layout.curveMin, layout.curveMax)));
+        cv.polyline(pts, kChannel[c], 2.0, true);
+    }
     cv.frame(r.x - 1, r.y - 1, r.width + 2, r.height + 2, kDim);
     cv.text(r.x, r.y - 24, "NEUTRAL AXIS: OUT VS IN", kInk);
     // Ticks: inputs under the panel, outputs on the left.
@@ -140,7 +137,7 @@ void drawLattice(detail::Canvas& cv, const Sampler& s, const Lut3D& lut, int poi
     cv.rect(r.x, r.y, r.width, r.height, kPanelBg);
     cv.frame(r.x - 1, r.y - 1, r.width + 2, r.height + 2, kDim);
     cv.text(r.x, r.y - 24, "LATTICE AT ITS OUTPUTS", kInk);
-    constexpr double kAzimuth = 20.0 * std::numbers::pi / 180.0;
+    constexpr double kAzimuth = 30.0 * std::numbers::pi / 180.0;
     constexpr double kElevation = 25.0 * std::numbers::pi / 180.0;
     const glm::dvec3 up = glm::dvec3(1, 1, 1) / std::sqrt(3.0);
     const glm::dvec3 e1 = glm::dvec3(1, -1, 0) / std::sqrt(2.0);
@@ -149,7 +146,7 @@ void drawLattice(detail::Canvas& cv, const Sampler& s, const Lut3D& lut, int poi
     const glm::dvec3 front = -std::sin(kAzimuth) * e1 + std::cos(kAzimuth) * e2;
     const glm::dvec3 toViewer = std::cos(kElevation) * front + std::sin(kElevation) * up;
     const glm::dvec3 screenUp = -std::sin(kElevation) * front + std::cos(kElevation) * up;
-    const double scale = 0.36 * r.width;
+    const double scale = 0.44 * r.width;
     const double cx = r.x + 0.5 * r.width, cy = r.y + 0.5 * r.height;
     auto project = [&](glm::dvec3 p) {
         const glm::dvec3 q = p - 0.5;

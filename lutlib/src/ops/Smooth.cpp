@@ -16,44 +16,68 @@ namespace {
 // One pass of the kernel along axis `axis` (0 = red, 1 = green, 2 = blue) of an n^3 grid of
 // deviations. Past an edge the deviation is extended by point reflection about the edge entry
 // (d(-k) = 2 d(0) - d(k)), which keeps linear trends, so nothing is pulled towards the middle.
+// Works on slabs of whole red rows (contiguous in memory) so the strided axes stay cache-friendly.
 void blurAxis(std::vector<glm::dvec3>& d, int n, int axis, const std::vector<double>& kernel,
               int nthreads) {
     const int radius = static_cast<int>(kernel.size()) - 1;
-    const std::size_t stride = axis == 0   ? 1
-                               : axis == 1 ? static_cast<std::size_t>(n)
-                                           : static_cast<std::size_t>(n) * n;
-    std::vector<glm::dvec3> out(d.size());
-    // Lines along the axis are indexed by the other two coordinates (u, v).
+    const std::size_t nn = static_cast<std::size_t>(n);
+    // Element (i along the axis, u along the row, v the remaining axis) is at
+    // v * sv + i * si + u * su.
+    const std::size_t si = axis == 0 ? 1 : axis == 1 ? nn : nn * nn;
+    const std::size_t su = axis == 0 ? nn : 1;
+    const std::size_t sv = axis == 2 ? nn : nn * nn;
     parallelFor(n, n < 17 ? 1 : nthreads, [&](int v0, int v1) {
-        std::vector<glm::dvec3> line(static_cast<std::size_t>(n));
-        for (int v = v0; v < v1; ++v)
-            for (int u = 0; u < n; ++u) {
-                std::size_t base;
-                if (axis == 0)
-                    base = static_cast<std::size_t>(n) * (u + static_cast<std::size_t>(n) * v);
-                else if (axis == 1)
-                    base = u + static_cast<std::size_t>(n) * n * v;
+        std::vector<glm::dvec3> slab(nn * nn), out(nn * nn);
+        // Copies between d and a slab in d's memory order.
+        auto transfer = [&](std::size_t base, std::vector<glm::dvec3>& s, bool toSlab) {
+            auto one = [&](std::size_t i, std::size_t u) {
+                glm::dvec3& x = d[base + i * si + u * su];
+                if (toSlab)
+                    s[i * nn + u] = x;
                 else
-                    base = u + static_cast<std::size_t>(n) * v;
-                for (int i = 0; i < n; ++i)
-                    line[static_cast<std::size_t>(i)] = d[base + stride * i];
-                auto at = [&](int i) {
-                    if (i < 0)
-                        return 2.0 * line[0] - line[static_cast<std::size_t>(std::min(-i, n - 1))];
-                    if (i > n - 1)
-                        return 2.0 * line[static_cast<std::size_t>(n - 1)] -
-                               line[static_cast<std::size_t>(std::max(2 * (n - 1) - i, 0))];
-                    return line[static_cast<std::size_t>(i)];
-                };
-                for (int i = 0; i < n; ++i) {
-                    glm::dvec3 acc = kernel[0] * line[static_cast<std::size_t>(i)];
-                    for (int k = 1; k <= radius; ++k)
-                        acc += kernel[static_cast<std::size_t>(k)] * (at(i - k) + at(i + k));
-                    out[base + stride * i] = acc;
+                    x = s[i * nn + u];
+            };
+            if (si == 1) {
+                for (std::size_t u = 0; u < nn; ++u)
+                    for (std::size_t i = 0; i < nn; ++i)
+                        one(i, u);
+            } else {
+                for (std::size_t i = 0; i < nn; ++i)
+                    for (std::size_t u = 0; u < nn; ++u)
+                        one(i, u);
+            }
+        };
+        auto at = [&](int j, std::size_t u) {
+            auto row = [&](int k) { return slab[static_cast<std::size_t>(k) * nn + u]; };
+            if (j < 0)
+                return 2.0 * row(0) - row(std::min(-j, n - 1));
+            if (j > n - 1)
+                return 2.0 * row(n - 1) - row(std::max(2 * (n - 1) - j, 0));
+            return row(j);
+        };
+        for (int v = v0; v < v1; ++v) {
+            const std::size_t base = static_cast<std::size_t>(v) * sv;
+            transfer(base, slab, true);
+            for (int i = 0; i < n; ++i) {
+                glm::dvec3* acc = &out[static_cast<std::size_t>(i) * nn];
+                for (std::size_t u = 0; u < nn; ++u)
+                    acc[u] = kernel[0] * slab[static_cast<std::size_t>(i) * nn + u];
+                for (int k = 1; k <= radius; ++k) {
+                    const double w = kernel[static_cast<std::size_t>(k)];
+                    if (i - k >= 0 && i + k <= n - 1) {
+                        const glm::dvec3* lo = &slab[static_cast<std::size_t>(i - k) * nn];
+                        const glm::dvec3* hi = &slab[static_cast<std::size_t>(i + k) * nn];
+                        for (std::size_t u = 0; u < nn; ++u)
+                            acc[u] += w * (lo[u] + hi[u]);
+                    } else {
+                        for (std::size_t u = 0; u < nn; ++u)
+                            acc[u] += w * (at(i - k, u) + at(i + k, u));
+                    }
                 }
             }
+            transfer(base, out, false);
+        }
     });
-    d.swap(out);
 }
 
 } // namespace

@@ -10,7 +10,9 @@ namespace lut {
 struct ComposeOptions {
     int size = 0; // edge of the result's lattice; 0 = the larger of the two sizes
     Interpolation method = Interpolation::Tetrahedral;
-    int probes = 0;   // probe points per axis for the error; 0 = 2 (size - 1) + 1, 9..129
+    // Probe points per axis for the error; 0 = 2 (size - 1) + 1 (every cell centre) when that is
+    // at most 129, else about 128 placed off the lattice (spacing coprime with the lattice's).
+    int probes = 0;
     int nthreads = 0; // 0 = all cores
 };
 

@@ -57,8 +57,9 @@ struct InvertReport {
     std::size_t foldedCells = 0;
     double maxResidual = 0.0; // max |A(inverse entry) - target| over all points
     double meanResidual = 0.0;
-    // |inverse(A(x)) - x| on a probe grid over A's domain (3D: 2 (N - 1) + 1 points per axis,
-    // 9..129; 1D: 4 (N - 1) + 1 per channel): how close compose(A, inverse) is to the identity.
+    // |inverse(A(x)) - x| on a probe grid over A's domain (3D: the grid ComposeOptions::probes
+    // describes for A's size; 1D: 4 (N - 1) + 1 points per channel): how close
+    // compose(A, inverse) is to the identity.
     ErrorStats roundTrip;
     std::size_t sanitizedEntries = 0;
     double seconds = 0.0;

@@ -1,13 +1,15 @@
 #pragma once
 // A picture of a LUT that people can read at a glance (lutkit plot, the editor's LUT view):
 //  - left: the per-channel curves along the neutral axis (output R, G, B for input (t, t, t)),
-//    with the identity dashed, grid lines at quarters and labelled axes;
+//    drawn additively (where all three coincide the line is white, two make yellow, cyan or
+//    magenta), with the identity dashed, grid lines at quarters and labelled axes;
 //  - middle: three slices of the cube at blue = 0, 0.5 and 1 (red input to the right, green
 //    input upwards), each pixel the LUT's output there;
 //  - right: the lattice in 3D: a grid of lattice points drawn where the LUT sends them (at their
 //    output colour, coloured by it), inside the wireframe of the identity cube, seen from the
-//    side with the neutral axis upright (black at the bottom, white at the top) and tilted 25
-//    degrees towards the viewer, corners labelled (K R G B C M Y W). A straight isometric view
+//    side with the neutral axis upright (black at the bottom, white at the top), red to the
+//    right and cyan to the left, yellow and green in front, tilted 25 degrees towards the
+//    viewer, corners labelled (K R G B C M Y W). A straight isometric view
 //    along the cube's diagonal would hide the neutral axis, so the axonometric view turns it
 //    upright instead.
 // Labels use a built-in 5x7 bitmap font. Outputs are shown clamped to [0, 1]; the curve panel's

@@ -10,7 +10,7 @@ namespace lut {
 
 // sigma: the Gaussian's standard deviation in lattice steps, clamped to [0, 8]; <= 0 or NaN
 // returns the LUT unchanged (bit for bit, error 0). The kernel is truncated at 3 sigma.
-// error: |result - source| on a probe grid of 2 (N - 1) + 1 points per axis (both evaluated
+// error: |result - source| on the probe grid ComposeOptions::probes describes (both evaluated
 // tetrahedrally), i.e. how much the smoothing changed the LUT. NaN/Inf entries are sanitized as
 // in lut/ops/Compose.h.
 OpResult smooth(const Lut3D& lut, double sigma, int nthreads = 0);
