@@ -109,9 +109,9 @@ void writeCurve(std::string& out, const char* key, const Curve& c) {
 std::string formatAdjustmentList(const Adjustments& a) {
     const Adjustments d;
     std::string out = "# lutkit adjustment list 1\n";
-    writeScalar(out, "exposure", a.exposure, d.exposure);
     writeScalar(out, "temperature", a.temperature, d.temperature);
     writeScalar(out, "tint", a.tint, d.tint);
+    writeScalar(out, "exposure", a.exposure, d.exposure);
     writeScalar(out, "contrast", a.contrast, d.contrast);
     writeVector(out, "lift", a.lift, d.lift);
     writeScalar(out, "lift.master", a.liftMaster, d.liftMaster);
