@@ -56,10 +56,66 @@ double clampedGamma(double g) {
     return sanitizeParam(g, 0.01, 100.0, 1.0);
 }
 
+// HSV's hexcone hue (degrees), the largest channel and the chroma (max - min channel).
+struct HueChroma {
+    double hue = 0.0;
+    double max = 0.0;
+    double chroma = 0.0;
+};
+
+HueChroma hueChroma(glm::dvec3 e) {
+    const double mx = std::max({e.x, e.y, e.z});
+    const double c = mx - std::min({e.x, e.y, e.z});
+    HueChroma hc{0.0, mx, c};
+    if (!(c > 0.0))
+        return hc;
+    double h;
+    if (mx == e.x)
+        h = (e.y - e.z) / c;
+    else if (mx == e.y)
+        h = (e.z - e.x) / c + 2.0;
+    else
+        h = (e.x - e.y) / c + 4.0;
+    h *= 60.0;
+    hc.hue = h < 0.0 ? h + 360.0 : h;
+    return hc;
+}
+
+// The colour of hue `hue` (any value, wrapped) with largest channel mx and chroma c.
+glm::dvec3 fromHueChroma(double hue, double mx, double c) {
+    double h = std::fmod(hue, 360.0);
+    if (h < 0.0)
+        h += 360.0;
+    const double s = h / 60.0;
+    const int sector = std::min(5, static_cast<int>(s));
+    const double f = s - sector;
+    const double mn = mx - c, rise = mn + c * f, fall = mx - c * f;
+    switch (sector) {
+    case 0:
+        return {mx, rise, mn};
+    case 1:
+        return {fall, mx, mn};
+    case 2:
+        return {mn, mx, rise};
+    case 3:
+        return {mn, fall, mx};
+    case 4:
+        return {rise, mn, mx};
+    default:
+        return {mx, mn, fall};
+    }
+}
+
 } // namespace
 
 bool Adjustments::isNeutral() const {
-    return *this == Adjustments{};
+    Adjustments scalars = *this;
+    scalars.curveMaster = scalars.curveRed = scalars.curveGreen = scalars.curveBlue =
+        Curve(CurveKind::Tone);
+    scalars.hueVsHue = scalars.hueVsSat = scalars.hueVsLum = Curve(CurveKind::Hue);
+    return scalars == Adjustments{} && curveMaster.isNeutral() && curveRed.isNeutral() &&
+           curveGreen.isNeutral() && curveBlue.isNeutral() && hueVsHue.isNeutral() &&
+           hueVsSat.isNeutral() && hueVsLum.isNeutral();
 }
 
 glm::dvec3 whiteBalanceGains(double temperature, double tint) {
@@ -114,6 +170,61 @@ glm::dvec3 adjustSaturation(glm::dvec3 e, double saturation) {
     return sanitize(glm::dvec3(y) + s * (e - y));
 }
 
+glm::dvec3 adjustCurves(glm::dvec3 e, const Curve& master, const Curve& red, const Curve& green,
+                        const Curve& blue) {
+    e = sanitize(e);
+    const Curve* own[3] = {&red, &green, &blue};
+    const bool skipMaster = master.isNeutral();
+    for (int c = 0; c < 3; ++c) {
+        if (!skipMaster)
+            e[c] = sanitize(master(e[c]));
+        if (!own[c]->isNeutral())
+            e[c] = sanitize((*own[c])(e[c]));
+    }
+    return e;
+}
+
+glm::dvec3 adjustHueCurves(glm::dvec3 e, const Curve& hueVsHue, const Curve& hueVsSat,
+                           const Curve& hueVsLum) {
+    e = sanitize(e);
+    const HueChroma hc = hueChroma(e);
+    if (!(hc.chroma > 0.0))
+        return e; // a grey has no hue: hue curves leave it alone
+    const double shift = hueVsHue.isNeutral() ? 0.0 : hueVsHue(hc.hue);
+    if (shift != 0.0)
+        e = sanitize(fromHueChroma(hc.hue + shift, hc.max, hc.chroma));
+    const double sat = hueVsSat.isNeutral() ? 0.0 : hueVsSat(hc.hue);
+    if (sat != 0.0) {
+        const double y = dot3(e, kLuma);
+        e = sanitize(glm::dvec3(y) + std::max(0.0, 1.0 + sat) * (e - y));
+    }
+    const double lum = hueVsLum.isNeutral() ? 0.0 : hueVsLum(hc.hue);
+    if (lum != 0.0) {
+        const double w = hc.chroma / std::max(hc.max, hc.chroma);
+        e = sanitize(e * std::max(0.0, 1.0 + lum * w));
+    }
+    return e;
+}
+
+glm::dvec3 adjustStrength(glm::dvec3 input, glm::dvec3 e, double strength) {
+    const double s = sanitizeParam(strength, 0.0, 2.0, 1.0);
+    e = sanitize(e);
+    if (s == 1.0)
+        return e;
+    return sanitize((1.0 - s) * sanitize(input) + s * e);
+}
+
+glm::dvec3 colorWheelOffset(double hueDegrees, double amount) {
+    const double a = sanitizeParam(amount, -kAdjustMaxValue, kAdjustMaxValue, 0.0);
+    const double h = std::isfinite(hueDegrees) ? hueDegrees : 0.0;
+    if (a == 0.0)
+        return glm::dvec3(0.0);
+    const glm::dvec3 c = fromHueChroma(h, 1.0, 1.0); // the fully saturated colour of that hue
+    const glm::dvec3 d = c - dot3(c, kLuma);
+    const double m = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+    return d * (a / m);
+}
+
 glm::dvec3 adjustColor(glm::dvec3 e, const Adjustments& a) {
     e = sanitize(e);
     const double stops = sanitizeParam(a.exposure, -32.0, 32.0, 0.0);
@@ -122,6 +233,8 @@ glm::dvec3 adjustColor(glm::dvec3 e, const Adjustments& a) {
     e = adjustLiftGammaGain(e, glm::dvec3(a.liftMaster) + a.lift, a.gammaMaster * a.gamma,
                             a.gainMaster * a.gain);
     e = adjustSaturation(e, a.saturation);
+    e = adjustCurves(e, a.curveMaster, a.curveRed, a.curveGreen, a.curveBlue);
+    e = adjustHueCurves(e, a.hueVsHue, a.hueVsSat, a.hueVsLum);
     return e;
 }
 
@@ -135,9 +248,15 @@ void applyAdjustments(const Lut3D& base, const Adjustments& a, Lut3D& dst, int n
     auto& out = dst.entries();
     const int count = static_cast<int>(in.size());
     // Below a few thousand entries threads cost more than they save.
+    const int n = base.size();
+    const bool mixIdentity = sanitizeParam(a.strength, 0.0, 2.0, 1.0) != 1.0;
     parallelFor(count, count < 4096 ? 1 : nthreads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
-            const glm::dvec3 v = adjustColor(glm::dvec3(in[static_cast<std::size_t>(i)]), a);
+            glm::dvec3 v = adjustColor(glm::dvec3(in[static_cast<std::size_t>(i)]), a);
+            if (mixIdentity) {
+                const glm::vec3 input = base.latticeInput(i % n, (i / n) % n, i / (n * n));
+                v = adjustStrength(glm::dvec3(input), v, a.strength);
+            }
             out[static_cast<std::size_t>(i)] = glm::vec3(v);
         }
     });

@@ -1,0 +1,235 @@
+#include "lut/ops/Diff.h"
+
+#include "lut/Error.h"
+#include "lut/Parallel.h"
+#include "lut/interp/Sampler.h"
+#include "lut/ops/ColorDifference.h"
+#include "ops/OpsDetail.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <mutex>
+
+namespace lut {
+
+namespace {
+
+struct RegionAcc {
+    std::size_t count = 0;
+    double sum = 0.0;
+    double max = -1.0;
+    glm::dvec3 maxSteps{0.0};
+    glm::vec3 worst{0.0f};
+};
+
+struct Acc {
+    std::size_t count = 0;
+    glm::dvec3 sumSteps{0.0};
+    glm::dvec3 maxSteps{0.0};
+    double sumDe = 0.0;
+    DiffPoint worst{{}, {}, {}, -1.0};
+    std::array<RegionAcc, kRegionCount> regions{};
+
+    void add(glm::vec3 in, glm::vec3 a, glm::vec3 b, double de) {
+        ++count;
+        const glm::dvec3 steps = glm::abs(glm::dvec3(a) - glm::dvec3(b)) * 255.0;
+        sumSteps += steps;
+        maxSteps = glm::max(maxSteps, steps);
+        sumDe += de;
+        if (de > worst.deltaE)
+            worst = {in, a, b, de};
+        const RegionOf r = classifyRegion(in);
+        for (Region reg : {r.tone, r.hue}) {
+            RegionAcc& ra = regions[static_cast<std::size_t>(reg)];
+            ++ra.count;
+            ra.sum += de;
+            ra.maxSteps = glm::max(ra.maxSteps, steps);
+            if (de > ra.max) {
+                ra.max = de;
+                ra.worst = in;
+            }
+        }
+    }
+    void merge(const Acc& o) {
+        count += o.count;
+        sumSteps += o.sumSteps;
+        maxSteps = glm::max(maxSteps, o.maxSteps);
+        sumDe += o.sumDe;
+        if (o.worst.deltaE > worst.deltaE)
+            worst = o.worst;
+        for (std::size_t i = 0; i < regions.size(); ++i) {
+            RegionAcc& r = regions[i];
+            const RegionAcc& q = o.regions[i];
+            r.count += q.count;
+            r.sum += q.sum;
+            r.maxSteps = glm::max(r.maxSteps, q.maxSteps);
+            if (q.max > r.max) {
+                r.max = q.max;
+                r.worst = q.worst;
+            }
+        }
+    }
+};
+
+// fn(i, input, a, b) fills in colour i of `count`; the rest is the same for every kind of diff.
+using PointFn = std::function<void(std::size_t i, glm::vec3& in, glm::vec3& a, glm::vec3& b)>;
+
+DiffReport runDiff(std::size_t count, int nthreads, const PointFn& fn) {
+    if (count > static_cast<std::size_t>(INT32_MAX))
+        throw Error("diff: too many colours to compare");
+    std::vector<float> deltaEs(count);
+    std::mutex mutex;
+    Acc total;
+    parallelFor(static_cast<int>(count), count < 4096 ? 1 : nthreads, [&](int begin, int end) {
+        Acc acc;
+        for (int i = begin; i < end; ++i) {
+            glm::vec3 in, a, b;
+            fn(static_cast<std::size_t>(i), in, a, b);
+            const double de = (a == b) ? 0.0 : deltaE2000(srgbToLab(a), srgbToLab(b));
+            deltaEs[static_cast<std::size_t>(i)] = static_cast<float>(de);
+            acc.add(in, a, b, de);
+        }
+        std::lock_guard lock(mutex);
+        total.merge(acc);
+    });
+    DiffReport r;
+    r.count = total.count;
+    if (total.count == 0)
+        return r;
+    const double n = static_cast<double>(total.count);
+    r.maxSteps8 = total.maxSteps;
+    r.meanSteps8 = total.sumSteps / n;
+    r.meanDeltaE = total.sumDe / n;
+    r.worst = total.worst;
+    r.maxDeltaE = total.worst.deltaE;
+    const std::size_t k = std::min(count - 1, static_cast<std::size_t>(std::ceil(0.95 * n)) - 1);
+    std::nth_element(deltaEs.begin(), deltaEs.begin() + static_cast<std::ptrdiff_t>(k),
+                     deltaEs.end());
+    r.p95DeltaE = deltaEs[k];
+    for (std::size_t i = 0; i < r.regions.size(); ++i) {
+        const RegionAcc& a = total.regions[i];
+        RegionDiff& d = r.regions[i];
+        d.region = static_cast<Region>(i);
+        d.count = a.count;
+        if (a.count) {
+            d.meanDeltaE = a.sum / static_cast<double>(a.count);
+            d.maxDeltaE = a.max;
+            d.maxSteps8 = a.maxSteps;
+            d.worstInput = a.worst;
+        }
+    }
+    return r;
+}
+
+struct Prepared {
+    Lut3D a, b;
+    std::size_t replacedA = 0, replacedB = 0;
+};
+
+Prepared prepare(const Lut3D& a, const Lut3D& b) {
+    if (a.empty() || b.empty())
+        throw Error("diff: both LUTs must have entries");
+    Prepared p;
+    p.a = detail::sanitizedCopy(a, p.replacedA);
+    p.b = detail::sanitizedCopy(b, p.replacedB);
+    return p;
+}
+
+DiffReport finish(DiffReport r, const Prepared& p, long long t0) {
+    r.sanitizedEntriesA = p.replacedA;
+    r.sanitizedEntriesB = p.replacedB;
+    r.seconds = detail::secondsSince(t0);
+    for (auto& reg : r.regions)
+        reg.region = static_cast<Region>(&reg - r.regions.data());
+    return r;
+}
+
+} // namespace
+
+std::vector<RegionDiff> DiffReport::rankedRegions() const {
+    std::vector<RegionDiff> out;
+    for (const auto& r : regions)
+        if (r.count)
+            out.push_back(r);
+    std::stable_sort(out.begin(), out.end(), [](const RegionDiff& x, const RegionDiff& y) {
+        if (x.meanDeltaE != y.meanDeltaE)
+            return x.meanDeltaE > y.meanDeltaE;
+        return x.maxDeltaE > y.maxDeltaE;
+    });
+    return out;
+}
+
+DiffReport diffLuts(const Lut3D& a, const Lut3D& b, const DiffOptions& options) {
+    const long long t0 = detail::nowNanos();
+    const Prepared p = prepare(a, b);
+    const int size = options.size > 0 ? options.size : std::max(a.size(), b.size());
+    const Lut3D lattice(size); // validates the size; its entries are unused
+    const bool direct = size == a.size() && size == b.size() && a.domainMin() == b.domainMin() &&
+                        a.domainMax() == b.domainMax();
+    const auto count = lattice.entryCount();
+    if (direct) {
+        return finish(runDiff(count, options.nthreads,
+                              [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                                  const int n = size, r = static_cast<int>(i % n),
+                                            g = static_cast<int>((i / n) % n),
+                                            bl = static_cast<int>(i / (n * n));
+                                  in = a.latticeInput(r, g, bl);
+                                  va = p.a.entries()[i];
+                                  vb = p.b.entries()[i];
+                              }),
+                      p, t0);
+    }
+    Lut3D grid(size);
+    grid.setDomain(a.domainMin(), a.domainMax());
+    const auto sa = makeSampler(p.a, options.method);
+    const auto sb = makeSampler(p.b, options.method);
+    return finish(runDiff(count, options.nthreads,
+                          [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                              const int n = size, r = static_cast<int>(i % n),
+                                        g = static_cast<int>((i / n) % n),
+                                        bl = static_cast<int>(i / (n * n));
+                              in = grid.latticeInput(r, g, bl);
+                              va = sa->sample(in);
+                              vb = sb->sample(in);
+                          }),
+                  p, t0);
+}
+
+DiffReport diffLutsOnColors(const Lut3D& a, const Lut3D& b, std::span<const glm::vec3> colors,
+                            const DiffOptions& options) {
+    const long long t0 = detail::nowNanos();
+    const Prepared p = prepare(a, b);
+    const auto sa = makeSampler(p.a, options.method);
+    const auto sb = makeSampler(p.b, options.method);
+    return finish(runDiff(colors.size(), options.nthreads,
+                          [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                              in = colors[i];
+                              va = sa->sample(in);
+                              vb = sb->sample(in);
+                          }),
+                  p, t0);
+}
+
+DiffReport diffLutsOnImage(const Lut3D& a, const Lut3D& b, const ImageView& image,
+                           const DiffOptions& options) {
+    const long long t0 = detail::nowNanos();
+    const Prepared p = prepare(a, b);
+    if (image.empty())
+        return finish(DiffReport{}, p, t0);
+    const auto sa = makeSampler(p.a, options.method);
+    const auto sb = makeSampler(p.b, options.method);
+    const std::size_t w = static_cast<std::size_t>(image.width);
+    const std::size_t count = w * static_cast<std::size_t>(image.height);
+    return finish(runDiff(count, options.nthreads,
+                          [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                              const float* px =
+                                  image.pixel(static_cast<int>(i % w), static_cast<int>(i / w));
+                              in = glm::vec3(px[0], px[1], px[2]);
+                              va = sa->sample(in);
+                              vb = sb->sample(in);
+                          }),
+                  p, t0);
+}
+
+} // namespace lut

@@ -1,0 +1,154 @@
+#include "ops/OpsDetail.h"
+
+#include "lut/Parallel.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <numeric>
+
+namespace lut::detail {
+
+Lut3D sanitizedCopy(const Lut3D& lut, std::size_t& replaced) {
+    Lut3D out = lut;
+    replaced = 0;
+    for (auto& e : out.entries()) {
+        const glm::vec3 s(sanitizeValue(e.x), sanitizeValue(e.y), sanitizeValue(e.z));
+        // Compare bit patterns through the values: NaN != NaN counts as replaced.
+        if (!(s.x == e.x && s.y == e.y && s.z == e.z))
+            ++replaced;
+        e = s;
+    }
+    return out;
+}
+
+TetraEval::TetraEval(const Lut3D& lut)
+    : m_lut(&lut), m_n(lut.size()), m_lo(lut.domainMin()), m_hi(lut.domainMax()) {
+    for (int c = 0; c < 3; ++c)
+        m_scale[c] = (m_n - 1) / (m_hi[c] - m_lo[c]);
+}
+
+glm::dvec3 TetraEval::operator()(glm::dvec3 in, glm::dmat3* jacobian) const {
+    int idx[3];
+    double frac[3];
+    bool clamped[3];
+    for (int c = 0; c < 3; ++c) {
+        double t = std::isnan(in[c]) ? 0.0 : (in[c] - m_lo[c]) * m_scale[c];
+        clamped[c] = !(t > 0.0 && t < m_n - 1);
+        t = std::clamp(t, 0.0, static_cast<double>(m_n - 1));
+        idx[c] = std::min(static_cast<int>(t), m_n - 2);
+        frac[c] = t - idx[c];
+    }
+    // The tetrahedron is the path c000 -> c111 stepping along the axes in order of decreasing
+    // fraction (the six cases of detail::tetrahedralBlend); value and slopes follow from it.
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int a, int b) { return frac[a] > frac[b]; });
+    int corner[3] = {idx[0], idx[1], idx[2]};
+    auto entry = [&]() { return glm::dvec3(m_lut->at(corner[0], corner[1], corner[2])); };
+    glm::dvec3 prev = entry();
+    glm::dvec3 out = prev;
+    glm::dvec3 steps[3];
+    for (int k = 0; k < 3; ++k) {
+        ++corner[order[k]];
+        const glm::dvec3 next = entry();
+        steps[order[k]] = next - prev;
+        out += frac[order[k]] * (next - prev);
+        prev = next;
+    }
+    if (jacobian)
+        for (int c = 0; c < 3; ++c)
+            (*jacobian)[c] = clamped[c] ? glm::dvec3(0.0) : steps[c] * m_scale[c];
+    return out;
+}
+
+int probeCount(int latticeSize) {
+    const int full = 2 * (latticeSize - 1) + 1;
+    if (full <= 129)
+        return std::max(full, 9);
+    // Too many to hit every cell centre: use a grid whose spacing shares no factor with the
+    // lattice's, so the probes fall at every kind of position inside the cells instead of on
+    // the lattice points (where the error is 0 and would be reported as such).
+    for (int intervals = 127; intervals > 64; --intervals)
+        if (std::gcd(intervals, latticeSize - 1) == 1)
+            return intervals + 1;
+    return 128;
+}
+
+ErrorStats probeError(glm::vec3 lo, glm::vec3 hi, int probes, int nthreads, const ProbeFn& fn) {
+    std::mutex mutex;
+    ErrorAccumulator total;
+    const float denom = static_cast<float>(probes - 1);
+    parallelFor(probes, nthreads, [&](int z0, int z1) {
+        ErrorAccumulator acc;
+        for (int z = z0; z < z1; ++z)
+            for (int y = 0; y < probes; ++y)
+                for (int x = 0; x < probes; ++x) {
+                    const glm::vec3 t(static_cast<float>(x), static_cast<float>(y),
+                                      static_cast<float>(z));
+                    glm::vec3 in = lo + (hi - lo) * (t / denom);
+                    glm::vec3 exact, approx;
+                    fn(in, exact, approx);
+                    for (int c = 0; c < 3; ++c)
+                        acc.add(exact[c], approx[c]);
+                }
+        std::lock_guard lock(mutex);
+        total.merge(acc);
+    });
+    return total.result();
+}
+
+PiecewiseLinearInverse::PiecewiseLinearInverse(std::vector<double> xs, std::vector<double> ys)
+    : m_x(std::move(xs)) {
+    const std::size_t n = ys.size();
+    m_dir = ys.back() >= ys.front() ? 1.0 : -1.0;
+    m_s.resize(n);
+    m_max.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        m_s[i] = m_dir * ys[i];
+        m_max[i] = i == 0 ? m_s[i] : std::max(m_max[i - 1], m_s[i]);
+        if (m_s[i] < m_s[m_argMin])
+            m_argMin = i;
+        if (m_s[i] > m_s[m_argMax])
+            m_argMax = i;
+        if (i > 0 && !(m_s[i] > m_s[i - 1]))
+            ++m_nonMonotone;
+    }
+}
+
+CurveInverse PiecewiseLinearInverse::operator()(double y) const {
+    const double u = m_dir * y;
+    const std::size_t n = m_s.size();
+    auto lerp = [&](std::size_t i) { // on segment (i, i+1), which crosses u
+        const double d = m_s[i + 1] - m_s[i];
+        const double t = d != 0.0 ? std::clamp((u - m_s[i]) / d, 0.0, 1.0) : 0.0;
+        return m_x[i] + t * (m_x[i + 1] - m_x[i]);
+    };
+    if (std::isnan(u))
+        return {m_x[m_argMin], false};
+    if (u > m_max.back())
+        return {m_x[m_argMax], false};
+    if (u >= m_max.front()) {
+        const std::size_t j = static_cast<std::size_t>(
+            std::lower_bound(m_max.begin(), m_max.end(), u) - m_max.begin());
+        if (j == 0 || m_s[j] == u)
+            return {m_x[j], true};
+        return {lerp(j - 1), true};
+    }
+    for (std::size_t i = 0; i + 1 < n; ++i)
+        if ((m_s[i] - u) * (m_s[i + 1] - u) <= 0.0)
+            return {lerp(i), true};
+    return {m_x[m_argMin], false};
+}
+
+long long nowNanos() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+double secondsSince(long long startNanos) {
+    return static_cast<double>(nowNanos() - startNanos) * 1e-9;
+}
+
+} // namespace lut::detail
