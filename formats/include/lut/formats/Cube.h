@@ -2,7 +2,8 @@
 // The .cube format (Adobe Cube LUT Specification 1.0 and the DaVinci Resolve dialect): reading
 // from memory or a file, writing to a string or a file, and strict validation against the Adobe
 // spec. The format is also registered in the FormatRegistry as "cube" (extension ".cube").
-// Details of what is accepted and refused are in formats/src/CubeFormat.cpp's header comment.
+// What is accepted and refused is detailed in formats/src/cube/CubeParser.h (reading) and
+// formats/src/cube/CubeWriter.cpp (writing).
 #include "lut/Error.h"
 #include "lut/LutFile.h"
 
