@@ -213,6 +213,16 @@ std::string CubeParser::rowsExpected() const {
     return std::to_string(m_size1D) + " data rows for LUT_1D_SIZE " + std::to_string(m_size1D);
 }
 
+// "the LUT_3D_SIZE 33 table" (or both tables), for out-of-memory messages.
+std::string CubeParser::tablesName() const {
+    if (m_size1D && m_size3D)
+        return "the LUT_1D_SIZE " + std::to_string(m_size1D) + " and LUT_3D_SIZE " +
+               std::to_string(m_size3D) + " tables";
+    if (m_size3D)
+        return "the LUT_3D_SIZE " + std::to_string(m_size3D) + " table";
+    return "the LUT_1D_SIZE " + std::to_string(m_size1D) + " table";
+}
+
 // Checks the header as a whole; firstData is the first data line (nullptr at the end of file).
 void CubeParser::finishHeader(const TextLine* firstData, const char* s) {
     if (m_size1D == 0 && m_size3D == 0) {

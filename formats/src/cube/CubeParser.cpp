@@ -4,10 +4,45 @@
 
 #include "cube/ParallelRows.h"
 
+#include "lut/io/InputFile.h"
+
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 
 namespace lut::formats::cube {
+
+namespace {
+
+// A .cube saved as UTF-16 or UTF-32 (Windows Notepad's "Unicode") would be refused for a NUL
+// byte or a strange keyword; say what it is instead. A byte order mark decides; without one,
+// ASCII text in UTF-16 has a NUL in every other byte of its first line.
+void checkEncoding(std::string_view text, const std::string& path) {
+    auto u = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const char* what = nullptr;
+    if (text.size() >= 4 && ((u(0) == 0xFF && u(1) == 0xFE && u(2) == 0 && u(3) == 0) ||
+                             (u(0) == 0 && u(1) == 0 && u(2) == 0xFE && u(3) == 0xFF)))
+        what = "UTF-32";
+    else if (text.size() >= 2 && ((u(0) == 0xFF && u(1) == 0xFE) || (u(0) == 0xFE && u(1) == 0xFF)))
+        what = "UTF-16";
+    else if (text.size() >= 4) {
+        const std::size_t window = std::min<std::size_t>(text.size(), 64) & ~std::size_t(1);
+        std::size_t nulEven = 0, nulOdd = 0;
+        for (std::size_t i = 0; i < window; ++i)
+            (i % 2 ? nulOdd : nulEven) += u(i) == 0;
+        if ((nulOdd == window / 2 && nulEven == 0) || (nulEven == window / 2 && nulOdd == 0))
+            what = "UTF-16";
+    }
+    if (what)
+        throw ParseError(path, 0, 0,
+                         std::string("the file is ") + what + " text; save it as UTF-8 or ASCII");
+}
+
+// Each data row takes at least 6 bytes: three one-character numbers, two separators and a line
+// end (5 for the last row, which may have none).
+constexpr std::size_t kMinRowBytes = 6;
+
+} // namespace
 
 int CubeParser::departures() const {
     int n = 0;
@@ -108,10 +143,13 @@ void CubeParser::slowRow(const TextLine& line, const char* s, float* out) {
 }
 
 void CubeParser::allocateTables(LutFile& file) {
-    if (m_size1D)
-        file.shaper.emplace(m_size1D);
-    if (m_size3D)
-        file.cube.emplace(m_size3D);
+    const std::uint64_t bytes = static_cast<std::uint64_t>(expectedRows()) * sizeof(glm::vec3);
+    allocating(path(), tablesName(), bytes, [&] {
+        if (m_size1D)
+            file.shaper.emplace(m_size1D);
+        if (m_size3D)
+            file.cube.emplace(m_size3D);
+    });
     if (file.shaper)
         file.shaper->setTitle(m_title);
     if (file.cube)
@@ -148,6 +186,7 @@ void CubeParser::setDomains(LutFile& file) {
 }
 
 LutFile CubeParser::parse() {
+    checkEncoding(m_reader.rest(), path());
     if (m_reader.hasBom())
         depart(Departure::Bom, 1, 1, "file starts with a UTF-8 byte order mark");
     TextLine line;
@@ -180,26 +219,35 @@ LutFile CubeParser::parse() {
     }
     m_firstDataLine = line.number;
 
-    // The tables, allocated now that every size is known to be within limits.
+    // The tables are allocated only when the rest of the file can hold their rows. When it
+    // cannot, the rows are parsed into a scratch row instead: that ends, as it must, in the error
+    // the file deserves (a bad row, or too few rows), without allocating what the header claims.
     const std::string_view rest = m_reader.rest();
+    const auto available = static_cast<std::size_t>(rest.data() + rest.size() - line.text.data());
+    const bool store = available + 1 >= kMinRowBytes * total;
     LutFile file;
     file.format = "cube";
-    allocateTables(file);
-    const RowTarget target =
-        file.shaper ? RowTarget{&file.shaper->entries()[0].x, static_cast<std::size_t>(m_size1D),
-                                file.cube ? file.cube->data() : nullptr}
-                    : RowTarget{file.cube->data(), total, nullptr};
+    float scratch[3];
+    RowTarget target{scratch, 0, scratch};
+    if (store) {
+        allocateTables(file);
+        if (file.shaper)
+            target = {&file.shaper->entries()[0].x, static_cast<std::size_t>(m_size1D),
+                      file.cube ? file.cube->data() : nullptr};
+        else
+            target = {file.cube->data(), total, nullptr};
+    }
 
     // Big plain files: all cores. Strict mode reports per-line departures, so it stays sequential.
     constexpr std::size_t kParallelMinRows = 32768;
     bool done = false;
-    if (!m_strict && total >= kParallelMinRows && !m_reader.crOnly())
+    if (store && !m_strict && total >= kParallelMinRows && !m_reader.crOnly())
         done = parallelRows(line.text.data(), rest.data() + rest.size(), total, target);
 
     std::size_t rows = 0;
     while (!done) {
         // `line` is a data line starting at s.
-        float* out = target.row(rows);
+        float* out = store ? target.row(rows) : scratch;
         if (!fastRow(s, e, out))
             slowRow(line, s, out);
         if (++rows == total)
@@ -211,6 +259,8 @@ LutFile CubeParser::parse() {
                               " before the end of the file");
         }
     }
+    if (!store) // cannot happen: the rows did not fit in the bytes
+        throw Error(path() + ": internal error: more rows than the file can hold");
     const int lastRowLine = line.number;
     // After the last row: only blank lines and comments. Stop at the first extra row, so a file
     // with a billion rows is refused without reading them.

@@ -14,6 +14,7 @@
 //    and at the end of a line), tabs, keywords in any case, an unquoted TITLE, '+' signs: all
 //    accepted. With CubeReadOptions::strict each is reported as a Warning diagnostic (a
 //    "departure", CubeKeywords.h), at most 3 per kind plus a count of the rest.
+//  - A UTF-16 or UTF-32 file (a byte order mark, or a NUL in every other byte) is refused as such.
 //  - Lines and columns are physical and 1-based (TextLineReader): a BOM is not a column.
 //  - A keyword given twice with the same value is a departure; with a different value an error.
 //  - Unknown keywords before the data are ignored with a Warning in every mode (files in the wild
@@ -32,9 +33,13 @@
 //  - Limits: the file size (lut::limits::kMaxLutFileBytes) before reading, each size keyword
 //    the moment it is read (before any data), each line's length (kMaxTextLineBytes) after at
 //    most that many bytes, and the row count at the first extra row: a file with a billion rows
-//    is refused at row N^3 + 1.
-//  - Speed: whole file memory-mapped (FileView), no per-line allocation, floats by an exact Clinger
-//  fast path (CubeLexer.h; falls back
+//    is refused at row N^3 + 1. Memory follows what the file holds, not what it claims: the
+//    tables are allocated only when the bytes after the header can hold the declared rows (each
+//    row takes at least 6 bytes, "0 0 0" and a line end); otherwise the rows are parsed without
+//    being stored, which ends in the same error (a bad row or "found N before the end") as ever.
+//  - Files are read into memory (lut::readFile), never mapped: a file that shrinks or changes
+//    while it is read is reported as such, never a SIGBUS.
+//  - Speed: no per-line allocation, floats by an exact Clinger fast path (CubeLexer.h; falls back
 //    to std::from_chars), and plain big files parsed on all cores (ParallelRows.h); anything
 //    unusual is re-read by the one sequential parser, which owns every message.
 #include "cube/CubeKeywords.h"
@@ -44,6 +49,7 @@
 #include "lut/Error.h"
 #include "lut/LutFile.h"
 #include "lut/formats/Cube.h"
+#include "lut/io/InputFile.h"
 
 #include <array>
 #include <string>
@@ -51,6 +57,10 @@
 #include <vector>
 
 namespace lut::formats::cube {
+
+// The bytes of a .cube file, read whole into memory through lut::readFileBytes (regular files
+// only, at most lut::limits::kMaxLutFileBytes, refused if the file changes while it is read).
+FileBytes readCubeFile(const std::string& path);
 
 // Where and how a keyword was first given.
 struct KeySeen {
@@ -142,6 +152,7 @@ private:
     void finishHeader(const TextLine* firstData, const char* s);
     void checkDomains();
     std::string rowsExpected() const;
+    std::string tablesName() const;
 };
 
 } // namespace lut::formats::cube

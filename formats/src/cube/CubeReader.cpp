@@ -2,7 +2,19 @@
 // accepted and refused).
 #include "cube/CubeParser.h"
 
+#include "lut/Limits.h"
+#include "lut/io/InputFile.h"
+
 namespace lut::formats {
+
+namespace cube {
+
+FileBytes readCubeFile(const std::string& path) {
+    return readFileBytes(path, static_cast<std::size_t>(limits::kMaxLutFileBytes),
+                         "lut::limits::kMaxLutFileBytes");
+}
+
+} // namespace cube
 
 LutFile parseCube(std::string_view text, const std::string& path, const CubeReadOptions& options) {
     Diagnostics diags;
@@ -11,8 +23,8 @@ LutFile parseCube(std::string_view text, const std::string& path, const CubeRead
 }
 
 LutFile readCube(const std::string& path, const CubeReadOptions& options) {
-    const FileView file(path);
-    return parseCube(file.bytes(), path, options);
+    const FileBytes bytes = cube::readCubeFile(path);
+    return parseCube(bytes.view(), path, options);
 }
 
 } // namespace lut::formats

@@ -24,10 +24,10 @@ CubeValidation validateCube(const std::string& path, bool strict) {
     CubeValidation v;
     Diagnostics diags;
     try {
-        const FileView file(path);
+        const FileBytes bytes = cube::readCubeFile(path);
         CubeReadOptions options;
         options.strict = strict;
-        cube::CubeParser parser(file.bytes(), path, options, diags);
+        cube::CubeParser parser(bytes.view(), path, options, diags);
         v.lut = parser.parse();
         v.diagnostics = v.lut->diagnostics;
         v.departures = parser.departures();

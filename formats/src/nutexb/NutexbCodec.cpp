@@ -7,6 +7,7 @@
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/Quantize.h"
+#include "lut/io/InputFile.h"
 
 #include <cstdio>
 #include <cstring>
@@ -159,6 +160,12 @@ Header parseHeader(std::string_view b, const std::string& path) {
         fail(path, "depth", "found 0, expected > 0");
     if (h.depth == 1)
         fail(path, "depth", "found 1, expected > 1 (a 2D texture, not a 3D LUT volume)");
+    // A LUT volume is a cube: the field that disagrees with the two others is the bad one (a
+    // corrupted width is reported as the width, not as a height that differs from it).
+    if (h.width != h.height && h.height == h.depth)
+        fail(path, "width",
+             "found " + n(h.width) + ", expected " + n(h.height) +
+                 " (equal to height and depth for a LUT)");
     if (h.height != h.width)
         fail(path, "height",
              "found " + n(h.height) + ", expected " + n(h.width) + " (equal to width for a LUT)");
@@ -248,11 +255,14 @@ LutFile readBytes(std::string_view b, const std::string& path) {
     const auto* data = reinterpret_cast<const std::uint8_t*>(b.data());
     std::vector<std::uint8_t> linearStore;
     const std::uint8_t* linear = data;
+    const std::string volume = std::to_string(n) + "^3";
     if (h.tiling == kTilingBlockLinear) {
-        linearStore = untile(tileGeometry(n, n, n, kBytesPerTexel), data);
+        allocating(path, "untiling the " + volume + " volume", untiledBytes,
+                   [&] { linearStore = untile(tileGeometry(n, n, n, kBytesPerTexel), data); });
         linear = linearStore.data();
     }
-    Lut3D lut(n);
+    const std::uint64_t tableBytes = static_cast<std::uint64_t>(n) * n * n * sizeof(glm::vec3);
+    Lut3D lut = allocating(path, "the " + volume + " table", tableBytes, [&] { return Lut3D(n); });
     std::size_t alphaOff = 0;
     for (int z = 0; z < n; ++z)
         for (int y = 0; y < n; ++y)

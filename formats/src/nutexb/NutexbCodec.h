@@ -42,7 +42,8 @@ struct Header {
     std::uint16_t versionMajor = 0, versionMinor = 0;
 };
 // Parses and checks the footer and mip table of a whole file's bytes; throws lut::Error naming
-// `path` and the field (value found and expected) for any departure nutexb.md forbids.
+// `path` and the field (value found and expected) for any departure nutexb.md forbids. Every size
+// is checked against the bytes the file holds before anything is allocated.
 Header parseHeader(std::string_view bytes, const std::string& path);
 // Reads a whole file held in memory. Entry = byte/255, alpha ignored (diagnostic if not 255).
 LutFile readBytes(std::string_view bytes, const std::string& path);

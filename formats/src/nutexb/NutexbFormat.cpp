@@ -14,6 +14,7 @@
 
 #include "lut/Error.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/InputFile.h"
 
 namespace lut::formats {
 
@@ -32,9 +33,11 @@ public:
     int storedBitDepth() const override { return 8; }
 
     LutFile read(const std::string& path, const FormatOptions&) const override {
-        // Nothing larger than a 256^3 volume is read.
-        const std::string bytes = readFile(path, static_cast<std::size_t>(nutexb::maxFileSize()));
-        return nutexb::readBytes(bytes, path);
+        // Nothing larger than a 256^3 volume is read; the footer's sizes are then checked against
+        // the bytes the file holds before anything is sized from them.
+        const FileBytes bytes =
+            readFileBytes(path, static_cast<std::size_t>(nutexb::maxFileSize()));
+        return nutexb::readBytes(bytes.view(), path);
     }
     LutFile readMemory(std::string_view bytes, const std::string& name,
                        const FormatOptions&) const override {

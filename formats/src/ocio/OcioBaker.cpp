@@ -129,8 +129,12 @@ public:
                 if (!c.empty())
                     md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
             baker->bake(os);
-        } catch (const OCIO::Exception& e) {
-            throw Error(path + ": OpenColorIO cannot write " + m_name + ": " + oneLine(e.what()));
+        } catch (const Error&) {
+            throw;
+        } catch (const std::exception& e) {
+            // OCIO::Exception, and C++ library errors from inside OCIO (std::bad_alloc...).
+            throw Error(path + ": OpenColorIO cannot write " + m_name + ": " +
+                        ocioMessage(e.what()));
         }
         writeFileAtomically(path, os.str());
         session.appendDiagnostics(diags);

@@ -5,7 +5,8 @@
 // else the file's own 3D grid size (the largest Lut3DTransform in the processor), else 33. So
 // anything OCIO can express (1D shapers + cubes, CDLs, matrices, ICC profiles) comes out as one
 // Lut3D; the lattice points hold exactly what OCIO computes there. A file of 1D tables only stays
-// a 1D table.
+// a 1D table. The path is checked to be a regular file before OCIO opens it (a FIFO would block
+// it), and any failure inside OCIO becomes one line naming the file and what OCIO was doing.
 #include "Formats.h"
 #include "ocio/OcioSession.h"
 
@@ -13,6 +14,7 @@
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/InputFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -126,6 +128,8 @@ public:
     bool canWrite() const override { return false; }
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
+        // OCIO opens the file itself: a FIFO, a directory or a device is refused first.
+        checkRegularInput(path);
         std::error_code ec;
         const auto fileSize = std::filesystem::file_size(path, ec);
         if (ec)
@@ -144,6 +148,7 @@ public:
         LutFile out;
         out.format = name();
         Lut3D lut;
+        std::string doing = "loading the file"; // for messages: what OCIO was doing
         try {
             // OCIO caches files by path; a file rewritten in place must be read afresh.
             OCIO::ClearAllCaches();
@@ -152,10 +157,12 @@ public:
             ft->setSrc(std::filesystem::absolute(path).string().c_str());
             ft->setInterpolation(OCIO::INTERP_BEST);
             const auto processor = config->getProcessor(ft);
+            doing = "inspecting the processor";
             const ProcessorFacts facts = inspect(processor);
             out.dialect = ocioFormatNamesFor(extensionOf(path));
             out.sourceBitDepth = facts.bitDepth;
 
+            doing = "building the CPU processor";
             const auto cpu = processor->getOptimizedCPUProcessor(
                 OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
             // A file of 1D tables only (.spi1d, a 1D .csp, a Discreet .lut) stays a per-channel
@@ -165,6 +172,7 @@ public:
                 facts.otherCount == 0 && !facts.halfDomain &&
                 facts.length1d >= static_cast<unsigned long>(limits::kMin1DSize) &&
                 facts.length1d <= static_cast<unsigned long>(limits::kMax1DSize)) {
+                doing = "sampling the processor";
                 Lut1D shaper = Lut1D::identity(static_cast<int>(facts.length1d));
                 shaper.setTitle(facts.title);
                 OCIO::PackedImageDesc desc(&shaper.entries()[0].x, shaper.size(), 1, 3);
@@ -184,7 +192,10 @@ public:
                                facts.gridSize <= static_cast<unsigned long>(limits::kMax3DSize)
                            ? static_cast<int>(facts.gridSize)
                            : 33;
-            lut = Lut3D::identity(size);
+            doing = "sampling the processor";
+            const std::uint64_t bytes = static_cast<std::uint64_t>(size) * size * size * 12;
+            lut = allocating(path, "the " + std::to_string(size) + "^3 lattice", bytes,
+                             [&] { return Lut3D::identity(size); });
             lut.setTitle(facts.title);
             lut.comments() = facts.comments;
             // The identity lattice is already in our order (red fastest): OCIO maps it in place,
@@ -202,8 +213,12 @@ public:
                               " 1D LUT, " + std::to_string(facts.lut3dCount) + " 3D LUT, " +
                               std::to_string(facts.otherCount) + " other ops) on a " +
                               std::to_string(size) + "^3 lattice over [0,1]"));
-        } catch (const OCIO::Exception& e) {
-            throw Error(path + ": OpenColorIO cannot read it: " + oneLine(e.what()));
+        } catch (const Error&) {
+            throw;
+        } catch (const std::exception& e) {
+            // OCIO::Exception, and C++ library errors from inside OCIO (std::length_error's
+            // "vector::reserve" when a reader believes a size in the file, std::bad_alloc).
+            throw Error(ocioFailure(path, doing, e.what()));
         }
         std::size_t nonFinite = 0;
         for (auto& v : lut.entries())

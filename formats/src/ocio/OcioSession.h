@@ -1,7 +1,7 @@
 #pragma once
 // What every OpenColorIO bridge needs (OcioReader.cpp, OcioBaker.cpp): OCIO's multi-line
 // messages made one line, an OcioSession that serialises OCIO use and turns its log into
-// diagnostics (the library must not print).
+// diagnostics (the library must not print), and the one way an OCIO failure becomes a lut::Error.
 // OCIO is touched only inside read()/write(): nothing here runs at start-up (no static OCIO
 // objects), which keeps `lutkit info small.cube` fast.
 #include "lut/Error.h"
@@ -16,8 +16,15 @@ namespace lut::formats {
 
 namespace OCIO = OCIO_NAMESPACE;
 
-// OCIO's messages span several lines; ours are one line each.
-std::string oneLine(const char* message);
+// An exception's message from inside OpenColorIO as one line (OCIO's span several). A bare C++
+// library message at its end (std::length_error's "vector::reserve" from a reader that believed
+// a size in the file, std::bad_alloc) is explained instead of quoted alone.
+std::string ocioMessage(const char* what);
+
+// The one line for an exception thrown while OpenColorIO was `doing` something with path (e.g.
+// "loading the file", "sampling the processor"): "PATH: OpenColorIO cannot read it: ..." while
+// loading, "PATH: OpenColorIO failed while DOING: ..." later.
+std::string ocioFailure(const std::string& path, const std::string& doing, const char* what);
 
 // Serialises OCIO use (its caches and our log sink are global) and gathers its log lines.
 class OcioSession {

@@ -26,7 +26,8 @@ struct CubeReadOptions {
 LutFile parseCube(std::string_view text, const std::string& path = "<memory>",
                   const CubeReadOptions& options = {});
 
-// Reads a .cube file (memory-mapped). Also throws lut::Error if it cannot be opened and
+// Reads a .cube file (read whole into memory). Also throws lut::Error if it cannot be opened, is
+// not a regular file (a FIFO, a directory, a device...) or changes while it is read, and
 // lut::LimitError if it is larger than lut::limits::kMaxLutFileBytes.
 LutFile readCube(const std::string& path, const CubeReadOptions& options = {});
 
