@@ -37,7 +37,9 @@
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/InputFile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -123,10 +125,12 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                      std::optional<LutLayout> forced) {
     const std::optional<LutLayout> wanted = forced ? forced : options.layout;
 
-    const LoadedImage img = readImage(path);
-    const int w = img.image.width(), h = img.image.height();
-    LutFile file;
-    file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
+    // OpenImageIO opens the file itself: a FIFO, a directory or a device is refused first. The
+    // picture size comes from the header, and a size no LUT layout has is refused before any
+    // pixel is decoded (a small file can claim a huge picture).
+    checkRegularInput(path);
+    const ImageInfo header = readImageInfo(path);
+    const int w = header.width, h = header.height;
     const std::vector<LayoutFit> fits = layoutsForImageSize(w, h);
 
     LutLayout layout = LutLayout::Pilot;
@@ -150,10 +154,25 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
             path + ": image is " + sizeText(w, h) +
             ", not a LUT image size: pilot, unity and smush need N^2 x N (e.g. 256x16), hald needs "
             "L^3 x L^3 (e.g. 64x64)");
-    } else if (fits.size() == 1) {
+    }
+
+    // The pixels: at most a 256^3 LUT's worth now (65536x256 or 4096x4096).
+    const std::uint64_t pixels = static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h);
+    const LoadedImage img =
+        allocating(path, "decoding the " + sizeText(w, h) + " image",
+                   pixels * (16 + 4 * static_cast<std::uint64_t>(std::max(header.channels, 1))),
+                   [&] { return readImage(path); });
+    if (img.image.width() != w || img.image.height() != h)
+        throw Error(path + ": the file changed while being read (" + sizeText(w, h) +
+                    " when opened, " + sizeText(img.image.width(), img.image.height()) + " now)");
+    LutFile file;
+    file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
+
+    // Without --layout, the layout from the size, or (several fit) from the pixels.
+    if (!wanted && fits.size() == 1) {
         layout = fits.front().layout;
         n = fits.front().size;
-    } else {
+    } else if (!wanted) {
         // Several layouts fit: see the rule in the header comment.
         std::vector<AxisScore> scores;
         std::vector<std::size_t> passing;

@@ -1,10 +1,5 @@
-// Tegra X1 block-linear tiling (nutexb.md, "Tiling"), the general 3D algorithm.
-//
-// Bytes are grouped in GOBs of 64 bytes x 8 rows (512 contiguous bytes). GOBs form blocks of
-// 1 x bh x bd GOBs (y first, then z inside the block); blocks run x fastest, then y, then
-// z-slab. A 3D texture has bh = 1 and bd from its depth. Every size works: partial GOBs and
-// partial blocks are padding, which tile() leaves zero.
-#include "nutexb/Tiling.h"
+// Tegra X1 block-linear tiling (nutexb.md, "Tiling"); the layout is described in BlockLinear.h.
+#include "nutexb/BlockLinear.h"
 
 #include "lut/Error.h"
 

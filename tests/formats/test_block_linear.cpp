@@ -1,6 +1,7 @@
 // Tegra X1 block-linear tiling: the offsets and sizes nutexb.md states, and properties of the
 // general algorithm (a bijection into the tiled size, padding untouched) for odd sizes.
-#include "lut/formats/Nutexb.h"
+#include "lut/Error.h"
+#include "nutexb/BlockLinear.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +10,7 @@
 
 namespace nx = lut::formats::nutexb;
 
-TEST(Tiling, BlockDepthRule) {
+TEST(BlockLinear, BlockDepthRule) {
     // d' = d + d/2; >= 16 -> 16, >= 8 -> 8, >= 4 -> 4, >= 2 -> 2, else 1.
     EXPECT_EQ(nx::blockDepthFor(1), 1);
     EXPECT_EQ(nx::blockDepthFor(2), 2);  // 3
@@ -23,7 +24,7 @@ TEST(Tiling, BlockDepthRule) {
     EXPECT_EQ(nx::blockDepthFor(256), 16);
 }
 
-TEST(Tiling, GobSwizzleMatchesSpecExamples) {
+TEST(BlockLinear, GobSwizzleMatchesSpecExamples) {
     EXPECT_EQ(nx::gobOffset(0, 0), 0u);
     EXPECT_EQ(nx::gobOffset(16, 0), 32u);
     EXPECT_EQ(nx::gobOffset(0, 1), 16u);
@@ -38,7 +39,7 @@ TEST(Tiling, GobSwizzleMatchesSpecExamples) {
     EXPECT_EQ(*seen.rbegin(), 511u);
 }
 
-TEST(Tiling, TexelOffsetsFromTheDoc16) {
+TEST(BlockLinear, TexelOffsetsFromTheDoc16) {
     const auto g = nx::tileGeometry(16, 16, 16, 4);
     EXPECT_EQ(nx::tiledOffset(g, 15, 0, 0), 300u);
     EXPECT_EQ(nx::tiledOffset(g, 0, 15, 0), 8400u);
@@ -48,7 +49,7 @@ TEST(Tiling, TexelOffsetsFromTheDoc16) {
     EXPECT_EQ(nx::tiledSize(g), 16384u);
 }
 
-TEST(Tiling, General3DMatches16CubedClosedForm) {
+TEST(BlockLinear, General3DMatches16CubedClosedForm) {
     const auto g = nx::tileGeometry(16, 16, 16, 4);
     for (int b = 0; b < 16; ++b)
         for (int gg = 0; gg < 16; ++gg)
@@ -60,7 +61,7 @@ TEST(Tiling, General3DMatches16CubedClosedForm) {
             }
 }
 
-TEST(Tiling, SizesFromTheDoc) {
+TEST(BlockLinear, SizesFromTheDoc) {
     EXPECT_EQ(nx::tiledSize(nx::tileGeometry(32, 32, 32, 4)), 131072u);
     EXPECT_EQ(nx::tiledSize(nx::tileGeometry(8, 8, 8, 4)), 4096u); // padded from 2048
     EXPECT_EQ(nx::tiledSize(nx::tileGeometry(33, 33, 33, 4)), 368640u);
@@ -68,7 +69,7 @@ TEST(Tiling, SizesFromTheDoc) {
     EXPECT_EQ(nx::tiledSize(nx::tileGeometry(2, 2, 2, 4)), 1024u);
 }
 
-TEST(Tiling, RejectsNonPositiveSizes) {
+TEST(BlockLinear, RejectsNonPositiveSizes) {
     EXPECT_THROW(nx::tileGeometry(0, 4, 4, 4), lut::Error);
     EXPECT_THROW(nx::tileGeometry(4, 4, -1, 4), lut::Error);
     EXPECT_THROW(nx::tileGeometry(4, 4, 4, 0), lut::Error);
