@@ -6,6 +6,8 @@
 #include "lut/formats/Registry.h"
 #include "lut/interp/Sampler.h"
 #include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
+#include "lut/roundtrip/PatchFinder.h"
 
 #include <gtest/gtest.h>
 

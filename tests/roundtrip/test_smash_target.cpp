@@ -10,6 +10,7 @@
 #include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
 #include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
 
 #include <gtest/gtest.h>
 
