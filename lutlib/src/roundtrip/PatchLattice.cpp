@@ -10,15 +10,16 @@
 namespace lut {
 
 const char* toString(PatchLattice l) {
-    return l == PatchLattice::Smash ? "smash" : "uniform";
+    return l == PatchLattice::Smash ? "game-display" : "uniform";
 }
 
 PatchLattice parseLattice(std::string_view name) {
-    if (name == "smash")
+    if (name == "game-display" || name == "smash")
         return PatchLattice::Smash;
     if (name == "uniform")
         return PatchLattice::Uniform;
-    throw Error("unknown lattice '" + std::string(name) + "' (expected smash or uniform)");
+    throw Error("unknown lattice '" + std::string(name) +
+                "' (expected game-display or uniform; also accepted: smash)");
 }
 
 float patchInputValue(PatchLattice lattice, int index, int size, int bitDepth) {

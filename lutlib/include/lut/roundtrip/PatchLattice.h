@@ -5,14 +5,17 @@
 namespace lut {
 
 // Which inputs the patch samples per channel.
-//  - Uniform: j/(N-1), the lattice of an N^3 LUT (what raw engines use).
-//  - Smash: the 12 display values the unedited game shows for its lattice inputs i/15 (with a
-//    neutral stage LUT): srgbEncode(min(1, (1.3703 i/15)^2.2)), i = 0..10, and 1 (i >= 11 all clip
-//    to white). Extracting for --target smash then reads the edit exactly where the game's 16^3
-//    LUT needs it instead of interpolating: docs/roundtrip.md has the numbers.
+//  - Uniform ("uniform"): j/(N-1), the lattice of an N^3 LUT (what raw engines use).
+//  - Smash ("game-display"; "smash" is accepted too): the 12 display values the unedited game
+//    shows for its lattice inputs i/15 (with a neutral stage LUT): srgbEncode(min(1,
+//    (1.3703 i/15)^2.2)), i = 0..10, and 1 (i >= 11 all clip to white). Extracting for
+//    --target smash then reads the edit exactly where the game's 16^3 LUT needs it instead of
+//    interpolating: docs/roundtrip.md has the numbers.
 enum class PatchLattice { Uniform, Smash };
+// "uniform" or "game-display".
 const char* toString(PatchLattice);
-PatchLattice parseLattice(std::string_view name); // "uniform", "smash"; throws lut::Error
+// "uniform", "game-display" or its alias "smash"; throws lut::Error naming the accepted names.
+PatchLattice parseLattice(std::string_view name);
 constexpr int kSmashLatticeSize = 12;
 
 // The input value a patch lattice index stands for once stored at bitDepth: j/(N-1) (or the
