@@ -2,7 +2,8 @@
 // lut/roundtrip/PatchReader.h.
 #include "lut/roundtrip/PatchReader.h"
 
-#include "interp/Tetrahedral.h"
+#include "interp/LatticeMapping.h"
+#include "interp/ScalarLattice.h"
 #include "lut/Error.h"
 #include "lut/io/Layout.h"
 #include "roundtrip/ColourDistance.h"
@@ -76,30 +77,13 @@ PatchFunction::PatchFunction(const Lut3D& values, std::vector<float> axis)
         throw Error("PatchFunction: axis and table sizes differ");
 }
 
-void PatchFunction::locate(float v, int& i, float& f) const {
-    const int n = static_cast<int>(m_axis.size());
-    if (!(v > m_axis[0])) { // also NaN
-        i = 0;
-        f = 0.0f;
-        return;
-    }
-    if (v >= m_axis[n - 1]) {
-        i = n - 2;
-        f = 1.0f;
-        return;
-    }
-    i = static_cast<int>(std::upper_bound(m_axis.begin(), m_axis.end(), v) - m_axis.begin()) - 1;
-    i = std::clamp(i, 0, n - 2);
-    const float span = m_axis[i + 1] - m_axis[i];
-    f = span > 0.0f ? std::clamp((v - m_axis[i]) / span, 0.0f, 1.0f) : 0.0f;
-}
-
 glm::vec3 PatchFunction::operator()(glm::vec3 in) const {
     int ir, ig, ib;
     float fr, fg, fb;
-    locate(in.x, ir, fr);
-    locate(in.y, ig, fg);
-    locate(in.z, ib, fb);
+    const int n = static_cast<int>(m_axis.size());
+    detail::locateOnAxis(m_axis.data(), n, in.x, ir, fr);
+    detail::locateOnAxis(m_axis.data(), n, in.y, ig, fg);
+    detail::locateOnAxis(m_axis.data(), n, in.z, ib, fb);
     return detail::tetrahedralBlend(
         [this](int r, int g, int b) -> const glm::vec3& { return m_values.at(r, g, b); }, ir, ig,
         ib, fr, fg, fb);

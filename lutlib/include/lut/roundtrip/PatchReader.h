@@ -32,7 +32,6 @@ public:
     glm::vec3 operator()(glm::vec3 in) const;
 
 private:
-    void locate(float v, int& i, float& f) const;
     Lut3D m_values;
     std::vector<float> m_axis;
 };
