@@ -1,7 +1,7 @@
 // The game's display model in double; see GameDisplay.h.
 #include "roundtrip/GameDisplay.h"
 
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/PatchLattice.h"
 
 #include <algorithm>

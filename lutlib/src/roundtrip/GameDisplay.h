@@ -1,6 +1,6 @@
 #pragma once
 // Internal to lutlib: what the game displays, in double precision, for the round trip. Built on
-// the pipeline's constants (lut/pipeline/SmashGrading.h, docs/specs/smash-pipeline.md sections
+// the pipeline's constants (lut/pipeline/SmashConstants.h, docs/specs/smash-pipeline.md sections
 // 2 and 3), so the float pipeline and this model cannot drift apart. Kept in double because
 // extract runs it once per lattice point and the checks compare against it.
 

@@ -5,6 +5,7 @@
 // lut/roundtrip/Extract.h). Works on lut::Image (no file I/O).
 #include "lut/Image.h"
 #include "lut/io/Layout.h"
+#include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/PatchLattice.h"
 #include "lut/roundtrip/PatchPlacement.h"
 
@@ -13,10 +14,9 @@
 
 namespace lut {
 
-// The default patch is the Smash lattice (12^3, pilot layout, 2x2 pixels per entry: 296x32
-// pixels with its frame); with a uniform lattice the default size is 16 (the game's and Pilot's
-// lattice, 8-bit exact since 255/15 = 17) as a 64x64 Hald image.
-constexpr int kDefaultPatchSize = 16;
+// The default patch is the game-display lattice (12^3, pilot layout, 2x2 pixels per entry:
+// 296x32 pixels with its frame); with a uniform lattice the default size is the game's
+// kSmashLutSize, 16 (also Pilot's lattice, 8-bit exact since 255/15 = 17), as a 64x64 Hald image.
 constexpr int kDefaultPatchScale = 2;
 constexpr int kDefaultPatchMargin = 8; // pixels between the frame and the screenshot's edge
 
@@ -27,7 +27,7 @@ PatchCorner parseCorner(std::string_view name);
 
 struct EmbedOptions {
     PatchLattice lattice = PatchLattice::Smash;
-    int size = kDefaultPatchSize;    // uniform lattice only (the smash lattice is 12^3)
+    int size = kSmashLutSize;        // uniform lattice only (the game-display lattice is 12^3)
     std::optional<LutLayout> layout; // default: hald when N is a square, else pilot
     int scale = kDefaultPatchScale;
     PatchCorner corner = PatchCorner::TopLeft;
