@@ -4,7 +4,7 @@
 #include "lut/roundtrip/Extract.h"
 
 #include "lut/interp/Sampler.h"
-#include "lut/ops/Resample.h"
+#include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "lut/roundtrip/PatchFinder.h"
 #include "roundtrip/ExtractChecks.h"
