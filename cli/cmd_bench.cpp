@@ -11,10 +11,9 @@
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 #include "lut/bench/KernelBench.h"
+#include "lut/bench/OcioLutProcessor.h"
+#include "lut/bench/SmashChainBench.h"
 #include "lut/interp/Sampler.h"
-#include "lut/pipeline/Pipeline.h"
-
-#include <OpenColorIO/OpenColorIO.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -23,28 +22,9 @@
 #include <string>
 #include <vector>
 
-namespace OCIO = OCIO_NAMESPACE;
-
 namespace lut::cli {
 
 namespace {
-
-OCIO::ConstCPUProcessorRcPtr ocioProcessor(const Lut3D& lut, Interpolation method) {
-    const int n = lut.size();
-    auto t = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 e = lut.at(r, g, b);
-                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
-                            static_cast<unsigned long>(b), e.r, e.g, e.b);
-            }
-    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL
-                                                             : OCIO::INTERP_LINEAR);
-    auto config = OCIO::Config::CreateRaw();
-    return config->getProcessor(t)->getOptimizedCPUProcessor(
-        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
-}
 
 // ---------------------------------------------------------------------------------------------
 // EXTRA ROWS: other subsystems add rows to the table here, one line each, e.g.
@@ -129,13 +109,10 @@ int runBench(const BenchOptions& o) {
 
             std::string ocioNs = "-", ocioRatio = "-";
             if (o.ocio && method != Interpolation::Nearest) {
-                const auto cpu = ocioProcessor(lut, method);
+                const OcioLutProcessor ocio(lut, method);
                 const double t = bestSeconds(
                     std::max(1, o.reps - 1), [&] { parallelCopy(frame, work, o.threads); },
-                    [&] {
-                        OCIO::PackedImageDesc desc(work.data(), o.width, o.height, 4);
-                        cpu->apply(desc);
-                    });
+                    [&] { ocio.apply(work); });
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%.2f", t * 1e9 / pixels);
                 ocioNs = buf;

@@ -14,6 +14,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
+#include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
 
 #include <chrono>

@@ -7,7 +7,7 @@ namespace lut::cli {
 struct EmbedOptions {
     std::string input;
     std::string output;
-    std::string lattice; // "smash" (default) or "uniform" (default when --size is given)
+    std::string lattice; // "game-display" (default; alias "smash") or "uniform" (with --size)
     int size = 16;
     std::string layout; // "" = hald when size is a square, else pilot
     int scale = 2;

@@ -5,7 +5,9 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
-#include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
+#include "lut/roundtrip/PatchFinder.h"
+#include "lut/roundtrip/PatchReader.h"
 
 #include <cstdio>
 #include <iostream>

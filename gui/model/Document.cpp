@@ -10,7 +10,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
 #include "lut/pipeline/SmashCompensation.h"
-#include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
 
 #include <QFileInfo>
 #include <QUndoStack>

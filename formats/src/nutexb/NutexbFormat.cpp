@@ -15,6 +15,7 @@
 #include "lut/Error.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/InputFile.h"
+#include "lut/pipeline/SmashConstants.h"
 
 namespace lut::formats {
 
@@ -29,7 +30,7 @@ public:
     }
     std::vector<std::string> extensions() const override { return {".nutexb"}; }
     // The game's LUTs are 16^3; FormatOptions::size still writes any other N.
-    int fixedSize() const override { return nutexb::kDefaultSize; }
+    int fixedSize() const override { return kSmashLutSize; }
     int storedBitDepth() const override { return 8; }
 
     LutFile read(const std::string& path, const FormatOptions&) const override {
@@ -54,7 +55,7 @@ public:
         if (options.dither)
             diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, path,
                                            "nutexb values are rounded to nearest: dither ignored"));
-        const int size = options.size > 0 ? options.size : nutexb::kDefaultSize;
+        const int size = options.size > 0 ? options.size : kSmashLutSize;
         const Lut3D lut = prepareUnitLut(file, size, path, diags);
         std::size_t clamped = 0;
         const std::string tiling =

@@ -140,23 +140,4 @@ Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool 
                               const Lut3D* originalLut,
                               Interpolation interp = Interpolation::Trilinear, int nthreads = 0);
 
-// The synthetic HDR scene the smash-chain benchmarks run on: smooth gradients, highlights well
-// above the bloom threshold, an alpha-0 band (background) along the top tenth.
-Image makeSmashBenchScene(int width, int height);
-
-// A 16^3 grading LUT that is not an identity (warm tint, contrast, cross-talk between channels):
-// what the smash-chain benchmarks grade with, so no identity shortcut can flatter them.
-Lut3D makeSmashBenchLut();
-
-// Times the full smash chain (makeSmashBenchLut, bloom on, sRGB display) on the synthetic w x h
-// HDR frame, `iterations` runs after one warm-up. Used by `lutkit bench`.
-struct SmashChainTiming {
-    double medianMs = 0.0; // the typical frame: what the editor's frame rate follows
-    double bestMs = 0.0;
-    double worstMs = 0.0;
-    int runs = 0;
-};
-SmashChainTiming benchmarkSmashChain(int width = 1920, int height = 1080, int iterations = 10,
-                                     int nthreads = 0);
-
 } // namespace lut
