@@ -133,7 +133,7 @@ private slots:
             const auto layout = dlg.options().layout;
             QCOMPARE(layout ? QString::fromLatin1(toString(*layout)) : QString(), c.layout);
         }
-        for (const char* l : {"pilot", "unity", "smush"})
+        for (const char* l : {"unreal", "unity", "smush"})
             QVERIFY2(layouts.contains(QLatin1String(l)), l);
     }
 
