@@ -52,13 +52,17 @@ void applyDarkTheme(QApplication& app) {
 } // namespace
 
 int main(int argc, char** argv) {
-    // Headless modes need a platform before QApplication exists.
-    bool headless = false;
-    for (int i = 1; i < argc; ++i)
+    // Headless modes need a platform before QApplication exists; so do -V and --help, which
+    // must work on a terminal without a display.
+    bool headless = false, textOnly = false;
+    for (int i = 1; i < argc; ++i) {
         if (!std::strncmp(argv[i], "--screenshot", 12) ||
             !std::strncmp(argv[i], "--save-preview", 14))
             headless = true;
-    if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        for (const char* info : {"-V", "--version", "-h", "--help", "--help-all"})
+            textOnly = textOnly || !std::strcmp(argv[i], info);
+    }
+    if ((headless || textOnly) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
 
     QApplication app(argc, argv);
@@ -99,13 +103,13 @@ int main(int argc, char** argv) {
         for (const auto& alias : lut::presetAliases(p))
             oldPresets += (oldPresets.isEmpty() ? "" : ", ") + QString::fromStdString(alias);
     }
-    QCommandLineOption presetOpt(QStringLiteral("preset"),
-                                 QStringLiteral("Preview preset: %1 (default smash; also %2).")
-                                     .arg(presets, oldPresets),
-                                 QStringLiteral("NAME"), QStringLiteral("smash"));
+    QCommandLineOption presetOpt(
+        QStringLiteral("preset"),
+        QStringLiteral("Preview preset: %1 (default smash; also %2).").arg(presets, oldPresets),
+        QStringLiteral("NAME"), QStringLiteral("smash"));
     QString interps;
-    for (const auto m :
-         {lut::Interpolation::Nearest, lut::Interpolation::Trilinear, lut::Interpolation::Tetrahedral})
+    for (const auto m : {lut::Interpolation::Nearest, lut::Interpolation::Trilinear,
+                         lut::Interpolation::Tetrahedral})
         interps += (interps.isEmpty() ? "" : ", ") + QString::fromLatin1(lut::toString(m));
     QCommandLineOption interpOpt(
         {QStringLiteral("interp"), QStringLiteral("interpolation")},

@@ -79,12 +79,12 @@ std::string previewFooter() {
            << (old.empty() ? "" : " (also " + old + ")") << "\n";
         std::string line = "      ";
         for (const auto& p : s->params()) {
-            const std::string t = paramText(p, false) + "  ";
+            const std::string t = paramText(p, false);
             if (line.size() + t.size() > 100) {
                 os << line << "\n";
                 line = "      ";
             }
-            line += t;
+            line += (line.size() > 6 ? "  " : "") + t;
         }
         if (line.size() > 6)
             os << line << "\n";

@@ -85,7 +85,7 @@ public:
     }
     const char* name() const override { return "soft-bloom"; }
     const char* description() const override {
-        return "soft bloom (was filter-bloom): luminance soft-knee filter, 9-tap Gaussian, add";
+        return "soft bloom: luminance soft-knee filter, separable 9-tap Gaussian, add";
     }
     float weight(float l) const {
         const float k = m_threshold * m_knee;
@@ -131,8 +131,7 @@ public:
     }
     const char* name() const override { return "glow-bloom"; }
     const char* description() const override {
-        return "glow bloom (was sugar-bloom): intensity threshold, dilation, mip blur, C*f0 + "
-               "B*(1-i)*f1";
+        return "glow bloom: intensity threshold, dilation, mip-pyramid blur, C*f0 + B*(1-i)*f1";
     }
     bool canChange(const ImageView& f, int nthreads) const override {
         if (m_f0 != 1.0f)
