@@ -9,6 +9,7 @@
 
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
+#include "lut/pipeline/Pipeline.h"
 
 #include "lut/Version.h"
 
@@ -51,13 +52,17 @@ void applyDarkTheme(QApplication& app) {
 } // namespace
 
 int main(int argc, char** argv) {
-    // Headless modes need a platform before QApplication exists.
-    bool headless = false;
-    for (int i = 1; i < argc; ++i)
+    // Headless modes need a platform before QApplication exists; so do -V and --help, which
+    // must work on a terminal without a display.
+    bool headless = false, textOnly = false;
+    for (int i = 1; i < argc; ++i) {
         if (!std::strncmp(argv[i], "--screenshot", 12) ||
             !std::strncmp(argv[i], "--save-preview", 14))
             headless = true;
-    if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        for (const char* info : {"-V", "--version", "-h", "--help", "--help-all"})
+            textOnly = textOnly || !std::strcmp(argv[i], info);
+    }
+    if ((headless || textOnly) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
 
     QApplication app(argc, argv);
@@ -67,12 +72,15 @@ int main(int argc, char** argv) {
     applyDarkTheme(app);
     lut::formats::registerBuiltinFormats();
 
+    // The options speak lutkit's vocabulary (-V/--version, -v/--verbose, --interp); any bad usage
+    // exits 2, as lutkit does.
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Preview a colour grading LUT on a screenshot as the game shows it, adjust it "
         "and export it."));
-    parser.addHelpOption();
-    parser.addVersionOption();
+    const QCommandLineOption helpOpt = parser.addHelpOption();
+    QCommandLineOption versionOpt({QStringLiteral("V"), QStringLiteral("version")},
+                                  QStringLiteral("Print the version and exit."));
     parser.addPositionalArgument(QStringLiteral("image"),
                                  QStringLiteral("Screenshot or render to preview."),
                                  QStringLiteral("[IMAGE"));
@@ -89,13 +97,23 @@ int main(int argc, char** argv) {
         QStringLiteral(
             "Write the full-resolution preview image to FILE (as lutkit preview does) and exit."),
         QStringLiteral("FILE"));
+    QString presets, oldPresets;
+    for (const lut::Preset p : lut::allPresets()) {
+        presets += (presets.isEmpty() ? "" : ", ") + QString::fromLatin1(lut::toString(p));
+        for (const auto& alias : lut::presetAliases(p))
+            oldPresets += (oldPresets.isEmpty() ? "" : ", ") + QString::fromStdString(alias);
+    }
     QCommandLineOption presetOpt(
         QStringLiteral("preset"),
-        QStringLiteral("Preview preset: smash, pilot, lecture or none (default smash)."),
+        QStringLiteral("Preview preset: %1 (default smash; also %2).").arg(presets, oldPresets),
         QStringLiteral("NAME"), QStringLiteral("smash"));
+    QString interps;
+    for (const auto m : {lut::Interpolation::Nearest, lut::Interpolation::Trilinear,
+                         lut::Interpolation::Tetrahedral})
+        interps += (interps.isEmpty() ? "" : ", ") + QString::fromLatin1(lut::toString(m));
     QCommandLineOption interpOpt(
-        QStringLiteral("interpolation"),
-        QStringLiteral("LUT interpolation: trilinear, tetrahedral or nearest."),
+        {QStringLiteral("interp"), QStringLiteral("interpolation")},
+        QStringLiteral("LUT interpolation: %1 (default trilinear).").arg(interps),
         QStringLiteral("NAME"), QStringLiteral("trilinear"));
     QCommandLineOption noBloomOpt(QStringLiteral("no-bloom"), QStringLiteral("Switch bloom off."));
     QCommandLineOption noLutOpt(QStringLiteral("no-lut"),
@@ -120,11 +138,22 @@ int main(int argc, char** argv) {
     QCommandLineOption zoomOpt(QStringLiteral("zoom"),
                                QStringLiteral("fit (default) or a percentage such as 100."),
                                QStringLiteral("ZOOM"), QStringLiteral("fit"));
-    QCommandLineOption verboseOpt(QStringLiteral("verbose"),
+    QCommandLineOption verboseOpt({QStringLiteral("v"), QStringLiteral("verbose")},
                                   QStringLiteral("Log each preview update's time to stderr."));
-    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt,
-                       sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt});
-    parser.process(app);
+    parser.addOptions({versionOpt, shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt,
+                       noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt,
+                       verboseOpt});
+    if (!parser.parse(QApplication::arguments())) {
+        std::fprintf(stderr, "lutkit-editor: %s\nRun 'lutkit-editor --help' for usage.\n",
+                     qPrintable(parser.errorText()));
+        return 2;
+    }
+    if (parser.isSet(helpOpt))
+        parser.showHelp(0);
+    if (parser.isSet(versionOpt)) {
+        std::printf("lutkit-editor %s\n", LUTKIT_VERSION);
+        return 0;
+    }
 
     lut::gui::MainWindow window;
     window.setVerbose(parser.isSet(verboseOpt));

@@ -284,7 +284,7 @@ TEST(HostileSizes, LutImageHeaderClaimingAHugePictureIsRefusedBeforeDecoding) {
                                       "IEND" + be(crc("IEND")));
     AllocationProbe probe(256u << 20); // an allocation of gigabytes fails instead of swapping
     EXPECT_EQ(stripDir(readLutMessage(dir + "/huge.png"), dir),
-              "huge.png: image is 16384x16384, not a LUT image size: pilot, unity and smush need "
+              "huge.png: image is 16384x16384, not a LUT image size: unreal, unity and smush need "
               "N^2 x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)");
     EXPECT_LT(probe.largest(), 64u << 20);
 }

@@ -228,20 +228,20 @@ const std::vector<Defect>& table() {
          "not-an-image.png: cannot read image: Not a PNG file"},
         {"fits-nothing.png",
          {},
-         "fits-nothing.png: image is 100x11, not a LUT image size: pilot, unity and smush need N^2 "
-         "x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)",
+         "fits-nothing.png: image is 100x11, not a LUT image size: unreal, unity and smush need "
+         "N^2 x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)",
          "",
          image(100, 11)},
         {"pilot-wrong-size.png",
          {},
-         "pilot-wrong-size.png: image is 64x64, the pilot layout needs N^2 x N pixels with N "
+         "pilot-wrong-size.png: image is 64x64, the unreal layout needs N^2 x N pixels with N "
          "2..256 (e.g. 256x16, 1024x32); this size fits hald",
          "pilot",
          image(64, 64)},
         {"hald-wrong-size.png",
          {},
          "hald-wrong-size.png: image is 256x16, the hald layout needs L^3 x L^3 pixels (e.g. 64x64 "
-         "for 16^3, 512x512 for 64^3); this size fits pilot, unity, smush",
+         "for 16^3, 512x512 for 64^3); this size fits unreal, unity, smush",
          "hald",
          image(256, 16)},
         {"huge-header.png",

@@ -17,25 +17,62 @@ const char* toString(Preset p) {
     case Preset::Smash:
         return "smash";
     case Preset::Pilot:
-        return "pilot";
+        return "filmic";
     case Preset::Lecture:
-        return "lecture";
+        return "cinematic";
     case Preset::None:
         return "none";
     }
     return "?";
 }
 
+std::vector<std::string> presetAliases(Preset p) {
+    switch (p) {
+    case Preset::Pilot:
+        return {"pilot"};
+    case Preset::Lecture:
+        return {"lecture"};
+    case Preset::Smash:
+    case Preset::None:
+        break;
+    }
+    return {};
+}
+
+const char* describe(Preset p) {
+    switch (p) {
+    case Preset::Smash:
+        return "Smash Ultimate's chain: its bloom, its grading LUT with brighten, sRGB";
+    case Preset::Pilot:
+        return "tone mapping (ACES) and a soft bloom, the LUT, gamma 2.2";
+    case Preset::Lecture:
+        return "exposure, HDR bloom, chromatic aberration, vignette, grain, the LUT, gamma 2.2";
+    case Preset::None:
+        return "display encoding only";
+    }
+    return "";
+}
+
+const std::vector<Preset>& allPresets() {
+    static const std::vector<Preset> presets = {Preset::Smash, Preset::Pilot, Preset::Lecture,
+                                                Preset::None};
+    return presets;
+}
+
 Preset parsePreset(std::string_view n) {
-    if (n == "smash")
-        return Preset::Smash;
-    if (n == "pilot")
-        return Preset::Pilot;
-    if (n == "lecture")
-        return Preset::Lecture;
-    if (n == "none")
-        return Preset::None;
-    throw Error("unknown preset '" + std::string(n) + "' (expected smash, pilot, lecture or none)");
+    std::string names, aliases;
+    for (const Preset p : allPresets()) {
+        if (n == toString(p))
+            return p;
+        for (const std::string& alias : presetAliases(p)) {
+            if (n == alias)
+                return p;
+            aliases += (aliases.empty() ? "" : ", ") + alias;
+        }
+        names += (names.empty() ? "" : ", ") + std::string(toString(p));
+    }
+    throw Error("unknown preset '" + std::string(n) + "' (expected " + names + "; also " + aliases +
+                ")");
 }
 
 namespace {
@@ -50,8 +87,8 @@ const Entry kStages[] = {
     {"exposure", detail::makeExposureStage},
     {"tonemap", detail::makeTonemapStage},
     {"hdr-bloom", detail::makeHdrBloomStage},
-    {"filter-bloom", detail::makeFilterBloomStage},
-    {"sugar-bloom", detail::makeSugarBloomStage},
+    {"soft-bloom", detail::makeFilterBloomStage},
+    {"glow-bloom", detail::makeSugarBloomStage},
     {"smash-bloom", detail::makeSmashBloomStage},
     {"chromatic-aberration", detail::makeChromaticAberrationStage},
     {"vignette", detail::makeVignetteStage},
@@ -59,6 +96,12 @@ const Entry kStages[] = {
     {"smash-grade", detail::makeSmashGradeStage},
     {"lut", detail::makeLutStage},
     {"display", detail::makeDisplayStage},
+};
+
+// Older stage names, still accepted wherever a stage is named.
+const std::vector<std::pair<std::string, std::string>> kStageAliases = {
+    {"filter-bloom", "soft-bloom"},
+    {"sugar-bloom", "glow-bloom"},
 };
 
 bool isBloom(std::string_view n) {
@@ -70,7 +113,7 @@ std::vector<std::string> presetStages(Preset p) {
     case Preset::Smash:
         return {"sanitize", "smash-bloom", "smash-grade", "display"};
     case Preset::Pilot:
-        return {"sanitize", "tonemap", "filter-bloom", "lut", "display"};
+        return {"sanitize", "tonemap", "soft-bloom", "lut", "display"};
     case Preset::Lecture:
         return {"sanitize", "exposure", "hdr-bloom", "chromatic-aberration",
                 "vignette", "grain",    "lut",       "display"};
@@ -92,7 +135,19 @@ const std::vector<std::string>& stageNames() {
     return names;
 }
 
+const std::vector<std::pair<std::string, std::string>>& stageAliases() {
+    return kStageAliases;
+}
+
+std::string_view canonicalStageName(std::string_view name) {
+    for (const auto& [alias, stage] : kStageAliases)
+        if (name == alias)
+            return stage;
+    return name;
+}
+
 std::unique_ptr<Stage> makeStage(std::string_view name) {
+    name = canonicalStageName(name);
     for (const auto& e : kStages)
         if (name == e.name)
             return e.make();
@@ -145,11 +200,12 @@ const Stage* Pipeline::find(std::string_view name) const {
         for (const auto& s : m_stages)
             if (s->enabled() && isBloom(s->name()))
                 return s.get();
-        const char* def = m_preset == Preset::Pilot     ? "filter-bloom"
+        const char* def = m_preset == Preset::Pilot     ? "soft-bloom"
                           : m_preset == Preset::Lecture ? "hdr-bloom"
                                                         : "smash-bloom";
         return find(def);
     }
+    name = canonicalStageName(name);
     for (const auto& s : m_stages)
         if (name == s->name())
             return s.get();
