@@ -2,9 +2,11 @@
 # Installs the Debian packages lutkit needs, only those missing. Idempotent; run as root (or with
 # sudo available). Extra packages may be named as arguments.
 set -euo pipefail
+# desktop-file-utils, libxml2-utils, shared-mime-info: tests/desktop checks the editor's desktop files.
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
-  libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev "$@")
+  libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
+  desktop-file-utils libxml2-utils shared-mime-info "$@")
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

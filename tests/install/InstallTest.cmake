@@ -5,7 +5,8 @@
 #     needs the image module, which must be loaded from the installed lib/lutkit/ (checked with
 #     the dynamic loader's LD_DEBUG=files log, since the build tree's copy would work too);
 #     `lutkit info --json` on both outputs reports the sizes the formats store (16 and 33); the
-#     installed lutkit-editor (when Qt was found) starts and reports the version
+#     installed lutkit-editor (when Qt was found) starts and reports the version, and its .desktop
+#     entry, MIME types and icons are in share/ (the entry's Exec is the installed program)
 #  3. a one-file project (consumer/) configures with find_package(lutkit VERSION) against the
 #     prefix only, builds, and runs (consumer/main.cpp says what it checks)
 cmake_minimum_required(VERSION 3.20)
@@ -65,6 +66,23 @@ if(EXISTS ${prefix}/bin/lutkit-editor)
   run("installed lutkit-editor --version" ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen
       ${prefix}/bin/lutkit-editor --version)
   expect_match("lutkit-editor --version" "lutkit-editor ${VERSION}" "${out}")
+  # The desktop integration (gui/desktop): menu entry, MIME types, icon in every size; the entry's
+  # Exec names the program installed next to it.
+  set(desktop_files share/applications/lutkit-editor.desktop share/mime/packages/lutkit.xml
+                    share/icons/hicolor/scalable/apps/lutkit-editor.svg)
+  foreach(s 16 32 48 64 128 256)
+    list(APPEND desktop_files share/icons/hicolor/${s}x${s}/apps/lutkit-editor.png)
+  endforeach()
+  foreach(f ${desktop_files})
+    if(NOT EXISTS ${prefix}/${f})
+      message(FATAL_ERROR "not installed: ${prefix}/${f}")
+    endif()
+  endforeach()
+  file(STRINGS ${prefix}/share/applications/lutkit-editor.desktop exec REGEX "^Exec=")
+  string(REGEX REPLACE "^Exec=([^ ]+).*" "\\1" exec "${exec}")
+  if(NOT EXISTS ${prefix}/bin/${exec})
+    message(FATAL_ERROR "lutkit-editor.desktop runs '${exec}', not in ${prefix}/bin")
+  endif()
 endif()
 
 # 3. A project built against the installed package, and nothing else.
