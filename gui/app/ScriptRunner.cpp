@@ -16,6 +16,7 @@
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QSaveFile>
@@ -23,6 +24,7 @@
 #include <QStyle>
 #include <QStyleOptionSlider>
 #include <QThread>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <stdexcept>
@@ -30,6 +32,44 @@
 namespace lut::gui {
 
 namespace {
+
+// Answers the modal dialogs a command opens (an export dialog, a question), as the user would
+// with Return (accept: the default button) or Escape (reject), and remembers what they said, so
+// a script never waits for a person.
+class DialogResponder : public QObject {
+public:
+    explicit DialogResponder(QObject* parent) : QObject(parent) {
+        m_timer.setInterval(25);
+        connect(&m_timer, &QTimer::timeout, this, &DialogResponder::poll);
+        m_timer.start();
+    }
+    bool accept = false;
+    QStringList seen;
+
+private:
+    void poll() {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (!modal)
+            for (QWidget* top : QApplication::topLevelWidgets())
+                if (auto* d = qobject_cast<QDialog*>(top); d && d->isVisible() && d->isModal())
+                    modal = d;
+        auto* dialog = qobject_cast<QDialog*>(modal);
+        if (!dialog || !dialog->isVisible())
+            return;
+        QString text = dialog->windowTitle();
+        if (auto* box = qobject_cast<QMessageBox*>(dialog))
+            text += QStringLiteral(": ") + box->text();
+        seen << text;
+        QKeyEvent key(QEvent::KeyPress, accept ? Qt::Key_Return : Qt::Key_Escape, Qt::NoModifier);
+        QApplication::sendEvent(dialog->focusWidget() ? dialog->focusWidget() : dialog, &key);
+        QApplication::processEvents();
+        if (dialog->isVisible()) // the key did not close it (a button without focus policy)
+            accept ? dialog->accept() : dialog->reject();
+    }
+    QTimer m_timer;
+};
+
+DialogResponder* g_responder = nullptr;
 
 struct Failure : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -238,7 +278,10 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         doc->endGesture();
     } else if (cmd == "focus") {
         QWidget* target = widgetByName(w, arg(0));
-        // A spin box takes the focus into its line edit, as a click would.
+        // As a click does: the window becomes the active one (there may be no window manager to
+        // do it), and a spin box takes the focus into its line edit.
+        w.activateWindow();
+        QApplication::setActiveWindow(target->window());
         target->setFocus(Qt::MouseFocusReason);
         QApplication::processEvents();
     } else if (cmd == "type") {
@@ -299,6 +342,10 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         }
     } else if (cmd == "close") {
         w.close();
+    } else if (cmd == "dialogs") {
+        const QString how = arg(0);
+        need(how == "accept" || how == "reject", QStringLiteral("dialogs takes accept or reject"));
+        g_responder->accept = how == "accept";
     } else if (cmd == "print") {
         const QString what = arg(0);
         const PreviewOptions& o = preview->options();
@@ -328,6 +375,10 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         else if (what == "export-path") {
             ExportChoice c;
             out << suggestedExport(w, &c);
+        } else if (what == "dialogs") {
+            out << (g_responder->seen.isEmpty() ? QStringLiteral("(none)")
+                                                : g_responder->seen.join(QStringLiteral(" | ")));
+            g_responder->seen.clear();
         } else if (what == "focus")
             out << (QApplication::focusWidget() ? QApplication::focusWidget()->objectName()
                                                 : QStringLiteral("(none)"));
@@ -349,6 +400,8 @@ int runScript(MainWindow& w, const QString& path, QTextStream& out) {
         return 1;
     }
     const QStringList lines = QString::fromUtf8(f.readAll()).split('\n');
+    DialogResponder responder(&w);
+    g_responder = &responder;
     for (int i = 0; i < lines.size(); ++i) {
         QString line = lines[i];
         if (const int hash = line.indexOf('#'); hash >= 0)
@@ -363,9 +416,11 @@ int runScript(MainWindow& w, const QString& path, QTextStream& out) {
         } catch (const std::exception& e) {
             out << "script:" << (i + 1) << ": " << cmd << ": " << e.what() << "\n";
             out.flush();
+            g_responder = nullptr;
             return 1;
         }
     }
+    g_responder = nullptr;
     return 0;
 }
 
