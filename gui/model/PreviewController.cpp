@@ -61,6 +61,20 @@ void PreviewController::setImage(std::shared_ptr<const Image> stored, bool store
 void PreviewController::requestScene() {
     m_sceneReady = false;
     const int key = scenePreparationKey(m_options);
+    if (m_options.input == SceneKind::Screenshot && m_before.isNull()) {
+        // A screenshot's before picture is the file itself: show it first, while the worker
+        // prepares the scene (a 4K frame takes a second on two cores). If the worker is busy,
+        // the scene request below replaces this one, and makes the picture itself.
+        m_worker->request([this, stored = m_stored]() -> PreviewWorker::Delivery {
+            QImage before = toDisplayImage(*stored);
+            return [this, stored, before] {
+                if (stored == m_stored && m_before.isNull()) {
+                    m_before = before;
+                    emit beforeReady(m_before);
+                }
+            };
+        });
+    }
     // The same preparation with other before options keeps the scene and its proxy.
     std::shared_ptr<const Image> reuse = key == m_sceneKey ? m_scene : nullptr;
     std::shared_ptr<const Image> reuseProxy = key == m_sceneKey ? m_proxy : nullptr;
