@@ -361,9 +361,12 @@ void MainWindow::onFrame(const std::shared_ptr<const PreviewFrame>& frame) {
     m_timeLabel->setText(
         tr("Preview %1 ms (%2)").arg(frame->totalMilliseconds, 0, 'f', 1).arg(res));
     if (m_verbose)
-        std::fprintf(stderr, "preview #%llu: LUT stages %.1f ms, total %.1f ms (%s%s)\n",
-                     static_cast<unsigned long long>(frame->serial), frame->milliseconds,
-                     frame->totalMilliseconds, qPrintable(res),
+        std::fprintf(stderr,
+                     "preview #%llu: export LUT %.1f ms, LUT stages %.1f ms, scopes %.1f ms, "
+                     "total %.1f ms (%s%s)\n",
+                     static_cast<unsigned long long>(frame->serial), frame->targetMilliseconds,
+                     frame->milliseconds, frame->scopesMilliseconds, frame->totalMilliseconds,
+                     qPrintable(res),
                      frame->reusedBeforeLut ? ", cached pre-LUT stages" : ", all stages");
 }
 

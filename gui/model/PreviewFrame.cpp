@@ -38,6 +38,7 @@ std::shared_ptr<const PreviewFrame> renderFrame(const PreviewJob& job) {
             job.target
                 ? job.target
                 : std::make_shared<const TargetLut>(makeTargetLut(job.source, job.options.target));
+        frame->targetMilliseconds = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         if (job.scene && !job.scene->empty()) {
             frame->reusedBeforeLut = job.beforeLut != nullptr;
             frame->beforeLut =
@@ -49,8 +50,11 @@ std::shared_ptr<const PreviewFrame> renderFrame(const PreviewJob& job) {
             frame->milliseconds = r.milliseconds;
             frame->report = QString::fromStdString(r.report);
             frame->display = toDisplayImage(frame->image);
+            const qint64 scopesStart = timer.nsecsElapsed();
             frame->scopes = computeScopes(frame->display);
             frame->clipOverlay = clipOverlay(frame->display);
+            frame->scopesMilliseconds =
+                static_cast<double>(timer.nsecsElapsed() - scopesStart) / 1e6;
         }
     } catch (const std::exception& e) {
         frame->error = QString::fromUtf8(e.what());

@@ -28,12 +28,14 @@ struct PreviewJob {
 };
 
 struct PreviewFrame {
-    Image image;                    // display-encoded float RGBA, what `lutkit preview` writes
-    QImage display;                 // the same as 8-bit for drawing (alpha forced opaque)
-    QImage clipOverlay;             // clipped pixels marked (Scopes.h)
-    Scopes scopes;                  // histogram, parade and clip counts of `display`
-    double milliseconds = 0.0;      // pipeline time (the LUT part when the cache was used)
-    double totalMilliseconds = 0.0; // export LUT + pipeline + 8-bit conversion + scopes
+    Image image;                     // display-encoded float RGBA, what `lutkit preview` writes
+    QImage display;                  // the same as 8-bit for drawing (alpha forced opaque)
+    QImage clipOverlay;              // clipped pixels marked (Scopes.h)
+    Scopes scopes;                   // histogram, parade and clip counts of `display`
+    double milliseconds = 0.0;       // pipeline time (the LUT part when the cache was used)
+    double totalMilliseconds = 0.0;  // export LUT + pipeline + 8-bit conversion + scopes
+    double targetMilliseconds = 0.0; // the export LUT (0 when the job carried it)
+    double scopesMilliseconds = 0.0; // scopes and clipping overlay
     int proxyFactor = 1;
     quint64 serial = 0;
     QString error; // non-empty if the render threw; image and display are then empty

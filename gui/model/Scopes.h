@@ -1,7 +1,8 @@
 #pragma once
 // What the scopes dock draws, computed from a preview frame's 8-bit picture on the preview worker
 // (PreviewFrame), so they follow every frame without work on the UI thread:
-//   histogram  counts of each 8-bit level per channel R, G, B and Rec.709 luma;
+//   histogram  counts of each 8-bit level per channel R, G, B and Rec.709 luma (integer
+//              weights 54, 183, 19 of 256);
 //   parade     R, G and B side by side, each `columns` wide and 256 high: for each column of the
 //              picture (resampled to `columns`) how many pixels have each level, as brightness;
 //   clipping   pixels with a channel at 255 (clipped high) or at 0 (clipped low), and an overlay
