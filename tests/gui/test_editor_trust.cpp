@@ -338,9 +338,12 @@ private slots:
         for (int y = 0; y < 2160; ++y)
             for (int x = 0; x < 3840; ++x) {
                 float* p = img.pixel(x, y);
-                p[0] = float(x) / 3839.0f;
-                p[1] = float(y) / 2159.0f;
-                p[2] = float((x * 7 ^ y * 13) & 255) / 255.0f;
+                // Gradients with noise: a PNG as hard to decode as a rendered screenshot.
+                const unsigned n = (unsigned(x) * 73856093u) ^ (unsigned(y) * 19349663u);
+                const unsigned h = (n ^ (n >> 13)) * 0x5bd1e995u;
+                p[0] = std::min(1.0f, float(x) / 3839.0f + float(h & 15) / 255.0f);
+                p[1] = std::min(1.0f, float(y) / 2159.0f + float((h >> 4) & 15) / 255.0f);
+                p[2] = float((h >> 8) & 255) / 255.0f;
                 p[3] = 1.0f;
             }
         const QString path = dir.filePath("frame4k.png");
