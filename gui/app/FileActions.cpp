@@ -12,6 +12,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FormatRegistry.h"
+#include "lut/io/Layout.h"
 
 #include <QApplication>
 #include <QDir>
@@ -358,8 +359,10 @@ void FileActions::openLutDialog() {
     if (stripLayoutIsAmbiguous(path)) {
         // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
         // agree (a heavy grade can fool it).
-        const QStringList items = {tr("Detect automatically"), QStringLiteral("pilot"),
-                                   QStringLiteral("unity"), QStringLiteral("smush")};
+        QStringList items = {tr("Detect automatically")};
+        for (LutLayout l : allLayouts())
+            if (l != LutLayout::Hald)
+                items << QString::fromLatin1(toString(l));
         bool ok = false;
         const QString item = QInputDialog::getItem(
             m_window, tr("Strip layout"),
