@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ./test.sh   install what is missing, build, and run the whole test suite with ctest.
-# Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer build and fuzzing.
+# Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer builds and fuzzing.
 # Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),
+# ThreadSanitizer build + the threaded code's tests (build-tsan/, scripts/tsan.sh),
 # each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 45) s (build-fuzz/, scripts/fuzz.sh;
 # findings land in build-fuzz/findings/). The last line says ALL PASSED or the stage that failed.
 set -euo pipefail
@@ -23,6 +24,9 @@ if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
   stage="sanitizers"
   echo "== AddressSanitizer + UBSan build and tests (scripts/sanitize.sh)"
   "$root/scripts/sanitize.sh" "$root/build-asan"
+  stage="tsan"
+  echo "== ThreadSanitizer build and the threaded code's tests (scripts/tsan.sh)"
+  "$root/scripts/tsan.sh" "$root/build-tsan"
   stage="fuzzing"
   echo "== Fuzzing each reader for ${LUTKIT_FUZZ_SECONDS:-45} s (scripts/fuzz.sh)"
   "$root/scripts/fuzz.sh" "$root/build-fuzz" "${LUTKIT_FUZZ_SECONDS:-45}"

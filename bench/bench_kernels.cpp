@@ -5,16 +5,15 @@
 // shared with `lutkit bench`). Frame size: LUTKIT_BENCH_WIDTH / LUTKIT_BENCH_HEIGHT (default
 // 3840x2160).
 #include "lut/bench/KernelBench.h"
+#include "lut/bench/OcioLutProcessor.h"
 #include "lut/interp/Sampler.h"
 
-#include <OpenColorIO/OpenColorIO.h>
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
 #include <map>
 #include <memory>
 
-namespace OCIO = OCIO_NAMESPACE;
 using namespace lut;
 
 namespace {
@@ -94,24 +93,12 @@ void BM_Ocio(benchmark::State& state) {
     const Interpolation method = methodArg(state.range(0));
     const int size = static_cast<int>(state.range(1));
     const Lut3D& lut = gradeLut(size);
-    auto t = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(size));
-    for (int b = 0; b < size; ++b)
-        for (int g = 0; g < size; ++g)
-            for (int r = 0; r < size; ++r) {
-                const glm::vec3 e = lut.at(r, g, b);
-                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
-                            static_cast<unsigned long>(b), e.r, e.g, e.b);
-            }
-    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL
-                                                             : OCIO::INTERP_LINEAR);
-    const auto cpu = OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
-        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
+    const OcioLutProcessor ocio(lut, method);
     for (auto _ : state) {
         state.PauseTiming();
         parallelCopy(f.frame, f.work);
         state.ResumeTiming();
-        OCIO::PackedImageDesc desc(f.work.data(), f.frame.width(), f.frame.height(), 4);
-        cpu->apply(desc);
+        ocio.apply(f.work);
         benchmark::ClobberMemory();
     }
     const ErrorStats e = frameError(f.work, f.reference);

@@ -2,6 +2,7 @@
 // on two cores so the editor previews at 30 fps), each smash stage alone, and the other presets.
 // Run: build/bin/lutkit_bench --benchmark_filter=Pipeline
 #include "lut/Image.h"
+#include "lut/bench/SmashChainBench.h"
 #include "lut/pipeline/Pipeline.h"
 
 #include <benchmark/benchmark.h>

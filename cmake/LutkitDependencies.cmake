@@ -1,20 +1,5 @@
 # Finds the Debian-packaged dependencies and papers over their known quirks on Debian 12.
-find_package(Threads REQUIRED)
-find_package(PkgConfig REQUIRED)
-
-# GLM: header-only; Debian ships a config package, fall back to the header.
-find_package(glm CONFIG QUIET)
-if(NOT TARGET glm::glm)
-  find_path(GLM_INCLUDE_DIR glm/glm.hpp REQUIRED)
-  add_library(glm::glm INTERFACE IMPORTED)
-  set_target_properties(glm::glm PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${GLM_INCLUDE_DIR})
-endif()
-
-# OpenColorIO's CMake config is broken on Debian 12: use pkg-config and alias it.
-pkg_check_modules(OCIO REQUIRED IMPORTED_TARGET OpenColorIO)
-if(NOT TARGET OpenColorIO::OpenColorIO)
-  add_library(OpenColorIO::OpenColorIO ALIAS PkgConfig::OCIO)
-endif()
+include(LutkitLibraryDependencies) # Threads, GLM, OpenColorIO
 
 # OpenImageIO's exported target lists /usr/include/opencv4, which need not exist: filter it.
 find_package(OpenImageIO CONFIG REQUIRED)

@@ -12,6 +12,7 @@
 
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
+#include "lut/pipeline/Pipeline.h"
 
 #include "lut/Version.h"
 
@@ -69,8 +70,11 @@ int main(int argc, char** argv) {
     parser.setApplicationDescription(QStringLiteral(
         "Preview a colour grading LUT on a screenshot as the game shows it, adjust it "
         "and export it."));
+    // The options speak lutkit's vocabulary (-V/--version, -v/--verbose, --interp); any bad usage
+    // exits 2, as lutkit does.
     const QCommandLineOption helpOpt = parser.addHelpOption();
-    const QCommandLineOption versionOpt = parser.addVersionOption();
+    QCommandLineOption versionOpt({QStringLiteral("V"), QStringLiteral("version")},
+                                  QStringLiteral("Print the version and exit."));
     parser.addPositionalArgument(QStringLiteral("image"),
                                  QStringLiteral("Screenshot or render to preview."),
                                  QStringLiteral("[IMAGE"));
@@ -87,13 +91,25 @@ int main(int argc, char** argv) {
         QStringLiteral(
             "Write the full-resolution preview image to FILE (as lutkit preview does) and exit."),
         QStringLiteral("FILE"));
+    QString presets, oldPresets;
+    for (const lut::Preset p : lut::allPresets()) {
+        presets += (presets.isEmpty() ? "" : ", ") + QString::fromLatin1(lut::toString(p));
+        for (const auto& alias : lut::presetAliases(p))
+            oldPresets += (oldPresets.isEmpty() ? "" : ", ") + QString::fromStdString(alias);
+    }
     QCommandLineOption presetOpt(
         QStringLiteral("preset"),
-        QStringLiteral("Preview preset: smash, pilot, lecture or none (default smash)."),
+        QStringLiteral("Preview preset: %1 (default smash; also %2). smash is the Smash target; "
+                       "another preset is an engine's chain (target engine).")
+            .arg(presets, oldPresets),
         QStringLiteral("NAME"), QStringLiteral("smash"));
+    QString interps;
+    for (const auto m : {lut::Interpolation::Nearest, lut::Interpolation::Trilinear,
+                         lut::Interpolation::Tetrahedral})
+        interps += (interps.isEmpty() ? "" : ", ") + QString::fromLatin1(lut::toString(m));
     QCommandLineOption interpOpt(
-        QStringLiteral("interpolation"),
-        QStringLiteral("LUT interpolation: trilinear, tetrahedral or nearest."),
+        {QStringLiteral("interp"), QStringLiteral("interpolation")},
+        QStringLiteral("LUT interpolation: %1 (default trilinear).").arg(interps),
         QStringLiteral("NAME"), QStringLiteral("trilinear"));
     QCommandLineOption noBloomOpt(QStringLiteral("no-bloom"), QStringLiteral("Switch bloom off."));
     QCommandLineOption noLutOpt(QStringLiteral("no-lut"),
@@ -118,7 +134,7 @@ int main(int argc, char** argv) {
     QCommandLineOption zoomOpt(QStringLiteral("zoom"),
                                QStringLiteral("fit (default) or a percentage such as 100."),
                                QStringLiteral("ZOOM"), QStringLiteral("fit"));
-    QCommandLineOption verboseOpt(QStringLiteral("verbose"),
+    QCommandLineOption verboseOpt({QStringLiteral("v"), QStringLiteral("verbose")},
                                   QStringLiteral("Log each preview update's time to stderr."));
     QCommandLineOption targetOpt(
         QStringLiteral("target"),
@@ -135,9 +151,9 @@ int main(int argc, char** argv) {
         QStringLiteral("Run the commands in FILE on the window (one per line; see the editor's "
                        "docs), print what they print, exit 0 when all worked."),
         QStringLiteral("FILE"));
-    parser.addOptions({shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt, noBrightenOpt,
-                       sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt, targetOpt,
-                       inputOpt, scriptOpt});
+    parser.addOptions({versionOpt, shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt,
+                       noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt,
+                       targetOpt, inputOpt, scriptOpt});
     if (!parser.parse(arguments)) {
         std::fprintf(stderr, "lutkit-editor: %s\nRun 'lutkit-editor --help' for usage.\n",
                      qPrintable(parser.errorText()));

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job of ./run.sh: a neutral 16^3 LUT in every native format, and the bundled sample grade
-# converted to a Smash nutexb and a pilot 256x16 strip PNG, with the error each conversion cost.
+# converted to a Smash nutexb and an Unreal 256x16 strip PNG, with the error each conversion cost.
 # Usage: scripts/main-job.sh LUTKIT OUTDIR
 set -euo pipefail
 if [ $# -ne 2 ]; then
@@ -18,7 +18,7 @@ bytes() { stat -c %s "$1"; }
 # name | lutkit neutral options
 neutrals=(
   "neutral_16.cube|"
-  "neutral_16_pilot.png|--layout pilot"
+  "neutral_16_unreal.png|--layout unreal"
   "neutral_16_unity.png|--layout unity"
   "neutral_16_smush.png|--layout smush"
   "neutral_16_hald.png|--layout hald"
@@ -58,4 +58,4 @@ convert() {
 }
 echo "== $sample converted"
 convert sample_grade.nutexb
-convert sample_grade_pilot.png --layout pilot --size 16
+convert sample_grade_unreal.png --layout unreal --size 16

@@ -6,12 +6,14 @@
 #include <vector>
 
 namespace lut::formats {
-// .cube, Adobe and Resolve dialects (CubeFormat.cpp).
+// .cube, Adobe and Resolve dialects (cube/CubeFormat.cpp).
 std::unique_ptr<Format> makeCubeFormat();
-// OpenColorIO bridge (OcioFormat.cpp): one reader for every extension OCIO reads but .cube,
-// and one writer per format OCIO's Baker bakes.
+// OpenColorIO bridge: one reader for every extension OCIO reads but .cube (OcioReader.cpp), and
+// one writer per format OCIO's Baker bakes (OcioBaker.cpp) plus .spi3d, which OCIO reads but
+// cannot bake (Spi3dFormat.cpp; part of the makeOcioBakeFormats list).
 std::unique_ptr<Format> makeOcioReadFormat();
 std::vector<std::unique_ptr<Format>> makeOcioBakeFormats();
+std::unique_ptr<Format> makeSpi3dFormat();
 
 // LUT images in named layouts (StripFormat.cpp), Hald images (HaldFormat.cpp), nutexb volumes
 // (NutexbFormat.cpp).

@@ -9,7 +9,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
 #include "lut/ops/AdjustmentList.h"
-#include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
 
 #include <QFile>
 #include <QFileInfo>

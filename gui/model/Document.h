@@ -64,7 +64,7 @@ public:
     // untitled and modified (it exists only in memory). `origin` names where it came from.
     void startFrom(Lut3D base, const QString& origin);
     // Starts from the LUT extracted from a screenshot that carries an embedded, edited patch
-    // (lut/roundtrip/Embed.h, raw target). Returns the extractor's warnings to show. Throws
+    // (lut/roundtrip/Extract.h, raw target). Returns the extractor's warnings to show. Throws
     // lut::Error (document unchanged) when the image cannot be read or holds no patch.
     QStringList startFromScreenshot(const QString& path);
 

@@ -41,7 +41,9 @@ TEST(CliInfo, JsonFieldsOfTheSampleGrade) {
     EXPECT_GE(js["value_min"].number, 0.0);
     EXPECT_LE(js["value_max"].number, 1.0);
     EXPECT_LT(js["value_min"].number, js["value_max"].number);
-    EXPECT_EQ(js["source_bit_depth"].number, 0);
+    // Text values are floating point: 32-bit float, not "0" (issue 18).
+    EXPECT_EQ(js["source_bit_depth"].number, 32);
+    EXPECT_TRUE(js["float"].boolean);
     EXPECT_EQ(js["comments"].type, lut::test::json::Value::Type::Number);
 }
 
@@ -58,6 +60,7 @@ TEST(CliInfo, NeutralIsExactAndEightBitNeutralIsNear) {
     EXPECT_EQ(js["format"].string, "ocio");
     EXPECT_EQ(js["neutral"].string, "near");
     EXPECT_EQ(js["source_bit_depth"].number, 12);
+    EXPECT_FALSE(js["float"].boolean);
     EXPECT_EQ(js["size"].number, 17);
 }
 

@@ -1,6 +1,6 @@
-// The shared physical-line reader (formats/src/TextLineReader.h): line numbers and columns as an
-// editor shows them across LF, CR LF, lone CR, BOM, blank lines; bounded look at long lines.
-#include "../../formats/src/cube/TextLineReader.h"
+// The shared physical-line reader (formats/src/cube/TextLineReader.h): line numbers and columns as
+// an editor shows them across LF, CR LF, lone CR, BOM, blank lines; bounded look at long lines.
+#include "cube/TextLineReader.h"
 
 #include <gtest/gtest.h>
 

@@ -3,6 +3,8 @@
 // (tests/data/nutexb/make_corpus.py), options, and exact 8-bit round trips.
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
+#include "nutexb/BlockLinear.h"
+#include "nutexb/NutexbCodec.h"
 
 #include "TestSupport.h"
 

@@ -1,8 +1,8 @@
 // The malformed nutexb corpus (tests/data/nutexb/bad_*.nutexb, one defect per file, built by
 // make_corpus.py): each is refused with an error naming the file, the field, the value found and
 // what was expected.
-#include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
+#include "nutexb/NutexbCodec.h"
 
 #include "TestSupport.h"
 

@@ -1,24 +1,26 @@
 #pragma once
-// Fuzz target for the CLI's argument handling: the real subcommand set-up files
-// (cli/setup_*.inc, where CLI11 converts and checks numbers and words) parse fuzzed argument
-// lists, with each run function replaced by a stub that checks what validation promised (a
-// --size that got through is 2..256, --bit-depth 8/16/32, --interp a name parseInterpolation
-// knows). CLI11 must turn any bad argument into a CLI::ParseError (exit code 2 in main.cpp);
+// Fuzz target for the CLI's argument handling: the real command line (lutkit_cli's
+// lut::cli::CommandLine, where CLI11 converts and checks numbers and words) parses fuzzed argument
+// lists, with each run function replaced by a hook that checks what validation promised (a --size
+// that got through is 2..256, --bit-depth 8/16/32, a layout, interpolation or preset that is one
+// of the library's values). CLI11 must turn any bad argument into a CLI::ParseError (exit code 2);
 // any other exception escaping is a finding.
-//
-// Include this from exactly one translation unit: it defines the stub run functions.
-#include "lut/Error.h"
-#include "lut/interp/Interpolation.h"
+#include "CommandLine.h"
+
+#include "lut/pipeline/Pipeline.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-namespace lut::fuzz::cli_stub {
+namespace lut::fuzz {
+
+namespace cli_stub {
 
 inline void check(bool ok, const char* what) {
     if (!ok) {
@@ -26,101 +28,106 @@ inline void check(bool ok, const char* what) {
         std::abort();
     }
 }
-inline void checkSize(int size) {
-    check(size == 0 || (size >= 2 && size <= 256), "--size outside 2..256");
+inline void checkSize(int size, int lo = 2, int hi = 256) {
+    check(size == 0 || (size >= lo && size <= hi), "--size outside its range");
 }
 inline void checkBitDepth(int bits) {
     check(bits == 0 || bits == 8 || bits == 16 || bits == 32, "--bit-depth not 8/16/32");
 }
-inline void checkInterp(const std::string& name) {
-    try {
-        (void)lut::parseInterpolation(name);
-    } catch (const lut::Error&) {
-        check(false, "--interp that parseInterpolation refuses");
+inline void checkInterp(Interpolation m) {
+    check(m == Interpolation::Nearest || m == Interpolation::Trilinear ||
+              m == Interpolation::Tetrahedral,
+          "--interp that is no interpolation");
+}
+inline void checkLayout(const std::optional<LutLayout>& l) {
+    if (l) {
+        const auto all = allLayouts();
+        check(std::find(all.begin(), all.end(), *l) != all.end(), "a layout that is none");
     }
 }
 
-inline int g_exitCode = 0;
-template <class Fn> void guarded(Fn&& fn) {
-    g_exitCode = fn();
+inline lut::cli::RunHooks hooks() {
+    using namespace lut::cli;
+    RunHooks h;
+    h.neutral = [](const NeutralOptions& o) {
+        checkSize(o.size);
+        checkBitDepth(o.bitDepth);
+        checkLayout(o.layout);
+        return 0;
+    };
+    h.convert = [](const ConvertOptions& o) {
+        checkSize(o.size);
+        checkBitDepth(o.bitDepth);
+        checkInterp(o.interp);
+        checkLayout(o.layout);
+        checkLayout(o.inLayout);
+        return 0;
+    };
+    h.info = [](const InfoOptions& o) {
+        checkSize(o.size);
+        checkLayout(o.inLayout);
+        return 0;
+    };
+    h.validate = [](const ValidateOptions& o) {
+        checkLayout(o.inLayout);
+        return 0;
+    };
+    h.apply = [](const ApplyOptions& o) {
+        checkInterp(o.interp);
+        checkLayout(o.lutLayout);
+        check(o.threads >= 0 && o.threads <= 1024, "--threads outside 0..1024");
+        return 0;
+    };
+    h.preview = [](const PreviewOptions& o) {
+        checkInterp(o.interp);
+        checkBitDepth(o.bitDepth);
+        const auto presets = allPresets();
+        check(std::find(presets.begin(), presets.end(), o.preset) != presets.end(),
+              "--preset that is none");
+        // Every stage setting that got through must be one the pipeline takes ("bloom.*" names
+        // the preset's bloom stage, checked only when the pipeline is built: exit 2 there).
+        try {
+            PipelineSettings s;
+            s.preset = o.preset;
+            for (const auto& a : o.stageSettings)
+                if (a.rfind("bloom.", 0) != 0)
+                    s.assignments.push_back(a);
+            s.enable = o.enable;
+            Pipeline p(s);
+        } catch (const lut::Error&) {
+            check(false, "--stage/--enable the pipeline refuses");
+        }
+        return 0;
+    };
+    h.embed = [](const EmbedOptions& o) {
+        checkSize(o.size, 5, 64);
+        checkLayout(o.layout);
+        return 0;
+    };
+    h.extract = [](const ExtractOptions& o) {
+        checkSize(o.size);
+        checkLayout(o.layout);
+        return 0;
+    };
+    h.fit = [](const FitOptions& o) {
+        checkSize(o.size, 2, 129);
+        checkLayout(o.layout);
+        return 0;
+    };
+    h.bench = [](const BenchOptions& o) {
+        for (const int s : o.sizes)
+            checkSize(s);
+        for (const Interpolation m : o.methods)
+            checkInterp(m);
+        return 0;
+    };
+    return h;
 }
 
-} // namespace lut::fuzz::cli_stub
+} // namespace cli_stub
 
-// The setup files call guarded(...) unqualified, as in main.cpp.
-using lut::fuzz::cli_stub::guarded;
-
-#if __has_include("../../cli/setup_neutral.inc")
-#include "../../cli/setup_neutral.inc"
-int lut::cli::runNeutral(const NeutralOptions& o) {
-    lut::fuzz::cli_stub::checkSize(o.size);
-    lut::fuzz::cli_stub::checkBitDepth(o.bitDepth);
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_convert.inc")
-#include "../../cli/setup_convert.inc"
-int lut::cli::runConvert(const ConvertOptions& o) {
-    lut::fuzz::cli_stub::checkSize(o.size);
-    lut::fuzz::cli_stub::checkBitDepth(o.bitDepth);
-    lut::fuzz::cli_stub::checkInterp(o.interp);
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_info.inc")
-#include "../../cli/setup_info.inc"
-int lut::cli::runInfo(const InfoOptions& o) {
-    lut::fuzz::cli_stub::checkSize(o.size);
-    return 0;
-}
-#endif
-
-#if __has_include("../../cli/setup_validate.inc")
-#include "../../cli/setup_validate.inc"
-int lut::cli::runValidate(const ValidateOptions&) {
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_apply.inc")
-#include "../../cli/setup_apply.inc"
-int lut::cli::runApply(const ApplyOptions&) {
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_preview.inc")
-#include "../../cli/setup_preview.inc"
-int lut::cli::runPreview(const PreviewOptions&) {
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_embed.inc")
-#include "../../cli/setup_embed.inc"
-int lut::cli::runEmbed(const EmbedOptions&) {
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_extract.inc")
-#include "../../cli/setup_extract.inc"
-int lut::cli::runExtract(const ExtractOptions&) {
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_fit.inc")
-#include "../../cli/setup_fit.inc"
-int lut::cli::runFit(const FitOptions&) {
-    return 0;
-}
-#endif
-#if __has_include("../../cli/setup_bench.inc")
-#include "../../cli/setup_bench.inc"
-int lut::cli::runBench(const BenchOptions&) {
-    return 0;
-}
-#endif
-
-namespace lut::fuzz {
-
-// The bytes are the argument list after "lutkit", split at NUL and newline.
+// The bytes are the argument list after "lutkit", split at NUL and newline. Returns whether the
+// command line parsed (false: a usage error, exit code 2 in lutkit).
 inline bool runCliArgs(const std::uint8_t* data, std::size_t size) {
     std::vector<std::string> args{"lutkit"};
     std::string cur;
@@ -141,43 +148,12 @@ inline bool runCliArgs(const std::uint8_t* data, std::size_t size) {
     for (auto& a : args)
         argv.push_back(a.data());
 
-    CLI::App app{"lutkit", "lutkit"};
-    app.require_subcommand(1);
-#if __has_include("../../cli/setup_neutral.inc")
-    setupNeutral(app);
-#endif
-#if __has_include("../../cli/setup_convert.inc")
-    setupConvert(app);
-#endif
-#if __has_include("../../cli/setup_info.inc")
-    setupInfo(app);
-#endif
-#if __has_include("../../cli/setup_validate.inc")
-    setupValidate(app);
-#endif
-#if __has_include("../../cli/setup_apply.inc")
-    setupApply(app);
-#endif
-#if __has_include("../../cli/setup_preview.inc")
-    setupPreview(app);
-#endif
-#if __has_include("../../cli/setup_embed.inc")
-    setupEmbed(app);
-#endif
-#if __has_include("../../cli/setup_extract.inc")
-    setupExtract(app);
-#endif
-#if __has_include("../../cli/setup_fit.inc")
-    setupFit(app);
-#endif
-#if __has_include("../../cli/setup_bench.inc")
-    setupBench(app);
-#endif
+    lut::cli::CommandLine cli(cli_stub::hooks());
     try {
-        app.parse(static_cast<int>(argv.size()), argv.data());
-        return true;
+        cli.app().parse(static_cast<int>(argv.size()), argv.data());
+        return !cli.app().get_subcommands().empty();
     } catch (const CLI::ParseError&) {
-        return false; // exit code 2 in main.cpp
+        return false; // exit code 2 in lutkit
     }
 }
 

@@ -10,10 +10,10 @@
 #include "lut/Limits.h"
 #include "lut/LutFile.h"
 #include "lut/formats/Cube.h"
-#include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Format.h"
+#include "nutexb/NutexbCodec.h"
 
 #include <OpenImageIO/imageio.h>
 

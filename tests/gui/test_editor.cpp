@@ -13,6 +13,7 @@
 #include "WindowActions.h"
 
 #include "lut/Quantize.h"
+#include "lut/Version.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
@@ -213,7 +214,7 @@ private slots:
             const auto layout = dlg.options().layout;
             QCOMPARE(layout ? QString::fromLatin1(toString(*layout)) : QString(), c.layout);
         }
-        for (const char* l : {"pilot", "unity", "smush"})
+        for (const char* l : {"unreal", "unity", "smush"})
             QVERIFY2(layouts.contains(QLatin1String(l)), l);
         // For Smash the dialog starts on the game's file.
         ExportDialog smash(ExportTarget::Smash, naming);
@@ -525,6 +526,35 @@ private slots:
         qInfo("CPU time per update (all threads), full: %s ms; proxy: %s ms; hardware threads %d",
               qPrintable(fmt(fullCpu)), qPrintable(fmt(proxyCpu)), QThread::idealThreadCount());
         QCOMPARE(w.currentFrame()->image.width(), 1920);
+    }
+
+    // lutkit-editor's command line speaks lutkit's vocabulary (issue 18): -V is the version, -v
+    // verbose, --interp the interpolation (--interpolation still works), any bad usage exits 2.
+    void commandLineSpeaksLutkitsVocabulary() {
+        QString out, err;
+        auto run = [&out, &err](const QStringList& args) {
+            QProcess p;
+            p.start(QStringLiteral(LUTKIT_EDITOR), args);
+            if (!p.waitForFinished(120000))
+                return -1;
+            out = QString::fromLocal8Bit(p.readAllStandardOutput());
+            err = QString::fromLocal8Bit(p.readAllStandardError());
+            return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+        };
+        QCOMPARE(run({QStringLiteral("-V")}), 0);
+        QCOMPARE(out, QStringLiteral("lutkit-editor " LUTKIT_VERSION "\n"));
+        QCOMPARE(run({QStringLiteral("--no-such-option")}), 2);
+        QVERIFY2(err.contains(QLatin1String("no-such-option")), qPrintable(err));
+        QCOMPARE(run({QStringLiteral("--preset"), QStringLiteral("bogus")}), 2);
+        QCOMPARE(run({QStringLiteral("--interp"), QStringLiteral("cubic")}), 2);
+        const QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("p.png"));
+        for (const QString& interp :
+             {QStringLiteral("--interp"), QStringLiteral("--interpolation")})
+            QCOMPARE(run({QStringLiteral("-v"), QStringLiteral("--save-preview"), png, interp,
+                          QStringLiteral("tetrahedral"), QStringLiteral("--preset"),
+                          QStringLiteral("filmic"), samplePath("sample_scene.png")}),
+                     0);
     }
 };
 

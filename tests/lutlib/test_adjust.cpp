@@ -1,5 +1,6 @@
 // LUT authoring adjustments against plain float64 formulas written out here, independently of
 // lutlib/src/ops/Adjust.cpp (which composes, clamps and skips neutral steps).
+#include "lut/Limits.h"
 #include "lut/ops/Adjust.h"
 
 #include <gtest/gtest.h>
@@ -153,7 +154,7 @@ TEST(Adjust, ExtremeEntriesStayFinite) {
         const dvec3 o = lut::adjustColor(e, a);
         for (int c = 0; c < 3; ++c) {
             EXPECT_TRUE(std::isfinite(o[c]));
-            EXPECT_LE(std::abs(o[c]), lut::kAdjustMaxValue);
+            EXPECT_LE(std::abs(o[c]), lut::limits::kMaxColorValue);
         }
     }
     // NaN parameters fall back to neutral.

@@ -4,6 +4,8 @@
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/CompareLuts.h"
+#include "lut/ops/QuantizeLut.h"
 #include "lut/ops/Resample.h"
 
 #include <gtest/gtest.h>

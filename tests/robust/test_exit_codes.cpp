@@ -1,6 +1,7 @@
 // Exit codes, as documented in the README: 0 success, 1 bad input or failed operation, 2 bad
-// usage. For every subcommand: an unknown option (2), a missing file (1), a malformed file (1)
-// and a success (0), each with the first words of its message.
+// usage (any: unknown command or option, bad value, missing argument). For every subcommand: an
+// unknown option (2), a missing file (1), a malformed file (1) and a success (0), each with the
+// first words of its message.
 #include "RobustSupport.h"
 
 #include <OpenImageIO/imageio.h>
@@ -57,14 +58,27 @@ TEST(ExitCodes, EverySubcommand) {
         // usage of lutkit itself
         {"", 2, "A subcommand is required"},
         {"--version", 0, ""},
+        {"-V", 0, ""},
+        {"help", 0, ""},
+        {"help convert", 0, ""},
+        {"help nosuch", 2, "unknown command 'nosuch'"},
+        {"nuetral @/n.cube", 2, "lutkit: unknown command 'nuetral'; did you mean 'neutral'?"},
+        {"convert @/a.cube @/x.cube --layuot unreal", 2, "did you mean '--layout'?"},
         {"neutral", 2, "OUT is required"},
         {"neutral @/x.cube --size 1", 2, "--size: Value 1 not in range 2 to 256"},
-        {"convert @/a.cube @/x.cube --interp cubic", 2, "--interp: cubic not in"},
+        {"convert @/a.cube @/x.cube --interp cubic", 2, "--interp: unknown interpolation 'cubic'"},
         // an unknown layout is bad usage like an unknown format (it used to exit 1)
-        {"info @/img.png --layout diagonal", 2,
-         "lutkit: --layout: unknown layout 'diagonal' (expected pilot, unreal, godot, unity, "
-         "smush, lattice or hald)"},
-        {"convert @/a.cube @/x.png --layout diagonal", 2, "lutkit: --layout: unknown layout"},
+        {"info @/img.png --in-layout diagonal", 2,
+         "lutkit info: --in-layout: unknown layout 'diagonal' (expected unreal, unity, smush or "
+         "hald; also pilot, godot, lattice)"},
+        {"convert @/a.cube @/x.png --layout unrel", 2,
+         "lutkit convert: --layout: unknown layout 'unrel'; did you mean 'unreal'?"},
+        {"preview @/img.png @/p.png --preset lectur", 2, "did you mean 'lecture'?"},
+        // --format is the output everywhere: the old input meaning names the new option
+        {"info @/a.cube --format cube", 2, "name its format with --in-format"},
+        {"validate @/a.cube --format cube", 2, "name their format with --in-format"},
+        {"info @/a.cube --layout unreal", 2, "name its layout with --in-layout"},
+        {"info @/a.cube --in-format cube", 0, ""},
         // neutral (no input file: a folder that does not exist stands for the missing file)
         {"neutral @/n.cube --no-such-option", 2, unexpected},
         {"neutral @/nowhere/n.cube", 1,

@@ -56,13 +56,14 @@ TEST(Limits, NutexbWidth2Pow31IsRefusedNamingTheLimit) {
     writeBytes(dir + "/wide.nutexb", nutexbFile(f, 1024));
     EXPECT_EQ(stripDir(readError(dir + "/wide.nutexb"), dir),
               "wide.nutexb: nutexb width: found 2147483648, expected a LUT size 2..256");
-    // Only the width is huge: refused on the first field that departs, still before allocating.
+    // Only the width is huge: refused naming the width (the field that disagrees with the two
+    // others), still before allocating.
     NutexbFields g;
     g.width = 1u << 31;
     writeBytes(dir + "/wide2.nutexb", nutexbFile(g, 1024));
-    EXPECT_EQ(
-        stripDir(readError(dir + "/wide2.nutexb"), dir),
-        "wide2.nutexb: nutexb height: found 2, expected 2147483648 (equal to width for a LUT)");
+    EXPECT_EQ(stripDir(readError(dir + "/wide2.nutexb"), dir),
+              "wide2.nutexb: nutexb width: found 2147483648, expected 2 (equal to height and "
+              "depth for a LUT)");
 }
 
 TEST(Limits, NutexbFileLargerThanAny256CubeIsRefusedBeforeReading) {

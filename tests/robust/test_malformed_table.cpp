@@ -56,6 +56,16 @@ std::function<void(const std::string&)> image(int w, int h, int channels = 3,
 
 const std::string k8Rows = "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n";
 
+// ASCII text as UTF-16 (big- or little-endian) after the given byte order mark.
+std::string utf16(const std::string& ascii, const std::string& bom, bool bigEndian) {
+    std::string s = bom;
+    for (char c : ascii) {
+        s += bigEndian ? '\0' : c;
+        s += bigEndian ? c : '\0';
+    }
+    return s;
+}
+
 const std::vector<Defect>& table() {
     static const std::vector<Defect> t = {
         // ---- .cube
@@ -152,6 +162,17 @@ const std::vector<Defect>& table() {
          "line-too-long.cube:2:65537: line is longer than the limit of 65536 bytes "
          "(lut::limits::kMaxTextLineBytes) (found '# "
          "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...')"},
+        // A .cube saved as UTF-16 (Windows Notepad's "Unicode"), with or without a byte order
+        // mark, or as UTF-32: named for what it is.
+        {"utf16le-bom.cube", [] { return utf16("LUT_3D_SIZE 2\n" + k8Rows, "\xFF\xFE", false); },
+         "utf16le-bom.cube: the file is UTF-16 text; save it as UTF-8 or ASCII"},
+        {"utf16be-bom.cube", [] { return utf16("LUT_3D_SIZE 2\n" + k8Rows, "\xFE\xFF", true); },
+         "utf16be-bom.cube: the file is UTF-16 text; save it as UTF-8 or ASCII"},
+        {"utf16le-no-bom.cube", [] { return utf16("LUT_3D_SIZE 2\n" + k8Rows, "", false); },
+         "utf16le-no-bom.cube: the file is UTF-16 text; save it as UTF-8 or ASCII"},
+        {"utf32le-bom.cube",
+         [] { return std::string("\xFF\xFE\0\0", 4) + utf16("LUT_3D_SIZE 2\n", "", false); },
+         "utf32le-bom.cube: the file is UTF-32 text; save it as UTF-8 or ASCII"},
         // ---- nutexb (2^3 volumes crafted from nutexb.md)
         {"truncated.nutexb", [] { return std::string(100, '\0'); },
          "truncated.nutexb: nutexb file size: truncated: 100 bytes, expected at least 176 "
@@ -168,6 +189,11 @@ const std::vector<Defect>& table() {
          "depth-1.nutexb: nutexb depth: found 1, expected > 1 (a 2D texture, not a 3D LUT volume)"},
         {"height-differs.nutexb", nut([](NutexbFields& f) { f.height = 4; }),
          "height-differs.nutexb: nutexb height: found 4, expected 2 (equal to width for a LUT)"},
+        // A corrupted width is the width's fault, not the height's: the field that disagrees
+        // with the two others is named.
+        {"width-differs.nutexb", nut([](NutexbFields& f) { f.width = 3; }),
+         "width-differs.nutexb: nutexb width: found 3, expected 2 (equal to height and depth for a "
+         "LUT)"},
         {"width-2p31.nutexb",
          nut([](NutexbFields& f) { f.width = f.height = f.depth = 0x80000000u; }),
          "width-2p31.nutexb: nutexb width: found 2147483648, expected a LUT size 2..256"},
@@ -202,20 +228,20 @@ const std::vector<Defect>& table() {
          "not-an-image.png: cannot read image: Not a PNG file"},
         {"fits-nothing.png",
          {},
-         "fits-nothing.png: image is 100x11, not a LUT image size: pilot, unity and smush need N^2 "
-         "x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)",
+         "fits-nothing.png: image is 100x11, not a LUT image size: unreal, unity and smush need "
+         "N^2 x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)",
          "",
          image(100, 11)},
         {"pilot-wrong-size.png",
          {},
-         "pilot-wrong-size.png: image is 64x64, the pilot layout needs N^2 x N pixels with N "
+         "pilot-wrong-size.png: image is 64x64, the unreal layout needs N^2 x N pixels with N "
          "2..256 (e.g. 256x16, 1024x32); this size fits hald",
          "pilot",
          image(64, 64)},
         {"hald-wrong-size.png",
          {},
          "hald-wrong-size.png: image is 256x16, the hald layout needs L^3 x L^3 pixels (e.g. 64x64 "
-         "for 16^3, 512x512 for 64^3); this size fits pilot, unity, smush",
+         "for 16^3, 512x512 for 64^3); this size fits unreal, unity, smush",
          "hald",
          image(256, 16)},
         {"huge-header.png",
@@ -274,6 +300,13 @@ const std::vector<Defect>& table() {
          "could not be loaded. All formats have been tried. (Enable debug log for errors from all "
          "formats.) The format for the file's extension gave the error: 'cinespace' failed with: "
          "Prelut does not specify valid dimension size on channel '0: 'nonsense' in garbage.csp."},
+        // A reader inside OCIO that believes a size in the file fails with a bare C++ library
+        // message (std::length_error: "vector::reserve"); it is explained.
+        {"huge-size.itx", text("LUT_3D_SIZE 100000\n0 0 0\n"),
+         "huge-size.itx: OpenColorIO cannot read it: The specified transform file 'huge-size.itx' "
+         "could not be loaded. All formats have been tried. (Enable debug log for errors from all "
+         "formats.) The format for the file's extension gave the error: 'iridas_itx' failed with: "
+         "a size declared in the file is too large to allocate (vector::reserve)"},
         {"empty.clf", text(""),
          "empty.clf: OpenColorIO cannot read it: The specified transform file 'empty.clf' could "
          "not be loaded. All formats have been tried. (Enable debug log for errors from all "

@@ -6,10 +6,14 @@
 #include "lut/formats/Registry.h"
 #include "lut/interp/Sampler.h"
 #include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
+#include "lut/roundtrip/PatchFinder.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace lut;
 using namespace lut::rt;
@@ -19,6 +23,11 @@ namespace {
 
 std::string q(const std::string& s) {
     return "'" + s + "'";
+}
+
+std::string fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 std::string writeScreenshot(const std::string& dir, int bitDepth) {
@@ -42,6 +51,28 @@ std::string editFile(const std::string& in, const std::string& out, const Edit& 
 
 } // namespace
 
+TEST(RoundtripCli, LatticeAcceptsGameDisplayAndItsAliasSmash) {
+    const std::string dir = rtDir();
+    const std::string shot = writeScreenshot(dir, 8);
+    std::string bytes[2];
+    int k = 0;
+    for (const char* name : {"game-display", "smash"}) {
+        const std::string out = dir + "/lattice-" + name + ".png";
+        const auto r = runCli("embed " + q(shot) + " " + q(out) + " --lattice " + name);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.out.find("12^3 game-display-lattice"), std::string::npos) << r.out;
+        const auto img = formats::readImage(out);
+        const FindResult f = findPatch(img.image.view());
+        ASSERT_EQ(f.status, FindStatus::Found);
+        EXPECT_EQ(f.placement.lattice, PatchLattice::Smash);
+        bytes[k++] = fileBytes(out);
+    }
+    EXPECT_EQ(bytes[0], bytes[1]);
+    const auto bad =
+        runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --lattice gamedisplay");
+    EXPECT_EQ(bad.exitCode, 2) << bad.err;
+}
+
 TEST(RoundtripCli, EmbedKeepsTheBitDepthAndTheScreenshot) {
     const std::string dir = rtDir();
     for (int depth : {8, 16}) {
@@ -49,7 +80,7 @@ TEST(RoundtripCli, EmbedKeepsTheBitDepthAndTheScreenshot) {
         const std::string out = dir + "/embedded" + std::to_string(depth) + ".png";
         const auto r = runCli("embed " + q(shot) + " " + q(out) + " --corner bottom-right");
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        EXPECT_NE(r.out.find("12^3 smash-lattice"), std::string::npos);
+        EXPECT_NE(r.out.find("12^3 game-display-lattice"), std::string::npos);
         const auto img = formats::readImage(out);
         EXPECT_EQ(img.info.bitDepth, depth);
         const FindResult f = findPatch(img.image.view());

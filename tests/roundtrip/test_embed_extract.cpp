@@ -2,6 +2,9 @@
 #include "RoundtripTestUtil.h"
 
 #include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
+#include "lut/roundtrip/PatchFinder.h"
+#include "lut/roundtrip/PatchReader.h"
 
 #include <gtest/gtest.h>
 

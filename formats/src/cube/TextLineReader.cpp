@@ -1,60 +1,10 @@
 #include "cube/TextLineReader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <climits>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace lut::formats {
-
-FileView::FileView(const std::string& path, std::uint64_t maxBytes) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        throw Error(path + ": cannot open: " + std::strerror(errno));
-    struct stat st {};
-    if (::fstat(fd, &st) != 0) {
-        const int err = errno;
-        ::close(fd);
-        throw Error(path + ": cannot read: " + std::strerror(err));
-    }
-    if (!S_ISREG(st.st_mode)) {
-        ::close(fd);
-        throw Error(path + ": cannot read: not a regular file");
-    }
-    const auto size = static_cast<std::uint64_t>(st.st_size);
-    if (size > maxBytes) {
-        ::close(fd);
-        throw LimitError(path + ": file is " + std::to_string(size) + " bytes, over the limit of " +
-                         std::to_string(maxBytes) + " bytes (lut::limits::kMaxLutFileBytes)");
-    }
-    if (size == 0) {
-        ::close(fd);
-        return;
-    }
-    // Small files are read ahead in one go (fewer page faults); big ones are faulted in as the
-    // reader advances, so a file refused on line 3 costs nothing more.
-    int flags = MAP_PRIVATE;
-    if (size <= (64u << 20))
-        flags |= MAP_POPULATE;
-    void* map = ::mmap(nullptr, static_cast<std::size_t>(size), PROT_READ, flags, fd, 0);
-    const int err = errno;
-    ::close(fd);
-    if (map == MAP_FAILED)
-        throw Error(path + ": cannot map: " + std::strerror(err));
-    ::madvise(map, static_cast<std::size_t>(size), MADV_SEQUENTIAL);
-    m_map = map;
-    m_data = static_cast<const char*>(map);
-    m_size = static_cast<std::size_t>(size);
-}
-
-FileView::~FileView() {
-    if (m_map)
-        ::munmap(m_map, m_size);
-}
 
 TextLineReader::TextLineReader(std::string_view data, std::string path, std::size_t maxLineBytes)
     : m_data(data), m_path(std::move(path)), m_maxLineBytes(maxLineBytes) {

@@ -6,8 +6,8 @@
 // not count as a column. Columns are 1-based byte offsets inside the line.
 //
 // Limits: a line longer than maxLineBytes is refused after looking at maxLineBytes + 2 bytes, so
-// a "line of a gigabyte" costs no more than a normal one. Files are memory-mapped (FileView), so
-// pages are only read when the reader gets there.
+// a "line of a gigabyte" costs no more than a normal one. The reader works on bytes in memory
+// (files are read whole by lut::readFile, never mapped).
 #include "lut/Error.h"
 #include "lut/Limits.h"
 
@@ -18,24 +18,6 @@
 #include <utility>
 
 namespace lut::formats {
-
-// A read-only view of a whole regular file: memory-mapped, or empty for an empty file.
-// Throws lut::Error naming the file if it cannot be opened or is not a regular file, and
-// lut::LimitError (naming the limit) if it is larger than maxBytes.
-class FileView {
-public:
-    explicit FileView(const std::string& path, std::uint64_t maxBytes = limits::kMaxLutFileBytes);
-    ~FileView();
-    FileView(const FileView&) = delete;
-    FileView& operator=(const FileView&) = delete;
-
-    std::string_view bytes() const { return {m_data, m_size}; }
-
-private:
-    const char* m_data = nullptr;
-    std::size_t m_size = 0;
-    void* m_map = nullptr;
-};
 
 enum class LineEnd : std::uint8_t { None, LF, CRLF, CR };
 

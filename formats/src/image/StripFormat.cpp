@@ -1,6 +1,6 @@
 // LUT images: an N^3 LUT stored as a 2D picture in a named layout (strip-layouts.md).
 //
-//   pilot (unreal, godot)  N^2 x N   x = r + N*b, y = g          (green 0 on the top row)
+//   unreal (pilot, godot)  N^2 x N   x = r + N*b, y = g          (green 0 on the top row)
 //   unity                  N^2 x N   x = r + N*b, y = N-1-g      (green 0 on the bottom row)
 //   smush (lattice)        N^2 x N   x = r + N*g, y = b          (Smush-LUT, ociolutimage)
 //   hald                   L^3 x L^3 i = r + N*g + N^2*b, x = i mod L^3, y = i div L^3, N = L^2
@@ -13,22 +13,24 @@
 //
 // Which layout a file is in (nothing in the file says so):
 //  1. FormatOptions::layout when given (an image of the wrong size is refused, naming both).
-//  2. The picture size: L^3 x L^3 fits hald only, N^2 x N fits pilot, unity and smush
+//  2. The picture size: L^3 x L^3 fits hald only, N^2 x N fits unreal, unity and smush
 //     (lut::layoutsForImageSize); other sizes are refused, naming the sizes the layouts need.
 //  3. Among several fitting layouts, read the table in each and ask whether it is "close to
 //     neutral" in the sense that matters for telling layouts apart: each output channel follows
 //     its own input axis. For every layout we take the Pearson correlation of output red with
 //     input r, green with g, blue with b over all N^3 entries; the layout passes when all three
 //     are >= 0.75. A neutral LUT scores 1, 1, 1 in its own layout; in a wrong layout two axes
-//     are swapped (smush vs pilot: green and blue follow the other axis, correlation ~0) or
-//     green runs backwards (unity vs pilot: -1). Ordinary grades (contrast, tint, curves) keep
+//     are swapped (smush vs unreal: green and blue follow the other axis, correlation ~0) or
+//     green runs backwards (unity vs unreal: -1). Ordinary grades (contrast, tint, curves) keep
 //     each channel increasing with its own input, so they pass in their own layout only. If
-//     exactly one layout passes, it is taken and an Info diagnostic says so.
+//     exactly one layout passes, it is taken; an Info diagnostic says so only when it is not
+//     unreal, the default of an N^2 x N strip (a clean default read changes nothing the user
+//     expects, so it needs no note).
 //  4. If none passes (e.g. a black-and-white or strongly cross-channel grade), the image is read
-//     as pilot, the default layout of an N^2 x N strip, with a Warning -- but only when pilot
+//     as unreal, the default layout of an N^2 x N strip, with a Warning -- but only when unreal
 //     scores best or ties (sum of the three correlations, within 0.05); if another layout looks
 //     more plausible, the read is refused with the layouts that fit and their scores, asking for
-//     --layout. Reading never swaps axes silently.
+//     the layout (lutkit: --in-layout). Reading never swaps axes silently.
 #include "Formats.h"
 #include "LutPrep.h"
 #include "image/LutImage.h"
@@ -37,7 +39,9 @@
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/InputFile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -48,7 +52,9 @@ namespace {
 using S = Diagnostic::Severity;
 
 constexpr double kAxisCorrelationMin = 0.75;
-// Sums of correlations closer than this count as a tie (pilot, the default, wins ties).
+// The layout of an N^2 x N strip when nothing else decides: Unreal's 256x16.
+constexpr LutLayout kDefaultStripLayout = LutLayout::Pilot;
+// Sums of correlations closer than this count as a tie (unreal, the default, wins ties).
 constexpr double kScoreTie = 0.05;
 
 std::string fmt2(double v) {
@@ -112,6 +118,18 @@ std::string fitsText(const std::vector<LayoutFit>& fits) {
     return s;
 }
 
+// The layouts of an N^2 x N strip, by the names users type: "unreal, unity and smush".
+std::string stripLayoutNames() {
+    std::string s;
+    const auto layouts = layoutsForImageSize(256, 16);
+    for (std::size_t i = 0; i < layouts.size(); ++i)
+        s += (i == 0                    ? ""
+              : i + 1 == layouts.size() ? " and "
+                                        : ", ") +
+             std::string(toString(layouts[i].layout));
+    return s;
+}
+
 int defaultBitDepth(const std::string& path) {
     const std::string ext = extensionOf(path);
     return ext == ".exr" || ext == ".hdr" ? 32 : 8;
@@ -123,13 +141,15 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                      std::optional<LutLayout> forced) {
     const std::optional<LutLayout> wanted = forced ? forced : options.layout;
 
-    const LoadedImage img = readImage(path);
-    const int w = img.image.width(), h = img.image.height();
-    LutFile file;
-    file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
+    // OpenImageIO opens the file itself: a FIFO, a directory or a device is refused first. The
+    // picture size comes from the header, and a size no LUT layout has is refused before any
+    // pixel is decoded (a small file can claim a huge picture).
+    checkRegularInput(path);
+    const ImageInfo header = readImageInfo(path);
+    const int w = header.width, h = header.height;
     const std::vector<LayoutFit> fits = layoutsForImageSize(w, h);
 
-    LutLayout layout = LutLayout::Pilot;
+    LutLayout layout = kDefaultStripLayout;
     int n = 0;
     if (wanted) {
         layout = *wanted;
@@ -146,14 +166,28 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                         (fits.empty() ? "" : "; this size fits " + fitsText(fits)));
         }
     } else if (fits.empty()) {
-        throw Error(
-            path + ": image is " + sizeText(w, h) +
-            ", not a LUT image size: pilot, unity and smush need N^2 x N (e.g. 256x16), hald needs "
-            "L^3 x L^3 (e.g. 64x64)");
-    } else if (fits.size() == 1) {
+        throw Error(path + ": image is " + sizeText(w, h) +
+                    ", not a LUT image size: " + stripLayoutNames() +
+                    " need N^2 x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)");
+    }
+
+    // The pixels: at most a 256^3 LUT's worth now (65536x256 or 4096x4096).
+    const std::uint64_t pixels = static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h);
+    const LoadedImage img =
+        allocating(path, "decoding the " + sizeText(w, h) + " image",
+                   pixels * (16 + 4 * static_cast<std::uint64_t>(std::max(header.channels, 1))),
+                   [&] { return readImage(path); });
+    if (img.image.width() != w || img.image.height() != h)
+        throw Error(path + ": the file changed while being read (" + sizeText(w, h) +
+                    " when opened, " + sizeText(img.image.width(), img.image.height()) + " now)");
+    LutFile file;
+    file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
+
+    // Without --layout, the layout from the size, or (several fit) from the pixels.
+    if (!wanted && fits.size() == 1) {
         layout = fits.front().layout;
         n = fits.front().size;
-    } else {
+    } else if (!wanted) {
         // Several layouts fit: see the rule in the header comment.
         std::vector<AxisScore> scores;
         std::vector<std::size_t> passing;
@@ -170,40 +204,41 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
         if (passing.size() == 1) {
             layout = fits[passing.front()].layout;
             n = fits[passing.front()].size;
-            file.diagnostics.push_back(makeDiagnostic(
-                S::Info, path,
-                std::string("layout detected: ") + toString(layout) + " (" + sizeText(w, h) +
-                    " fits " + fitsText(fits) + "; only in " + toString(layout) +
-                    " does each output channel follow its own input axis, correlations " + table +
-                    "); pass --layout to override"));
+            if (layout != kDefaultStripLayout)
+                file.diagnostics.push_back(makeDiagnostic(
+                    S::Info, path,
+                    std::string("layout detected: ") + toString(layout) + " (" + sizeText(w, h) +
+                        " fits " + fitsText(fits) + "; only in " + toString(layout) +
+                        " does each output channel follow its own input axis, correlations " +
+                        table + "); name the layout (--in-layout) to override"));
         } else {
             std::size_t best = 0;
             for (std::size_t i = 1; i < fits.size(); ++i)
                 if (scores[i].sum() > scores[best].sum())
                     best = i;
-            std::size_t pilot = fits.size();
+            std::size_t def = fits.size();
             for (std::size_t i = 0; i < fits.size(); ++i)
-                if (fits[i].layout == LutLayout::Pilot)
-                    pilot = i;
-            if (passing.empty() && pilot < fits.size() &&
-                scores[pilot].sum() >= scores[best].sum() - kScoreTie) {
-                layout = LutLayout::Pilot;
-                n = fits[pilot].size;
+                if (fits[i].layout == kDefaultStripLayout)
+                    def = i;
+            if (passing.empty() && def < fits.size() &&
+                scores[def].sum() >= scores[best].sum() - kScoreTie) {
+                layout = kDefaultStripLayout;
+                n = fits[def].size;
                 file.diagnostics.push_back(makeDiagnostic(
                     S::Warning, path,
                     "layout not detectable (" + sizeText(w, h) + " fits " + fitsText(fits) +
                         " and the table is not close to neutral in any: correlations " + table +
-                        "); read as pilot, the default for N^2 x N images; pass --layout if it is "
-                        "another"));
+                        "); read as " + toString(kDefaultStripLayout) +
+                        ", the default for N^2 x N images; name the layout (--in-layout) if it "
+                        "is another"));
             } else {
-                throw Error(
-                    path + ": image is " + sizeText(w, h) + ", which fits the layouts " +
-                    fitsText(fits) +
-                    (passing.empty() ? " and is close to neutral in none of them"
-                                     : " and looks neutral in more than one") +
-                    " (correlation of each output channel with its input axis: " + table +
-                    "); pass --layout " +
-                    (passing.empty() ? std::string("pilot, unity or smush") : fitsText(fits)));
+                throw Error(path + ": image is " + sizeText(w, h) + ", which fits the layouts " +
+                            fitsText(fits) +
+                            (passing.empty() ? " and is close to neutral in none of them"
+                                             : " and looks neutral in more than one") +
+                            " (correlation of each output channel with its input axis: " + table +
+                            "); name the layout (--in-layout): " +
+                            (passing.empty() ? stripLayoutNames() : fitsText(fits)));
             }
         }
     }
@@ -267,9 +302,8 @@ class StripFormat final : public Format {
 public:
     std::string name() const override { return "strip"; }
     std::string description() const override {
-        return "LUT image in a named layout (pilot/unreal/godot, unity, smush/lattice, hald): "
-               "PNG/TIFF 8/16-bit, "
-               "float EXR";
+        return "LUT image in a named layout (unreal/pilot/godot, unity, smush/lattice, hald): "
+               "PNG/TIFF 8/16-bit, float EXR";
     }
     std::vector<std::string> extensions() const override {
         return {".png", ".tif", ".tiff", ".exr"};

@@ -1,5 +1,6 @@
 #pragma once
 // Every size limit and format constant lutlib enforces, in one place.
+#include <cstddef>
 #include <cstdint>
 
 namespace lut::limits {
@@ -15,5 +16,10 @@ constexpr std::size_t kMaxTextLineBytes = 1 << 16;
 constexpr std::uint64_t kMaxImagePixels = 1ull << 28;
 // Largest LUT file a reader will open (a 256^3 .cube with long lines is ~600 MB).
 constexpr std::uint64_t kMaxLutFileBytes = 2ull << 30;
+
+// Largest magnitude a colour value keeps once sanitized, by the preview pipeline (frames) and by
+// the LUT operations (entries): the half-float maximum, what the game's R16G16B16A16_FLOAT render
+// targets can hold; beyond it a value is not a colour any more. NaN becomes 0, +-Inf +-this.
+constexpr float kMaxColorValue = 65504.0f;
 
 } // namespace lut::limits

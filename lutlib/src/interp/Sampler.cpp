@@ -1,20 +1,21 @@
 // Samplers: one class per interpolation, chosen once by makeSampler(). sample() is the scalar
 // reference (the readable definition); applyPixels() runs the SIMD kernel picked at run time for
-// this CPU (src/interp/simd/), which must agree with sample() to float rounding. Both share
-// LatticeMap::locate's arithmetic, so they pick the same cells and fractions.
+// this CPU (src/interp/simd/), which must agree with sample() to float rounding. Both map inputs
+// to cells with the same template (interp/LatticeMapping.h) and pick tetrahedra with the same
+// template (interp/Tetrahedral.h), so they choose the same cells, fractions and tetrahedra.
 #include "lut/interp/Sampler.h"
 
-#include "interp/SamplerDetail.h"
-#include "interp/Tetrahedral.h"
+#include "interp/LatticeMapping.h"
+#include "interp/ScalarLattice.h"
+#include "interp/simd/SimdKernels.h"
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
 #include <atomic>
-#include <cfloat>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 namespace lut {
 
@@ -46,45 +47,12 @@ void Sampler::apply(const ImageView& image, int nthreads) const {
     });
 }
 
-namespace detail {
+namespace {
 
-LatticeMap::LatticeMap(const Lut3D& lut) : size(lut.size()) {
-    for (int c = 0; c < 3; ++c) {
-        const double lo = lut.domainMin()[c], hi = lut.domainMax()[c];
-        double s = (size - 1) / (hi - lo);
-        // Degenerate domain: keep the scale (and the snapping bias) finite in float.
-        if (!(s <= FLT_MAX))
-            s = FLT_MAX;
-        scale[c] = static_cast<float>(s);
-        offset[c] = static_cast<float>(lo);
-        snapBias[c] =
-            static_cast<float>(std::min(std::fabs(lo) * s, static_cast<double>(FLT_MAX) / 4));
-    }
-}
+using detail::KernelFn;
+using detail::KernelTable;
 
-void LatticeMap::locate(glm::vec3 in, int idx[3], float frac[3]) const {
-    const float top = static_cast<float>(size - 1);
-    for (int c = 0; c < 3; ++c) {
-        float t = (in[c] - offset[c]) * scale[c];
-        // NaN and -Inf fail the comparison and land on 0; +Inf clamps to the top.
-        if (!(t > 0.0f))
-            t = 0.0f;
-        if (t > top)
-            t = top;
-        // A lattice input given as a float is off its lattice point by rounding only: snap it.
-        // Round to nearest (t is in [0, 255]); the SIMD kernel rounds ties to even, which picks
-        // a different r only at |t - r| = 0.5, far outside the snapping tolerance.
-        const float r = static_cast<float>(static_cast<int>(t + 0.5f));
-        if (std::fabs(t - r) <= (t + snapBias[c]) * kSnapRelative)
-            t = r;
-        int i = static_cast<int>(t);
-        if (i > size - 2)
-            i = size - 2;
-        idx[c] = i;
-        frac[c] = t - static_cast<float>(i);
-    }
-}
-
+// The table as the kernels read it: RGB plus one float of padding per entry.
 std::vector<float> packTable(const Lut3D& lut) {
     std::vector<float> t(4 * lut.entryCount(), 0.0f);
     const float* src = lut.data();
@@ -93,14 +61,6 @@ std::vector<float> packTable(const Lut3D& lut) {
             t[4 * i + c] = src[3 * i + c];
     return t;
 }
-
-} // namespace detail
-
-namespace {
-
-using detail::KernelFn;
-using detail::KernelTable;
-using detail::LatticeMap;
 
 enum class Isa { Scalar, Avx2 };
 
@@ -127,15 +87,9 @@ Isa chosenIsa() {
 class SamplerBase : public Sampler {
 public:
     SamplerBase(const Lut3D& lut, KernelFn simd)
-        : m_map(lut), m_table(detail::packTable(lut)),
-          m_kernel(chosenIsa() == Isa::Avx2 ? simd : nullptr) {
+        : m_table(packTable(lut)), m_kernel(chosenIsa() == Isa::Avx2 ? simd : nullptr) {
         m_view.rgb = m_table.data();
-        m_view.size = m_map.size;
-        for (int c = 0; c < 3; ++c) {
-            m_view.scale[c] = m_map.scale[c];
-            m_view.offset[c] = m_map.offset[c];
-            m_view.snapBias[c] = m_map.snapBias[c];
-        }
+        m_view.map = detail::makeLatticeMapping(lut);
     }
 
 protected:
@@ -156,12 +110,11 @@ protected:
     }
 
     glm::vec3 e(int r, int g, int b) const {
-        const std::size_t n = static_cast<std::size_t>(m_map.size);
+        const std::size_t n = static_cast<std::size_t>(m_view.map.size);
         const float* p =
             &m_table[4 * (static_cast<std::size_t>(r) + n * (static_cast<std::size_t>(g) + n * b))];
         return glm::vec3(p[0], p[1], p[2]);
     }
-    LatticeMap m_map;
     std::vector<float> m_table;
     KernelTable m_view;
     KernelFn m_kernel;
@@ -177,7 +130,7 @@ public:
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
-        m_map.locate(in, i, f);
+        detail::locate(m_view.map, in, i, f);
         // Round half up to the upper lattice point.
         return e(i[0] + (f[0] >= 0.5f), i[1] + (f[1] >= 0.5f), i[2] + (f[2] >= 0.5f));
     }
@@ -193,7 +146,7 @@ public:
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
-        m_map.locate(in, i, f);
+        detail::locate(m_view.map, in, i, f);
         const int r = i[0], g = i[1], b = i[2];
         // (1-f)*a + f*b returns a exactly at f = 0 and b exactly at f = 1.
         auto lerp = [](const glm::vec3& a, const glm::vec3& c, float t) {
@@ -217,7 +170,7 @@ public:
     glm::vec3 sample(glm::vec3 in) const override {
         int i[3];
         float f[3];
-        m_map.locate(in, i, f);
+        detail::locate(m_view.map, in, i, f);
         return detail::tetrahedralBlend([this](int r, int g, int b) { return e(r, g, b); }, i[0],
                                         i[1], i[2], f[0], f[1], f[2]);
     }

@@ -1,36 +1,42 @@
 #pragma once
-// The tetrahedral blend of one lattice cell, shared by the scalar sampler and the extracted
-// patch function (Embed.cpp), so both interpolate identically.
-#include <glm/vec3.hpp>
+// Internal to lutlib: the tetrahedral blend of one lattice cell, written once for any vector
+// width and used by the scalar sampler, the AVX2 kernel and the round trip's PatchFunction.
+//
+// The cube is split into six tetrahedra by the order of the fractions (fr, fg, fb); each runs
+//     c000 -> c000 + e(max axis) -> c111 - e(min axis) -> c111
+// and shares the main diagonal c000-c111, so greys stay on it. The weights are differences of
+// the sorted fractions, so a corner is returned exactly. Ties pick either tetrahedron; the tied
+// vertex then has weight exactly 0.
+//
+// Free of glm and the standard library, like interp/LatticeMapping.h (the kernels include it).
 
 namespace lut::detail {
 
-// e(r, g, b) returns the entry at a lattice point; (r, g, b) is the cell's lower corner and
-// fr, fg, fb in [0, 1] the position inside it. The cube is split into six tetrahedra by the order
-// of the fractions; each shares the main diagonal c000-c111, so greys stay on it. Every weight is
-// a difference of fractions, so a corner is returned exactly.
-template <class Entry>
-glm::vec3 tetrahedralBlend(const Entry& e, int r, int g, int b, float fr, float fg, float fb) {
-    const glm::vec3 c000 = e(r, g, b);
-    const glm::vec3 c111 = e(r + 1, g + 1, b + 1);
-    if (fr > fg) {
-        if (fg > fb)
-            return (1 - fr) * c000 + (fr - fg) * e(r + 1, g, b) + (fg - fb) * e(r + 1, g + 1, b) +
-                   fb * c111;
-        if (fr > fb)
-            return (1 - fr) * c000 + (fr - fb) * e(r + 1, g, b) + (fb - fg) * e(r + 1, g, b + 1) +
-                   fg * c111;
-        return (1 - fb) * c000 + (fb - fr) * e(r, g, b + 1) + (fr - fg) * e(r + 1, g, b + 1) +
-               fg * c111;
-    }
-    if (fb > fg)
-        return (1 - fb) * c000 + (fb - fg) * e(r, g, b + 1) + (fg - fr) * e(r, g + 1, b + 1) +
-               fr * c111;
-    if (fb > fr)
-        return (1 - fg) * c000 + (fg - fb) * e(r, g + 1, b) + (fb - fr) * e(r, g + 1, b + 1) +
-               fr * c111;
-    return (1 - fg) * c000 + (fg - fr) * e(r, g + 1, b) + (fr - fb) * e(r + 1, g + 1, b) +
-           fb * c111;
+template <class Ops> struct Tetrahedron {
+    using F = typename Ops::Float;
+    using M = typename Ops::Mask;
+    // Weights of c000, of the max-axis vertex, of the c111-minus-min-axis vertex, of c111.
+    F w0, w1, w2, w3;
+    M rIsMax, gIsMax; // the axis with the largest fraction: r, else g, else b
+    M bIsMin, gIsMin; // the axis with the smallest fraction: b, else g, else r
+};
+
+template <class Ops>
+inline Tetrahedron<Ops> tetrahedron(typename Ops::Float fr, typename Ops::Float fg,
+                                    typename Ops::Float fb) {
+    Tetrahedron<Ops> t;
+    t.rIsMax = Ops::maskAnd(Ops::greaterEqual(fr, fg), Ops::greaterEqual(fr, fb));
+    t.gIsMax = Ops::maskAndNot(t.rIsMax, Ops::greaterEqual(fg, fb));
+    t.bIsMin = Ops::maskAnd(Ops::lessEqual(fb, fr), Ops::lessEqual(fb, fg));
+    t.gIsMin = Ops::maskAndNot(t.bIsMin, Ops::lessEqual(fg, fr));
+    const auto fMax = Ops::max(fr, Ops::max(fg, fb));
+    const auto fMin = Ops::min(fr, Ops::min(fg, fb));
+    const auto fMid = Ops::max(Ops::min(fr, fg), Ops::min(Ops::max(fr, fg), fb));
+    t.w0 = Ops::sub(Ops::splat(1.0f), fMax);
+    t.w1 = Ops::sub(fMax, fMid);
+    t.w2 = Ops::sub(fMid, fMin);
+    t.w3 = fMin;
+    return t;
 }
 
 } // namespace lut::detail

@@ -66,36 +66,6 @@ void writeFileAtomically(const std::string& path, std::string_view bytes) {
     file.commit();
 }
 
-std::string readFile(const std::string& path, std::size_t maxBytes) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        throw Error(path + ": cannot open: " + std::strerror(errno));
-    struct stat st {};
-    if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
-        ::close(fd);
-        throw Error(path + ": cannot read: not a regular file");
-    }
-    if (static_cast<std::uint64_t>(st.st_size) > maxBytes) {
-        ::close(fd);
-        throw LimitError(path + ": file is " + std::to_string(st.st_size) +
-                         " bytes, over the limit of " + std::to_string(maxBytes) + " bytes");
-    }
-    std::string data;
-    data.resize(static_cast<std::size_t>(st.st_size));
-    std::size_t done = 0;
-    while (done < data.size()) {
-        const ssize_t n = ::read(fd, data.data() + done, data.size() - done);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            break;
-        done += static_cast<std::size_t>(n);
-    }
-    ::close(fd);
-    data.resize(done);
-    return data;
-}
-
 void checkNotSameFile(const std::string& input, const std::string& output) {
     std::error_code ec;
     if (!fs::exists(output, ec)) {

@@ -4,12 +4,14 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
+#include "lut/io/InputFile.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <random>
 #include <unistd.h>
 
@@ -178,18 +180,28 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
     if (candidates.empty())
         throw Error(path + ": no format reads '" + extensionOf(path) +
                     "' files (readable: " + knownExtensions(m_formats, true) + ")");
-    if (candidates.size() == 1)
-        return candidates.front()->read(path, options);
-    // Several formats claim the extension: the first that succeeds wins; otherwise report all.
-    std::string reasons;
-    for (const Format* f : candidates) {
-        try {
-            return f->read(path, options);
-        } catch (const Error& e) {
-            reasons += (reasons.empty() ? "" : "; ") + f->name() + ": " + e.what();
+    // Once for every candidate: a FIFO, a directory or a device is refused before any reader
+    // opens it (each reader checks again when called directly).
+    checkRegularInput(path);
+    try {
+        if (candidates.size() == 1)
+            return candidates.front()->read(path, options);
+        // Several formats claim the extension: the first that succeeds wins; otherwise report
+        // all.
+        std::string reasons;
+        for (const Format* f : candidates) {
+            try {
+                return f->read(path, options);
+            } catch (const Error& e) {
+                reasons += (reasons.empty() ? "" : "; ") + f->name() + ": " + e.what();
+            }
         }
+        throw Error(path + ": no format could read it (" + reasons + ")");
+    } catch (const std::bad_alloc&) {
+        // Readers name the size they asked for (lut::allocating); this is for any other
+        // allocation, so the user still gets one line naming the file.
+        throw Error(path + ": out of memory while reading it");
     }
-    throw Error(path + ": no format could read it (" + reasons + ")");
 }
 
 Diagnostics FormatRegistry::write(const std::string& path, const LutFile& lut,

@@ -9,7 +9,7 @@ namespace lut {
 const char* toString(LutLayout l) {
     switch (l) {
     case LutLayout::Pilot:
-        return "pilot";
+        return "unreal";
     case LutLayout::Unity:
         return "unity";
     case LutLayout::Smush:
@@ -20,17 +20,33 @@ const char* toString(LutLayout l) {
     return "?";
 }
 
+std::vector<std::string> layoutAliases(LutLayout l) {
+    switch (l) {
+    case LutLayout::Pilot:
+        return {"pilot", "godot"};
+    case LutLayout::Smush:
+        return {"lattice"};
+    case LutLayout::Unity:
+    case LutLayout::Hald:
+        break;
+    }
+    return {};
+}
+
 LutLayout parseLayout(std::string_view name) {
-    if (name == "pilot" || name == "unreal" || name == "godot")
-        return LutLayout::Pilot;
-    if (name == "unity")
-        return LutLayout::Unity;
-    if (name == "smush" || name == "lattice")
-        return LutLayout::Smush;
-    if (name == "hald")
-        return LutLayout::Hald;
-    throw Error("unknown layout '" + std::string(name) +
-                "' (expected pilot, unreal, godot, unity, smush, lattice or hald)");
+    std::string names, aliases;
+    for (const LutLayout l : allLayouts()) {
+        if (name == toString(l))
+            return l;
+        for (const std::string& alias : layoutAliases(l)) {
+            if (name == alias)
+                return l;
+            aliases += (aliases.empty() ? "" : ", ") + alias;
+        }
+        names += (names.empty() ? "" : ", ") + std::string(toString(l));
+    }
+    throw Error("unknown layout '" + std::string(name) + "' (expected " + names + "; also " +
+                aliases + ")");
 }
 
 std::optional<LutLayout> parseOptionalLayout(std::string_view name) {

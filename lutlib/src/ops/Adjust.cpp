@@ -1,6 +1,7 @@
 #include "lut/ops/Adjust.h"
 
 #include "lut/Error.h"
+#include "lut/Limits.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -11,13 +12,14 @@ namespace lut {
 namespace {
 
 constexpr double kGamma = 2.2;
+constexpr double kMaxValue = limits::kMaxColorValue; // the one limit, as a double
 constexpr glm::dvec3 kLuma{0.2126, 0.7152, 0.0722};
 
-// NaN -> 0, +-Inf and huge values -> +-kAdjustMaxValue: every step below stays finite.
+// NaN -> 0, +-Inf and huge values -> +-kMaxValue: every step below stays finite.
 double sanitize(double v) {
     if (std::isnan(v))
         return 0.0;
-    return std::clamp(v, -kAdjustMaxValue, kAdjustMaxValue);
+    return std::clamp(v, -kMaxValue, kMaxValue);
 }
 glm::dvec3 sanitize(glm::dvec3 v) {
     return {sanitize(v.x), sanitize(v.y), sanitize(v.z)};
@@ -148,9 +150,9 @@ glm::dvec3 adjustLiftGammaGain(glm::dvec3 e, glm::dvec3 lift, glm::dvec3 gamma, 
     e = sanitize(e);
     glm::dvec3 out;
     for (int c = 0; c < 3; ++c) {
-        const double l = sanitizeParam(lift[c], -kAdjustMaxValue, kAdjustMaxValue, 0.0);
+        const double l = sanitizeParam(lift[c], -kMaxValue, kMaxValue, 0.0);
         const double g = clampedGamma(gamma[c]);
-        const double k = sanitizeParam(gain[c], -kAdjustMaxValue, kAdjustMaxValue, 1.0);
+        const double k = sanitizeParam(gain[c], -kMaxValue, kMaxValue, 1.0);
         double v = e[c];
         if (l != 0.0 || k != 1.0)
             v = sanitize(k * (v + l * (1.0 - v)));
@@ -163,7 +165,7 @@ glm::dvec3 adjustLiftGammaGain(glm::dvec3 e, glm::dvec3 lift, glm::dvec3 gamma, 
 
 glm::dvec3 adjustSaturation(glm::dvec3 e, double saturation) {
     e = sanitize(e);
-    const double s = sanitizeParam(saturation, -kAdjustMaxValue, kAdjustMaxValue, 1.0);
+    const double s = sanitizeParam(saturation, -kMaxValue, kMaxValue, 1.0);
     if (s == 1.0)
         return e;
     const double y = dot3(e, kLuma);
@@ -215,7 +217,7 @@ glm::dvec3 adjustStrength(glm::dvec3 input, glm::dvec3 e, double strength) {
 }
 
 glm::dvec3 colorWheelOffset(double hueDegrees, double amount) {
-    const double a = sanitizeParam(amount, -kAdjustMaxValue, kAdjustMaxValue, 0.0);
+    const double a = sanitizeParam(amount, -kMaxValue, kMaxValue, 0.0);
     const double h = std::isfinite(hueDegrees) ? hueDegrees : 0.0;
     if (a == 0.0)
         return glm::dvec3(0.0);

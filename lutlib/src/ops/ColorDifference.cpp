@@ -1,5 +1,7 @@
 #include "lut/ops/ColorDifference.h"
 
+#include "lut/Limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -8,7 +10,7 @@ namespace lut {
 
 namespace {
 
-constexpr double kMax = 65504.0;
+constexpr double kMax = limits::kMaxColorValue; // as a double
 constexpr double kPi = std::numbers::pi;
 
 double finiteOrZero(double v) {

@@ -1,5 +1,6 @@
 #include "ops/OpsDetail.h"
 
+#include "interp/ScalarLattice.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -33,33 +34,28 @@ glm::dvec3 TetraEval::operator()(glm::dvec3 in, glm::dmat3* jacobian) const {
     int idx[3];
     double frac[3];
     bool clamped[3];
-    for (int c = 0; c < 3; ++c) {
-        double t = std::isnan(in[c]) ? 0.0 : (in[c] - m_lo[c]) * m_scale[c];
-        clamped[c] = !(t > 0.0 && t < m_n - 1);
-        t = std::clamp(t, 0.0, static_cast<double>(m_n - 1));
-        idx[c] = std::min(static_cast<int>(t), m_n - 2);
-        frac[c] = t - idx[c];
-    }
-    // The tetrahedron is the path c000 -> c111 stepping along the axes in order of decreasing
-    // fraction (the six cases of detail::tetrahedralBlend); value and slopes follow from it.
-    int order[3] = {0, 1, 2};
-    std::sort(order, order + 3, [&](int a, int b) { return frac[a] > frac[b]; });
-    int corner[3] = {idx[0], idx[1], idx[2]};
-    auto entry = [&]() { return glm::dvec3(m_lut->at(corner[0], corner[1], corner[2])); };
-    glm::dvec3 prev = entry();
-    glm::dvec3 out = prev;
-    glm::dvec3 steps[3];
-    for (int k = 0; k < 3; ++k) {
-        ++corner[order[k]];
-        const glm::dvec3 next = entry();
-        steps[order[k]] = next - prev;
-        out += frac[order[k]] * (next - prev);
-        prev = next;
-    }
-    if (jacobian)
+    for (int c = 0; c < 3; ++c)
+        locateContinuous(in[c], m_lo[c], m_scale[c], m_n, idx[c], frac[c], clamped[c]);
+    // The sampler's tetrahedron (interp/Tetrahedral.h), in double: the path c000 -> c111 steps
+    // along the axes in order of decreasing fraction; value and slopes follow from it.
+    const auto t = tetrahedron<BasicScalarOps<double>>(frac[0], frac[1], frac[2]);
+    const TetrahedronAxes axes = axesOf(t);
+    int a[3] = {idx[0], idx[1], idx[2]};
+    int b[3] = {idx[0] + 1, idx[1] + 1, idx[2] + 1};
+    ++a[axes.max];
+    --b[axes.min];
+    auto entry = [&](const int* p) { return glm::dvec3(m_lut->at(p[0], p[1], p[2])); };
+    const glm::dvec3 c000 = entry(idx), cA = entry(a), cB = entry(b);
+    const glm::dvec3 c111 = glm::dvec3(m_lut->at(idx[0] + 1, idx[1] + 1, idx[2] + 1));
+    if (jacobian) {
+        glm::dvec3 steps[3];
+        steps[axes.max] = cA - c000;
+        steps[axes.mid] = cB - cA;
+        steps[axes.min] = c111 - cB;
         for (int c = 0; c < 3; ++c)
             (*jacobian)[c] = clamped[c] ? glm::dvec3(0.0) : steps[c] * m_scale[c];
-    return out;
+    }
+    return t.w0 * c000 + t.w1 * cA + t.w2 * cB + t.w3 * c111;
 }
 
 int probeCount(int latticeSize) {

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to lutlib's LUT maths (ops/): the pieces diff, compose, smooth, invert and plot share.
 #include "lut/ErrorStats.h"
+#include "lut/Limits.h"
 #include "lut/Lut3D.h"
 
 #include <glm/mat3x3.hpp>
@@ -12,15 +13,12 @@
 
 namespace lut::detail {
 
-// Largest magnitude an entry may have before the maths clamps it: the largest half float, as in
-// lut/ops/Adjust.h. Beyond it pow() and cbrt() in the colour maths would overflow.
-constexpr double kOpsMaxValue = 65504.0;
-
-// NaN -> 0, +-Inf and |v| > kOpsMaxValue -> +-kOpsMaxValue.
+// NaN -> 0, +-Inf and |v| > limits::kMaxColorValue (the largest half float, lut/Limits.h) -> +-it.
+// Beyond it pow() and cbrt() in the colour maths would overflow.
 inline float sanitizeValue(float v) {
     if (v != v)
         return 0.0f;
-    constexpr float m = static_cast<float>(kOpsMaxValue);
+    constexpr float m = limits::kMaxColorValue;
     return v < -m ? -m : v > m ? m : v;
 }
 

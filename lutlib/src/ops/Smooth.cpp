@@ -2,7 +2,7 @@
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
-#include "lut/ops/Resample.h"
+#include "lut/ops/CompareLuts.h"
 #include "ops/OpsDetail.h"
 
 #include <algorithm>

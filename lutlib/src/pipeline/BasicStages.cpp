@@ -2,7 +2,7 @@
 // film grain, display encode.
 #include "ArrayKernels.h"
 #include "StageDetail.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/Limits.h"
 
 #include <cstdint>
 #include <cstring>
@@ -29,7 +29,7 @@ public:
                 const float* p = f.row(y);
                 int bad = 0;
                 for (int i = 0; i < 4 * f.width; ++i)
-                    bad |= !(std::fabs(p[i]) <= kPipelineMaxValue);
+                    bad |= !(std::fabs(p[i]) <= limits::kMaxColorValue);
                 if (bad)
                     found = true;
             }
@@ -40,8 +40,8 @@ public:
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             for (int i = 0; i < 4 * f.width; ++i)
-                if (!(std::fabs(p[i]) <= kPipelineMaxValue))
-                    p[i] = sanitizeValue(p[i], kPipelineMaxValue);
+                if (!(std::fabs(p[i]) <= limits::kMaxColorValue))
+                    p[i] = sanitizeValue(p[i], limits::kMaxColorValue);
         }
     }
 };

@@ -51,9 +51,7 @@ public:
         addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom");
     }
     const char* name() const override { return "hdr-bloom"; }
-    const char* description() const override {
-        return "lecture HDR bloom: max(x - 1, 0), Gaussian, add";
-    }
+    const char* description() const override { return "HDR bloom: max(x - 1, 0), Gaussian, add"; }
     bool canChange(const ImageView& f, int nthreads) const override {
         if (!(m_strength > 0.0f))
             return false;
@@ -85,9 +83,9 @@ public:
         addParam(&m_passes, "passes", 2.0f, 1.0f, 32.0f, "blur passes");
         addParam(&m_strength, "strength", 1.0f, 0.0f, 100.0f, "multiplier of the added bloom");
     }
-    const char* name() const override { return "filter-bloom"; }
+    const char* name() const override { return "soft-bloom"; }
     const char* description() const override {
-        return "Pilot bloom: luminance soft-knee filter, separable 9-tap Gaussian, add";
+        return "soft bloom: luminance soft-knee filter, separable 9-tap Gaussian, add";
     }
     float weight(float l) const {
         const float k = m_threshold * m_knee;
@@ -131,9 +129,9 @@ public:
         addParam(&m_f0, "f0", 1.0f, 0.0f, 10.0f, "weight of the base image");
         addParam(&m_f1, "f1", 1.0f, 0.0f, 100.0f, "weight of the blurred halo");
     }
-    const char* name() const override { return "sugar-bloom"; }
+    const char* name() const override { return "glow-bloom"; }
     const char* description() const override {
-        return "Sugar bloom: threshold on intensity, dilation, mip-pyramid blur, C*f0 + B*(1-i)*f1";
+        return "glow bloom: intensity threshold, dilation, mip-pyramid blur, C*f0 + B*(1-i)*f1";
     }
     bool canChange(const ImageView& f, int nthreads) const override {
         if (m_f0 != 1.0f)

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <glm/common.hpp>
 #include <mutex>
 #include <sstream>
 
@@ -18,25 +17,62 @@ const char* toString(Preset p) {
     case Preset::Smash:
         return "smash";
     case Preset::Pilot:
-        return "pilot";
+        return "filmic";
     case Preset::Lecture:
-        return "lecture";
+        return "cinematic";
     case Preset::None:
         return "none";
     }
     return "?";
 }
 
+std::vector<std::string> presetAliases(Preset p) {
+    switch (p) {
+    case Preset::Pilot:
+        return {"pilot"};
+    case Preset::Lecture:
+        return {"lecture"};
+    case Preset::Smash:
+    case Preset::None:
+        break;
+    }
+    return {};
+}
+
+const char* describe(Preset p) {
+    switch (p) {
+    case Preset::Smash:
+        return "Smash Ultimate's chain: its bloom, its grading LUT with brighten, sRGB";
+    case Preset::Pilot:
+        return "tone mapping (ACES) and a soft bloom, the LUT, gamma 2.2";
+    case Preset::Lecture:
+        return "exposure, HDR bloom, chromatic aberration, vignette, grain, the LUT, gamma 2.2";
+    case Preset::None:
+        return "display encoding only";
+    }
+    return "";
+}
+
+const std::vector<Preset>& allPresets() {
+    static const std::vector<Preset> presets = {Preset::Smash, Preset::Pilot, Preset::Lecture,
+                                                Preset::None};
+    return presets;
+}
+
 Preset parsePreset(std::string_view n) {
-    if (n == "smash")
-        return Preset::Smash;
-    if (n == "pilot")
-        return Preset::Pilot;
-    if (n == "lecture")
-        return Preset::Lecture;
-    if (n == "none")
-        return Preset::None;
-    throw Error("unknown preset '" + std::string(n) + "' (expected smash, pilot, lecture or none)");
+    std::string names, aliases;
+    for (const Preset p : allPresets()) {
+        if (n == toString(p))
+            return p;
+        for (const std::string& alias : presetAliases(p)) {
+            if (n == alias)
+                return p;
+            aliases += (aliases.empty() ? "" : ", ") + alias;
+        }
+        names += (names.empty() ? "" : ", ") + std::string(toString(p));
+    }
+    throw Error("unknown preset '" + std::string(n) + "' (expected " + names + "; also " + aliases +
+                ")");
 }
 
 namespace {
@@ -51,8 +87,8 @@ const Entry kStages[] = {
     {"exposure", detail::makeExposureStage},
     {"tonemap", detail::makeTonemapStage},
     {"hdr-bloom", detail::makeHdrBloomStage},
-    {"filter-bloom", detail::makeFilterBloomStage},
-    {"sugar-bloom", detail::makeSugarBloomStage},
+    {"soft-bloom", detail::makeFilterBloomStage},
+    {"glow-bloom", detail::makeSugarBloomStage},
     {"smash-bloom", detail::makeSmashBloomStage},
     {"chromatic-aberration", detail::makeChromaticAberrationStage},
     {"vignette", detail::makeVignetteStage},
@@ -60,6 +96,12 @@ const Entry kStages[] = {
     {"smash-grade", detail::makeSmashGradeStage},
     {"lut", detail::makeLutStage},
     {"display", detail::makeDisplayStage},
+};
+
+// Older stage names, still accepted wherever a stage is named.
+const std::vector<std::pair<std::string, std::string>> kStageAliases = {
+    {"filter-bloom", "soft-bloom"},
+    {"sugar-bloom", "glow-bloom"},
 };
 
 bool isBloom(std::string_view n) {
@@ -71,7 +113,7 @@ std::vector<std::string> presetStages(Preset p) {
     case Preset::Smash:
         return {"sanitize", "smash-bloom", "smash-grade", "display"};
     case Preset::Pilot:
-        return {"sanitize", "tonemap", "filter-bloom", "lut", "display"};
+        return {"sanitize", "tonemap", "soft-bloom", "lut", "display"};
     case Preset::Lecture:
         return {"sanitize", "exposure", "hdr-bloom", "chromatic-aberration",
                 "vignette", "grain",    "lut",       "display"};
@@ -93,7 +135,19 @@ const std::vector<std::string>& stageNames() {
     return names;
 }
 
+const std::vector<std::pair<std::string, std::string>>& stageAliases() {
+    return kStageAliases;
+}
+
+std::string_view canonicalStageName(std::string_view name) {
+    for (const auto& [alias, stage] : kStageAliases)
+        if (name == alias)
+            return stage;
+    return name;
+}
+
 std::unique_ptr<Stage> makeStage(std::string_view name) {
+    name = canonicalStageName(name);
     for (const auto& e : kStages)
         if (name == e.name)
             return e.make();
@@ -146,11 +200,12 @@ const Stage* Pipeline::find(std::string_view name) const {
         for (const auto& s : m_stages)
             if (s->enabled() && isBloom(s->name()))
                 return s.get();
-        const char* def = m_preset == Preset::Pilot     ? "filter-bloom"
+        const char* def = m_preset == Preset::Pilot     ? "soft-bloom"
                           : m_preset == Preset::Lecture ? "hdr-bloom"
                                                         : "smash-bloom";
         return find(def);
     }
+    name = canonicalStageName(name);
     for (const auto& s : m_stages)
         if (name == s->name())
             return s.get();
@@ -353,66 +408,6 @@ Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool 
         d = std::move(r.diagnostics);
     }
     return d;
-}
-
-Image makeSmashBenchScene(int width, int height) {
-    Image scene(width, height, 0.0f);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            float* p = scene.pixel(x, y);
-            const float u = (x + 0.5f) / width, v = (y + 0.5f) / height;
-            p[0] = 0.6f * u * u;
-            p[1] = 0.5f * v;
-            p[2] = 0.25f + 0.2f * u * v;
-            if (((x / 64) + (y / 64)) % 7 == 0)
-                p[0] = p[1] = p[2] = 3.0f + 10.0f * u;
-            p[3] = y < height / 10 ? 0.0f : 1.0f;
-        }
-    return scene;
-}
-
-Lut3D makeSmashBenchLut() {
-    Lut3D lut = Lut3D::identity(kSmashLutSize);
-    const int n = lut.size();
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 v = lut.at(r, g, b);
-                const float luma = 0.2126f * v.x + 0.7152f * v.y + 0.0722f * v.z;
-                glm::vec3 o = v * 0.8f + glm::vec3(luma) * 0.2f; // desaturate a little
-                o = o * o * (3.0f - 2.0f * o);                   // S-curve
-                o *= glm::vec3(1.05f, 1.0f, 0.9f);               // warm
-                lut.at(r, g, b) = glm::clamp(o, glm::vec3(0.0f), glm::vec3(1.0f));
-            }
-    return lut;
-}
-
-SmashChainTiming benchmarkSmashChain(int width, int height, int iterations, int nthreads) {
-    if (width <= 0 || height <= 0)
-        throw Error("benchmark frame size must be positive");
-    iterations = std::max(1, iterations);
-    const Image scene = makeSmashBenchScene(width, height);
-    Pipeline pipeline(Preset::Smash);
-    pipeline.setLut(std::make_shared<const Lut3D>(makeSmashBenchLut()));
-    RunOptions opt;
-    opt.nthreads = nthreads;
-    Image work = scene;
-    pipeline.run(work.view(), opt); // warm-up: allocations, first touch
-    std::vector<double> ms;
-    for (int i = 0; i < iterations; ++i) {
-        work.pixels() = scene.pixels();
-        const auto t0 = Clock::now();
-        pipeline.run(work.view(), opt);
-        ms.push_back(msSince(t0));
-    }
-    std::sort(ms.begin(), ms.end());
-    SmashChainTiming t;
-    t.runs = iterations;
-    t.bestMs = ms.front();
-    t.worstMs = ms.back();
-    t.medianMs =
-        ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
-    return t;
 }
 
 } // namespace lut

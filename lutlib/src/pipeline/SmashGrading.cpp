@@ -3,6 +3,7 @@
 #include "lut/pipeline/SmashGrading.h"
 
 #include "FastMath.h"
+#include "lut/Limits.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -14,7 +15,7 @@ namespace lut {
 using detail::sanitizeValue;
 
 float smashEncode(float x) {
-    x = sanitizeValue(x, kPipelineMaxValue);
+    x = sanitizeValue(x, limits::kMaxColorValue);
     return x > 0.0f ? std::pow(x, kSmashEncodeExponent) : 0.0f;
 }
 
@@ -61,7 +62,7 @@ glm::vec3 smashGradeMix(glm::vec3 linear, float alpha, const Sampler& lut) {
 glm::vec3 smashLutEntryForTarget(glm::vec3 targetLinear, glm::vec3 s) {
     glm::vec3 r;
     for (int c = 0; c < 3; ++c) {
-        const double t = sanitizeValue(targetLinear[c], kPipelineMaxValue);
+        const double t = sanitizeValue(targetLinear[c], limits::kMaxColorValue);
         r[c] = static_cast<float>(t > 0.0 ? std::pow(t, 1.0 / kSmashDecodeExponent) : 0.0);
     }
     return smashBrightenInverse(r, s);
@@ -112,7 +113,7 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
     const float a = detail::clamp01(alpha);
     glm::vec3 out;
     for (int c = 0; c < 3; ++c)
-        out[c] = std::max(sanitizeValue(outputLinear[c], kPipelineMaxValue), 0.0f);
+        out[c] = std::max(sanitizeValue(outputLinear[c], limits::kMaxColorValue), 0.0f);
     if (converged)
         *converged = true;
     if (a <= 0.0f)

@@ -1,36 +1,36 @@
 #include "lut/pipeline/Transfer.h"
 
 #include "FastMath.h"
+#include "lut/Limits.h"
 #include "lut/Parallel.h"
-#include "lut/pipeline/SmashGrading.h"
 
 #include <cmath>
 
 namespace lut {
 
 float srgbEncode(float x) {
-    x = detail::sanitizeValue(x, kPipelineMaxValue);
+    x = detail::sanitizeValue(x, limits::kMaxColorValue);
     const float a = std::fabs(x);
     const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * std::pow(a, 1.0f / 2.4f) - 0.055f;
     return x < 0.0f ? -e : e;
 }
 
 float srgbDecode(float x) {
-    x = detail::sanitizeValue(x, kPipelineMaxValue);
+    x = detail::sanitizeValue(x, limits::kMaxColorValue);
     const float a = std::fabs(x);
     const float d = a <= 0.04045f ? a / 12.92f : std::pow((a + 0.055f) / 1.055f, 2.4f);
     return x < 0.0f ? -d : d;
 }
 
 float gammaEncode(float x, float gamma) {
-    x = detail::sanitizeValue(x, kPipelineMaxValue);
+    x = detail::sanitizeValue(x, limits::kMaxColorValue);
     if (!(x > 0.0f) || !(gamma > 0.0f))
         return 0.0f;
     return std::pow(x, 1.0f / gamma);
 }
 
 float gammaDecode(float x, float gamma) {
-    x = detail::sanitizeValue(x, kPipelineMaxValue);
+    x = detail::sanitizeValue(x, limits::kMaxColorValue);
     if (!(x > 0.0f) || !(gamma > 0.0f))
         return 0.0f;
     return std::pow(x, gamma);

@@ -2,7 +2,8 @@
 // The .cube format (Adobe Cube LUT Specification 1.0 and the DaVinci Resolve dialect): reading
 // from memory or a file, writing to a string or a file, and strict validation against the Adobe
 // spec. The format is also registered in the FormatRegistry as "cube" (extension ".cube").
-// Details of what is accepted and refused are in formats/src/CubeFormat.cpp's header comment.
+// What is accepted and refused is detailed in formats/src/cube/CubeParser.h (reading) and
+// formats/src/cube/CubeWriter.cpp (writing).
 #include "lut/Error.h"
 #include "lut/LutFile.h"
 
@@ -25,7 +26,8 @@ struct CubeReadOptions {
 LutFile parseCube(std::string_view text, const std::string& path = "<memory>",
                   const CubeReadOptions& options = {});
 
-// Reads a .cube file (memory-mapped). Also throws lut::Error if it cannot be opened and
+// Reads a .cube file (read whole into memory). Also throws lut::Error if it cannot be opened, is
+// not a regular file (a FIFO, a directory, a device...) or changes while it is read, and
 // lut::LimitError if it is larger than lut::limits::kMaxLutFileBytes.
 LutFile readCube(const std::string& path, const CubeReadOptions& options = {});
 

@@ -27,9 +27,6 @@ private:
 // Writes bytes to path atomically. Throws lut::Error naming the file on failure.
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 
-// Reads a whole file; throws lut::Error naming the file, or LimitError past maxBytes.
-std::string readFile(const std::string& path, std::size_t maxBytes);
-
 // Throws lut::Error if output names the same file as input (same path, symlink or hard link).
 void checkNotSameFile(const std::string& input, const std::string& output);
 

@@ -11,14 +11,17 @@
 
 namespace lut {
 
+// Users see and type the names in quotes (toString); the older names stay accepted (aliases).
 enum class LutLayout {
-    Pilot, // N^2 x N: x = r + N*b, y = g (aliases unreal, godot)
-    Unity, // N^2 x N: x = r + N*b, y = N-1-g
-    Smush, // N^2 x N: x = r + N*g, y = b (alias lattice; ociolutimage)
-    Hald,  // L^3 x L^3 with N = L^2: i = r + N*g + N^2*b, x = i mod L^3, y = i div L^3
+    Pilot, // "unreal": N^2 x N, x = r + N*b, y = g (Unreal Engine's 256x16; aliases pilot, godot)
+    Unity, // "unity":  N^2 x N, x = r + N*b, y = N-1-g
+    Smush, // "smush":  N^2 x N, x = r + N*g, y = b (Smush-LUT, ociolutimage; alias lattice)
+    Hald,  // "hald":   L^3 x L^3 with N = L^2: i = r + N*g + N^2*b, x = i mod L^3, y = i div L^3
 };
 
 const char* toString(LutLayout);
+// The other names parseLayout accepts for a layout (e.g. "pilot" and "godot" for unreal).
+std::vector<std::string> layoutAliases(LutLayout);
 // Accepts the names and aliases above; throws lut::Error listing the valid names.
 LutLayout parseLayout(std::string_view name);
 // The same, with "" meaning "not given" (nullopt): for options whose default is auto-detection.

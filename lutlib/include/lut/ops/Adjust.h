@@ -34,9 +34,9 @@
 // Strength 0 gives the identity LUT, 1 the graded LUT, values above 1 (up to 2) extrapolate
 // (exaggerate the grade); it is clamped to [0, 2].
 //
-// Extreme values: NaN entries are treated as 0, infinities and magnitudes above kAdjustMaxValue
-// are clamped to +-kAdjustMaxValue before and after; parameters are clamped to the ranges below
-// (gamma to [0.01, 100], contrast to [-1, 10]), so output entries are always finite.
+// Extreme values: NaN entries are treated as 0, infinities and magnitudes above
+// limits::kMaxColorValue (65504) are clamped to it before and after; parameters are clamped to the
+// ranges below (gamma to [0.01, 100], contrast to [-1, 10]), so output entries are always finite.
 // Computation is in double precision; only the stored entries are float.
 #include "lut/Lut3D.h"
 #include "lut/ops/Curve.h"
@@ -44,8 +44,6 @@
 #include <glm/vec3.hpp>
 
 namespace lut {
-
-constexpr double kAdjustMaxValue = 65504.0; // largest half float: beyond is not a colour any more
 
 struct Adjustments {
     double exposure = 0.0;    // stops, applied in linear light

@@ -1,4 +1,6 @@
 #pragma once
+// Resampling a LUT to another lattice size, with the error it introduced (measured with
+// compareLuts, lut/ops/CompareLuts.h).
 #include "lut/ErrorStats.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
@@ -16,12 +18,5 @@ struct ResampleResult {
 };
 ResampleResult resampleWithError(const Lut3D& source, int size, Interpolation method,
                                  int nthreads = 0);
-
-// Rounds every entry to the nearest 8-bit step (clamped to [0,1]) and reports the error.
-ErrorStats quantize8(Lut3D& lut);
-
-// Compares two LUTs by evaluating both with `method` on a probe grid of `probes` points per
-// axis spanning a's domain.
-ErrorStats compareLuts(const Lut3D& a, const Lut3D& b, Interpolation method, int probes = 0);
 
 } // namespace lut

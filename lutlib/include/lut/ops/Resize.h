@@ -7,7 +7,7 @@
 
 namespace lut {
 
-// error: the source and the result compared on lut::compareLuts' probe grid (see Resample.h).
+// error: the source and the result compared on lut::compareLuts' probe grid (CompareLuts.h).
 OpResult resize(const Lut3D& lut, int size, Interpolation method = Interpolation::Tetrahedral,
                 int nthreads = 0);
 

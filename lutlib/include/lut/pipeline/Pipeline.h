@@ -9,10 +9,11 @@
 //                         pixel from spreading through the blurs)
 //   exposure              x * 2^stops
 //   tonemap               reinhard | aces (Narkowicz fit) | hable (Uncharted 2 filmic)
-//   hdr-bloom             lecture: max(x - 1, 0), Gaussian, add
-//   filter-bloom          Pilot homework: luminance soft-knee filter, separable 9-tap Gaussian, add
-//   sugar-bloom           Sugar: i = max(rgb) - th, dilate(C * i), mip-pyramid blur,
-//                         C*f0 + B*(1-i)*f1
+//   hdr-bloom             cinematic: max(x - 1, 0), Gaussian, add
+//   soft-bloom            filmic (old name filter-bloom): luminance soft-knee filter, separable
+//                         9-tap Gaussian, add
+//   glow-bloom            (old name sugar-bloom): i = max(rgb) - th, dilate(C * i), mip-pyramid
+//                         blur, C*f0 + B*(1-i)*f1
 //   smash-bloom           Smash Ultimate bloom, exactly (docs/specs/smash-pipeline.md section 1)
 //   chromatic-aberration  r and b sampled at slightly different radial distances
 //   vignette              darken by distance to the centre
@@ -21,9 +22,9 @@
 //   lut                   any 3D LUT with any interpolation
 //   display               sRGB (piecewise) or pure gamma encode, last
 // clang-format on
-// Presets: smash (sanitize, smash-bloom, smash-grade, display=srgb), pilot (tonemap, filter-bloom,
-// lut, display=gamma 2.2), lecture (exposure, hdr-bloom, chromatic-aberration, vignette, grain,
-// lut, display=gamma 2.2 — the lecture's order), none (sanitize, display).
+// Presets: smash (sanitize, smash-bloom, smash-grade, display=srgb), filmic (old name pilot:
+// tonemap, soft-bloom, lut, display=gamma 2.2), cinematic (old name lecture: exposure, hdr-bloom,
+// chromatic-aberration, vignette, grain, lut, display=gamma 2.2), none (sanitize, display).
 //
 // Not implemented: depth of field, SSAO and SSR need per-pixel depth and normals, which an image
 // does not have (see docs/pipeline.md).
@@ -37,16 +38,25 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace lut {
 
+// Users see and type: smash, filmic (Pilot), cinematic (Lecture), none.
 enum class Preset { Smash, Pilot, Lecture, None };
 const char* toString(Preset);
-Preset parsePreset(std::string_view name); // throws lut::Error
+std::vector<std::string> presetAliases(Preset); // older names parsePreset accepts ("pilot")
+const char* describe(Preset);                   // what the preset looks like, one line
+const std::vector<Preset>& allPresets();
+Preset parsePreset(std::string_view name); // names and aliases; throws lut::Error
 
 // Every stage name, in pipeline order.
 const std::vector<std::string>& stageNames();
+// Older stage names still accepted wherever a stage is named: {old name, stage name}.
+const std::vector<std::pair<std::string, std::string>>& stageAliases();
+// The stage an old name stands for ("sugar-bloom" -> "glow-bloom"); other names unchanged.
+std::string_view canonicalStageName(std::string_view name);
 // A stage by name with default settings (disabled ones too); throws lut::Error if unknown.
 std::unique_ptr<Stage> makeStage(std::string_view name);
 
@@ -139,24 +149,5 @@ private:
 Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,
                               const Lut3D* originalLut,
                               Interpolation interp = Interpolation::Trilinear, int nthreads = 0);
-
-// The synthetic HDR scene the smash-chain benchmarks run on: smooth gradients, highlights well
-// above the bloom threshold, an alpha-0 band (background) along the top tenth.
-Image makeSmashBenchScene(int width, int height);
-
-// A 16^3 grading LUT that is not an identity (warm tint, contrast, cross-talk between channels):
-// what the smash-chain benchmarks grade with, so no identity shortcut can flatter them.
-Lut3D makeSmashBenchLut();
-
-// Times the full smash chain (makeSmashBenchLut, bloom on, sRGB display) on the synthetic w x h
-// HDR frame, `iterations` runs after one warm-up. Used by `lutkit bench`.
-struct SmashChainTiming {
-    double medianMs = 0.0; // the typical frame: what the editor's frame rate follows
-    double bestMs = 0.0;
-    double worstMs = 0.0;
-    int runs = 0;
-};
-SmashChainTiming benchmarkSmashChain(int width = 1920, int height = 1080, int iterations = 10,
-                                     int nthreads = 0);
 
 } // namespace lut

@@ -13,12 +13,13 @@
 // value); for an N^3 LUT the same holds with the scale (N-1)/N and offset 0.5/N, so any size works.
 //
 // Defined where the shader is not: pow() of a negative or NaN is taken of 0 (clamp before every
-// pow); +Inf is clamped to kPipelineMaxValue first. Finite input never gives NaN or Inf.
+// pow); +Inf is clamped to limits::kMaxColorValue first. Finite input never gives NaN or Inf.
 #include "lut/Error.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/interp/Sampler.h"
+#include "lut/pipeline/SmashConstants.h"
 
 #include <glm/vec3.hpp>
 
@@ -26,26 +27,7 @@
 
 namespace lut {
 
-// The shader's literals.
-constexpr float kSmashEncodeExponent = 0.454545f; // the shader's 1/2.2 (not exactly 1/2.2)
-constexpr float kSmashDecodeExponent = 2.2f;
-constexpr float kSmashLutScale = 0.9375f;   // (N-1)/N for the game's N = 16
-constexpr float kSmashLutOffset = 0.03125f; // 0.5/N
-constexpr int kSmashLutSize = 16;
-constexpr float kSmashBrightenMix = 0.99961f;
-constexpr float kSmashBrightenScale = 1.3703f; // 1.3703^2.2 = 2.0: ~2x brighter in linear light
-// Bloom (section 1).
-constexpr float kSmashBloomThreshold = 0.4625f; // 0.925 * 0.5
-constexpr float kSmashBloomGain = 6.0f;
-constexpr float kSmashBloomMinComponent = 0.001f;
-constexpr float kSmashBloomWeights[4] = {0.32f, 0.10f, 0.20f, 0.25f}; // 1/8, 1/16, 1/32, 1/64
-constexpr float kSmashBloomExponent = 2.2f;
-
-// Largest magnitude a frame value keeps once the pipeline sanitized it: the half-float maximum,
-// what the game's R16G16B16A16_FLOAT render targets can hold. NaN becomes 0, +-Inf +-this.
-constexpr float kPipelineMaxValue = 65504.0f;
-
-// s = pow(x, 0.454545) with x clamped to [0, kPipelineMaxValue] (NaN -> 0).
+// s = pow(x, 0.454545) with x clamped to [0, limits::kMaxColorValue] (NaN -> 0).
 float smashEncode(float linear);
 glm::vec3 smashEncode(glm::vec3 linear);
 // The exact inverse of smashEncode for s >= 0: pow(s, 1 / 0.454545) (negatives/NaN -> 0).

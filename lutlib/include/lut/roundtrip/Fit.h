@@ -12,7 +12,7 @@
 #include "lut/Error.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
-#include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/RoundtripWarning.h"
 
 #include <cstddef>
 #include <vector>

@@ -9,57 +9,80 @@
 // Gathers are avoided on purpose: vgatherdps is slow on AMD cores, and the per-pixel loads need
 // no transposition of the result. Alpha is restored from the input by a blend.
 //
-// Only <immintrin.h>, SimdKernels.h and Transpose.h are included (see the note there about inline
-// functions).
+// The lattice mapping (interp/LatticeMapping.h) and the choice of tetrahedron and its weights
+// (interp/Tetrahedral.h) are the scalar sampler's own templates, instantiated here with 8-lane
+// AVX2 operations (Avx2Ops), so both paths pick the same cells, fractions and tetrahedra.
+//
+// Only <immintrin.h>, SimdKernels.h, Transpose.h and the two glm- and std-free templates above
+// are included (see the note in SimdKernels.h about inline functions).
 #include "SimdKernels.h"
 #include "core/simd/Transpose.h"
+#include "interp/LatticeMapping.h"
+#include "interp/Tetrahedral.h"
 
 #include <immintrin.h>
 
 namespace lut::detail {
 namespace {
 
+// The lanes of locateAxis and tetrahedron: 8 floats, 8 ints, comparison masks as floats.
+struct Avx2Ops {
+    using Float = __m256;
+    using Int = __m256i;
+    using Mask = __m256;
+    static __m256 splat(float v) { return _mm256_set1_ps(v); }
+    static __m256 add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
+    static __m256 sub(__m256 a, __m256 b) { return _mm256_sub_ps(a, b); }
+    static __m256 mul(__m256 a, __m256 b) { return _mm256_mul_ps(a, b); }
+    static __m256 abs(__m256 a) {
+        return _mm256_and_ps(a, _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff)));
+    }
+    static __m256 min(__m256 a, __m256 b) { return _mm256_min_ps(a, b); }
+    static __m256 max(__m256 a, __m256 b) { return _mm256_max_ps(a, b); }
+    // maxps returns its second operand when either is NaN: NaN (and -Inf) land on 0.
+    static __m256 maxWithZero(__m256 a) { return _mm256_max_ps(a, _mm256_setzero_ps()); }
+    // Ties to even (the scalar form rounds half up; see locateAxis).
+    static __m256 roundNearest(__m256 t) {
+        return _mm256_round_ps(t, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+    }
+    static __m256 lessEqual(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_LE_OQ); }
+    static __m256 greaterEqual(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_GE_OQ); }
+    static __m256 maskAnd(__m256 a, __m256 b) { return _mm256_and_ps(a, b); }
+    static __m256 maskAndNot(__m256 a, __m256 b) { return _mm256_andnot_ps(a, b); }
+    static __m256 select(__m256 m, __m256 a, __m256 b) { return _mm256_blendv_ps(b, a, m); }
+    static __m256i truncate(__m256 t) { return _mm256_cvttps_epi32(t); }
+    static __m256i minInt(__m256i a, __m256i b) { return _mm256_min_epi32(a, b); }
+    static __m256 toFloat(__m256i i) { return _mm256_cvtepi32_ps(i); }
+};
+
 struct Consts {
     __m256 offset[3];
     __m256 scale[3];
     __m256 snapBias[3];
-    __m256 top;   // N - 1
-    __m256 snapK; // kSnapRelative
+    __m256 top; // N - 1
     __m256 one;
-    __m256 absMask;
     __m256i maxCell; // N - 2
     __m256i n;       // N
     int dr, dg, db;  // float offsets of the +1 neighbour along r, g, b
     explicit Consts(const KernelTable& t) {
+        const LatticeMapping& m = t.map;
         for (int c = 0; c < 3; ++c) {
-            offset[c] = _mm256_set1_ps(t.offset[c]);
-            scale[c] = _mm256_set1_ps(t.scale[c]);
-            snapBias[c] = _mm256_set1_ps(t.snapBias[c]);
+            offset[c] = _mm256_set1_ps(m.offset[c]);
+            scale[c] = _mm256_set1_ps(m.scale[c]);
+            snapBias[c] = _mm256_set1_ps(m.snapBias[c]);
         }
-        top = _mm256_set1_ps(static_cast<float>(t.size - 1));
-        snapK = _mm256_set1_ps(kSnapRelative);
+        top = _mm256_set1_ps(static_cast<float>(m.size - 1));
         one = _mm256_set1_ps(1.0f);
-        absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
-        maxCell = _mm256_set1_epi32(t.size - 2);
-        n = _mm256_set1_epi32(t.size);
+        maxCell = _mm256_set1_epi32(m.size - 2);
+        n = _mm256_set1_epi32(m.size);
         dr = 4;
-        dg = 4 * t.size;
-        db = 4 * t.size * t.size;
+        dg = 4 * m.size;
+        db = 4 * m.size * m.size;
     }
 };
 
-// The scalar LatticeMap::locate, 8 lanes at a time, operation for operation.
 inline void locate(const Consts& k, int c, __m256 x, __m256i& cell, __m256& frac) {
-    __m256 t = _mm256_mul_ps(_mm256_sub_ps(x, k.offset[c]), k.scale[c]);
-    // maxps returns its second operand when either is NaN: NaN (and -Inf) land on 0.
-    t = _mm256_max_ps(t, _mm256_setzero_ps());
-    t = _mm256_min_ps(t, k.top);
-    const __m256 r = _mm256_round_ps(t, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
-    const __m256 dist = _mm256_and_ps(_mm256_sub_ps(t, r), k.absMask);
-    const __m256 tol = _mm256_mul_ps(_mm256_add_ps(t, k.snapBias[c]), k.snapK);
-    t = _mm256_blendv_ps(t, r, _mm256_cmp_ps(dist, tol, _CMP_LE_OQ));
-    cell = _mm256_min_epi32(_mm256_cvttps_epi32(t), k.maxCell);
-    frac = _mm256_sub_ps(t, _mm256_cvtepi32_ps(cell));
+    locateAxis<Avx2Ops>(x, k.offset[c], k.scale[c], k.snapBias[c], k.top, k.maxCell, cell, frac);
 }
 
 // Float offset of entry (r, g, b) in the padded table (4 floats per entry).
@@ -191,24 +214,14 @@ void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count) {
         Block blk;
         loadBlock(k, p, blk);
         const __m256 fr = blk.f[0], fg = blk.f[1], fb = blk.f[2];
-        // Sort the fractions: the tetrahedron runs c000 -> +max axis -> +max+mid axes -> c111.
-        // Ties pick either tetrahedron; the tied vertex then has weight exactly 0.
-        const __m256 rMax =
-            _mm256_and_ps(_mm256_cmp_ps(fr, fg, _CMP_GE_OQ), _mm256_cmp_ps(fr, fb, _CMP_GE_OQ));
-        const __m256 gMax = _mm256_andnot_ps(rMax, _mm256_cmp_ps(fg, fb, _CMP_GE_OQ));
-        const __m256 bMin =
-            _mm256_and_ps(_mm256_cmp_ps(fb, fr, _CMP_LE_OQ), _mm256_cmp_ps(fb, fg, _CMP_LE_OQ));
-        const __m256 gMin = _mm256_andnot_ps(bMin, _mm256_cmp_ps(fg, fr, _CMP_LE_OQ));
-        const __m256i offMax =
-            _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offB, offG, gMax), offR, rMax));
-        const __m256i offMin =
-            _mm256_castps_si256(_mm256_blendv_ps(_mm256_blendv_ps(offR, offG, gMin), offB, bMin));
-        const __m256 fMax = _mm256_max_ps(fr, _mm256_max_ps(fg, fb));
-        const __m256 fMin = _mm256_min_ps(fr, _mm256_min_ps(fg, fb));
-        const __m256 fMid =
-            _mm256_max_ps(_mm256_min_ps(fr, fg), _mm256_min_ps(_mm256_max_ps(fr, fg), fb));
-        __m256 w0 = _mm256_sub_ps(k.one, fMax), w1 = _mm256_sub_ps(fMax, fMid),
-               w2 = _mm256_sub_ps(fMid, fMin), w3 = fMin;
+        // The tetrahedron c000 -> +max axis -> c111 - min axis -> c111 and its weights.
+        const Tetrahedron<Avx2Ops> tet = tetrahedron<Avx2Ops>(fr, fg, fb);
+        // Its two middle vertices as table offsets from c000: + the max axis, + all - the min axis.
+        const __m256i offMax = _mm256_castps_si256(
+            _mm256_blendv_ps(_mm256_blendv_ps(offB, offG, tet.gIsMax), offR, tet.rIsMax));
+        const __m256i offMin = _mm256_castps_si256(
+            _mm256_blendv_ps(_mm256_blendv_ps(offR, offG, tet.gIsMin), offB, tet.bIsMin));
+        __m256 w0 = tet.w0, w1 = tet.w1, w2 = tet.w2, w3 = tet.w3;
         transpose4(w0, w1, w2, w3); // now one register per pixel pair: [w0 w1 w2 w3 | ...]
         const __m256 wq[4] = {w0, w1, w2, w3};
         alignas(32) int i0[8], iA[8], iB[8];

@@ -1,0 +1,133 @@
+#include "Batch.h"
+
+#include "Usage.h"
+
+#include "lut/Error.h"
+#include "lut/Parallel.h"
+#include "lut/formats/ImageFiles.h"
+#include "lut/io/AtomicFile.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <unistd.h>
+
+namespace lut::cli {
+
+namespace fs = std::filesystem;
+
+std::vector<BatchJob> planBatch(const std::vector<std::string>& positionals,
+                                const std::string& outputDir, const std::string& outExtension) {
+    std::vector<BatchJob> jobs;
+    if (outputDir.empty()) {
+        if (positionals.size() != 2)
+            throw UsageError(positionals.size() < 2 ? "expected IN OUT (or inputs with -o DIR)"
+                                                    : "several inputs need -o DIR");
+        jobs.push_back({positionals[0], positionals[1]});
+        return jobs;
+    }
+    if (positionals.empty())
+        throw UsageError("no input files");
+    std::set<std::string> names;
+    for (const auto& in : positionals) {
+        std::vector<fs::path> files;
+        std::error_code ec;
+        if (fs::is_directory(in, ec)) {
+            for (const auto& e : fs::directory_iterator(in, ec))
+                if (e.is_regular_file(ec) && formats::isImageExtension(e.path().string()))
+                    files.push_back(e.path());
+            std::sort(files.begin(), files.end());
+        } else {
+            files.push_back(in); // a missing file becomes a failed job, reported at the end
+        }
+        for (const auto& f : files) {
+            fs::path name = f.filename();
+            if (!outExtension.empty())
+                name.replace_extension(outExtension);
+            BatchJob j{f.string(), (fs::path(outputDir) / name).string()};
+            if (!names.insert(j.output).second)
+                j.output.clear(); // collision: reported as a failure
+            jobs.push_back(std::move(j));
+        }
+    }
+    return jobs;
+}
+
+int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
+             const std::function<std::string(const BatchJob&, int)>& fn) {
+    const int total = static_cast<int>(jobs.size());
+    const int workers = std::max(1, std::min(resolveThreads(threads), total));
+    const int inner = workers == 1 ? threads : 1;
+    const bool bar = !quiet && total > 1 && isatty(STDERR_FILENO);
+    std::mutex m;
+    std::vector<std::string> failures(jobs.size());
+    std::atomic<int> next{0}, done{0};
+    for (const auto& j : jobs)
+        if (!j.output.empty()) {
+            std::error_code ec;
+            const fs::path dir = fs::path(j.output).parent_path();
+            if (!dir.empty())
+                fs::create_directories(dir, ec);
+        }
+    auto drawBar = [&](int d) {
+        const int width = 30, filled = total ? d * width / total : width;
+        std::fprintf(stderr, "\r[%s%s] %d/%d", std::string(filled, '#').c_str(),
+                     std::string(width - filled, '.').c_str(), d, total);
+        std::fflush(stderr);
+    };
+    auto work = [&] {
+        for (int i; (i = next++) < total;) {
+            const BatchJob& j = jobs[i];
+            std::string text, fail;
+            try {
+                if (j.output.empty())
+                    throw Error(
+                        "another input has the same file name (its output would be overwritten)");
+                checkNotSameFile(j.input, j.output); // never overwrite an input (issue 7)
+                text = fn(j, inner);
+            } catch (const std::exception& e) {
+                fail = e.what();
+            }
+            std::lock_guard<std::mutex> lock(m);
+            if (!fail.empty())
+                failures[i] = fail;
+            if (!text.empty()) {
+                if (bar)
+                    std::fprintf(stderr, "\r\033[K");
+                std::cout << text << std::flush;
+            }
+            const int d = ++done;
+            if (bar)
+                drawBar(d);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int w = 1; w < workers; ++w)
+        pool.emplace_back(work);
+    work();
+    for (auto& t : pool)
+        t.join();
+    if (bar)
+        std::fprintf(stderr, "\r\033[K");
+    int failed = 0;
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+        if (!failures[i].empty()) {
+            ++failed;
+            // Library messages usually start with the path already.
+            const std::string& msg = failures[i];
+            if (msg.rfind(jobs[i].input, 0) == 0)
+                std::cerr << "lutkit: error: " << msg << "\n";
+            else
+                std::cerr << "lutkit: error: " << jobs[i].input << ": " << msg << "\n";
+        }
+    if (failed > 0 && total > 1)
+        std::cerr << "lutkit: " << failed << " of " << total << " file(s) failed\n";
+    return failed > 0 ? kExitFailure : kExitOk;
+}
+
+} // namespace lut::cli

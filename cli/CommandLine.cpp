@@ -1,0 +1,181 @@
+#include "CommandLine.h"
+
+#include "Generators.h"
+#include "OptionTable.h"
+#include "Suggest.h"
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/Error.h"
+#include "lut/Version.h"
+
+#include <iostream>
+#include <new>
+
+namespace lut::cli {
+
+namespace {
+
+// The subcommand's callback: the hook (or the real run function) with its exit code kept.
+template <class Options>
+std::function<void(const Options&)> runner(const RunFn<Options>& hook, int (*real)(const Options&),
+                                           int& exitCode) {
+    RunFn<Options> run = hook ? hook : RunFn<Options>(real);
+    return [run, &exitCode](const Options& o) { exitCode = run(o); };
+}
+
+std::vector<std::string> commandNames(CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::App* sub :
+         app.get_subcommands([](CLI::App* s) { return !s->get_group().empty(); }))
+        names.push_back(sub->get_name());
+    return names;
+}
+
+} // namespace
+
+CommandLine::CommandLine(const RunHooks& hooks)
+    : m_app("lutkit: author and convert colour grading LUTs", "lutkit") {
+    m_app.set_version_flag("-V,--version", std::string("lutkit ") + LUTKIT_VERSION,
+                           "print the version and exit");
+    m_app.set_help_flag("-h,--help", "print this help and exit");
+    m_app.require_subcommand(0, 1);
+
+    setupNeutral(m_app, runner(hooks.neutral, runNeutral, m_exitCode));
+    setupConvert(m_app, runner(hooks.convert, runConvert, m_exitCode));
+    setupInfo(m_app, runner(hooks.info, runInfo, m_exitCode));
+    setupValidate(m_app, runner(hooks.validate, runValidate, m_exitCode));
+    setupApply(m_app, runner(hooks.apply, runApply, m_exitCode));
+    setupPreview(m_app, runner(hooks.preview, runPreview, m_exitCode));
+    setupEmbed(m_app, runner(hooks.embed, runEmbed, m_exitCode));
+    setupExtract(m_app, runner(hooks.extract, runExtract, m_exitCode));
+    setupFit(m_app, runner(hooks.fit, runFit, m_exitCode));
+    setupBench(m_app, runner(hooks.bench, runBench, m_exitCode));
+
+    const std::vector<std::string> commands = commandNames(m_app);
+    auto* help = m_app.add_subcommand("help", "Show the help of lutkit or of one command");
+    Choices topics{"command", "command", commands, {}, {}};
+    topics.accept = [commands](const std::string& s) {
+        if (std::find(commands.begin(), commands.end(), s) == commands.end())
+            throw Error("unknown command '" + s + "'");
+    };
+    help->add_option("COMMAND", m_helpTopic, "the command to explain")
+        ->type_name("COMMAND")
+        ->check(choicesValidator(topics));
+    help->footer("Examples:\n  lutkit help\n  lutkit help convert");
+    help->callback([this] { m_helpRequested = true; });
+
+    m_app.add_option("--generate", m_generate, "print the man page or a shell completion script")
+        ->check(CLI::IsMember(generatorKinds()))
+        ->group("");
+    m_app.footer("Run 'lutkit help COMMAND' (or lutkit COMMAND --help) for a command's options "
+                 "and examples.\nExit codes: 0 success, 1 bad input or failed operation, 2 bad "
+                 "usage.");
+}
+
+int CommandLine::run(int argc, const char* const* argv) {
+    return run(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+}
+
+std::optional<std::string>
+CommandLine::unknownCommandMessage(const std::vector<std::string>& args) const {
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--generate") {
+            ++i; // its value
+            continue;
+        }
+        if (a.empty() || a[0] == '-')
+            continue;
+        std::vector<std::string> names;
+        for (const CLI::App* sub : m_app.get_subcommands({}))
+            names.push_back(sub->get_name());
+        if (std::find(names.begin(), names.end(), a) != names.end())
+            return std::nullopt;
+        std::string msg = "lutkit: unknown command '" + a + "'";
+        if (const auto guess = closestWord(a, names))
+            msg += "; did you mean '" + *guess + "'?";
+        return msg + "\nRun 'lutkit help' for the list of commands.\n";
+    }
+    return std::nullopt;
+}
+
+std::string CommandLine::commandPrefix() const {
+    const auto parsed = m_app.get_subcommands();
+    return parsed.empty() ? "lutkit: " : "lutkit " + parsed.front()->get_name() + ": ";
+}
+
+int CommandLine::parseErrorExit(const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0)
+        return m_app.exit(e) == 0 ? kExitOk : kExitUsage; // --help, -V
+    const auto parsed = m_app.get_subcommands();
+    CLI::App* sub = parsed.empty() ? nullptr : parsed.front();
+    std::string what = e.what();
+    if (what.rfind(": ", 0) == 0)
+        what.erase(0, 2); // hidden (moved) options have no name in CLI11's messages
+    std::cerr << commandPrefix() << what << "\n";
+    // An option name that is nearly one the command has: say which.
+    if (sub && dynamic_cast<const CLI::ExtrasError*>(&e)) {
+        std::vector<std::string> known;
+        for (const CLI::Option* o : sub->get_options())
+            for (const auto& n : o->get_lnames())
+                known.push_back("--" + n);
+        for (const std::string& extra : sub->remaining())
+            if (extra.rfind("--", 0) == 0)
+                if (const auto guess = closestWord(extra.substr(0, extra.find('=')), known))
+                    std::cerr << "lutkit " << sub->get_name() << ": did you mean '" << *guess
+                              << "'?\n";
+    }
+    std::cerr << "Run 'lutkit help" << (sub ? " " + sub->get_name() : "") << "' for usage.\n";
+    return kExitUsage;
+}
+
+int CommandLine::run(const std::vector<std::string>& args) {
+    if (const auto msg = unknownCommandMessage(args)) {
+        std::cerr << *msg;
+        return kExitUsage;
+    }
+    std::vector<std::string> reversed(args.rbegin(), args.rend()); // CLI11 pops from the back
+    try {
+        m_app.parse(reversed);
+    } catch (const Error& e) { // the library: bad input or a failed operation
+        std::cerr << "lutkit: error: " << e.what() << "\n";
+        return kExitFailure;
+    } catch (const UsageError& e) {
+        std::cerr << commandPrefix() << e.what() << "\n";
+        return kExitUsage;
+    } catch (const CLI::ParseError& e) {
+        return parseErrorExit(e);
+    } catch (const CLI::Error& e) { // CLI11 misused: a bug here
+        std::cerr << "lutkit: internal error: " << e.what() << "\n";
+        return kExitFailure;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "lutkit: error: out of memory\n";
+        return kExitFailure;
+    } catch (const std::exception& e) {
+        std::cerr << "lutkit: error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    if (!m_generate.empty()) {
+        std::cout << generate(describeProgram(m_app), m_generate);
+        return kExitOk;
+    }
+    if (m_helpRequested) {
+        if (m_helpTopic.empty())
+            std::cout << m_app.get_formatter()->make_help(&m_app, "lutkit",
+                                                          CLI::AppFormatMode::Normal);
+        else
+            std::cout << m_app.get_subcommand(m_helpTopic)->help("lutkit");
+        return kExitOk;
+    }
+    if (m_app.get_subcommands().empty()) {
+        std::cerr << "lutkit: A subcommand is required: one of";
+        for (const auto& n : commandNames(m_app))
+            std::cerr << " " << n;
+        std::cerr << "\nRun 'lutkit help' for what each does.\n";
+        return kExitUsage;
+    }
+    return m_exitCode;
+}
+
+} // namespace lut::cli

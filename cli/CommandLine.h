@@ -1,0 +1,76 @@
+#pragma once
+// The lutkit command line: every subcommand (commands/X.{h,cpp}: its options, CLI11 set-up, help
+// with examples, and run function), plus `help [COMMAND]`, -V/--version and the hidden
+// `--generate man|bash|zsh|fish` the build uses to write the man page and shell completions.
+//
+// main() is `return lut::cli::CommandLine().run(argc, argv);`. Tests and the CLI fuzzer build the
+// same command line with hooks in place of the run functions, so they see exactly the options,
+// validators and conversions users get.
+#include "commands/Apply.h"
+#include "commands/Bench.h"
+#include "commands/Convert.h"
+#include "commands/Embed.h"
+#include "commands/Extract.h"
+#include "commands/Fit.h"
+#include "commands/Info.h"
+#include "commands/Neutral.h"
+#include "commands/Preview.h"
+#include "commands/Validate.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lut::cli {
+
+template <class Options> using RunFn = std::function<int(const Options&)>;
+
+// What each subcommand runs once its options are parsed, returning the exit code; an empty
+// function = the real run function (runConvert ...).
+struct RunHooks {
+    RunFn<NeutralOptions> neutral;
+    RunFn<ConvertOptions> convert;
+    RunFn<InfoOptions> info;
+    RunFn<ValidateOptions> validate;
+    RunFn<ApplyOptions> apply;
+    RunFn<PreviewOptions> preview;
+    RunFn<EmbedOptions> embed;
+    RunFn<ExtractOptions> extract;
+    RunFn<FitOptions> fit;
+    RunFn<BenchOptions> bench;
+};
+
+class CommandLine {
+public:
+    explicit CommandLine(const RunHooks& hooks = {});
+    CommandLine(const CommandLine&) = delete;
+    CommandLine& operator=(const CommandLine&) = delete;
+
+    // The CLI11 app: its subcommands and option tables (what --help, the man page, the
+    // completions and the vocabulary test read). app().parse(...) runs the subcommand's hook.
+    CLI::App& app() { return m_app; }
+    // The exit code the last run subcommand returned (after app().parse()).
+    int exitCode() const { return m_exitCode; }
+
+    // Everything main does: parses the arguments (after the program name), runs the subcommand,
+    // prints help, usage errors ("did you mean") and library errors; returns the exit code:
+    // 0 ok, 1 bad input or failed operation, 2 bad usage.
+    int run(int argc, const char* const* argv);
+    int run(const std::vector<std::string>& args);
+
+private:
+    int parseErrorExit(const CLI::ParseError& e);
+    std::optional<std::string> unknownCommandMessage(const std::vector<std::string>& args) const;
+    std::string commandPrefix() const; // "lutkit convert: " (the parsed subcommand)
+
+    CLI::App m_app;
+    int m_exitCode = 0;
+    std::string m_generate;       // --generate KIND
+    bool m_helpRequested = false; // `help` was given
+    std::string m_helpTopic;      // `help COMMAND`
+};
+
+} // namespace lut::cli

@@ -1,0 +1,277 @@
+#include "Vocabulary.h"
+
+#include "Suggest.h"
+
+#include "lut/Error.h"
+#include "lut/formats/Registry.h"
+#include "lut/pipeline/Pipeline.h"
+#include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/Extract.h"
+#include "lut/roundtrip/PatchLattice.h"
+
+#include <algorithm>
+
+namespace lut::cli {
+
+namespace {
+
+template <class Enum> std::vector<std::string> namesOf(const std::vector<Enum>& values) {
+    std::vector<std::string> names;
+    for (const Enum v : values)
+        names.emplace_back(toString(v));
+    return names;
+}
+
+// "a, b or c"
+std::string listText(const std::vector<std::string>& names) {
+    std::string s;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return s;
+}
+
+std::string joined(const std::vector<std::string>& names, const char* sep) {
+    std::string s;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        s += (i ? sep : "") + names[i];
+    return s;
+}
+
+Choices formatChoices(const std::string& kind, bool writers) {
+    formats::registerBuiltinFormats();
+    Choices c{kind, writers ? "output format" : "input format", {}, {}, {}};
+    for (const Format* f : FormatRegistry::instance().all())
+        if (writers ? f->canWrite() : f->canRead())
+            c.names.push_back(f->name());
+    const std::vector<std::string> names = c.names;
+    c.accept = [names](const std::string& s) {
+        if (std::find(names.begin(), names.end(), s) == names.end())
+            throw Error("unknown format '" + s + "'");
+    };
+    return c;
+}
+
+} // namespace
+
+Choices layoutChoices() {
+    Choices c{"layout", "layout", namesOf(allLayouts()), {}, {}};
+    for (const LutLayout l : allLayouts())
+        for (const auto& a : layoutAliases(l))
+            c.aliases.push_back(a);
+    c.accept = [](const std::string& s) { (void)parseLayout(s); };
+    return c;
+}
+
+Choices interpChoices() {
+    Choices c{"interp",
+              "interpolation",
+              namesOf(std::vector<Interpolation>{Interpolation::Nearest, Interpolation::Trilinear,
+                                                 Interpolation::Tetrahedral}),
+              {},
+              {}};
+    c.accept = [](const std::string& s) { (void)parseInterpolation(s); };
+    return c;
+}
+
+Choices presetChoices() {
+    Choices c{"preset", "preset", namesOf(allPresets()), {}, {}};
+    for (const Preset p : allPresets())
+        for (const auto& a : presetAliases(p))
+            c.aliases.push_back(a);
+    c.accept = [](const std::string& s) { (void)parsePreset(s); };
+    return c;
+}
+
+Choices stageChoices() {
+    Choices c{"stage", "stage", stageNames(), {}, {}};
+    for (const auto& alias : stageAliases())
+        c.aliases.push_back(alias.first);
+    c.accept = [](const std::string& s) {
+        if (s != "bloom")
+            (void)makeStage(s);
+    };
+    return c;
+}
+
+Choices readFormatChoices() {
+    return formatChoices("in-format", false);
+}
+
+Choices writeFormatChoices() {
+    return formatChoices("format", true);
+}
+
+Choices latticeChoices() {
+    Choices c{"lattice",
+              "lattice",
+              namesOf(std::vector<PatchLattice>{PatchLattice::Uniform, PatchLattice::Smash}),
+              {},
+              {}};
+    c.accept = [](const std::string& s) { (void)parseLattice(s); };
+    return c;
+}
+
+Choices targetChoices() {
+    Choices c{"target",
+              "target",
+              namesOf(std::vector<ExtractTarget>{ExtractTarget::Raw, ExtractTarget::Smash}),
+              {},
+              {}};
+    c.accept = [](const std::string& s) { (void)parseTarget(s); };
+    return c;
+}
+
+Choices cornerChoices() {
+    Choices c{"corner",
+              "corner",
+              namesOf(std::vector<PatchCorner>{PatchCorner::TopLeft, PatchCorner::TopRight,
+                                               PatchCorner::BottomLeft, PatchCorner::BottomRight}),
+              {},
+              {}};
+    c.accept = [](const std::string& s) { (void)parseCorner(s); };
+    return c;
+}
+
+Choices bitDepthChoices() {
+    Choices c{"bit-depth", "bit depth", {"8", "16", "32"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "8" && s != "16" && s != "32")
+            throw Error("bit depth must be 8, 16 or 32 (float)");
+    };
+    return c;
+}
+
+std::optional<Choices> choicesForValidator(const std::string& name) {
+    const std::string prefix = kChoicesValidatorPrefix;
+    if (name.compare(0, prefix.size(), prefix) != 0)
+        return std::nullopt;
+    const std::string kind = name.substr(prefix.size());
+    for (Choices (*make)() :
+         {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
+          writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices}) {
+        Choices c = make();
+        if (c.kind == kind)
+            return c;
+    }
+    return std::nullopt;
+}
+
+std::string unknownNameMessage(const Choices& c, const std::string& value) {
+    std::vector<std::string> all = c.names;
+    all.insert(all.end(), c.aliases.begin(), c.aliases.end());
+    std::string s = "unknown " + c.what + " '" + value + "'";
+    if (const auto guess = closestWord(value, all))
+        s += "; did you mean '" + *guess + "'?";
+    s += " (expected " + listText(c.names);
+    if (!c.aliases.empty())
+        s += "; also " + joined(c.aliases, ", ");
+    return s + ")";
+}
+
+CLI::Validator choicesValidator(const Choices& c) {
+    return CLI::Validator(
+        [c](std::string& value) -> std::string {
+            try {
+                c.accept(value);
+                return {};
+            } catch (const Error&) {
+                return unknownNameMessage(c, value);
+            }
+        },
+        "{" + joined(c.names, ",") + "}", kChoicesValidatorPrefix + c.kind);
+}
+
+CLI::Validator stageSettingValidator() {
+    return CLI::Validator(
+        [](std::string& value) -> std::string {
+            const auto eq = value.find('=');
+            const auto dot = value.substr(0, eq).rfind('.');
+            if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == eq)
+                return "bad stage setting '" + value + "' (expected STAGE.PARAM=VALUE)";
+            const std::string stage = value.substr(0, dot);
+            const Choices stages = stageChoices();
+            try {
+                stages.accept(stage);
+            } catch (const Error&) {
+                return unknownNameMessage(stages, stage);
+            }
+            if (stage == "bloom")
+                return {}; // the preset's bloom: checked when the pipeline is built
+            const auto s = makeStage(stage);
+            const std::string param = value.substr(dot + 1, eq - dot - 1);
+            std::vector<std::string> params;
+            for (const auto& p : s->params())
+                params.push_back(p.name);
+            if (std::find(params.begin(), params.end(), param) == params.end()) {
+                std::string msg = "stage '" + stage + "' has no parameter '" + param + "'";
+                if (const auto guess = closestWord(param, params))
+                    msg += "; did you mean '" + *guess + "'?";
+                return msg + " (parameters: " + joined(params, ", ") + ")";
+            }
+            try {
+                s->setParam(param, value.substr(eq + 1));
+            } catch (const Error& e) {
+                return e.what();
+            }
+            return {};
+        },
+        "STAGE.PARAM=VALUE", "stage-setting");
+}
+
+CLI::Option* addOutputFormat(CLI::App& sub, std::string& target) {
+    return sub.add_option("--format", target, "output format (default: from OUT's extension)")
+        ->type_name("NAME")
+        ->check(choicesValidator(writeFormatChoices()));
+}
+
+CLI::Option* addInputFormat(CLI::App& sub, std::string& target) {
+    return sub.add_option("--in-format", target, "input format (default: from the extension)")
+        ->type_name("NAME")
+        ->check(choicesValidator(readFormatChoices()));
+}
+
+CLI::Option* addLayout(CLI::App& sub, const std::string& name, std::optional<LutLayout>& target,
+                       const std::string& help) {
+    const Choices c = layoutChoices();
+    return sub
+        .add_option_function<std::string>(
+            name, [&target](const std::string& v) { target = parseLayout(v); },
+            help + " (also " + joined(c.aliases, ", ") + ")")
+        ->type_name("NAME")
+        ->check(choicesValidator(c));
+}
+
+CLI::Option* addInterp(CLI::App& sub, Interpolation& target, const std::string& help) {
+    return sub
+        .add_option_function<std::string>(
+            "--interp,--interpolation",
+            [&target](const std::string& v) { target = parseInterpolation(v); }, help)
+        ->type_name("NAME")
+        ->check(choicesValidator(interpChoices()));
+}
+
+CLI::Option* addBitDepth(CLI::App& sub, int& target, const std::string& help) {
+    return sub.add_option("--bit-depth", target, help)
+        ->type_name("BITS")
+        ->check(choicesValidator(bitDepthChoices()));
+}
+
+CLI::Option* addThreads(CLI::App& sub, int& target) {
+    return sub.add_option("--threads", target, "worker threads (default 0 = all cores)")
+        ->check(CLI::Range(0, 1024));
+}
+
+void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp) {
+    sub.add_flag("-q,--quiet", target.quiet, "no notes and no progress bar (warnings stay)");
+    if (!verboseHelp.empty())
+        sub.add_flag("-v,--verbose", target.verbose, verboseHelp);
+}
+
+CLI::Option* addMovedOption(CLI::App& sub, const std::string& name, const std::string& message) {
+    return sub.add_option_function<std::string>(name, [](const std::string&) {})
+        ->check(
+            CLI::Validator([message](std::string&) { return message; }, "", kMovedValidatorName))
+        ->group("");
+}
+
+} // namespace lut::cli

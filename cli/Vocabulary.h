@@ -1,0 +1,77 @@
+#pragma once
+// One vocabulary for every lutkit subcommand: an option name means the same thing everywhere
+// (--format is the output format, --in-format the input's, --layout the output layout ...). The
+// options several subcommands share are added here, once; an option whose values come from a
+// fixed set gets a validator built from the library's own name lists (toString, the aliases its
+// parser accepts, the format registry), so a bad value is bad usage (exit 2) with a "did you
+// mean", and a name the library learns is accepted here without an edit.
+#include "Notes.h"
+
+#include "lut/interp/Interpolation.h"
+#include "lut/io/Layout.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lut::cli {
+
+// A fixed set of names an option takes.
+struct Choices {
+    std::string kind;                 // "layout", "interp" ...: the validator is "choices:<kind>"
+    std::string what;                 // "layout", "interpolation": for messages
+    std::vector<std::string> names;   // the names users see, in the library's order
+    std::vector<std::string> aliases; // older names still accepted
+    // The library's parser: throws lut::Error for a name it does not know (it may accept more
+    // spellings than names + aliases, e.g. "tetra").
+    std::function<void(const std::string&)> accept;
+};
+
+Choices layoutChoices();
+Choices interpChoices();
+Choices presetChoices();
+Choices stageChoices(); // also accepts "bloom", the preset's bloom stage
+Choices readFormatChoices();
+Choices writeFormatChoices();
+Choices latticeChoices();
+Choices targetChoices();
+Choices cornerChoices();
+Choices bitDepthChoices();
+// The choices a validator name "choices:<kind>" refers to (nullopt for another name).
+std::optional<Choices> choicesForValidator(const std::string& validatorName);
+
+constexpr const char* kChoicesValidatorPrefix = "choices:";
+constexpr const char* kMovedValidatorName = "moved";
+
+// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush or hald; also
+// pilot, godot, lattice)"
+std::string unknownNameMessage(const Choices& choices, const std::string& value);
+// Validator named "choices:<kind>": accepts what choices.accept accepts.
+CLI::Validator choicesValidator(const Choices& choices);
+// Validator for --stage STAGE.PARAM=VALUE: the stage by name, the parameter and its range
+// checked by the stage itself (lut::makeStage, Stage::setParam).
+CLI::Validator stageSettingValidator();
+
+// ---- Options shared by several subcommands (same name, same values everywhere) ----
+
+CLI::Option* addOutputFormat(CLI::App& sub, std::string& target); // --format NAME
+CLI::Option* addInputFormat(CLI::App& sub, std::string& target);  // --in-format NAME
+// --layout (output), --in-layout (input), --lut-layout (the LUT read by apply/preview).
+CLI::Option* addLayout(CLI::App& sub, const std::string& name, std::optional<LutLayout>& target,
+                       const std::string& help);
+// --interp (old spelling --interpolation, as lutkit bench and the editor had it).
+CLI::Option* addInterp(CLI::App& sub, Interpolation& target, const std::string& help);
+CLI::Option* addBitDepth(CLI::App& sub, int& target, const std::string& help);
+CLI::Option* addThreads(CLI::App& sub, int& target);
+
+// -q/--quiet, and -v/--verbose when verboseHelp says what it adds ("" = nothing to add: no -v).
+void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp);
+
+// An option whose meaning moved to another name (e.g. `info --format`, now --in-format): hidden
+// from --help; using it is bad usage with `message`, which names the new spelling.
+CLI::Option* addMovedOption(CLI::App& sub, const std::string& name, const std::string& message);
+
+} // namespace lut::cli

@@ -1,0 +1,154 @@
+// lutkit convert: prints what lut::formats::convertLut did and what it cost.
+#include "commands/Convert.h"
+
+#include "Json.h"
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/formats/Convert.h"
+#include "lut/formats/Nutexb.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace lut::cli {
+
+namespace {
+
+std::string ms(double seconds) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g ms", seconds * 1e3);
+    return buf;
+}
+
+std::string describe(const LutFile& f) {
+    std::string s = f.format;
+    if (!f.dialect.empty())
+        s += " (" + f.dialect + ")";
+    if (f.shaper)
+        s += ", 1D shaper " + std::to_string(f.shaper->size());
+    if (f.cube)
+        s += ", " + std::to_string(f.cube->size()) + "^3";
+    if (f.sourceBitDepth)
+        s += ", " + std::to_string(f.sourceBitDepth) + "-bit";
+    return s;
+}
+
+std::string fileJson(const std::string& path, const LutFile& f, double seconds) {
+    return "{\"path\": " + json::quote(path) + ", \"format\": " + json::quote(f.format) +
+           ", \"dialect\": " + json::quote(f.dialect) +
+           ", \"size\": " + std::to_string(f.cube ? f.cube->size() : 0) +
+           ", \"shaper_size\": " + std::to_string(f.shaper ? f.shaper->size() : 0) +
+           ", \"bit_depth\": " + std::to_string(f.sourceBitDepth) +
+           ", \"seconds\": " + json::number(seconds) + "}";
+}
+
+std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r) {
+    std::ostringstream js;
+    js << "{\"input\": " << fileJson(o.input, r.input, r.readSeconds) << ",\n \"output\": "
+       << (r.readBack ? fileJson(o.output, *r.readBack, r.writeSeconds)
+                      : "{\"path\": " + json::quote(o.output) +
+                            ", \"format\": " + json::quote(r.outputFormat) +
+                            ", \"seconds\": " + json::number(r.writeSeconds) + "}")
+       << ",\n \"output_format\": " << json::quote(r.outputFormat) << ",\n \"resample\": ";
+    if (r.resample)
+        js << "{\"from\": " << r.resample->from << ", \"to\": " << r.resample->to
+           << ", \"interp\": " << json::quote(toString(r.resample->interp))
+           << ", \"error\": " << json::stats(r.resample->error) << "}";
+    else
+        js << "null";
+    js << ",\n \"storage\": " << (r.storage ? json::stats(*r.storage) : "null")
+       << ",\n \"read_back_error\": "
+       << (r.readBackError.empty() ? "null" : json::quote(r.readBackError))
+       << ",\n \"input_diagnostics\": " << json::diagnostics(r.input.diagnostics)
+       << ",\n \"diagnostics\": " << json::diagnostics(r.writeDiagnostics)
+       << ",\n \"seconds\": " << json::number(r.totalSeconds) << "}\n";
+    return js.str();
+}
+
+void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
+    std::cout << "read     " << o.input << ": " << describe(r.input) << ", " << ms(r.readSeconds)
+              << "\n";
+    if (o.verbosity.verbose)
+        if (const std::string d = layoutDetail(r.input, o.inLayout.has_value(), "--in-layout");
+            !d.empty())
+            std::cout << "  " << d << "\n";
+    printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
+    if (r.resample)
+        std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
+                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n";
+    else
+        std::cout << "resample none (same size)\n";
+    std::cout << "wrote    " << o.output << ": " << r.outputFormat;
+    if (r.readBack)
+        std::cout << ", reads back as " << describe(*r.readBack);
+    std::cout << ", " << ms(r.writeSeconds) << "\n";
+    printDiagnostics(std::cout, r.writeDiagnostics, o.verbosity);
+    if (r.storage)
+        std::cout << "storage  (quantisation, written file read back): " << r.storage->str()
+                  << "\n";
+    else
+        std::cout << "storage  not measured: cannot read the output back: " << r.readBackError
+                  << "\n";
+    std::cout << "total    " << ms(r.totalSeconds) << "\n";
+}
+
+} // namespace
+
+int runConvert(const ConvertOptions& o) {
+    formats::ConvertOptions co;
+    co.inFormat = o.inFormat;
+    co.outFormat = o.format;
+    co.read.layout = o.inLayout;
+    co.write.layout = o.layout;
+    co.write.size = o.size;
+    co.write.bitDepth = o.bitDepth;
+    co.write.dither = o.dither;
+    if (!o.name.empty())
+        co.write.setAttribute(formats::nutexb::kNameAttribute, o.name);
+    co.interp = o.interp;
+    const formats::ConvertReport report = formats::convertLut(o.input, o.output, co);
+    if (o.json)
+        std::cout << reportJson(o, report);
+    else
+        printReport(o, report);
+    return kExitOk;
+}
+
+CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)> onParsed) {
+    auto o = std::make_shared<ConvertOptions>();
+    auto* sub = app.add_subcommand(
+        "convert", "Convert a LUT to another format, reporting the error introduced");
+    sub->add_option("IN", o->input, "input LUT file")->required()->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT file (format from the extension)")
+        ->required()
+        ->type_name("FILE");
+    addOutputFormat(*sub, o->format);
+    addInputFormat(*sub, o->inFormat);
+    addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addLayout(*sub, "--in-layout", o->inLayout, "input LUT image layout (default: detected)");
+    sub->add_option("--size", o->size,
+                    "output lattice size (default: the format's own, else the input's)")
+        ->check(CLI::Range(2, 256));
+    addInterp(*sub, o->interp, "resampling interpolation (default tetrahedral)");
+    addBitDepth(*sub, o->bitDepth, "LUT image output: 8, 16 or 32 (float)");
+    sub->add_flag("--dither", o->dither, "8-bit image output: ordered dither");
+    sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
+    sub->add_flag("--json", o->json, "print the report as JSON");
+    addVerbosity(*sub, o->verbosity, "also say how a LUT image input was read");
+    sub->footer("Examples:\n"
+                "  lutkit convert grade.cube color_grading_lut.nutexb   # for Smash Ultimate "
+                "(16^3)\n"
+                "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
+                "to .cube\n"
+                "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
+                "  lutkit convert grade.3dl grade.cube --size 33 --json");
+    sub->callback([o, onParsed] { onParsed(*o); });
+    return sub;
+}
+
+} // namespace lut::cli

@@ -1,0 +1,40 @@
+#pragma once
+// lutkit convert IN OUT: any readable LUT file to any writable one, saying what it cost
+// (lut::formats::convertLut does the work; this prints its report as text or JSON).
+#include "Notes.h"
+
+#include "lut/interp/Interpolation.h"
+#include "lut/io/Layout.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace lut::cli {
+
+struct ConvertOptions {
+    std::string input;
+    std::string output;
+    std::string format;                // output format name ("" = from the extension)
+    std::string inFormat;              // input format name ("" = from the extension)
+    std::optional<LutLayout> layout;   // output image layout
+    std::optional<LutLayout> inLayout; // input image layout
+    int size = 0; // output lattice size (0 = the format's fixed size, else the input's)
+    Interpolation interp = Interpolation::Tetrahedral;
+    int bitDepth = 0; // image output bit depth (0 = the format's default)
+    bool dither = false;
+    std::string name; // nutexb name field
+    bool json = false;
+    Verbosity verbosity;
+};
+
+int runConvert(const ConvertOptions& options);
+
+// Adds the subcommand to app; onParsed is called with the options once they are parsed.
+CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)> onParsed);
+
+} // namespace lut::cli

@@ -1,0 +1,34 @@
+#pragma once
+// lutkit embed SCREENSHOT OUT: paste a neutral LUT patch with a marker frame into a screenshot.
+#include "Notes.h"
+
+#include "lut/io/Layout.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace lut::cli {
+
+struct EmbedOptions {
+    std::string input;
+    std::string output;
+    std::string lattice;             // lattice name ("" = the default; uniform when --size given)
+    int size = 16;                   // uniform lattice size
+    std::optional<LutLayout> layout; // patch layout (default: hald for square sizes, else unreal)
+    int scale = 2;
+    std::string corner = "top-left";
+    int margin = 8;
+    Verbosity verbosity;
+};
+
+int runEmbed(const EmbedOptions& options);
+
+// Adds the subcommand to app; onParsed is called with the options once they are parsed.
+CLI::App* setupEmbed(CLI::App& app, std::function<void(const EmbedOptions&)> onParsed);
+
+} // namespace lut::cli

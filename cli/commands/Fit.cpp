@@ -1,0 +1,71 @@
+// lutkit fit: a 3D LUT fitted to a before/after image pair (lut/roundtrip/Fit.h).
+#include "commands/Fit.h"
+
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/formats/ImageIO.h"
+#include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/roundtrip/Fit.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace lut::cli {
+
+int runFit(const FitOptions& o) {
+    checkNotSameFile(o.before, o.output); // never overwrite an input (issue 7)
+    checkNotSameFile(o.after, o.output);
+    auto before = formats::readImage(o.before);
+    auto after = formats::readImage(o.after);
+    lut::FitOptions fo;
+    fo.size = o.size;
+    fo.smoothness = o.smoothness;
+    fo.robust = !o.noRobust;
+    FitResult res = fitLut(before.image.view(), after.image.view(), fo);
+    printDiagnostics(std::cerr, res.diagnostics, o.verbosity, "lutkit: ");
+    char buf[400];
+    std::snprintf(
+        buf, sizeof buf,
+        "fit %d^3 to %zu pixels (%zu distinct colours): error rms %.3g, max %.3g 8-bit steps; "
+        "%.3g%% of the cube extrapolated; %zu outlier pixels\n",
+        o.size, res.pixels, res.distinctColours, res.rmsSteps8, res.maxSteps8,
+        100.0 * res.extrapolatedShare, res.outlierPixels);
+    std::cout << buf;
+    LutFile file;
+    file.cube = std::move(res.lut);
+    FormatOptions wo;
+    wo.layout = o.layout;
+    const Diagnostics wd = formats::writeLut(o.output, file, wo, o.format);
+    printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
+    std::cout << "wrote " << o.output << "\n";
+    return kExitOk;
+}
+
+CLI::App* setupFit(CLI::App& app, std::function<void(const FitOptions&)> onParsed) {
+    auto o = std::make_shared<FitOptions>();
+    auto* sub =
+        app.add_subcommand("fit", "Fit a 3D LUT to a before/after image pair (no patch needed)");
+    sub->add_option("BEFORE", o->before, "the ungraded image")->required()->type_name("FILE");
+    sub->add_option("AFTER", o->after, "the same image graded")->required()->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT (any format)")->required()->type_name("FILE");
+    sub->add_option("--size", o->size, "LUT size (default 33)")->check(CLI::Range(2, 129));
+    sub->add_option("--smoothness", o->smoothness,
+                    "smoothness weight lambda, in pixels (default 1)")
+        ->check(CLI::Range(0.0, 1e9));
+    sub->add_flag("--no-robust", o->noRobust, "plain least squares (no outlier down-weighting)");
+    addOutputFormat(*sub, o->format);
+    addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addVerbosity(*sub, o->verbosity, "");
+    sub->footer("Examples:\n"
+                "  lutkit fit before.png after.png grade.cube\n"
+                "  lutkit fit before.png after.png color_grading_lut.nutexb --size 16");
+    sub->callback([o, onParsed] { onParsed(*o); });
+    return sub;
+}
+
+} // namespace lut::cli

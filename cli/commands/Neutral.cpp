@@ -1,0 +1,84 @@
+// lutkit neutral: the identity LUT in any writable format.
+#include "commands/Neutral.h"
+
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/Error.h"
+#include "lut/formats/ImageFiles.h"
+#include "lut/formats/Nutexb.h"
+#include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace lut::cli {
+
+int defaultNeutralSize(const std::string& path, int formatFixedSize) {
+    if (formatFixedSize > 0)
+        return formatFixedSize;
+    return formats::isImageExtension(path) ? 16 : 33;
+}
+
+int runNeutral(const NeutralOptions& o) {
+    formats::registerBuiltinFormats();
+    const auto& registry = FormatRegistry::instance();
+    const Format* writer =
+        o.format.empty() ? registry.writerForPath(o.output) : registry.byName(o.format);
+    if (!writer || !writer->canWrite())
+        throw Error(o.output + ": no format writes '" + extensionOf(o.output) +
+                    "' files (name the output format: --format)");
+
+    const int size = o.size ? o.size : defaultNeutralSize(o.output, writer->fixedSize());
+    LutFile file;
+    file.cube = Lut3D::identity(size);
+    file.cube->setTitle(o.title.empty() ? "neutral " + std::to_string(size) : o.title);
+    FormatOptions options;
+    options.layout = o.layout;
+    options.size = size;
+    options.bitDepth = o.bitDepth;
+    if (!o.name.empty())
+        options.setAttribute(formats::nutexb::kNameAttribute, o.name);
+    const Diagnostics diags = writer->write(o.output, file, options);
+    std::cout << "wrote " << o.output << ": " << writer->name() << ", neutral " << size << "^3";
+    if (o.layout)
+        std::cout << ", layout " << toString(*o.layout);
+    if (o.bitDepth)
+        std::cout << ", " << o.bitDepth << "-bit";
+    std::cout << "\n";
+    if (o.verbosity.verbose)
+        std::cout << "  " << writer->name() << ": " << writer->description() << "\n";
+    printDiagnostics(std::cout, diags, o.verbosity);
+    return kExitOk;
+}
+
+CLI::App* setupNeutral(CLI::App& app, std::function<void(const NeutralOptions&)> onParsed) {
+    auto o = std::make_shared<NeutralOptions>();
+    auto* sub = app.add_subcommand("neutral", "Write a neutral (identity) LUT in any format");
+    sub->add_option("OUT", o->output, "output file (format from the extension)")
+        ->required()
+        ->type_name("FILE");
+    sub->add_option("--size", o->size,
+                    "lattice size (default: the format's fixed size; 16 for images; 33 otherwise)")
+        ->check(CLI::Range(2, 256));
+    addOutputFormat(*sub, o->format);
+    addLayout(*sub, "--layout", o->layout, "LUT images: the layout (default unreal, 256x16)");
+    addBitDepth(*sub, o->bitDepth, "LUT images: 8, 16 or 32 (float)");
+    sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
+    sub->add_option("--title", o->title, "title stored where the format has one");
+    addVerbosity(*sub, o->verbosity, "also describe the format written");
+    sub->footer("Examples:\n"
+                "  lutkit neutral neutral.png                    # 256x16 strip to grade in an "
+                "image editor\n"
+                "  lutkit neutral color_grading_lut.nutexb       # Smash Ultimate's 16^3 "
+                "neutral\n"
+                "  lutkit neutral --size 65 identity.cube\n"
+                "  lutkit neutral --layout unity --bit-depth 16 unity_neutral.png");
+    sub->callback([o, onParsed] { onParsed(*o); });
+    return sub;
+}
+
+} // namespace lut::cli

@@ -1,0 +1,49 @@
+#pragma once
+// lutkit preview IN OUT (or IN... -o DIR): images as the game would show them, through the
+// post-processing chain (lut/pipeline/Pipeline.h) with a LUT, written display-encoded.
+#include "Notes.h"
+
+#include "lut/interp/Interpolation.h"
+#include "lut/io/Layout.h"
+#include "lut/pipeline/Pipeline.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace lut::cli {
+
+struct PreviewOptions {
+    std::vector<std::string> inputs;    // IN OUT, or with outputDir: files and/or folders
+    std::string outputDir;              // -o DIR: batch mode
+    std::string lut;                    // grading LUT (default neutral)
+    std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
+    Preset preset = Preset::Smash;      // smash | filmic | cinematic | none
+    bool noBloom = false;
+    Interpolation interp = Interpolation::Trilinear; // the game samples with hardware trilinear
+    bool fromScreenshot = false;            // input went through the game's grading already
+    std::string originalLut;                // the LUT the screenshot was graded with (neutral)
+    std::vector<std::string> stageSettings; // "stage.param=value"
+    std::vector<std::string> enable;
+    std::vector<std::string> disable;
+    unsigned long long frame = 0; // frame index (film grain)
+    int bitDepth = 0;             // 0 = the input's (float input: 32 for .exr/.hdr, else 16/8)
+    int threads = 0;
+    bool listStages = false;
+    Verbosity verbosity; // -v: the stages that ran and their time
+};
+
+int runPreview(const PreviewOptions& options);
+
+// The stages of a pipeline with every parameter, its value and range (--list-stages).
+std::string stageList(const Pipeline& pipeline);
+
+// Adds the subcommand to app; onParsed is called with the options once they are parsed.
+CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)> onParsed);
+
+} // namespace lut::cli

@@ -1,0 +1,36 @@
+# What `cmake --install build --prefix P` puts where. The programs install themselves in their own
+# CMakeLists (cli/, gui/); this file installs the package a C++ project links against:
+#   P/lib/lutkit/lutkit_imageio.so  the OpenImageIO module (formats/src/imageio/ImageIOLoader.cpp
+#                                    looks for it in <executable dir>/../lib/lutkit/)
+#   P/include/lut/...                the public headers of lutlib and formats, and the generated
+#                                    lut/Version.h
+#   P/lib/liblutlib.a, P/lib/liblutkit_formats.a
+#   P/lib/cmake/lutkit/              find_package(lutkit) -> lutkit::lutlib, lutkit::formats and
+#                                    lutkit::imageio (the module, for $<TARGET_FILE:...>)
+# tests/install checks the installed tree: the installed lutkit runs, and a one-file project
+# builds against it with find_package.
+include(CMakePackageConfigHelpers)
+
+set(LUTKIT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/lutkit)
+# Not CMAKE_INSTALL_LIBDIR: the loader finds the module relative to the executable (bin/..).
+set(LUTKIT_INSTALL_MODULEDIR lib/lutkit)
+
+set_target_properties(lutkit_formats PROPERTIES EXPORT_NAME formats)
+set_target_properties(lutkit_imageio PROPERTIES EXPORT_NAME imageio)
+install(TARGETS lutlib lutkit_formats lutkit_imageio EXPORT lutkitTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${LUTKIT_INSTALL_MODULEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/lutlib/include/ ${PROJECT_SOURCE_DIR}/formats/include/
+                  ${PROJECT_BINARY_DIR}/lutlib/generated/
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+
+install(EXPORT lutkitTargets NAMESPACE lutkit:: DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/lutkitConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/lutkitConfig.cmake
+                              INSTALL_DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})
+# 0.x: a minor version may change the API, so only the same major.minor is compatible.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/lutkitConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/lutkitConfig.cmake ${PROJECT_BINARY_DIR}/lutkitConfigVersion.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/LutkitLibraryDependencies.cmake
+        DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})

@@ -1,0 +1,56 @@
+#pragma once
+// Converting a LUT file into another format, saying what the conversion cost: what `lutkit
+// convert` does, and what the editor's export can call. Two losses are measured apart:
+//  - resampling, when the output stores another lattice size (the format's fixed size or the one
+//    asked for): lut::resampleWithError on a probe grid;
+//  - storage (integer quantisation, clipping, a dropped domain or shaper): the written file is
+//    read back and compared with the table that was handed to the writer.
+// The input is never written over (lut::checkNotSameFile); the output is written atomically.
+#include "lut/ErrorStats.h"
+#include "lut/LutFile.h"
+#include "lut/interp/Interpolation.h"
+#include "lut/io/FormatOptions.h"
+
+#include <optional>
+#include <string>
+
+namespace lut::formats {
+
+struct ConvertOptions {
+    std::string inFormat;  // input format name ("" = by extension)
+    std::string outFormat; // output format name ("" = by extension)
+    FormatOptions read;    // how to read the input (layout of a LUT image, sampling size ...)
+    // How to write the output. write.size is the output lattice size: 0 = the output format's
+    // fixed size if it has one, else the input's.
+    FormatOptions write;
+    Interpolation interp = Interpolation::Tetrahedral; // for resampling
+};
+
+struct ResampleStep {
+    int from = 0; // input lattice size
+    int to = 0;   // output lattice size
+    Interpolation interp = Interpolation::Tetrahedral;
+    ErrorStats error; // against the input on a probe grid (with its time)
+};
+
+struct ConvertReport {
+    LutFile input; // as read (with its diagnostics)
+    double readSeconds = 0.0;
+    std::string outputFormat;             // the writer's name
+    std::optional<ResampleStep> resample; // nullopt: written at the input's size
+    Diagnostics writeDiagnostics;
+    double writeSeconds = 0.0;
+    std::optional<LutFile> readBack;   // the output read back (nullopt: it could not be read)
+    std::optional<ErrorStats> storage; // written table vs read back (with the read-back time)
+    std::string readBackError;         // why the output could not be read back
+    double totalSeconds = 0.0;
+};
+
+// Reads `input`, resamples when the output stores another size, writes `output`, reads it back
+// and measures. Throws lut::Error for an unknown format name, an output extension no format
+// writes, an unreadable input, a size outside lut/Limits.h, or a failed write (the old output,
+// if any, is left as it was).
+ConvertReport convertLut(const std::string& input, const std::string& output,
+                         const ConvertOptions& options = {});
+
+} // namespace lut::formats

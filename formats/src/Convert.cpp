@@ -1,0 +1,129 @@
+// convertLut: read, resample when the output stores another size, write, read back, measure.
+#include "lut/formats/Convert.h"
+
+#include "lut/Error.h"
+#include "lut/Limits.h"
+#include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
+#include "lut/ops/CompareLuts.h"
+#include "lut/ops/Resample.h"
+
+#include <chrono>
+
+namespace lut::formats {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Compares the table handed to the writer with what the file reads back as. When both have the
+// same lattice, domain and shaper shape, entry by entry (exact); otherwise as functions on a probe
+// grid over the written table's domain.
+ErrorStats storageError(const LutFile& written, const LutFile& back) {
+    const bool sameShape =
+        written.cube && back.cube && written.cube->size() == back.cube->size() &&
+        written.cube->domainMin() == back.cube->domainMin() &&
+        written.cube->domainMax() == back.cube->domainMax() &&
+        written.shaper.has_value() == back.shaper.has_value() &&
+        (!written.shaper || (written.shaper->size() == back.shaper->size() &&
+                             written.shaper->domainMin() == back.shaper->domainMin() &&
+                             written.shaper->domainMax() == back.shaper->domainMax()));
+    if (!sameShape)
+        return compareLuts(written.toLut3D(), back.toLut3D(), Interpolation::Tetrahedral);
+    ErrorAccumulator acc;
+    const auto& a = written.cube->entries();
+    const auto& b = back.cube->entries();
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            acc.add(a[i][c], b[i][c]);
+    if (written.shaper)
+        for (int i = 0; i < written.shaper->size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                acc.add((*written.shaper)[i][c], (*back.shaper)[i][c]);
+    return acc.result();
+}
+
+const Format* formatNamed(const std::string& name) {
+    const Format* f = FormatRegistry::instance().byName(name);
+    if (!f) {
+        std::string known;
+        for (const Format* g : FormatRegistry::instance().all())
+            known += (known.empty() ? "" : ", ") + g->name();
+        throw Error("unknown format '" + name + "' (known: " + known + ")");
+    }
+    return f;
+}
+
+} // namespace
+
+ConvertReport convertLut(const std::string& input, const std::string& output,
+                         const ConvertOptions& options) {
+    const auto tStart = Clock::now();
+    const int wantSize = options.write.size;
+    if (wantSize != 0 && (wantSize < limits::kMin3DSize || wantSize > limits::kMax3DSize))
+        throw Error("output size " + std::to_string(wantSize) + " is outside " +
+                    std::to_string(limits::kMin3DSize) + ".." + std::to_string(limits::kMax3DSize));
+    checkNotSameFile(input, output);
+
+    registerBuiltinFormats();
+    if (!options.inFormat.empty())
+        (void)formatNamed(options.inFormat);
+    const Format* writer = options.outFormat.empty()
+                               ? FormatRegistry::instance().writerForPath(output)
+                               : formatNamed(options.outFormat);
+    if (!writer || !writer->canWrite())
+        throw Error(output + ": no format writes '" + extensionOf(output) +
+                    "' files (name the output format: --format)");
+
+    ConvertReport report;
+    report.outputFormat = writer->name();
+
+    auto t0 = Clock::now();
+    report.input = readLut(input, options.read, options.inFormat);
+    report.readSeconds = since(t0);
+    const LutFile& in = report.input;
+    if (!in.cube && !in.shaper)
+        throw Error(input + ": holds no table");
+
+    // Resample when the output stores another lattice size.
+    const int sourceSize = in.cube ? in.cube->size() : 0;
+    int targetSize = wantSize ? wantSize : writer->fixedSize();
+    if (targetSize == 0)
+        targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
+    LutFile toWrite = in;
+    if (targetSize != 0 && targetSize != sourceSize) {
+        ResampleResult r = resampleWithError(in.toLut3D(0), targetSize, options.interp);
+        report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
+        toWrite.shaper.reset();
+        toWrite.cube = std::move(r.lut);
+    }
+    toWrite.diagnostics.clear();
+
+    FormatOptions writeOptions = options.write;
+    writeOptions.size = targetSize;
+    t0 = Clock::now();
+    report.writeDiagnostics = writer->write(output, toWrite, writeOptions);
+    report.writeSeconds = since(t0);
+
+    // Read back what was written, in the layout it was written in.
+    t0 = Clock::now();
+    try {
+        FormatOptions backOptions;
+        backOptions.layout = options.write.layout;
+        report.readBack = readLut(output, backOptions);
+        report.storage = storageError(toWrite, *report.readBack);
+        report.storage->seconds = since(t0);
+    } catch (const Error& e) {
+        report.readBack.reset();
+        report.readBackError = e.what();
+    }
+    report.totalSeconds = since(tStart);
+    return report;
+}
+
+} // namespace lut::formats

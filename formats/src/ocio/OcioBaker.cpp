@@ -1,0 +1,180 @@
+// The OpenColorIO writers: every format OCIO's Baker writes.
+//
+// A raw in-memory Config with an input space and an output space whose transform is our table (a
+// Lut3DTransform, preceded by a range fit when the domain is not [0,1]), baked by OCIO's Baker
+// with cube size = our size (so the baker samples exactly our lattice points), and written
+// atomically. Formats that store integers (.3dl: 12-bit, 0..4095) quantise; the quantisation is
+// reported by callers that read the file back (lutkit convert). Reading goes through the one
+// "ocio" reader (OcioReader.cpp). .spi3d, which OCIO 2.1 reads but cannot bake, is written by
+// hand (Spi3dFormat.cpp).
+#include "Formats.h"
+#include "ocio/OcioSession.h"
+
+#include "lut/Error.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/ops/Resample.h"
+
+#include <sstream>
+
+namespace lut::formats {
+
+namespace {
+
+// Largest grid a Lut3DTransform accepts in OCIO 2.1.
+constexpr int kOcioMaxGrid = 129;
+
+class OcioBakeFormat final : public Format {
+public:
+    OcioBakeFormat(std::string name, std::string ocioName, std::string ext, std::string description,
+                   int storedBits, int minSize = 2)
+        : m_name(std::move(name)), m_ocioName(std::move(ocioName)), m_ext(std::move(ext)),
+          m_description(std::move(description)), m_storedBits(storedBits), m_minSize(minSize) {}
+
+    std::string name() const override { return m_name; }
+    std::string description() const override { return m_description; }
+    std::vector<std::string> extensions() const override { return {m_ext}; }
+    // Reading goes through the one "ocio" reader, which detects the variant itself.
+    bool canRead() const override { return false; }
+    LutFile read(const std::string& path, const FormatOptions&) const override {
+        throw Error(path + ": read it with the 'ocio' format");
+    }
+
+    Diagnostics write(const std::string& path, const LutFile& file,
+                      const FormatOptions& options) const override {
+        Diagnostics diags;
+        if (file.shaper)
+            diags.push_back(ocioDiagnostic(path, "the 1D shaper was baked into the 3D table",
+                                           Diagnostic::Severity::Warning));
+        Lut3D lut = file.toLut3D(options.size);
+        if (lut.size() < m_minSize) {
+            // A .3dl's first line lists the input lattice; with fewer than 4 entries OCIO takes it
+            // for a row of values and cannot read the file back. Upsampling is exact here: the
+            // finer tetrahedral lattice interpolates the coarse one's tetrahedra unchanged.
+            diags.push_back(ocioDiagnostic(
+                path, "a " + std::to_string(lut.size()) + "^3 table is written as " +
+                          std::to_string(m_minSize) + "^3 (" + m_name + " needs at least " +
+                          std::to_string(m_minSize) + " lattice points per axis)"));
+            lut = resample(lut, m_minSize, Interpolation::Tetrahedral);
+        }
+        if (lut.size() > kOcioMaxGrid)
+            throw Error(path + ": OpenColorIO writes tables up to " + std::to_string(kOcioMaxGrid) +
+                        "^3; this one is " + std::to_string(lut.size()) + "^3 (use --size)");
+        if (!lut.hasDefaultDomain())
+            diags.push_back(ocioDiagnostic(
+                path, "domain is not [0,1]: the table was re-sampled over [0,1] inputs",
+                Diagnostic::Severity::Warning));
+        if (m_storedBits) {
+            const auto [lo, hi] = lut.valueRange();
+            if (lo < 0.0f || hi > 1.0f)
+                diags.push_back(ocioDiagnostic(path,
+                                               "values outside [0,1] (" + std::to_string(lo) +
+                                                   ".." + std::to_string(hi) +
+                                                   ") are clipped: " + m_name + " stores " +
+                                                   std::to_string(m_storedBits) + "-bit integers",
+                                               Diagnostic::Severity::Warning));
+            else
+                diags.push_back(ocioDiagnostic(
+                    path, m_name + " stores " + std::to_string(m_storedBits) + "-bit integers"));
+        }
+
+        OcioSession session(path);
+        std::ostringstream os;
+        try {
+            const int n = lut.size();
+            auto l3 = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
+            for (int b = 0; b < n; ++b)
+                for (int g = 0; g < n; ++g)
+                    for (int r = 0; r < n; ++r) {
+                        const glm::vec3 v = lut.at(r, g, b);
+                        l3->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
+                                     static_cast<unsigned long>(b), v.x, v.y, v.z);
+                    }
+            l3->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+            auto group = OCIO::GroupTransform::Create();
+            if (!lut.hasDefaultDomain()) {
+                // Map [0,1] inputs to the table's own lattice coordinates.
+                const glm::vec3 lo = lut.domainMin(), hi = lut.domainMax();
+                double oldMin[4] = {lo.x, lo.y, lo.z, 0.0}, oldMax[4] = {hi.x, hi.y, hi.z, 1.0};
+                double newMin[4] = {0, 0, 0, 0}, newMax[4] = {1, 1, 1, 1};
+                double m44[16], offset4[4];
+                OCIO::MatrixTransform::Fit(m44, offset4, oldMin, oldMax, newMin, newMax);
+                auto mt = OCIO::MatrixTransform::Create();
+                mt->setMatrix(m44);
+                mt->setOffset(offset4);
+                group->appendTransform(mt);
+            }
+            group->appendTransform(l3);
+
+            auto config = OCIO::Config::CreateRaw()->createEditableCopy();
+            auto in = OCIO::ColorSpace::Create();
+            in->setName("lutkit_in");
+            config->addColorSpace(in);
+            auto outCs = OCIO::ColorSpace::Create();
+            outCs->setName("lutkit_out");
+            outCs->setTransform(group, OCIO::COLORSPACE_DIR_FROM_REFERENCE);
+            config->addColorSpace(outCs);
+
+            auto baker = OCIO::Baker::Create();
+            baker->setConfig(config);
+            baker->setFormat(m_ocioName.c_str());
+            baker->setInputSpace("lutkit_in");
+            baker->setTargetSpace("lutkit_out");
+            baker->setCubeSize(n);
+            auto& md = baker->getFormatMetadata();
+            if (!lut.title().empty()) {
+                md.addAttribute(OCIO::METADATA_NAME, lut.title().c_str());
+                md.addChildElement(OCIO::METADATA_DESCRIPTION, lut.title().c_str());
+            }
+            for (const auto& c : lut.comments())
+                if (!c.empty())
+                    md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
+            baker->bake(os);
+        } catch (const Error&) {
+            throw;
+        } catch (const std::exception& e) {
+            // OCIO::Exception, and C++ library errors from inside OCIO (std::bad_alloc...).
+            throw Error(path + ": OpenColorIO cannot write " + m_name + ": " +
+                        ocioMessage(e.what()));
+        }
+        writeFileAtomically(path, os.str());
+        session.appendDiagnostics(diags);
+        return diags;
+    }
+
+    int storedBitDepth() const override { return m_storedBits; }
+
+private:
+    std::string m_name, m_ocioName, m_ext, m_description;
+    int m_storedBits;
+    int m_minSize;
+};
+
+} // namespace
+
+std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
+    std::vector<std::unique_ptr<Format>> v;
+    // Order matters where two share an extension: the first is the default writer (.3dl -> flame).
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "flame", "flame", ".3dl", "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "lustre", "lustre", ".3dl", "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12,
+        4));
+    v.push_back(std::make_unique<OcioBakeFormat>("csp", "cinespace", ".csp",
+                                                 "Cinespace .csp, via OpenColorIO", 0));
+    v.push_back(
+        std::make_unique<OcioBakeFormat>("clf", "Academy/ASC Common LUT Format", ".clf",
+                                         "Academy/ASC Common LUT Format .clf, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "ctf", "Color Transform Format", ".ctf",
+        "Autodesk Color Transform Format .ctf, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>("cub", "truelight", ".cub",
+                                                 "Truelight .cub, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx",
+                                                 "Iridas .itx, via OpenColorIO", 0));
+    v.push_back(makeSpi3dFormat());
+    v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut",
+                                                 "Houdini .lut, via OpenColorIO", 0));
+    return v;
+}
+
+} // namespace lut::formats

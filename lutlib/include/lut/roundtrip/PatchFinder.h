@@ -1,0 +1,22 @@
+#pragma once
+// Finding a round-trip patch again in an edited screenshot by its marker frame (the frame is
+// described in lut/roundtrip/PatchPlacement.h).
+#include "lut/Image.h"
+#include "lut/roundtrip/PatchPlacement.h"
+
+#include <string>
+
+namespace lut {
+
+enum class FindStatus { Found, NotFound, Scaled };
+struct FindResult {
+    FindStatus status = FindStatus::NotFound;
+    PatchPlacement placement;
+    // Scaled: the marker's observed cell period in pixels (not a whole number); Found: cell/scale.
+    double observedPeriod = 0.0;
+    std::string message; // why it was not found / how it looks scaled
+};
+// Searches the whole image (the patch may have been moved or the image cropped by whole pixels).
+FindResult findPatch(const ImageView& image);
+
+} // namespace lut

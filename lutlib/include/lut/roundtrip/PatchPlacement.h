@@ -1,0 +1,39 @@
+#pragma once
+// Where a round-trip patch sits in an image, and how big its marker frame is.
+//
+// The marker frame (two cells wide around the patch, one cell = scale x scale pixels):
+//  - outer ring: a checkerboard of two symbols, white and black;
+//  - inner ring: a 35-bit header (sync word, lattice, bit depth, layout, size, scale, CRC-8)
+//    written clockwise from the top-left inner corner and repeated.
+// Detection never looks at absolute levels: a symbol is "the colour of the even outer cells" or
+// "the colour of the odd outer cells", whatever the edit made of white and black. Any per-pixel
+// global edit (curves, levels, inversion, gradient maps, channel mixing) keeps equal pixels equal
+// and so keeps the pattern; only an edit that maps white and black to the same colour destroys it.
+#include "lut/io/Layout.h"
+#include "lut/roundtrip/PatchLattice.h"
+
+namespace lut {
+
+constexpr int kMaxPatchScale = 31; // five header bits
+
+// Where a patch sits, in pixels of the image it was found in or drawn into.
+struct PatchPlacement {
+    PatchLattice lattice = PatchLattice::Uniform;
+    LutLayout layout = LutLayout::Hald;
+    int size = 0;     // N
+    int scale = 1;    // pixels per entry (edge of the square block) as embedded
+    int cell = 1;     // pixels per entry as found (== scale unless the image was upscaled)
+    int bitDepth = 8; // what the patch values were quantised to when embedded (8, 16, 32)
+    int frameX = 0;   // top-left pixel of the marker frame
+    int frameY = 0;
+    int frameWidth = 0; // frame size in pixels
+    int frameHeight = 0;
+    int patchX() const { return frameX + 2 * cell; }
+    int patchY() const { return frameY + 2 * cell; }
+};
+
+// Frame size in pixels of a patch (throws lut::Error for unsupported combinations: the header
+// needs a patch at least 19 entries wide, i.e. N >= 5 for strips and N >= 9 for Hald).
+void patchFrameSize(LutLayout layout, int size, int scale, int& width, int& height);
+
+} // namespace lut

@@ -1,0 +1,222 @@
+// Checks on a read patch before extract builds a LUT; see ExtractChecks.h.
+#include "roundtrip/ExtractChecks.h"
+
+#include "roundtrip/GameDisplay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace lut::detail {
+
+void addWarning(ExtractResult& res, RoundtripWarning w, const std::string& message) {
+    res.warnings.push_back(w);
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.message = message;
+    res.diagnostics.push_back(std::move(d));
+}
+
+void addNote(ExtractResult& res, const std::string& message) {
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Info;
+    d.message = message;
+    res.diagnostics.push_back(std::move(d));
+}
+
+std::string formatMessage(const char* f, double a, double b, double c, double d) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, f, a, b, c, d);
+    return buf;
+}
+
+namespace {
+
+// Entries that no smooth or piecewise-smooth (kinked) global edit explains: for each axis, the
+// entry must agree with at least one of a centred cubic, a linear interpolation of its two
+// neighbours, or a linear extrapolation from either side (the one-sided forms accept kinks such
+// as gradient-map stops and clipping). Returns the count; thresholds in 8-bit steps.
+std::size_t countSuspicious(const Lut3D& v, double thresholdSteps) {
+    const int n = v.size();
+    if (n < 4)
+        return 0;
+    const float thr = static_cast<float>(thresholdSteps / 255.0);
+    std::size_t count = 0;
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const int idx[3] = {r, g, b};
+                bool bad = false;
+                for (int axis = 0; axis < 3 && !bad; ++axis) {
+                    const int i = idx[axis];
+                    if (i < 1 || i + 1 >= n)
+                        continue;
+                    auto at = [&](int k) {
+                        int q[3] = {r, g, b};
+                        q[axis] = k;
+                        return v.at(q[0], q[1], q[2]);
+                    };
+                    const glm::vec3 c = at(i), lo = at(i - 1), hi = at(i + 1);
+                    for (int ch = 0; ch < 3 && !bad; ++ch) {
+                        // only a spike (a local extremum standing out from both neighbours) can be
+                        // a local edit; curvature and kinks of global edits are monotone here or
+                        // explained by one side
+                        const bool spike = c[ch] > std::max(lo[ch], hi[ch]) + thr ||
+                                           c[ch] < std::min(lo[ch], hi[ch]) - thr;
+                        if (!spike)
+                            continue;
+                        float best = std::fabs((lo[ch] + hi[ch]) * 0.5f - c[ch]);
+                        if (i >= 2 && i + 2 < n)
+                            best = std::min(best, std::fabs((-at(i - 2)[ch] + 4.0f * lo[ch] +
+                                                             4.0f * hi[ch] - at(i + 2)[ch]) /
+                                                                6.0f -
+                                                            c[ch]));
+                        if (i >= 2)
+                            best = std::min(best, std::fabs(2.0f * lo[ch] - at(i - 2)[ch] - c[ch]));
+                        if (i + 2 < n)
+                            best = std::min(best, std::fabs(2.0f * hi[ch] - at(i + 2)[ch] - c[ch]));
+                        if (best > thr)
+                            bad = true;
+                    }
+                }
+                if (bad)
+                    ++count;
+            }
+    return count;
+}
+
+void checkGreys(const PatchReading& patch, ExtractResult& res) {
+    const int n = patch.values.size();
+    double gammaSum = 0.0;
+    double gammas[3] = {1, 1, 1};
+    double worstPowerFit = 0.0, worstSrgbTo22 = 0.0, worst22ToSrgb = 0.0;
+    int used = 0;
+    for (int c = 0; c < 3; ++c) {
+        double sxy = 0.0, sxx = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double a = patch.axis[i], y = patch.values.at(i, i, i)[c];
+            if (a < 0.1 || a > 0.95 || y < 0.01)
+                continue;
+            sxy += std::log(a) * std::log(y);
+            sxx += std::log(a) * std::log(a);
+        }
+        if (sxx <= 0.0)
+            return;
+        gammas[c] = sxy / sxx;
+        gammaSum += gammas[c];
+        ++used;
+        for (int i = 0; i < n; ++i) {
+            const double a = patch.axis[i], y = patch.values.at(i, i, i)[c];
+            worstPowerFit = std::max(worstPowerFit, std::fabs(std::pow(a, gammas[c]) - y));
+            worstSrgbTo22 =
+                std::max(worstSrgbTo22, std::fabs(std::pow(srgbDecodeUnit(a), 1.0 / 2.2) - y));
+            worst22ToSrgb =
+                std::max(worst22ToSrgb, std::fabs(srgbEncodeUnit(std::pow(a, 2.2)) - y));
+        }
+    }
+    if (used != 3)
+        return;
+    res.gamma = gammaSum / 3.0;
+    const double spread =
+        std::max({gammas[0], gammas[1], gammas[2]}) - std::min({gammas[0], gammas[1], gammas[2]});
+    const double tol = 1.5 / 255.0;
+    if (worstSrgbTo22 <= tol || worst22ToSrgb <= tol) {
+        addWarning(res, RoundtripWarning::ProfileChange,
+                   "the neutral greys of the patch changed exactly like a conversion between the "
+                   "sRGB and a gamma 2.2 colour profile: the editor may have converted colour "
+                   "profiles (assign or keep the profile instead of converting) -- the LUT "
+                   "includes that conversion");
+    } else if (worstPowerFit <= tol && spread <= 0.02 && std::fabs(res.gamma - 1.0) >= 0.05) {
+        addWarning(res, RoundtripWarning::ProfileChange,
+                   formatMessage("the neutral greys of the patch follow a pure gamma curve "
+                                 "(x^%.3f in all channels): this is what a colour-profile or "
+                                 "gamma conversion does (e.g. 2.2 <-> 1.8 gives 1.22); if you did "
+                                 "not apply a gamma edit, check the editor's colour management",
+                                 res.gamma));
+    }
+}
+
+} // namespace
+
+void checkPatch(const PatchReading& patch, ExtractResult& res) {
+    const int n = patch.values.size();
+    const PatchPlacement& pl = patch.placement;
+    const std::size_t blocks = static_cast<std::size_t>(n) * n * n;
+    if (pl.cell >= 2 && patch.nonUniformBlocks > std::max<std::size_t>(2, blocks / 200)) {
+        addWarning(res, RoundtripWarning::NonGlobalEdit,
+                   formatMessage("%g of %g patch blocks are not uniform (up to %.3g 8-bit steps "
+                                 "inside a block): the patch was blurred, sharpened, noised, "
+                                 "painted on or saved lossily; a LUT can only reproduce global "
+                                 "colour edits",
+                                 double(patch.nonUniformBlocks), double(blocks),
+                                 patch.blockMaxDeviation));
+    }
+    res.suspiciousEntries = countSuspicious(patch.values, 3.0);
+    if (res.suspiciousEntries > std::max<std::size_t>(3, blocks / 400) &&
+        !res.has(RoundtripWarning::NonGlobalEdit)) {
+        addWarning(res, RoundtripWarning::NonGlobalEdit,
+                   formatMessage("%g of %g patch entries disagree with their neighbours by more "
+                                 "than 3 8-bit steps in a way no smooth global edit gives: a "
+                                 "local edit (brush, blur, sharpen, noise) touched the patch, or "
+                                 "the edit is not a per-pixel colour function",
+                                 double(res.suspiciousEntries), double(blocks)));
+    }
+    std::size_t clipped = 0, total = 0;
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 v = patch.values.at(r, g, b);
+                const float in[3] = {patch.axis[r], patch.axis[g], patch.axis[b]};
+                for (int c = 0; c < 3; ++c) {
+                    ++total;
+                    const bool lo = v[c] <= 0.5f / 255.0f, hi = v[c] >= 1.0f - 0.5f / 255.0f;
+                    if ((lo && in[c] > 0.0f) || (hi && in[c] < 1.0f))
+                        ++clipped;
+                }
+            }
+    res.clippedValues = clipped;
+    if (clipped * 100 > total * 3)
+        addWarning(res, RoundtripWarning::Clipping,
+                   formatMessage("%.3g%% of the patch values are clipped at 0 or 1 (%g of %g): "
+                                 "the edit throws those colour differences away and no LUT can "
+                                 "bring them back",
+                                 100.0 * double(clipped) / double(total), double(clipped),
+                                 double(total)));
+    checkGreys(patch, res);
+}
+
+ErrorStats subLatticeError(const PatchReading& patch) {
+    const int n = patch.values.size();
+    ErrorAccumulator acc;
+    if (n < 3)
+        return acc.result();
+    std::vector<int> keep;
+    for (int i = 0; i < n; i += 2)
+        keep.push_back(i);
+    if (keep.back() != n - 1)
+        keep.push_back(n - 1);
+    const int m = static_cast<int>(keep.size());
+    Lut3D sub(m);
+    std::vector<float> subAxis(m);
+    for (int i = 0; i < m; ++i)
+        subAxis[i] = patch.axis[keep[i]];
+    for (int b = 0; b < m; ++b)
+        for (int g = 0; g < m; ++g)
+            for (int r = 0; r < m; ++r)
+                sub.at(r, g, b) = patch.values.at(keep[r], keep[g], keep[b]);
+    const PatchFunction coarse(sub, subAxis);
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                if (r % 2 == 0 && g % 2 == 0 && b % 2 == 0)
+                    continue;
+                const glm::vec3 p = coarse(glm::vec3(patch.axis[r], patch.axis[g], patch.axis[b]));
+                const glm::vec3 t = patch.values.at(r, g, b);
+                for (int c = 0; c < 3; ++c)
+                    acc.add(p[c], t[c]);
+            }
+    return acc.result();
+}
+
+} // namespace lut::detail

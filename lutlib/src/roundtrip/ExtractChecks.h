@@ -1,0 +1,31 @@
+#pragma once
+// Internal to lutlib: what extract checks on a read patch before it builds a LUT, and how it
+// reports what it found (warnings with a kind, info notes). Each warning has a test that
+// triggers it (docs/roundtrip.md, "Warnings").
+#include "lut/ErrorStats.h"
+#include "lut/roundtrip/Extract.h"
+#include "lut/roundtrip/PatchReader.h"
+#include "lut/roundtrip/RoundtripWarning.h"
+
+#include <string>
+
+namespace lut::detail {
+
+// A warning: its kind in res.warnings, its message in res.diagnostics.
+void addWarning(ExtractResult& res, RoundtripWarning w, const std::string& message);
+// An info diagnostic.
+void addNote(ExtractResult& res, const std::string& message);
+// printf-style message with up to four numbers.
+std::string formatMessage(const char* format, double a, double b = 0, double c = 0, double d = 0);
+
+// The checks on the patch itself, in this order: blocks that are not uniform, entries no smooth
+// global edit explains (res.suspiciousEntries), values clipped at 0 or 1 (res.clippedValues),
+// and a grey axis that follows a pure gamma or sRGB <-> 2.2 curve (res.gamma): a colour-profile
+// conversion rather than an edit.
+void checkPatch(const PatchReading& patch, ExtractResult& res);
+
+// Sub-lattice check: the patch's even lattice points (and the last one) predict the others by
+// the same interpolation extract uses; the error over all channels of the others.
+ErrorStats subLatticeError(const PatchReading& patch);
+
+} // namespace lut::detail

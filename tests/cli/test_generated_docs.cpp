@@ -1,0 +1,148 @@
+// The man page and the shell completions the build generates (cli/CMakeLists.txt runs
+// `lutkit --generate KIND`): they exist, name every command and option of the option tables (read
+// through lutkit_cli, not a copied list), render (man -l) or parse (bash -n, zsh -n, fish -n when
+// the shell is installed), and the bash completion completes.
+#include "CliTableSupport.h"
+
+#include "TestSupport.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+
+std::string generated(const std::string& name) {
+    return std::string(LUTKIT_BINARY_DIR) + "/cli/" + name;
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+struct Shell {
+    int exitCode = -1;
+    std::string out;
+};
+
+// Runs a /bin/sh command line, stdout captured (stderr joins it when the line says 2>&1).
+Shell sh(const std::string& command) {
+    Shell r;
+    FILE* p = ::popen(command.c_str(), "r");
+    if (!p)
+        return r;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;)
+        r.out.append(buf, n);
+    const int status = ::pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+bool have(const std::string& program) {
+    return sh("command -v " + program + " >/dev/null 2>&1").exitCode == 0;
+}
+
+// In roff, '-' is written "\-".
+std::string roffName(const std::string& option) {
+    std::string s;
+    for (const char c : option)
+        s += c == '-' ? std::string("\\-") : std::string(1, c);
+    return s;
+}
+
+// fish names a long option "-l name".
+std::string fishName(const std::string& option) {
+    return "-l " + option.substr(2);
+}
+
+// Every command and every visible option name of the table appears in text (names transformed
+// by spell, e.g. for roff).
+void expectMentionsEverything(const std::string& text,
+                              std::string (*spell)(const std::string&) = nullptr,
+                              std::string (*spellValue)(const std::string&) = nullptr) {
+    const auto p = lut::test::programTable();
+    for (const auto& c : p.commands) {
+        EXPECT_NE(text.find(c.name), std::string::npos) << c.name;
+        for (const auto& o : c.options) {
+            if (o.hidden || !o.positional.empty())
+                continue;
+            for (const auto& n : o.longNames)
+                EXPECT_NE(text.find(spell ? spell(n) : n), std::string::npos) << c.name << " " << n;
+            for (const auto& v : o.values)
+                EXPECT_NE(text.find(spellValue ? spellValue(v) : v), std::string::npos)
+                    << c.name << " " << o.longNames.front() << " " << v;
+        }
+    }
+}
+
+std::string complete(const std::string& words, int cword) {
+    const std::string script = "source '" + generated("completions/lutkit") + "'; COMP_WORDS=(" +
+                               words + "); COMP_CWORD=" + std::to_string(cword) +
+                               "; _lutkit; echo \"${COMPREPLY[*]}\"";
+    const Shell r = sh("bash -c '" + [&] {
+        std::string q;
+        for (const char c : script)
+            q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q;
+    }() + "'");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    return r.out;
+}
+
+} // namespace
+
+TEST(GeneratedDocs, ManPageNamesEveryCommandAndOptionAndRenders) {
+    const std::string path = generated("lutkit.1");
+    ASSERT_TRUE(fs::exists(path)) << path;
+    const std::string man = slurp(path);
+    EXPECT_EQ(man.rfind(".\\\"", 0), 0u) << "starts with a roff comment";
+    EXPECT_THAT(man, HasSubstr(".TH LUTKIT 1"));
+    EXPECT_THAT(man, HasSubstr("EXIT STATUS"));
+    expectMentionsEverything(man, roffName, roffName);
+    // The file is what lutkit generates now (the build is up to date).
+    EXPECT_EQ(lut::test::runCli("--generate man").out, man);
+    if (!have("man"))
+        GTEST_SKIP() << "man is not installed";
+    const Shell r = sh("MANWIDTH=100 man -l '" + path + "' 2>&1 >/dev/null");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, "") << "warnings from man/groff";
+    const Shell text = sh("MANWIDTH=100 man -l '" + path + "' 2>/dev/null");
+    EXPECT_THAT(text.out, HasSubstr("lutkit convert [OPTIONS] IN OUT"));
+}
+
+TEST(GeneratedDocs, CompletionScriptsNameEveryCommandAndOption) {
+    for (const char* name : {"completions/lutkit", "completions/_lutkit"}) {
+        SCOPED_TRACE(name);
+        ASSERT_TRUE(fs::exists(generated(name)));
+        expectMentionsEverything(slurp(generated(name)), nullptr);
+    }
+    ASSERT_TRUE(fs::exists(generated("completions/lutkit.fish")));
+    expectMentionsEverything(slurp(generated("completions/lutkit.fish")), fishName);
+    EXPECT_EQ(sh("bash -n '" + generated("completions/lutkit") + "'").exitCode, 0);
+    if (have("zsh")) {
+        EXPECT_EQ(sh("zsh -n '" + generated("completions/_lutkit") + "' 2>&1").exitCode, 0);
+    }
+    if (have("fish")) {
+        EXPECT_EQ(sh("fish -n '" + generated("completions/lutkit.fish") + "' 2>&1").exitCode, 0);
+    }
+}
+
+TEST(GeneratedDocs, BashCompletesCommandsOptionsAndValues) {
+    ASSERT_TRUE(fs::exists(generated("completions/lutkit")));
+    EXPECT_EQ(complete("lutkit conv", 1), "convert\n");
+    EXPECT_EQ(complete("lutkit convert --lay", 2), "--layout\n");
+    EXPECT_EQ(complete("lutkit convert a.cube --in-l", 3), "--in-layout\n");
+    EXPECT_EQ(complete("lutkit convert a.cube b.png --layout ''", 5), "unreal unity smush hald\n");
+    EXPECT_EQ(complete("lutkit preview a.png b.png --preset f", 5), "filmic\n");
+    EXPECT_EQ(complete("lutkit help pre", 2), "preview\n");
+    EXPECT_EQ(complete("lutkit -", 1), "-V --version -h --help\n");
+}

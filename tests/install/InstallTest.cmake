@@ -1,0 +1,80 @@
+# ctest install_tree (tests/install/CMakeLists.txt): checks that `cmake --install` gives a tree
+# that works on its own.
+#  1. cmake --install BUILD_DIR --prefix WORK_DIR/prefix
+#  2. the installed lutkit converts the sample grade to a nutexb and to a LUT strip PNG; the strip
+#     needs the image module, which must be loaded from the installed lib/lutkit/ (checked with
+#     the dynamic loader's LD_DEBUG=files log, since the build tree's copy would work too);
+#     `lutkit info --json` on both outputs reports the sizes the formats store (16 and 33); the
+#     installed lutkit-editor (when Qt was found) starts and reports the version
+#  3. a one-file project (consumer/) configures with find_package(lutkit VERSION) against the
+#     prefix only, builds, and runs (consumer/main.cpp says what it checks)
+cmake_minimum_required(VERSION 3.20)
+foreach(v BUILD_DIR WORK_DIR SAMPLES_DIR CONSUMER_DIR VERSION CXX_COMPILER)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "InstallTest.cmake: -D${v}=... is required")
+  endif()
+endforeach()
+
+# Runs a command; fails the test with its output unless it exits 0. The output is left in `out`.
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${rc}):\n  ${ARGN}\n${o}\n${e}")
+  endif()
+  set(out "${o}${e}" PARENT_SCOPE)
+endfunction()
+
+function(expect_match what regex text)
+  if(NOT text MATCHES "${regex}")
+    message(FATAL_ERROR "${what}: expected a match for '${regex}' in:\n${text}")
+  endif()
+endfunction()
+
+set(prefix ${WORK_DIR}/prefix)
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+# 1. Install.
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(f bin/lutkit lib/lutkit/lutkit_imageio.so include/lut/Version.h include/lut/Lut3D.h
+          include/lut/formats/Registry.h lib/cmake/lutkit/lutkitConfig.cmake
+          lib/cmake/lutkit/lutkitConfigVersion.cmake)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "not installed: ${prefix}/${f}")
+  endif()
+endforeach()
+
+# 2. The installed program.
+set(lutkit ${prefix}/bin/lutkit)
+set(cube ${SAMPLES_DIR}/sample_grade.cube)
+run("installed lutkit convert to nutexb" ${lutkit} convert ${cube} ${WORK_DIR}/a.nutexb)
+run("installed lutkit info on the nutexb" ${lutkit} info --json ${WORK_DIR}/a.nutexb)
+expect_match("info a.nutexb" "\"format\": \"nutexb\".*\"size\": 16," "${out}")
+
+run("installed lutkit convert to a strip PNG" ${CMAKE_COMMAND} -E env LD_DEBUG=files
+    ${lutkit} convert ${cube} ${WORK_DIR}/strip.png --layout pilot)
+# glibc logs each dlopen as "file=<path> [0];  dynamically loaded by ...".
+string(REGEX MATCHALL "file=[^ ]*lutkit_imageio\\.so[^\n]*dynamically loaded" loads "${out}")
+string(REGEX REPLACE "([][+.*()^$?|\\])" "\\\\\\1" prefix_regex "${prefix}")
+expect_match("the image module loaded from the installed tree"
+             "^file=${prefix_regex}/bin/\\.\\./lib/lutkit/lutkit_imageio\\.so" "${loads}")
+run("installed lutkit info on the strip" ${lutkit} info --json ${WORK_DIR}/strip.png)
+expect_match("info strip.png" "\"format\": \"strip\".*\"size\": 33," "${out}")
+
+if(EXISTS ${prefix}/bin/lutkit-editor)
+  run("installed lutkit-editor --version" ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen
+      ${prefix}/bin/lutkit-editor --version)
+  expect_match("lutkit-editor --version" "lutkit-editor ${VERSION}" "${out}")
+endif()
+
+# 3. A project built against the installed package, and nothing else.
+set(launcher "")
+if(CXX_LAUNCHER)
+  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_LAUNCHER})
+endif()
+run("configuring the find_package(lutkit) consumer" ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}/consumer
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER} ${launcher}
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DLUTKIT_EXPECTED_VERSION=${VERSION})
+run("building the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
+run("running the consumer" ${WORK_DIR}/consumer/consumer ${cube} ${WORK_DIR})
+message(STATUS "install_tree: ${out}")
