@@ -287,21 +287,26 @@ private slots:
     }
 
     void readerNotesAreShownAndTheLayoutCanBeChosen() {
+        // A Unity strip (256x16, fits three layouts): the reader's note says which layout it
+        // detected; the notes bar shows it; the user can choose another layout.
         QTemporaryDir dir;
         const QString path = dir.filePath("strip.png");
         LutFile f;
         f.cube = Lut3D::identity(16);
-        formats::writeLut(path.toStdString(), f);
+        FormatOptions unity;
+        unity.layout = LutLayout::Unity;
+        formats::writeLut(path.toStdString(), f, unity);
         MainWindow w;
         w.setInteractiveErrors(false);
         w.show();
         QVERIFY(w.openLutFile(path));
         QVERIFY2(w.notesText().contains(QStringLiteral("layout detected")),
                  qPrintable(w.notesText()));
-        FormatOptions unity;
-        unity.layout = LutLayout::Unity;
-        QVERIFY(w.openLutFile(path, unity));
-        const Lut3D want = formats::readLut(path.toStdString(), unity).toLut3D();
+        QVERIFY(w.document()->baseLut().isIdentity(1e-6f));
+        FormatOptions pilot;
+        pilot.layout = LutLayout::Pilot;
+        QVERIFY(w.openLutFile(path, pilot));
+        const Lut3D want = formats::readLut(path.toStdString(), pilot).toLut3D();
         QVERIFY(w.document()->baseLut().entries() == want.entries());
         QVERIFY(!w.document()->baseLut().isIdentity()); // read the other way
     }

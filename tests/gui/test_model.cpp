@@ -479,8 +479,9 @@ private slots:
     }
 
     void stripNotesAreKeptAndTheLayoutCanBeChosen() {
-        // A 256x16 strip fits three layouts: the reader's note (which one it detected) reaches
-        // the document, and the user's choice reads it that way.
+        // A 256x16 strip fits three layouts: a Unity strip is detected as such and the reader
+        // says so (a note that changes what the user gets); the note reaches the document, and
+        // the user's choice of layout reads the picture that way.
         QTemporaryDir dir;
         Lut3D warm = Lut3D::identity(16);
         for (std::size_t i = 0; i < warm.entryCount(); ++i)
@@ -488,19 +489,20 @@ private slots:
         const QString path = dir.filePath("strip.png");
         LutFile f;
         f.cube = warm;
-        FormatOptions pilot;
-        pilot.layout = LutLayout::Pilot;
-        formats::writeLut(path.toStdString(), f, pilot);
+        FormatOptions unity;
+        unity.layout = LutLayout::Unity;
+        formats::writeLut(path.toStdString(), f, unity);
         Document doc;
         const QStringList notes = doc.openLut(path);
         QVERIFY2(notes.join(' ').contains(QStringLiteral("layout detected")),
                  qPrintable(notes.join(' ')));
         QCOMPARE(doc.lutNotes(), notes);
         QVERIFY(stripLayoutIsAmbiguous(path));
-        FormatOptions unity;
-        unity.layout = LutLayout::Unity;
-        doc.openLut(path, unity);
-        const Lut3D want = formats::readLut(path.toStdString(), unity).toLut3D();
+        QVERIFY(maxDiff(doc.baseLut(), warm) < 0.5 / 255 + 1e-6); // detected right: 8-bit only
+        FormatOptions pilot;
+        pilot.layout = LutLayout::Pilot;
+        doc.openLut(path, pilot);
+        const Lut3D want = formats::readLut(path.toStdString(), pilot).toLut3D();
         QCOMPARE(maxDiff(doc.baseLut(), want), 0.0);
         QVERIFY(maxDiff(doc.baseLut(), warm) > 0.1); // read the other way: another LUT
     }
