@@ -2,10 +2,13 @@
 //   lutkit-editor [IMAGE [LUT]]
 //   lutkit-editor --screenshot OUT.png [IMAGE [LUT]]   render the window offscreen, save, exit
 //   lutkit-editor --save-preview OUT.png IMAGE [LUT]   write the preview image like lutkit preview
+//   lutkit-editor --script FILE [IMAGE [LUT]]          drive the window (ScriptRunner.h), exit
 #include "Document.h"
 #include "MainWindow.h"
+#include "PreviewController.h"
 #include "PreviewRenderer.h"
 #include "PreviewView.h"
+#include "ScriptRunner.h"
 
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
@@ -18,11 +21,13 @@
 #include <QPalette>
 #include <QSaveFile>
 #include <QStyleFactory>
+#include <QTextStream>
 #include <QTimer>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 namespace {
 
@@ -52,32 +57,21 @@ void applyDarkTheme(QApplication& app) {
 } // namespace
 
 int main(int argc, char** argv) {
-    // Headless modes need a platform before QApplication exists; so do -V and --help, which
-    // must work on a terminal without a display.
-    bool headless = false, textOnly = false;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strncmp(argv[i], "--screenshot", 12) ||
-            !std::strncmp(argv[i], "--save-preview", 14))
-            headless = true;
-        for (const char* info : {"-V", "--version", "-h", "--help", "--help-all"})
-            textOnly = textOnly || !std::strcmp(argv[i], info);
-    }
-    if ((headless || textOnly) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
+    // The command line is read before any QApplication exists: --help, --version and usage
+    // errors need no display.
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    QCoreApplication::setOrganizationName(QStringLiteral("lutkit"));
+    QCoreApplication::setApplicationName(QStringLiteral("lutkit-editor"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(LUTKIT_VERSION));
 
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("lutkit"));
-    QApplication::setApplicationName(QStringLiteral("lutkit-editor"));
-    QApplication::setApplicationVersion(QStringLiteral(LUTKIT_VERSION));
-    applyDarkTheme(app);
-    lut::formats::registerBuiltinFormats();
-
-    // The options speak lutkit's vocabulary (-V/--version, -v/--verbose, --interp); any bad usage
-    // exits 2, as lutkit does.
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Preview a colour grading LUT on a screenshot as the game shows it, adjust it "
         "and export it."));
+    // The options speak lutkit's vocabulary (-V/--version, -v/--verbose, --interp); any bad usage
+    // exits 2, as lutkit does.
     const QCommandLineOption helpOpt = parser.addHelpOption();
     QCommandLineOption versionOpt({QStringLiteral("V"), QStringLiteral("version")},
                                   QStringLiteral("Print the version and exit."));
@@ -105,7 +99,9 @@ int main(int argc, char** argv) {
     }
     QCommandLineOption presetOpt(
         QStringLiteral("preset"),
-        QStringLiteral("Preview preset: %1 (default smash; also %2).").arg(presets, oldPresets),
+        QStringLiteral("Preview preset: %1 (default smash; also %2). smash is the Smash target; "
+                       "another preset is an engine's chain (target engine).")
+            .arg(presets, oldPresets),
         QStringLiteral("NAME"), QStringLiteral("smash"));
     QString interps;
     for (const auto m : {lut::Interpolation::Nearest, lut::Interpolation::Trilinear,
@@ -140,31 +136,70 @@ int main(int argc, char** argv) {
                                QStringLiteral("ZOOM"), QStringLiteral("fit"));
     QCommandLineOption verboseOpt({QStringLiteral("v"), QStringLiteral("verbose")},
                                   QStringLiteral("Log each preview update's time to stderr."));
+    QCommandLineOption targetOpt(
+        QStringLiteral("target"),
+        QStringLiteral("What the LUT is for: smash (Smash Ultimate, color_grading_lut.nutexb; "
+                       "default), engine (a 16^3 strip PNG) or cube (a grading app)."),
+        QStringLiteral("TARGET"));
+    QCommandLineOption inputOpt(
+        QStringLiteral("input"),
+        QStringLiteral("What IMAGE holds: screenshot or scene (default: 8/16-bit files are "
+                       "in-game screenshots, float files linear scenes)."),
+        QStringLiteral("KIND"));
+    QCommandLineOption scriptOpt(
+        QStringLiteral("script"),
+        QStringLiteral("Run the commands in FILE on the window (one per line; see the editor's "
+                       "docs), print what they print, exit 0 when all worked."),
+        QStringLiteral("FILE"));
     parser.addOptions({versionOpt, shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt,
-                       noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt,
-                       verboseOpt});
-    if (!parser.parse(QApplication::arguments())) {
+                       noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt,
+                       targetOpt, inputOpt, scriptOpt});
+    if (!parser.parse(arguments)) {
         std::fprintf(stderr, "lutkit-editor: %s\nRun 'lutkit-editor --help' for usage.\n",
                      qPrintable(parser.errorText()));
         return 2;
     }
-    if (parser.isSet(helpOpt))
-        parser.showHelp(0);
+    if (parser.isSet(helpOpt)) { // without an application object Qt cannot name the program
+        std::printf("%s", qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"),
+                                                               QStringLiteral("lutkit-editor"))));
+        return 0;
+    }
     if (parser.isSet(versionOpt)) {
         std::printf("lutkit-editor %s\n", LUTKIT_VERSION);
         return 0;
     }
 
+    // Headless modes need a platform before QApplication exists.
+    const bool headless = parser.isSet(shotOpt) || parser.isSet(saveOpt);
+    if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    applyDarkTheme(app);
+    lut::formats::registerBuiltinFormats();
+
+    const bool scripted = parser.isSet(scriptOpt);
     lut::gui::MainWindow window;
     window.setVerbose(parser.isSet(verboseOpt));
-    window.setInteractiveErrors(!headless);
-    if (!headless)
+    window.setInteractiveErrors(!headless && !scripted);
+    if (!headless && !scripted)
         window.restoreWindowState();
 
     lut::gui::PreviewOptions options;
+    std::optional<lut::SceneKind> input;
     try {
-        options.preset = lut::parsePreset(parser.value(presetOpt).toStdString());
+        // --preset smash is the Smash target; another preset is an engine's chain.
+        const lut::Preset preset = lut::parsePreset(parser.value(presetOpt).toStdString());
+        options.target = parser.isSet(targetOpt)
+                             ? lut::gui::parseExportTarget(parser.value(targetOpt).toStdString())
+                         : preset == lut::Preset::Smash ? lut::gui::ExportTarget::Smash
+                                                        : lut::gui::ExportTarget::Engine;
+        if (preset != lut::Preset::Smash)
+            options.preset = preset;
         options.interpolation = lut::parseInterpolation(parser.value(interpOpt).toStdString());
+        if (parser.isSet(inputOpt))
+            input = lut::parseSceneKind(parser.value(inputOpt).toStdString());
+        else if (parser.isSet(fromShotOpt))
+            input = lut::SceneKind::Screenshot;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "lutkit-editor: %s\n", e.what());
         return 2;
@@ -173,7 +208,6 @@ int main(int argc, char** argv) {
     options.lutEnabled = !parser.isSet(noLutOpt);
     options.brighten = !parser.isSet(noBrightenOpt);
     window.setPreviewOptions(options);
-    window.document()->setFromScreenshot(parser.isSet(fromShotOpt));
     if (parser.isSet(sizeOpt)) {
         const QStringList wh = parser.value(sizeOpt).split('x');
         if (wh.size() == 2)
@@ -188,6 +222,11 @@ int main(int argc, char** argv) {
     bool ok = true;
     if (args.size() >= 1)
         ok = window.openImageFile(args[0]) && ok;
+    if (input) { // the picture's kind as the user said, not as detected
+        lut::gui::PreviewOptions o = window.previewOptions();
+        o.input = *input;
+        window.setPreviewOptions(o);
+    }
     if (args.size() >= 2)
         ok = window.openLutFile(args[1]) && ok;
     for (const QString& a : parser.values(adjustOpt)) {
@@ -209,7 +248,7 @@ int main(int argc, char** argv) {
         window.document()->editParam(info->id, std::clamp(value, info->min, info->max));
         window.document()->endGesture();
     }
-    if (headless && !ok)
+    if ((headless || scripted) && !ok)
         return 1;
 
     const QString view = parser.value(viewOpt);
@@ -231,6 +270,13 @@ int main(int argc, char** argv) {
             return 2;
         }
         window.previewView()->zoomTo(percent / 100.0);
+    }
+    if (scripted) {
+        QTextStream out(stdout);
+        window.waitForPreview();
+        const int rc = lut::gui::runScript(window, parser.value(scriptOpt), out);
+        window.close();
+        return rc;
     }
     if (!headless)
         return app.exec();

@@ -1,6 +1,7 @@
 #include "AdjustmentsPanel.h"
 
 #include "Document.h"
+#include "FineSlider.h"
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -8,8 +9,9 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
-#include <QSlider>
 #include <QVBoxLayout>
+
+#include <cmath>
 
 namespace lut::gui {
 
@@ -26,28 +28,34 @@ AdjustmentsPanel::AdjustmentsPanel(Document* doc, QWidget* parent) : QWidget(par
             box = new QGroupBox(QString::fromStdString(group), this);
             grid = new QGridLayout(box);
             grid->setContentsMargins(6, 4, 6, 4);
-            grid->setVerticalSpacing(2);
-            grid->setColumnStretch(1, 1);
+            grid->setVerticalSpacing(0);
+            grid->setColumnStretch(0, 1);
             v->addWidget(box);
             row = 0;
         }
+        // Label and value on one line, the slider across the whole width below them: the
+        // longer the track, the finer a pixel.
         auto* label = new QLabel(QString::fromStdString(info.label), box);
-        auto* slider = new QSlider(Qt::Horizontal, box);
+        auto* slider = new FineSlider(Qt::Horizontal, box);
         slider->setRange(0, kSteps);
+        slider->setSingleStep(kSteps / 200);
         slider->setPageStep(kSteps / 20);
         slider->setObjectName(QString::fromStdString("slider." + info.key));
-        slider->setToolTip(tr("Double-click the value to type; right-click resets"));
+        slider->setToolTip(tr("Drag (Shift: ten times finer); right-click resets. The box takes "
+                              "values from %1 to %2")
+                               .arg(info.min)
+                               .arg(info.max));
         auto* spin = new QDoubleSpinBox(box);
         spin->setRange(info.min, info.max);
         spin->setDecimals(info.decimals);
-        spin->setSingleStep(info.logScale ? 0.01 : (info.max - info.min) / 100.0);
+        spin->setSingleStep(info.logScale ? 0.01 : (info.sliderMax - info.sliderMin) / 200.0);
         spin->setObjectName(QString::fromStdString("spin." + info.key));
         spin->setKeyboardTracking(false);
-        spin->setFixedWidth(70);
+        spin->setFixedWidth(80);
         grid->addWidget(label, row, 0);
-        grid->addWidget(slider, row, 1);
-        grid->addWidget(spin, row, 2);
-        ++row;
+        grid->addWidget(spin, row, 1);
+        grid->addWidget(slider, row + 1, 0, 1, 2);
+        row += 2;
         m_rows[info.id] = {slider, spin};
 
         const AdjustParam id = info.id;

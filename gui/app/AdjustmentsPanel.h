@@ -1,7 +1,8 @@
 #pragma once
 // Sliders (with spin boxes) for every adjustment parameter, bound to a Document: moving a slider
 // pushes undoable edits that merge for the duration of the drag; the panel follows the document
-// on undo/redo.
+// on undo/redo. The sliders are FineSlider (Shift: ten times finer) spanning each parameter's
+// useful range over the dock's width; the spin boxes take any value in the parameter's range.
 #include "AdjustParam.h"
 
 #include <QWidget>
@@ -18,7 +19,7 @@ class Document;
 class AdjustmentsPanel : public QWidget {
     Q_OBJECT
 public:
-    static constexpr int kSteps = 1000;
+    static constexpr int kSteps = 10000;
 
     AdjustmentsPanel(Document* doc, QWidget* parent = nullptr);
     QSlider* slider(AdjustParam id) const;

@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -50,8 +51,8 @@ QList<ExportChoice> exportChoices() {
     return out;
 }
 
-ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
-    : QDialog(parent), m_choices(exportChoices()), m_base(suggestedBase) {
+ExportDialog::ExportDialog(ExportTarget target, const ExportNameInput& naming, QWidget* parent)
+    : QDialog(parent), m_choices(exportChoices()), m_target(target), m_naming(naming) {
     setWindowTitle(tr("Export LUT"));
     auto* form = new QFormLayout(this);
     m_format = new QComboBox(this);
@@ -63,15 +64,16 @@ ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
     auto* pathRow = new QHBoxLayout;
     m_path = new QLineEdit(this);
     m_path->setObjectName("path");
-    m_path->setMinimumWidth(360);
+    m_path->setMinimumWidth(420);
     auto* browse = new QPushButton(tr("Browse…"), this);
     pathRow->addWidget(m_path);
     pathRow->addWidget(browse);
     form->addRow(tr("File"), pathRow);
 
     m_size = new QSpinBox(this);
+    m_size->setObjectName("size");
     m_size->setRange(0, 256);
-    m_size->setSpecialValueText(tr("as edited / format default"));
+    m_size->setSpecialValueText(tr("as edited"));
     form->addRow(tr("Size"), m_size);
     m_bitDepth = new QComboBox(this);
     m_bitDepth->addItem(tr("format default"), 0);
@@ -81,13 +83,10 @@ ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
     form->addRow(tr("Bit depth"), m_bitDepth);
     m_dither = new QCheckBox(tr("Ordered dither for 8-bit images"), this);
     form->addRow(QString(), m_dither);
-    m_compensate =
-        new QCheckBox(tr("Game compensation (Smash): the game shows this LUT's look"), this);
-    m_compensate->setObjectName("compensate");
-    m_compensate->setToolTip(
-        tr("Writes the 16³ LUT that makes Smash Ultimate's grading and "
-           "brighten pass reproduce the LUT as edited (docs/specs/smash-pipeline.md)"));
-    form->addRow(QString(), m_compensate);
+    m_note = new QLabel(this);
+    m_note->setObjectName("note");
+    m_note->setWordWrap(true);
+    form->addRow(tr("Holds"), m_note);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
@@ -96,14 +95,66 @@ ExportDialog::ExportDialog(const QString& suggestedBase, QWidget* parent)
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::choiceChanged);
-    choiceChanged();
+    connect(m_size, &QSpinBox::valueChanged, this, &ExportDialog::updateNote);
+    connect(m_bitDepth, &QComboBox::currentIndexChanged, this, &ExportDialog::updateNote);
+    connect(m_dither, &QCheckBox::toggled, this, &ExportDialog::updateNote);
+
+    // The target's own export first.
+    const ExportTargetInfo& t = exportTargetInfo(target);
+    const QString layout = t.layout ? QString::fromLatin1(toString(*t.layout)) : QString();
+    if (!selectChoice(QString::fromStdString(t.format), layout))
+        choiceChanged();
+}
+
+bool ExportDialog::selectChoice(const QString& format, const QString& layout) {
+    for (int i = 0; i < m_choices.size(); ++i)
+        if (m_choices[i].format == format && m_choices[i].layout == layout) {
+            if (m_format->currentIndex() == i)
+                choiceChanged();
+            else
+                m_format->setCurrentIndex(i);
+            return true;
+        }
+    return false;
 }
 
 void ExportDialog::choiceChanged() {
     const ExportChoice c = choice();
-    const QString layoutSuffix = c.layout.isEmpty() ? QString() : QStringLiteral("_") + c.layout;
-    m_path->setText(m_base + layoutSuffix + c.extension);
-    m_compensate->setChecked(c.format == QLatin1String("nutexb"));
+    ExportNameInput n = m_naming;
+    n.format = c.format;
+    n.layout = c.layout;
+    n.extension = c.extension;
+    m_path->setText(suggestedExportPath(n));
+    // Strips at their natural size (16^3 = 256x16), the game's at its own; else as edited.
+    const ExportTargetInfo& t = exportTargetInfo(m_target);
+    const bool strip = !c.layout.isEmpty();
+    m_size->setValue(c.format == QString::fromStdString(t.format) ? t.size : strip ? 16 : 0);
+    m_bitDepth->setCurrentIndex(0);
+    m_dither->setChecked(false);
+    updateNote();
+}
+
+bool ExportDialog::matchesPreview() const {
+    const ExportTargetInfo& t = exportTargetInfo(m_target);
+    const FormatOptions want = targetFormatOptions(m_target);
+    const ExportChoice c = choice();
+    const FormatOptions o = options();
+    // Another layout of the same strip holds the same entries.
+    const bool sameFormat = c.format == QString::fromStdString(t.format);
+    return sameFormat && o.size == want.size && (o.bitDepth == 0 || o.bitDepth == want.bitDepth) &&
+           !o.dither;
+}
+
+void ExportDialog::updateNote() {
+    const QString what = m_target == ExportTarget::Smash
+                             ? tr("the Smash Ultimate game LUT that shows your edit (16³)")
+                             : tr("the LUT as edited");
+    const QString target = QString::fromStdString(exportTargetInfo(m_target).label);
+    m_note->setText(matchesPreview()
+                        ? tr("%1; exactly what the preview shows (target: %2).").arg(what, target)
+                        : tr("%1, written differently from the target's file (%2): the "
+                             "preview shows that one.")
+                              .arg(what, target));
 }
 
 void ExportDialog::browse() {
@@ -131,10 +182,6 @@ FormatOptions ExportDialog::options() const {
     o.bitDepth = m_bitDepth->currentData().toInt();
     o.dither = m_dither->isChecked();
     return o;
-}
-
-bool ExportDialog::smashCompensate() const {
-    return m_compensate->isChecked();
 }
 
 } // namespace lut::gui

@@ -1,12 +1,20 @@
 #pragma once
 // Export settings: one entry per (writable format, layout) so every strip layout is a choice,
-// plus size, bit depth, dither and the Smash game compensation, and the target file.
+// plus size, bit depth, dither, and the target file. What the file holds follows the window's
+// target (the toolbar): for Smash the game LUT that shows the edit, else the LUT as edited; the
+// dialog says which, and whether the file is exactly what the preview shows (the target's
+// default format and settings). The suggested file is never one the user opened
+// (ExportNaming.h); each format choice suggests its own name.
+#include "ExportNaming.h"
+#include "ExportTarget.h"
+
 #include "lut/io/Format.h"
 
 #include <QDialog>
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QLineEdit;
 class QSpinBox;
 
@@ -25,25 +33,32 @@ QList<ExportChoice> exportChoices();
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
-    ExportDialog(const QString& suggestedBase, QWidget* parent = nullptr);
+    // `naming` gives the opened files (format, layout and extension are filled per choice).
+    ExportDialog(ExportTarget target, const ExportNameInput& naming, QWidget* parent = nullptr);
 
     QString path() const;
     ExportChoice choice() const;
     FormatOptions options() const;
-    bool smashCompensate() const;
+    ExportTarget target() const { return m_target; }
+    // Selects a format (and layout) by registry name; false if there is no such choice.
+    bool selectChoice(const QString& format, const QString& layout = {});
+    // Whether the file will be exactly the target's default export (what the preview shows).
+    bool matchesPreview() const;
 
 private:
     void choiceChanged();
+    void updateNote();
     void browse();
 
     QList<ExportChoice> m_choices;
+    ExportTarget m_target;
+    ExportNameInput m_naming;
     QComboBox* m_format;
     QLineEdit* m_path;
     QSpinBox* m_size;
     QComboBox* m_bitDepth;
     QCheckBox* m_dither;
-    QCheckBox* m_compensate;
-    QString m_base;
+    QLabel* m_note;
 };
 
 } // namespace lut::gui

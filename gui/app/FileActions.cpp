@@ -1,20 +1,27 @@
 #include "FileActions.h"
 
 #include "Document.h"
+#include "ErrorText.h"
 #include "ExportDialog.h"
+#include "FileLoader.h"
 #include "MainWindow.h"
+#include "PreviewController.h"
 #include "RecentFiles.h"
 
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FormatRegistry.h"
+#include "lut/io/Layout.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -27,17 +34,53 @@ namespace {
 const char* kRecentImagesKey = "recent/images";
 const char* kRecentLutsKey = "recent/luts";
 
-// A wait cursor for the lifetime of the object.
-struct WaitCursor {
-    WaitCursor() { QApplication::setOverrideCursor(Qt::WaitCursor); }
-    ~WaitCursor() { QApplication::restoreOverrideCursor(); }
-    WaitCursor(const WaitCursor&) = delete;
-    WaitCursor& operator=(const WaitCursor&) = delete;
-};
+QString human(const std::exception& e) {
+    return QString::fromStdString(humanErrorText(e.what()));
+}
 
 } // namespace
 
-FileActions::FileActions(MainWindow* window) : QObject(window), m_window(window) {}
+FileActions::FileActions(MainWindow* window)
+    : QObject(window), m_window(window), m_loader(new FileLoader(this)) {
+    connect(m_loader, &FileLoader::imageLoaded, this,
+            [this](const QString& path, std::shared_ptr<formats::LoadedImage> image) {
+                m_lastDone = path;
+                m_lastOk = false;
+                try {
+                    m_window->document()->adoptImage(std::move(*image), path);
+                } catch (const std::exception& e) {
+                    m_window->reportError(tr("Cannot open image"), human(e));
+                    return;
+                }
+                m_lastOk = true;
+                addRecent(kRecentImagesKey, path);
+            });
+    connect(m_loader, &FileLoader::lutLoaded, this,
+            [this](const QString& path, std::shared_ptr<LutFile> file) {
+                m_lastDone = path;
+                m_lastOk = false;
+                QStringList notes;
+                try {
+                    notes = m_window->document()->adoptLut(*file, path);
+                } catch (const std::exception& e) {
+                    m_window->reportError(tr("Cannot open LUT"), human(e));
+                    return;
+                }
+                m_lastOk = true;
+                m_window->showNotes(notes);
+                addRecent(kRecentLutsKey, path);
+            });
+    connect(m_loader, &FileLoader::failed, this,
+            [this](const QString& path, const QString& message, bool isLut) {
+                m_lastDone = path;
+                m_lastOk = false;
+                m_window->reportError(
+                    isLut ? tr("Cannot open LUT") : tr("Cannot open image"),
+                    QString::fromStdString(humanErrorText(message.toStdString())));
+            });
+    connect(m_loader, &FileLoader::busyChanged, m_window,
+            [this](bool busy) { m_window->setLoading(busy); });
+}
 
 QString FileActions::imageFilter() {
     return tr("Images (*.png *.exr *.tif *.tiff *.jpg *.jpeg *.bmp *.tga *.hdr *.webp);;"
@@ -87,9 +130,9 @@ void FileActions::updateRecentMenus() {
         menu->clear();
         const QStringList list = settings.value(key).toStringList();
         for (const QString& p : list) {
-            menu->addAction(QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() +
-                                ')',
-                            this, [this, p, lut] { lut ? (void)openLut(p) : (void)openImage(p); });
+            menu->addAction(
+                QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() + ')', this,
+                [this, p, lut] { lut ? (void)startOpenLut(p) : (void)startOpenImage(p); });
         }
         menu->setEnabled(!list.isEmpty());
     };
@@ -99,29 +142,32 @@ void FileActions::updateRecentMenus() {
 
 // ---- opening --------------------------------------------------------------------------------
 
-bool FileActions::openImage(const QString& path) {
-    try {
-        WaitCursor wait;
-        m_window->document()->openImage(path);
-    } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot open image"), QString::fromUtf8(e.what()));
-        return false;
-    }
-    addRecent(kRecentImagesKey, path);
+bool FileActions::startOpenImage(const QString& path) {
+    m_window->setLoadingText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    m_loader->loadImage(path);
     return true;
 }
 
-bool FileActions::openLut(const QString& path) {
+bool FileActions::startOpenLut(const QString& path, const FormatOptions& options) {
     if (!maybeSave())
         return false;
-    try {
-        m_window->document()->openLut(path);
-    } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot open LUT"), QString::fromUtf8(e.what()));
-        return false;
-    }
-    addRecent(kRecentLutsKey, path);
+    m_window->setLoadingText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    m_loader->loadLut(path, options);
     return true;
+}
+
+bool FileActions::openImage(const QString& path) {
+    if (!startOpenImage(path))
+        return false;
+    m_loader->waitForIdle();
+    return m_lastDone == path && m_lastOk;
+}
+
+bool FileActions::openLut(const QString& path, const FormatOptions& options) {
+    if (!startOpenLut(path, options))
+        return false;
+    m_loader->waitForIdle();
+    return m_lastDone == path && m_lastOk;
 }
 
 bool FileActions::openScreenshotLut(const QString& path) {
@@ -131,15 +177,10 @@ bool FileActions::openScreenshotLut(const QString& path) {
     try {
         notes = m_window->document()->startFromScreenshot(path);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot extract a LUT"), QString::fromUtf8(e.what()));
+        m_window->reportError(tr("Cannot extract a LUT"), human(e));
         return false;
     }
-    if (!notes.isEmpty()) {
-        if (m_window->interactiveErrors())
-            QMessageBox::information(m_window, tr("LUT extracted"), notes.join('\n'));
-        else
-            std::fprintf(stderr, "%s\n", qPrintable(notes.join('\n')));
-    }
+    m_window->showNotes(notes);
     return true;
 }
 
@@ -151,19 +192,44 @@ void FileActions::newNeutral(int size) {
 
 // ---- writing --------------------------------------------------------------------------------
 
+bool FileActions::confirmReplace(const QString& path, bool original) {
+    if (!m_window->interactiveErrors())
+        return false; // headless: an existing file is replaced only when told (overwrite)
+    QMessageBox box(QMessageBox::Warning, tr("Replace file?"),
+                    original
+                        ? tr("\"%1\" is the LUT you opened. Replace it? The original is lost.")
+                              .arg(QFileInfo(path).fileName())
+                        : tr("\"%1\" already exists. Replace it?").arg(QFileInfo(path).fileName()),
+                    QMessageBox::NoButton, m_window);
+    QPushButton* replace = box.addButton(tr("Replace"), QMessageBox::DestructiveRole);
+    QPushButton* keep = box.addButton(tr("Keep the file"), QMessageBox::RejectRole);
+    box.setDefaultButton(keep);
+    box.setEscapeButton(keep);
+    box.exec();
+    return box.clickedButton() == replace;
+}
+
 bool FileActions::exportLut(const QString& path, const QString& format,
-                            const FormatOptions& options, bool smashCompensate) {
+                            const FormatOptions& options, ExportTarget target, bool overwrite) {
+    const bool isOriginal = !m_window->document()->lutPath().isEmpty() &&
+                            QFileInfo(path).absoluteFilePath() ==
+                                QFileInfo(m_window->document()->lutPath()).absoluteFilePath();
+    if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, isOriginal)) {
+        m_window->reportError(
+            tr("Export"),
+            tr("%1 exists and was not replaced.").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
     try {
-        const Diagnostics d =
-            m_window->document()->exportLut(path, format, options, smashCompensate);
+        QDir().mkpath(QFileInfo(path).absolutePath()); // the "edited" folder beside an original
+        const Diagnostics d = m_window->document()->exportLut(path, format, options, target);
         QStringList lines;
         for (const auto& x : d)
             lines << QString::fromStdString(x.str());
         showStatus(tr("Exported %1").arg(QFileInfo(path).fileName()));
-        if (!lines.isEmpty() && m_window->interactiveErrors())
-            QMessageBox::information(m_window, tr("Exported with notes"), lines.join('\n'));
+        m_window->showNotes(lines);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Export failed"), QString::fromUtf8(e.what()));
+        m_window->reportError(tr("Export failed"), human(e));
         return false;
     }
     return true;
@@ -173,7 +239,7 @@ bool FileActions::saveAs(const QString& path) {
     try {
         m_window->document()->saveAs(path);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Save failed"), QString::fromUtf8(e.what()));
+        m_window->reportError(tr("Save failed"), human(e));
         return false;
     }
     addRecent(kRecentLutsKey, path);
@@ -193,6 +259,12 @@ bool FileActions::save() {
         saveAsDialog();
         return !doc->isModified();
     }
+    // The first save over the file the user opened asks: it replaces their original.
+    if (doc->savingReplacesOriginal() && m_window->interactiveErrors() &&
+        !confirmReplace(path, true)) {
+        saveAsDialog();
+        return !doc->isModified();
+    }
     return saveAs(path);
 }
 
@@ -203,17 +275,37 @@ bool FileActions::savePreviewImage(const QString& path) {
         return false;
     }
     try {
-        WaitCursor wait;
         // The current full-resolution frame, or a fresh render of it: the view may show a proxy.
         const Image image = m_window->preview()->renderFullResolution();
         const formats::ImageWriteOptions o =
             formats::renderedImageWriteOptions(doc->imageInfo(), path.toStdString());
         formats::writeImage(path.toStdString(), image, o);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot save the preview"), QString::fromUtf8(e.what()));
+        m_window->reportError(tr("Cannot save the preview"), human(e));
         return false;
     }
     showStatus(tr("Saved preview %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+bool FileActions::saveAdjustments(const QString& path) {
+    try {
+        m_window->document()->saveAdjustmentList(path);
+    } catch (const std::exception& e) {
+        m_window->reportError(tr("Cannot save the adjustments"), human(e));
+        return false;
+    }
+    showStatus(tr("Saved adjustments %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+bool FileActions::loadAdjustments(const QString& path) {
+    try {
+        m_window->document()->loadAdjustmentList(path);
+    } catch (const std::exception& e) {
+        m_window->reportError(tr("Cannot load the adjustments"), human(e));
+        return false;
+    }
     return true;
 }
 
@@ -223,13 +315,30 @@ bool FileActions::maybeSave() {
         return true;
     if (!m_window->interactiveErrors())
         return true; // headless: never block on a question
-    const auto answer = QMessageBox::warning(
-        m_window, tr("Unsaved changes"),
-        tr("The LUT \"%1\" has unsaved changes. Save them?").arg(doc->displayName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save)
-        return save();
-    return answer == QMessageBox::Discard;
+    // No default that loses anything: Cancel is the default (and Escape); saving over the
+    // opened original is not offered here (Save As is), unless it was replaced already.
+    const bool canSave = !doc->lutPath().isEmpty() && !doc->savingReplacesOriginal();
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                    tr("The LUT \"%1\" has unsaved changes.").arg(doc->displayName()),
+                    QMessageBox::NoButton, m_window);
+    box.setInformativeText(canSave ? tr("Save them, discard them, or go back?")
+                                   : tr("Save them to a new file, discard them, or go back?"));
+    QPushButton* save =
+        box.addButton(canSave ? tr("Save") : tr("Save As…"), QMessageBox::AcceptRole);
+    save->setObjectName("save");
+    QPushButton* discard = box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
+    discard->setObjectName("discard");
+    QPushButton* cancel = box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(cancel);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() == save) {
+        if (canSave)
+            return this->save();
+        saveAsDialog();
+        return !doc->isModified();
+    }
+    return box.clickedButton() == discard;
 }
 
 // ---- dialogs --------------------------------------------------------------------------------
@@ -238,14 +347,32 @@ void FileActions::openImageDialog() {
     const QString path =
         QFileDialog::getOpenFileName(m_window, tr("Open Image"), QString(), imageFilter());
     if (!path.isEmpty())
-        openImage(path);
+        startOpenImage(path);
 }
 
 void FileActions::openLutDialog() {
     const QString path =
         QFileDialog::getOpenFileName(m_window, tr("Open LUT"), QString(), lutFilter());
-    if (!path.isEmpty())
-        openLut(path);
+    if (path.isEmpty())
+        return;
+    FormatOptions options;
+    if (stripLayoutIsAmbiguous(path)) {
+        // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
+        // agree (a heavy grade can fool it).
+        QStringList items = {tr("Detect automatically")};
+        for (LutLayout l : allLayouts())
+            if (l != LutLayout::Hald)
+                items << QString::fromLatin1(toString(l));
+        bool ok = false;
+        const QString item = QInputDialog::getItem(
+            m_window, tr("Strip layout"),
+            tr("%1 fits several strip layouts. Read it as:").arg(QFileInfo(path).fileName()), items,
+            0, false, &ok);
+        if (!ok)
+            return;
+        options.layout = parseOptionalLayout(item == items[0] ? std::string() : item.toStdString());
+    }
+    startOpenLut(path, options);
 }
 
 void FileActions::openScreenshotDialog() {
@@ -256,23 +383,29 @@ void FileActions::openScreenshotDialog() {
 }
 
 void FileActions::saveAsDialog() {
-    QString base = m_window->document()->lutPath();
+    Document* doc = m_window->document();
+    QString base = doc->lutPath();
     if (base.isEmpty())
-        base = QStringLiteral("grade.cube");
+        base = doc->hasImage() ? QFileInfo(doc->imagePath()).absolutePath() + QStringLiteral("/") +
+                                     QFileInfo(doc->imagePath()).completeBaseName() +
+                                     QStringLiteral("_grade.cube")
+                               : QStringLiteral("grade.cube");
     const QString path = QFileDialog::getSaveFileName(m_window, tr("Save LUT"), base,
                                                       tr("Cube LUT (*.cube);;All files (*)"));
     if (!path.isEmpty())
-        saveAs(path);
+        saveAs(path); // the file dialog asked before replacing
 }
 
 void FileActions::exportDialog() {
-    QString base = m_window->document()->lutPath();
-    base = base.isEmpty() ? QStringLiteral("grade")
-                          : QFileInfo(base).path() + '/' + QFileInfo(base).completeBaseName();
-    ExportDialog dlg(base, m_window);
+    Document* doc = m_window->document();
+    ExportNameInput naming;
+    naming.lutPath = doc->lutPath();
+    naming.imagePath = doc->imagePath();
+    naming.fallbackFolder = QDir::homePath();
+    ExportDialog dlg(m_window->preview()->options().target, naming, m_window);
     if (dlg.exec() != QDialog::Accepted || dlg.path().isEmpty())
         return;
-    exportLut(dlg.path(), dlg.choice().format, dlg.options(), dlg.smashCompensate());
+    exportLut(dlg.path(), dlg.choice().format, dlg.options(), dlg.target());
 }
 
 void FileActions::savePreviewDialog() {
@@ -288,6 +421,26 @@ void FileActions::savePreviewDialog() {
         QFileDialog::getSaveFileName(m_window, tr("Save Preview Image"), base, imageFilter());
     if (!path.isEmpty())
         savePreviewImage(path);
+}
+
+void FileActions::saveAdjustmentsDialog() {
+    Document* doc = m_window->document();
+    const QString from = !doc->lutPath().isEmpty() ? doc->lutPath() : doc->imagePath();
+    const QString base = from.isEmpty() ? QStringLiteral("adjustments.txt")
+                                        : QFileInfo(from).absolutePath() + '/' +
+                                              QFileInfo(from).completeBaseName() +
+                                              QStringLiteral("_adjustments.txt");
+    const QString path = QFileDialog::getSaveFileName(
+        m_window, tr("Save Adjustments"), base, tr("Adjustment lists (*.txt);;All files (*)"));
+    if (!path.isEmpty())
+        saveAdjustments(path);
+}
+
+void FileActions::loadAdjustmentsDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Load Adjustments"), QString(), tr("Adjustment lists (*.txt);;All files (*)"));
+    if (!path.isEmpty())
+        loadAdjustments(path);
 }
 
 } // namespace lut::gui

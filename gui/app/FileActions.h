@@ -1,17 +1,27 @@
 #pragma once
-// What the File menu does: open an image, a LUT or an edited screenshot, start from neutral,
-// save, export, save the preview image, the recent-file lists, and the unsaved-changes question.
-// Each operation reports its error through the window (dialog, or stderr when headless) and
-// returns false, leaving the document as it was; the *Dialog slots ask for a path first.
+// What the File menu does: open a picture, a LUT or an edited screenshot, start from neutral,
+// save, export, save the preview image, save and load the adjustment list, the recent-file
+// lists, and the questions that keep the user's files: unsaved changes (no default that loses
+// anything), replacing an existing file, replacing the opened original.
+//
+// Pictures and LUTs are read on a worker (FileLoader): start* returns at once with a progress
+// indicator in the status bar, and the document takes the file when it arrives; the other forms
+// wait for it (processing events) and say whether it worked. Each operation reports its error
+// through the window (dialog, or stderr when headless) and leaves the document as it was.
+#include "ExportTarget.h"
+
 #include "lut/io/Format.h"
 
 #include <QObject>
 #include <QString>
 
+#include <memory>
+
 class QMenu;
 
 namespace lut::gui {
 
+class FileLoader;
 class MainWindow;
 
 class FileActions : public QObject {
@@ -19,19 +29,30 @@ class FileActions : public QObject {
 public:
     explicit FileActions(MainWindow* window);
 
+    FileLoader* loader() const { return m_loader; }
+    // Reading on the worker; false when nothing started (the user kept unsaved changes).
+    bool startOpenImage(const QString& path);
+    bool startOpenLut(const QString& path, const FormatOptions& options = {});
+    // The same, waiting for the file: true when the document took it.
     bool openImage(const QString& path);
-    bool openLut(const QString& path);
+    bool openLut(const QString& path, const FormatOptions& options = {});
     bool openScreenshotLut(const QString& path);
     void newNeutral(int size);
-    bool save(); // to the LUT's file, or Save As when it has none or its format cannot write
+    // Save: to the LUT's file (asking first when that would replace the opened original), or
+    // Save As when it has none or its format cannot write.
+    bool save();
     bool saveAs(const QString& path);
+    // Writes the table `target` exports in `format`. An existing file is replaced only when
+    // `overwrite` is true or the user says so (headless: refused).
     bool exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                   bool smashCompensate);
+                   ExportTarget target, bool overwrite = false);
     // The full-resolution preview with the current settings, written the way `lutkit preview`
     // does (lut::formats::renderedImageWriteOptions: 8-bit unless the extension is float).
     bool savePreviewImage(const QString& path);
-    // Asks Save / Discard / Cancel when the document is modified; true = go on. Headless runs
-    // never ask.
+    bool saveAdjustments(const QString& path);
+    bool loadAdjustments(const QString& path);
+    // Asks Save As (Save once the original was replaced in this session) / Discard / Cancel
+    // when the document is modified; Cancel is the default. true = go on. Headless: no question.
     bool maybeSave();
 
     // The menus the recent files go into (filled now and after every open or save).
@@ -43,19 +64,27 @@ public:
     void saveAsDialog();
     void exportDialog();
     void savePreviewDialog();
+    void saveAdjustmentsDialog();
+    void loadAdjustmentsDialog();
 
     // File dialog filters: the picture formats, and every extension a LUT format reads.
     static QString imageFilter();
     static QString lutFilter();
 
 private:
+    // Asks whether to replace `path`; `original` says it is the opened LUT.
+    bool confirmReplace(const QString& path, bool original);
     void addRecent(const char* key, const QString& path);
     void updateRecentMenus();
     void showStatus(const QString& message);
 
     MainWindow* m_window;
+    FileLoader* m_loader;
     QMenu* m_recentImages = nullptr;
     QMenu* m_recentLuts = nullptr;
+    // The result of the last read that finished, for the waiting forms.
+    QString m_lastDone;
+    bool m_lastOk = false;
 };
 
 } // namespace lut::gui

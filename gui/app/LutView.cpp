@@ -85,9 +85,10 @@ const QImage& LutView::stripImage() const {
     return m_strip->image();
 }
 
-void LutView::setLut(const Lut3D& lut, const QString& origin) {
+void LutView::setLut(const Lut3D& lut, const QString& origin, const QString& extraHtml) {
     m_lut = lut;
     m_origin = origin;
+    m_extra = extraHtml;
     refresh();
 }
 
@@ -143,7 +144,7 @@ void LutView::refresh() {
             .arg(double(range.first), 0, 'g', 4)
             .arg(double(range.second), 0, 'g', 4)
             .arg(m_origin.toHtmlEscaped()) +
-        note);
+        (m_extra.isEmpty() ? QString() : QStringLiteral("<br>") + m_extra) + note);
 }
 
 } // namespace lut::gui

@@ -1,7 +1,8 @@
 #pragma once
-// The LUT panel: the N slices of the effective LUT as a strip in a chosen layout
-// (lut::lutToImage), scaled with nearest-neighbour so every entry stays a visible square, and
-// the LUT's facts (size, domain, title, neutral or not, value range).
+// The LUT panel: the N slices of the LUT the export writes (the target's file, read back) as a
+// strip in a chosen layout (lut::lutToImage), scaled with nearest-neighbour so every entry stays
+// a visible square, and the LUT's facts (size, domain, title, neutral or not, value range) with
+// what the window adds (the target, entries outside [0, 1]).
 #include "lut/Lut3D.h"
 #include "lut/io/Layout.h"
 
@@ -19,7 +20,7 @@ class LutView : public QWidget {
     Q_OBJECT
 public:
     explicit LutView(QWidget* parent = nullptr);
-    void setLut(const Lut3D& lut, const QString& origin);
+    void setLut(const Lut3D& lut, const QString& origin, const QString& extraHtml = {});
     LutLayout layout() const;
     const QImage& stripImage() const;
     // Strip layouts (N^2 x N) shown as a grid of their N slices, so a dock can show them large;
@@ -35,6 +36,7 @@ private:
     QLabel* m_info;
     Lut3D m_lut;
     QString m_origin;
+    QString m_extra;
 };
 
 } // namespace lut::gui

@@ -1,24 +1,35 @@
 #include "MainWindow.h"
 
 #include "AdjustmentsPanel.h"
+#include "CurvesPanel.h"
 #include "Document.h"
 #include "FileActions.h"
+#include "FileLoader.h"
 #include "LutView.h"
 #include "PreviewView.h"
+#include "ScopesView.h"
+#include "ShortcutGuard.h"
+#include "WheelsPanel.h"
 #include "WindowActions.h"
 
+#include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressBar>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QUndoView>
+#include <QVBoxLayout>
 
 #include <cstdio>
 
@@ -39,27 +50,40 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_doc(new Document(this)), m_preview(new PreviewController(this)) {
     setObjectName("MainWindow");
     setAcceptDrops(true);
-    m_view = new PreviewView(this);
-    setCentralWidget(m_view);
-
+    buildCentre();
     buildDocks();
     m_files = new FileActions(this);
     m_actions = new WindowActions(this); // after the docks: the View menu lists them
     buildStatusBar();
+    // Ctrl+Z, Ctrl+E... from any widget, a spin box being typed in included.
+    qApp->installEventFilter(new ShortcutGuard(this));
 
-    connect(m_doc, &Document::effectiveLutChanged, this, [this] {
-        m_preview->setLut(m_doc->effectiveLutShared()); // first: the worker starts meanwhile
-        m_lutView->setLut(m_doc->effectiveLut(), m_doc->lutOrigin());
-    });
+    connect(m_doc, &Document::effectiveLutChanged, this,
+            [this] { m_preview->setSource(m_doc->lutSource()); });
     connect(m_doc, &Document::modifiedChanged, this, [this] { updateTitle(); });
     connect(m_doc, &Document::pathChanged, this, [this] { updateTitle(); });
-    connect(m_doc, &Document::imageChanged, this, [this] {
-        m_preview->setScene(m_doc->sceneImage());
-        updateTitle();
+    connect(m_doc, &Document::lutReplaced, this, [this] {
+        if (m_doc->lutNotes().isEmpty())
+            m_notesBar->hide();
     });
-    connect(m_preview, &PreviewController::sceneChanged, this, &MainWindow::onSceneChanged);
+    connect(m_doc, &Document::imageChanged, this, &MainWindow::onImageChanged);
+    connect(m_preview, &PreviewController::imageChanged, this, [this] {
+        const QSize size = m_preview->imageSize();
+        if (size.isEmpty()) {
+            m_view->clear();
+            m_scopes->clear();
+            m_timeLabel->setText(tr("No image"));
+            return;
+        }
+        m_view->setImageSize(size);
+        m_view->setBefore({});
+        m_view->setAfter({});
+        m_timeLabel->setText(tr("Preparing…"));
+    });
     connect(m_preview, &PreviewController::beforeReady, m_view, &PreviewView::setBefore);
     connect(m_preview, &PreviewController::frameReady, this, &MainWindow::onFrame);
+    connect(m_preview, &PreviewController::targetLutChanged, this, &MainWindow::onTargetLut);
+    connect(m_preview, &PreviewController::optionsChanged, this, [this] { updateExportState(); });
     connect(m_view, &PreviewView::hoverPixel, this, &MainWindow::onHover);
     connect(m_view, &PreviewView::zoomChanged, this, [this](double s) {
         m_zoomLabel->setText(tr("Zoom %1 %%2")
@@ -68,51 +92,121 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(m_adjust, &AdjustmentsPanel::interactiveChanged, m_preview,
             &PreviewController::setInteractive);
+    connect(m_curves, &CurvesPanel::interactiveChanged, m_preview,
+            &PreviewController::setInteractive);
+    connect(m_wheels, &WheelsPanel::interactiveChanged, m_preview,
+            &PreviewController::setInteractive);
 
-    m_preview->setLut(m_doc->effectiveLutShared());
-    m_lutView->setLut(m_doc->effectiveLut(), m_doc->lutOrigin());
+    m_preview->setSource(m_doc->lutSource());
     updateTitle();
+    updateExportState();
     resize(1480, 920);
 }
 
 MainWindow::~MainWindow() = default;
 
+void MainWindow::buildCentre() {
+    auto* centre = new QWidget(this);
+    auto* v = new QVBoxLayout(centre);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->setSpacing(0);
+    // The notes bar: what readers and writers said (an ambiguous strip's layout, rounding...).
+    m_notesBar = new QWidget(centre);
+    m_notesBar->setObjectName("notesBar");
+    m_notesBar->setAutoFillBackground(true);
+    QPalette pal = m_notesBar->palette();
+    pal.setColor(QPalette::Window, QColor(0x4a, 0x43, 0x2a));
+    m_notesBar->setPalette(pal);
+    auto* h = new QHBoxLayout(m_notesBar);
+    h->setContentsMargins(8, 4, 4, 4);
+    m_notesLabel = new QLabel(m_notesBar);
+    m_notesLabel->setObjectName("notes");
+    m_notesLabel->setWordWrap(true);
+    m_notesLabel->setTextFormat(Qt::PlainText);
+    m_notesLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* close = new QToolButton(m_notesBar);
+    close->setAutoRaise(true);
+    close->setIcon(style()->standardIcon(QStyle::SP_TitleBarCloseButton));
+    close->setToolTip(tr("Hide the notes"));
+    connect(close, &QToolButton::clicked, m_notesBar, &QWidget::hide);
+    h->addWidget(m_notesLabel, 1);
+    h->addWidget(close, 0, Qt::AlignTop);
+    m_notesBar->hide();
+    m_view = new PreviewView(centre);
+    v->addWidget(m_notesBar);
+    v->addWidget(m_view, 1);
+    setCentralWidget(centre);
+}
+
 void MainWindow::buildDocks() {
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    auto makeDock = [this](QWidget* content, const QString& title, const char* name, bool scroll) {
+        QWidget* w = content;
+        if (scroll) {
+            auto* area = new QScrollArea(this);
+            area->setWidget(content);
+            area->setWidgetResizable(true);
+            area->setFrameShape(QFrame::NoFrame);
+            w = area;
+        }
+        auto* dock = new QDockWidget(title, this);
+        dock->setObjectName(QString::fromLatin1(name));
+        dock->setWidget(w);
+        return dock;
+    };
     m_adjust = new AdjustmentsPanel(m_doc, this);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(m_adjust);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    auto* adjustDock = new QDockWidget(tr("Adjustments"), this);
-    adjustDock->setObjectName("dock.adjustments");
-    adjustDock->setWidget(scroll);
-    addDockWidget(Qt::RightDockWidgetArea, adjustDock);
-
+    m_curves = new CurvesPanel(m_doc, this);
+    m_wheels = new WheelsPanel(m_doc, this);
     m_lutView = new LutView(this);
-    auto* lutDock = new QDockWidget(tr("LUT"), this);
-    lutDock->setObjectName("dock.lut");
-    lutDock->setWidget(m_lutView);
-    addDockWidget(Qt::LeftDockWidgetArea, lutDock);
-
+    m_scopes = new ScopesView(this);
     m_undoView = new QUndoView(m_doc->undoStack(), this);
     m_undoView->setEmptyLabel(tr("<original>"));
-    auto* historyDock = new QDockWidget(tr("History"), this);
-    historyDock->setObjectName("dock.history");
-    historyDock->setWidget(m_undoView);
+
+    QDockWidget* adjustDock = makeDock(m_adjust, tr("Adjustments"), "dock.adjustments", true);
+    QDockWidget* curvesDock = makeDock(m_curves, tr("Curves"), "dock.curves", false);
+    QDockWidget* wheelsDock = makeDock(m_wheels, tr("Colour wheels"), "dock.wheels", false);
+    QDockWidget* lutDock = makeDock(m_lutView, tr("LUT"), "dock.lut", true);
+    QDockWidget* scopesDock = makeDock(m_scopes, tr("Scopes"), "dock.scopes", false);
+    QDockWidget* historyDock = makeDock(m_undoView, tr("History"), "dock.history", false);
+    addDockWidget(Qt::RightDockWidgetArea, adjustDock);
+    addDockWidget(Qt::RightDockWidgetArea, wheelsDock);
+    addDockWidget(Qt::RightDockWidgetArea, curvesDock);
+    tabifyDockWidget(curvesDock, wheelsDock);
+    curvesDock->raise();
+    addDockWidget(Qt::LeftDockWidgetArea, lutDock);
+    addDockWidget(Qt::LeftDockWidgetArea, scopesDock);
     addDockWidget(Qt::LeftDockWidgetArea, historyDock);
-    resizeDocks({lutDock, adjustDock}, {330, 330}, Qt::Horizontal);
-    resizeDocks({lutDock, historyDock}, {520, 200}, Qt::Vertical);
+    tabifyDockWidget(scopesDock, historyDock);
+    scopesDock->raise();
+    resizeDocks({lutDock, adjustDock}, {330, 340}, Qt::Horizontal);
+    resizeDocks({lutDock, scopesDock}, {420, 300}, Qt::Vertical);
+    resizeDocks({adjustDock, curvesDock}, {520, 300}, Qt::Vertical);
 }
 
 void MainWindow::buildStatusBar() {
+    m_loadingBar = new QProgressBar(this);
+    m_loadingBar->setObjectName("loading");
+    m_loadingBar->setRange(0, 0); // busy: a read has no progress to report
+    m_loadingBar->setMaximumWidth(120);
+    m_loadingBar->setTextVisible(false);
+    m_loadingBar->hide();
+    m_loadingLabel = new QLabel(this);
+    m_loadingLabel->hide();
     m_pixelLabel = new QLabel(this);
     m_pixelLabel->setObjectName("pixelReadout");
-    m_pixelLabel->setMinimumWidth(520);
+    m_pixelLabel->setMinimumWidth(420);
     m_pixelLabel->setTextFormat(Qt::PlainText);
+    m_exportLabel = new QLabel(this);
+    m_exportLabel->setObjectName("exportState");
+    m_clipLabel = new QLabel(this);
+    m_clipLabel->setObjectName("clipCount");
     m_timeLabel = new QLabel(tr("No image"), this);
     m_zoomLabel = new QLabel(this);
+    statusBar()->addWidget(m_loadingBar);
+    statusBar()->addWidget(m_loadingLabel);
     statusBar()->addWidget(m_pixelLabel, 1);
+    statusBar()->addPermanentWidget(m_exportLabel);
+    statusBar()->addPermanentWidget(m_clipLabel);
     statusBar()->addPermanentWidget(m_timeLabel);
     statusBar()->addPermanentWidget(m_zoomLabel);
 }
@@ -125,6 +219,23 @@ void MainWindow::updateTitle() {
     setWindowModified(m_doc->isModified());
 }
 
+void MainWindow::updateExportState() {
+    // Connects the picture with the file: what the preview shows is the target's export.
+    const PreviewOptions& o = m_preview->options();
+    const QString target = QString::fromStdString(exportTargetInfo(o.target).label);
+    if (showsTheExport(o)) {
+        m_exportLabel->setText(tr("Shows the %1 export").arg(target));
+        m_exportLabel->setStyleSheet(QString());
+    } else {
+        m_exportLabel->setText(tr("Inspection view: not what the %1 export gives").arg(target));
+        m_exportLabel->setStyleSheet(QStringLiteral("color: #f0b040;"));
+    }
+}
+
+QString MainWindow::clipText() const {
+    return m_clipLabel->text();
+}
+
 void MainWindow::reportError(const QString& title, const QString& message) {
     m_lastError = message;
     if (m_interactiveErrors)
@@ -133,14 +244,45 @@ void MainWindow::reportError(const QString& title, const QString& message) {
         std::fprintf(stderr, "lutkit-editor: %s: %s\n", qPrintable(title), qPrintable(message));
 }
 
+void MainWindow::showNotes(const QStringList& notes) {
+    if (notes.isEmpty())
+        return;
+    m_notesLabel->setText(notes.join('\n'));
+    m_notesBar->show();
+    if (!m_interactiveErrors)
+        for (const QString& n : notes)
+            std::fprintf(stderr, "lutkit-editor: %s\n", qPrintable(n));
+}
+
+QString MainWindow::notesText() const {
+    return m_notesBar->isHidden() ? QString() : m_notesLabel->text();
+}
+
+void MainWindow::setLoading(bool busy) {
+    m_loadingBar->setVisible(busy);
+    m_loadingLabel->setVisible(busy);
+}
+
+void MainWindow::setLoadingText(const QString& text) {
+    m_loadingLabel->setText(text);
+}
+
+bool MainWindow::isLoading() const {
+    return m_files->loader()->isBusy();
+}
+
+void MainWindow::waitForLoads() {
+    m_files->loader()->waitForIdle();
+}
+
 // ---- files (FileActions) --------------------------------------------------------------------
 
 bool MainWindow::openImageFile(const QString& path) {
     return m_files->openImage(path);
 }
 
-bool MainWindow::openLutFile(const QString& path) {
-    return m_files->openLut(path);
+bool MainWindow::openLutFile(const QString& path, const FormatOptions& options) {
+    return m_files->openLut(path, options);
 }
 
 bool MainWindow::openScreenshotLut(const QString& path) {
@@ -148,8 +290,8 @@ bool MainWindow::openScreenshotLut(const QString& path) {
 }
 
 bool MainWindow::exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                           bool smashCompensate) {
-    return m_files->exportLut(path, format, options, smashCompensate);
+                           ExportTarget target, bool overwrite) {
+    return m_files->exportLut(path, format, options, target, overwrite);
 }
 
 bool MainWindow::savePreviewImage(const QString& path) {
@@ -190,17 +332,14 @@ void MainWindow::setInteractive(bool on) {
     m_preview->setInteractive(on);
 }
 
-void MainWindow::onSceneChanged() {
-    const auto scene = m_preview->scene();
-    if (!scene) {
-        m_view->clear();
-        m_timeLabel->setText(tr("No image"));
-        return;
-    }
-    m_view->setImageSize(QSize(scene->width(), scene->height()));
-    m_view->setBefore(m_preview->beforeImage()); // null until the worker made it
-    m_view->setAfter({});
-    m_timeLabel->setText(tr("Rendering…"));
+void MainWindow::onImageChanged() {
+    // The kind of picture decides the chain (screenshot or linear scene): detected from the
+    // file's pixel type, shown in the toolbar, switchable there.
+    PreviewOptions o = m_preview->options();
+    o.input = detectSceneKind(m_doc->imageInfo().isFloat);
+    m_preview->setOptions(o);
+    m_preview->setImage(m_doc->storedImage(), m_doc->imageInfo().isFloat);
+    updateTitle();
 }
 
 void MainWindow::onFrame(const std::shared_ptr<const PreviewFrame>& frame) {
@@ -211,7 +350,8 @@ void MainWindow::onFrame(const std::shared_ptr<const PreviewFrame>& frame) {
             std::fprintf(stderr, "preview: error: %s\n", qPrintable(frame->error));
         return;
     }
-    m_view->setAfter(frame->display);
+    m_view->setAfter(frame->display, frame->clipOverlay);
+    m_scopes->setScopes(frame->scopes);
     const QString res = frame->proxyFactor > 1
                             ? tr("proxy 1/%1, %2×%3")
                                   .arg(frame->proxyFactor)
@@ -221,10 +361,33 @@ void MainWindow::onFrame(const std::shared_ptr<const PreviewFrame>& frame) {
     m_timeLabel->setText(
         tr("Preview %1 ms (%2)").arg(frame->totalMilliseconds, 0, 'f', 1).arg(res));
     if (m_verbose)
-        std::fprintf(stderr, "preview #%llu: LUT stages %.1f ms, total %.1f ms (%s%s)\n",
-                     static_cast<unsigned long long>(frame->serial), frame->milliseconds,
-                     frame->totalMilliseconds, qPrintable(res),
+        std::fprintf(stderr,
+                     "preview #%llu: export LUT %.1f ms, LUT stages %.1f ms, scopes %.1f ms, "
+                     "total %.1f ms (%s%s)\n",
+                     static_cast<unsigned long long>(frame->serial), frame->targetMilliseconds,
+                     frame->milliseconds, frame->scopesMilliseconds, frame->totalMilliseconds,
+                     qPrintable(res),
                      frame->reusedBeforeLut ? ", cached pre-LUT stages" : ", all stages");
+}
+
+void MainWindow::onTargetLut(const std::shared_ptr<const TargetLut>& target) {
+    const ClipCount& c = target->clip;
+    const QString count = tr("LUT entries outside 0..1: %1 of %2").arg(c.outside).arg(c.entries);
+    m_clipLabel->setText(count);
+    m_clipLabel->setStyleSheet(c.outside ? QStringLiteral("color: #f0b040;") : QString());
+    m_clipLabel->setToolTip(tr("Entries of the exported LUT the file clamps to 0..1: %1 above, "
+                               "%2 below, %3 not finite")
+                                .arg(c.above)
+                                .arg(c.below)
+                                .arg(c.nonFinite));
+    const ExportTargetInfo& info = exportTargetInfo(m_preview->options().target);
+    QString extra = tr("<b>Export</b> %1, %2 as written and read back<br><b>Outside 0..1</b> %3")
+                        .arg(QString::fromStdString(info.label).toHtmlEscaped())
+                        .arg(QString::number(target->shown->size()) + QChar(0x00B3))
+                        .arg(c.outside);
+    if (!m_doc->lutNotes().isEmpty())
+        extra += QStringLiteral("<br><b>Notes</b> ") + m_doc->lutNotes().join(' ').toHtmlEscaped();
+    m_lutView->setLut(*target->shown, m_doc->lutOrigin(), extra);
 }
 
 void MainWindow::onHover(int x, int y) {
@@ -273,14 +436,15 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
 }
 
 void MainWindow::dropEvent(QDropEvent* e) {
+    // Read on the worker: the drop returns at once, the files arrive when read.
     for (const QUrl& url : e->mimeData()->urls()) {
         if (!url.isLocalFile())
             continue;
         const QString path = url.toLocalFile();
         if (looksLikeLutFile(path))
-            m_files->openLut(path);
+            m_files->startOpenLut(path);
         else
-            m_files->openImage(path);
+            m_files->startOpenImage(path);
     }
     e->acceptProposedAction();
 }

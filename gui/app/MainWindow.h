@@ -1,26 +1,33 @@
 #pragma once
-// The editor window: preview (centre), adjustments / LUT / history docks, status bar. The state
-// lives in the model (Document: the LUT and the image; PreviewController: the preview); the
-// window lays out the widgets and wires them to the model. Menus and toolbars are WindowActions,
-// opening and writing files is FileActions.
+// The editor window: preview (centre) under a notes bar, adjustments / curves / wheels / LUT /
+// scopes / history docks, status bar. The state lives in the model (Document: the LUT and the
+// picture; PreviewController: the preview and the target's export); the window lays out the
+// widgets and wires them to the model. Menus and toolbars are WindowActions, opening and writing
+// files is FileActions.
 #include "PreviewController.h"
 
 #include "lut/io/Format.h"
 
 #include <QMainWindow>
+#include <QStringList>
 
 #include <memory>
 
 class QLabel;
+class QProgressBar;
+class QToolButton;
 class QUndoView;
 
 namespace lut::gui {
 
 class AdjustmentsPanel;
+class CurvesPanel;
 class Document;
 class FileActions;
 class LutView;
 class PreviewView;
+class ScopesView;
+class WheelsPanel;
 class WindowActions;
 
 class MainWindow : public QMainWindow {
@@ -34,25 +41,37 @@ public:
     FileActions* fileActions() const { return m_files; }
     WindowActions* windowActions() const { return m_actions; }
     AdjustmentsPanel* adjustmentsPanel() const { return m_adjust; }
+    CurvesPanel* curvesPanel() const { return m_curves; }
+    WheelsPanel* wheelsPanel() const { return m_wheels; }
     PreviewView* previewView() const { return m_view; }
     LutView* lutView() const { return m_lutView; }
+    ScopesView* scopesView() const { return m_scopes; }
 
     // false: errors go to stderr and lastError() instead of a dialog, no question is asked and
-    // no setting is written (tests, --screenshot, --save-preview).
+    // no setting is written (tests, --screenshot, --save-preview, scripts).
     void setInteractiveErrors(bool on) { m_interactiveErrors = on; }
     bool interactiveErrors() const { return m_interactiveErrors; }
     QString lastError() const { return m_lastError; }
     // Shows (dialog or stderr) and remembers an error.
     void reportError(const QString& title, const QString& message);
+    // Shows what a reader or writer noted (the notes bar; stderr when headless).
+    void showNotes(const QStringList& notes);
+    QString notesText() const;
     void setVerbose(bool on) { m_verbose = on; }
+    // The status bar's progress indicator while files load on the worker.
+    void setLoading(bool busy);
+    void setLoadingText(const QString& text);
+    bool isLoading() const;
+    // Processes events until the file reads in flight are done and adopted.
+    void waitForLoads();
 
-    // The file operations (FileActions); each returns false after reporting the error and
-    // leaves the document as it was.
+    // The file operations (FileActions); the open forms wait for the worker's read. Each returns
+    // false after reporting the error and leaves the document as it was.
     bool openImageFile(const QString& path);
-    bool openLutFile(const QString& path);
+    bool openLutFile(const QString& path, const FormatOptions& options = {});
     bool openScreenshotLut(const QString& path);
     bool exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                   bool smashCompensate);
+                   ExportTarget target, bool overwrite = false);
     bool savePreviewImage(const QString& path);
     bool saveDocument();
     bool saveDocumentAs(const QString& path);
@@ -66,6 +85,8 @@ public:
     // The last full-resolution preview update times (ms), for logging and benchmarks.
     const QList<double>& previewTimes() const;
     void setInteractive(bool on); // proxy previews while true (a slider is held)
+    // What the status bar says about the export's entries outside [0, 1] (live).
+    QString clipText() const;
 
     // Window geometry and dock layout from the last session (not used by headless modes, so
     // screenshots do not depend on the user's settings).
@@ -77,23 +98,35 @@ protected:
     void dropEvent(QDropEvent*) override;
 
 private:
+    void buildCentre();
     void buildDocks();
     void buildStatusBar();
     void updateTitle();
-    void onSceneChanged();
+    void onImageChanged();
     void onFrame(const std::shared_ptr<const PreviewFrame>& frame);
+    void onTargetLut(const std::shared_ptr<const TargetLut>& target);
     void onHover(int x, int y);
+    void updateExportState();
 
     Document* m_doc;
     PreviewController* m_preview;
-    PreviewView* m_view;
+    PreviewView* m_view = nullptr;
+    QWidget* m_notesBar = nullptr;
+    QLabel* m_notesLabel = nullptr;
     LutView* m_lutView = nullptr;
     AdjustmentsPanel* m_adjust = nullptr;
+    CurvesPanel* m_curves = nullptr;
+    WheelsPanel* m_wheels = nullptr;
+    ScopesView* m_scopes = nullptr;
     QUndoView* m_undoView = nullptr;
     FileActions* m_files = nullptr;
     WindowActions* m_actions = nullptr;
 
     QLabel* m_pixelLabel = nullptr;
+    QLabel* m_loadingLabel = nullptr;
+    QProgressBar* m_loadingBar = nullptr;
+    QLabel* m_exportLabel = nullptr;
+    QLabel* m_clipLabel = nullptr;
     QLabel* m_timeLabel = nullptr;
     QLabel* m_zoomLabel = nullptr;
 

@@ -30,14 +30,21 @@ void PreviewView::setBefore(const QImage& image) {
     update();
 }
 
-void PreviewView::setAfter(const QImage& image) {
+void PreviewView::setAfter(const QImage& image, const QImage& clipOverlay) {
     m_after = image;
+    m_clip = clipOverlay;
+    update();
+}
+
+void PreviewView::setShowClipping(bool on) {
+    m_showClipping = on;
     update();
 }
 
 void PreviewView::clear() {
     m_before = {};
     m_after = {};
+    m_clip = {};
     m_imageSize = {};
     update();
 }
@@ -150,9 +157,11 @@ void PreviewView::paintEvent(QPaintEvent*) {
         p.restore();
     };
     const QImage& after = m_after.isNull() ? m_before : m_after;
+    const QImage& clip = m_showClipping && !m_after.isNull() ? m_clip : QImage();
     switch (m_mode) {
     case Mode::After:
         drawClipped(after, r);
+        drawClipped(clip, r);
         break;
     case Mode::Before:
         drawClipped(m_before, r);
@@ -161,6 +170,7 @@ void PreviewView::paintEvent(QPaintEvent*) {
         const double dx = dividerX();
         drawClipped(m_before, QRectF(r.topLeft(), QPointF(dx, r.bottom())));
         drawClipped(after, QRectF(QPointF(dx, r.top()), r.bottomRight()));
+        drawClipped(clip, QRectF(QPointF(dx, r.top()), r.bottomRight()));
         p.setRenderHint(QPainter::Antialiasing);
         const double top = std::max(0.0, r.top()), bottom = std::min<double>(height(), r.bottom());
         p.setPen(QPen(QColor(255, 255, 255, 220), 1.5));

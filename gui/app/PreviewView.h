@@ -1,7 +1,8 @@
 #pragma once
 // The image view: before (left of the divider) and after (right), a draggable divider, zoom
 // (fit, 100 %, wheel about the cursor) and pan (drag with the left button away from the divider,
-// or the middle button). Images may be proxies: each is drawn over the full image rectangle.
+// or the middle button). Images may be proxies: each is drawn over the full image rectangle. The
+// clipping overlay, when on, marks the after picture's clipped pixels.
 #include <QImage>
 #include <QWidget>
 
@@ -17,7 +18,11 @@ public:
     // Full image size in pixels (the coordinate system of hover reports).
     void setImageSize(QSize size);
     void setBefore(const QImage& image);
-    void setAfter(const QImage& image);
+    // The after picture and its clipping overlay (Scopes.h clipOverlay; may be null).
+    void setAfter(const QImage& image, const QImage& clipOverlay = {});
+    // Marks the clipped pixels of the after picture (red: a channel at 255, blue: at 0).
+    void setShowClipping(bool on);
+    bool showsClipping() const { return m_showClipping; }
     void clear();
 
     void setMode(Mode mode);
@@ -56,6 +61,8 @@ private:
     QSize m_imageSize;
     QImage m_before;
     QImage m_after;
+    QImage m_clip;
+    bool m_showClipping = false;
     Mode m_mode = Mode::Split;
     double m_split = 0.5;
     bool m_fit = true;

@@ -16,11 +16,47 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
+#include <QPainterPath>
+#include <QStandardItemModel>
 #include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
 
 namespace lut::gui {
+
+namespace {
+
+// Export: a LUT tile with an arrow leaving it (the standard arrows are taken by undo and redo).
+QIcon exportIcon(const QPalette& palette) {
+    QPixmap pm(32, 32);
+    pm.fill(Qt::transparent);
+    QPainter p(&pm);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QColor ink = palette.color(QPalette::WindowText);
+    const QColor cells[4] = {QColor(220, 90, 70), QColor(90, 190, 90), QColor(80, 120, 230),
+                             QColor(230, 200, 80)};
+    for (int i = 0; i < 4; ++i)
+        p.fillRect(QRectF(3 + (i % 2) * 9, 11 + (i / 2) * 9, 9, 9), cells[i]);
+    p.setPen(QPen(ink, 1.5));
+    p.drawRect(QRectF(3, 11, 18, 18));
+    QPainterPath arrow;
+    arrow.moveTo(14, 18);
+    arrow.lineTo(27, 5);
+    p.setPen(QPen(ink, 2.5, Qt::SolidLine, Qt::RoundCap));
+    p.drawPath(arrow);
+    p.drawLine(QPointF(19, 5), QPointF(27, 5));
+    p.drawLine(QPointF(27, 5), QPointF(27, 13));
+    return QIcon(pm);
+}
+
+void setItemEnabled(QComboBox* box, int index, bool on) {
+    if (auto* model = qobject_cast<QStandardItemModel*>(box->model()))
+        if (QStandardItem* item = model->item(index))
+            item->setEnabled(on);
+}
+
+} // namespace
 
 WindowActions::WindowActions(MainWindow* window) : QObject(window), m_window(window) {
     buildFileMenu();
@@ -29,6 +65,11 @@ WindowActions::WindowActions(MainWindow* window) : QObject(window), m_window(win
     buildPreviewMenu();
     buildHelpMenu();
     buildToolbars();
+    // Shortcuts work in every window of the editor (floating docks too); modal dialogs still
+    // block them.
+    for (QAction* a : m_window->findChildren<QAction*>())
+        if (!a->shortcuts().isEmpty())
+            a->setShortcutContext(Qt::ApplicationShortcut);
     showOptions(m_window->preview()->options());
     connect(m_window->preview(), &PreviewController::optionsChanged, this,
             &WindowActions::showOptions);
@@ -57,11 +98,18 @@ void WindowActions::buildFileMenu() {
     file->addSeparator();
     m_save = file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save LUT"),
                              QKeySequence::Save, files, [files] { files->save(); });
+    m_save->setObjectName("action.save");
     file->addAction(tr("Save LUT &As…"), QKeySequence::SaveAs, files, &FileActions::saveAsDialog);
-    m_export = file->addAction(st->standardIcon(QStyle::SP_ArrowForward), tr("&Export LUT…"),
+    m_export = file->addAction(exportIcon(m_window->palette()), tr("&Export LUT…"),
                                QKeySequence(tr("Ctrl+E")), files, &FileActions::exportDialog);
+    m_export->setObjectName("action.export");
+    m_export->setToolTip(tr("Write the LUT for the target (Ctrl+E): what the preview shows"));
     file->addAction(tr("Save &Preview Image…"), QKeySequence(tr("Ctrl+Shift+P")), files,
                     &FileActions::savePreviewDialog);
+    file->addSeparator();
+    file->addAction(tr("Save A&djustments…"), files, &FileActions::saveAdjustmentsDialog)
+        ->setToolTip(tr("The adjustment list: lutkit applies the same list to a LUT"));
+    file->addAction(tr("Load Adj&ustments…"), files, &FileActions::loadAdjustmentsDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, m_window, &QWidget::close);
 }
@@ -71,11 +119,14 @@ void WindowActions::buildEditMenu() {
     Document* doc = m_window->document();
     QMenu* edit = m_window->menuBar()->addMenu(tr("&Edit"));
     m_undo = doc->undoStack()->createUndoAction(m_window, tr("&Undo"));
+    m_undo->setObjectName("action.undo");
     m_undo->setShortcut(QKeySequence::Undo);
     m_undo->setIcon(st->standardIcon(QStyle::SP_ArrowBack));
     m_undo->setIconText(tr("Undo")); // the toolbar keeps a short label; the menu names the step
     m_redo = doc->undoStack()->createRedoAction(m_window, tr("&Redo"));
-    m_redo->setShortcut(QKeySequence::Redo);
+    m_redo->setObjectName("action.redo");
+    // Ctrl+Shift+Z everywhere, and Ctrl+Y, which Linux desktops do not bind to redo.
+    m_redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
     m_redo->setIcon(st->standardIcon(QStyle::SP_ArrowForward));
     m_redo->setIconText(tr("Redo"));
     edit->addAction(m_undo);
@@ -112,56 +163,65 @@ void WindowActions::buildViewMenu() {
         m_modes[static_cast<int>(m)]->setChecked(true); // Mode order = action order
     });
     menu->addSeparator();
+    m_clipping = menu->addAction(tr("&Clipping Overlay"));
+    m_clipping->setObjectName("action.clipping");
+    m_clipping->setCheckable(true);
+    m_clipping->setShortcut(QKeySequence(tr("Ctrl+K")));
+    m_clipping->setToolTip(tr("Mark the preview's clipped pixels: red where a channel is at 255, "
+                              "blue where one is at 0"));
+    connect(m_clipping, &QAction::toggled, view, &PreviewView::setShowClipping);
+    menu->addSeparator();
     for (QDockWidget* d : m_window->findChildren<QDockWidget*>())
         menu->addAction(d->toggleViewAction());
 }
 
 void WindowActions::buildPreviewMenu() {
     QMenu* menu = m_window->menuBar()->addMenu(tr("&Preview"));
-    m_preset = new QComboBox(m_window);
-    m_preset->setObjectName("preset");
-    m_preset->addItem(tr("Smash"), int(Preset::Smash));
-    m_preset->addItem(tr("Pilot"), int(Preset::Pilot));
-    m_preset->addItem(tr("Lecture"), int(Preset::Lecture));
-    m_preset->addItem(tr("None"), int(Preset::None));
-    m_preset->setToolTip(
-        tr("Post-processing chain the preview runs (the same as lutkit preview --preset)"));
+    m_target = new QComboBox(m_window);
+    m_target->setObjectName("target");
+    for (const ExportTargetInfo& t : exportTargets())
+        m_target->addItem(QString::fromStdString(t.label), int(t.id));
+    m_target->setToolTip(tr("What the LUT is for: the preview shows what this export gives, and "
+                            "Export writes it"));
+    m_input = new QComboBox(m_window);
+    m_input->setObjectName("input");
+    m_input->addItem(tr("In-game screenshot"), int(SceneKind::Screenshot));
+    m_input->addItem(tr("Linear scene"), int(SceneKind::Scene));
+    m_input->setToolTip(tr("What the picture holds: detected when it opens (8/16-bit files are "
+                           "screenshots, float files linear scenes); change it if that is wrong"));
+    m_chain = new QComboBox(m_window);
+    m_chain->setObjectName("chain");
+    m_chain->addItem(tr("Smash Ultimate"), int(Preset::Smash));
+    m_chain->addItem(tr("Filmic (tone map, soft bloom)"), int(Preset::Pilot));
+    m_chain->addItem(tr("Cinematic (bloom, vignette, grain)"), int(Preset::Lecture));
+    m_chain->addItem(tr("Display only"), int(Preset::None));
+    m_chain->setToolTip(tr("The post-processing the LUT runs in. Smash: the game's own chain. "
+                           "Engine and grading targets on a linear scene: choose the chain; on "
+                           "a screenshot the LUT applies to the picture as it is"));
     m_interp = new QComboBox(m_window);
     m_interp->setObjectName("interpolation");
     for (Interpolation i :
          {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest})
         m_interp->addItem(QString::fromLatin1(toString(i)), int(i));
-    m_interp->setToolTip(tr("LUT interpolation"));
+    m_interp->setToolTip(tr("LUT interpolation (the game and most engines: trilinear)"));
     m_bloom = menu->addAction(tr("&Bloom"));
     m_bloom->setObjectName("bloom");
-    m_bloom->setToolTip(tr("Bloom stage of the preset"));
+    m_bloom->setToolTip(tr("The chain's bloom on a linear scene (a screenshot has its bloom)"));
     m_lut = menu->addAction(tr("&LUT"));
     m_lut->setObjectName("lut");
-    m_lut->setToolTip(tr("Apply the LUT (off: neutral LUT)"));
-    m_brighten = menu->addAction(tr("B&righten"));
+    m_lut->setToolTip(tr("Apply the LUT (off: the neutral LUT's export, as Before)"));
+    menu->addSeparator();
+    m_brighten = menu->addAction(tr("Game's B&righten Step"));
     m_brighten->setObjectName("brighten");
-    m_brighten->setToolTip(tr("The game's brighten step (about 2x in linear light) after the "
-                              "LUT; off shows the LUT alone. Only the Smash preset has one."));
+    m_brighten->setToolTip(tr("Smash Ultimate brightens after its LUT (about 2x in linear light). "
+                              "Off is an inspection view of the LUT alone: not what the game "
+                              "shows."));
     for (QAction* a : {m_bloom, m_lut, m_brighten}) {
         a->setCheckable(true);
-        connect(a, &QAction::triggered, this,
-                [this] { m_window->preview()->setOptions(optionsFromWidgets()); });
+        connect(a, &QAction::triggered, this, &WindowActions::applyWidgets);
     }
-    for (QComboBox* box : {m_preset, m_interp})
-        connect(box, &QComboBox::activated, this,
-                [this] { m_window->preview()->setOptions(optionsFromWidgets()); });
-
-    menu->addSeparator();
-    m_fromScreenshot = menu->addAction(tr("Input Is an In-Game &Screenshot"));
-    m_fromScreenshot->setObjectName("fromScreenshot");
-    m_fromScreenshot->setCheckable(true);
-    m_fromScreenshot->setToolTip(tr("Undo the game's grading (neutral LUT) before previewing, as "
-                                    "lutkit preview --from-screenshot; bloom in the image stays"));
-    connect(m_fromScreenshot, &QAction::toggled, this, [this](bool on) {
-        QApplication::setOverrideCursor(Qt::WaitCursor);
-        m_window->document()->setFromScreenshot(on);
-        QApplication::restoreOverrideCursor();
-    });
+    for (QComboBox* box : {m_target, m_input, m_chain, m_interp})
+        connect(box, &QComboBox::activated, this, &WindowActions::applyWidgets);
 }
 
 void WindowActions::buildHelpMenu() {
@@ -169,8 +229,8 @@ void WindowActions::buildHelpMenu() {
     help->addAction(tr("&About lutkit editor"), this, [this] {
         QMessageBox::about(m_window, tr("About lutkit editor"),
                            tr("<b>lutkit editor</b><br>Preview colour grading LUTs on screenshots "
-                              "through the same pipeline as <tt>lutkit preview</tt>, adjust and "
-                              "export them.<br>Sampler kernels: %1")
+                              "exactly as the game or engine shows the exported file, adjust "
+                              "and export them.<br>Sampler kernels: %1")
                                .arg(QString::fromLatin1(samplerIsa())));
     });
 }
@@ -184,45 +244,66 @@ void WindowActions::buildToolbars() {
     tb->addSeparator();
     tb->addAction(m_undo);
     tb->addAction(m_redo);
+    QToolBar* vt = m_window->addToolBar(tr("View"));
+    vt->setObjectName("toolbar.view");
+    m_window->addToolBarBreak(); // the preview's choices get a row of their own
     QToolBar* pv = m_window->addToolBar(tr("Preview"));
     pv->setObjectName("toolbar.preview");
-    pv->addWidget(new QLabel(tr(" Preset "), pv));
-    pv->addWidget(m_preset);
+    pv->addWidget(new QLabel(tr(" Target "), pv));
+    pv->addWidget(m_target);
+    pv->addWidget(new QLabel(tr(" Picture "), pv));
+    pv->addWidget(m_input);
+    pv->addWidget(new QLabel(tr(" Chain "), pv));
+    pv->addWidget(m_chain);
     pv->addSeparator();
-    for (QAction* a : {m_bloom, m_lut, m_brighten})
+    for (QAction* a : {m_bloom, m_lut})
         pv->addAction(a);
     pv->addSeparator();
     pv->addWidget(new QLabel(tr(" Interpolation "), pv));
     pv->addWidget(m_interp);
-    QToolBar* vt = m_window->addToolBar(tr("View"));
-    vt->setObjectName("toolbar.view");
     vt->addAction(m_fit);
     vt->addAction(m_actualSize);
     vt->addSeparator();
     for (QAction* a : m_modes)
         vt->addAction(a);
+    vt->addAction(m_clipping);
     m_modes[0]->setText(tr("Split"));
     m_modes[1]->setText(tr("After"));
     m_modes[2]->setText(tr("Before"));
+    m_clipping->setText(tr("Clipping"));
+}
+
+void WindowActions::applyWidgets() {
+    m_window->preview()->setOptions(optionsFromWidgets());
 }
 
 PreviewOptions WindowActions::optionsFromWidgets() const {
     PreviewOptions o = m_window->preview()->options();
-    o.preset = static_cast<Preset>(m_preset->currentData().toInt());
+    o.target = static_cast<ExportTarget>(m_target->currentData().toInt());
+    o.input = static_cast<SceneKind>(m_input->currentData().toInt());
+    if (m_chain->isEnabled()) // disabled, it shows the target's fact, not the user's choice
+        o.preset = static_cast<Preset>(m_chain->currentData().toInt());
     o.interpolation = static_cast<Interpolation>(m_interp->currentData().toInt());
-    o.bloom = m_bloom->isChecked();
+    if (m_bloom->isEnabled())
+        o.bloom = m_bloom->isChecked();
     o.lutEnabled = m_lut->isChecked();
-    if (m_brighten->isEnabled()) // disabled, it shows the preset's fact, not the user's choice
+    if (m_brighten->isEnabled())
         o.brighten = m_brighten->isChecked();
     return o;
 }
 
 void WindowActions::showOptions(const PreviewOptions& o) {
-    m_preset->setCurrentIndex(m_preset->findData(int(o.preset)));
+    m_target->setCurrentIndex(m_target->findData(int(o.target)));
+    m_input->setCurrentIndex(m_input->findData(int(o.input)));
+    // The chain is a choice for engine and grading targets on a linear scene only.
+    const bool chooseChain = o.target != ExportTarget::Smash && o.input == SceneKind::Scene;
+    m_chain->setEnabled(chooseChain);
+    setItemEnabled(m_chain, m_chain->findData(int(Preset::Smash)), !chooseChain);
+    m_chain->setCurrentIndex(m_chain->findData(int(effectivePreset(o))));
     m_interp->setCurrentIndex(m_interp->findData(int(o.interpolation)));
-    m_bloom->setChecked(o.bloom);
+    m_bloom->setEnabled(bloomSwitchable(o));
+    m_bloom->setChecked(bloomApplied(o));
     m_lut->setChecked(o.lutEnabled);
-    // Checked = the preview has the brighten step; only the smash preset can switch it.
     m_brighten->setEnabled(brightenSwitchable(o));
     m_brighten->setChecked(brightenApplied(o));
 }

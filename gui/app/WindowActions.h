@@ -1,8 +1,11 @@
 #pragma once
-// The window's menus, toolbars and shortcuts: File (FileActions), Edit (undo/redo), View (zoom,
-// split/after/before, docks), Preview (the PreviewController's options: preset, bloom, LUT,
-// brighten, interpolation; the in-game-screenshot switch of the Document) and Help. The preview
-// widgets show the controller's options and write them back; nothing here keeps state of its own.
+// The window's menus, toolbars and shortcuts: File (FileActions), Edit (undo/redo, reset), View
+// (zoom, split/after/before, clipping overlay, docks), Preview (the PreviewController's options)
+// and Help. The preview toolbar shows the one choice that drives preview and export, the target
+// (Smash Ultimate, an engine strip, a .cube), and what the picture is (an in-game screenshot or a
+// linear scene: detected on open, switchable here), then the chain, bloom, LUT and
+// interpolation. The widgets show the controller's options and write them back; nothing here
+// keeps state of its own. Shortcuts work from every widget of the window (ShortcutGuard).
 #include "PreviewRenderer.h"
 
 #include <QObject>
@@ -25,8 +28,14 @@ public:
     QAction* bloomAction() const { return m_bloom; }
     QAction* lutAction() const { return m_lut; }
     QAction* brightenAction() const { return m_brighten; }
-    QAction* fromScreenshotAction() const { return m_fromScreenshot; }
-    QComboBox* presetBox() const { return m_preset; }
+    QAction* clippingAction() const { return m_clipping; }
+    QAction* undoAction() const { return m_undo; }
+    QAction* redoAction() const { return m_redo; }
+    QAction* exportAction() const { return m_export; }
+    QAction* saveAction() const { return m_save; }
+    QComboBox* targetBox() const { return m_target; }
+    QComboBox* inputBox() const { return m_input; }
+    QComboBox* chainBox() const { return m_chain; }
     QComboBox* interpolationBox() const { return m_interp; }
 
 private:
@@ -39,6 +48,7 @@ private:
     // The options as the widgets show them, and the widgets from the options.
     PreviewOptions optionsFromWidgets() const;
     void showOptions(const PreviewOptions& options);
+    void applyWidgets();
 
     MainWindow* m_window;
     // For the toolbars.
@@ -51,13 +61,15 @@ private:
     QAction* m_fit = nullptr;
     QAction* m_actualSize = nullptr;
     QAction* m_modes[3] = {};
+    QAction* m_clipping = nullptr;
     // Preview options.
-    QComboBox* m_preset = nullptr;
+    QComboBox* m_target = nullptr;
+    QComboBox* m_input = nullptr;
+    QComboBox* m_chain = nullptr;
     QComboBox* m_interp = nullptr;
     QAction* m_bloom = nullptr;
     QAction* m_lut = nullptr;
     QAction* m_brighten = nullptr;
-    QAction* m_fromScreenshot = nullptr;
 };
 
 } // namespace lut::gui

@@ -9,24 +9,29 @@ namespace lut::gui {
 
 const std::vector<AdjustParamInfo>& adjustParams() {
     using P = AdjustParam;
+    // Exposure: ±10 stops typed, the slider spans ±3 (~0.02 stop per pixel on a 300-pixel
+    // slider, a tenth of that with Shift held).
     static const std::vector<AdjustParamInfo> params = {
-        {P::Exposure, "exposure", "Exposure (stops)", "Tone", -5.0, 5.0, 0.0, 2, false},
-        {P::Contrast, "contrast", "Contrast", "Tone", -1.0, 1.0, 0.0, 2, false},
-        {P::Saturation, "saturation", "Saturation", "Tone", 0.0, 3.0, 1.0, 2, false},
-        {P::Temperature, "temperature", "Temperature", "White balance", -1.0, 1.0, 0.0, 2, false},
-        {P::Tint, "tint", "Tint", "White balance", -1.0, 1.0, 0.0, 2, false},
-        {P::LiftMaster, "lift", "Lift", "Lift", -0.5, 0.5, 0.0, 3, false},
-        {P::LiftR, "lift.r", "Lift R", "Lift", -0.5, 0.5, 0.0, 3, false},
-        {P::LiftG, "lift.g", "Lift G", "Lift", -0.5, 0.5, 0.0, 3, false},
-        {P::LiftB, "lift.b", "Lift B", "Lift", -0.5, 0.5, 0.0, 3, false},
-        {P::GammaMaster, "gamma", "Gamma", "Gamma", 0.25, 4.0, 1.0, 3, true},
-        {P::GammaR, "gamma.r", "Gamma R", "Gamma", 0.25, 4.0, 1.0, 3, true},
-        {P::GammaG, "gamma.g", "Gamma G", "Gamma", 0.25, 4.0, 1.0, 3, true},
-        {P::GammaB, "gamma.b", "Gamma B", "Gamma", 0.25, 4.0, 1.0, 3, true},
-        {P::GainMaster, "gain", "Gain", "Gain", 0.25, 4.0, 1.0, 3, true},
-        {P::GainR, "gain.r", "Gain R", "Gain", 0.25, 4.0, 1.0, 3, true},
-        {P::GainG, "gain.g", "Gain G", "Gain", 0.25, 4.0, 1.0, 3, true},
-        {P::GainB, "gain.b", "Gain B", "Gain", 0.25, 4.0, 1.0, 3, true},
+        {P::Exposure, "exposure", "Exposure (stops)", "Tone", -10.0, 10.0, 0.0, 3, false, -3.0,
+         3.0},
+        {P::Contrast, "contrast", "Contrast", "Tone", -1.0, 1.0, 0.0, 3, false, -1.0, 1.0},
+        {P::Saturation, "saturation", "Saturation", "Tone", 0.0, 3.0, 1.0, 3, false, 0.0, 2.0},
+        {P::Temperature, "temperature", "Temperature", "White balance", -1.0, 1.0, 0.0, 3, false,
+         -1.0, 1.0},
+        {P::Tint, "tint", "Tint", "White balance", -1.0, 1.0, 0.0, 3, false, -1.0, 1.0},
+        {P::LiftMaster, "lift", "Lift", "Lift", -0.5, 0.5, 0.0, 3, false, -0.25, 0.25},
+        {P::LiftR, "lift.r", "Lift R", "Lift", -0.5, 0.5, 0.0, 3, false, -0.25, 0.25},
+        {P::LiftG, "lift.g", "Lift G", "Lift", -0.5, 0.5, 0.0, 3, false, -0.25, 0.25},
+        {P::LiftB, "lift.b", "Lift B", "Lift", -0.5, 0.5, 0.0, 3, false, -0.25, 0.25},
+        {P::GammaMaster, "gamma", "Gamma", "Gamma", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GammaR, "gamma.r", "Gamma R", "Gamma", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GammaG, "gamma.g", "Gamma G", "Gamma", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GammaB, "gamma.b", "Gamma B", "Gamma", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GainMaster, "gain", "Gain", "Gain", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GainR, "gain.r", "Gain R", "Gain", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GainG, "gain.g", "Gain G", "Gain", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::GainB, "gain.b", "Gain B", "Gain", 0.25, 4.0, 1.0, 3, true, 0.5, 2.0},
+        {P::Strength, "strength", "LUT strength", "Strength", 0.0, 2.0, 1.0, 3, false, 0.0, 2.0},
     };
     return params;
 }
@@ -75,6 +80,8 @@ double getParam(const Adjustments& a, AdjustParam id) {
         return a.gain.y;
     case P::GainB:
         return a.gain.z;
+    case P::Strength:
+        return a.strength;
     }
     return 0.0;
 }
@@ -133,27 +140,30 @@ void setParam(Adjustments& a, AdjustParam id, double v) {
     case P::GainB:
         a.gain.z = v;
         break;
+    case P::Strength:
+        a.strength = v;
+        break;
     }
 }
 
 int paramToSlider(const AdjustParamInfo& info, double value, int steps) {
     if (!std::isfinite(value))
         value = info.defaultValue;
-    value = std::clamp(value, info.min, info.max);
-    double t = info.logScale ? std::log(value / info.min) / std::log(info.max / info.min)
-                             : (value - info.min) / (info.max - info.min);
+    const double lo = info.sliderMin, hi = info.sliderMax;
+    value = std::clamp(value, lo, hi);
+    double t = info.logScale ? std::log(value / lo) / std::log(hi / lo) : (value - lo) / (hi - lo);
     return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * steps));
 }
 
 double sliderToParam(const AdjustParamInfo& info, int position, int steps) {
+    const double lo = info.sliderMin, hi = info.sliderMax;
     const double t = std::clamp(static_cast<double>(position) / std::max(steps, 1), 0.0, 1.0);
-    double v = info.logScale ? info.min * std::pow(info.max / info.min, t)
-                             : info.min + t * (info.max - info.min);
+    double v = info.logScale ? lo * std::pow(hi / lo, t) : lo + t * (hi - lo);
     // The default's own position gives the default exactly, so a slider can return to neutral.
     if (position == paramToSlider(info, info.defaultValue, steps))
         return info.defaultValue;
     const double scale = std::pow(10.0, info.decimals + 1);
-    return std::clamp(std::round(v * scale) / scale, info.min, info.max);
+    return std::clamp(std::round(v * scale) / scale, lo, hi);
 }
 
 } // namespace lut::gui

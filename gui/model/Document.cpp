@@ -1,30 +1,60 @@
 #include "Document.h"
 
-#include "PreviewRenderer.h"
-#include "ResetAdjustmentsCommand.h"
-#include "SetAdjustmentCommand.h"
+#include "SetAdjustmentsCommand.h"
 
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
-#include "lut/pipeline/SmashCompensation.h"
+#include "lut/ops/AdjustmentList.h"
 #include "lut/roundtrip/Extract.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QUndoStack>
 
 namespace lut::gui {
 
+namespace {
+
+bool hasPictureExtension(const std::string& path) {
+    const std::string ext = extensionOf(path);
+    return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr" || ext == ".jpg" ||
+           ext == ".jpeg" || ext == ".bmp" || ext == ".tga" || ext == ".webp" || ext == ".hdr" ||
+           ext == ".dpx";
+}
+
+const char* curveName(CurveId id) {
+    switch (id) {
+    case CurveId::Master:
+        return "master curve";
+    case CurveId::Red:
+        return "red curve";
+    case CurveId::Green:
+        return "green curve";
+    case CurveId::Blue:
+        return "blue curve";
+    case CurveId::HueVsHue:
+        return "hue vs hue";
+    case CurveId::HueVsSat:
+        return "hue vs saturation";
+    case CurveId::HueVsLum:
+        return "hue vs luminance";
+    }
+    return "curve";
+}
+
+// Merge keys: a parameter's id, a curve's 100 + id (AdjustmentsPanel and the curve editors).
+constexpr int kCurveKeyBase = 100;
+
+} // namespace
+
 bool looksLikeLutFile(const QString& path) {
     formats::registerBuiltinFormats();
     const std::string p = path.toStdString();
-    const std::string ext = extensionOf(p);
-    const bool pictureExt = ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr" ||
-                            ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tga" ||
-                            ext == ".webp" || ext == ".hdr" || ext == ".dpx";
-    if (!pictureExt)
+    if (!hasPictureExtension(p))
         return !FormatRegistry::instance().forExtension(p).empty();
     try {
         const formats::ImageInfo info = formats::readImageInfo(p);
@@ -34,9 +64,45 @@ bool looksLikeLutFile(const QString& path) {
     }
 }
 
+bool stripLayoutIsAmbiguous(const QString& path) {
+    const std::string p = path.toStdString();
+    if (!hasPictureExtension(p))
+        return false;
+    try {
+        const formats::ImageInfo info = formats::readImageInfo(p);
+        return layoutsForImageSize(info.width, info.height).size() > 1;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+Curve& curveOf(Adjustments& a, CurveId id) {
+    switch (id) {
+    case CurveId::Master:
+        return a.curveMaster;
+    case CurveId::Red:
+        return a.curveRed;
+    case CurveId::Green:
+        return a.curveGreen;
+    case CurveId::Blue:
+        return a.curveBlue;
+    case CurveId::HueVsHue:
+        return a.hueVsHue;
+    case CurveId::HueVsSat:
+        return a.hueVsSat;
+    case CurveId::HueVsLum:
+        return a.hueVsLum;
+    }
+    return a.curveMaster;
+}
+
+const Curve& curveOf(const Adjustments& a, CurveId id) {
+    return curveOf(const_cast<Adjustments&>(a), id);
+}
+
 Document::Document(QObject* parent) : QObject(parent), m_undo(new QUndoStack(this)) {
     connect(m_undo, &QUndoStack::cleanChanged, this, [this] { emitModifiedIfChanged(); });
-    replaceLut(Lut3D::identity(33), {}, tr("neutral 33^3"), {}, false);
+    replaceLut(Lut3D::identity(33), {}, tr("neutral 33^3"), {}, false, LutRole::Look, {});
 }
 
 Document::~Document() = default;
@@ -57,16 +123,30 @@ void Document::emitModifiedIfChanged() {
     }
 }
 
+LutSource Document::lutSource() const {
+    LutSource s;
+    s.effective = m_effective;
+    if (m_role == LutRole::GameLut) {
+        s.gameBase = m_base;
+        s.adjustments = m_adjustmentsShared;
+    }
+    return s;
+}
+
 void Document::replaceLut(Lut3D base, const QString& path, const QString& origin,
-                          const QString& format, bool modified) {
+                          const QString& format, bool modified, LutRole role, QStringList notes) {
     auto baseShared = std::make_shared<const Lut3D>(std::move(base));
     m_base = baseShared;
     m_effective = baseShared; // neutral adjustments: the effective LUT is the base itself
     m_adjustments = Adjustments{};
+    m_adjustmentsShared = std::make_shared<const Adjustments>();
+    m_role = role;
     m_lutPath = path;
     m_origin = origin;
     m_format = format;
+    m_notes = std::move(notes);
     m_unsavedOrigin = modified;
+    m_savedOnce = false;
     ++m_gesture;
     m_undo->clear();
     m_undo->setClean();
@@ -79,19 +159,27 @@ void Document::replaceLut(Lut3D base, const QString& path, const QString& origin
 
 void Document::newNeutral(int size) {
     Lut3D lut = Lut3D::identity(size); // throws for a bad size before anything changes
-    replaceLut(std::move(lut), {}, tr("neutral %1^3").arg(size), {}, false);
+    replaceLut(std::move(lut), {}, tr("neutral %1^3").arg(size), {}, false, LutRole::Look, {});
 }
 
-void Document::openLut(const QString& path) {
-    const LutFile file = formats::readLut(path.toStdString());
+QStringList Document::openLut(const QString& path, const FormatOptions& options) {
+    return adoptLut(formats::readLut(path.toStdString(), options), path);
+}
+
+QStringList Document::adoptLut(const LutFile& file, const QString& path) {
     Lut3D lut = file.toLut3D();
-    replaceLut(std::move(lut), path, path, QString::fromStdString(file.format), false);
+    QStringList notes;
+    for (const Diagnostic& d : file.diagnostics)
+        notes << QString::fromStdString(d.str());
+    const LutRole role = file.format == "nutexb" ? LutRole::GameLut : LutRole::Look;
+    replaceLut(std::move(lut), path, path, QString::fromStdString(file.format), false, role, notes);
+    return notes;
 }
 
 void Document::startFrom(Lut3D base, const QString& origin) {
     if (base.empty())
         throw Error("the LUT is empty");
-    replaceLut(std::move(base), {}, origin, {}, true);
+    replaceLut(std::move(base), {}, origin, {}, true, LutRole::Look, {});
 }
 
 QStringList Document::startFromScreenshot(const QString& path) {
@@ -107,16 +195,29 @@ QStringList Document::startFromScreenshot(const QString& path) {
 }
 
 void Document::editParam(AdjustParam id, double value) {
-    const double before = param(id);
-    if (before == value)
+    Adjustments a = m_adjustments;
+    setParam(a, id, value);
+    editAdjustments(a, static_cast<int>(id),
+                    tr("Set %1").arg(QString::fromStdString(adjustParamInfo(id).label)));
+}
+
+void Document::editCurve(CurveId id, const Curve& curve) {
+    Adjustments a = m_adjustments;
+    curveOf(a, id) = curve;
+    editAdjustments(a, kCurveKeyBase + static_cast<int>(id),
+                    tr("Edit %1").arg(QString::fromLatin1(curveName(id))));
+}
+
+void Document::editAdjustments(const Adjustments& after, int mergeKey, const QString& text) {
+    if (after == m_adjustments)
         return;
-    m_undo->push(new SetAdjustmentCommand(this, id, before, value, m_gesture));
+    m_undo->push(new SetAdjustmentsCommand(this, m_adjustments, after, mergeKey, m_gesture, text));
 }
 
 void Document::resetAdjustments() {
-    if (m_adjustments.isNeutral())
+    if (m_adjustments == Adjustments{})
         return;
-    m_undo->push(new ResetAdjustmentsCommand(this, m_adjustments));
+    editAdjustments(Adjustments{}, -1, tr("Reset adjustments"));
     ++m_gesture;
 }
 
@@ -124,6 +225,7 @@ void Document::applyAdjustmentsState(const Adjustments& a) {
     if (a == m_adjustments)
         return;
     m_adjustments = a;
+    m_adjustmentsShared = std::make_shared<const Adjustments>(a);
     rebuildEffective();
     emit adjustmentsChanged();
     emit effectiveLutChanged();
@@ -136,18 +238,43 @@ void Document::rebuildEffective() {
         m_effective = std::make_shared<const Lut3D>(applyAdjustments(*m_base, m_adjustments));
 }
 
+void Document::saveAdjustmentList(const QString& path) const {
+    const std::string text = formatAdjustmentList(m_adjustments);
+    writeFileAtomically(path.toStdString(), text);
+}
+
+void Document::loadAdjustmentList(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        throw Error(path.toStdString() + ": cannot read: " + f.errorString().toStdString());
+    const QByteArray bytes = f.readAll();
+    const Adjustments a = parseAdjustmentList(
+        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
+        path.toStdString());
+    editAdjustments(a, -1, tr("Load adjustments %1").arg(QFileInfo(path).fileName()));
+    ++m_gesture;
+}
+
 Diagnostics Document::exportLut(const QString& path, const QString& formatName,
-                                const FormatOptions& options, bool smashCompensate) const {
+                                const FormatOptions& options, ExportTarget target) const {
     LutFile file;
-    file.cube = smashCompensate ? smashGameLut(*m_effective) : *m_effective;
+    file.cube = exportTable(lutSource(), target);
     return formats::writeLut(path.toStdString(), file, options, formatName.toStdString());
 }
 
 Diagnostics Document::saveAs(const QString& path) {
-    Diagnostics d = exportLut(path);
+    Diagnostics d;
+    if (m_role == LutRole::GameLut) {
+        d = exportLut(path, {}, {}, ExportTarget::Smash);
+    } else {
+        LutFile file;
+        file.cube = *m_effective;
+        d = formats::writeLut(path.toStdString(), file, {}, {});
+    }
     m_lutPath = path;
     m_origin = path;
     m_unsavedOrigin = false;
+    m_savedOnce = true;
     m_undo->setClean();
     emit pathChanged();
     emitModifiedIfChanged();
@@ -155,27 +282,15 @@ Diagnostics Document::saveAs(const QString& path) {
 }
 
 void Document::openImage(const QString& path) {
-    formats::LoadedImage loaded = formats::readImage(path.toStdString());
-    // A screenshot holds display-encoded values whatever its bit depth (as lutkit preview).
-    const bool linear = loaded.info.isFloat && !m_fromScreenshot;
-    auto scene =
-        std::make_shared<const Image>(prepareScene(loaded.image, linear, m_fromScreenshot));
-    m_image = std::make_shared<const Image>(std::move(loaded.image));
-    m_scene = std::move(scene);
-    m_imagePath = path;
-    m_imageLinear = linear;
-    m_imageInfo = loaded.info;
-    emit imageChanged();
+    adoptImage(formats::readImage(path.toStdString()), path);
 }
 
-void Document::setFromScreenshot(bool on) {
-    if (on == m_fromScreenshot)
-        return;
-    m_fromScreenshot = on;
-    if (!m_image)
-        return;
-    m_imageLinear = m_imageInfo.isFloat && !on;
-    m_scene = std::make_shared<const Image>(prepareScene(*m_image, m_imageLinear, on));
+void Document::adoptImage(formats::LoadedImage loaded, const QString& path) {
+    if (loaded.image.empty())
+        throw Error(path.toStdString() + ": the image is empty");
+    m_image = std::make_shared<const Image>(std::move(loaded.image));
+    m_imagePath = path;
+    m_imageInfo = loaded.info;
     emit imageChanged();
 }
 

@@ -1,21 +1,30 @@
 #pragma once
 // The editor's document: a base LUT, the adjustments on top of it (the effective LUT is base +
-// adjustments, what preview and export use), the undo stack and the modified state, plus the
-// image being previewed. No widget code: QtCore for signals and QUndoStack (which Qt 6 keeps in
-// QtGui, but it needs no windowing), so it is unit-tested without a display.
+// adjustments), the undo stack and the modified state, plus the picture being previewed. No
+// widget code: QtCore for signals and QUndoStack (which Qt 6 keeps in QtGui, but it needs no
+// windowing), so it is unit-tested without a display.
 //
-// Failure safety: every operation that reads a file builds the new state completely first and
-// only then swaps it in, so a failed open throws lut::Error and leaves the document as it was.
+// The base is a look (a LUT on display colours: .cube, strips, neutral...) or a game LUT (read
+// from a .nutexb: what Smash Ultimate applies in its grading pass, brighten included). The Smash
+// export of a look is the game LUT that shows it; of a game LUT with adjustments, the game LUT
+// whose picture is the adjusted picture of the base (lutSource(), ExportTarget.h).
+//
+// Files are read elsewhere (FileLoader, on a worker): the read results are adopted here. Every
+// adopt builds the new state completely first and only then swaps it in, so a failure throws
+// lut::Error and leaves the document as it was.
 #include "AdjustParam.h"
+#include "ExportTarget.h"
 
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutFile.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/io/Format.h"
 #include "lut/ops/Adjust.h"
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 
@@ -26,6 +35,15 @@ namespace lut::gui {
 // Whether a dropped/opened file is a LUT rather than a picture to preview: an extension only
 // LUT formats claim, or an image whose size is exactly a LUT layout (strip N^2 x N, Hald L^3).
 bool looksLikeLutFile(const QString& path);
+// Whether a LUT picture's size fits more than one strip layout (a layout choice is worth asking).
+bool stripLayoutIsAmbiguous(const QString& path);
+
+enum class LutRole { Look, GameLut };
+
+// Which curve of lut::Adjustments a curve editor edits.
+enum class CurveId { Master, Red, Green, Blue, HueVsHue, HueVsSat, HueVsLum };
+Curve& curveOf(Adjustments& a, CurveId id);
+const Curve& curveOf(const Adjustments& a, CurveId id);
 
 class Document : public QObject {
     Q_OBJECT
@@ -36,8 +54,12 @@ public:
     // ---- LUT -------------------------------------------------------------------------------
     // Starts over from the neutral LUT of edge `size` (untitled, unmodified, empty undo stack).
     void newNeutral(int size = 33);
-    // Reads a LUT in any registered format; throws lut::Error (document unchanged) on failure.
-    void openLut(const QString& path);
+    // Reads a LUT in any registered format (on the calling thread; FileLoader reads on a
+    // worker and calls adoptLut). Returns the reader's notes. Throws lut::Error, document
+    // unchanged.
+    QStringList openLut(const QString& path, const FormatOptions& options = {});
+    // Takes a LUT file read elsewhere as the new document; returns the reader's notes to show.
+    QStringList adoptLut(const LutFile& file, const QString& path);
     // Starts from a LUT obtained elsewhere (e.g. extracted from a screenshot). The document is
     // untitled and modified (it exists only in memory). `origin` names where it came from.
     void startFrom(Lut3D base, const QString& origin);
@@ -48,54 +70,61 @@ public:
 
     const Lut3D& baseLut() const { return *m_base; }
     const Lut3D& effectiveLut() const { return *m_effective; }
-    // The effective LUT as an immutable shared object for the preview worker.
     std::shared_ptr<const Lut3D> effectiveLutShared() const { return m_effective; }
-    QString lutPath() const { return m_lutPath; }  // "" = untitled
-    QString lutOrigin() const { return m_origin; } // "neutral 33^3", the file, "extracted ..."
-    QString displayName() const;                   // file name or "Untitled"
-    QString lutFormat() const { return m_format; } // registry name of the format read
+    LutRole lutRole() const { return m_role; }
+    // What exports and the preview are made from (ExportTarget.h).
+    LutSource lutSource() const;
+    QString lutPath() const { return m_lutPath; }    // "" = untitled
+    QString lutOrigin() const { return m_origin; }   // "neutral 33^3", the file, "extracted ..."
+    QString displayName() const;                     // file name or "Untitled"
+    QString lutFormat() const { return m_format; }   // registry name of the format read
+    QStringList lutNotes() const { return m_notes; } // what the reader said about the file
 
     // ---- adjustments (undoable) --------------------------------------------------------------
     const Adjustments& adjustments() const { return m_adjustments; }
     double param(AdjustParam id) const { return getParam(m_adjustments, id); }
-    // Pushes an undo command; consecutive edits of the same parameter within one gesture merge
+    // Pushes an undo command; consecutive edits with the same merge key within one gesture merge
     // into one undo step. endGesture() closes the gesture (slider released).
     void editParam(AdjustParam id, double value);
+    void editCurve(CurveId id, const Curve& curve);
+    // Any edit of the adjustments; mergeKey < 0 never merges.
+    void editAdjustments(const Adjustments& after, int mergeKey, const QString& text);
     void endGesture() { ++m_gesture; }
     int gesture() const { return m_gesture; }
     void resetAdjustments(); // undoable
     // Sets adjustments without an undo entry: used by the undo commands themselves.
     void applyAdjustmentsState(const Adjustments& a);
 
+    // The adjustment list (lut/ops/AdjustmentList.h): what `lutkit` can apply to a LUT. Loading
+    // replaces the adjustments in one undo step. Both throw lut::Error naming the file.
+    void saveAdjustmentList(const QString& path) const;
+    void loadAdjustmentList(const QString& path);
+
     QUndoStack* undoStack() const { return m_undo; }
     bool isModified() const;
+    // Whether saving would replace a file that was opened and not yet saved in this session.
+    bool savingReplacesOriginal() const { return !m_lutPath.isEmpty() && !m_savedOnce; }
 
     // ---- saving ---------------------------------------------------------------------------
-    // Writes the effective LUT with a registered format ("" = by extension); throws lut::Error.
-    // Export never changes the document's path or modified state. smashCompensate writes the
-    // game-compensated 16^3 LUT (lut::smashGameLut,
-    // lut/pipeline/SmashCompensation.h) instead of the LUT as edited.
-    Diagnostics exportLut(const QString& path, const QString& formatName = {},
-                          const FormatOptions& options = {}, bool smashCompensate = false) const;
-    // Save: export to path (format by extension), then path becomes the document's file and the
-    // document is clean. Throws lut::Error (document unchanged).
+    // Writes the table `target` exports (exportTable) with a registered format ("" = by
+    // extension); throws lut::Error. Never changes the document's path or modified state.
+    Diagnostics exportLut(const QString& path, const QString& formatName,
+                          const FormatOptions& options, ExportTarget target) const;
+    // Save: writes the document's LUT (the look, or for a game LUT the game LUT with the edit,
+    // as the Smash export), then path becomes the document's file and the document is clean.
+    // Throws lut::Error (document unchanged).
     Diagnostics saveAs(const QString& path);
 
     // ---- image ----------------------------------------------------------------------------
-    // Reads an image (anything OIIO reads); float files count as linear scene values. Throws
-    // lut::Error (image unchanged) on failure.
+    // Reads an image on the calling thread (FileLoader reads on a worker and calls adoptImage).
+    // Throws lut::Error, image unchanged.
     void openImage(const QString& path);
+    void adoptImage(formats::LoadedImage image, const QString& path);
     bool hasImage() const { return m_image != nullptr; }
     QString imagePath() const { return m_imagePath; }
-    // Stored pixel values (display-encoded for 8/16-bit files), and the prepared linear scene.
+    // Stored pixel values (display-encoded for 8/16-bit files).
     std::shared_ptr<const Image> storedImage() const { return m_image; }
-    std::shared_ptr<const Image> sceneImage() const { return m_scene; }
-    bool imageIsLinear() const { return m_imageLinear; }
     const formats::ImageInfo& imageInfo() const { return m_imageInfo; }
-    // An in-game screenshot already went through the game's grading: undo it (with the neutral
-    // LUT) when making the scene frame, as `lutkit preview --from-screenshot` does.
-    void setFromScreenshot(bool on);
-    bool fromScreenshot() const { return m_fromScreenshot; }
 
 signals:
     void lutReplaced();         // a different base LUT (open / new)
@@ -107,26 +136,27 @@ signals:
 
 private:
     void replaceLut(Lut3D base, const QString& path, const QString& origin, const QString& format,
-                    bool modified);
+                    bool modified, LutRole role, QStringList notes);
     void rebuildEffective();
     void emitModifiedIfChanged();
 
     std::shared_ptr<const Lut3D> m_base;
     std::shared_ptr<const Lut3D> m_effective;
+    std::shared_ptr<const Adjustments> m_adjustmentsShared;
     Adjustments m_adjustments;
+    LutRole m_role = LutRole::Look;
     QString m_lutPath;
     QString m_origin;
     QString m_format;
+    QStringList m_notes;
     bool m_unsavedOrigin = false; // a LUT that came from memory counts as modified until saved
+    bool m_savedOnce = false;     // saved to m_lutPath in this session
     bool m_lastModified = false;
     int m_gesture = 0;
     QUndoStack* m_undo;
 
     std::shared_ptr<const Image> m_image;
-    std::shared_ptr<const Image> m_scene;
     QString m_imagePath;
-    bool m_imageLinear = false;
-    bool m_fromScreenshot = false;
     formats::ImageInfo m_imageInfo;
 };
 

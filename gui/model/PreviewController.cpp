@@ -18,52 +18,120 @@ int PreviewController::proxyFactorFor(int width) {
     return std::max(1, (width + 999) / 1000);
 }
 
-void PreviewController::setScene(std::shared_ptr<const Image> scene) {
-    if (scene == m_scene)
+QSize PreviewController::imageSize() const {
+    return m_stored ? QSize(m_stored->width(), m_stored->height()) : QSize();
+}
+
+PreviewOptions PreviewController::beforeOptions(const PreviewOptions& o) {
+    // What the before picture depends on: a screenshot is shown as stored; a scene goes through
+    // the chain with the neutral export (the LUT and brighten switches do not matter).
+    PreviewOptions b = o;
+    b.lutEnabled = true;
+    b.brighten = true;
+    if (o.input == SceneKind::Screenshot)
+        b = PreviewOptions{};
+    return b;
+}
+
+LutSource PreviewController::jobSource() const {
+    return m_options.lutEnabled ? m_source : LutSource{};
+}
+
+void PreviewController::setImage(std::shared_ptr<const Image> stored, bool storedIsFloat) {
+    if (stored == m_stored)
         return;
-    m_scene = std::move(scene);
+    m_stored = std::move(stored);
+    m_storedIsFloat = storedIsFloat;
+    m_scene.reset();
     m_proxy.reset();
+    m_sceneKey = -1;
     m_before = QImage();
     m_frame.reset();
     m_beforeLutSource[0].reset();
     m_beforeLutSource[1].reset();
     m_sceneReady = false;
-    m_proxyFactor = m_scene ? proxyFactorFor(m_scene->width()) : 1;
-    emit sceneChanged();
-    if (!m_scene)
-        return;
-    m_worker->request([this, scene = m_scene, factor = m_proxyFactor]() -> PreviewWorker::Delivery {
-        std::shared_ptr<const Image> proxy = scene;
+    m_proxyFactor = m_stored ? proxyFactorFor(m_stored->width()) : 1;
+    emit imageChanged();
+    if (m_stored)
+        requestScene();
+    else
+        requestPreview(); // the export still follows the document
+}
+
+void PreviewController::requestScene() {
+    m_sceneReady = false;
+    const int key = scenePreparationKey(m_options);
+    if (m_options.input == SceneKind::Screenshot && m_before.isNull()) {
+        // A screenshot's before picture is the file itself: show it first, while the worker
+        // prepares the scene (a 4K frame takes a second on two cores). If the worker is busy,
+        // the scene request below replaces this one, and makes the picture itself.
+        m_worker->request([this, stored = m_stored]() -> PreviewWorker::Delivery {
+            QImage before = toDisplayImage(*stored);
+            return [this, stored, before] {
+                if (stored == m_stored && m_before.isNull()) {
+                    m_before = before;
+                    emit beforeReady(m_before);
+                }
+            };
+        });
+    }
+    // The same preparation with other before options keeps the scene and its proxy.
+    std::shared_ptr<const Image> reuse = key == m_sceneKey ? m_scene : nullptr;
+    std::shared_ptr<const Image> reuseProxy = key == m_sceneKey ? m_proxy : nullptr;
+    m_worker->request([this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options, key,
+                       reuse, reuseProxy, factor = m_proxyFactor]() -> PreviewWorker::Delivery {
+        std::shared_ptr<const Image> scene = reuse, proxy = reuseProxy;
         QImage before;
         try {
-            if (factor > 1)
-                proxy = std::make_shared<const Image>(downscale(*scene, factor));
-            before = toDisplayImage(renderBefore(*scene));
+            if (!scene)
+                scene = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
+            if (!proxy)
+                proxy =
+                    factor > 1 ? std::make_shared<const Image>(downscale(*scene, factor)) : scene;
+            const TargetLut neutral = makeTargetLut(LutSource{}, options.target);
+            before = toDisplayImage(renderBefore(*stored, *scene, options, neutral.shown));
         } catch (const std::exception&) {
-            proxy = scene; // out of memory: no proxy; the frames say what failed
+            // Out of memory: what can be shown is shown; the frames say what failed.
+            if (!scene)
+                scene = stored;
+            if (!proxy)
+                proxy = scene;
         }
-        return [this, scene, proxy, before] { onSceneReady(scene, proxy, before); };
+        const PreviewOptions bo = beforeOptions(options);
+        return [this, stored, key, bo, scene, proxy, before] {
+            onSceneReady(stored, key, bo, scene, proxy, before);
+        };
     });
 }
 
-void PreviewController::onSceneReady(const std::shared_ptr<const Image>& scene,
+void PreviewController::onSceneReady(const std::shared_ptr<const Image>& stored, int key,
+                                     const PreviewOptions& before,
+                                     const std::shared_ptr<const Image>& scene,
                                      const std::shared_ptr<const Image>& proxy,
-                                     const QImage& before) {
-    if (scene != m_scene)
-        return; // an image that was replaced meanwhile
+                                     const QImage& beforeImage) {
+    if (stored != m_stored || key != scenePreparationKey(m_options) ||
+        !(before == beforeOptions(m_options)))
+        return; // replaced meanwhile: a newer request is on its way
+    if (scene != m_scene) {
+        m_beforeLutSource[0].reset();
+        m_beforeLutSource[1].reset();
+    }
+    m_scene = scene;
     m_proxy = proxy;
+    m_sceneKey = key;
+    m_sceneBeforeOptions = before;
     if (proxy == scene)
         m_proxyFactor = 1;
-    m_before = before;
+    m_before = beforeImage;
     m_sceneReady = true;
     emit beforeReady(m_before);
     requestPreview();
 }
 
-void PreviewController::setLut(std::shared_ptr<const Lut3D> lut) {
-    if (lut == m_lut)
+void PreviewController::setSource(LutSource source) {
+    if (source == m_source)
         return;
-    m_lut = std::move(lut);
+    m_source = std::move(source);
     requestPreview();
 }
 
@@ -72,7 +140,11 @@ void PreviewController::setOptions(const PreviewOptions& options) {
         return;
     m_options = options;
     emit optionsChanged(m_options);
-    requestPreview();
+    if (m_stored && (scenePreparationKey(m_options) != m_sceneKey ||
+                     !(beforeOptions(m_options) == m_sceneBeforeOptions)))
+        requestScene();
+    else
+        requestPreview();
 }
 
 void PreviewController::setInteractive(bool on) {
@@ -84,8 +156,17 @@ void PreviewController::setInteractive(bool on) {
 }
 
 bool PreviewController::isCurrent(const PreviewFrame& frame) const {
+    if (!m_sceneReady)
+        return false;
     const auto& scene = frame.proxyFactor > 1 ? m_proxy : m_scene;
-    return frame.scene && frame.scene == scene && frame.lut == m_lut && frame.options == m_options;
+    return frame.scene && frame.scene == scene && frame.source == jobSource() &&
+           frame.options == m_options;
+}
+
+std::shared_ptr<const TargetLut> PreviewController::targetLut() const {
+    if (m_target && m_targetSource == jobSource() && m_targetKind == m_options.target)
+        return m_target;
+    return nullptr;
 }
 
 std::shared_ptr<const Image>
@@ -99,13 +180,16 @@ PreviewController::cachedBeforeLut(const std::shared_ptr<const Image>& scene,
     return nullptr;
 }
 
-PreviewJob PreviewController::makeJob(bool proxy) {
+PreviewJob PreviewController::makeJob(bool proxy) const {
     PreviewJob j;
-    j.scene = proxy ? m_proxy : m_scene;
-    j.proxyFactor = proxy ? m_proxyFactor : 1;
-    j.lut = m_lut;
+    if (m_stored && m_sceneReady) {
+        j.scene = proxy ? m_proxy : m_scene;
+        j.proxyFactor = proxy ? m_proxyFactor : 1;
+        j.beforeLut = cachedBeforeLut(j.scene, m_options);
+    }
+    j.source = jobSource();
     j.options = m_options;
-    j.beforeLut = cachedBeforeLut(j.scene, j.options);
+    j.target = targetLut();
     return j;
 }
 
@@ -118,7 +202,12 @@ void PreviewController::submit(PreviewJob job) {
 }
 
 void PreviewController::requestPreview() {
-    if (!m_scene || !m_sceneReady)
+    if (!m_stored) {
+        if (!targetLut())
+            submit(makeJob(false)); // no picture: the export alone (clipping count, LUT dock)
+        return;
+    }
+    if (!m_sceneReady)
         return; // the scene's delivery asks for the first frames
     // The proxy first, so a change shows within a proxy render (unless the proxy of this very
     // state is on screen: a slider released where the last drag frame was); then, unless a
@@ -131,8 +220,15 @@ void PreviewController::requestPreview() {
 }
 
 void PreviewController::onFrame(const std::shared_ptr<const PreviewFrame>& frame) {
-    if (!frame->scene || (frame->scene != m_scene && frame->scene != m_proxy))
-        return; // made for an image that was replaced meanwhile
+    if (frame->target && frame->target != m_target && frame->source == jobSource() &&
+        frame->options.target == m_options.target) {
+        m_target = frame->target;
+        m_targetSource = frame->source;
+        m_targetKind = frame->options.target;
+        emit targetLutChanged(m_target);
+    }
+    if (!frame->scene || !m_sceneReady || (frame->scene != m_scene && frame->scene != m_proxy))
+        return; // no picture, or made for an image or scene that was replaced meanwhile
     if (frame->error.isEmpty()) {
         m_frame = frame;
         if (frame->beforeLut && !frame->reusedBeforeLut)
@@ -155,27 +251,39 @@ void PreviewController::waitForIdle() {
 }
 
 void PreviewController::waitForFullResolution() {
-    if (!m_scene)
-        return;
     waitForIdle();
+    if (!m_stored) {
+        if (!targetLut()) {
+            submit(makeJob(false));
+            waitForIdle();
+        }
+        return;
+    }
+    if (!m_sceneReady)
+        return; // the scene failed: nothing more will come
     if (!m_frame || m_frame->proxyFactor != 1 || !isCurrent(*m_frame)) {
         // The latest frame was a proxy, or failed: ask for (and wait for) a full-resolution one.
         m_interactive = false;
-        if (m_sceneReady)
-            submit(makeJob(false));
+        submit(makeJob(false));
         waitForIdle();
     }
 }
 
 Image PreviewController::renderFullResolution() const {
-    if (!m_scene)
+    if (!m_stored)
         return {};
     if (m_frame && m_frame->proxyFactor == 1 && isCurrent(*m_frame))
         return m_frame->image;
-    auto beforeLut = cachedBeforeLut(m_scene, m_options);
+    std::shared_ptr<const Image> scene = m_sceneReady ? m_scene : nullptr;
+    if (!scene)
+        scene = std::make_shared<const Image>(prepareScene(*m_stored, m_storedIsFloat, m_options));
+    auto beforeLut = scene == m_scene ? cachedBeforeLut(scene, m_options) : nullptr;
     if (!beforeLut)
-        beforeLut = std::make_shared<const Image>(renderBeforeLut(*m_scene, m_options));
-    return renderFromLut(*beforeLut, m_options, m_lut).image;
+        beforeLut = std::make_shared<const Image>(renderBeforeLut(*scene, m_options));
+    auto target = targetLut();
+    if (!target)
+        target = std::make_shared<const TargetLut>(makeTargetLut(jobSource(), m_options.target));
+    return renderFromLut(*beforeLut, m_options, target->shown).image;
 }
 
 } // namespace lut::gui

@@ -1,19 +1,24 @@
 #pragma once
-// The editor's preview without widgets: the options, the scene and its proxy, the before-LUT
-// cache, the worker thread, the frames and their timings. The window gives it the scene and the
-// LUT (from the Document) and draws what it delivers; tests drive it headless.
+// The editor's preview without widgets: the options, the stored image and its prepared scene and
+// proxy, the before picture, the before-LUT cache, the target's export (the LUT the preview grades
+// with), the worker thread, the frames and their timings. The window gives it the image and the
+// document's LUT source and draws what it delivers; tests drive it headless.
 //
-// What runs where: on a new scene the worker makes the proxy (lut::downscale, at most ~1000 px
-// wide) and the "before" picture; then each change renders on the worker, the proxy first unless
-// the worker is busy, then (unless a slider is held) the full-resolution frame. The stages before
-// the LUT are cached per scene (full and proxy) and reused while lut::Pipeline::sameBeforeLut
-// says they still apply, so a LUT edit re-runs only the LUT part. The UI thread never renders.
+// What runs where: on a new image, or options that change how the scene is prepared, the worker
+// prepares the scene (PreviewRenderer.h: ungrade, decode...), its proxy (lut::downscale, at most
+// ~1000 px wide) and the "before" picture; then each change renders on the worker, the proxy
+// first unless the worker is busy, then (unless a slider is held) the full-resolution frame. A
+// render first makes the target's export of the document (ExportTarget.h, cached while the
+// document and target stay), then the pipeline; the stages before the LUT are cached per scene
+// (full and proxy) and reused while lut::Pipeline::sameBeforeLut says they still apply, so a LUT
+// edit re-runs only the LUT part. The UI thread never renders.
 #include "PreviewFrame.h"
 #include "PreviewRenderer.h"
 
 #include <QImage>
 #include <QList>
 #include <QObject>
+#include <QSize>
 
 #include <memory>
 
@@ -28,11 +33,12 @@ public:
     ~PreviewController() override;
 
     // ---- inputs --------------------------------------------------------------------------
-    // The prepared linear scene (Document::sceneImage), null = no image. A new scene drops the
-    // frames, the caches and the before picture (sceneChanged); the worker then makes the proxy
-    // and the before picture (beforeReady) and the first frames.
-    void setScene(std::shared_ptr<const Image> scene);
-    void setLut(std::shared_ptr<const Lut3D> lut); // null = neutral
+    // The stored pixels of the opened picture (null = no image) and whether the file held floats
+    // (lut::formats::ImageInfo::isFloat). A new image drops the frames, the caches and the before
+    // picture (imageChanged); the worker then prepares the scene and the first frames.
+    void setImage(std::shared_ptr<const Image> stored, bool storedIsFloat);
+    void setSource(LutSource source);
+    const LutSource& source() const { return m_source; }
     const PreviewOptions& options() const { return m_options; }
     void setOptions(const PreviewOptions& options);
     // True while a slider is held: proxy frames only; on release the full frame follows.
@@ -40,20 +46,23 @@ public:
     bool isInteractive() const { return m_interactive; }
 
     // ---- state ---------------------------------------------------------------------------
-    std::shared_ptr<const Image> scene() const { return m_scene; }
-    std::shared_ptr<const Lut3D> lut() const { return m_lut; }
-    // The proxy the worker made for the scene (null until then; the scene itself when the scene
-    // is small enough), and its reduction factor.
-    std::shared_ptr<const Image> proxyScene() const { return m_proxy; }
+    std::shared_ptr<const Image> storedImage() const { return m_stored; }
+    QSize imageSize() const;
+    // The scene the pipeline starts from for the current options (null until the worker made
+    // it), its proxy (the scene itself when small enough) and the proxy's reduction factor.
+    std::shared_ptr<const Image> scene() const { return m_sceneReady ? m_scene : nullptr; }
+    std::shared_ptr<const Image> proxyScene() const { return m_sceneReady ? m_proxy : nullptr; }
     int proxyFactor() const { return m_proxyFactor; }
     static int proxyFactorFor(int width);
-    // The scene with only the display encoding, 8-bit (null until the worker made it).
+    // The input as the user knows it, 8-bit (PreviewRenderer.h renderBefore; null until made).
     const QImage& beforeImage() const { return m_before; }
-    // The latest frame delivered for the current scene (a proxy or full resolution; null after
-    // a scene change). Failed renders do not replace it.
+    // The latest frame delivered for the current image (a proxy or full resolution; null after
+    // an image change). Failed renders do not replace it.
     std::shared_ptr<const PreviewFrame> currentFrame() const { return m_frame; }
-    // Whether the frame was made from the current scene (or its proxy), LUT and options.
+    // Whether the frame was made from the current scene (or its proxy), source and options.
     bool isCurrent(const PreviewFrame& frame) const;
+    // The target's export of the current source (null until the worker made it).
+    std::shared_ptr<const TargetLut> targetLut() const;
     // Total times (ms) of the last full-resolution frames, oldest first (at most 1000).
     const QList<double>& fullResolutionTimes() const { return m_times; }
 
@@ -62,43 +71,58 @@ public:
     // Processes events until the worker has nothing running or pending.
     void waitForIdle();
     // Processes events until a current full-resolution frame is delivered (or failed), asking
-    // for one if the latest frame is a proxy. Returns at once without a scene.
+    // for one if the latest frame is a proxy. Without an image, until the export is made.
     void waitForFullResolution();
-    // The full-resolution preview for the current state, bit for bit what `lutkit preview`
-    // computes: the current frame's image when it is that, else rendered on the calling thread
-    // (with the cached before-LUT frame when it applies). Empty without a scene.
+    // The full-resolution preview for the current state, bit for bit what the CLI computes: the
+    // current frame's image when it is that, else rendered on the calling thread (with the
+    // caches when they apply). Empty without an image.
     Image renderFullResolution() const;
 
 signals:
-    void sceneChanged(); // the new scene's size is scene()->width()/height() (null: no image)
+    void imageChanged(); // a new image (imageSize(); empty: no image)
     void beforeReady(const QImage& before);
-    // Every render the worker finishes for the current scene; frame->error says if it failed.
+    // Every render the worker finishes for the current image; frame->error says if it failed.
     void frameReady(std::shared_ptr<const lut::gui::PreviewFrame> frame);
     void optionsChanged(const lut::gui::PreviewOptions& options);
+    // A new export of the current source and target (the clipping count, the LUT dock).
+    void targetLutChanged(std::shared_ptr<const lut::gui::TargetLut> target);
 
 private:
-    void requestPreview();
-    PreviewJob makeJob(bool proxy);
-    void submit(PreviewJob job);
-    void onSceneReady(const std::shared_ptr<const Image>& scene,
+    LutSource jobSource() const; // the document's source, or neutral when the LUT is off
+    void requestScene();
+    void onSceneReady(const std::shared_ptr<const Image>& stored, int key,
+                      const PreviewOptions& beforeOptions,
+                      const std::shared_ptr<const Image>& scene,
                       const std::shared_ptr<const Image>& proxy, const QImage& before);
+    void requestPreview();
+    PreviewJob makeJob(bool proxy) const;
+    void submit(PreviewJob job);
     void onFrame(const std::shared_ptr<const PreviewFrame>& frame);
-    // The cached before-LUT frame for `scene` that applies to `options`, or null.
     std::shared_ptr<const Image> cachedBeforeLut(const std::shared_ptr<const Image>& scene,
                                                  const PreviewOptions& options) const;
+    static PreviewOptions beforeOptions(const PreviewOptions& options);
 
     PreviewWorker* m_worker;
     PreviewOptions m_options;
+    LutSource m_source;
+    std::shared_ptr<const Image> m_stored;
+    bool m_storedIsFloat = false;
+    // The prepared scene, made for scene key m_sceneKey and before options m_beforeOptions.
     std::shared_ptr<const Image> m_scene;
     std::shared_ptr<const Image> m_proxy;
-    std::shared_ptr<const Lut3D> m_lut;
+    int m_sceneKey = -1;
+    PreviewOptions m_sceneBeforeOptions;
     int m_proxyFactor = 1;
-    bool m_sceneReady = false; // the worker delivered the proxy and the before picture
+    bool m_sceneReady = false; // the worker delivered the scene for the current options
     bool m_interactive = false;
     QImage m_before;
     std::shared_ptr<const PreviewFrame> m_frame;
     // The last frames whose before-LUT part the worker computed, full scene [0] and proxy [1].
     std::shared_ptr<const PreviewFrame> m_beforeLutSource[2];
+    // The last export made by the worker, with what it was made from.
+    std::shared_ptr<const TargetLut> m_target;
+    LutSource m_targetSource;
+    ExportTarget m_targetKind = ExportTarget::Smash;
     quint64 m_serial = 0;
     QList<double> m_times;
 };

@@ -29,22 +29,32 @@ std::shared_ptr<const PreviewFrame> renderFrame(const PreviewJob& job) {
     frame->proxyFactor = job.proxyFactor;
     frame->serial = job.serial;
     frame->scene = job.scene;
-    frame->lut = job.lut;
+    frame->source = job.source;
     frame->options = job.options;
     QElapsedTimer timer;
     timer.start();
     try {
+        frame->target =
+            job.target
+                ? job.target
+                : std::make_shared<const TargetLut>(makeTargetLut(job.source, job.options.target));
+        frame->targetMilliseconds = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         if (job.scene && !job.scene->empty()) {
             frame->reusedBeforeLut = job.beforeLut != nullptr;
             frame->beforeLut =
                 job.beforeLut
                     ? job.beforeLut
                     : std::make_shared<const Image>(renderBeforeLut(*job.scene, job.options));
-            PreviewResult r = renderFromLut(*frame->beforeLut, job.options, job.lut);
+            PreviewResult r = renderFromLut(*frame->beforeLut, job.options, frame->target->shown);
             frame->image = std::move(r.image);
             frame->milliseconds = r.milliseconds;
             frame->report = QString::fromStdString(r.report);
             frame->display = toDisplayImage(frame->image);
+            const qint64 scopesStart = timer.nsecsElapsed();
+            frame->scopes = computeScopes(frame->display);
+            frame->clipOverlay = clipOverlay(frame->display);
+            frame->scopesMilliseconds =
+                static_cast<double>(timer.nsecsElapsed() - scopesStart) / 1e6;
         }
     } catch (const std::exception& e) {
         frame->error = QString::fromUtf8(e.what());

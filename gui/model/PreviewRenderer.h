@@ -2,11 +2,25 @@
 // The editor's preview: the same lutlib pipeline `lutkit preview` runs (lut/pipeline/Pipeline.h),
 // as plain C++ so the document model and tests can use it without widgets. The preview worker
 // (PreviewController) calls these; everything here is re-entrant (no shared mutable state).
+//
+// Which chain runs follows from the export target and what the picture holds (lut::SceneKind):
+//   Game        target Smash: the game's chain (preset smash). A screenshot is first ungraded
+//               (sRGB decode, the game's neutral grading undone: lutkit preview
+//               --from-screenshot) and gets no bloom (it has the game's already); a linear scene
+//               runs the whole chain, bloom switchable.
+//   EncodedLut  targets Engine and Grading on a screenshot: the LUT on the stored, encoded values
+//               (lutkit apply): what an engine's or a grading app's LUT does to that picture. On
+//               a linear scene with the chain "none": the scene display-encoded first (lutkit
+//               preview --preset none), then the LUT.
+//   EngineScene targets Engine and Grading on a linear scene with the filmic or cinematic chain:
+//               that preset with the LUT (lutkit preview --preset pilot|lecture).
+#include "ExportTarget.h"
+
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
-#include "lut/formats/ImageIO.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/SceneKind.h"
 
 #include <memory>
 #include <string>
@@ -14,30 +28,41 @@
 namespace lut::gui {
 
 struct PreviewOptions {
-    Preset preset = Preset::Smash;
-    bool bloom = true;
-    bool lutEnabled = true; // off: the pipeline runs with a neutral LUT
-    bool brighten = true;   // smash-grade's brighten step (the smash preset has one, no other)
+    ExportTarget target = ExportTarget::Smash;
+    SceneKind input = SceneKind::Screenshot; // set from the image when it opens, switchable
+    Preset preset = Preset::None; // the engine chain of a linear scene (Engine, Grading targets)
+    bool bloom = true;            // linear scenes only: a screenshot has its bloom already
+    bool lutEnabled = true;       // off: the neutral document's export (what "before" shows)
+    bool brighten = true; // the game's brighten step (Game chain); off is an inspection view
     Interpolation interpolation = Interpolation::Trilinear;
     bool operator==(const PreviewOptions&) const = default;
 };
 
-// The scene frame the pipeline starts from, made once per opened image: stored values of
-// 8/16-bit files are sRGB-decoded to linear, float files (EXR) are already linear scene values;
-// fromScreenshot also undoes the game's grading (neutral LUT). Same call the CLI makes
-// (lut::prepareSceneFrame).
-Image prepareScene(const Image& stored, bool storedIsLinear, bool fromScreenshot = false,
-                   int nthreads = 0);
+enum class PreviewChain { Game, EncodedLut, EngineScene };
+PreviewChain previewChain(const PreviewOptions& options);
+// The pipeline preset the chain runs (smash, none or the engine chain).
+Preset effectivePreset(const PreviewOptions& options);
 
-// Whether the preview with these options has a brighten step the user can switch: only the
-// smash preset has one. Brighten off grades with lut::smashWithoutBrighten(lut), which shows the
-// LUT with no brighten step, exactly for trilinear and tetrahedral interpolation and within
-// lut::smashWithoutBrightenError (< 2e-5) for nearest (lut/pipeline/SmashCompensation.h).
+// Bloom: only a linear scene gets it, in the chains that have a bloom stage.
+bool bloomSwitchable(const PreviewOptions& options);
+bool bloomApplied(const PreviewOptions& options);
+// Brighten: the Game chain has the step; off grades with lut::smashWithoutBrighten(lut), which
+// shows the LUT with no brighten step (exact for trilinear and tetrahedral, within
+// lut::smashWithoutBrightenError for nearest). Not what the game shows: an inspection view.
 bool brightenSwitchable(const PreviewOptions& options);
-// Whether the preview applies the brighten step: the smash preset with brighten on.
 bool brightenApplied(const PreviewOptions& options);
+// Whether the options show what the target's export gives (no inspection switch is on).
+bool showsTheExport(const PreviewOptions& options);
 
-// What a preview settings choice means for the pipeline.
+// The frame the pipeline starts from, made once per image and chain (see the chains above):
+// storedIsFloat is the file's pixel type (lut::formats::ImageInfo::isFloat).
+Image prepareScene(const Image& stored, bool storedIsFloat, const PreviewOptions& options,
+                   int nthreads = 0);
+// Options with the same key give the same prepared scene.
+int scenePreparationKey(const PreviewOptions& options);
+
+// What a preview settings choice means for the pipeline; `lut` is the LUT to grade with (the
+// target's export read back, lut::gui::TargetLut::shown).
 PipelineSettings pipelineSettings(const PreviewOptions& options, std::shared_ptr<const Lut3D> lut);
 
 struct PreviewResult {
@@ -46,7 +71,7 @@ struct PreviewResult {
     std::string report;        // PipelineReport::str()
 };
 
-// Runs the pipeline on a copy of `scene` (the prepared linear frame).
+// Runs the pipeline on a copy of `scene` (the prepared frame).
 PreviewResult renderPreview(const Image& scene, const PreviewOptions& options,
                             std::shared_ptr<const Lut3D> lut, int nthreads = 0);
 
@@ -63,7 +88,10 @@ PreviewResult renderFromLut(const Image& beforeLut, const PreviewOptions& option
 // (lut::Pipeline::sameBeforeLut of the two pipelines).
 bool sameBeforeLut(const PreviewOptions& a, const PreviewOptions& b);
 
-// The "before" picture: `scene` with nothing but the display encoding (the `none` preset).
-Image renderBefore(const Image& scene, int nthreads = 0);
+// The "before" picture: the input as the user knows it. A screenshot as stored; a linear scene
+// through the same chain with the neutral document's export (`neutralLut`), so a neutral LUT
+// shows no difference across the divider.
+Image renderBefore(const Image& stored, const Image& scene, const PreviewOptions& options,
+                   std::shared_ptr<const Lut3D> neutralLut, int nthreads = 0);
 
 } // namespace lut::gui

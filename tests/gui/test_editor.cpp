@@ -18,6 +18,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
 #include "lut/pipeline/SmashCompensation.h"
+#include "lut/pipeline/SmashDisplayEdit.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
@@ -28,7 +29,9 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProcess>
+#include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -91,8 +94,9 @@ private slots:
         auto frame = w.currentFrame();
         QVERIFY(frame);
         QCOMPARE(frame->proxyFactor, 1);
-        const Image want = renderPreview(*w.document()->sceneImage(), w.previewOptions(),
-                                         w.document()->effectiveLutShared())
+        const PreviewOptions o = w.previewOptions();
+        const Image want = renderPreview(prepareScene(*w.document()->storedImage(), false, o), o,
+                                         makeTargetLut(w.document()->lutSource(), o.target).shown)
                                .image;
         QVERIFY(frame->image.pixels() == want.pixels());
         // The displayed 8-bit image is the same pixels through toUnorm8.
@@ -114,24 +118,30 @@ private slots:
         QDropEvent drop(QPointF(200, 200), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
         QApplication::sendEvent(&w, &drop);
         QVERIFY2(drop.isAccepted(), qPrintable(w.lastError()));
+        // The files are read on the worker: the drop returned before they arrived.
+        QVERIFY(w.isLoading());
+        w.waitForLoads();
         QCOMPARE(w.document()->lutPath(), samplePath("sample_grade.cube"));
         QCOMPARE(w.document()->imagePath(), samplePath("sample_scene.exr"));
-        QVERIFY(w.document()->imageIsLinear()); // EXR: linear scene values
+        QCOMPARE(w.previewOptions().input, SceneKind::Scene); // EXR: linear scene values
         QCOMPARE(w.document()->effectiveLut().size(), 33);
     }
 
     void brightenToggleShowsWhatThePreviewDoes() {
-        // Checked = the picture has the brighten step. Smash: switchable for every
-        // interpolation (nearest included); other presets have no brighten step.
+        // Checked = the picture has the game's brighten step: the Smash target has one, which
+        // can be switched off for inspection (nearest interpolation included); the window then
+        // says the picture is not the export. Other targets have none.
         MainWindow w;
         w.setInteractiveErrors(false);
         w.show();
         QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
         QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
         QAction* brighten = w.windowActions()->brightenAction();
-        QComboBox* preset = w.windowActions()->presetBox();
+        QComboBox* target = w.windowActions()->targetBox();
         QComboBox* interp = w.windowActions()->interpolationBox();
         QVERIFY(brighten->isEnabled() && brighten->isChecked());
+        auto* state = w.findChild<QLabel*>(QStringLiteral("exportState"));
+        QVERIFY(state->text().startsWith(QStringLiteral("Shows the")));
 
         // As a user picks "nearest" in the toolbar and switches brighten off.
         interp->setFocus();
@@ -142,52 +152,77 @@ private slots:
         brighten->trigger();
         QVERIFY(!brighten->isChecked());
         QVERIFY(!w.previewOptions().brighten);
+        QVERIFY2(state->text().startsWith(QStringLiteral("Inspection view")),
+                 qPrintable(state->text()));
         w.waitForPreview();
+        const TargetLut exported = makeTargetLut(w.document()->lutSource(), ExportTarget::Smash);
         PipelineSettings s;
         s.interpolation = Interpolation::Nearest;
-        s.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(w.document()->effectiveLut()));
-        QVERIFY(w.currentFrame()->image.pixels() ==
-                Pipeline(s).run(*w.document()->sceneImage()).pixels());
+        s.bloom = false;
+        s.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(*exported.shown));
+        Image scene = *w.document()->storedImage();
+        prepareSceneFrame(scene.view(), false, true, nullptr);
+        QVERIFY(w.currentFrame()->image.pixels() == Pipeline(s).run(scene).pixels());
 
-        // Pilot has no brighten step: disabled and unchecked, whatever the choice was.
-        preset->setFocus();
-        while (preset->currentData().toInt() != int(Preset::Pilot))
-            QTest::keyClick(preset, Qt::Key_Down);
-        QCOMPARE(w.previewOptions().preset, Preset::Pilot);
+        // The cube target has no brighten step: disabled and unchecked, whatever the choice was.
+        target->setFocus();
+        while (target->currentData().toInt() != int(ExportTarget::Grading))
+            QTest::keyClick(target, Qt::Key_Down);
+        QCOMPARE(w.previewOptions().target, ExportTarget::Grading);
         QVERIFY(!brighten->isEnabled());
         QVERIFY(!brighten->isChecked());
         // Back to Smash: the choice (off) is kept.
-        while (preset->currentData().toInt() != int(Preset::Smash))
-            QTest::keyClick(preset, Qt::Key_Up);
+        while (target->currentData().toInt() != int(ExportTarget::Smash))
+            QTest::keyClick(target, Qt::Key_Up);
         QVERIFY(brighten->isEnabled());
         QVERIFY(!brighten->isChecked());
         // Options set from outside (the command line) show in the widgets.
         PreviewOptions o = w.previewOptions();
         o.brighten = true;
+        o.input = SceneKind::Scene;
         o.bloom = false;
         w.setPreviewOptions(o);
         QVERIFY(brighten->isChecked());
+        QVERIFY(w.windowActions()->bloomAction()->isEnabled());
         QVERIFY(!w.windowActions()->bloomAction()->isChecked());
+        QCOMPARE(w.windowActions()->inputBox()->currentData().toInt(), int(SceneKind::Scene));
     }
 
     void exportDialogOffersEveryLayout() {
-        ExportDialog dlg(QStringLiteral("/tmp/grade"));
+        ExportNameInput naming;
+        naming.lutPath = QStringLiteral("/tmp/grade.cube");
+        ExportDialog dlg(ExportTarget::Grading, naming);
         auto* format = dlg.findChild<QComboBox*>(QStringLiteral("format"));
         auto* path = dlg.findChild<QLineEdit*>(QStringLiteral("path"));
-        QVERIFY(format && path);
-        QStringList layouts;
+        auto* size = dlg.findChild<QSpinBox*>(QStringLiteral("size"));
+        QVERIFY(format && path && size);
+        // The target's own file first: a .cube as edited, exactly what the preview shows.
+        QCOMPARE(dlg.choice().format, QStringLiteral("cube"));
+        QVERIFY(dlg.matchesPreview());
+        QStringList layouts, paths;
         for (int i = 0; i < format->count(); ++i) {
             format->setCurrentIndex(i);
             const ExportChoice c = dlg.choice();
             QVERIFY(path->text().endsWith(c.extension));
-            if (!c.layout.isEmpty())
+            QVERIFY(path->text() != naming.lutPath);
+            QVERIFY2(!paths.contains(path->text()), qPrintable(path->text()));
+            paths << path->text();
+            if (!c.layout.isEmpty()) {
                 layouts << c.layout;
-            QCOMPARE(dlg.smashCompensate(), c.format == QLatin1String("nutexb"));
+                QCOMPARE(size->value(), 16); // strips at their natural size, 16^3 = 256x16
+            }
             const auto layout = dlg.options().layout;
             QCOMPARE(layout ? QString::fromLatin1(toString(*layout)) : QString(), c.layout);
         }
         for (const char* l : {"unreal", "unity", "smush"})
             QVERIFY2(layouts.contains(QLatin1String(l)), l);
+        // For Smash the dialog starts on the game's file.
+        ExportDialog smash(ExportTarget::Smash, naming);
+        QCOMPARE(smash.choice().format, QStringLiteral("nutexb"));
+        QCOMPARE(smash.path(), QStringLiteral("/tmp/color_grading_lut.nutexb"));
+        QVERIFY(smash.matchesPreview());
+        QVERIFY(smash.selectChoice(QStringLiteral("cube")));
+        QVERIFY(!smash.matchesPreview());
     }
 
     void pixelReadoutShowsInputAndOutput() {
@@ -201,7 +236,8 @@ private slots:
         PreviewView* v = w.previewView();
         v->zoomTo(1.0, QPointF(0, 0)); // image pixel (x, y) at widget (x, y) + offset
         const QSize img(320, 180);
-        const QPoint origin((v->width() - img.width()) / 2, (v->height() - img.height()) / 2);
+        const QPoint origin(int(std::round((v->width() - img.width()) / 2.0)),
+                            int(std::round((v->height() - img.height()) / 2.0)));
         QTest::mouseMove(v, origin + QPoint(100, 50));
         auto* label = w.findChild<QLabel*>(QStringLiteral("pixelReadout"));
         QVERIFY(label);
@@ -286,7 +322,7 @@ private slots:
         QVERIFY(w.currentFrame()->image.pixels() != before->image.pixels());
 
         const QString out = dir.filePath("edited.cube");
-        QVERIFY(w.exportLut(out, QStringLiteral("cube"), {}, false));
+        QVERIFY(w.exportLut(out, QStringLiteral("cube"), {}, ExportTarget::Grading));
         const Lut3D base =
             formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D();
         const Lut3D back = formats::readLut(out.toStdString()).toLut3D();
@@ -326,28 +362,22 @@ private slots:
             const QString path = dir.filePath(QStringLiteral("x%1%2").arg(n++).arg(c.extension));
             FormatOptions o;
             o.layout = lut::parseOptionalLayout(c.layout.toStdString());
-            QVERIFY2(w.exportLut(path, c.format, o, false),
+            QVERIFY2(w.exportLut(path, c.format, o, ExportTarget::Grading),
                      qPrintable(c.label + ": " + w.lastError()));
             QVERIFY2(QFileInfo(path).size() > 0, qPrintable(c.label));
         }
-        // The game-compensated nutexb holds smashGameLut of the edit, to 8 bits.
-        bool haveNutexb = false;
-        for (const auto& c : choices)
-            haveNutexb = haveNutexb || c.format == QLatin1String("nutexb");
-        if (haveNutexb) {
-            const QString path = dir.filePath("color_grading_lut.nutexb");
-            QVERIFY(w.exportLut(path, QStringLiteral("nutexb"), {}, true));
-            const Lut3D back = formats::readLut(path.toStdString()).toLut3D();
-            const Lut3D want = smashGameLut(w.document()->effectiveLut());
-            QCOMPARE(back.size(), 16);
-            double worst = 0;
-            for (std::size_t i = 0; i < want.entryCount(); ++i)
-                for (int c = 0; c < 3; ++c)
-                    worst = std::max(worst,
-                                     std::abs(double(back.entries()[i][c]) -
-                                              std::clamp(double(want.entries()[i][c]), 0.0, 1.0)));
-            QVERIFY2(worst <= 0.5 / 255 + 1e-6, qPrintable(QString::number(worst)));
-        }
+        // The Smash export is the game LUT for the edit, what the preview grades with.
+        const QString path = dir.filePath("color_grading_lut.nutexb");
+        QVERIFY(w.exportLut(path, QStringLiteral("nutexb"), {}, ExportTarget::Smash));
+        const Lut3D back = formats::readLut(path.toStdString()).toLut3D();
+        QCOMPARE(back.size(), 16);
+        w.waitForPreview();
+        QVERIFY(w.preview()->targetLut());
+        QVERIFY(back.entries() == w.preview()->targetLut()->shown->entries());
+        // An existing file is not replaced without consent (headless: refused).
+        QVERIFY(!w.exportLut(path, QStringLiteral("nutexb"), {}, ExportTarget::Smash));
+        QVERIFY(w.lastError().contains(QStringLiteral("not replaced")));
+        QVERIFY(w.exportLut(path, QStringLiteral("nutexb"), {}, ExportTarget::Smash, true));
     }
 
     void closeAsksAndCancelKeepsTheWindow() {
@@ -356,20 +386,28 @@ private slots:
         w.document()->editParam(AdjustParam::Tint, 0.2);
         QVERIFY(w.isWindowModified());
         QString seen;
-        auto answer = [&seen](QMessageBox::StandardButton which) {
-            QTimer::singleShot(0, [&seen, which] {
+        QAbstractButton* defaultButton = nullptr;
+        QAbstractButton* cancelButton = nullptr;
+        auto answer = [&](const char* which) {
+            QTimer::singleShot(0, [&, which] {
                 for (QWidget* top : QApplication::topLevelWidgets())
                     if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) {
                         seen = box->text();
-                        box->button(which)->click();
+                        defaultButton = box->defaultButton();
+                        cancelButton = box->button(QMessageBox::Cancel);
+                        QAbstractButton* b = which ? box->findChild<QAbstractButton*>(which)
+                                                   : box->button(QMessageBox::Cancel);
+                        b->click();
                     }
             });
         };
-        answer(QMessageBox::Cancel);
+        answer(nullptr);
         QVERIFY(!w.close());
         QVERIFY(seen.contains(QStringLiteral("unsaved")));
+        // No default that loses anything: Enter means Cancel.
+        QVERIFY(defaultButton && defaultButton == cancelButton);
         QVERIFY(w.isVisible());
-        answer(QMessageBox::Discard);
+        answer("discard");
         QVERIFY(w.close());
     }
 
@@ -396,8 +434,10 @@ private slots:
         Document doc;
         doc.openImage(samplePath("sample_scene.png"));
         doc.openLut(samplePath("sample_grade.cube"));
-        const Image want =
-            renderPreview(*doc.sceneImage(), PreviewOptions{}, doc.effectiveLutShared()).image;
+        const PreviewOptions o;
+        const Image want = renderPreview(prepareScene(*doc.storedImage(), false, o), o,
+                                         makeTargetLut(doc.lutSource(), o.target).shown)
+                               .image;
         const formats::LoadedImage got = formats::readImage(preview.toStdString());
         QCOMPARE(got.image.width(), want.width());
         QCOMPARE(got.image.height(), want.height());
@@ -408,53 +448,6 @@ private slots:
                     mismatches +=
                         toUnorm8(got.image.pixel(x, y)[c]) != toUnorm8(want.pixel(x, y)[c]);
         QCOMPARE(mismatches, 0);
-
-        // Against the CLI (gui_editor_tests depends on lutkit).
-        // Same inputs, several settings: the editor's saved preview equals the CLI's output.
-        struct Case {
-            const char* image;
-            QStringList editorArgs;
-            QStringList cliArgs;
-        };
-        const QList<Case> cases = {
-            {"sample_scene.png", {}, {}},
-            {"sample_scene.exr", {}, {}},
-            {"sample_scene.png",
-             {QStringLiteral("--preset"), QStringLiteral("pilot"),
-              QStringLiteral("--interpolation"), QStringLiteral("tetrahedral")},
-             {QStringLiteral("--preset"), QStringLiteral("pilot"), QStringLiteral("--interp"),
-              QStringLiteral("tetrahedral")}},
-            {"sample_scene.png",
-             {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")},
-             {QStringLiteral("--no-bloom"), QStringLiteral("--from-screenshot")}},
-        };
-        int n = 0;
-        for (const Case& c : cases) {
-            const QString ext = QString::fromLatin1(c.image).endsWith(QLatin1String(".exr"))
-                                    ? QStringLiteral(".exr")
-                                    : QStringLiteral(".png");
-            const QString mine = dir.filePath(QStringLiteral("editor%1%2").arg(n).arg(ext));
-            const QString cli = dir.filePath(QStringLiteral("cli%1%2").arg(n++).arg(ext));
-            QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
-                            QStringList{QStringLiteral("--save-preview"), mine} + c.editorArgs +
-                                QStringList{samplePath(c.image), samplePath("sample_grade.cube")},
-                            &err),
-                     qPrintable(err));
-            QVERIFY2(runsOk(QStringLiteral(LUTKIT_CLI),
-                            QStringList{QStringLiteral("preview"), QStringLiteral("-q"),
-                                        samplePath(c.image), cli, QStringLiteral("--lut"),
-                                        samplePath("sample_grade.cube")} +
-                                c.cliArgs,
-                            &err),
-                     qPrintable(err));
-            const formats::LoadedImage a = formats::readImage(mine.toStdString());
-            const formats::LoadedImage b = formats::readImage(cli.toStdString());
-            QCOMPARE(a.info.bitDepth, b.info.bitDepth);
-            QCOMPARE(a.info.channels, b.info.channels);
-            QCOMPARE(a.image.width(), b.image.width());
-            QCOMPARE(a.image.height(), b.image.height());
-            QVERIFY2(a.image.pixels() == b.image.pixels(), c.image);
-        }
     }
 
     // Responsiveness on a 1920x1080 frame: logged, not asserted (timing depends on the machine).
@@ -477,11 +470,12 @@ private slots:
         QElapsedTimer t;
         t.start();
         QVERIFY(w.openImageFile(path));
-        const double openMs = t.nsecsElapsed() / 1e6; // the UI thread is busy this long
+        const double openMs = t.nsecsElapsed() / 1e6; // waited for the worker's read
         w.waitForPreview();
         const double openToFullMs = t.nsecsElapsed() / 1e6;
         QSlider* slider = w.adjustmentsPanel()->slider(AdjustParam::Saturation);
-        QList<double> full, proxy, fullLut, proxyLut, fullCpu, proxyCpu, firstFrame;
+        QList<double> full, proxy, fullLut, proxyLut, fullCpu, proxyCpu, firstFrame, proxyTarget,
+            proxyScopes;
         double firstAt = -1;
         connect(w.preview(), &PreviewController::frameReady, this, [&] {
             if (firstAt < 0)
@@ -508,6 +502,8 @@ private slots:
             proxy << t.nsecsElapsed() / 1e6;
             proxyCpu << processCpuMs() - cpu;
             proxyLut << w.currentFrame()->milliseconds;
+            proxyTarget << w.currentFrame()->targetMilliseconds;
+            proxyScopes << w.currentFrame()->scopesMilliseconds;
         }
         slider->setSliderDown(false);
         w.waitForPreview();
@@ -517,15 +513,16 @@ private slots:
                 s << QString::number(v, 'f', 1);
             return s.join(QStringLiteral(", "));
         };
-        qInfo(
-            "1920x1080 open image: UI thread busy %.1f ms (read, scene), full frame after %.1f ms",
-            openMs, openToFullMs);
+        qInfo("1920x1080 open image: read %.1f ms (on the worker), full frame after %.1f ms",
+              openMs, openToFullMs);
         qInfo("1920x1080 first frame (every stage + 8-bit conversion): %.1f ms", firstAllStages);
         qInfo("1920x1080 click step -> first (proxy) frame: %s ms", qPrintable(fmt(firstFrame)));
         qInfo("1920x1080 click step -> full-resolution frame: %s ms (its LUT stages %s)",
               qPrintable(fmt(full)), qPrintable(fmt(fullLut)));
         qInfo("1920x1080 slider -> frame on screen, drag proxy:      %s ms (LUT stages %s)",
               qPrintable(fmt(proxy)), qPrintable(fmt(proxyLut)));
+        qInfo("drag proxy frames on the worker: export LUT %s ms, scopes %s ms",
+              qPrintable(fmt(proxyTarget)), qPrintable(fmt(proxyScopes)));
         qInfo("CPU time per update (all threads), full: %s ms; proxy: %s ms; hardware threads %d",
               qPrintable(fmt(fullCpu)), qPrintable(fmt(proxyCpu)), QThread::idealThreadCount());
         QCOMPARE(w.currentFrame()->image.width(), 1920);

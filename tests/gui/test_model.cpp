@@ -3,15 +3,22 @@
 #include "GuiTestSupport.h"
 
 #include "Document.h"
+#include "ErrorText.h"
+#include "ExportNaming.h"
+#include "ExportTarget.h"
 #include "PreviewRenderer.h"
 #include "RecentFiles.h"
 
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/ops/AdjustmentList.h"
 #include "lut/pipeline/Pipeline.h"
 #include "lut/pipeline/SmashCompensation.h"
+#include "lut/pipeline/SmashDisplayEdit.h"
 #include "lut/roundtrip/Embed.h"
+
+#include <glm/common.hpp>
 
 #include <QFile>
 #include <QSignalSpy>
@@ -114,7 +121,7 @@ private slots:
         const Lut3D base = doc.baseLut();
         doc.editParam(AdjustParam::Exposure, -0.75);
         const QString out = dir.filePath("out.cube");
-        doc.exportLut(out);
+        doc.exportLut(out, {}, {}, ExportTarget::Grading);
         QVERIFY(doc.isModified()); // export is not save
         QCOMPARE(doc.lutPath(), samplePath("sample_grade.cube"));
         const Lut3D back = formats::readLut(out.toStdString()).toLut3D();
@@ -216,29 +223,85 @@ private slots:
     }
 
     void previewEqualsPipelineOnTheCliPath() {
-        // The CLI's path written out: read the file, decode to the scene, run the preset.
+        // The CLI's path written out for the default target (Smash) on an 8-bit screenshot: the
+        // export written to a file, read back; the picture read, decoded and ungraded (lutkit
+        // preview --from-screenshot); the smash preset without bloom.
+        QTemporaryDir dir;
         Document doc;
         doc.openImage(samplePath("sample_scene.png"));
         doc.openLut(samplePath("sample_grade.cube"));
+        const QString nutexb = dir.filePath("color_grading_lut.nutexb");
+        doc.exportLut(nutexb, {}, {}, ExportTarget::Smash);
         formats::LoadedImage loaded =
             formats::readImage(samplePath("sample_scene.png").toStdString());
-        prepareSceneFrame(loaded.image.view(), false, false, nullptr);
+        prepareSceneFrame(loaded.image.view(), false, true, nullptr);
         PipelineSettings s;
         s.preset = Preset::Smash;
-        s.lut = std::make_shared<const Lut3D>(
-            formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D());
-        Pipeline pipeline(s);
-        const Image want = pipeline.run(loaded.image);
+        s.bloom = false;
+        s.lut = std::make_shared<const Lut3D>(formats::readLut(nutexb.toStdString()).toLut3D());
+        const Image want = Pipeline(s).run(loaded.image);
 
-        PreviewOptions o;
-        const PreviewResult got = renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared());
+        PreviewOptions o; // the defaults: Smash, screenshot
+        const Image scene = prepareScene(*doc.storedImage(), false, o);
+        const TargetLut target = makeTargetLut(doc.lutSource(), o.target);
+        const PreviewResult got = renderPreview(scene, o, target.shown);
         QCOMPARE(got.image.width(), want.width());
         QCOMPARE(got.image.height(), want.height());
         QVERIFY(got.image.pixels() == want.pixels());
-        // And the LUT matters: the neutral preview differs.
-        o.lutEnabled = false;
-        QVERIFY(renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared()).image.pixels() !=
-                want.pixels());
+        // And the LUT matters: the neutral document's preview differs.
+        const TargetLut neutral = makeTargetLut(LutSource{}, o.target);
+        QVERIFY(renderPreview(scene, o, neutral.shown).image.pixels() != want.pixels());
+    }
+
+    void everyTargetPreviewsTheFileItWrites() {
+        // For each target the LUT the preview grades with is the default export, written to a
+        // file with the target's format and settings and read back.
+        QTemporaryDir dir;
+        Document doc;
+        doc.openLut(samplePath("sample_grade.cube"));
+        doc.editParam(AdjustParam::Saturation, 1.4);
+        for (const ExportTargetInfo& t : exportTargets()) {
+            const TargetLut target = makeTargetLut(doc.lutSource(), t.id);
+            const QString path = dir.filePath(QString::fromStdString("x" + t.extension));
+            doc.exportLut(path, QString::fromStdString(t.format), targetFormatOptions(t.id), t.id);
+            const Lut3D back =
+                formats::readLut(path.toStdString(), targetFormatOptions(t.id), t.format).toLut3D();
+            QVERIFY2(back.size() == target.shown->size() &&
+                         back.entries() == target.shown->entries(),
+                     t.key.c_str());
+            QCOMPARE(target.clip, countOutOfRange(target.table));
+        }
+        // Smash: 16^3; the engine strip: 16^3 (256x16) from the 33^3 grade; the cube: as edited.
+        QCOMPARE(makeTargetLut(doc.lutSource(), ExportTarget::Smash).shown->size(), 16);
+        QCOMPARE(makeTargetLut(doc.lutSource(), ExportTarget::Engine).shown->size(), 16);
+        QCOMPARE(makeTargetLut(doc.lutSource(), ExportTarget::Grading).shown->size(), 33);
+    }
+
+    void aGameLutOpensAsWhatTheGameShows() {
+        // A .nutexb is what the game applies: opened and exported for Smash unchanged, it is the
+        // same file; an edit applies to the picture the game shows with it.
+        QTemporaryDir dir;
+        Lut3D game = Lut3D::identity(16);
+        for (std::size_t i = 0; i < game.entryCount(); ++i)
+            game.entries()[i] =
+                glm::round(glm::vec3(game.entries()[i].x * 0.9f, game.entries()[i].y,
+                                     0.2f + 0.8f * game.entries()[i].z) *
+                           255.0f) /
+                255.0f;
+        const QString path = dir.filePath("color_grading_lut.nutexb");
+        LutFile f;
+        f.cube = game;
+        formats::writeLut(path.toStdString(), f);
+        Document doc;
+        doc.openLut(path);
+        QCOMPARE(doc.lutRole(), LutRole::GameLut);
+        const TargetLut same = makeTargetLut(doc.lutSource(), ExportTarget::Smash);
+        QCOMPARE(maxDiff(*same.shown, game), 0.0);
+        doc.editParam(AdjustParam::Exposure, 0.3);
+        const Lut3D want =
+            smashLutForDisplayEdit(applyAdjustments(Lut3D::identity(33), doc.adjustments()), &game,
+                                   Interpolation::Tetrahedral);
+        QCOMPARE(maxDiff(exportTable(doc.lutSource(), ExportTarget::Smash), want), 0.0);
     }
 
     void splitAtTheLutIsBitIdentical() {
@@ -246,42 +309,53 @@ private slots:
         doc.openImage(samplePath("sample_scene.exr"));
         doc.openLut(samplePath("sample_grade.cube"));
         doc.editParam(AdjustParam::Saturation, 1.3);
-        for (Preset preset : {Preset::Smash, Preset::Pilot, Preset::None})
-            for (bool bloom : {true, false}) {
-                PreviewOptions o;
-                o.preset = preset;
-                o.bloom = bloom;
-                const Image whole =
-                    renderPreview(*doc.sceneImage(), o, doc.effectiveLutShared()).image;
-                const Image before = renderBeforeLut(*doc.sceneImage(), o);
-                const Image split = renderFromLut(before, o, doc.effectiveLutShared()).image;
-                QVERIFY2(
-                    whole.pixels() == split.pixels(),
-                    qPrintable(QStringLiteral("%1 bloom %2").arg(toString(preset)).arg(bloom)));
-            }
+        const auto lut = doc.effectiveLutShared();
+        for (ExportTarget target : {ExportTarget::Smash, ExportTarget::Grading})
+            for (Preset preset : {Preset::Pilot, Preset::Lecture, Preset::None})
+                for (SceneKind input : {SceneKind::Screenshot, SceneKind::Scene})
+                    for (bool bloom : {true, false}) {
+                        PreviewOptions o;
+                        o.target = target;
+                        o.preset = preset;
+                        o.input = input;
+                        o.bloom = bloom;
+                        const Image scene = prepareScene(*doc.storedImage(), true, o);
+                        const Image whole = renderPreview(scene, o, lut).image;
+                        const Image before = renderBeforeLut(scene, o);
+                        const Image split = renderFromLut(before, o, lut).image;
+                        QVERIFY2(whole.pixels() == split.pixels(),
+                                 qPrintable(QStringLiteral("%1 %2 bloom %3")
+                                                .arg(toString(effectivePreset(o)))
+                                                .arg(toString(input))
+                                                .arg(bloom)));
+                    }
     }
 
     void brightenOffShowsTheLutAlone() {
         // Smash without bloom and brighten, neutral LUT: the grading pass is the identity
         // (up to the shader's 0.454545 * 2.2 != 1 and table pows), so the picture equals the
-        // display-only preset.
+        // display-only chain.
         Document doc;
         doc.openImage(samplePath("sample_scene.exr"));
         PreviewOptions smash;
+        smash.input = SceneKind::Scene;
         smash.bloom = false;
         smash.brighten = false;
         smash.lutEnabled = false;
-        PreviewOptions none;
+        PreviewOptions none = smash;
+        none.target = ExportTarget::Grading;
         none.preset = Preset::None;
-        const Image a = renderPreview(*doc.sceneImage(), smash, nullptr).image;
-        const Image b = renderPreview(*doc.sceneImage(), none, nullptr).image;
+        const Image smashScene = prepareScene(*doc.storedImage(), true, smash);
+        const Image a = renderPreview(smashScene, smash, nullptr).image;
+        const Image b = Pipeline(Preset::None).run(*doc.storedImage());
         double worst = 0;
         for (std::size_t i = 0; i < a.pixels().size(); ++i)
             if (i % 4 != 3 && b.pixels()[i] < 1.0f) // values clipped by display are not compared
                 worst = std::max(worst, std::abs(double(a.pixels()[i]) - double(b.pixels()[i])));
         QVERIFY2(worst < 2e-3, qPrintable(QString::number(worst)));
+        QVERIFY(!showsTheExport(smash)); // an inspection view, and the window says so
         smash.brighten = true;
-        const Image c = renderPreview(*doc.sceneImage(), smash, nullptr).image;
+        const Image c = renderPreview(smashScene, smash, nullptr).image;
         QVERIFY(c.pixel(160, 150)[1] > a.pixel(160, 150)[1] + 0.05f); // about 2x in linear light
         // Brighten off grades with smashWithoutBrighten(LUT): the same picture as the pipeline
         // run with that LUT directly.
@@ -291,9 +365,9 @@ private slots:
         PipelineSettings direct;
         direct.bloom = false;
         direct.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(doc.effectiveLut()));
-        QVERIFY(renderPreview(*doc.sceneImage(), smash, doc.effectiveLutShared()).image.pixels() ==
-                Pipeline(direct).run(*doc.sceneImage()).pixels());
-        // Only the smash preset has a brighten step; it is switchable for every interpolation.
+        QVERIFY(renderPreview(smashScene, smash, doc.effectiveLutShared()).image.pixels() ==
+                Pipeline(direct).run(smashScene).pixels());
+        // Only the game chain has a brighten step; it is switchable for every interpolation.
         for (Interpolation m :
              {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest}) {
             smash.interpolation = m;
@@ -303,17 +377,20 @@ private slots:
         none.brighten = true;
         QVERIFY(!brightenSwitchable(none));
         QVERIFY(!brightenApplied(none));
-        // Brighten off with another preset changes nothing.
+        // Brighten off with another chain changes nothing.
         none.brighten = false;
         QVERIFY(pipelineSettings(none, doc.effectiveLutShared()).lut == doc.effectiveLutShared());
+        none.lutEnabled = true;
+        QVERIFY(showsTheExport(none));
     }
 
     void sliderMappingRoundTrips() {
         for (const AdjustParamInfo& p : adjustParams()) {
             const int pos = paramToSlider(p, p.defaultValue, 1000);
             QCOMPARE(sliderToParam(p, pos, 1000), p.defaultValue);
-            QCOMPARE(sliderToParam(p, 0, 1000), p.min);
-            QCOMPARE(sliderToParam(p, 1000, 1000), p.max);
+            QCOMPARE(sliderToParam(p, 0, 1000), p.sliderMin);
+            QCOMPARE(sliderToParam(p, 1000, 1000), p.sliderMax);
+            QVERIFY(p.min <= p.sliderMin && p.sliderMax <= p.max);
             QVERIFY(sliderToParam(p, 300, 1000) < sliderToParam(p, 700, 1000));
             QCOMPARE(paramToSlider(p, std::nan(""), 1000), pos);
             Adjustments a;
@@ -333,37 +410,153 @@ private slots:
         QCOMPARE(l.count(QStringLiteral("/tmp/f10.cube")), 1);
     }
 
-    void gameLutInvertsTheBrightenPass() {
-        // Edited look: exposure +0.5 on a neutral 33^3. The shipped 16^3 entry at lattice input
-        // s must be L = (E(s) / 1.3703 - s) / 0.99961 + s with E the edited colour (gamma space).
-        Document doc;
-        doc.editParam(AdjustParam::Exposure, 0.5);
-        const Lut3D game = smashGameLut(doc.effectiveLut());
-        QCOMPARE(game.size(), 16);
-        double worst = 0;
-        for (int b = 0; b < 16; ++b)
-            for (int g = 0; g < 16; ++g)
-                for (int r = 0; r < 16; ++r) {
-                    const int idx[3] = {r, g, b};
-                    for (int c = 0; c < 3; ++c) {
-                        const double s = idx[c] / 15.0;
-                        // E(s) by trilinear interpolation of the 33^3 edit = the exposure curve
-                        // interpolated between lattice points i/32 (s = i/15 falls between them).
-                        const double x = s * 32, lo = std::floor(x), f = x - lo;
-                        const double e0 = exposureRef(lo / 32, 0.5),
-                                     e1 = exposureRef(std::min(lo + 1, 32.0) / 32, 0.5);
-                        const double e = e0 + (e1 - e0) * f;
-                        const double want = (e / 1.3703 - s) / 0.99961 + s;
-                        worst = std::max(worst, std::abs(double(game.at(r, g, b)[c]) - want));
-                    }
-                }
-        QVERIFY2(worst < 1e-4, qPrintable(QString::number(worst)));
-    }
-
     void classifiesDroppedFiles() {
         QVERIFY(looksLikeLutFile(samplePath("sample_grade.cube")));
         QVERIFY(!looksLikeLutFile(samplePath("sample_scene.png")));
         QVERIFY(!looksLikeLutFile(samplePath("sample_scene.exr")));
+    }
+
+    void exportNamesAreNewAndOnePerFormat() {
+        // Issue 15, problem 1: the export's suggested file is never the opened LUT, the game's
+        // is color_grading_lut.nutexb, and two formats never share a name.
+        QTemporaryDir dir;
+        const QString grade = dir.filePath("my_grade.cube");
+        QFile::copy(samplePath("sample_grade.cube"), grade);
+        ExportNameInput in;
+        in.lutPath = grade;
+        in.imagePath = samplePath("sample_scene.png");
+        in.format = QStringLiteral("nutexb");
+        in.extension = QStringLiteral(".nutexb");
+        QCOMPARE(suggestedExportPath(in), dir.filePath("color_grading_lut.nutexb"));
+        in.format = QStringLiteral("cube");
+        in.extension = QStringLiteral(".cube");
+        const QString cube = suggestedExportPath(in);
+        QVERIFY2(cube != grade, qPrintable(cube));
+        QCOMPARE(QFileInfo(cube).absolutePath(), QFileInfo(grade).absolutePath());
+        in.format = QStringLiteral("flame");
+        in.extension = QStringLiteral(".3dl");
+        const QString flame = suggestedExportPath(in);
+        in.format = QStringLiteral("lustre");
+        const QString lustre = suggestedExportPath(in);
+        QVERIFY2(flame != lustre, qPrintable(flame));
+        in.format = QStringLiteral("strip");
+        in.extension = QStringLiteral(".png");
+        in.layout = QStringLiteral("pilot");
+        const QString pilot = suggestedExportPath(in);
+        in.layout = QStringLiteral("unity");
+        QVERIFY(pilot != suggestedExportPath(in));
+        // The opened LUT is the game's file: the suggestion keeps the name in another folder.
+        in.lutPath = dir.filePath("color_grading_lut.nutexb");
+        in.imagePath.clear();
+        in.format = QStringLiteral("nutexb");
+        in.extension = QStringLiteral(".nutexb");
+        in.layout.clear();
+        const QString edited = suggestedExportPath(in);
+        QVERIFY2(edited != in.lutPath && edited.endsWith("/color_grading_lut.nutexb"),
+                 qPrintable(edited));
+        // Untitled: beside the picture.
+        in.lutPath.clear();
+        in.imagePath = dir.filePath("shot.png");
+        QCOMPARE(suggestedExportPath(in), dir.filePath("color_grading_lut.nutexb"));
+    }
+
+    void errorTextsNameTheLimitNotTheConstant() {
+        QTemporaryDir dir;
+        QFile f(dir.filePath("huge.cube"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("LUT_3D_SIZE 300\n0 0 0\n");
+        f.close();
+        Document doc;
+        QString message;
+        try {
+            doc.openLut(f.fileName());
+        } catch (const std::exception& e) {
+            message = QString::fromStdString(humanErrorText(e.what()));
+        }
+        QVERIFY2(message.contains(QStringLiteral("256 points per axis")), qPrintable(message));
+        QVERIFY2(!message.contains(QStringLiteral("lut::")) && !message.contains("kMax"),
+                 qPrintable(message));
+    }
+
+    void stripNotesAreKeptAndTheLayoutCanBeChosen() {
+        // A 256x16 strip fits three layouts: a Unity strip is detected as such and the reader
+        // says so (a note that changes what the user gets); the note reaches the document, and
+        // the user's choice of layout reads the picture that way.
+        QTemporaryDir dir;
+        Lut3D warm = Lut3D::identity(16);
+        for (std::size_t i = 0; i < warm.entryCount(); ++i)
+            warm.entries()[i].x = std::min(1.0f, warm.entries()[i].x * 1.1f);
+        const QString path = dir.filePath("strip.png");
+        LutFile f;
+        f.cube = warm;
+        FormatOptions unity;
+        unity.layout = LutLayout::Unity;
+        formats::writeLut(path.toStdString(), f, unity);
+        Document doc;
+        const QStringList notes = doc.openLut(path);
+        QVERIFY2(notes.join(' ').contains(QStringLiteral("layout detected")),
+                 qPrintable(notes.join(' ')));
+        QCOMPARE(doc.lutNotes(), notes);
+        QVERIFY(stripLayoutIsAmbiguous(path));
+        QVERIFY(maxDiff(doc.baseLut(), warm) < 0.5 / 255 + 1e-6); // detected right: 8-bit only
+        FormatOptions pilot;
+        pilot.layout = LutLayout::Pilot;
+        doc.openLut(path, pilot);
+        const Lut3D want = formats::readLut(path.toStdString(), pilot).toLut3D();
+        QCOMPARE(maxDiff(doc.baseLut(), want), 0.0);
+        QVERIFY(maxDiff(doc.baseLut(), warm) > 0.1); // read the other way: another LUT
+    }
+
+    void adjustmentListIsWhatLutkitApplies() {
+        // File > Save Adjustments writes the list lutlib parses; applied to the base it gives
+        // the document's LUT bit for bit; loading it back is one undo step.
+        QTemporaryDir dir;
+        Document doc;
+        doc.openLut(samplePath("sample_grade.cube"));
+        doc.editParam(AdjustParam::Exposure, 0.25);
+        doc.endGesture();
+        doc.editCurve(CurveId::Master, Curve(CurveKind::Tone, {{0, 0}, {0.3, 0.25}, {1, 1}}));
+        doc.endGesture();
+        doc.editCurve(CurveId::HueVsSat, Curve(CurveKind::Hue, {{120, -0.4}, {240, 0.2}}));
+        doc.endGesture();
+        doc.editParam(AdjustParam::Strength, 0.8);
+        doc.endGesture();
+        const QString path = dir.filePath("adjust.txt");
+        doc.saveAdjustmentList(path);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        const Adjustments parsed = parseAdjustmentList(text.toStdString(), "adjust.txt");
+        QVERIFY(parsed == doc.adjustments());
+        QCOMPARE(maxDiff(applyAdjustments(doc.baseLut(), parsed), doc.effectiveLut()), 0.0);
+
+        Document other;
+        other.openLut(samplePath("sample_grade.cube"));
+        other.loadAdjustmentList(path);
+        QCOMPARE(other.undoStack()->count(), 1);
+        QCOMPARE(maxDiff(other.effectiveLut(), doc.effectiveLut()), 0.0);
+        other.undoStack()->undo();
+        QVERIFY(other.adjustments() == Adjustments{});
+    }
+
+    void curveAndWheelDragsAreOneUndoStepEach() {
+        Document doc;
+        for (double y : {0.3, 0.35, 0.4})
+            doc.editCurve(CurveId::Red, Curve(CurveKind::Tone, {{0, 0}, {0.5, y}, {1, 1}}));
+        doc.endGesture();
+        QCOMPARE(doc.undoStack()->count(), 1);
+        Adjustments a = doc.adjustments();
+        for (double amount : {0.02, 0.04, 0.06}) {
+            a.lift = colorWheelOffset(30.0, amount);
+            doc.editAdjustments(a, 200, QStringLiteral("Move lift wheel"));
+        }
+        doc.endGesture();
+        QCOMPARE(doc.undoStack()->count(), 2);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.adjustments().lift, glm::dvec3(0.0));
+        QCOMPARE(doc.adjustments().curveRed.points()[1].y, 0.4);
+        doc.undoStack()->undo();
+        QVERIFY(doc.adjustments().isNeutral());
     }
 };
 

@@ -1,19 +1,21 @@
 // The preview controller without widgets (QT_QPA_PLATFORM=offscreen): what it renders, in which
 // order, what it caches and drops. The expected pixels come from lut::Pipeline run directly on
-// the scene (the `lutkit preview` path), not from the controller's own helpers.
+// the scene (the `lutkit preview` path) with the LUT the export writes, read back from a real
+// file, not from the controller's own helpers.
 #include "PreviewController.h"
 
 #include "lut/Downscale.h"
 #include "lut/Quantize.h"
+#include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/SmashDisplayEdit.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace lut;
 using namespace lut::gui;
-
-Q_DECLARE_METATYPE(std::shared_ptr<const lut::gui::PreviewFrame>)
 
 namespace {
 
@@ -40,12 +42,28 @@ std::shared_ptr<const Lut3D> makeLut(float warm) {
     return std::make_shared<const Lut3D>(std::move(l));
 }
 
+LutSource source(std::shared_ptr<const Lut3D> lut) {
+    LutSource s;
+    s.effective = std::move(lut);
+    return s;
+}
+
+// Grading target (.cube: the file holds the LUT exactly) on a linear scene with the filmic
+// chain: the pipeline's pilot preset with the LUT itself.
+PreviewOptions gradingFilmic() {
+    PreviewOptions o;
+    o.target = ExportTarget::Grading;
+    o.input = SceneKind::Scene;
+    o.preset = Preset::Pilot;
+    return o;
+}
+
 // The independent path: the pipeline with the same settings, whole.
 Image pipelineRun(const Image& scene, const std::shared_ptr<const Lut3D>& lut, Preset preset,
                   bool bloom, Interpolation m = Interpolation::Trilinear) {
     PipelineSettings s;
     s.preset = preset;
-    s.lut = lut;
+    s.lut = lut ? lut : std::make_shared<const Lut3D>(Lut3D::identity(33));
     s.bloom = bloom;
     s.interpolation = m;
     return Pipeline(s).run(scene);
@@ -66,14 +84,16 @@ class PreviewControllerTest : public QObject {
 private slots:
     void newSceneGivesBeforeThenProxyThenFullFrame() {
         PreviewController c;
+        c.setOptions(gradingFilmic());
         const auto lut = makeLut(1.2f);
-        c.setLut(lut);
+        c.setSource(source(lut));
+        c.waitForIdle();
         const auto scene = makeScene(2500, 120, 1.0f); // proxy 1/3
-        QSignalSpy sceneChanged(&c, &PreviewController::sceneChanged);
+        QSignalSpy imageChanged(&c, &PreviewController::imageChanged);
         QSignalSpy before(&c, &PreviewController::beforeReady);
         FrameLog log(c);
-        c.setScene(scene);
-        QCOMPARE(sceneChanged.count(), 1);
+        c.setImage(scene, true);
+        QCOMPARE(imageChanged.count(), 1);
         // Nothing was rendered on this thread: the before picture comes from the worker.
         QVERIFY(c.beforeImage().isNull());
         QVERIFY(c.isBusy());
@@ -81,14 +101,14 @@ private slots:
         QCOMPARE(before.count(), 1);
         QCOMPARE(c.proxyFactor(), 3);
 
-        // Before: the scene with the sRGB display encoding only (the `none` preset), 8-bit.
-        const Image none = Pipeline(Preset::None).run(*scene);
+        // Before: the scene through the same chain with the neutral LUT, 8-bit.
+        const Image neutral = pipelineRun(*scene, nullptr, Preset::Pilot, true);
         const QImage& b = c.beforeImage();
         QCOMPARE(b.size(), QSize(2500, 120));
         int mismatches = 0;
         for (int y = 0; y < 120; y += 7)
             for (int x = 0; x < 2500; x += 13)
-                mismatches += qGreen(b.pixel(x, y)) != toUnorm8(none.pixel(x, y)[1]);
+                mismatches += qGreen(b.pixel(x, y)) != toUnorm8(neutral.pixel(x, y)[1]);
         QCOMPARE(mismatches, 0);
 
         // The proxy frame first, then the full frame, both the pipeline's pixels.
@@ -98,38 +118,69 @@ private slots:
         QCOMPARE(proxy->proxyFactor, 3);
         QCOMPARE(proxy->image.width(), 834); // ceil(2500 / 3)
         QVERIFY(proxy->image.pixels() ==
-                pipelineRun(downscale(*scene, 3), lut, Preset::Smash, true).pixels());
+                pipelineRun(downscale(*scene, 3), lut, Preset::Pilot, true).pixels());
         QCOMPARE(full->proxyFactor, 1);
-        QVERIFY(full->image.pixels() == pipelineRun(*scene, lut, Preset::Smash, true).pixels());
+        QVERIFY(full->image.pixels() == pipelineRun(*scene, lut, Preset::Pilot, true).pixels());
         QCOMPARE(c.currentFrame(), full);
         QVERIFY(c.isCurrent(*full));
         QCOMPARE(c.fullResolutionTimes().size(), 1);
+        // The scopes come with the frame: every pixel counted once per channel.
+        std::uint64_t total = 0;
+        for (auto n : full->scopes.histogram[1])
+            total += n;
+        QCOMPARE(total, std::uint64_t(2500) * 120);
+    }
+
+    void smashPreviewGradesWithTheWrittenFile() {
+        // The Smash target: the frame is the game's chain run with the nutexb the export writes,
+        // read back from a file written here.
+        QTemporaryDir dir;
+        PreviewController c;
+        PreviewOptions o;
+        o.input = SceneKind::Scene;
+        c.setOptions(o);
+        const auto edit = makeLut(1.1f);
+        c.setSource(source(edit));
+        const auto scene = makeScene(400, 60, 1.0f);
+        c.setImage(scene, true);
+        c.waitForFullResolution();
+        LutFile file;
+        file.cube = smashLutForDisplayEdit(*edit, nullptr, Interpolation::Tetrahedral);
+        const std::string path = dir.filePath("color_grading_lut.nutexb").toStdString();
+        formats::writeLut(path, file);
+        const auto written = std::make_shared<const Lut3D>(formats::readLut(path).toLut3D());
+        QVERIFY(c.targetLut());
+        QCOMPARE(c.targetLut()->shown->size(), 16);
+        QVERIFY(c.targetLut()->shown->entries() == written->entries());
+        QVERIFY(c.currentFrame()->image.pixels() ==
+                pipelineRun(*scene, written, Preset::Smash, true).pixels());
     }
 
     void lutEditsReuseTheStagesBeforeTheLut() {
         PreviewController c;
+        c.setOptions(gradingFilmic());
         const auto scene = makeScene(900, 90, 1.0f); // no proxy
-        c.setScene(scene);
+        c.setImage(scene, true);
         c.waitForFullResolution();
         QVERIFY(!c.currentFrame()->reusedBeforeLut);
         FrameLog log(c);
 
         const auto lut = makeLut(0.8f);
-        c.setLut(lut);
+        c.setSource(source(lut));
         c.waitForIdle();
         QCOMPARE(log.frames.size(), 1);
         QVERIFY(log.frames.last()->reusedBeforeLut);
         QVERIFY(log.frames.last()->image.pixels() ==
-                pipelineRun(*scene, lut, Preset::Smash, true).pixels());
+                pipelineRun(*scene, lut, Preset::Pilot, true).pixels());
 
-        // Interpolation and brighten are LUT-part settings: still cached.
+        // Interpolation is a LUT-part setting: still cached.
         PreviewOptions o = c.options();
         o.interpolation = Interpolation::Tetrahedral;
         c.setOptions(o);
         c.waitForIdle();
         QVERIFY(log.frames.last()->reusedBeforeLut);
         QVERIFY(log.frames.last()->image.pixels() ==
-                pipelineRun(*scene, lut, Preset::Smash, true, Interpolation::Tetrahedral).pixels());
+                pipelineRun(*scene, lut, Preset::Pilot, true, Interpolation::Tetrahedral).pixels());
 
         // Bloom is before the LUT: the cache no longer applies.
         o.bloom = false;
@@ -138,17 +189,18 @@ private slots:
         QVERIFY(!log.frames.last()->reusedBeforeLut);
         QVERIFY(
             log.frames.last()->image.pixels() ==
-            pipelineRun(*scene, lut, Preset::Smash, false, Interpolation::Tetrahedral).pixels());
+            pipelineRun(*scene, lut, Preset::Pilot, false, Interpolation::Tetrahedral).pixels());
     }
 
     void whileInteractiveOnlyProxiesThenTheFullFrame() {
         PreviewController c;
-        c.setScene(makeScene(2100, 60, 1.0f)); // proxy 1/3
+        c.setOptions(gradingFilmic());
+        c.setImage(makeScene(2100, 60, 1.0f), true); // proxy 1/3
         c.waitForFullResolution();
         FrameLog log(c);
         c.setInteractive(true);
         for (float warm : {1.1f, 1.2f, 1.3f}) {
-            c.setLut(makeLut(warm));
+            c.setSource(source(makeLut(warm)));
             c.waitForIdle();
         }
         QVERIFY(!log.frames.isEmpty());
@@ -163,37 +215,75 @@ private slots:
         QVERIFY(c.isCurrent(*log.frames.last()));
     }
 
-    void framesOfAReplacedSceneAreDropped() {
+    void framesOfAReplacedImageAreDropped() {
         PreviewController c;
+        c.setOptions(gradingFilmic());
         const auto a = makeScene(1500, 80, 0.3f);
         const auto b = makeScene(1500, 80, 1.0f);
         QSignalSpy before(&c, &PreviewController::beforeReady);
         FrameLog log(c);
-        c.setScene(a);
-        c.setScene(b); // before the worker delivered anything for a
+        c.setImage(a, true);
+        c.setImage(b, true); // before the worker delivered anything for a
         c.waitForIdle();
         QCOMPARE(before.count(), 1);
-        QCOMPARE(c.scene(), b);
+        QCOMPARE(c.storedImage(), b);
         for (const auto& f : log.frames)
-            QVERIFY(f->scene == b || f->scene == c.proxyScene());
+            QVERIFY(f->scene == c.scene() || f->scene == c.proxyScene());
         QVERIFY(c.currentFrame());
         QVERIFY(c.currentFrame()->image.pixels() ==
-                pipelineRun(*b, nullptr, Preset::Smash, true).pixels());
-        c.setScene(nullptr);
+                pipelineRun(*b, nullptr, Preset::Pilot, true).pixels());
+        c.setImage(nullptr, false);
         QVERIFY(!c.currentFrame());
         QVERIFY(c.beforeImage().isNull());
+    }
+
+    void changingThePictureKindPreparesTheSceneAgain() {
+        // An 8-bit picture is a screenshot: the Smash chain ungrades it and adds no bloom; the
+        // same pixels as a scene are decoded and bloomed. Before = the screenshot as stored.
+        PreviewController c;
+        auto stored = std::make_shared<Image>(300, 40);
+        for (int y = 0; y < 40; ++y)
+            for (int x = 0; x < 300; ++x) {
+                float* p = stored->pixel(x, y);
+                p[0] = std::round(255.0f * x / 299) / 255;
+                p[1] = std::round(255.0f * y / 39) / 255;
+                p[2] = 0.5f;
+                p[3] = 1.0f;
+            }
+        c.setImage(stored, false);
+        c.waitForFullResolution();
+        QCOMPARE(c.options().input, SceneKind::Screenshot);
+        int differ = 0;
+        for (int y = 0; y < 40; ++y)
+            for (int x = 0; x < 300; ++x)
+                differ += c.beforeImage().pixel(x, y) != c.currentFrame()->display.pixel(x, y);
+        QCOMPARE(differ, 0); // neutral document: no difference across the divider
+        Image ungraded = *stored;
+        prepareSceneFrame(ungraded.view(), false, true, nullptr);
+        QVERIFY(c.currentFrame()->image.pixels() ==
+                pipelineRun(ungraded, std::make_shared<const Lut3D>(Lut3D::identity(16)),
+                            Preset::Smash, false)
+                    .pixels());
+        PreviewOptions o = c.options();
+        o.input = SceneKind::Scene;
+        c.setOptions(o);
+        c.waitForFullResolution();
+        Image decoded = *stored;
+        prepareSceneFrame(decoded.view(), false, false, nullptr);
+        QVERIFY(c.currentFrame()->image.pixels() ==
+                pipelineRun(decoded, std::make_shared<const Lut3D>(Lut3D::identity(16)),
+                            Preset::Smash, true)
+                    .pixels());
     }
 
     void fullResolutionImageWithOrWithoutAFrame() {
         const auto scene = makeScene(1200, 50, 1.0f);
         const auto lut = makeLut(1.3f);
-        PreviewOptions o;
-        o.preset = Preset::Pilot;
         const Image want = pipelineRun(*scene, lut, Preset::Pilot, true);
         PreviewController c;
-        c.setOptions(o);
-        c.setLut(lut);
-        c.setScene(scene);
+        c.setOptions(gradingFilmic());
+        c.setSource(source(lut));
+        c.setImage(scene, true);
         QVERIFY(c.renderFullResolution().pixels() == want.pixels()); // no frame yet: rendered
         c.waitForFullResolution();
         QVERIFY(c.currentFrame()->image.pixels() == want.pixels());
@@ -211,7 +301,6 @@ private slots:
         c.setOptions(o);
         QCOMPARE(changed.count(), 1);
         QVERIFY(!c.options().brighten);
-        QVERIFY(!c.isBusy()); // no scene: nothing to render
     }
 };
 

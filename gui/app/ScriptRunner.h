@@ -1,0 +1,32 @@
+#pragma once
+// The editor's scripted mode (lutkit-editor --script FILE): drives the real window the way a user
+// does, one command per line, for the tests that run under a real X server (Xvfb) and for
+// reproducible bug reports. Files open through the same worker as the menus, keys go through
+// the window's shortcut handling to the focused widget, the export takes the dialog's defaults.
+//
+//   open-image PATH            open-lut PATH [LAYOUT]        drop PATH...    new-neutral N
+//   target smash|engine|cube   input screenshot|scene        chain filmic|cinematic|none
+//   bloom on|off   lut on|off   brighten on|off   interp NAME   clipping on|off
+//   set KEY VALUE              (an adjustment: exposure, lift.r, strength...; one undo step)
+//   curve NAME X,Y...          (master red green blue hue.hue hue.sat hue.lum; one undo step)
+//   drag KEY VALUE             (a slider dragged by the mouse to VALUE; one undo step)
+//   focus OBJECTNAME           type TEXT        key SEQUENCE (e.g. ctrl+z, Return)
+//   undo  redo  save  save-as PATH  adjustments-save PATH  adjustments-load PATH
+//   export [PATH [FORMAT [LAYOUT]]] [overwrite]   (no PATH: the export dialog's suggestion)
+//   save-preview PATH   screenshot PATH   wait   sleep MS   close
+//   dialogs accept|reject      (how modal dialogs a command opens are answered: Return or Escape;
+//                               default reject)
+//   print WHAT                 (state on stdout: target input chain bloom param:KEY undo-count
+//                               modified notes error clip title export-path focus dialogs)
+// '#' starts a comment. A failing command prints "script:LINE: reason" and ends the run with 1.
+#include <QString>
+#include <QTextStream>
+
+namespace lut::gui {
+
+class MainWindow;
+
+// Runs the script; returns 0 when every command worked, else 1 (after the first failure).
+int runScript(MainWindow& window, const QString& path, QTextStream& out);
+
+} // namespace lut::gui

@@ -1,0 +1,71 @@
+#pragma once
+// What the LUT is for: the one choice that drives both the preview chain and the export.
+//   Smash    Smash Ultimate: color_grading_lut.nutexb, the 16^3 LUT that makes the game show the
+//            edit (lut::smashLutForDisplayEdit); the preview runs the game's chain with it.
+//   Engine   a game engine's raw LUT strip (16^3 as a 256x16 PNG in the unreal layout, 8-bit),
+//            the LUT as edited; the preview applies it to the encoded picture (or runs the
+//            chosen engine chain on a linear scene).
+//   Grading  a .cube for a grading application, the LUT as edited at the document's size, float.
+// The preview grades with the LUT the default export writes, read back from its bytes
+// (makeTargetLut), so the window shows what the file gives, quantisation and resampling included.
+// Plain C++ over lutlib and the formats (no Qt).
+#include "lut/Error.h"
+#include "lut/Lut3D.h"
+#include "lut/io/FormatOptions.h"
+#include "lut/ops/Adjust.h"
+#include "lut/ops/Clipping.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lut::gui {
+
+enum class ExportTarget { Smash, Engine, Grading };
+
+struct ExportTargetInfo {
+    ExportTarget id;
+    std::string key;                 // "smash", "engine", "cube": settings, command line, scripts
+    std::string label;               // what the toolbar shows
+    std::string format;              // registry name of the default export format
+    std::optional<LutLayout> layout; // for image formats
+    std::string extension;           // of the default export, with the dot
+    int size;                        // lattice size written (0 = the document's)
+    int bitDepth;                    // 0 = the format's default
+};
+
+const std::vector<ExportTargetInfo>& exportTargets();
+const ExportTargetInfo& exportTargetInfo(ExportTarget target);
+// "smash", "engine", "cube" (also "grading", "raw"); throws lut::Error.
+ExportTarget parseExportTarget(std::string_view key);
+
+// The document's state an export is made from. The pointers identify it: two sources are the
+// same when they hold the same objects (a change makes new ones).
+struct LutSource {
+    // Base LUT with the adjustments applied (null = neutral 33^3).
+    std::shared_ptr<const Lut3D> effective;
+    // The base, when it is a game LUT read from a .nutexb: then the Smash export applies the
+    // adjustments to the picture the game shows with it; null when the base is a look.
+    std::shared_ptr<const Lut3D> gameBase;
+    std::shared_ptr<const Adjustments> adjustments; // with gameBase (null = neutral)
+    bool operator==(const LutSource&) const = default;
+};
+
+// The default export for a target, made from a source.
+struct TargetLut {
+    Lut3D table;                        // what the export writes, before the format rounds it
+    std::shared_ptr<const Lut3D> shown; // the written bytes read back: what the preview uses
+    ClipCount clip;                     // entries of `table` outside [0, 1] (the file clamps)
+    Diagnostics notes;                  // what the writer reported (rounding, resampling...)
+};
+
+// The table a target exports (Smash: the compensated 16^3 LUT; others: the effective LUT).
+Lut3D exportTable(const LutSource& source, ExportTarget target);
+// The default format options of a target for writing `table`.
+FormatOptions targetFormatOptions(ExportTarget target);
+// Writes the target's default export to memory and reads it back; throws lut::Error.
+TargetLut makeTargetLut(const LutSource& source, ExportTarget target);
+
+} // namespace lut::gui

@@ -1,0 +1,201 @@
+// The editor from the outside, as its users and the CLI see it:
+//   - issue 15, problem 2 and "one truth": for every target the window's preview (saved with the
+//     scripted mode) equals the CLI's rendering of the file the default export wrote, bit for
+//     bit, on the sample scene (screenshot PNG and linear EXR);
+//   - --help and --version work without a display;
+//   - under a real X server (xvfb-run, when installed) the scripted window takes typed values and
+//     shortcuts, a slider drag is one undo step, dropped files open, the default export and a
+//     screenshot are written.
+#include "GuiTestSupport.h"
+
+#include "lut/formats/ImageIO.h"
+
+#include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <QtTest>
+
+using namespace lut;
+using lut::gui::test::samplePath;
+
+namespace {
+
+struct Run {
+    int code = -1;
+    QString out, err;
+};
+
+Run run(const QString& program, const QStringList& args,
+        const QProcessEnvironment& env = QProcessEnvironment::systemEnvironment()) {
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(program, args);
+    Run r;
+    if (!p.waitForFinished(240000)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timed out");
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromLocal8Bit(p.readAllStandardOutput());
+    r.err = QString::fromLocal8Bit(p.readAllStandardError());
+    return r;
+}
+
+QString writeScript(const QTemporaryDir& dir, const QString& name, const QStringList& lines) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (f.open(QIODevice::WriteOnly | QIODevice::Text))
+        f.write(lines.join('\n').toUtf8() + "\n");
+    return path;
+}
+
+QString exportedPath(const QString& out) {
+    const auto m =
+        QRegularExpression(QStringLiteral("^exported (.*)$"), QRegularExpression::MultilineOption)
+            .match(out);
+    return m.hasMatch() ? m.captured(1).trimmed() : QString();
+}
+
+} // namespace
+
+class EditorCliTest : public QObject {
+    Q_OBJECT
+private slots:
+    void previewIsTheCliRenderingOfTheExportedFileForEveryTarget_data() {
+        QTest::addColumn<QString>("image");
+        QTest::addColumn<QStringList>("setup");   // script lines choosing target and chain
+        QTest::addColumn<QString>("extension");   // of the default export
+        QTest::addColumn<QStringList>("cli");     // how the CLI renders it (IN LUT OUT appended)
+        QTest::addColumn<bool>("viaDisplayOnly"); // the scene is first display-encoded (2 steps)
+        const QStringList preview = {QStringLiteral("preview"), QStringLiteral("-q")};
+        const QStringList apply = {QStringLiteral("apply"), QStringLiteral("-q"),
+                                   QStringLiteral("--interp"), QStringLiteral("trilinear")};
+        QTest::newRow("smash, in-game screenshot")
+            << "sample_scene.png" << QStringList{"target smash"} << ".nutexb"
+            << preview + QStringList{"--from-screenshot", "--no-bloom"} << false;
+        QTest::newRow("engine strip, screenshot")
+            << "sample_scene.png" << QStringList{"target engine"} << ".png" << apply << false;
+        QTest::newRow("grading cube, screenshot")
+            << "sample_scene.png" << QStringList{"target cube"} << ".cube" << apply << false;
+        QTest::newRow("smash, linear scene")
+            << "sample_scene.exr" << QStringList{"target smash"} << ".nutexb" << preview << false;
+        QTest::newRow("engine strip, scene, filmic chain")
+            << "sample_scene.exr" << QStringList{"target engine", "chain filmic"} << ".png"
+            << preview + QStringList{"--preset", "pilot"} << false;
+        QTest::newRow("grading cube, scene, display only")
+            << "sample_scene.exr" << QStringList{"target cube", "chain none"} << ".cube" << apply
+            << true;
+    }
+
+    void previewIsTheCliRenderingOfTheExportedFileForEveryTarget() {
+        QFETCH(QString, image);
+        QFETCH(QStringList, setup);
+        QFETCH(QString, extension);
+        QFETCH(QStringList, cli);
+        QFETCH(bool, viaDisplayOnly);
+        // Copies, so the default export lands beside them (never in the source tree).
+        QTemporaryDir dir;
+        const QString in = dir.filePath(image);
+        const QString grade = dir.filePath("sample_grade.cube");
+        QVERIFY(QFile::copy(samplePath(qPrintable(image)), in));
+        QVERIFY(QFile::copy(samplePath("sample_grade.cube"), grade));
+        const QString ext =
+            image.endsWith(".exr") ? QStringLiteral(".exr") : QStringLiteral(".png");
+        const QString mine = dir.filePath("editor" + ext);
+        const QString theirs = dir.filePath("cli" + ext);
+        const QString script =
+            writeScript(dir, "s.txt",
+                        QStringList{"set saturation 1.3", "set exposure 0.2"} + setup +
+                            QStringList{"wait", "export", "save-preview " + mine});
+        const Run e = run(QStringLiteral(LUTKIT_EDITOR), {"--script", script, in, grade});
+        QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
+        const QString exported = exportedPath(e.out);
+        QVERIFY2(exported.endsWith(extension), qPrintable(e.out));
+        QCOMPARE(QFileInfo(exported).absolutePath(), QFileInfo(grade).absolutePath());
+        if (extension == ".nutexb")
+            QCOMPARE(QFileInfo(exported).fileName(), QStringLiteral("color_grading_lut.nutexb"));
+
+        QString cliIn = in;
+        if (viaDisplayOnly) { // the display-encoded scene, as a float file
+            cliIn = dir.filePath("display.exr");
+            const Run d = run(QStringLiteral(LUTKIT_CLI), {"preview", "-q", "--preset", "none",
+                                                           "--bit-depth", "32", in, cliIn});
+            QVERIFY2(d.code == 0, qPrintable(d.err));
+        }
+        const Run c =
+            run(QStringLiteral(LUTKIT_CLI), cli + QStringList{"--lut", exported, cliIn, theirs});
+        QVERIFY2(c.code == 0, qPrintable(c.err));
+        const formats::LoadedImage a = formats::readImage(mine.toStdString());
+        const formats::LoadedImage b = formats::readImage(theirs.toStdString());
+        QCOMPARE(a.image.width(), b.image.width());
+        QCOMPARE(a.image.height(), b.image.height());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < a.image.pixels().size(); ++i)
+            differ += i % 4 != 3 && a.image.pixels()[i] != b.image.pixels()[i];
+        QCOMPARE(differ, std::size_t(0));
+    }
+
+    void helpAndVersionNeedNoDisplay() {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+        const Run help = run(QStringLiteral(LUTKIT_EDITOR), {"--help"}, env);
+        QCOMPARE(help.code, 0);
+        QVERIFY2(help.out.contains(QStringLiteral("Usage: lutkit-editor")), qPrintable(help.out));
+        QVERIFY(help.out.contains(QStringLiteral("--target")));
+        const Run version = run(QStringLiteral(LUTKIT_EDITOR), {"--version"}, env);
+        QCOMPARE(version.code, 0);
+        QVERIFY2(version.out.startsWith(QStringLiteral("lutkit-editor ")), qPrintable(version.out));
+        const Run bad = run(QStringLiteral(LUTKIT_EDITOR), {"--no-such-option"}, env);
+        QCOMPARE(bad.code, 2);
+    }
+
+    void aRealWindowUnderXvfb() {
+        const QString xvfb = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
+        if (xvfb.isEmpty())
+            QSKIP("xvfb-run is not installed");
+        QTemporaryDir dir;
+        const QString grade = dir.filePath("grade.cube");
+        QVERIFY(QFile::copy(samplePath("sample_grade.cube"), grade));
+        const QString shot = dir.filePath("window.png");
+        const QString script = writeScript(
+            dir, "x.txt",
+            {"drop " + samplePath("sample_scene.png") + " " + grade, "print title", "print input",
+             // Type a value, press Enter, then the shortcuts from the spin box.
+             "focus spin.exposure", "key ctrl+a", "type 0.75", "key Return", "print param:exposure",
+             "key ctrl+z", "print param:exposure", "key ctrl+y", "print param:exposure",
+             "key ctrl+shift+z",
+             // A slider dragged with the mouse: one undo step.
+             "drag saturation 1.4", "print undo-count",
+             // Ctrl+E opens the export dialog; Return takes its default (the game's file).
+             "dialogs accept", "key ctrl+e", "print dialogs", "wait", "screenshot " + shot,
+             "print clip"});
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+        const Run r = run(xvfb,
+                          {"-a", "-s", "-screen 0 1600x1000x24", QStringLiteral(LUTKIT_EDITOR),
+                           "--script", script},
+                          env);
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("title grade.cube[*] — sample_scene.png")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("input screenshot")));
+        QVERIFY(r.out.contains(QStringLiteral("param:exposure 0.75\nparam:exposure 0\n"
+                                              "param:exposure 0.75\n")));
+        QVERIFY2(r.out.contains(QStringLiteral("undo-count 2 index 2")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("dialogs Export LUT")), qPrintable(r.out));
+        QVERIFY(QFileInfo::exists(dir.filePath("color_grading_lut.nutexb")));
+        QVERIFY(r.out.contains(QStringLiteral("clip LUT entries outside 0..1:")));
+        const QImage s(shot);
+        QCOMPARE(s.size(), QSize(1480, 920));
+    }
+};
+
+QTEST_GUILESS_MAIN(EditorCliTest)
+#include "test_editor_cli.moc"
