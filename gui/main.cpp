@@ -10,6 +10,7 @@
 #include "PreviewView.h"
 #include "ScriptRunner.h"
 
+#include "lut/formats/ImageFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Pipeline.h"
@@ -18,6 +19,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QPalette>
 #include <QSaveFile>
 #include <QStyleFactory>
@@ -174,6 +176,9 @@ int main(int argc, char** argv) {
     if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
+    // The desktop entry and icon installed from gui/desktop (window grouping, taskbar icon).
+    QGuiApplication::setDesktopFileName(QStringLiteral("lutkit-editor"));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("lutkit-editor")));
     applyDarkTheme(app);
     lut::formats::registerBuiltinFormats();
 
@@ -214,21 +219,31 @@ int main(int argc, char** argv) {
             window.resize(wh[0].toInt(), wh[1].toInt());
     }
 
+    // Positionals: IMAGE [LUT]. A file manager's "Open with" passes a single .cube or .nutexb,
+    // which must open as the LUT, and a LUT file named first is still taken as the LUT.
     const QStringList args = parser.positionalArguments();
     if (args.size() > 2) {
         std::fprintf(stderr, "lutkit-editor: expected at most IMAGE and LUT\n");
         return 2;
     }
+    QString imagePath = args.value(0), lutPath = args.value(1);
+    const auto lutOnly = [](const QString& p) { // a LUT extension that is not a picture's
+        return lut::gui::looksLikeLutFile(p) && !lut::formats::isImageExtension(p.toStdString());
+    };
+    if (args.size() == 1 && lut::gui::looksLikeLutFile(args[0]))
+        std::swap(imagePath, lutPath);
+    else if (args.size() == 2 && lutOnly(args[0]) && !lutOnly(args[1]))
+        std::swap(imagePath, lutPath);
     bool ok = true;
-    if (args.size() >= 1)
-        ok = window.openImageFile(args[0]) && ok;
+    if (!imagePath.isEmpty())
+        ok = window.openImageFile(imagePath) && ok;
     if (input) { // the picture's kind as the user said, not as detected
         lut::gui::PreviewOptions o = window.previewOptions();
         o.input = *input;
         window.setPreviewOptions(o);
     }
-    if (args.size() >= 2)
-        ok = window.openLutFile(args[1]) && ok;
+    if (!lutPath.isEmpty())
+        ok = window.openLutFile(lutPath) && ok;
     for (const QString& a : parser.values(adjustOpt)) {
         const QString key = a.section('=', 0, 0).trimmed();
         bool isNumber = false;

@@ -24,6 +24,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -448,6 +449,23 @@ private slots:
                     mismatches +=
                         toUnorm8(got.image.pixel(x, y)[c]) != toUnorm8(want.pixel(x, y)[c]);
         QCOMPARE(mismatches, 0);
+
+        // A LUT named first (or alone, as a file manager's "Open with" passes it) is still the
+        // LUT: the same preview bytes as IMAGE LUT (it used to be opened as a picture and fail).
+        const QString swapped = dir.filePath("swapped.png");
+        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+                        {QStringLiteral("--save-preview"), swapped, samplePath("sample_grade.cube"),
+                         samplePath("sample_scene.png")},
+                        &err),
+                 qPrintable(err));
+        QFile a(preview), b(swapped);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        QCOMPARE(a.readAll(), b.readAll());
+        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+                        {QStringLiteral("--screenshot"), dir.filePath("lut-only.png"),
+                         samplePath("sample_grade.cube")},
+                        &err),
+                 qPrintable(err));
     }
 
     // Responsiveness on a 1920x1080 frame: logged, not asserted (timing depends on the machine).
