@@ -5,6 +5,7 @@
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
+#include "lut/io/TempFiles.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -66,6 +67,12 @@ const module::ImageIOApi& api() {
                     (tried.empty() ? "" : ", ") + path + " (not a matching lutkit image module)";
                 continue;
             }
+            // One list of temporary files for the program and the module (an interrupt removes
+            // the module's too).
+            using ShareRegistry = void (*)(void*);
+            if (auto share = reinterpret_cast<ShareRegistry>(
+                    ::dlsym(handle, "lutkit_imageio_use_temp_registry")))
+                share(lut::tempFileRegistry());
             loaded = table; // never dlclose'd: OIIO keeps threads and plugins alive until exit
             return;
         }
