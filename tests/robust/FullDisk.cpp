@@ -63,14 +63,14 @@ FullDisk::FullDisk(std::string dir) : m_dir(std::move(dir)) {
             m_why = std::string("mount -t tmpfs: ") + std::strerror(errno);
         }
     }
-#ifdef LUTKIT_ENOSPC_SHIM
-    if (fs::exists(LUTKIT_ENOSPC_SHIM)) {
+#ifdef LUTKIT_FAULT_SHIM
+    if (fs::exists(LUTKIT_FAULT_SHIM)) {
         m_kind = Kind::Shim;
         return;
     }
-    m_why += (m_why.empty() ? "" : "; ") + std::string("no shim at ") + LUTKIT_ENOSPC_SHIM;
+    m_why += (m_why.empty() ? "" : "; ") + std::string("no shim at ") + LUTKIT_FAULT_SHIM;
 #else
-    m_why += (m_why.empty() ? "" : "; ") + std::string("the ENOSPC shim was not built");
+    m_why += (m_why.empty() ? "" : "; ") + std::string("the fault shim was not built");
 #endif
 }
 
@@ -104,8 +104,8 @@ void FullDisk::fill(int freeKiB) {
 lut::test::RunResult FullDisk::run(const std::string& args) const {
     if (m_kind != Kind::Shim)
         return lut::test::runCli(args);
-#ifdef LUTKIT_ENOSPC_SHIM
-    ::setenv("LD_PRELOAD", LUTKIT_ENOSPC_SHIM, 1);
+#ifdef LUTKIT_FAULT_SHIM
+    ::setenv("LD_PRELOAD", LUTKIT_FAULT_SHIM, 1);
     ::setenv("LUTKIT_ENOSPC_DIR", fs::canonical(m_dir).c_str(), 1);
     ::setenv("LUTKIT_ENOSPC_BYTES", std::to_string(m_shimBytes).c_str(), 1);
     // A sanitizer build of lutkit accepts a library preloaded before its runtime.
@@ -114,7 +114,7 @@ lut::test::RunResult FullDisk::run(const std::string& args) const {
     ::setenv("ASAN_OPTIONS", (asanBefore + ":verify_asan_link_order=0").c_str(), 1);
 #endif
     auto r = lut::test::runCli(args);
-#ifdef LUTKIT_ENOSPC_SHIM
+#ifdef LUTKIT_FAULT_SHIM
     if (asanBefore.empty())
         ::unsetenv("ASAN_OPTIONS");
     else

@@ -90,6 +90,8 @@ void rethrow(int status, const std::string& error) {
         return;
     case module::kLimitError:
         throw LimitError(error);
+    case module::kInterrupted:
+        throw InterruptedError(error);
     case module::kOutOfMemory:
         throw std::bad_alloc();
     default:

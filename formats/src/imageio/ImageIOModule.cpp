@@ -14,6 +14,9 @@ template <class Fn> int guarded(std::string& error, Fn&& fn) {
     try {
         fn();
         return kOk;
+    } catch (const InterruptedError& e) {
+        error = e.what();
+        return kInterrupted;
     } catch (const LimitError& e) {
         error = e.what();
         return kLimitError;

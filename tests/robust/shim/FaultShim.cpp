@@ -1,8 +1,13 @@
-// LD_PRELOAD shim for the full-disk tests where no small file system can be mounted: writes to
-// files under $LUTKIT_ENOSPC_DIR fail with ENOSPC once $LUTKIT_ENOSPC_BYTES bytes (over the whole
-// process) went there, like a disk that fills up. Covers the calls the writers use: write,
-// pwrite, writev (our own writes, libtiff, libstdc++ streams for OpenEXR) and fwrite, fputs, fputc
-// (libpng, BMP, TGA, JPEG, DPX through stdio). Everything else passes through untouched.
+// LD_PRELOAD shim that injects the faults the robustness tests need where the real thing cannot
+// be arranged:
+//  - a full disk (where no small file system can be mounted): writes to files under
+//    $LUTKIT_ENOSPC_DIR fail with ENOSPC once $LUTKIT_ENOSPC_BYTES bytes (over the whole process)
+//    went there. Covers the calls the writers use: write, pwrite, writev (our own writes,
+//    libtiff, libstdc++ streams for OpenEXR) and fwrite, fputs, fputc (libpng, BMP, TGA, JPEG,
+//    DPX through stdio);
+//  - too little memory: malloc returns null for any request over $LUTKIT_FAIL_MALLOC_ABOVE bytes,
+//    whatever the machine has.
+// Everything else passes through untouched.
 #include <atomic>
 #include <cerrno>
 #include <climits>
@@ -55,6 +60,20 @@ std::size_t allowance(std::size_t want) {
 } // namespace
 
 extern "C" {
+
+void* __libc_malloc(size_t size); // glibc's own, so the shim needs no dlsym (which allocates)
+
+void* malloc(size_t size) {
+    static const long long cap = [] {
+        const char* v = std::getenv("LUTKIT_FAIL_MALLOC_ABOVE");
+        return v ? std::atoll(v) : 0LL;
+    }();
+    if (cap > 0 && static_cast<long long>(size) > cap) {
+        errno = ENOMEM;
+        return nullptr;
+    }
+    return __libc_malloc(size);
+}
 
 ssize_t write(int fd, const void* buf, size_t count) {
     static auto next = real<ssize_t (*)(int, const void*, size_t)>("write");
