@@ -10,6 +10,7 @@
 
 #include "lut/Error.h"
 #include "lut/Version.h"
+#include "lut/formats/LibraryMessages.h"
 #include "lut/io/TempFiles.h"
 
 #include <iostream>
@@ -89,7 +90,8 @@ CommandLine::CommandLine(const RunHooks& hooks)
 }
 
 int CommandLine::run(int argc, const char* const* argv) {
-    installInterruptHandlers(); // the program's own run: Ctrl-C removes what is half-written
+    installInterruptHandlers();        // the program's own run: Ctrl-C removes what is half-written
+    formats::captureLibraryMessages(); // OpenColorIO logs nothing to the terminal
     return run(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
 }
 
