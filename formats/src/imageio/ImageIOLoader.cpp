@@ -2,6 +2,7 @@
 // load lutkit_imageio.so on first use and forward to it (why: see ImageIOModuleApi.h).
 // The module is looked for in $LUTKIT_IMAGEIO_MODULE (a file), next to the running executable,
 // in ../lib/lutkit/ relative to it, and in the build tree's bin folder.
+#include "imageio/ImageHeaderChecks.h"
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
@@ -102,6 +103,7 @@ void rethrow(int status, const std::string& error) {
 } // namespace
 
 LoadedImage readImage(const std::string& path) {
+    checkImageHeader(path); // declared sizes against the file, before a codec believes them
     LoadedImage out;
     std::string error;
     rethrow(api().readImage(path, out, error), error);
@@ -109,6 +111,7 @@ LoadedImage readImage(const std::string& path) {
 }
 
 ImageInfo readImageInfo(const std::string& path) {
+    checkImageHeader(path);
     ImageInfo out;
     std::string error;
     rethrow(api().readImageInfo(path, out, error), error);
