@@ -1,6 +1,6 @@
 #pragma once
-// Fuzz target for the embed/extract patch finder: findPatch, readPatch and extractLut (raw and
-// smash targets) on
+// Fuzz target for the embed/extract patch finder: findPatch, readPatch and extractLut (raw target;
+// smash and the one-call form when byte 0 asks, see extractChecked) on
 //   byte 0 even: an image file (byte 1: extension, rest: the file), read as extract reads it;
 //   byte 0 odd:  a screenshot with a real patch embedded (bytes 1-4: width, height, background,
 //                embed options), then mutated by the rest of the bytes, 4 at a time
@@ -18,7 +18,9 @@
 
 namespace lut::fuzz {
 
-inline void extractChecked(const Image& image) {
+// flags bit 1: also the smash target (slow: it fits the game's display); bit 2: also the
+// one-call form that finds the patch again.
+inline void extractChecked(const Image& image, std::uint8_t flags) {
     const FindResult found = findPatch(image.view());
     if (found.status == FindStatus::Found) {
         const PatchPlacement& p = found.placement;
@@ -28,6 +30,8 @@ inline void extractChecked(const Image& image) {
         try {
             const PatchReading reading = readPatch(image.view(), p);
             for (ExtractTarget t : {ExtractTarget::Raw, ExtractTarget::Smash}) {
+                if (t == ExtractTarget::Smash && !(flags & 2))
+                    continue;
                 lut::ExtractOptions o;
                 o.target = t;
                 o.nthreads = 1;
@@ -39,6 +43,8 @@ inline void extractChecked(const Image& image) {
         } catch (const lut::Error&) {
         }
     }
+    if (!(flags & 4))
+        return;
     // The one-call form finds again on its own.
     try {
         lut::ExtractOptions o;
@@ -60,7 +66,7 @@ inline Outcome runPatch(const std::uint8_t* data, std::size_t size) {
             if (static_cast<std::uint64_t>(info.width) * info.height > (1u << 20))
                 return Outcome::Accepted;
             const formats::LoadedImage img = formats::readImage(path);
-            extractChecked(img.image);
+            extractChecked(img.image, data[0]);
         } catch (const lut::Error&) {
             return Outcome::Refused;
         }
@@ -110,7 +116,7 @@ inline Outcome runPatch(const std::uint8_t* data, std::size_t size) {
             break;
         }
     }
-    extractChecked(image);
+    extractChecked(image, data[0]);
     return Outcome::Accepted;
 }
 
