@@ -120,36 +120,36 @@ def ocio_seed(name, ext, text, size=0):
 data_dir = os.path.join(here, "..", "data", "ocio")
 for f in sorted(os.listdir(data_dir)):
     with open(os.path.join(data_dir, f), "rb") as fh:
-        ocio_seed("data-" + f, os.path.splitext(f)[1], fh.read())
-ocio_seed("cdl.cc", ".cc", '<ColorCorrection id="a"><SOPNode><Slope>1.1 1 0.9</Slope>'
+        ocio_seed("data-" + f.replace(".", "-"), os.path.splitext(f)[1], fh.read())
+ocio_seed("cdl-cc", ".cc", '<ColorCorrection id="a"><SOPNode><Slope>1.1 1 0.9</Slope>'
           "<Offset>0.01 0 -0.01</Offset><Power>1 1.2 1</Power></SOPNode>"
           "<SatNode><Saturation>0.8</Saturation></SatNode></ColorCorrection>\n")
-ocio_seed("cdl.ccc", ".ccc", '<ColorCorrectionCollection><ColorCorrection id="a"><SOPNode>'
+ocio_seed("cdl-ccc", ".ccc", '<ColorCorrectionCollection><ColorCorrection id="a"><SOPNode>'
           "<Slope>1 1 1</Slope><Offset>0 0 0</Offset><Power>2 2 2</Power></SOPNode>"
           "</ColorCorrection></ColorCorrectionCollection>\n", 5)
-ocio_seed("cdl.cdl", ".cdl", '<ColorDecisionList><ColorDecision><ColorCorrection id="b"><SOPNode>'
+ocio_seed("cdl-cdl", ".cdl", '<ColorDecisionList><ColorDecision><ColorCorrection id="b"><SOPNode>'
           "<Slope>0.5 1 1</Slope><Offset>0 0 0</Offset><Power>1 1 1</Power></SOPNode>"
           "</ColorCorrection></ColorDecision></ColorDecisionList>\n")
-ocio_seed("matrix.spimtx", ".spimtx", "0.5 0.2 0.1 0\n0.1 0.8 0.1 0\n0 0.1 0.9 0.01\n", 3)
-ocio_seed("discreet-1d.lut", ".lut", "LUT: 3 4\n" + "".join(f"{v}\n" for v in [0, 300, 700, 1023] * 3))
-ocio_seed("iridas.itx", ".itx", "LUT_3D_SIZE 2\n" + neutral_rows(2))
-ocio_seed("iridas.look", ".look", '<?xml version="1.0" ?><look><LUT><size>"2"</size><data>"'
+ocio_seed("matrix-spimtx", ".spimtx", "0.5 0.2 0.1 0\n0.1 0.8 0.1 0\n0 0.1 0.9 0.01\n", 3)
+ocio_seed("discreet-1d-lut", ".lut", "LUT: 3 4\n" + "".join(f"{v}\n" for v in [0, 300, 700, 1023] * 3))
+ocio_seed("iridas-itx", ".itx", "LUT_3D_SIZE 2\n" + neutral_rows(2))
+ocio_seed("iridas-look", ".look", '<?xml version="1.0" ?><look><LUT><size>"2"</size><data>"'
           + "0000000000000000000000000000803f" * 0 + '"</data></LUT></look>\n')
-ocio_seed("pandora.mga", ".mga", "channels: 3\nin: 8\nout: 256\nformat: lut\nvalues: red green blue\n"
+ocio_seed("pandora-mga", ".mga", "channels: 3\nin: 8\nout: 256\nformat: lut\nvalues: red green blue\n"
           + "".join(f"{i} {r * 255} {g * 255} {b * 255}\n" for i, (b, g, r) in enumerate(
               [(b, g, r) for b in (0, 1) for g in (0, 1) for r in (0, 1)])))
-ocio_seed("nuke.vf", ".vf", "#Inventor V2.1 ascii\ngrid_size 2 2 2\ndata\n" + neutral_rows(2))
-ocio_seed("clf-1d.clf", ".clf", '<?xml version="1.0"?><ProcessList id="x" compCLFversion="3">'
+ocio_seed("nuke-vf", ".vf", "#Inventor V2.1 ascii\ngrid_size 2 2 2\ndata\n" + neutral_rows(2))
+ocio_seed("clf-1d-clf", ".clf", '<?xml version="1.0"?><ProcessList id="x" compCLFversion="3">'
           '<LUT1D inBitDepth="32f" outBitDepth="32f"><Array dim="3 1">0 0.5 1</Array></LUT1D>'
           "</ProcessList>\n")
-ocio_seed("ctf-matrix.ctf", ".ctf", '<?xml version="1.0"?><ProcessList id="y" version="2">'
+ocio_seed("ctf-matrix-ctf", ".ctf", '<?xml version="1.0"?><ProcessList id="y" version="2">'
           '<Matrix inBitDepth="32f" outBitDepth="32f"><Array dim="3 3">1 0 0 0 1 0 0 0 2</Array>'
           "</Matrix></ProcessList>\n")
-ocio_seed("csp-1d.csp", ".csp", "CSPLUTV100\n1D\n\n2\n0 1\n0 1\n2\n0 1\n0 1\n2\n0 1\n0 1\n\n"
+ocio_seed("csp-1d-csp", ".csp", "CSPLUTV100\n1D\n\n2\n0 1\n0 1\n2\n0 1\n0 1\n2\n0 1\n0 1\n\n"
           "3\n0 0.5 1\n0 0.25 1\n0 0.75 1\n")
-ocio_seed("truelight.cub", ".cub", "# Truelight Cube v2.0\n# lutLength 2\n# iDims 3\n# oDims 3\n"
+ocio_seed("truelight-cub", ".cub", "# Truelight Cube v2.0\n# lutLength 2\n# iDims 3\n# oDims 3\n"
           "# width 2 2 2\n\n# Cube\n" + neutral_rows(2) + "# end\n")
-ocio_seed("huge-size.3dl", ".3dl", "0 1023\n" + "0 0 0\n" * 7 + "4095 4095 4095\n")
+ocio_seed("huge-size-3dl", ".3dl", "0 1023\n" + "0 0 0\n" * 7 + "4095 4095 4095\n")
 
 # image_apply: byte 0 = extension index (ImageFuzzTarget.h), then a small real file.
 # patch: byte 0 even -> byte 1 extension index, then a file; odd -> synthetic (PatchFuzzTarget.h).
