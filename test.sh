@@ -3,7 +3,7 @@
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer builds and fuzzing.
 # Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),
 # ThreadSanitizer build + the threaded code's tests (build-tsan/, scripts/tsan.sh),
-# each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 45) s (build-fuzz/, scripts/fuzz.sh;
+# each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/, scripts/fuzz.sh;
 # findings land in build-fuzz/findings/). The last line says ALL PASSED or the stage that failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
@@ -28,8 +28,8 @@ if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
   echo "== ThreadSanitizer build and the threaded code's tests (scripts/tsan.sh)"
   "$root/scripts/tsan.sh" "$root/build-tsan"
   stage="fuzzing"
-  echo "== Fuzzing each reader for ${LUTKIT_FUZZ_SECONDS:-45} s (scripts/fuzz.sh)"
-  "$root/scripts/fuzz.sh" "$root/build-fuzz" "${LUTKIT_FUZZ_SECONDS:-45}"
+  echo "== Fuzzing each reader for ${LUTKIT_FUZZ_SECONDS:-30} s (scripts/fuzz.sh)"
+  "$root/scripts/fuzz.sh" "$root/build-fuzz" "${LUTKIT_FUZZ_SECONDS:-30}"
 fi
 stage="done"
 echo "test.sh: ALL PASSED in $(( $(date +%s) - t0 )) s$([ "${LUTKIT_QUICK:-0}" = "1" ] && echo " (quick: no sanitizers, no fuzzing)")"

@@ -1,11 +1,14 @@
 #include "Batch.h"
 
+#include "Interrupts.h"
+#include "OutOfMemory.h"
 #include "Usage.h"
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/TempFiles.h"
 
 #include <algorithm>
 #include <atomic>
@@ -64,8 +67,12 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
     const int workers = std::max(1, std::min(resolveThreads(threads), total));
     const int inner = workers == 1 ? threads : 1;
     const bool bar = !quiet && total > 1 && isatty(STDERR_FILENO);
+    // Ctrl-C: temporary files go at once, jobs in flight stop at their next write, no new job
+    // starts, and what was finished is listed below (Interrupts.h).
+    const CooperativeInterrupts cooperative;
     std::mutex m;
     std::vector<std::string> failures(jobs.size());
+    std::vector<char> finished(jobs.size(), 0);
     std::atomic<int> next{0}, done{0};
     for (const auto& j : jobs)
         if (!j.output.empty()) {
@@ -81,21 +88,31 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
         std::fflush(stderr);
     };
     auto work = [&] {
-        for (int i; (i = next++) < total;) {
+        for (int i; !lut::interrupted() && (i = next++) < total;) {
             const BatchJob& j = jobs[i];
             std::string text, fail;
+            bool stopped = false;
             try {
                 if (j.output.empty())
                     throw Error(
                         "another input has the same file name (its output would be overwritten)");
                 checkNotSameFile(j.input, j.output); // never overwrite an input (issue 7)
                 text = fn(j, inner);
+            } catch (const InterruptedError&) {
+                stopped = true;
+            } catch (const std::bad_alloc&) {
+                fail = outOfMemoryText();
             } catch (const std::exception& e) {
                 fail = e.what();
             }
+            // A job that failed once the program was interrupted most likely failed because of
+            // it (its temporary file was removed under it): it is among the unfinished.
+            stopped = stopped || (!fail.empty() && lut::interrupted());
             std::lock_guard<std::mutex> lock(m);
-            if (!fail.empty())
+            if (!fail.empty() && !stopped)
                 failures[i] = fail;
+            else if (!stopped)
+                finished[static_cast<std::size_t>(i)] = 1;
             if (!text.empty()) {
                 if (bar)
                     std::fprintf(stderr, "\r\033[K");
@@ -118,13 +135,29 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
     for (std::size_t i = 0; i < jobs.size(); ++i)
         if (!failures[i].empty()) {
             ++failed;
-            // Library messages usually start with the path already.
+            // Library messages usually start with the path already (the input's or the
+            // output's).
             const std::string& msg = failures[i];
-            if (msg.rfind(jobs[i].input, 0) == 0)
+            if (msg.rfind(jobs[i].input, 0) == 0 ||
+                (!jobs[i].output.empty() && msg.rfind(jobs[i].output, 0) == 0))
                 std::cerr << "lutkit: error: " << msg << "\n";
             else
                 std::cerr << "lutkit: error: " << jobs[i].input << ": " << msg << "\n";
         }
+    if (lut::interrupted()) {
+        // One line: what is complete on the disk; everything else was not written (or removed).
+        std::string list;
+        int count = 0;
+        for (std::size_t i = 0; i < jobs.size(); ++i)
+            if (finished[i]) {
+                ++count;
+                list += (list.empty() ? "" : ", ") + jobs[i].output;
+            }
+        std::cerr << "lutkit: interrupted (" << signalName(lut::interruptSignal()) << "): " << count
+                  << " of " << total << " file(s) finished" << (count ? " (" + list + ")" : "")
+                  << "; nothing else was written\n";
+        return kExitInterrupted;
+    }
     if (failed > 0 && total > 1)
         std::cerr << "lutkit: " << failed << " of " << total << " file(s) failed\n";
     return failed > 0 ? kExitFailure : kExitOk;

@@ -1,13 +1,17 @@
 #include "CommandLine.h"
 
 #include "Generators.h"
+#include "Interrupts.h"
 #include "OptionTable.h"
+#include "OutOfMemory.h"
 #include "Suggest.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
 #include "lut/Version.h"
+#include "lut/formats/LibraryMessages.h"
+#include "lut/io/TempFiles.h"
 
 #include <iostream>
 #include <new>
@@ -30,6 +34,18 @@ std::vector<std::string> commandNames(CLI::App& app) {
          app.get_subcommands([](CLI::App* s) { return !s->get_group().empty(); }))
         names.push_back(sub->get_name());
     return names;
+}
+
+// The files a subcommand was given (its positional arguments), for messages that must name them.
+std::string positionalFiles(const std::vector<CLI::App*>& parsed) {
+    std::string files;
+    if (parsed.empty())
+        return files;
+    for (const CLI::Option* o : parsed.front()->get_options())
+        if (!o->nonpositional()) // a positional argument: a file name
+            for (const auto& r : o->results())
+                files += (files.empty() ? "" : ", ") + r;
+    return files;
 }
 
 } // namespace
@@ -74,6 +90,8 @@ CommandLine::CommandLine(const RunHooks& hooks)
 }
 
 int CommandLine::run(int argc, const char* const* argv) {
+    installInterruptHandlers();        // the program's own run: Ctrl-C removes what is half-written
+    formats::captureLibraryMessages(); // OpenColorIO logs nothing to the terminal
     return run(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
 }
 
@@ -138,6 +156,10 @@ int CommandLine::run(const std::vector<std::string>& args) {
     std::vector<std::string> reversed(args.rbegin(), args.rend()); // CLI11 pops from the back
     try {
         m_app.parse(reversed);
+    } catch (const InterruptedError&) { // a write refused after SIGINT/SIGTERM (Interrupts.h)
+        std::cerr << "lutkit: interrupted (" << signalName(interruptSignal())
+                  << "); unfinished outputs removed\n";
+        return kExitInterrupted;
     } catch (const Error& e) { // the library: bad input or a failed operation
         std::cerr << "lutkit: error: " << e.what() << "\n";
         return kExitFailure;
@@ -150,7 +172,9 @@ int CommandLine::run(const std::vector<std::string>& args) {
         std::cerr << "lutkit: internal error: " << e.what() << "\n";
         return kExitFailure;
     } catch (const std::bad_alloc&) {
-        std::cerr << "lutkit: error: out of memory\n";
+        const std::string files = positionalFiles(m_app.get_subcommands());
+        std::cerr << "lutkit: error: " << (files.empty() ? "" : files + ": ") << outOfMemoryText()
+                  << "\n";
         return kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "lutkit: error: " << e.what() << "\n";

@@ -4,7 +4,8 @@
 
 namespace lut::cli {
 
-enum ExitCode { kExitOk = 0, kExitFailure = 1, kExitUsage = 2 };
+// 130 = 128 + SIGINT, the shell's code for a command stopped by Ctrl-C, used for SIGTERM too.
+enum ExitCode { kExitOk = 0, kExitFailure = 1, kExitUsage = 2, kExitInterrupted = 130 };
 
 // A bad option value or combination found after parsing: exit code 2, like CLI11's own usage
 // errors. Library failures are lut::Error (exit code 1).

@@ -23,7 +23,7 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags -Wno-unknown-warning-option" \
   -DLUTKIT_FUZZ=ON -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
 
-all=(cube strip hald nutexb cli_numbers)
+all=(cube strip hald nutexb cli_numbers ocio image_apply patch)
 targets=()
 for f in "${all[@]}"; do
   [ -f "$root/tests/fuzz/fuzz_$f.cpp" ] && targets+=("fuzz_$f")

@@ -18,7 +18,8 @@
 namespace lut::cli {
 
 int runEmbed(const EmbedOptions& o) {
-    checkNotSameFile(o.input, o.output); // keep the clean screenshot: fit and tests need it
+    // Keep the clean screenshot: fit and tests need it.
+    checkNotOverwritingInputs(o.output, {o.input});
     auto loaded = formats::readImage(o.input);
     lut::EmbedOptions eo;
     eo.lattice = o.lattice.empty() ? PatchLattice::Smash : parseLattice(o.lattice);

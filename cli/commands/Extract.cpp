@@ -20,7 +20,8 @@
 namespace lut::cli {
 
 int runExtract(const ExtractOptions& o) {
-    checkNotSameFile(o.input, o.output); // never overwrite an input (issue 7)
+    // Never write over an input: the edited screenshot or the original LUT (issue 17).
+    checkNotOverwritingInputs(o.output, {o.input, o.originalLut});
     auto loaded = formats::readImage(o.input);
     lut::ExtractOptions eo;
     eo.target = parseTarget(o.target);

@@ -18,8 +18,7 @@
 namespace lut::cli {
 
 int runFit(const FitOptions& o) {
-    checkNotSameFile(o.before, o.output); // never overwrite an input (issue 7)
-    checkNotSameFile(o.after, o.output);
+    checkNotOverwritingInputs(o.output, {o.before, o.after}); // never write over an input
     auto before = formats::readImage(o.before);
     auto after = formats::readImage(o.after);
     lut::FitOptions fo;

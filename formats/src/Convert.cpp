@@ -68,7 +68,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     if (wantSize != 0 && (wantSize < limits::kMin3DSize || wantSize > limits::kMax3DSize))
         throw Error("output size " + std::to_string(wantSize) + " is outside " +
                     std::to_string(limits::kMin3DSize) + ".." + std::to_string(limits::kMax3DSize));
-    checkNotSameFile(input, output);
+    checkNotOverwritingInputs(output, {input});
 
     registerBuiltinFormats();
     if (!options.inFormat.empty())

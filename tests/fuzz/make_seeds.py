@@ -105,3 +105,89 @@ for i, args in enumerate([["convert", "a.cube", "b.nutexb", "--size", "16", "--i
                           ["bench", "--width", "8", "--height", "1", "--reps", "1", "--sizes", "2", "3"],
                           ["preview", "in.png", "out.png", "--frame", "-1", "--bit-depth", "16"]]):
     put("cli_numbers", f"args-{i}", "\0".join(args))
+
+# --- ocio, image_apply, patch (issue 17) --------------------------------------------------------
+# ocio: byte 0 = extension index (OcioFuzzTarget.h), byte 1 = lattice size (0: the file's own).
+OCIO_EXTS = [".3dl", ".cc", ".ccc", ".cdl", ".clf", ".ctf", ".csp", ".lut", ".icc", ".pf",
+             ".itx", ".look", ".mga", ".m3d", ".spi1d", ".spi3d", ".spimtx", ".cub", ".vf"]
+
+
+def ocio_seed(name, ext, text, size=0):
+    data = text if isinstance(text, bytes) else text.encode()
+    put("ocio", name, bytes([OCIO_EXTS.index(ext), size]) + data)
+
+
+data_dir = os.path.join(here, "..", "data", "ocio")
+for f in sorted(os.listdir(data_dir)):
+    with open(os.path.join(data_dir, f), "rb") as fh:
+        ocio_seed("data-" + f.replace(".", "-"), os.path.splitext(f)[1], fh.read())
+ocio_seed("cdl-cc", ".cc", '<ColorCorrection id="a"><SOPNode><Slope>1.1 1 0.9</Slope>'
+          "<Offset>0.01 0 -0.01</Offset><Power>1 1.2 1</Power></SOPNode>"
+          "<SatNode><Saturation>0.8</Saturation></SatNode></ColorCorrection>\n")
+ocio_seed("cdl-ccc", ".ccc", '<ColorCorrectionCollection><ColorCorrection id="a"><SOPNode>'
+          "<Slope>1 1 1</Slope><Offset>0 0 0</Offset><Power>2 2 2</Power></SOPNode>"
+          "</ColorCorrection></ColorCorrectionCollection>\n", 5)
+ocio_seed("cdl-cdl", ".cdl", '<ColorDecisionList><ColorDecision><ColorCorrection id="b"><SOPNode>'
+          "<Slope>0.5 1 1</Slope><Offset>0 0 0</Offset><Power>1 1 1</Power></SOPNode>"
+          "</ColorCorrection></ColorDecision></ColorDecisionList>\n")
+ocio_seed("matrix-spimtx", ".spimtx", "0.5 0.2 0.1 0\n0.1 0.8 0.1 0\n0 0.1 0.9 0.01\n", 3)
+ocio_seed("discreet-1d-lut", ".lut", "LUT: 3 4\n" + "".join(f"{v}\n" for v in [0, 300, 700, 1023] * 3))
+ocio_seed("iridas-itx", ".itx", "LUT_3D_SIZE 2\n" + neutral_rows(2))
+ocio_seed("iridas-look", ".look", '<?xml version="1.0" ?><look><LUT><size>"2"</size><data>"'
+          + "0000000000000000000000000000803f" * 0 + '"</data></LUT></look>\n')
+ocio_seed("pandora-mga", ".mga", "channels: 3\nin: 8\nout: 256\nformat: lut\nvalues: red green blue\n"
+          + "".join(f"{i} {r * 255} {g * 255} {b * 255}\n" for i, (b, g, r) in enumerate(
+              [(b, g, r) for b in (0, 1) for g in (0, 1) for r in (0, 1)])))
+ocio_seed("nuke-vf", ".vf", "#Inventor V2.1 ascii\ngrid_size 2 2 2\ndata\n" + neutral_rows(2))
+ocio_seed("clf-1d-clf", ".clf", '<?xml version="1.0"?><ProcessList id="x" compCLFversion="3">'
+          '<LUT1D inBitDepth="32f" outBitDepth="32f"><Array dim="3 1">0 0.5 1</Array></LUT1D>'
+          "</ProcessList>\n")
+ocio_seed("ctf-matrix-ctf", ".ctf", '<?xml version="1.0"?><ProcessList id="y" version="2">'
+          '<Matrix inBitDepth="32f" outBitDepth="32f"><Array dim="3 3">1 0 0 0 1 0 0 0 2</Array>'
+          "</Matrix></ProcessList>\n")
+ocio_seed("csp-1d-csp", ".csp", "CSPLUTV100\n1D\n\n2\n0 1\n0 1\n2\n0 1\n0 1\n2\n0 1\n0 1\n\n"
+          "3\n0 0.5 1\n0 0.25 1\n0 0.75 1\n")
+ocio_seed("truelight-cub", ".cub", "# Truelight Cube v2.0\n# lutLength 2\n# iDims 3\n# oDims 3\n"
+          "# width 2 2 2\n\n# Cube\n" + neutral_rows(2) + "# end\n")
+ocio_seed("huge-size-3dl", ".3dl", "0 1023\n" + "0 0 0\n" * 7 + "4095 4095 4095\n")
+
+# image_apply: byte 0 = extension index (ImageFuzzTarget.h), then a small real file.
+# patch: byte 0 even -> byte 1 extension index, then a file; odd -> synthetic (PatchFuzzTarget.h).
+IMAGE_EXTS = [".png", ".jpg", ".tif", ".exr", ".bmp", ".tga", ".hdr", ".webp", ".dpx", ".gif", ".psd"]
+PATCH_EXTS = [".png", ".tif", ".bmp", ".tga", ".jpg", ".exr"]
+put("patch", "synthetic-smash", bytes([1, 0, 0, 128, 0]))
+put("patch", "synthetic-uniform-4", bytes([1, 20, 10, 60, 0b00000101]))
+put("patch", "synthetic-mutated", bytes([1, 3, 5, 200, 0b00010011, 40, 40, 0, 0, 10, 20, 1, 200,
+                                          90, 30, 2, 77, 100, 100, 3, 31]))
+put("patch", "synthetic-no-margin", bytes([1, 63, 47, 0, 0b10100000]))
+
+import shutil
+import subprocess
+import sys
+import tempfile
+
+oiiotool = shutil.which("oiiotool")
+lutkit = sys.argv[1] if len(sys.argv) > 1 else None  # make_seeds.py [path/to/lutkit]
+if oiiotool:
+    with tempfile.TemporaryDirectory() as tmp:
+        for i, ext in enumerate(IMAGE_EXTS):
+            if ext == ".psd":
+                continue  # OpenImageIO reads PSD, it does not write it
+            out = os.path.join(tmp, "s" + ext)
+            fmt = ["-d", "half"] if ext in (".exr", ".hdr") else ["-d", "uint8"]
+            subprocess.run([oiiotool, "--pattern", "fill:topleft=0,0,0:topright=1,0,0:"
+                            "bottomleft=0,1,0:bottomright=0,0,1", "8x6", "4" if ext in
+                            (".png", ".tif", ".exr", ".tga") else "3", *fmt, "-o", out], check=True)
+            with open(out, "rb") as fh:
+                put("image_apply", "small" + ext.replace(".", "-"), bytes([i]) + fh.read())
+        if lutkit:
+            shot = os.path.join(tmp, "shot.png")
+            subprocess.run([oiiotool, "--pattern", "constant:color=0.3,0.4,0.5", "320x48", "3",
+                            "-d", "uint8", "-o", shot], check=True)
+            for ext in (".png", ".tif", ".bmp"):
+                out = os.path.join(tmp, "emb" + ext)
+                subprocess.run([lutkit, "embed", shot, out, "--margin", "4"], check=True,
+                               stdout=subprocess.DEVNULL)
+                with open(out, "rb") as fh:
+                    put("patch", "embedded" + ext.replace(".", "-"),
+                        bytes([0, PATCH_EXTS.index(ext)]) + fh.read())

@@ -4,6 +4,9 @@
 // name starts with "reject-" must be refused.
 #include "../fuzz/CliTarget.h"
 #include "../fuzz/FuzzTargets.h"
+#include "../fuzz/ImageFuzzTarget.h"
+#include "../fuzz/OcioFuzzTarget.h"
+#include "../fuzz/PatchFuzzTarget.h"
 #include "TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -29,9 +32,14 @@ Outcome runCli(const std::uint8_t* data, std::size_t size) {
 
 const std::map<std::string, Target>& targets() {
     static const std::map<std::string, Target> t = {
-        {"cube", lut::fuzz::runCube}, {"strip", lut::fuzz::runStrip},
-        {"hald", lut::fuzz::runHald}, {"nutexb", lut::fuzz::runNutexb},
+        {"cube", lut::fuzz::runCube},
+        {"strip", lut::fuzz::runStrip},
+        {"hald", lut::fuzz::runHald},
+        {"nutexb", lut::fuzz::runNutexb},
         {"cli_numbers", runCli},
+        {"ocio", lut::fuzz::runOcio},
+        {"image_apply", lut::fuzz::runImageApply},
+        {"patch", lut::fuzz::runPatch},
     };
     return t;
 }
@@ -65,7 +73,8 @@ TEST_P(FuzzRegress, EveryInputIsReadOrRefusedWithLutError) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, FuzzRegress,
-                         ::testing::Values("cube", "strip", "hald", "nutexb", "cli_numbers"),
+                         ::testing::Values("cube", "strip", "hald", "nutexb", "cli_numbers", "ocio",
+                                           "image_apply", "patch"),
                          [](const auto& info) { return info.param; });
 
 // The corpus is not allowed to rot silently: every fuzzer folder in it is one we replay.

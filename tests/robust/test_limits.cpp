@@ -146,4 +146,26 @@ TEST(Limits, ImageHeaderClaimingFourGigapixelsIsALimitError) {
     }
 }
 
+// Found by fuzz_image_apply: a 330-byte OpenEXR file whose "Software" attribute claims 1.7 GB made
+// OpenEXR (inside OpenImageIO's open, before any size check of ours) take 1.8 GB of memory and
+// 3 s. The header's declared sizes are now checked against the file first. The file is built here
+// field by field from the OpenEXR layout: magic, version 2, attributes "name\0type\0" + size.
+TEST(Limits, OpenExrAttributeClaimingMoreThanTheFileIsRefusedBeforeOpening) {
+    const std::string dir = lut::test::tempDir();
+    auto le = [](std::uint32_t v) {
+        return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)};
+    };
+    const std::string exr =
+        std::string("\x76\x2f\x31\x01", 4) + le(2) + std::string("comments\0string\0", 16) + le(4) +
+        "abcd" + std::string("Software\0string\0", 16) + le(1735289202) + std::string(100, 'x');
+    writeBytes(dir + "/claims.exr", exr);
+    const auto r =
+        lut::test::runCli("apply --lut '" + lut::test::dataPath("cube/adobe_3d_domain.cube") +
+                          "' '" + dir + "/claims.exr' '" + dir + "/out.exr'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(stripDir(r.err, dir),
+              "lutkit: error: claims.exr: OpenEXR header attribute 'Software' declares 1735289202 "
+              "bytes, but only 100 bytes follow in the file (truncated or corrupt)\n");
+}
+
 } // namespace

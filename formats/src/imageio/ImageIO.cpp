@@ -7,10 +7,13 @@
 #include "lut/Limits.h"
 #include "lut/Quantize.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace lut::formats {
@@ -129,6 +132,51 @@ static float bayer(int x, int y) {
     return (static_cast<float>(m[y & 3][x & 3]) + 0.5f) / 16.0f - 0.5f;
 }
 
+// Reads the file just written back (issue 17: OpenImageIO's PNG, BMP, TGA, WebP and GIF writers do
+// not report a full disk, and TIFF's leaves a file that reads without error): the header must
+// match, every pixel must decode, and a lossless format must give back exactly the samples handed
+// over. Throws with OpenImageIO's words; AtomicFile shows them with the output's path.
+static void verifyWritten(const std::string& temp, const OIIO::ImageSpec& spec, const void* pixels,
+                          std::size_t bytes) {
+    // A PNG ends with its IEND chunk: a truncated one is refused here, before libpng prints its
+    // own "libpng error:" line about it.
+    if (extensionOf(temp) == ".png") {
+        static const unsigned char kIend[12] = {0,   0,   0,    0,    'I',  'E',
+                                                'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+        unsigned char tail[12] = {};
+        std::FILE* f = std::fopen(temp.c_str(), "rb");
+        const bool ok = f && std::fseek(f, -12, SEEK_END) == 0 &&
+                        std::fread(tail, 1, 12, f) == 12 && std::memcmp(tail, kIend, 12) == 0;
+        if (f)
+            std::fclose(f);
+        if (!ok)
+            throw Error("the file read back ends before its IEND chunk (truncated)");
+    }
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(temp, &config);
+    if (!in) {
+        const std::string err = OIIO::geterror();
+        throw Error(err.empty() ? "the file read back is not a readable image" : err);
+    }
+    const OIIO::ImageSpec& got = in->spec();
+    if (got.width != spec.width || got.height != spec.height || got.nchannels != spec.nchannels)
+        throw Error("the file read back is " + std::to_string(got.width) + "x" +
+                    std::to_string(got.height) + " with " + std::to_string(got.nchannels) +
+                    " channels, not the image written");
+    std::vector<unsigned char> back(bytes);
+    if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, back.data())) {
+        const std::string err = in->geterror();
+        throw Error(err.empty() ? "the file read back is truncated or corrupt" : err);
+    }
+    const std::string name = in->format_name();
+    in->close();
+    static const char* const kLossless[] = {"png", "tiff", "bmp", "targa", "dpx", "openexr"};
+    for (const char* f : kLossless)
+        if (name == f && std::memcmp(back.data(), pixels, bytes) != 0)
+            throw Error("the file read back differs from the image written (truncated?)");
+}
+
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
     if (image.empty())
         throw Error(path + ": cannot write an empty image");
@@ -136,8 +184,7 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
     if (bits != 8 && bits != 16 && bits != 32)
         throw Error(path + ": unsupported bit depth " + std::to_string(bits) +
                     " (expected 8, 16 or 32)");
-    AtomicFile file(path);
-    auto out = OIIO::ImageOutput::create(file.tempPath());
+    auto out = OIIO::ImageOutput::create(path);
     if (!out)
         throw Error(path + ": no image writer for this extension: " + OIIO::geterror());
     const int nch = options.alpha ? 4 : 3;
@@ -152,10 +199,12 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
     spec.attribute("oiio:UnassociatedAlpha", 1);
     if (bits == 16 && std::string(out->format_name()) == "jpeg")
         throw Error(path + ": JPEG stores 8 bits per channel only");
+    // Verified write: the temporary file is checked (verifyWritten) before it replaces path, and
+    // every failure names path with the reason (lut/io/AtomicFile.h).
+    AtomicFile file(path);
     if (!out->open(file.tempPath(), spec))
-        throw Error(path + ": cannot write image: " + out->geterror());
+        file.fail(out->geterror());
     const std::size_t n = static_cast<std::size_t>(image.width()) * image.height();
-    bool ok = false;
     const float* src = image.data();
     const float step = bits == 8 ? 1.0f / 255.0f : 1.0f / 65535.0f;
     auto dith = [&](std::size_t i) {
@@ -165,35 +214,43 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
         const int y = static_cast<int>(i / static_cast<std::size_t>(image.width()));
         return bayer(x, y) * step;
     };
+    std::vector<std::uint8_t> buf8;
+    std::vector<std::uint16_t> buf16;
+    std::vector<float> buf32;
+    const void* pixels = nullptr;
+    std::size_t bytes = 0;
     if (bits == 8) {
-        std::vector<std::uint8_t> buf(n * nch);
+        buf8.resize(n * nch);
         for (std::size_t i = 0; i < n; ++i) {
             const float d = dith(i);
             for (int c = 0; c < nch; ++c)
-                buf[i * nch + c] = toUnorm8(src[4 * i + c] + (c < 3 ? d : 0.0f));
+                buf8[i * nch + c] = toUnorm8(src[4 * i + c] + (c < 3 ? d : 0.0f));
         }
-        ok = out->write_image(type, buf.data());
+        pixels = buf8.data();
+        bytes = buf8.size();
     } else if (bits == 16) {
-        std::vector<std::uint16_t> buf(n * nch);
+        buf16.resize(n * nch);
         for (std::size_t i = 0; i < n; ++i) {
             const float d = dith(i);
             for (int c = 0; c < nch; ++c)
-                buf[i * nch + c] = toUnorm16(src[4 * i + c] + (c < 3 ? d : 0.0f));
+                buf16[i * nch + c] = toUnorm16(src[4 * i + c] + (c < 3 ? d : 0.0f));
         }
-        ok = out->write_image(type, buf.data());
+        pixels = buf16.data();
+        bytes = buf16.size() * sizeof(std::uint16_t);
     } else {
-        std::vector<float> buf(n * nch);
+        buf32.resize(n * nch);
         for (std::size_t i = 0; i < n; ++i)
             for (int c = 0; c < nch; ++c)
-                buf[i * nch + c] = src[4 * i + c];
-        ok = out->write_image(type, buf.data());
+                buf32[i * nch + c] = src[4 * i + c];
+        pixels = buf32.data();
+        bytes = buf32.size() * sizeof(float);
     }
-    if (!ok)
-        throw Error(path + ": cannot write image: " + out->geterror());
+    if (!out->write_image(type, pixels))
+        file.fail(out->geterror());
     if (!out->close())
-        throw Error(path + ": cannot write image: " + out->geterror());
+        file.fail(out->geterror());
     out.reset();
-    file.commit();
+    file.commit([&](const std::string& temp) { verifyWritten(temp, spec, pixels, bytes); });
 }
 
 } // namespace lut::formats

@@ -2,9 +2,11 @@
 // load lutkit_imageio.so on first use and forward to it (why: see ImageIOModuleApi.h).
 // The module is looked for in $LUTKIT_IMAGEIO_MODULE (a file), next to the running executable,
 // in ../lib/lutkit/ relative to it, and in the build tree's bin folder.
+#include "imageio/ImageHeaderChecks.h"
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
+#include "lut/io/TempFiles.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -66,6 +68,12 @@ const module::ImageIOApi& api() {
                     (tried.empty() ? "" : ", ") + path + " (not a matching lutkit image module)";
                 continue;
             }
+            // One list of temporary files for the program and the module (an interrupt removes
+            // the module's too).
+            using ShareRegistry = void (*)(void*);
+            if (auto share = reinterpret_cast<ShareRegistry>(
+                    ::dlsym(handle, "lutkit_imageio_use_temp_registry")))
+                share(lut::tempFileRegistry());
             loaded = table; // never dlclose'd: OIIO keeps threads and plugins alive until exit
             return;
         }
@@ -83,6 +91,8 @@ void rethrow(int status, const std::string& error) {
         return;
     case module::kLimitError:
         throw LimitError(error);
+    case module::kInterrupted:
+        throw InterruptedError(error);
     case module::kOutOfMemory:
         throw std::bad_alloc();
     default:
@@ -93,6 +103,7 @@ void rethrow(int status, const std::string& error) {
 } // namespace
 
 LoadedImage readImage(const std::string& path) {
+    checkImageHeader(path); // declared sizes against the file, before a codec believes them
     LoadedImage out;
     std::string error;
     rethrow(api().readImage(path, out, error), error);
@@ -100,6 +111,7 @@ LoadedImage readImage(const std::string& path) {
 }
 
 ImageInfo readImageInfo(const std::string& path) {
+    checkImageHeader(path);
     ImageInfo out;
     std::string error;
     rethrow(api().readImageInfo(path, out, error), error);

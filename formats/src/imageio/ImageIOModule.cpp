@@ -3,6 +3,7 @@
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
+#include "lut/io/TempFiles.h"
 
 #include <new>
 
@@ -13,6 +14,9 @@ template <class Fn> int guarded(std::string& error, Fn&& fn) {
     try {
         fn();
         return kOk;
+    } catch (const InterruptedError& e) {
+        error = e.what();
+        return kInterrupted;
     } catch (const LimitError& e) {
         error = e.what();
         return kLimitError;
@@ -48,4 +52,11 @@ const ImageIOApi kApi = {kImageIOApiVersion, &readImageEntry, &readImageInfoEntr
 extern "C" __attribute__((visibility("default"))) const lut::formats::module::ImageIOApi*
 lutkit_imageio_api() {
     return &lut::formats::module::kApi;
+}
+
+// The module links its own copy of lutlib: its temporary files must be listed in the program's
+// registry so an interrupt removes them too (lut/io/TempFiles.h). Called by the loader once.
+extern "C" __attribute__((visibility("default"))) void
+lutkit_imageio_use_temp_registry(void* registry) {
+    lut::useTempFileRegistry(registry);
 }

@@ -16,7 +16,7 @@ constexpr int kImageIOApiVersion = 1;
 constexpr const char* kImageIOModuleName = "lutkit_imageio.so";
 constexpr const char* kImageIOEntryPoint = "lutkit_imageio_api";
 
-enum Status : int { kOk = 0, kError = 1, kLimitError = 2, kOutOfMemory = 3 };
+enum Status : int { kOk = 0, kError = 1, kLimitError = 2, kOutOfMemory = 3, kInterrupted = 4 };
 
 struct ImageIOApi {
     int version;

@@ -8,6 +8,7 @@
 // a 1D table. The path is checked to be a regular file before OCIO opens it (a FIFO would block
 // it), and any failure inside OCIO becomes one line naming the file and what OCIO was doing.
 #include "Formats.h"
+#include "ocio/OcioInputChecks.h"
 #include "ocio/OcioSession.h"
 
 #include "lut/Error.h"
@@ -144,6 +145,7 @@ public:
                         std::to_string(limits::kMin3DSize) + ".." +
                         std::to_string(limits::kMax3DSize));
 
+        checkOcioInput(path); // what OCIO 2.1 would loop on
         OcioSession session(path);
         LutFile out;
         out.format = name();

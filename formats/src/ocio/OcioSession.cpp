@@ -29,17 +29,32 @@ std::string oneLine(const char* message) {
 std::mutex g_logMutex;
 std::vector<std::string>* g_logSink = nullptr;
 
-void initOcio() {
+} // namespace
+
+void installOcioLogSink() {
     static std::once_flag once;
     std::call_once(once, [] {
+        // Outside a session (OCIO used directly, as lutkit bench does) messages are dropped.
+        // Debug and info lines (OCIO_LOGGING_LEVEL=debug) are OCIO's own tracing, not news
+        // about the file: only warnings and errors become diagnostics, without OCIO's prefix.
         OCIO::SetLoggingFunction([](const char* message) {
+            if (!message)
+                return;
+            std::string line = oneLine(message);
+            for (const char* quiet : {"[OpenColorIO Debug]", "[OpenColorIO Info]"})
+                if (line.rfind(quiet, 0) == 0)
+                    return;
+            for (const char* prefix : {"[OpenColorIO Warning]: ", "[OpenColorIO Error]: "})
+                if (line.rfind(prefix, 0) == 0)
+                    line.erase(0, std::string(prefix).size());
             std::lock_guard lock(g_logMutex);
-            if (g_logSink && message) {
-                g_logSink->push_back(oneLine(message));
-            }
+            if (g_logSink)
+                g_logSink->push_back(std::move(line));
         });
     });
 }
+
+namespace {
 
 // C++ library messages that mean "a size in the file was believed": a reader asked for more
 // than can exist or be allocated.
@@ -87,7 +102,7 @@ std::string ocioFailure(const std::string& path, const std::string& doing, const
 }
 
 OcioSession::OcioSession(const std::string& path) : m_path(path) {
-    initOcio();
+    installOcioLogSink();
     m_lock = std::unique_lock(s_mutex);
     std::lock_guard lock(g_logMutex);
     g_logSink = &m_log;

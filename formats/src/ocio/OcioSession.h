@@ -26,6 +26,9 @@ std::string ocioMessage(const char* what);
 // loading, "PATH: OpenColorIO failed while DOING: ..." later.
 std::string ocioFailure(const std::string& path, const std::string& doing, const char* what);
 
+// Routes OpenColorIO's log to the session in progress (idempotent; see LibraryMessages.h).
+void installOcioLogSink();
+
 // Serialises OCIO use (its caches and our log sink are global) and gathers its log lines.
 class OcioSession {
 public:

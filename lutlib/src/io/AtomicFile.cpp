@@ -3,81 +3,289 @@
 #include "lut/Error.h"
 
 #include <cerrno>
-#include <cstdio>
+#include <climits>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <random>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 
 namespace lut {
 
-static std::string makeTempPath(const std::string& path) {
-    const fs::path p(path);
-    std::random_device rd;
-    const unsigned long tag =
-        (static_cast<unsigned long>(rd()) << 16) ^ static_cast<unsigned long>(::getpid());
-    // Hidden, in the same folder (so rename is atomic), ending in the same extension.
-    return (p.parent_path() /
-            ("." + p.stem().string() + ".tmp" + std::to_string(tag) + p.extension().string()))
-        .string();
+namespace {
+
+std::string folderOf(const std::string& path) {
+    const std::string dir = fs::path(path).parent_path().string();
+    return dir.empty() ? "." : dir;
 }
 
-AtomicFile::AtomicFile(std::string path)
-    : m_path(std::move(path)), m_tempPath(makeTempPath(m_path)) {}
+// The longest file name the output's folder takes (NAME_MAX, 255 on Linux file systems).
+std::size_t nameMax(const std::string& dir) {
+    const long n = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+    return n > 0 ? static_cast<std::size_t>(n) : 255;
+}
+
+std::string randomTag() {
+    static const char kChars[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+    thread_local std::mt19937 rng{std::random_device{}() ^ static_cast<unsigned>(::getpid())};
+    std::string tag(6, 'a');
+    for (char& c : tag)
+        c = kChars[rng() % (sizeof(kChars) - 1)];
+    return tag;
+}
+
+// ".STEM.tmpTAG.EXT" beside the output: hidden, in the same folder (so the rename is atomic),
+// ending in the output's extension (OpenImageIO picks its writer by it). The stem is shortened
+// (at a UTF-8 character boundary) so the name fits the folder's NAME_MAX even when the output's
+// own name is 255 bytes long.
+std::string tempPathFor(const std::string& path, const std::string& tag) {
+    const fs::path p(path);
+    std::string ext = p.extension().string();
+    if (ext.size() > 32)
+        ext.clear(); // not a format's extension; the name must fit
+    std::string stem = p.stem().string();
+    const std::size_t fixed = 1 + 4 + tag.size() + ext.size(); // "." ".tmp" TAG EXT
+    const std::size_t limit = nameMax(folderOf(path));
+    if (stem.size() + fixed > limit) {
+        std::size_t keep = limit > fixed ? limit - fixed : 0;
+        while (keep > 0 && (static_cast<unsigned char>(stem[keep]) & 0xC0) == 0x80)
+            --keep; // never cut a multi-byte character
+        stem.resize(keep);
+    }
+    return (p.parent_path() / ("." + stem + ".tmp" + tag + ext)).string();
+}
+
+std::string errnoText(int err) {
+    return std::strerror(err);
+}
+
+} // namespace
+
+AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
+    throwIfInterrupted(m_path);
+    for (int attempt = 0;; ++attempt) {
+        m_tempPath = tempPathFor(m_path, randomTag());
+        // Registered before it exists, so a signal between the two cannot leave it behind.
+        m_registration = TempPathRegistration(m_tempPath);
+        m_fd = ::open(m_tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (m_fd >= 0)
+            break;
+        const int err = errno;
+        m_registration.release();
+        if (err != EEXIST || attempt == 15) {
+            m_done = true;
+            throw Error(m_path + ": cannot write: " + errnoText(err));
+        }
+    }
+    if (interrupted()) {
+        removeTemp();
+        throw InterruptedError(m_path + ": interrupted");
+    }
+}
 
 AtomicFile::~AtomicFile() {
-    if (!m_committed)
-        std::remove(m_tempPath.c_str());
+    if (!m_done)
+        removeTemp();
 }
 
-void AtomicFile::commit() {
-    if (std::rename(m_tempPath.c_str(), m_path.c_str()) != 0) {
-        const int err = errno;
-        std::remove(m_tempPath.c_str());
-        m_committed = true;
-        throw Error(m_path + ": cannot write: " + std::strerror(err));
-    }
-    m_committed = true;
+void AtomicFile::removeTemp() noexcept {
+    if (m_fd >= 0)
+        ::close(m_fd);
+    m_fd = -1;
+    ::unlink(m_tempPath.c_str());
+    m_registration.release();
+    m_done = true;
 }
 
-void writeFileAtomically(const std::string& path, std::string_view bytes) {
-    AtomicFile file(path);
-    const int fd = ::open(file.tempPath().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+std::string AtomicFile::userFacing(std::string text) const {
+    // Messages name the output, never the hidden temporary file (full path, then bare name).
+    const std::string tempName = fs::path(m_tempPath).filename().string();
+    const std::string name = fs::path(m_path).filename().string();
+    for (std::size_t at; (at = text.find(m_tempPath)) != std::string::npos;)
+        text.replace(at, m_tempPath.size(), m_path);
+    for (std::size_t at; (at = text.find(tempName)) != std::string::npos;)
+        text.replace(at, tempName.size(), name);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+    for (char& c : text)
+        if (c == '\n')
+            c = ' '; // one line
+    return text;
+}
+
+// What writing to the temporary file reports now: a writer that lost ENOSPC or EDQUOT inside
+// its own buffering shows it again here. At most 256 KiB are written, on failure paths only.
+std::string AtomicFile::probeWriteError() const {
+    const int fd = ::open(m_tempPath.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd < 0)
-        throw Error(path + ": cannot write: " + std::strerror(errno));
+        return errno == ENOENT ? std::string() : errnoText(errno);
+    static const std::vector<char> zeros(std::size_t(64) << 10, '\0');
+    int err = 0;
+    for (int i = 0; i < 4 && err == 0; ++i) {
+        const ssize_t n = ::write(fd, zeros.data(), zeros.size());
+        if (n < 0 && errno != EINTR)
+            err = errno;
+    }
+    if (err == 0 && ::fsync(fd) != 0)
+        err = errno;
+    ::close(fd);
+    return err ? errnoText(err) : std::string();
+}
+
+void AtomicFile::fail(const std::string& writerMessage) {
+    if (interrupted()) {
+        removeTemp();
+        throw InterruptedError(m_path + ": interrupted");
+    }
+    std::string reason = m_done ? std::string() : probeWriteError();
+    if (reason.empty())
+        reason = userFacing(writerMessage);
+    if (reason.empty())
+        reason = "unknown error";
+    removeTemp();
+    throw Error(m_path + ": cannot write: " + reason);
+}
+
+void AtomicFile::write(std::string_view bytes) {
+    if (m_fd < 0)
+        throw Error(m_path + ": cannot write: the file is already closed");
     std::size_t done = 0;
     while (done < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        const ssize_t n = ::write(m_fd, bytes.data() + done, bytes.size() - done);
         if (n < 0) {
             if (errno == EINTR)
                 continue;
             const int err = errno;
-            ::close(fd);
-            throw Error(path + ": cannot write: " + std::strerror(err));
+            removeTemp();
+            if (interrupted())
+                throw InterruptedError(m_path + ": interrupted");
+            throw Error(m_path + ": cannot write: " + errnoText(err));
         }
         done += static_cast<std::size_t>(n);
     }
-    if (::close(fd) != 0)
-        throw Error(path + ": cannot write: " + std::strerror(errno));
-    file.commit();
 }
 
-void checkNotSameFile(const std::string& input, const std::string& output) {
-    std::error_code ec;
-    if (!fs::exists(output, ec)) {
-        // Not existing yet: only the same path spelled differently can match.
-        if (fs::weakly_canonical(input, ec) == fs::weakly_canonical(output, ec))
-            throw Error(output + ": output is the same file as input " + input +
-                        "; refusing to overwrite it");
-        return;
+void AtomicFile::commit() {
+    commit(Checks{});
+}
+
+void AtomicFile::commit(const Verifier& verify) {
+    commit(Checks{std::nullopt, verify});
+}
+
+void AtomicFile::commit(const Checks& checks) {
+    if (m_done)
+        throw Error(m_path + ": cannot write: the file was already committed or abandoned");
+    auto failErrno = [&](int err) {
+        removeTemp();
+        if (interrupted())
+            throw InterruptedError(m_path + ": interrupted");
+        throw Error(m_path + ": cannot write: " + errnoText(err));
+    };
+    throwIfInterrupted(m_path);
+    // 1. Our descriptor: a close error is a write error on some file systems (NFS).
+    if (m_fd >= 0) {
+        const int rc = ::close(m_fd);
+        m_fd = -1;
+        if (rc != 0)
+            failErrno(errno);
     }
-    if (fs::equivalent(input, output, ec) && !ec)
-        throw Error(output + ": output is the same file as input " + input +
-                    " (same path or a link to it); refusing to overwrite it");
+    // 2. The file as written: regular, not empty, of the size promised, accepted by the verifier.
+    const int fd = ::open(m_tempPath.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        failErrno(errno);
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) {
+        const int err = errno;
+        ::close(fd);
+        failErrno(err);
+    }
+    const auto size = static_cast<std::uint64_t>(st.st_size);
+    std::string problem;
+    if (!S_ISREG(st.st_mode))
+        problem = "the written file is not a regular file";
+    else if (checks.size && size != *checks.size)
+        problem = "only " + std::to_string(size) + " of " + std::to_string(*checks.size) +
+                  " bytes reached the file";
+    else if (!checks.size && size == 0)
+        problem = "the writer left an empty file";
+    if (!problem.empty()) {
+        ::close(fd);
+        fail(problem);
+    }
+    if (checks.verify) {
+        try {
+            checks.verify(m_tempPath);
+        } catch (const std::exception& e) {
+            ::close(fd);
+            fail(e.what());
+        }
+    }
+    // 3. Durable before it replaces anything.
+    if (::fsync(fd) != 0) {
+        const int err = errno;
+        ::close(fd);
+        failErrno(err);
+    }
+    ::close(fd);
+    // Keep the permissions of the file being replaced (a read-only or group-writable output).
+    struct stat old {};
+    if (::stat(m_path.c_str(), &old) == 0 && S_ISREG(old.st_mode))
+        ::chmod(m_tempPath.c_str(), old.st_mode & 07777);
+    throwIfInterrupted(m_path);
+    if (::rename(m_tempPath.c_str(), m_path.c_str()) != 0)
+        failErrno(errno);
+    m_registration.release();
+    m_done = true;
+    // The rename itself durable: sync the folder (file systems that cannot are fine).
+    const int dir = ::open(folderOf(m_path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir >= 0) {
+        const int rc = ::fsync(dir);
+        const int err = errno;
+        ::close(dir);
+        if (rc != 0 && err != EINVAL && err != EROFS && err != ENOTSUP)
+            throw Error(m_path +
+                        ": written, but its folder could not be synced: " + errnoText(err));
+    }
+}
+
+void writeFileAtomically(const std::string& path, std::string_view bytes) {
+    AtomicFile file(path);
+    file.write(bytes);
+    // Read back and compared: what is on the disk is what was handed over.
+    file.commit({bytes.size(), [&](const std::string& temp) {
+                     const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+                     if (fd < 0)
+                         throw Error(errnoText(errno));
+                     std::vector<char> buf(std::min<std::size_t>(bytes.size() + 1, 1 << 20));
+                     std::size_t at = 0;
+                     for (;;) {
+                         const ssize_t n = ::read(fd, buf.data(), buf.size());
+                         if (n < 0 && errno == EINTR)
+                             continue;
+                         if (n < 0) {
+                             const int err = errno;
+                             ::close(fd);
+                             throw Error(errnoText(err));
+                         }
+                         if (n == 0)
+                             break;
+                         const auto got = static_cast<std::size_t>(n);
+                         if (at + got > bytes.size() ||
+                             std::memcmp(buf.data(), bytes.data() + at, got) != 0) {
+                             ::close(fd);
+                             throw Error("the file read back differs from the bytes written");
+                         }
+                         at += got;
+                     }
+                     ::close(fd);
+                     if (at != bytes.size())
+                         throw Error("the file read back is shorter than the bytes written");
+                 }});
 }
 
 } // namespace lut

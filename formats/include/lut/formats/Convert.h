@@ -5,7 +5,8 @@
 //    asked for): lut::resampleWithError on a probe grid;
 //  - storage (integer quantisation, clipping, a dropped domain or shaper): the written file is
 //    read back and compared with the table that was handed to the writer.
-// The input is never written over (lut::checkNotSameFile); the output is written atomically.
+// The input is never written over (lut::checkNotOverwritingInputs); the output is written
+// atomically and verified (lut/io/AtomicFile.h).
 #include "lut/ErrorStats.h"
 #include "lut/LutFile.h"
 #include "lut/interp/Interpolation.h"

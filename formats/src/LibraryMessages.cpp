@@ -1,0 +1,11 @@
+#include "lut/formats/LibraryMessages.h"
+
+#include "ocio/OcioSession.h"
+
+namespace lut::formats {
+
+void captureLibraryMessages() {
+    installOcioLogSink();
+}
+
+} // namespace lut::formats

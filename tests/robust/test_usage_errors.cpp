@@ -1,0 +1,87 @@
+// Usage errors exit 2 everywhere (issue 17: `--layout bogus` exited 1 while `--format bogus`
+// exited 2). For every subcommand of the real lutkit and every option that takes a word or a
+// number: an unknown word exits 2 and names it; the files given are real, so a value that got
+// past the parser reaches the command itself (values checked there must say "bad usage" too).
+// The option list is read from the command line's own tables: a new option is covered.
+#include "RobustSupport.h"
+
+#include "CommandLine.h"
+#include "OptionTable.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+using namespace lut::robust;
+using lut::test::runCli;
+using ::testing::HasSubstr;
+
+namespace {
+
+void writePng(const std::string& path, int w, int h) {
+    auto out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out);
+    std::vector<unsigned char> px(static_cast<std::size_t>(w) * h * 3, 128);
+    ASSERT_TRUE(out->open(path, OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+    out->close();
+}
+
+TEST(UsageErrors, AnUnknownValueExitsTwoInEveryCommand) {
+    const std::string dir = lut::test::tempDir();
+    writeBytes(dir + "/a.cube", neutralCube(2));
+    writePng(dir + "/img.png", 400, 300);
+    ASSERT_EQ(runCli("embed '" + dir + "/img.png' '" + dir + "/e.png'").exitCode, 0);
+    const std::string d = "'" + dir + "/";
+    // A working command line for each subcommand: the bad value is the only fault.
+    const std::map<std::string, std::string> base = {
+        {"neutral", "neutral " + d + "n.cube'"},
+        {"convert", "convert " + d + "a.cube' " + d + "c.cube'"},
+        {"info", "info " + d + "a.cube'"},
+        {"validate", "validate " + d + "a.cube'"},
+        {"apply", "apply --lut " + d + "a.cube' " + d + "img.png' " + d + "o.png'"},
+        {"preview", "preview " + d + "img.png' " + d + "p.png'"},
+        {"embed", "embed " + d + "img.png' " + d + "e2.png'"},
+        {"extract", "extract " + d + "e.png' " + d + "x.cube'"},
+        {"fit", "fit " + d + "img.png' " + d + "img.png' " + d + "f.cube' --size 3"},
+        {"bench", "bench --width 8 --height 1 --reps 1 --sizes 2 --no-ocio"},
+    };
+    // Values that are files, folders or free text are not words from a set.
+    const std::set<std::string> notWords = {"FILE", "DIR", "TEXT", "PATH", "NAME"};
+    lut::cli::CommandLine cl;
+    const auto program = lut::cli::describeProgram(cl.app());
+    int checked = 0;
+    for (const auto& c : program.commands) {
+        if (c.name == "help")
+            continue;
+        ASSERT_TRUE(base.count(c.name)) << "no command line for " << c.name;
+        EXPECT_EQ(runCli(base.at(c.name)).exitCode, 0) << base.at(c.name);
+        for (const auto& o : c.options) {
+            if (o.valueName.empty() || o.hidden || !o.positional.empty() || o.longNames.empty() ||
+                notWords.count(o.valueName))
+                continue;
+            const std::string line = base.at(c.name) + " " + o.longNames.front() + " zzqq";
+            SCOPED_TRACE(line);
+            const auto r = runCli(line);
+            EXPECT_EQ(r.exitCode, 2) << r.err;
+            EXPECT_THAT(r.err, HasSubstr("zzqq"));
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 20);
+    // Values checked by the commands themselves, after parsing.
+    for (const std::string& line :
+         {base.at("preview") + " --stage vignette.strength=zzqq",
+          base.at("preview") + " --stage zzqq.strength=1", base.at("preview") + " --enable zzqq",
+          base.at("convert") + " --in-format zzqq", base.at("info") + " --in-layout zzqq"}) {
+        SCOPED_TRACE(line);
+        const auto r = runCli(line);
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_THAT(r.err, HasSubstr("zzqq"));
+    }
+}
+
+} // namespace
