@@ -166,12 +166,13 @@ public:
         meta->format = "openexr";
         meta->exrHeader = std::make_shared<Imf::Header>(h);
         m_metadata = meta;
+        m_granularity = std::max(1, static_cast<int>(linesPerBlock(h.compression())));
         if (const int t = threadsFor(h.compression()); t > 0) {
-            // Reopened with decoding threads for compressed data.
+            // Reopened with decoding threads for compressed data (h dies with the first file).
+            m_file.reset();
             m_in.seek(0);
             m_file = std::make_unique<Imf::InputFile>(m_stream, t);
         }
-        m_granularity = std::max(1, static_cast<int>(linesPerBlock(h.compression())));
     }
 
     int rowGranularity() const override { return m_granularity; }

@@ -138,19 +138,6 @@ void scatter(const float* __restrict v, std::size_t n, T* d, int nch, const Rgba
 
 } // namespace
 
-int bytesPerSample(PixelType t) {
-    switch (t) {
-    case PixelType::UInt8:
-        return 1;
-    case PixelType::UInt16:
-    case PixelType::Half:
-        return 2;
-    case PixelType::Float:
-        return 4;
-    }
-    return 4;
-}
-
 const char* toString(PixelType t) {
     switch (t) {
     case PixelType::UInt8:

@@ -118,8 +118,7 @@ public:
         png_read_update_info(m_png, m_pngInfo);
         const int ch = png_get_channels(m_png, m_pngInfo);
         checkImageSize(path, static_cast<int>(std::min<png_uint_32>(w, 1u << 30)),
-                       static_cast<int>(std::min<png_uint_32>(h, 1u << 30)), ch, m_in.size(),
-                       1032.0);
+                       static_cast<int>(std::min<png_uint_32>(h, 1u << 30)), ch);
         m_info.width = static_cast<int>(w);
         m_info.height = static_cast<int>(h);
         m_info.channels = ch;
@@ -139,7 +138,14 @@ public:
     ~PngSource() override { png_destroy_read_struct(&m_png, &m_pngInfo, nullptr); }
 
     void readRows(int y0, int y1, void* dst) override {
+        if (y0 == 0) // before decoding: more pixels than the deflated data can hold is refused
+            checkImageSize(m_in.path(), m_info.width, m_info.height, m_info.channels, m_in.size(),
+                           1032.0);
         const std::size_t rb = rowBytes(m_info);
+        readRowsAt(y0, y1, static_cast<png_bytep>(dst), rb);
+    }
+
+    void readRowsAt(int y0, int y1, png_bytep out, std::size_t rb) {
         if (m_passes > 1) { // interlaced: the whole image once, then rows from it
             if (m_frame.empty()) {
                 m_frame.resize(rb * static_cast<std::size_t>(m_info.height));
@@ -151,15 +157,16 @@ public:
                     fail();
                 png_read_image(m_png, rows.data());
             }
-            std::memcpy(dst, m_frame.data() + rb * static_cast<std::size_t>(y0),
+            std::memcpy(out, m_frame.data() + rb * static_cast<std::size_t>(y0),
                         rb * static_cast<std::size_t>(y1 - y0));
             return;
         }
-        auto* out = static_cast<png_bytep>(dst);
+        m_next = out;
+        m_rowBytes = rb;
         if (setjmp(png_jmpbuf(m_png)))
             fail();
-        for (int y = y0; y < y1; ++y)
-            png_read_row(m_png, out + rb * static_cast<std::size_t>(y - y0), nullptr);
+        for (int y = y0; y < y1; ++y, m_next += m_rowBytes)
+            png_read_row(m_png, m_next, nullptr);
     }
 
     void finish() override {
@@ -232,6 +239,8 @@ private:
     png_infop m_pngInfo = nullptr;
     PngError m_error;
     int m_passes = 1;
+    png_bytep m_next = nullptr; // members, not locals: longjmp may clobber locals
+    std::size_t m_rowBytes = 0;
     std::vector<unsigned char> m_frame;
     std::shared_ptr<ImageMetadata> m_meta;
 };

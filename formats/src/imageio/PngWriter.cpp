@@ -61,11 +61,6 @@ Strip deflateStrip(const std::vector<unsigned char>& data, const std::vector<uns
     return s;
 }
 
-int paeth(int a, int b, int c) {
-    const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-}
-
 class PngSink : public ImageSink {
 public:
     PngSink(const OutputTarget& target, const SinkSpec& spec) : m_out(target, false), m_spec(spec) {
@@ -195,54 +190,57 @@ private:
         return false;
     }
 
-    // Appends filter byte + filtered row (the filter with the smallest sum of |signed bytes|).
+    // Appends filter byte + filtered row (the filter with the smallest sum of |signed bytes|, as
+    // libpng chooses by default). Each filter is its own loop over the raw rows, so it vectorizes.
     void filterRow(const unsigned char* cur) {
         const std::size_t n = m_rowBytes;
         const std::size_t bpp = static_cast<std::size_t>(m_channels * m_bytesPerSample);
-        const unsigned char* up = m_prev.data();
-        const bool first = m_rowsDone == 0;
-        ++m_rowsDone;
+        const bool first = m_rowsDone++ == 0;
+        const unsigned char* up = first ? m_zero.data() : m_prev.data();
+        if (m_zero.size() < n)
+            m_zero.assign(n, 0), up = first ? m_zero.data() : up;
         m_try.resize(5 * n);
+        unsigned char* t[5];
+        for (int f = 0; f < 5; ++f)
+            t[f] = m_try.data() + static_cast<std::size_t>(f) * n;
+        auto cost = [](const unsigned char* o, std::size_t k) {
+            unsigned long sum = 0;
+            for (std::size_t i = 0; i < k; ++i)
+                sum += o[i] < 128 ? o[i] : 256u - o[i];
+            return sum;
+        };
+        for (std::size_t i = 0; i < bpp && i < n; ++i) { // no left neighbour
+            t[0][i] = cur[i];
+            t[1][i] = cur[i];
+            t[2][i] = static_cast<unsigned char>(cur[i] - up[i]);
+            t[3][i] = static_cast<unsigned char>(cur[i] - (up[i] >> 1));
+            t[4][i] = static_cast<unsigned char>(cur[i] - up[i]); // Paeth(0, b, 0) = b
+        }
+        for (std::size_t i = bpp; i < n; ++i) {
+            t[0][i] = cur[i];
+            t[1][i] = static_cast<unsigned char>(cur[i] - cur[i - bpp]);
+            t[2][i] = static_cast<unsigned char>(cur[i] - up[i]);
+            t[3][i] = static_cast<unsigned char>(cur[i] - ((cur[i - bpp] + up[i]) >> 1));
+        }
+        for (std::size_t i = bpp; i < n; ++i) {
+            const int a = cur[i - bpp], b = up[i], c = up[i - bpp];
+            const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+            const int pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+            t[4][i] = static_cast<unsigned char>(cur[i] - pred);
+        }
         unsigned long best = ~0ul;
         int bestFilter = 0;
         for (int f = 0; f < 5; ++f) {
-            if (first && (f == 2 || f == 4)) // no previous row: Up is None, Paeth is Sub
+            if (first && (f == 2 || f == 4))
                 continue;
-            unsigned char* o = m_try.data() + static_cast<std::size_t>(f) * n;
-            unsigned long sum = 0;
-            for (std::size_t i = 0; i < n; ++i) {
-                const int a = i >= bpp ? cur[i - bpp] : 0;
-                const int b = first ? 0 : up[i];
-                const int c = i >= bpp && !first ? up[i - bpp] : 0;
-                int pred = 0;
-                switch (f) {
-                case 1:
-                    pred = a;
-                    break;
-                case 2:
-                    pred = b;
-                    break;
-                case 3:
-                    pred = (a + b) / 2;
-                    break;
-                case 4:
-                    pred = paeth(a, b, c);
-                    break;
-                default:
-                    break;
-                }
-                const unsigned char v = static_cast<unsigned char>(cur[i] - pred);
-                o[i] = v;
-                sum += v < 128 ? v : 256u - v;
-            }
-            if (sum < best) {
-                best = sum;
+            const unsigned long c = cost(t[f], n);
+            if (c < best) {
+                best = c;
                 bestFilter = f;
             }
         }
         m_strip.push_back(static_cast<unsigned char>(bestFilter));
-        const unsigned char* chosen = m_try.data() + static_cast<std::size_t>(bestFilter) * n;
-        m_strip.insert(m_strip.end(), chosen, chosen + n);
+        m_strip.insert(m_strip.end(), t[bestFilter], t[bestFilter] + n);
     }
 
     void submit(bool last) {
@@ -282,7 +280,7 @@ private:
     SinkSpec m_spec;
     int m_channels = 3, m_bytesPerSample = 1, m_colour = 2, m_level = 6;
     std::size_t m_rowBytes = 0;
-    std::vector<unsigned char> m_prev, m_try, m_strip, m_dict;
+    std::vector<unsigned char> m_prev, m_zero, m_try, m_strip, m_dict;
     std::deque<std::future<Strip>> m_jobs;
     std::uint32_t m_adler = 1;
     bool m_headerDone = false;

@@ -15,7 +15,9 @@ namespace lut::formats {
 // The type of a stored sample. 10- and 12-bit files (DPX) are UInt16 with bitsPerSample 10/12.
 enum class PixelType { UInt8, UInt16, Half, Float };
 const char* toString(PixelType type); // "uint8", "uint16", "half", "float"
-int bytesPerSample(PixelType type);
+inline int bytesPerSample(PixelType type) {
+    return type == PixelType::UInt8 ? 1 : type == PixelType::Float ? 4 : 2;
+}
 
 struct ImageInfo {
     int width = 0;
@@ -51,6 +53,8 @@ LoadedImage readImage(const std::string& path, const std::string& format = {});
 ImageInfo readImageInfo(const std::string& path, const std::string& format = {});
 
 struct ImageWriteOptions {
+    ImageWriteOptions(int bits = 8, bool ditherOn = false, bool withAlpha = true)
+        : bitDepth(bits), dither(ditherOn), alpha(withAlpha) {}
     int bitDepth = 8;    // 8, 16 (rounded to nearest, clamped; half for OpenEXR) or 32 (float)
     bool dither = false; // 8/16-bit: ordered (4x4 Bayer) dither before rounding
     bool alpha = true;   // write the alpha channel (else RGB)
