@@ -232,9 +232,17 @@ OiioSink::OiioSink(const SinkSpec& s, const std::string& name, ByteCallbacks byt
     const std::string fmt = m_out->format_name();
     OIIO::ImageSpec spec(s.width, s.height, static_cast<int>(s.channelNames.size()),
                          typeDescOf(s.type));
-    if (s.metadata && !s.metadata->oiioAttributes.empty())
+    if (s.metadata && !s.metadata->oiioAttributes.empty()) {
         deserialize(s.metadata->oiioAttributes, spec);
-    else if (s.metadata) {
+        // OpenImageIO reads IPTC's Creator, Caption and CopyrightNotice into both the IPTC name
+        // and its synonym, and writes both into the IPTC block: keep one, or they double.
+        for (const auto& [iptc, synonym] :
+             {std::pair<const char*, const char*>{"IPTC:Creator", "Artist"},
+              {"IPTC:Caption", "ImageDescription"},
+              {"IPTC:CopyrightNotice", "Copyright"}})
+            if (spec.get_string_attribute(iptc) == spec.get_string_attribute(synonym))
+                spec.erase_attribute(iptc);
+    } else if (s.metadata) {
         if (!s.metadata->icc.empty())
             spec.attribute(
                 "ICCProfile",
