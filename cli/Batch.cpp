@@ -1,3 +1,4 @@
+// runBatch (Batch.h): files in parallel within a memory budget, a progress bar, a summary.
 #include "Batch.h"
 
 #include "Interrupts.h"
@@ -6,121 +7,216 @@
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
-#include "lut/formats/ImageFiles.h"
-#include "lut/io/AtomicFile.h"
 #include "lut/io/TempFiles.h"
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <mutex>
-#include <set>
 #include <thread>
 #include <unistd.h>
 
 namespace lut::cli {
 
-namespace fs = std::filesystem;
+namespace {
 
-std::vector<BatchJob> planBatch(const std::vector<std::string>& positionals,
-                                const std::string& outputDir, const std::string& outExtension) {
-    std::vector<BatchJob> jobs;
-    if (outputDir.empty()) {
-        if (positionals.size() != 2)
-            throw UsageError(positionals.size() < 2 ? "expected IN OUT (or inputs with -o DIR)"
-                                                    : "several inputs need -o DIR");
-        jobs.push_back({positionals[0], positionals[1]});
-        return jobs;
-    }
-    if (positionals.empty())
-        throw UsageError("no input files");
-    std::set<std::string> names;
-    for (const auto& in : positionals) {
-        std::vector<fs::path> files;
-        std::error_code ec;
-        if (fs::is_directory(in, ec)) {
-            for (const auto& e : fs::directory_iterator(in, ec))
-                if (e.is_regular_file(ec) && formats::isImageExtension(e.path().string()))
-                    files.push_back(e.path());
-            std::sort(files.begin(), files.end());
-        } else {
-            files.push_back(in); // a missing file becomes a failed job, reported at the end
-        }
-        for (const auto& f : files) {
-            fs::path name = f.filename();
-            if (!outExtension.empty())
-                name.replace_extension(outExtension);
-            BatchJob j{f.string(), (fs::path(outputDir) / name).string()};
-            if (!names.insert(j.output).second)
-                j.output.clear(); // collision: reported as a failure
-            jobs.push_back(std::move(j));
-        }
-    }
-    return jobs;
+using Clock = std::chrono::steady_clock;
+
+std::string mib(std::uint64_t bytes) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.0f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    return b;
 }
 
-int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
-             const std::function<std::string(const BatchJob&, int)>& fn) {
+std::string clockText(double seconds) {
+    const long s = static_cast<long>(seconds + 0.5);
+    char b[32];
+    if (s >= 3600)
+        std::snprintf(b, sizeof b, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+    else
+        std::snprintf(b, sizeof b, "%ld:%02ld", s / 60, s % 60);
+    return b;
+}
+
+// The batch's memory budget: jobs wait until what they reserve is free.
+class Budget {
+public:
+    explicit Budget(std::uint64_t total) : m_total(total) {}
+    void take(std::uint64_t bytes) {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_cv.wait(lock, [&] { return m_used == 0 || m_used + bytes <= m_total; });
+        m_used += bytes;
+    }
+    void give(std::uint64_t bytes) {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_used -= bytes;
+        }
+        m_cv.notify_all();
+    }
+    std::uint64_t total() const { return m_total; }
+
+private:
+    std::uint64_t m_total;
+    std::uint64_t m_used = 0;
+    std::mutex m_mutex;
+    std::condition_variable m_cv;
+};
+
+class Context : public JobContext {
+public:
+    Context(Budget& budget, int inner, const std::string& input)
+        : m_budget(budget), m_inner(inner), m_input(input) {}
+    ~Context() override {
+        if (m_held)
+            m_budget.give(m_held);
+    }
+    void reserveMemory(std::uint64_t bytes, const std::string& what) override {
+        if (m_held + bytes > m_budget.total())
+            throw Error(m_input + ": " + what + " needs " + mib(m_held + bytes) +
+                        ", over the memory limit of " + mib(m_budget.total()) + " (--max-memory)");
+        m_budget.take(bytes);
+        m_held += bytes;
+    }
+    int innerThreads() const override { return m_inner; }
+
+private:
+    Budget& m_budget;
+    int m_inner;
+    const std::string& m_input;
+    std::uint64_t m_held = 0;
+};
+
+} // namespace
+
+std::uint64_t defaultMaxMemory() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES);
+    const long size = ::sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || size <= 0)
+        return std::uint64_t(4) << 30;
+    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size) / 2;
+}
+
+std::uint64_t parseMemorySize(const std::string& text) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    std::string unit = text.substr(used);
+    for (auto& c : unit)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (!unit.empty() && unit.back() == 'B')
+        unit.pop_back();
+    if (!unit.empty() && unit.back() == 'I')
+        unit.pop_back();
+    double scale = 1.0;
+    if (unit == "K")
+        scale = 1024.0;
+    else if (unit == "M")
+        scale = 1024.0 * 1024.0;
+    else if (unit == "G")
+        scale = 1024.0 * 1024.0 * 1024.0;
+    else if (unit == "T")
+        scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+    else if (!unit.empty())
+        used = 0;
+    if (used == 0 || !(v > 0.0) || !std::isfinite(v) || v * scale > 1e18)
+        throw Error("bad memory size '" + text + "' (expected a number with K, M, G or T: 4G)");
+    return static_cast<std::uint64_t>(v * scale);
+}
+
+int runBatch(const BatchPlan& plan, const BatchOptions& options,
+             const std::function<std::string(const BatchJob&, JobContext&)>& fn) {
+    const auto& jobs = plan.jobs;
     const int total = static_cast<int>(jobs.size());
-    const int workers = std::max(1, std::min(resolveThreads(threads), total));
-    const int inner = workers == 1 ? threads : 1;
-    const bool bar = !quiet && total > 1 && isatty(STDERR_FILENO);
-    // Ctrl-C: temporary files go at once, jobs in flight stop at their next write, no new job
-    // starts, and what was finished is listed below (Interrupts.h).
-    const CooperativeInterrupts cooperative;
+    for (const auto& n : plan.notes)
+        std::cerr << "lutkit: warning: " << n << "\n";
+    const int workers = std::max(1, std::min(resolveThreads(options.threads), total));
+    const int inner = workers == 1 ? options.threads : 1;
+    const bool bar = !options.quiet && total > 1 && isatty(STDERR_FILENO);
+    Budget budget(options.maxMemory ? options.maxMemory : defaultMaxMemory());
     std::mutex m;
     std::vector<std::string> failures(jobs.size());
     std::vector<char> finished(jobs.size(), 0);
-    std::atomic<int> next{0}, done{0};
-    for (const auto& j : jobs)
-        if (!j.output.empty()) {
-            std::error_code ec;
-            const fs::path dir = fs::path(j.output).parent_path();
-            if (!dir.empty())
-                fs::create_directories(dir, ec);
-        }
-    auto drawBar = [&](int d) {
-        const int width = 30, filled = total ? d * width / total : width;
-        std::fprintf(stderr, "\r[%s%s] %d/%d", std::string(filled, '#').c_str(),
-                     std::string(width - filled, '.').c_str(), d, total);
+    // Ctrl-C: temporary files go at once, jobs in flight stop at their next write, no new job
+    // starts, and what was finished is listed below (Interrupts.h).
+    const CooperativeInterrupts cooperative;
+    std::atomic<int> next{0};
+    int done = 0, skipped = 0, written = 0;
+    std::string current;
+    const auto start = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    auto drawBar = [&] {
+        const int width = 24, filled = total ? done * width / total : width;
+        const double t = elapsed();
+        std::string eta = "--:--";
+        if (done > 0 && done < total)
+            eta = clockText(t / done * (total - done));
+        else if (done == total)
+            eta = "0:00";
+        std::string name = current;
+        if (name.size() > 40)
+            name = "..." + name.substr(name.size() - 37);
+        std::fprintf(stderr, "\r\033[K[%s%s] %d/%d %s, ETA %s  %s",
+                     std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(),
+                     done, total, clockText(t).c_str(), eta.c_str(), name.c_str());
         std::fflush(stderr);
     };
     auto work = [&] {
         for (int i; !lut::interrupted() && (i = next++) < total;) {
-            const BatchJob& j = jobs[i];
+            const BatchJob& j = jobs[static_cast<std::size_t>(i)];
+            if (bar) {
+                std::lock_guard<std::mutex> lock(m);
+                current = j.input;
+                drawBar();
+            }
             std::string text, fail;
-            bool stopped = false;
-            try {
-                if (j.output.empty())
-                    throw Error(
-                        "another input has the same file name (its output would be overwritten)");
-                checkNotSameFile(j.input, j.output); // never overwrite an input (issue 7)
-                text = fn(j, inner);
-            } catch (const InterruptedError&) {
-                stopped = true;
-            } catch (const std::bad_alloc&) {
-                fail = outOfMemoryText();
-            } catch (const std::exception& e) {
-                fail = e.what();
+            bool skip = j.skip, stopped = false;
+            if (!skip) {
+                try {
+                    if (!j.refused.empty())
+                        throw Error(j.refused);
+                    Context ctx(budget, inner, j.input);
+                    text = fn(j, ctx);
+                } catch (const InterruptedError&) {
+                    stopped = true;
+                } catch (const std::bad_alloc&) {
+                    fail = outOfMemoryText();
+                } catch (const std::exception& e) {
+                    fail = e.what();
+                    if (fail.empty())
+                        fail = "failed";
+                }
             }
             // A job that failed once the program was interrupted most likely failed because of
             // it (its temporary file was removed under it): it is among the unfinished.
             stopped = stopped || (!fail.empty() && lut::interrupted());
             std::lock_guard<std::mutex> lock(m);
-            if (!fail.empty() && !stopped)
-                failures[i] = fail;
-            else if (!stopped)
+            if (stopped) {
+                // not finished, not a failure: listed by the interrupt summary below
+            } else if (!fail.empty())
+                failures[static_cast<std::size_t>(i)] = fail;
+            else if (skip)
+                ++skipped;
+            else {
+                ++written;
                 finished[static_cast<std::size_t>(i)] = 1;
+            }
             if (!text.empty()) {
                 if (bar)
                     std::fprintf(stderr, "\r\033[K");
                 std::cout << text << std::flush;
             }
-            const int d = ++done;
+            ++done;
             if (bar)
-                drawBar(d);
+                drawBar();
         }
     };
     std::vector<std::thread> pool;
@@ -158,8 +254,18 @@ int runBatch(const std::vector<BatchJob>& jobs, int threads, bool quiet,
                   << "; nothing else was written\n";
         return kExitInterrupted;
     }
-    if (failed > 0 && total > 1)
-        std::cerr << "lutkit: " << failed << " of " << total << " file(s) failed\n";
+    if (total > 1 && (!options.quiet || failed > 0)) {
+        const double t = elapsed();
+        char rate[64];
+        std::snprintf(rate, sizeof rate, "%.3g", t > 0 ? written / t : 0.0);
+        std::cerr << "lutkit: " << written << " of " << total << " " << options.unit
+                  << " written in " << clockText(t) << " (" << rate << " " << options.unit << "/s)";
+        if (skipped)
+            std::cerr << ", " << skipped << " skipped (exist)";
+        std::cerr << ", " << failed << " failed\n";
+    } else if (skipped && !options.quiet) {
+        std::cerr << "lutkit: " << jobs.front().output << " exists; skipped (-n)\n";
+    }
     return failed > 0 ? kExitFailure : kExitOk;
 }
 

@@ -4,12 +4,14 @@
 
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/FrameSequence.h"
 #include "lut/pipeline/Pipeline.h"
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchLattice.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace lut::cli {
 
@@ -141,6 +143,38 @@ Choices bitDepthChoices() {
     return c;
 }
 
+Choices imageFormatChoices() {
+    Choices c{"image-format",
+              "image format",
+              {"png", "exr", "tif", "jpg", "dpx", "ppm", "pgm", "bmp", "tga", "hdr", "webp", "gif"},
+              {"tiff", "jpeg", "pnm", "openexr"},
+              {}};
+    std::vector<std::string> all = c.names;
+    all.insert(all.end(), c.aliases.begin(), c.aliases.end());
+    c.accept = [all](const std::string& s) {
+        if (std::find(all.begin(), all.end(), s) == all.end())
+            throw Error("unknown image format '" + s + "'");
+    };
+    return c;
+}
+
+Choices compressionChoices() {
+    Choices c{"compression",
+              "compression",
+              {"none", "zip", "zips", "rle", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab", "lzw",
+               "packbits", "jpeg"},
+              {},
+              {}};
+    const std::vector<std::string> names = c.names;
+    c.accept = [names](const std::string& s) {
+        // "jpeg:90", "dwaa:45": a name with a quality OpenImageIO understands.
+        const std::string base = s.substr(0, s.find(':'));
+        if (std::find(names.begin(), names.end(), base) == names.end())
+            throw Error("unknown compression '" + s + "'");
+    };
+    return c;
+}
+
 std::optional<Choices> choicesForValidator(const std::string& name) {
     const std::string prefix = kChoicesValidatorPrefix;
     if (name.compare(0, prefix.size(), prefix) != 0)
@@ -148,7 +182,8 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
     const std::string kind = name.substr(prefix.size());
     for (Choices (*make)() :
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
-          writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices}) {
+          writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
+          imageFormatChoices, compressionChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;
@@ -259,6 +294,73 @@ CLI::Option* addBitDepth(CLI::App& sub, int& target, const std::string& help) {
 CLI::Option* addThreads(CLI::App& sub, int& target) {
     return sub.add_option("--threads", target, "worker threads (default 0 = all cores)")
         ->check(CLI::Range(0, 1024));
+}
+
+CLI::Option* addFrames(CLI::App& sub, std::string& target) {
+    return sub
+        .add_option("--frames", target,
+                    "frames of an input pattern: 1-100, 1-100x2, 1,5,7-9 (default: every frame "
+                    "found)")
+        ->type_name("RANGE")
+        ->check(CLI::Validator(
+            [](std::string& v) -> std::string {
+                try {
+                    (void)parseFrameRange(v);
+                    return {};
+                } catch (const Error& e) {
+                    return e.what();
+                }
+            },
+            "RANGE", "frame-range"));
+}
+
+void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outFormat) {
+    const Choices c = imageFormatChoices();
+    sub.add_option("--in-format", inFormat,
+                   "image format of standard input (default: told from its first bytes)")
+        ->type_name("NAME")
+        ->check(choicesValidator(c));
+    sub.add_option("--format", outFormat,
+                   "image format written to standard output (default: the input's)")
+        ->type_name("NAME")
+        ->check(choicesValidator(c));
+}
+
+CLI::Option* addCompression(CLI::App& sub, std::string& target) {
+    return sub
+        .add_option("--compression", target,
+                    "compression of EXR/TIFF outputs: zip, piz, dwaa:45, lzw, none ... (default: "
+                    "the input's)")
+        ->type_name("NAME")
+        ->check(choicesValidator(compressionChoices()));
+}
+
+CLI::Option* addMaxMemory(CLI::App& sub, std::string& target) {
+    return sub
+        .add_option("--max-memory", target,
+                    "memory files in parallel may use together: 4G, 512M (default: half the RAM)")
+        ->type_name("SIZE")
+        ->check(CLI::Validator(
+            [](std::string& v) -> std::string {
+                // The same grammar as cli::parseMemorySize (Batch.h); checked here for exit 2.
+                std::size_t used = 0;
+                double x = 0;
+                try {
+                    x = std::stod(v, &used);
+                } catch (const std::exception&) {
+                    return "bad memory size '" + v + "' (expected a number with K, M, G or T: 4G)";
+                }
+                std::string unit = v.substr(used);
+                for (auto& ch : unit)
+                    ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+                static const std::vector<std::string> units = {"",    "B",  "K",   "KB", "KIB",
+                                                               "M",   "MB", "MIB", "G",  "GB",
+                                                               "GIB", "T",  "TB",  "TIB"};
+                if (!(x > 0) || std::find(units.begin(), units.end(), unit) == units.end())
+                    return "bad memory size '" + v + "' (expected a number with K, M, G or T: 4G)";
+                return {};
+            },
+            "SIZE", "memory-size"));
 }
 
 void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp) {

@@ -40,6 +40,8 @@ Choices latticeChoices();
 Choices targetChoices();
 Choices cornerChoices();
 Choices bitDepthChoices();
+Choices imageFormatChoices(); // image files apply and preview read and write: png, exr, tif ...
+Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip, piz, lzw ...)
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 
@@ -66,6 +68,14 @@ CLI::Option* addLayout(CLI::App& sub, const std::string& name, std::optional<Lut
 CLI::Option* addInterp(CLI::App& sub, Interpolation& target, const std::string& help);
 CLI::Option* addBitDepth(CLI::App& sub, int& target, const std::string& help);
 CLI::Option* addThreads(CLI::App& sub, int& target);
+// --frames RANGE (oiiotool's syntax: 1-100, 1-100x2, 1,5,7-9; lut/io/FrameSequence.h).
+CLI::Option* addFrames(CLI::App& sub, std::string& target);
+// --in-format / --format for images read from standard input and written to standard output.
+void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outFormat);
+// --compression NAME (default: the input's).
+CLI::Option* addCompression(CLI::App& sub, std::string& target);
+// --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together.
+CLI::Option* addMaxMemory(CLI::App& sub, std::string& target);
 
 // -q/--quiet, and -v/--verbose when verboseHelp says what it adds ("" = nothing to add: no -v).
 void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp);

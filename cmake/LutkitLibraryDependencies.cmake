@@ -1,5 +1,5 @@
 # What lutkit's two libraries need wherever they are linked: lutkit::lutlib needs GLM and
-# Threads, lutkit::formats OpenColorIO. Included by LutkitDependencies.cmake when lutkit itself
+# Threads, lutkit::formats OpenColorIO and the native image codecs' libpng, zlib and OpenEXR. Included by LutkitDependencies.cmake when lutkit itself
 # is built and, installed next to lutkitConfig.cmake, by that config when another project links
 # the installed libraries, so both find these the same way (with the same Debian 12 quirks).
 find_package(Threads REQUIRED)
@@ -22,3 +22,8 @@ endif()
 if(NOT TARGET OpenColorIO::OpenColorIO)
   add_library(OpenColorIO::OpenColorIO ALIAS PkgConfig::OCIO)
 endif()
+
+# The native image codecs (formats/src/imageio): PNG, OpenEXR scanline files.
+find_package(PNG REQUIRED)
+find_package(ZLIB REQUIRED)
+find_package(OpenEXR CONFIG REQUIRED)

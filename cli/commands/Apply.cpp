@@ -5,20 +5,23 @@
 #include "Usage.h"
 #include "Vocabulary.h"
 
-#include "lut/formats/ImageFiles.h"
-#include "lut/formats/ImageIO.h"
+#include "lut/formats/ApplyImage.h"
 #include "lut/formats/Registry.h"
-#include "lut/interp/Sampler.h"
 
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 #include <memory>
+#include <mutex>
 
 namespace lut::cli {
 
 int runApply(const ApplyOptions& o) {
-    const std::vector<BatchJob> jobs = planBatch(o.inputs, o.outputDir);
+    const BatchPlan plan = planBatch(o.inputs, o.output, {o.lut}, o.frames);
+    BatchOptions bo;
+    bo.threads = o.threads;
+    bo.quiet = o.verbosity.quiet;
+    bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
     FormatOptions lutOptions;
     lutOptions.layout = o.lutLayout;
     const LutFile file = formats::readLut(o.lut, lutOptions);
@@ -27,40 +30,68 @@ int runApply(const ApplyOptions& o) {
         if (const std::string d = layoutDetail(file, o.lutLayout.has_value(), "--lut-layout");
             !d.empty())
             std::cerr << "lutkit: " << o.lut << ": " << d << "\n";
-    const auto sampler = makeSampler(file.toLut3D(), o.interp);
-    return runBatch(jobs, o.threads, o.verbosity.quiet, [&](const BatchJob& j, int inner) {
-        formats::LoadedImage img = formats::readImage(j.input);
-        sampler->apply(img.image.view(), inner);
-        formats::ImageWriteOptions w;
-        w.bitDepth = img.info.isFloat || img.info.bitDepth == 0 ? 32 : img.info.bitDepth;
-        w.alpha =
-            (img.info.channels == 2 || img.info.channels >= 4) && formats::canHoldAlpha(j.output);
-        formats::writeImage(j.output, img.image, w);
-        return o.verbosity.verbose ? j.input + " -> " + j.output + "\n" : std::string();
+    PixelChain chain;
+    chain.setLut(file.toLut3D(), o.interp);
+    std::mutex noteMutex;
+    return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
+        formats::ApplyImageOptions ao;
+        ao.bitDepth = o.bitDepth;
+        ao.compression = o.compression;
+        ao.inFormat = o.inFormat;
+        ao.outFormat = o.format;
+        ao.threads = ctx.innerThreads();
+        const formats::ApplyImageReport r = formats::applyToImage(j.input, j.target, chain, ao);
+        {
+            std::lock_guard<std::mutex> lock(noteMutex);
+            const std::string outside = r.domain.str(chain.domainMin(), chain.domainMax());
+            if (!outside.empty())
+                std::cerr << "lutkit: warning: " << j.input << ": " << outside
+                          << "; they take the LUT's edge values\n";
+            for (const auto& d : r.diagnostics)
+                if (isShown(d, o.verbosity))
+                    std::cerr << "lutkit: " << severityWord(d.severity) << ": " << j.input << ": "
+                              << d.message << "\n";
+        }
+        if (!o.verbosity.verbose)
+            return std::string();
+        return j.input + " -> " + j.output + " (" + formats::toString(r.output.type) +
+               (r.unchanged ? ", neutral: values copied" : "") + ")\n";
     });
 }
 
 CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onParsed) {
     auto o = std::make_shared<ApplyOptions>();
-    auto* sub = app.add_subcommand("apply", "Apply a LUT to the stored pixel values of images (no "
-                                            "colour conversion, alpha and bit depth kept)");
+    auto* sub = app.add_subcommand(
+        "apply", "Apply a LUT to the stored pixel values of images (no colour conversion; data "
+                 "type, alpha, compression and metadata kept)");
     sub->add_option("--lut", o->lut, "LUT file (any supported format)")
         ->required()
         ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");
-    sub->add_option("FILES", o->inputs, "IN OUT, or input files/folders with -o DIR")
+    sub->add_option("INPUTS", o->inputs,
+                    "images, folders of images, frame patterns (f.%04d.exr), or - (stdin)")
         ->type_name("FILE");
-    sub->add_option("-o,--output-dir", o->outputDir,
-                    "batch: write DIR/<input name> for every input")
-        ->type_name("DIR");
+    addOutputOptions(*sub, o->output,
+                     "output: a file (one input), a folder (existing, or ending in /), a frame "
+                     "pattern (out.%04d.exr), or - (stdout)");
+    addFrames(*sub, o->frames);
+    addImageFormats(*sub, o->inFormat, o->format);
+    addBitDepth(*sub, o->bitDepth,
+                "output data type: 8, 16 (half for EXR) or 32 (float) (default: the input's)");
+    addCompression(*sub, o->compression);
+    addMaxMemory(*sub, o->maxMemory);
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
     addThreads(*sub, o->threads);
     addVerbosity(*sub, o->verbosity, "print IN -> OUT for every file written");
-    sub->footer("Examples:\n"
-                "  lutkit apply --lut grade.cube shot.png graded.png\n"
-                "  lutkit apply --lut grade.cube frames/ -o graded/     # every image in frames/\n"
-                "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif out.tif");
+    sub->footer(
+        "Examples:\n"
+        "  lutkit apply --lut grade.cube shot.png -o graded.png\n"
+        "  lutkit apply --lut grade.cube frames/ -o graded/       # every image in frames/\n"
+        "  lutkit apply --lut grade.cube f.%04d.exr --frames 1-100 -o out.%04d.exr\n"
+        "  lutkit apply --lut grade.cube - --in-format png -o - --format png < in.png > out.png\n"
+        "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif -o out.tif -y\n"
+        "An existing output is replaced only with -y; -n skips existing outputs.");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

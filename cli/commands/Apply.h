@@ -1,6 +1,8 @@
 #pragma once
-// lutkit apply --lut LUT IN OUT (or IN... -o DIR): a LUT on the stored pixel values of images.
+// lutkit apply --lut LUT IN... -o OUT: a LUT on the stored pixel values of images, streamed in
+// chunks in the file's own type (lut/formats/ApplyImage.h).
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
@@ -17,17 +19,23 @@ class App;
 namespace lut::cli {
 
 struct ApplyOptions {
-    std::string lut;                    // LUT file (any readable format)
+    std::string lut;                    // LUT file (any readable format; - = standard input)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image (default: detected)
-    std::vector<std::string> inputs;    // IN OUT, or with outputDir: files and/or folders
-    std::string outputDir;              // -o DIR: batch mode
+    std::vector<std::string> inputs;    // files, folders, frame patterns, or -
+    OutputOptions output;               // -o FILE | DIR/ | PATTERN | -, -y, -n
+    std::string frames;                 // --frames 1-100 (with a frame pattern)
+    std::string inFormat;               // --in-format: the image format of standard input
+    std::string format;                 // --format: the image format written to standard output
+    int bitDepth = 0;                   // 0 = the input's type
+    std::string compression;            // "" = the input's (EXR, TIFF)
+    std::string maxMemory;              // --max-memory (default half the RAM)
     Interpolation interp = Interpolation::Tetrahedral;
     int threads = 0; // 0 = all cores
     Verbosity verbosity;
 };
 
-// Applies the LUT to the stored pixel values (no colour conversion), alpha kept, output bit depth
-// = the input's, rounded to nearest -- what Photoshop's Color Lookup does. Batch: Batch.h.
+// Applies the LUT to the stored pixel values (no colour conversion), alpha, data type,
+// compression and metadata kept -- what Photoshop's Color Lookup does, file by file.
 int runApply(const ApplyOptions& options);
 
 // Adds the subcommand to app; onParsed is called with the options once they are parsed.

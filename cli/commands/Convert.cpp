@@ -100,6 +100,12 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
 } // namespace
 
 int runConvert(const ConvertOptions& o) {
+    const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input});
+    if (target.skip) {
+        if (!o.verbosity.quiet)
+            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+        return kExitOk;
+    }
     formats::ConvertOptions co;
     co.inFormat = o.inFormat;
     co.outFormat = o.format;
@@ -139,6 +145,7 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--dither", o->dither, "8-bit image output: ordered dither");
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_flag("--json", o->json, "print the report as JSON");
+    addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "also say how a LUT image input was read");
     sub->footer("Examples:\n"
                 "  lutkit convert grade.cube color_grading_lut.nutexb   # for Smash Ultimate "

@@ -2,6 +2,7 @@
 // lutkit convert IN OUT: any readable LUT file to any writable one, saying what it cost
 // (lut::formats::convertLut does the work; this prints its report as text or JSON).
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
@@ -29,6 +30,7 @@ struct ConvertOptions {
     bool dither = false;
     std::string name; // nutexb name field
     bool json = false;
+    OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };
 

@@ -18,8 +18,13 @@
 namespace lut::cli {
 
 int runEmbed(const EmbedOptions& o) {
-    // Keep the clean screenshot: fit and tests need it.
-    checkNotOverwritingInputs(o.output, {o.input});
+    // Never over the clean screenshot: fit and tests need it.
+    const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input});
+    if (target.skip) {
+        if (!o.verbosity.quiet)
+            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+        return kExitOk;
+    }
     auto loaded = formats::readImage(o.input);
     lut::EmbedOptions eo;
     eo.lattice = o.lattice.empty() ? PatchLattice::Smash : parseLattice(o.lattice);
@@ -42,7 +47,8 @@ int runEmbed(const EmbedOptions& o) {
                      "averaged\n";
     if (ext == ".png" && eo.bitDepth == 32)
         wo.bitDepth = 16;
-    formats::writeImage(o.output, loaded.image, wo);
+    wo.metadata = loaded.metadata;
+    formats::writeImage(target.writePath, loaded.image, wo);
     std::cout << "embedded a " << p.size << "^3 " << toString(p.lattice) << "-lattice "
               << toString(p.layout) << " patch at scale " << p.scale << " (" << p.frameWidth << "x"
               << p.frameHeight << " pixels with its frame) at (" << p.frameX << ", " << p.frameY
@@ -83,6 +89,7 @@ CLI::App* setupEmbed(CLI::App& app, std::function<void(const EmbedOptions&)> onP
     sub->add_option("--margin", o->margin,
                     "pixels between the frame and the image edge (default 8)")
         ->check(CLI::Range(0, 4096));
+    addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
     sub->footer("Examples:\n"
                 "  lutkit embed screenshot.png patched.png     # grade patched.png, then extract\n"

@@ -1,6 +1,7 @@
 #pragma once
 // lutkit embed SCREENSHOT OUT: paste a neutral LUT patch with a marker frame into a screenshot.
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/io/Layout.h"
 
@@ -23,6 +24,7 @@ struct EmbedOptions {
     int scale = 2;
     std::string corner = "top-left";
     int margin = 8;
+    OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };
 

@@ -20,8 +20,12 @@
 namespace lut::cli {
 
 int runExtract(const ExtractOptions& o) {
-    // Never write over an input: the edited screenshot or the original LUT (issue 17).
-    checkNotOverwritingInputs(o.output, {o.input, o.originalLut});
+    const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input, o.originalLut});
+    if (target.skip) {
+        if (!o.verbosity.quiet)
+            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+        return kExitOk;
+    }
     auto loaded = formats::readImage(o.input);
     lut::ExtractOptions eo;
     eo.target = parseTarget(o.target);
@@ -93,6 +97,7 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
         ->check(CLI::Range(2, 256));
     addOutputFormat(*sub, o->format);
     addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "also say where the patch was found and how it was made");
     sub->footer("Examples:\n"
                 "  lutkit extract graded.png grade.cube\n"

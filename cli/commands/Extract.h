@@ -1,6 +1,7 @@
 #pragma once
 // lutkit extract EDITED OUT: find the patch in an edited screenshot and write the LUT it shows.
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/io/Layout.h"
 
@@ -22,6 +23,7 @@ struct ExtractOptions {
     int size = 0;                    // output size (0: raw = patch size, smash/nutexb = 16)
     std::string format;              // output format name ("" = by extension)
     std::optional<LutLayout> layout; // output layout for LUT images
+    OutputOptions overwrite;         // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };
 

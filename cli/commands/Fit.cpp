@@ -18,7 +18,12 @@
 namespace lut::cli {
 
 int runFit(const FitOptions& o) {
-    checkNotOverwritingInputs(o.output, {o.before, o.after}); // never write over an input
+    const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.before, o.after});
+    if (target.skip) {
+        if (!o.verbosity.quiet)
+            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+        return kExitOk;
+    }
     auto before = formats::readImage(o.before);
     auto after = formats::readImage(o.after);
     lut::FitOptions fo;
@@ -59,6 +64,7 @@ CLI::App* setupFit(CLI::App& app, std::function<void(const FitOptions&)> onParse
     sub->add_flag("--no-robust", o->noRobust, "plain least squares (no outlier down-weighting)");
     addOutputFormat(*sub, o->format);
     addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
     sub->footer("Examples:\n"
                 "  lutkit fit before.png after.png grade.cube\n"

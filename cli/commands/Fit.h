@@ -1,6 +1,7 @@
 #pragma once
 // lutkit fit BEFORE AFTER OUT: fit a 3D LUT to a before/after image pair.
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/io/Layout.h"
 
@@ -23,6 +24,7 @@ struct FitOptions {
     bool noRobust = false;
     std::string format;              // output format name ("" = by extension)
     std::optional<LutLayout> layout; // output layout for LUT images
+    OutputOptions overwrite;         // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };
 

@@ -24,6 +24,12 @@ int defaultNeutralSize(const std::string& path, int formatFixedSize) {
 }
 
 int runNeutral(const NeutralOptions& o) {
+    const OutputTarget target = resolveOutput(o.output, o.overwrite, {});
+    if (target.skip) {
+        if (!o.verbosity.quiet)
+            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+        return kExitOk;
+    }
     formats::registerBuiltinFormats();
     const auto& registry = FormatRegistry::instance();
     const Format* writer =
@@ -42,7 +48,7 @@ int runNeutral(const NeutralOptions& o) {
     options.bitDepth = o.bitDepth;
     if (!o.name.empty())
         options.setAttribute(formats::nutexb::kNameAttribute, o.name);
-    const Diagnostics diags = writer->write(o.output, file, options);
+    const Diagnostics diags = formats::writeLut(o.output, file, options, writer->name());
     std::cout << "wrote " << o.output << ": " << writer->name() << ", neutral " << size << "^3";
     if (o.layout)
         std::cout << ", layout " << toString(*o.layout);
@@ -69,6 +75,7 @@ CLI::App* setupNeutral(CLI::App& app, std::function<void(const NeutralOptions&)>
     addBitDepth(*sub, o->bitDepth, "LUT images: 8, 16 or 32 (float)");
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_option("--title", o->title, "title stored where the format has one");
+    addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "also describe the format written");
     sub->footer("Examples:\n"
                 "  lutkit neutral neutral.png                    # 256x16 strip to grade in an "

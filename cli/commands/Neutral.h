@@ -1,6 +1,7 @@
 #pragma once
 // lutkit neutral OUT: a neutral (identity) LUT in any writable format.
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/io/Layout.h"
 
@@ -22,6 +23,7 @@ struct NeutralOptions {
     int bitDepth = 0;                // LUT images: 8, 16 or 32 (0 = the format's default)
     std::string name;                // nutexb name field
     std::string title;
+    OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };
 

@@ -12,6 +12,8 @@
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
+#include "lut/pipeline/Transfer.h"
 
 #include <CLI/CLI.hpp>
 
@@ -92,14 +94,33 @@ std::string previewFooter() {
     os << "  Not available: depth of field, SSAO, SSR (they need depth and normals an image "
           "lacks).\n\n"
           "Examples:\n"
-          "  lutkit preview shot.png seen.png --lut grade.cube      # as Smash Ultimate shows "
+          "  lutkit preview shot.png -o seen.png --lut grade.cube   # as Smash Ultimate shows "
           "it\n"
-          "  lutkit preview shot.png seen.png --from-screenshot --lut new.nutexb --original-lut "
+          "  lutkit preview shot.png -o seen.png --from-screenshot --lut new.nutexb --original-lut "
           "old.nutexb\n"
-          "  lutkit preview render.exr out.png --preset filmic --lut grade.cube\n"
+          "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
           "  lutkit preview frames/ -o seen/ --enable grain --stage grain.strength=0.05\n"
           "  lutkit preview --list-stages --preset cinematic";
     return os.str();
+}
+
+// lut::srgbDecode of every R, G, B of a frame read from an 8-bit file, by table: the values are
+// exactly k / 255 (lut/formats/ImageIO.h), so the table gives the same floats as the per-value
+// call, at a fraction of the cost (the power function ran 6 million times for a 1080p frame).
+void decodeSrgbCodes8(const ImageView& frame) {
+    float table[256];
+    for (int k = 0; k < 256; ++k)
+        table[k] = srgbDecode(static_cast<float>(k) / 255.0f);
+    for (int y = 0; y < frame.height; ++y) {
+        float* p = frame.row(y);
+        for (int x = 0; x < frame.width; ++x, p += 4)
+            for (int c = 0; c < 3; ++c) {
+                const float v = p[c];
+                const int k = static_cast<int>(v * 255.0f + 0.5f);
+                p[c] = k >= 0 && k < 256 && static_cast<float>(k) / 255.0f == v ? table[k]
+                                                                                : srgbDecode(v);
+            }
+    }
 }
 
 } // namespace
@@ -136,7 +157,12 @@ int runPreview(const PreviewOptions& o) {
         std::cout << stageList(*configured);
         return kExitOk;
     }
-    const std::vector<BatchJob> jobs = planBatch(o.inputs, o.outputDir);
+    const BatchPlan plan =
+        planBatch(o.inputs, o.output, {o.lut, o.fromScreenshot ? o.originalLut : ""}, o.frames);
+    BatchOptions bo;
+    bo.threads = o.threads;
+    bo.quiet = o.verbosity.quiet;
+    bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
     if (!o.lut.empty()) {
         FormatOptions lutOptions;
         lutOptions.layout = o.lutLayout;
@@ -154,10 +180,23 @@ int runPreview(const PreviewOptions& o) {
     bool noted = false;
     std::mutex noteMutex;
 
-    return runBatch(jobs, o.threads, o.verbosity.quiet, [&](const BatchJob& j, int inner) {
-        formats::LoadedImage img = formats::readImage(j.input);
+    return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
+        const int inner = ctx.innerThreads();
+        if (j.input != "-") {
+            // The frame, and the blur pyramids of the bloom stages (about one more frame).
+            const formats::ImageInfo info = formats::readImageInfo(j.input);
+            ctx.reserveMemory(static_cast<std::uint64_t>(info.width) *
+                                  static_cast<std::uint64_t>(info.height) * 16u * 2u,
+                              "the preview of a " + std::to_string(info.width) + "x" +
+                                  std::to_string(info.height) + " image");
+        }
+        formats::LoadedImage img = formats::readImage(j.input, o.inFormat);
         // A screenshot holds display-encoded values whatever its bit depth.
-        const bool linear = img.info.isFloat && !o.fromScreenshot;
+        bool linear = img.info.isFloat && !o.fromScreenshot;
+        if (!linear && img.info.type == formats::PixelType::UInt8) {
+            decodeSrgbCodes8(img.image.view());
+            linear = true; // decoded: prepareSceneFrame only undoes the grading
+        }
         const Diagnostics notes = prepareSceneFrame(img.image.view(), linear, o.fromScreenshot,
                                                     original.get(), settings.interpolation, inner);
         Pipeline pipeline(settings); // one per job: stages keep per-run buffers
@@ -165,8 +204,15 @@ int runPreview(const PreviewOptions& o) {
         run.nthreads = inner;
         run.frameIndex = o.frame;
         const PipelineReport report = pipeline.run(img.image.view(), run);
-        formats::writeImage(j.output, img.image,
-                            formats::renderedImageWriteOptions(img.info, j.output, o.bitDepth));
+        formats::ImageWriteOptions wo =
+            formats::renderedImageWriteOptions(img.info, j.output, o.bitDepth);
+        wo.format = o.format.empty() && j.target.inPlace() ? img.info.format : o.format;
+        // Keep the screenshot's metadata (ICC profile, EXIF) where the output can hold it.
+        wo.metadata = img.metadata;
+        // A preview is looked at, then replaced: PNGs are written with zlib's fastest level.
+        if (extensionOf(j.output) == ".png" || wo.format == "png")
+            wo.compression = "zip:1";
+        formats::writeImage(j.target.writePath, img.image, wo);
         {
             std::lock_guard<std::mutex> lock(noteMutex);
             for (const auto& d : notes) {
@@ -193,11 +239,15 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     auto* sub = app.add_subcommand(
         "preview", "Show images as the game would: post-processing chain with a LUT");
     sub->footer(previewFooter());
-    sub->add_option("FILES", o->inputs, "IN OUT, or input files/folders with -o DIR")
+    sub->add_option("INPUTS", o->inputs,
+                    "images, folders of images, frame patterns (f.%04d.png), or - (stdin)")
         ->type_name("FILE");
-    sub->add_option("-o,--output-dir", o->outputDir,
-                    "batch: write DIR/<input name> for every input")
-        ->type_name("DIR");
+    addOutputOptions(*sub, o->output,
+                     "output: a file (one input), a folder (existing, or ending in /), a frame "
+                     "pattern (out.%04d.png), or - (stdout)");
+    addFrames(*sub, o->frames);
+    addImageFormats(*sub, o->inFormat, o->format);
+    addMaxMemory(*sub, o->maxMemory);
     sub->add_option("--lut", o->lut, "grading LUT (default: neutral)")->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");

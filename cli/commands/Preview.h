@@ -1,7 +1,8 @@
 #pragma once
-// lutkit preview IN OUT (or IN... -o DIR): images as the game would show them, through the
+// lutkit preview IN... -o OUT: images as the game would show them, through the
 // post-processing chain (lut/pipeline/Pipeline.h) with a LUT, written display-encoded.
 #include "Notes.h"
+#include "Outputs.h"
 
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
@@ -19,8 +20,12 @@ class App;
 namespace lut::cli {
 
 struct PreviewOptions {
-    std::vector<std::string> inputs;    // IN OUT, or with outputDir: files and/or folders
-    std::string outputDir;              // -o DIR: batch mode
+    std::vector<std::string> inputs;    // files, folders, frame patterns, or -
+    OutputOptions output;               // -o FILE | DIR/ | PATTERN | -, -y, -n
+    std::string frames;                 // --frames 1-100 (with a frame pattern)
+    std::string inFormat;               // --in-format: the image format of standard input
+    std::string format;                 // --format: the image format written to standard output
+    std::string maxMemory;              // --max-memory (default half the RAM)
     std::string lut;                    // grading LUT (default neutral)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none

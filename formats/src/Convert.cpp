@@ -6,6 +6,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/StdStreams.h"
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
 
@@ -68,7 +69,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     if (wantSize != 0 && (wantSize < limits::kMin3DSize || wantSize > limits::kMax3DSize))
         throw Error("output size " + std::to_string(wantSize) + " is outside " +
                     std::to_string(limits::kMin3DSize) + ".." + std::to_string(limits::kMax3DSize));
-    checkNotOverwritingInputs(output, {input});
+    if (output != "-")
+        checkNotOverwritingInputs(output, {input});
 
     registerBuiltinFormats();
     if (!options.inFormat.empty())
@@ -107,7 +109,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     FormatOptions writeOptions = options.write;
     writeOptions.size = targetSize;
     t0 = Clock::now();
-    report.writeDiagnostics = writer->write(output, toWrite, writeOptions);
+    std::string inPlaceBytes; // what went to standard output or a device, to read back
+    report.writeDiagnostics = writeLutFile(*writer, output, toWrite, writeOptions, &inPlaceBytes);
     report.writeSeconds = since(t0);
 
     // Read back what was written, in the layout it was written in.
@@ -115,7 +118,9 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     try {
         FormatOptions backOptions;
         backOptions.layout = options.write.layout;
-        report.readBack = readLut(output, backOptions);
+        report.readBack = inPlaceBytes.empty()
+                              ? readLut(output, backOptions)
+                              : writer->readMemory(inPlaceBytes, output, backOptions);
         report.storage = storageError(toWrite, *report.readBack);
         report.storage->seconds = since(t0);
     } catch (const Error& e) {

@@ -79,8 +79,8 @@ TEST(CliApply, EightBitValuesThroughTheLutAlphaKept) {
     const Image in = testImage(13, 7, 8);
     formats::writeImage(dir + "/in.png", in, {8, false, true});
     for (const char* interp : {"trilinear", "tetrahedral"}) {
-        const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in.png' '" + dir +
-                                   "/out.png' --interp " + interp);
+        const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in.png' -o '" + dir +
+                                   "/out.png' -y --interp " + interp);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const formats::LoadedImage out = formats::readImage(dir + "/out.png");
         EXPECT_EQ(out.info.bitDepth, 8);
@@ -106,7 +106,7 @@ TEST(CliApply, FractionalAlphaKeepsColourAndAlpha) {
     const Image in = testImage(8, 4, 8, true);
     formats::writeImage(dir + "/ina.png", in, {8, false, true});
     const RunResult r =
-        runCli("apply --lut '" + cube + "' '" + dir + "/ina.png' '" + dir + "/outa.png'");
+        runCli("apply --lut '" + cube + "' '" + dir + "/ina.png' -o '" + dir + "/outa.png'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const formats::LoadedImage out = formats::readImage(dir + "/outa.png");
     for (int y = 0; y < 4; ++y)
@@ -128,7 +128,7 @@ TEST(CliApply, SixteenBitStaysSixteenBit) {
     const Image in = testImage(9, 5, 16);
     formats::writeImage(dir + "/in16.png", in, {16, false, true});
     const RunResult r =
-        runCli("apply --lut '" + cube + "' '" + dir + "/in16.png' '" + dir + "/out16.png'");
+        runCli("apply --lut '" + cube + "' '" + dir + "/in16.png' -o '" + dir + "/out16.png'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const formats::LoadedImage out = formats::readImage(dir + "/out16.png");
     EXPECT_EQ(out.info.bitDepth, 16);
@@ -149,7 +149,7 @@ TEST(CliApply, BatchKeepsGoingAndReportsEveryFailure) {
     formats::writeImage(dir + "/in/b.png", testImage(5, 3, 8), {8, false, false});
     { std::ofstream(dir + "/in/broken.png") << "not a png"; }
     const RunResult r = runCli("apply --lut '" + cube + "' '" + dir + "/in' '" + dir +
-                               "/missing.png' -o '" + dir + "/out'");
+                               "/missing.png' -o '" + dir + "/out/'");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("broken.png"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("missing.png"), std::string::npos) << r.err;
@@ -169,7 +169,8 @@ TEST(CliApply, UsageErrors) {
     const std::string cube = writeAffineCube(dir);
     EXPECT_EQ(runCli("apply --lut '" + cube + "' onlyone.png").exitCode, 2);
     EXPECT_EQ(runCli("apply --lut '" + cube + "' a.png b.png c.png").exitCode, 2);
-    const RunResult r = runCli("apply --lut '" + dir + "/nope.cube' a.png b.png");
+    EXPECT_EQ(runCli("apply --lut '" + cube + "' a.png b.png -o out.png").exitCode, 2);
+    const RunResult r = runCli("apply --lut '" + dir + "/nope.cube' a.png -o b.png");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("nope.cube"), std::string::npos);
 }

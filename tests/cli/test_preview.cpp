@@ -68,8 +68,8 @@ TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
     for (bool bloom : {true, false}) {
         const std::string out = dir + (bloom ? "/bloom.exr" : "/nobloom.exr");
-        const RunResult r = runCli("preview '" + dir + "/scene.exr' '" + out + "' --lut '" + cube +
-                                   "'" + (bloom ? "" : " --no-bloom"));
+        const RunResult r = runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut '" +
+                                   cube + "'" + (bloom ? "" : " --no-bloom"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const formats::LoadedImage got = formats::readImage(out);
         EXPECT_EQ(got.info.bitDepth, 32);
@@ -88,7 +88,8 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
             p[3] = 1.0f;
         }
     formats::writeImage(dir + "/shot.png", shot, {8, false, false});
-    const RunResult r = runCli("preview '" + dir + "/shot.png' '" + dir + "/out.png' --no-bloom");
+    const RunResult r =
+        runCli("preview '" + dir + "/shot.png' -o '" + dir + "/out.png' --no-bloom");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const formats::LoadedImage got = formats::readImage(dir + "/out.png");
     EXPECT_EQ(got.info.bitDepth, 8);
@@ -125,17 +126,17 @@ TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {
     for (std::size_t i = 3; i < scene.pixels().size(); i += 4)
         scene.pixels()[i] = 1.0f;
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
-    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/shot.exr' --no-bloom --lut '" +
-                     l0 + "'")
+    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' -o '" + dir +
+                     "/shot.exr' --no-bloom --lut '" + l0 + "'")
                   .exitCode,
               0);
     const RunResult r =
-        runCli("preview '" + dir + "/shot.exr' '" + dir + "/regraded.exr' --no-bloom --lut '" + l1 +
-               "' --from-screenshot --original-lut '" + l0 + "'");
+        runCli("preview '" + dir + "/shot.exr' -o '" + dir + "/regraded.exr' --no-bloom --lut '" +
+               l1 + "' --from-screenshot --original-lut '" + l0 + "'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("bloom cannot be undone"), std::string::npos);
-    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' '" + dir + "/direct.exr' --no-bloom --lut '" +
-                     l1 + "'")
+    ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' -o '" + dir +
+                     "/direct.exr' --no-bloom --lut '" + l1 + "'")
                   .exitCode,
               0);
     const Image a = formats::readImage(dir + "/regraded.exr").image;
@@ -147,7 +148,7 @@ TEST(CliPreview, StageSwitchesVerboseAndErrors) {
     const std::string dir = workDir();
     Image scene = makeScene(32, 24, 3);
     formats::writeImage(dir + "/s.exr", scene, {32, false, true});
-    RunResult r = runCli("preview '" + dir + "/s.exr' '" + dir +
+    RunResult r = runCli("preview '" + dir + "/s.exr' -o '" + dir +
                          "/o.exr' --verbose --enable vignette --stage "
                          "vignette.strength=0.5 --stage bloom.strength=0");
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -155,7 +156,7 @@ TEST(CliPreview, StageSwitchesVerboseAndErrors) {
     EXPECT_NE(r.out.find("smash-bloom            skipped"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("ms"), std::string::npos);
     // bloom strength 0 == --no-bloom: bit-identical files.
-    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir +
+    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' -o '" + dir +
                      "/p.exr' --no-bloom --enable vignette --stage "
                      "vignette.strength=0.5")
                   .exitCode,
@@ -163,16 +164,19 @@ TEST(CliPreview, StageSwitchesVerboseAndErrors) {
     EXPECT_EQ(formats::readImage(dir + "/o.exr").image.pixels(),
               formats::readImage(dir + "/p.exr").image.pixels());
     // Vignette darkens the corner relative to the plain chain.
-    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/q.exr' --no-bloom").exitCode, 0);
+    ASSERT_EQ(runCli("preview '" + dir + "/s.exr' -o '" + dir + "/q.exr' --no-bloom").exitCode, 0);
     EXPECT_LT(formats::readImage(dir + "/o.exr").image.pixel(0, 0)[1],
               formats::readImage(dir + "/q.exr").image.pixel(0, 0)[1]);
 
-    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage nosuch.a=1").exitCode,
+    EXPECT_EQ(
+        runCli("preview '" + dir + "/s.exr' -o '" + dir + "/x.exr' --stage nosuch.a=1").exitCode,
+        2);
+    EXPECT_EQ(
+        runCli("preview '" + dir + "/s.exr' -o '" + dir + "/x.exr' --stage vignette.strength=7")
+            .exitCode,
+        2);
+    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' -o '" + dir + "/x.exr' --preset bogus").exitCode,
               2);
-    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --stage vignette.strength=7")
-                  .exitCode,
-              2);
-    EXPECT_EQ(runCli("preview '" + dir + "/s.exr' '" + dir + "/x.exr' --preset bogus").exitCode, 2);
     EXPECT_EQ(runCli("preview '" + dir + "/s.exr'").exitCode, 2);
     r = runCli("preview --list-stages --preset lecture");
     EXPECT_EQ(r.exitCode, 0);
@@ -187,7 +191,7 @@ TEST(CliPreview, BatchWritesEveryGoodFileAndFailsOnBadOnes) {
     formats::writeImage(dir + "/in/one.exr", scene, {32, false, true});
     formats::writeImage(dir + "/in/two.png", Image(6, 6, 0.5f), {8, false, true});
     { std::ofstream(dir + "/in/bad.exr") << "garbage"; }
-    const RunResult r = runCli("preview '" + dir + "/in' -o '" + dir + "/out' --no-bloom");
+    const RunResult r = runCli("preview '" + dir + "/in' -o '" + dir + "/out/' --no-bloom");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("bad.exr"), std::string::npos) << r.err;
     const formats::LoadedImage one = formats::readImage(dir + "/out/one.exr");

@@ -70,7 +70,7 @@ private slots:
         QTest::addColumn<QString>("image");
         QTest::addColumn<QStringList>("setup");   // script lines choosing target and chain
         QTest::addColumn<QString>("extension");   // of the default export
-        QTest::addColumn<QStringList>("cli");     // how the CLI renders it (IN LUT OUT appended)
+        QTest::addColumn<QStringList>("cli");     // how the CLI renders it (--lut LUT IN -o OUT)
         QTest::addColumn<bool>("viaDisplayOnly"); // the scene is first display-encoded (2 steps)
         const QStringList preview = {QStringLiteral("preview"), QStringLiteral("-q")};
         const QStringList apply = {QStringLiteral("apply"), QStringLiteral("-q"),
@@ -124,11 +124,11 @@ private slots:
         if (viaDisplayOnly) { // the display-encoded scene, as a float file
             cliIn = dir.filePath("display.exr");
             const Run d = run(QStringLiteral(LUTKIT_CLI), {"preview", "-q", "--preset", "none",
-                                                           "--bit-depth", "32", in, cliIn});
+                                                           "--bit-depth", "32", in, "-o", cliIn});
             QVERIFY2(d.code == 0, qPrintable(d.err));
         }
-        const Run c =
-            run(QStringLiteral(LUTKIT_CLI), cli + QStringList{"--lut", exported, cliIn, theirs});
+        const Run c = run(QStringLiteral(LUTKIT_CLI),
+                          cli + QStringList{"--lut", exported, cliIn, "-o", theirs});
         QVERIFY2(c.code == 0, qPrintable(c.err));
         const formats::LoadedImage a = formats::readImage(mine.toStdString());
         const formats::LoadedImage b = formats::readImage(theirs.toStdString());

@@ -48,7 +48,7 @@ TEST(ExitCodes, EverySubcommand) {
     const std::string missingCube =
         "lutkit: error: " + dir + "/missing.cube: cannot open: No such file or directory";
     const std::string missingPng =
-        "lutkit: error: " + dir + "/missing.png: cannot read image: Could not open file";
+        "lutkit: error: " + dir + "/missing.png: cannot open: No such file or directory";
     const std::string badCube =
         "lutkit: error: " + dir +
         "/bad.cube:3:1: expected 8 data rows for LUT_3D_SIZE 2, found 1 before the end of the file";
@@ -73,7 +73,7 @@ TEST(ExitCodes, EverySubcommand) {
          "hald; also pilot, godot, lattice)"},
         {"convert @/a.cube @/x.png --layout unrel", 2,
          "lutkit convert: --layout: unknown layout 'unrel'; did you mean 'unreal'?"},
-        {"preview @/img.png @/p.png --preset lectur", 2, "did you mean 'lecture'?"},
+        {"preview @/img.png -o @/p.png --preset lectur", 2, "did you mean 'lecture'?"},
         // --format is the output everywhere: the old input meaning names the new option
         {"info @/a.cube --format cube", 2, "name its format with --in-format"},
         {"validate @/a.cube --format cube", 2, "name their format with --in-format"},
@@ -82,7 +82,7 @@ TEST(ExitCodes, EverySubcommand) {
         // neutral (no input file: a folder that does not exist stands for the missing file)
         {"neutral @/n.cube --no-such-option", 2, unexpected},
         {"neutral @/nowhere/n.cube", 1,
-         "lutkit: error: " + dir + "/nowhere/n.cube: cannot write: No such file or directory"},
+         "lutkit: error: " + dir + "/nowhere/n.cube: folder " + dir + "/nowhere does not exist"},
         {"neutral @/n.cube --size 4", 0, ""},
         // convert
         {"convert @/a.cube @/c.nutexb --no-such-option", 2, unexpected},
@@ -101,17 +101,17 @@ TEST(ExitCodes, EverySubcommand) {
          dir + "/bad.cube:3:1: error: expected 8 data rows for LUT_3D_SIZE 2, found 1"},
         {"validate @/a.cube", 0, ""},
         // apply
-        {"apply --lut @/a.cube @/img.png @/o.png --no-such-option", 2, unexpected},
-        {"apply --lut @/a.cube @/missing.png @/o.png", 1, missingPng},
-        {"apply --lut @/missing.cube @/img.png @/o.png", 1, missingCube},
-        {"apply --lut @/a.cube @/bad.png @/o.png", 1, badPng},
-        {"apply --lut @/bad.cube @/img.png @/o.png", 1, badCube},
-        {"apply --lut @/a.cube @/img.png @/o.png", 0, ""},
+        {"apply --lut @/a.cube @/img.png -o @/o.png --no-such-option", 2, unexpected},
+        {"apply --lut @/a.cube @/missing.png -o @/o.png", 1, missingPng},
+        {"apply --lut @/missing.cube @/img.png -o @/o.png", 1, missingCube},
+        {"apply --lut @/a.cube @/bad.png -o @/o.png", 1, badPng},
+        {"apply --lut @/bad.cube @/img.png -o @/o.png", 1, badCube},
+        {"apply --lut @/a.cube @/img.png -o @/o.png", 0, ""},
         // preview
-        {"preview @/img.png @/p.png --no-such-option", 2, unexpected},
-        {"preview @/missing.png @/p.png", 1, missingPng},
-        {"preview @/bad.png @/p.png", 1, badPng},
-        {"preview @/img.png @/p.png", 0, ""},
+        {"preview @/img.png -o @/p.png --no-such-option", 2, unexpected},
+        {"preview @/missing.png -o @/p.png", 1, missingPng},
+        {"preview @/bad.png -o @/p.png", 1, badPng},
+        {"preview @/img.png -o @/p.png", 0, ""},
         // embed, then extract from what it wrote
         {"embed @/big.png @/e.png --no-such-option", 2, unexpected},
         {"embed @/missing.png @/e.png", 1, missingPng},

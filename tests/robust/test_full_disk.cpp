@@ -117,7 +117,7 @@ std::vector<Case> registryCases() {
             exts = {".png", ".tif", ".exr"};
         for (const auto& e : exts)
             cases.push_back(
-                {f->name() + "_" + e.substr(1), "convert IN.cube OUT --format " + f->name(), e});
+                {f->name() + "_" + e.substr(1), "convert -y IN.cube OUT --format " + f->name(), e});
     }
     return cases;
 }
@@ -126,11 +126,12 @@ std::vector<Case> imageCases() {
     std::vector<Case> cases;
     for (const char* e :
          {".png", ".jpg", ".tif", ".exr", ".bmp", ".tga", ".hdr", ".webp", ".dpx", ".gif"})
-        cases.push_back({std::string("apply_") + (e + 1), "apply --lut IN.cube IN.png OUT", e});
-    cases.push_back({"preview_png", "preview --lut IN.cube IN.png OUT", ".png"});
-    cases.push_back({"preview_tif", "preview IN.png OUT", ".tif"});
-    cases.push_back({"embed_png", "embed IN.png OUT", ".png"});
-    cases.push_back({"embed_bmp", "embed IN.png OUT", ".bmp"});
+        cases.push_back(
+            {std::string("apply_") + (e + 1), "apply -y --lut IN.cube IN.png -o OUT", e});
+    cases.push_back({"preview_png", "preview -y --lut IN.cube IN.png -o OUT", ".png"});
+    cases.push_back({"preview_tif", "preview -y IN.png -o OUT", ".tif"});
+    cases.push_back({"embed_png", "embed -y IN.png OUT", ".png"});
+    cases.push_back({"embed_bmp", "embed -y IN.png OUT", ".bmp"});
     return cases;
 }
 

@@ -179,7 +179,7 @@ TEST(Interrupts, ASingleWriteIsRemovedAndTheOldFileKept) {
     for (int sig : {SIGINT, SIGTERM}) {
         SCOPED_TRACE(sig == SIGINT ? "SIGINT" : "SIGTERM");
         writeBytes(out, old);
-        const Running r = start({"neutral", "--size", "160", out}, dir + "/err.txt");
+        const Running r = start({"neutral", "-y", "--size", "160", out}, dir + "/err.txt");
         const bool writing = waitFor(r.pid, [&] { return hasHiddenFile(dir); });
         ASSERT_TRUE(writing) << "neutral ended before its temporary file was seen";
         ::kill(r.pid, sig);

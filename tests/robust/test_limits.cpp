@@ -161,7 +161,7 @@ TEST(Limits, OpenExrAttributeClaimingMoreThanTheFileIsRefusedBeforeOpening) {
     writeBytes(dir + "/claims.exr", exr);
     const auto r =
         lut::test::runCli("apply --lut '" + lut::test::dataPath("cube/adobe_3d_domain.cube") +
-                          "' '" + dir + "/claims.exr' '" + dir + "/out.exr'");
+                          "' '" + dir + "/claims.exr' -o '" + dir + "/out.exr'");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(stripDir(r.err, dir),
               "lutkit: error: claims.exr: OpenEXR header attribute 'Software' declares 1735289202 "

@@ -156,7 +156,7 @@ TEST(SpecialFiles, FifoSocketDirectoryAndDeviceAsALutAreRefusedWithoutBlocking) 
         for (const std::string& args :
              {"info " + q(path), "validate " + q(path),
               "convert " + q(path) + " " + q(dir + "/o.cube"),
-              "apply --lut " + q(path) + " " + q(dir + "/img.png") + " " + q(dir + "/o.png")}) {
+              "apply --lut " + q(path) + " " + q(dir + "/img.png") + " -o " + q(dir + "/o.png")}) {
             SCOPED_TRACE(args);
             const auto r = runCliBounded(args);
             EXPECT_EQ(r.exitCode, 1);

@@ -274,7 +274,7 @@ const std::vector<Defect>& table() {
          }},
         {"truncated.png",
          {},
-         "truncated.png: cannot read image data: Read error: hit end of file",
+         "truncated.png: cannot read PNG: the file ends early (truncated)",
          "pilot",
          [](const std::string& path) {
              image(256, 16)(path);

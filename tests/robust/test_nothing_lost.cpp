@@ -52,7 +52,7 @@ TEST(NothingLost, ReadErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
     const std::string dir = lut::test::tempDir();
     writeBytes(dir + "/bad.cube", "LUT_3D_SIZE 2\n0 0 0\n");
     writeBytes(dir + "/out.cube", kGood);
-    const auto r = runCli("convert " + q(dir + "/bad.cube") + " " + q(dir + "/out.cube"));
+    const auto r = runCli("convert " + q(dir + "/bad.cube") + " " + q(dir + "/out.cube") + " -y");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("bad.cube:3:1: expected 8 data rows for LUT_3D_SIZE 2, found 1"));
     EXPECT_EQ(readBytes(dir + "/out.cube"), kGood);
@@ -66,17 +66,17 @@ TEST(NothingLost, WriteErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
     const std::string before = readBytes(dir + "/out.png");
     // PNG cannot hold float: refused by the writer, after the output was chosen.
     auto r =
-        runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/out.png") + " --bit-depth 32");
+        runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/out.png") + " --bit-depth 32 -y");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("out.png: PNG stores 8 or 16 bits per channel, not float"));
     EXPECT_EQ(readBytes(dir + "/out.png"), before);
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"in.cube", "out.png"}));
 
-    // The rename into place fails (the target is a folder): the finished temporary file must go.
+    // A folder is never replaced by a file, even with -y: refused before anything is written.
     fs::create_directories(dir + "/taken.cube/inside");
-    r = runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/taken.cube"));
+    r = runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/taken.cube") + " -y");
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_THAT(r.err, HasSubstr("taken.cube: cannot write: Is a directory"));
+    EXPECT_THAT(r.err, HasSubstr("taken.cube: is a folder, not a file"));
     EXPECT_TRUE(fs::is_directory(dir + "/taken.cube/inside"));
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"in.cube", "out.png", "taken.cube"}));
 
@@ -119,10 +119,10 @@ TEST(NothingLost, ImageCommandsRefuseToOverwriteTheirInput) {
     const std::string img = readBytes(dir + "/img.png");
     const std::string d = q(dir) + "/";
     const std::vector<std::string> commands = {
-        "apply --lut " + d + "dark.cube " + d + "img.png " + d + "img.png",
-        "apply --lut " + d + "dark.cube " + d + "img.png " + d + "hard.png",
-        "apply --lut " + d + "dark.cube " + d + "img.png -o " + d + ".",
-        "preview --lut " + d + "dark.cube " + d + "img.png " + d + "img.png",
+        "apply --lut " + d + "dark.cube " + d + "img.png -o " + d + "img.png -y",
+        "apply --lut " + d + "dark.cube " + d + "img.png -o " + d + "hard.png -y",
+        "apply --lut " + d + "dark.cube " + d + "img.png -o " + d + ". -y",
+        "preview --lut " + d + "dark.cube " + d + "img.png -o " + d + "img.png -y",
         "fit " + d + "img.png " + d + "other.png " + d + "img.png",
         "fit " + d + "other.png " + d + "img.png " + d + "hard.png",
         "extract " + d + "img.png " + d + "img.png",
@@ -166,7 +166,7 @@ TEST(NothingLost, KillDuringAWriteLeavesTheOldOrTheCompleteFile) {
     // write of ~40 MB of text, the last ones may let it finish.
     for (int delayMs : {1, 5, 20, 50, 100, 200, 350, 500, 800, 1200}) {
         SCOPED_TRACE(delayMs);
-        const pid_t pid = spawnCli({"neutral", "--size", "128", target});
+        const pid_t pid = spawnCli({"neutral", "--size", "128", "-y", target});
         ASSERT_GT(pid, 0);
         std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
         ::kill(pid, SIGKILL);

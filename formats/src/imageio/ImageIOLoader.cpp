@@ -1,7 +1,9 @@
-// The formats library's side of the OpenImageIO module: readImage, readImageInfo and writeImage
-// load lutkit_imageio.so on first use and forward to it (why: see ImageIOModuleApi.h).
+// The formats library's side of the OpenImageIO module: sources and sinks for the formats the
+// native codecs do not take load lutkit_imageio.so on first use and forward to it (why: see
+// ImageIOModuleApi.h).
 // The module is looked for in $LUTKIT_IMAGEIO_MODULE (a file), next to the running executable,
 // in ../lib/lutkit/ relative to it, and in the build tree's bin folder.
+#include "imageio/ByteIO.h"
 #include "imageio/ImageHeaderChecks.h"
 #include "imageio/ImageIOModuleApi.h"
 
@@ -53,6 +55,9 @@ const module::ImageIOApi& api() {
                 tried += (tried.empty() ? "" : ", ") + path;
                 continue;
             }
+            // RTLD_NOW: lazy binding saves nothing measurable here (the time goes into
+            // OpenImageIO's dependencies' own relocations) and would turn a missing symbol into a
+            // crash.
             void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
             if (!handle) {
                 const char* err = ::dlerror();
@@ -100,27 +105,95 @@ void rethrow(int status, const std::string& error) {
     }
 }
 
+class ModuleSource : public ImageSource {
+public:
+    ModuleSource(const std::string& path, std::string memory, const std::string& format)
+        : m_memory(std::move(memory)) {
+        module::SourceOpen req;
+        req.path = path;
+        req.memory = path == "-" ? &m_memory : nullptr;
+        req.format = format;
+        auto meta = std::make_shared<ImageMetadata>();
+        std::string error;
+        rethrow(api().openSource(req, &m_handle, m_info, *meta, m_granularity, error), error);
+        m_metadata = meta;
+    }
+    ~ModuleSource() override {
+        if (m_handle)
+            api().closeSource(m_handle);
+    }
+    int rowGranularity() const override { return m_granularity; }
+    void readRows(int y0, int y1, void* dst) override {
+        std::string error;
+        rethrow(api().readRows(m_handle, y0, y1, dst, error), error);
+    }
+
+private:
+    std::string m_memory;
+    void* m_handle = nullptr;
+    int m_granularity = 1;
+};
+
+class ModuleSink : public ImageSink {
+public:
+    ModuleSink(const OutputTarget& target, const SinkSpec& spec)
+        : m_out(target, true), m_path(target.path) {
+        module::ByteCallbacks cb;
+        cb.context = this;
+        cb.pwrite = [](void* ctx, const void* data, std::size_t n, std::uint64_t offset,
+                       std::string& error) {
+            try {
+                static_cast<ModuleSink*>(ctx)->m_out.pwrite(data, n, offset);
+                return true;
+            } catch (const std::exception& e) {
+                error = e.what();
+                // "OUT: cannot write: reason" -> "reason": the module names the file again.
+                const std::string prefix =
+                    static_cast<ModuleSink*>(ctx)->m_path + ": cannot write: ";
+                if (error.rfind(prefix, 0) == 0)
+                    error.erase(0, prefix.size());
+                return false;
+            }
+        };
+        // The writer is picked by the extension of the name it is given.
+        std::string name = target.path;
+        if (!spec.format.empty() && spec.format.find('.') == std::string::npos &&
+            (target.inPlace() || canonicalImageFormat(name) != canonicalImageFormat(spec.format)))
+            name = "out." + spec.format;
+        std::string error;
+        rethrow(api().openSink(spec, name, cb, &m_handle, m_granularity, error), error);
+    }
+    ~ModuleSink() override {
+        if (m_handle)
+            api().closeSink(m_handle);
+    }
+    int rowGranularity() const override { return m_granularity; }
+    void writeRows(int y0, int y1, const void* src) override {
+        std::string error;
+        rethrow(api().writeRows(m_handle, y0, y1, src, error), error);
+    }
+    void finish() override {
+        std::string error;
+        rethrow(api().finishSink(m_handle, error), error);
+        m_out.commit();
+    }
+
+private:
+    ByteWriter m_out;
+    std::string m_path;
+    void* m_handle = nullptr;
+    int m_granularity = 1;
+};
+
 } // namespace
 
-LoadedImage readImage(const std::string& path) {
-    checkImageHeader(path); // declared sizes against the file, before a codec believes them
-    LoadedImage out;
-    std::string error;
-    rethrow(api().readImage(path, out, error), error);
-    return out;
+std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string memory,
+                                            const std::string& format) {
+    return std::make_unique<ModuleSource>(path, std::move(memory), format);
 }
 
-ImageInfo readImageInfo(const std::string& path) {
-    checkImageHeader(path);
-    ImageInfo out;
-    std::string error;
-    rethrow(api().readImageInfo(path, out, error), error);
-    return out;
-}
-
-void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
-    std::string error;
-    rethrow(api().writeImage(path, image, options, error), error);
+std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target, const SinkSpec& spec) {
+    return std::make_unique<ModuleSink>(target, spec);
 }
 
 } // namespace lut::formats

@@ -1,6 +1,7 @@
-// Entry point of lutkit_imageio.so: the OpenImageIO-backed functions of ImageIO.cpp behind a
-// C-callable table (see src/ImageIOModuleApi.h for why this is a separate module).
+// Entry point of lutkit_imageio.so: OpenImageIO sources and sinks (OiioImage.cpp) behind a
+// C-callable table (ImageIOModuleApi.h says why this is a separate module).
 #include "imageio/ImageIOModuleApi.h"
+#include "imageio/OiioImage.h"
 
 #include "lut/Error.h"
 #include "lut/io/TempFiles.h"
@@ -32,19 +33,40 @@ template <class Fn> int guarded(std::string& error, Fn&& fn) {
     }
 }
 
-int readImageEntry(const std::string& path, LoadedImage& out, std::string& error) {
-    return guarded(error, [&] { out = lut::formats::readImage(path); });
+int openSource(const SourceOpen& req, void** handle, ImageInfo& info, ImageMetadata& meta,
+               int& granularity, std::string& error) {
+    return guarded(error, [&] {
+        auto src = std::make_unique<OiioSource>(req);
+        src->describe(info, meta, granularity);
+        *handle = src.release();
+    });
 }
-int readImageInfoEntry(const std::string& path, ImageInfo& out, std::string& error) {
-    return guarded(error, [&] { out = lut::formats::readImageInfo(path); });
+int readRows(void* h, int y0, int y1, void* dst, std::string& error) {
+    return guarded(error, [&] { static_cast<OiioSource*>(h)->readRows(y0, y1, dst); });
 }
-int writeImageEntry(const std::string& path, const Image& image, const ImageWriteOptions& options,
-                    std::string& error) {
-    return guarded(error, [&] { lut::formats::writeImage(path, image, options); });
+void closeSource(void* h) {
+    delete static_cast<OiioSource*>(h);
+}
+int openSink(const SinkSpec& spec, const std::string& name, ByteCallbacks bytes, void** handle,
+             int& granularity, std::string& error) {
+    return guarded(error, [&] {
+        auto sink = std::make_unique<OiioSink>(spec, name, bytes);
+        granularity = sink->granularity();
+        *handle = sink.release();
+    });
+}
+int writeRows(void* h, int y0, int y1, const void* src, std::string& error) {
+    return guarded(error, [&] { static_cast<OiioSink*>(h)->writeRows(y0, y1, src); });
+}
+int finishSink(void* h, std::string& error) {
+    return guarded(error, [&] { static_cast<OiioSink*>(h)->finish(); });
+}
+void closeSink(void* h) {
+    delete static_cast<OiioSink*>(h);
 }
 
-const ImageIOApi kApi = {kImageIOApiVersion, &readImageEntry, &readImageInfoEntry,
-                         &writeImageEntry};
+const ImageIOApi kApi = {kImageIOApiVersion, &openSource, &readRows,   &closeSource,
+                         &openSink,          &writeRows,  &finishSink, &closeSink};
 
 } // namespace
 } // namespace lut::formats::module

@@ -1,29 +1,54 @@
 #pragma once
 // The seam between the formats library and the OpenImageIO module (lutkit_imageio.so).
 //
-// Why: linking OpenImageIO pulls in ~250 shared libraries whose loading and static initialisers
-// cost 250+ ms at every start of lutkit, before main() runs, even for `lutkit info small.cube`.
-// So ImageIO.cpp (the only file that uses OIIO) is built into a module that ImageIOLoader.cpp
-// dlopen()s on the first image read or write. Exceptions do not cross the seam: the module
-// returns a status and message and the loader rethrows them as the caller's own types.
-#include "lut/formats/ImageIO.h"
+// Why: Debian's OpenImageIO pulls in ~260 shared libraries (OpenCV's video I/O, GStreamer, GDAL,
+// DCMTK ...) whose loading, symbol lookup and static initialisers cost ~190 ms of CPU (0.4 s of
+// wall time on a busy machine) before the first pixel, at every start. So the formats OpenImageIO
+// is needed for are behind this module, which ImageIOLoader.cpp dlopen()s on first use; PNG,
+// OpenEXR scanline files and PNM have native codecs in lutkit_formats and never load it.
+// Exceptions do not cross the seam: every entry returns a status and a message, and the loader
+// rethrows them as the caller's own types. Images are streamed: a source hands out rows in the
+// file's type, a sink takes rows and writes its bytes through the caller's callbacks (checked
+// writes: a codec never sees a failed write it could answer with exit()).
+#include "imageio/ImageCodec.h"
 
+#include <cstdint>
 #include <string>
 
 namespace lut::formats::module {
 
-constexpr int kImageIOApiVersion = 1;
+constexpr int kImageIOApiVersion = 2;
 constexpr const char* kImageIOModuleName = "lutkit_imageio.so";
 constexpr const char* kImageIOEntryPoint = "lutkit_imageio_api";
 
 enum Status : int { kOk = 0, kError = 1, kLimitError = 2, kOutOfMemory = 3, kInterrupted = 4 };
 
+// Where a sink's bytes go (the caller's lut::OutputFile, in memory when it cannot seek).
+struct ByteCallbacks {
+    void* context = nullptr;
+    // Writes n bytes at offset; returns false with a reason on failure.
+    bool (*pwrite)(void* context, const void* data, std::size_t n, std::uint64_t offset,
+                   std::string& error) = nullptr;
+};
+
+struct SourceOpen {
+    std::string path;
+    const std::string* memory = nullptr; // standard input's bytes, or null
+    std::string format;                  // for memory: the format's name, "" = by content
+};
+
 struct ImageIOApi {
     int version;
-    int (*readImage)(const std::string& path, LoadedImage& out, std::string& error);
-    int (*readImageInfo)(const std::string& path, ImageInfo& out, std::string& error);
-    int (*writeImage)(const std::string& path, const Image& image, const ImageWriteOptions& options,
-                      std::string& error);
+    int (*openSource)(const SourceOpen& request, void** handle, ImageInfo& info,
+                      ImageMetadata& metadata, int& granularity, std::string& error);
+    int (*readRows)(void* handle, int y0, int y1, void* dst, std::string& error);
+    void (*closeSource)(void* handle);
+    // `name` is a file name whose extension picks the writer ("x.tif").
+    int (*openSink)(const SinkSpec& spec, const std::string& name, ByteCallbacks bytes,
+                    void** handle, int& granularity, std::string& error);
+    int (*writeRows)(void* handle, int y0, int y1, const void* src, std::string& error);
+    int (*finishSink)(void* handle, std::string& error);
+    void (*closeSink)(void* handle);
 };
 
 using ImageIOEntryPoint = const ImageIOApi* (*)();

@@ -5,6 +5,8 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
 #include "lut/io/InputFile.h"
+#include "lut/io/OutputPolicy.h"
+#include "lut/io/StdStreams.h"
 
 #include <algorithm>
 #include <cctype>
@@ -177,6 +179,24 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
     candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                     [](const Format* f) { return !f->canRead(); }),
                      candidates.end());
+    if (isStdStream(path)) {
+        // Standard input has no extension: the named format, else each readable one in turn.
+        if (formatName.empty())
+            for (const auto& f : m_formats)
+                if (f->canRead())
+                    candidates.push_back(f.get());
+        const std::string bytes = readStandardInput(limits::kMaxLutFileBytes);
+        std::string reasons;
+        for (const Format* f : candidates) {
+            try {
+                return f->readMemory(bytes, path, options);
+            } catch (const Error& e) {
+                reasons += (reasons.empty() ? "" : "; ") + f->name() + ": " + e.what();
+            }
+        }
+        throw Error("-: no format could read standard input (name it with --in-format): " +
+                    reasons);
+    }
     if (candidates.empty())
         throw Error(path + ": no format reads '" + extensionOf(path) +
                     "' files (readable: " + knownExtensions(m_formats, true) + ")");
@@ -218,7 +238,7 @@ Diagnostics FormatRegistry::write(const std::string& path, const LutFile& lut,
     if (!f || !f->canWrite())
         throw Error(path + ": no format writes '" + extensionOf(path) +
                     "' files (writable: " + knownExtensions(m_formats, false) + ")");
-    return f->write(path, lut, options);
+    return writeLutFile(*f, path, lut, options);
 }
 
 } // namespace lut

@@ -1,0 +1,34 @@
+#include "Outputs.h"
+
+#include <CLI/CLI.hpp>
+
+namespace lut::cli {
+
+void addOverwriteOptions(CLI::App& sub, OutputOptions& o) {
+    auto* y = sub.add_flag("-y,--overwrite", o.overwrite, "replace output files that exist");
+    auto* n = sub.add_flag("-n,--no-clobber", o.noClobber,
+                           "leave output files that exist alone (skip them)");
+    y->excludes(n);
+}
+
+CLI::Option* addOutputOptions(CLI::App& sub, OutputOptions& o, const std::string& help) {
+    auto* opt = sub.add_option("-o,--output,--output-dir", o.output, help)->type_name("PATH");
+    addOverwriteOptions(sub, o);
+    return opt;
+}
+
+std::string existsMessage(const std::string& path, bool batch) {
+    return path + ": already exists; pass -y/--overwrite to replace it" +
+           (batch ? " (or -n/--no-clobber to skip existing outputs)" : "");
+}
+
+OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
+                           const std::vector<std::string>& inputs) {
+    try {
+        return checkOutput(path, options.rule(), inputs);
+    } catch (const OutputExistsError& e) {
+        throw Error(existsMessage(e.path(), false));
+    }
+}
+
+} // namespace lut::cli

@@ -1,0 +1,42 @@
+#pragma once
+// The output options every writing subcommand shares (-o, -y, -n) and the one place the CLI
+// applies the library's output rule (lut/io/OutputPolicy.h), so every command refuses an existing
+// output the same way and names the same flag.
+#include "lut/io/OutputPolicy.h"
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+class Option;
+} // namespace CLI
+
+namespace lut::cli {
+
+struct OutputOptions {
+    std::string output;     // -o: a file, a folder (existing, or ending in /), a pattern, or -
+    bool overwrite = false; // -y
+    bool noClobber = false; // -n
+    ExistingOutput rule() const {
+        return overwrite   ? ExistingOutput::Replace
+               : noClobber ? ExistingOutput::Skip
+                           : ExistingOutput::Refuse;
+    }
+};
+
+// -y/--overwrite and -n/--no-clobber (exclusive).
+void addOverwriteOptions(CLI::App& sub, OutputOptions& target);
+// -o/--output PATH (old spelling --output-dir), plus -y and -n.
+CLI::Option* addOutputOptions(CLI::App& sub, OutputOptions& target, const std::string& help);
+
+// The message for an output that exists: "OUT: already exists; pass -y/--overwrite to replace
+// it" (with -n/--no-clobber named when several files are written).
+std::string existsMessage(const std::string& path, bool batch);
+
+// checkOutput with the rule of `options`, an existing file reported with existsMessage (as
+// lut::Error: exit code 1). inputs are every file the command reads (the LUT too).
+OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
+                           const std::vector<std::string>& inputs);
+
+} // namespace lut::cli

@@ -1,0 +1,44 @@
+#pragma once
+// A lut::PixelChain (a LUT and the steps around it) through an image file, streamed: rows are
+// read in chunks in the file's own type, converted run by run into float RGBA, run through the
+// chain and converted back to the output's type, then written; reading, computing and writing
+// overlap on their own threads. Memory is a few chunks, never a frame. The output keeps what the
+// input had: its data type (uint8, uint16, half, float; 10-bit DPX stays 10-bit), channels (alpha
+// and extra channels pass through untouched), compression (OpenEXR, TIFF) and metadata (EXR
+// header attributes, PNG chunks, TIFF/EXIF tags, ICC profile), unless options say otherwise or
+// the output format cannot hold it (reported as a diagnostic).
+#include "lut/Error.h"
+#include "lut/PixelChain.h"
+#include "lut/formats/ImageIO.h"
+#include "lut/io/OutputPolicy.h"
+
+#include <string>
+
+namespace lut::formats {
+
+struct ApplyImageOptions {
+    int bitDepth = 0;        // 0 = the input's type; 8, 16 (half for OpenEXR), 32 (float)
+    std::string compression; // "" = the input's where the output format has it (EXR, TIFF)
+    std::string inFormat;    // the input's format when it is "-" ("" = from its first bytes)
+    std::string outFormat;   // the output's format for "-"/devices ("" = extension, else input's)
+    int threads = 0;         // compute threads (0 = all cores)
+    int rowsPerChunk = 0;    // 0 = automatic; the image height = one chunk (whole frame)
+    bool overlap = true;     // read, compute and write on threads of their own
+};
+
+struct ApplyImageReport {
+    ImageInfo input;
+    ImageInfo output;
+    DomainStats domain;      // what the LUT saw outside its domain
+    Diagnostics diagnostics; // what was not kept, and why (warnings, notes)
+    bool unchanged = false;  // the chain cannot change these pixels: stored values copied
+    double seconds = 0.0;
+};
+
+// Reads `input` ("-" = standard input), runs chain on every pixel, writes `output` (from
+// lut::checkOutput: the overwrite rule is the caller's). Throws lut::Error naming the file; a
+// failed write leaves an existing output as it was.
+ApplyImageReport applyToImage(const std::string& input, const OutputTarget& output,
+                              const PixelChain& chain, const ApplyImageOptions& options = {});
+
+} // namespace lut::formats

@@ -1,0 +1,106 @@
+#include "imageio/ByteIO.h"
+
+#include "lut/Error.h"
+#include "lut/io/InputFile.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace lut::formats {
+
+ByteReader::ByteReader(const std::string& path, std::string memory) : m_path(path) {
+    if (!memory.empty() || path == "-") {
+        m_memory = std::move(memory);
+        m_inMemory = true;
+        m_size = m_memory.size();
+        return;
+    }
+    checkRegularInput(path);
+    m_fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (m_fd < 0)
+        throw Error(path + ": cannot open: " + std::strerror(errno));
+    struct stat st {};
+    if (::fstat(m_fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(m_fd);
+        m_fd = -1;
+        throw Error(path + ": is not a regular file");
+    }
+    m_size = static_cast<std::uint64_t>(st.st_size);
+}
+
+ByteReader::~ByteReader() {
+    if (m_fd >= 0)
+        ::close(m_fd);
+}
+
+std::size_t ByteReader::pread(void* dst, std::size_t n, std::uint64_t offset) const {
+    if (m_inMemory) {
+        if (offset >= m_size)
+            return 0;
+        const std::size_t k = static_cast<std::size_t>(std::min<std::uint64_t>(n, m_size - offset));
+        std::memcpy(dst, m_memory.data() + offset, k);
+        return k;
+    }
+    std::size_t done = 0;
+    while (done < n) {
+        const ssize_t r = ::pread(m_fd, static_cast<char*>(dst) + done, n - done,
+                                  static_cast<off_t>(offset + done));
+        if (r < 0) {
+            if (errno == EINTR)
+                continue;
+            throw Error(m_path + ": cannot read: " + std::strerror(errno));
+        }
+        if (r == 0)
+            break;
+        done += static_cast<std::size_t>(r);
+    }
+    return done;
+}
+
+std::size_t ByteReader::read(void* dst, std::size_t n) {
+    const std::size_t k = pread(dst, n, m_pos);
+    m_pos += k;
+    return k;
+}
+
+std::string ByteReader::head(std::size_t n) const {
+    std::string s(n, '\0');
+    s.resize(pread(s.data(), n, 0));
+    return s;
+}
+
+ByteWriter::ByteWriter(const OutputTarget& target, bool needsSeek)
+    : m_file(target), m_buffer(needsSeek && !m_file.seekable()) {}
+
+void ByteWriter::write(const void* data, std::size_t n) {
+    if (m_buffer)
+        m_memory.append(static_cast<const char*>(data), n);
+    else
+        m_file.write(data, n);
+    m_size += n;
+}
+
+void ByteWriter::pwrite(const void* data, std::size_t n, std::uint64_t offset) {
+    if (m_buffer) {
+        if (offset + n > m_memory.size())
+            m_memory.resize(offset + n);
+        std::memcpy(m_memory.data() + offset, data, n);
+    } else {
+        m_file.pwrite(data, n, offset);
+    }
+    m_size = std::max<std::uint64_t>(m_size, offset + n);
+}
+
+void ByteWriter::commit(const std::function<void(const std::string&)>& verify) {
+    if (m_buffer) {
+        m_file.write(m_memory.data(), m_memory.size());
+        m_memory.clear();
+    }
+    m_file.commit(verify);
+}
+
+} // namespace lut::formats

@@ -1,0 +1,115 @@
+#pragma once
+// The streaming seam every image codec implements: an ImageSource hands out rows in the file's
+// own sample type, an ImageSink takes rows in the output's type, both in chunks of whole rows, in
+// order. Native codecs (PNG, OpenEXR scanline files, PNM) are compiled into lutkit_formats; every
+// other format goes through OpenImageIO in the module (OiioCodec.cpp forwards to it).
+#include "lut/formats/ImageIO.h"
+#include "lut/io/OutputFile.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lut::formats {
+
+// What a file carries besides its pixels, as read, for writers to copy.
+class ImageMetadata {
+public:
+    std::string format; // the format it was read from ("png", "openexr", OIIO's names)
+    // Same-format copies, verbatim:
+    struct PngChunk {
+        char type[5] = {};
+        std::string data;
+        int place = 0; // 0 = before PLTE, 1 = before IDAT, 2 = after IDAT
+    };
+    std::vector<PngChunk> pngChunks;
+    int pngColourType = -1; // the PNG input's IHDR colour type and depth (sBIT/bKGD follow them)
+    int pngBitDepth = 0;
+    std::shared_ptr<const void> exrHeader; // an Imf::Header (ExrCodec.cpp)
+    std::string oiioAttributes;            // OpenImageIO's ParamValueList, serialised
+    // Across formats:
+    std::string icc;                                       // ICC profile
+    std::string exif;                                      // TIFF-structured EXIF block
+    std::vector<std::pair<std::string, std::string>> text; // key, value
+};
+
+// Row bytes of a chunk of `rows` rows.
+inline std::size_t rowBytes(const ImageInfo& info) {
+    return static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.channels) *
+           static_cast<std::size_t>(bytesPerSample(info.type));
+}
+
+class ImageSource {
+public:
+    virtual ~ImageSource();
+    const ImageInfo& info() const { return m_info; }
+    std::shared_ptr<const ImageMetadata> metadata() const { return m_metadata; }
+    // Rows a read naturally covers (a tile row, an EXR line block): chunks are multiples of it.
+    virtual int rowGranularity() const { return 1; }
+    // Rows [y0, y1) of every channel, interleaved, in info().type, to dst (rowBytes apart).
+    // Called with consecutive ranges from 0. Throws lut::Error naming the file.
+    virtual void readRows(int y0, int y1, void* dst) = 0;
+    // After the last row: checks the end of the file (a PNG's IEND: truncation is an error).
+    virtual void finish() {}
+
+protected:
+    ImageInfo m_info;
+    std::shared_ptr<const ImageMetadata> m_metadata;
+};
+
+// What a sink writes.
+struct SinkSpec {
+    std::string format; // "png", "openexr", "pnm", or an OIIO format / extension
+    int width = 0;
+    int height = 0;
+    std::vector<std::string> channelNames; // "R","G","B"[,"A"] or the input's names
+    int alphaChannel = -1;
+    PixelType type = PixelType::UInt8;
+    int bitsPerSample = 0;   // 0 = the type's; 10/12 for DPX
+    std::string compression; // "" = the format's default
+    int tileWidth = 0, tileHeight = 0;
+    std::shared_ptr<const ImageMetadata> metadata; // copied where it fits
+    int threads = 1;                               // encoder threads (PNG deflate)
+};
+
+class ImageSink {
+public:
+    virtual ~ImageSink();
+    virtual int rowGranularity() const { return 1; }
+    // Rows [y0, y1) interleaved in the spec's type and channels. Consecutive from 0.
+    virtual void writeRows(int y0, int y1, const void* src) = 0;
+    // Ends the file, checks it and commits it (the rename); throws lut::Error naming the
+    // output. Without finish() the output is left as it was.
+    virtual void finish() = 0;
+};
+
+// The codec for a file, told from its first bytes ("-" = standard input; `format` names its
+// format, else sniffed). Throws lut::Error naming the file; FIFOs and devices are refused first.
+std::unique_ptr<ImageSource> openImageSource(const std::string& path,
+                                             const std::string& format = {});
+// Whether a native codec writes this format (else OpenImageIO does).
+std::string canonicalImageFormat(const std::string& formatOrPath);
+std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target, const SinkSpec& spec);
+
+// Native codecs (each in its own file).
+std::unique_ptr<ImageSource> openPngSource(const std::string& path, std::string memory);
+std::unique_ptr<ImageSink> createPngSink(const OutputTarget& target, const SinkSpec& spec);
+std::unique_ptr<ImageSource> openExrSource(const std::string& path, std::string memory);
+std::unique_ptr<ImageSink> createExrSink(const OutputTarget& target, const SinkSpec& spec);
+bool exrIsNative(const std::string& path, const std::string& memory); // single-part scanline
+std::unique_ptr<ImageSource> openPnmSource(const std::string& path, std::string memory);
+std::unique_ptr<ImageSink> createPnmSink(const OutputTarget& target, const SinkSpec& spec);
+// OpenImageIO through the module.
+std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string memory,
+                                            const std::string& format);
+std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target, const SinkSpec& spec);
+
+// The limit checks every codec makes before allocating for an image: no pixels, over
+// lut::limits::kMaxImagePixels, or more decoded bytes than `fileBytes` can hold at `maxRatio`
+// (0 = no such bound; deflate: 1032).
+void checkImageSize(const std::string& path, int width, int height, int channels,
+                    std::uint64_t fileBytes = 0, double maxRatio = 0.0);
+
+} // namespace lut::formats

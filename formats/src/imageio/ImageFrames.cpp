@@ -1,0 +1,111 @@
+// Whole frames as float RGBA (lut/formats/ImageIO.h), read and written chunk by chunk through
+// the codecs: the file's samples are converted straight into (out of) the frame's rows, so no
+// second frame-sized buffer of the file's type exists.
+#include "imageio/ImageCodec.h"
+#include "imageio/PixelConvert.h"
+
+#include "lut/Error.h"
+#include "lut/formats/ImageIO.h"
+#include "lut/io/FileNames.h"
+#include "lut/io/InputFile.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace lut::formats {
+
+namespace {
+
+// Rows per chunk: about 256K samples, a multiple of the codec's own block of rows.
+int chunkRows(int width, int channels, int granularity) {
+    const int byWidth = std::max(1, (1 << 18) / std::max(1, width * channels));
+    const int g = std::max(1, granularity);
+    return std::max(g, byWidth / g * g);
+}
+
+} // namespace
+
+ImageInfo readImageInfo(const std::string& path, const std::string& format) {
+    return openImageSource(path, format)->info();
+}
+
+LoadedImage readImage(const std::string& path, const std::string& format) {
+    auto src = openImageSource(path, format);
+    LoadedImage out;
+    out.info = src->info();
+    out.metadata = src->metadata();
+    const ImageInfo& info = out.info;
+    const RgbaMap map = rgbaMapOf(info);
+    const std::uint64_t frameBytes =
+        static_cast<std::uint64_t>(info.width) * static_cast<std::uint64_t>(info.height) * 16u;
+    allocating(path,
+               "a " + std::to_string(info.width) + "x" + std::to_string(info.height) +
+                   " float RGBA frame",
+               frameBytes, [&] { out.image = Image(info.width, info.height); });
+    const int rows = chunkRows(info.width, info.channels, src->rowGranularity());
+    const std::size_t rb = rowBytes(info);
+    std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
+    for (int y0 = 0; y0 < info.height; y0 += rows) {
+        const int y1 = std::min(info.height, y0 + rows);
+        src->readRows(y0, y1, chunk.data());
+        toRgba(chunk.data(), info.type, info.channels, map,
+               static_cast<std::size_t>(info.width) * static_cast<std::size_t>(y1 - y0),
+               out.image.pixel(0, y0));
+    }
+    src->finish();
+    return out;
+}
+
+void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
+    if (image.empty())
+        throw Error(path + ": cannot write an empty image");
+    const int bits = options.bitDepth;
+    if (bits != 8 && bits != 16 && bits != 32)
+        throw Error(path + ": unsupported bit depth " + std::to_string(bits) +
+                    " (expected 8, 16 or 32)");
+    const OutputTarget target = checkOutput(path, ExistingOutput::Replace);
+    SinkSpec spec;
+    spec.format = options.format;
+    const std::string fmt = canonicalImageFormat(
+        !options.format.empty() && (target.inPlace() || extensionOf(path).empty()) ? options.format
+                                                                                   : path);
+    spec.width = image.width();
+    spec.height = image.height();
+    spec.channelNames = options.alpha ? std::vector<std::string>{"R", "G", "B", "A"}
+                                      : std::vector<std::string>{"R", "G", "B"};
+    spec.alphaChannel = options.alpha ? 3 : -1;
+    spec.type = bits == 8    ? PixelType::UInt8
+                : bits == 16 ? (fmt == "openexr" ? PixelType::Half : PixelType::UInt16)
+                             : PixelType::Float;
+    if (fmt == "jpeg" && bits != 8)
+        throw Error(path + ": JPEG stores 8 bits per channel only");
+    spec.metadata = options.metadata;
+    spec.compression = options.compression;
+    spec.threads = 2;
+    auto sink = createImageSink(target, spec);
+    ImageInfo out;
+    out.width = spec.width;
+    out.height = spec.height;
+    out.channels = static_cast<int>(spec.channelNames.size());
+    out.type = spec.type;
+    out.channelNames = spec.channelNames;
+    out.alphaChannel = spec.alphaChannel;
+    const RgbaMap map = rgbaMapOf(out);
+    const int rows = chunkRows(spec.width, out.channels, sink->rowGranularity());
+    const std::size_t rb = rowBytes(out);
+    std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
+    for (int y0 = 0; y0 < spec.height; y0 += rows) {
+        const int y1 = std::min(spec.height, y0 + rows);
+        DitherPos dp;
+        dp.on = options.dither && spec.type != PixelType::Float && spec.type != PixelType::Half;
+        dp.width = spec.width;
+        dp.start = static_cast<std::size_t>(y0) * static_cast<std::size_t>(spec.width);
+        fromRgba(image.pixel(0, y0),
+                 static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(y1 - y0),
+                 chunk.data(), spec.type, out.channels, map, dp);
+        sink->writeRows(y0, y1, chunk.data());
+    }
+    sink->finish();
+}
+
+} // namespace lut::formats

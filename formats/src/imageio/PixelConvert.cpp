@@ -1,0 +1,333 @@
+#include "imageio/PixelConvert.h"
+
+#include "lut/Quantize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace lut::formats {
+
+namespace detail {
+void halfToFloatF16c(const std::uint16_t* src, float* dst, std::size_t n);
+void floatToHalfF16c(const float* src, std::uint16_t* dst, std::size_t n);
+} // namespace detail
+
+namespace {
+
+bool hasF16c() {
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool yes = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx") && __builtin_cpu_supports("f16c");
+    }();
+    return yes;
+#else
+    return false;
+#endif
+}
+
+std::uint32_t bitsOf(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, 4);
+    return u;
+}
+float floatOf(std::uint32_t u) {
+    float f;
+    std::memcpy(&f, &u, 4);
+    return f;
+}
+
+// Scratch floats for half runs, per thread.
+float* scratch(std::size_t n) {
+    thread_local std::vector<float> buf;
+    if (buf.size() < n)
+        buf.resize(n);
+    return buf.data();
+}
+
+template <class T> float load(T v);
+template <> float load(std::uint8_t v) {
+    return static_cast<float>(v) / 255.0f;
+}
+template <> float load(std::uint16_t v) {
+    return static_cast<float>(v) / 65535.0f;
+}
+template <> float load(float v) {
+    return v;
+}
+
+template <class T> T store(float v);
+template <> std::uint8_t store(float v) {
+    return toUnorm8(v);
+}
+template <> std::uint16_t store(float v) {
+    return toUnorm16(v);
+}
+template <> float store(float v) {
+    return v;
+}
+
+template <class T>
+void gather(const T* s, int nch, const RgbaMap& m, std::size_t n, float* __restrict o) {
+    if (nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0) {
+        for (std::size_t i = 0; i < n; ++i) {
+            o[4 * i + 0] = load(s[3 * i + 0]);
+            o[4 * i + 1] = load(s[3 * i + 1]);
+            o[4 * i + 2] = load(s[3 * i + 2]);
+            o[4 * i + 3] = 1.0f;
+        }
+        return;
+    }
+    if (nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3) {
+        for (std::size_t i = 0; i < 4 * n; ++i)
+            o[i] = load(s[i]);
+        return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const T* p = s + static_cast<std::size_t>(nch) * i;
+        o[4 * i + 0] = load(p[m.r]);
+        o[4 * i + 1] = load(p[m.g]);
+        o[4 * i + 2] = load(p[m.b]);
+        o[4 * i + 3] = m.a >= 0 ? load(p[m.a]) : 1.0f;
+    }
+}
+
+// 4x4 Bayer matrix, thresholds in (-0.5, 0.5) of one quantisation step.
+float bayer(int x, int y) {
+    static const int mtx[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
+    return (static_cast<float>(mtx[y & 3][x & 3]) + 0.5f) / 16.0f - 0.5f;
+}
+
+template <class T>
+void scatter(const float* __restrict v, std::size_t n, T* d, int nch, const RgbaMap& m,
+             const DitherPos& dp, float step) {
+    const bool grey = m.r == m.g && m.g == m.b;
+    if (!dp.on && !grey && nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0) {
+        for (std::size_t i = 0; i < n; ++i) {
+            d[3 * i + 0] = store<T>(v[4 * i + 0]);
+            d[3 * i + 1] = store<T>(v[4 * i + 1]);
+            d[3 * i + 2] = store<T>(v[4 * i + 2]);
+        }
+        return;
+    }
+    if (!dp.on && nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3) {
+        for (std::size_t i = 0; i < 4 * n; ++i)
+            d[i] = store<T>(v[i]);
+        return;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        T* p = d + static_cast<std::size_t>(nch) * i;
+        float off = 0.0f;
+        if (dp.on) {
+            const std::size_t k = dp.start + i;
+            off = bayer(static_cast<int>(k % static_cast<std::size_t>(dp.width)),
+                        static_cast<int>(k / static_cast<std::size_t>(dp.width))) *
+                  step;
+        }
+        p[m.r] = store<T>(v[4 * i + 0] + off);
+        if (!grey) {
+            p[m.g] = store<T>(v[4 * i + 1] + off);
+            p[m.b] = store<T>(v[4 * i + 2] + off);
+        }
+        if (m.a >= 0)
+            p[m.a] = store<T>(v[4 * i + 3]);
+    }
+}
+
+} // namespace
+
+const char* toString(PixelType t) {
+    switch (t) {
+    case PixelType::UInt8:
+        return "uint8";
+    case PixelType::UInt16:
+        return "uint16";
+    case PixelType::Half:
+        return "half";
+    case PixelType::Float:
+        return "float";
+    }
+    return "float";
+}
+
+RgbaMap rgbaMapOf(const ImageInfo& info) {
+    RgbaMap m;
+    const auto& names = info.channelNames;
+    auto find = [&](const char* n) {
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (names[i] == n)
+                return static_cast<int>(i);
+        return -1;
+    };
+    m.a = info.alphaChannel;
+    const int r = find("R"), g = find("G"), b = find("B"), y = find("Y");
+    if (r >= 0 && g >= 0 && b >= 0) {
+        m.r = r;
+        m.g = g;
+        m.b = b;
+    } else if (y >= 0 || info.channels <= 2) {
+        const int grey = y >= 0 ? y : 0;
+        m.r = m.g = m.b = grey;
+        if (m.a < 0 && info.channels == 2)
+            m.a = grey == 0 ? 1 : 0;
+    } else {
+        // Unnamed channels: the first three, alpha as the file says (or the 4th of 4).
+        m.r = 0;
+        m.g = 1;
+        m.b = 2;
+        if (m.a < 0 && info.channels == 4 && names.empty())
+            m.a = 3;
+    }
+    return m;
+}
+
+float halfToFloat(std::uint16_t h) {
+    const std::uint32_t s = static_cast<std::uint32_t>(h & 0x8000u) << 16;
+    const std::uint32_t e = (h >> 10) & 0x1fu, m = h & 0x3ffu;
+    if (e == 0) {
+        const float v = static_cast<float>(m) * (1.0f / 16777216.0f); // m * 2^-24, exact
+        return s ? -v : v;
+    }
+    if (e == 31)
+        return floatOf(s | 0x7f800000u | (m << 13));
+    return floatOf(s | ((e + 112u) << 23) | (m << 13));
+}
+
+std::uint16_t floatToHalf(float f) {
+    std::uint32_t x = bitsOf(f);
+    const std::uint16_t sign = static_cast<std::uint16_t>((x >> 16) & 0x8000u);
+    x &= 0x7fffffffu;
+    if (x > 0x7f800000u) // NaN: quiet, the payload's top bits kept (as F16C does)
+        return static_cast<std::uint16_t>(sign | 0x7e00u | ((x >> 13) & 0x3ffu));
+    if (x >= 0x477ff000u) // rounds to infinity (65520 and up), Inf
+        return static_cast<std::uint16_t>(sign | 0x7c00u);
+    if (x < 0x38800000u) { // below 2^-14: a half denormal (or zero), round to nearest even
+        const float scaled = floatOf(x) * 16777216.0f; // exact: a power of two
+        return static_cast<std::uint16_t>(sign |
+                                          static_cast<std::uint16_t>(std::nearbyint(scaled)));
+    }
+    x += 0xc8000fffu + ((x >> 13) & 1u); // rebias the exponent, round to nearest even
+    return static_cast<std::uint16_t>(sign | (x >> 13));
+}
+
+void halfToFloatN(const std::uint16_t* src, float* dst, std::size_t n) {
+    if (hasF16c()) {
+        detail::halfToFloatF16c(src, dst, n);
+        return;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        dst[i] = halfToFloat(src[i]);
+}
+
+void floatToHalfN(const float* src, std::uint16_t* dst, std::size_t n) {
+    if (hasF16c()) {
+        detail::floatToHalfF16c(src, dst, n);
+        return;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        dst[i] = floatToHalf(src[i]);
+}
+
+void toRgba(const void* src, PixelType type, int nch, const RgbaMap& map, std::size_t n,
+            float* rgba) {
+    switch (type) {
+    case PixelType::UInt8:
+        gather(static_cast<const std::uint8_t*>(src), nch, map, n, rgba);
+        return;
+    case PixelType::UInt16:
+        gather(static_cast<const std::uint16_t*>(src), nch, map, n, rgba);
+        return;
+    case PixelType::Float:
+        gather(static_cast<const float*>(src), nch, map, n, rgba);
+        return;
+    case PixelType::Half: {
+        const std::size_t count = n * static_cast<std::size_t>(nch);
+        float* f = scratch(count);
+        halfToFloatN(static_cast<const std::uint16_t*>(src), f, count);
+        gather(static_cast<const float*>(f), nch, map, n, rgba);
+        return;
+    }
+    }
+}
+
+void fromRgba(const float* rgba, std::size_t n, void* dst, PixelType type, int nch,
+              const RgbaMap& map, const DitherPos& dither) {
+    switch (type) {
+    case PixelType::UInt8:
+        scatter(rgba, n, static_cast<std::uint8_t*>(dst), nch, map, dither, 1.0f / 255.0f);
+        return;
+    case PixelType::UInt16:
+        scatter(rgba, n, static_cast<std::uint16_t*>(dst), nch, map, dither, 1.0f / 65535.0f);
+        return;
+    case PixelType::Float:
+        scatter(rgba, n, static_cast<float*>(dst), nch, map, DitherPos{}, 0.0f);
+        return;
+    case PixelType::Half: {
+        // Through floats: the other channels are read, kept and written back unchanged.
+        const std::size_t count = n * static_cast<std::size_t>(nch);
+        float* f = scratch(count);
+        halfToFloatN(static_cast<const std::uint16_t*>(dst), f, count);
+        scatter(rgba, n, f, nch, map, DitherPos{}, 0.0f);
+        floatToHalfN(f, static_cast<std::uint16_t*>(dst), count);
+        return;
+    }
+    }
+}
+
+void copyChannel(const void* src, PixelType st, int sch, int sc, void* dst, PixelType dt, int dch,
+                 int dc, std::size_t n) {
+    const int sb = bytesPerSample(st), db = bytesPerSample(dt);
+    const auto* s = static_cast<const unsigned char*>(src) + static_cast<std::size_t>(sc * sb);
+    auto* d = static_cast<unsigned char*>(dst) + static_cast<std::size_t>(dc * db);
+    const std::size_t ss = static_cast<std::size_t>(sch * sb),
+                      ds = static_cast<std::size_t>(dch * db);
+    for (std::size_t i = 0; i < n; ++i, s += ss, d += ds) {
+        if (st == dt) {
+            std::memcpy(d, s, static_cast<std::size_t>(sb));
+            continue;
+        }
+        float v = 0.0f;
+        switch (st) {
+        case PixelType::UInt8:
+            v = load(*s);
+            break;
+        case PixelType::UInt16: {
+            std::uint16_t u;
+            std::memcpy(&u, s, 2);
+            v = load(u);
+            break;
+        }
+        case PixelType::Half: {
+            std::uint16_t u;
+            std::memcpy(&u, s, 2);
+            v = halfToFloat(u);
+            break;
+        }
+        case PixelType::Float:
+            std::memcpy(&v, s, 4);
+            break;
+        }
+        switch (dt) {
+        case PixelType::UInt8:
+            *d = toUnorm8(v);
+            break;
+        case PixelType::UInt16: {
+            const std::uint16_t u = toUnorm16(v);
+            std::memcpy(d, &u, 2);
+            break;
+        }
+        case PixelType::Half: {
+            const std::uint16_t u = floatToHalf(v);
+            std::memcpy(d, &u, 2);
+            break;
+        }
+        case PixelType::Float:
+            std::memcpy(d, &v, 4);
+            break;
+        }
+    }
+}
+
+} // namespace lut::formats

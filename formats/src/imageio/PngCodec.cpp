@@ -1,0 +1,254 @@
+// PNG, natively. Reading is libpng's, row by row (transforms: palette and low-depth grey expanded
+// to 8 bits, tRNS to alpha, 16-bit samples in host order; no gamma). Writing is ours, because
+// libpng compresses on one core: rows are filtered as libpng's default heuristic does (the filter
+// with the smallest sum of absolute values, per row), strips of about a megabyte are deflated in
+// parallel (each primed with the previous strip's last 32 KiB, as pigz does, and ended with a sync
+// flush so the raw deflate streams concatenate into one zlib stream) and written as IDAT chunks.
+// Metadata: every ancillary chunk of a PNG input (iCCP, gAMA, cHRM, sRGB, tEXt/zTXt/iTXt, eXIf,
+// pHYs, tIME ...) is copied verbatim to a PNG output, at its place; chunks tied to the palette or
+// to the colour type (PLTE, tRNS, hIST, sPLT, and bKGD/sBIT when the colour type or depth
+// changes) and unknown unsafe-to-copy chunks are not. From other formats: the ICC profile, EXIF
+// and text.
+// PNG: https://www.w3.org/TR/png/ (chunk layout, filters, the zlib stream).
+#include "imageio/ByteIO.h"
+#include "imageio/ImageCodec.h"
+
+#include "lut/Error.h"
+
+#include <png.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <future>
+#include <vector>
+
+namespace lut::formats {
+
+namespace {
+
+constexpr unsigned char kSignature[8] = {137, 'P', 'N', 'G', 13, 10, 26, 10};
+
+std::uint32_t be32(const unsigned char* p) {
+    return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
+           std::uint32_t(p[3]);
+}
+
+bool isType(const char* t, const char* name) {
+    return std::memcmp(t, name, 4) == 0;
+}
+
+// The first `max` bytes of a zlib stream, inflated (for iCCP).
+std::string inflateAll(const unsigned char* data, std::size_t n, std::size_t max) {
+    std::string out(std::min<std::size_t>(max, 1 << 16), '\0');
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK)
+        return {};
+    z.next_in = const_cast<unsigned char*>(data);
+    z.avail_in = static_cast<uInt>(n);
+    std::size_t have = 0;
+    int rc = Z_OK;
+    while (rc == Z_OK) {
+        if (have == out.size()) {
+            if (out.size() >= max)
+                break;
+            out.resize(std::min(max, out.size() * 2));
+        }
+        z.next_out = reinterpret_cast<unsigned char*>(out.data() + have);
+        z.avail_out = static_cast<uInt>(out.size() - have);
+        rc = inflate(&z, Z_NO_FLUSH);
+        have = out.size() - z.avail_out;
+    }
+    inflateEnd(&z);
+    out.resize(rc == Z_STREAM_END ? have : 0);
+    return out;
+}
+
+struct PngError {
+    std::string message;
+};
+
+void onError(png_structp png, png_const_charp msg) {
+    auto* e = static_cast<PngError*>(png_get_error_ptr(png));
+    if (e && e->message.empty())
+        e->message = msg ? msg : "libpng error";
+    png_longjmp(png, 1);
+}
+void onWarning(png_structp, png_const_charp) {} // libpng's warnings are not ours to print
+
+class PngSource : public ImageSource {
+public:
+    PngSource(const std::string& path, std::string memory) : m_in(path, std::move(memory)) {
+        scanChunks();
+        m_png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &m_error, onError, onWarning);
+        m_pngInfo = m_png ? png_create_info_struct(m_png) : nullptr;
+        if (!m_pngInfo)
+            throw Error(path + ": out of memory starting the PNG reader");
+        png_set_read_fn(m_png, this, [](png_structp png, png_bytep dst, png_size_t n) {
+            auto* self = static_cast<PngSource*>(png_get_io_ptr(png));
+            std::size_t got = 0;
+            try {
+                got = self->m_in.read(dst, n);
+            } catch (const std::exception& e) {
+                self->m_error.message = e.what();
+                png_error(png, "read error");
+            }
+            if (got != n)
+                png_error(png, "the file ends early (truncated)");
+        });
+        // Metadata was collected by scanChunks: libpng need not keep any ancillary chunk.
+        png_set_keep_unknown_chunks(m_png, PNG_HANDLE_CHUNK_NEVER, nullptr, 0);
+        if (setjmp(png_jmpbuf(m_png)))
+            fail();
+        png_read_info(m_png, m_pngInfo);
+        png_uint_32 w = 0, h = 0;
+        int depth = 0, colour = 0, interlace = 0;
+        png_get_IHDR(m_png, m_pngInfo, &w, &h, &depth, &colour, &interlace, nullptr, nullptr);
+        if (colour == PNG_COLOR_TYPE_PALETTE)
+            png_set_palette_to_rgb(m_png);
+        if (colour == PNG_COLOR_TYPE_GRAY && depth < 8)
+            png_set_expand_gray_1_2_4_to_8(m_png);
+        if (png_get_valid(m_png, m_pngInfo, PNG_INFO_tRNS))
+            png_set_tRNS_to_alpha(m_png);
+        if (depth == 16)
+            png_set_swap(m_png);
+        m_passes = png_set_interlace_handling(m_png);
+        png_read_update_info(m_png, m_pngInfo);
+        const int ch = png_get_channels(m_png, m_pngInfo);
+        checkImageSize(path, static_cast<int>(std::min<png_uint_32>(w, 1u << 30)),
+                       static_cast<int>(std::min<png_uint_32>(h, 1u << 30)), ch);
+        m_info.width = static_cast<int>(w);
+        m_info.height = static_cast<int>(h);
+        m_info.channels = ch;
+        m_info.format = "png";
+        m_info.type = depth == 16 ? PixelType::UInt16 : PixelType::UInt8;
+        m_info.bitDepth = m_info.bitsPerSample = depth == 16 ? 16 : 8;
+        m_info.compression = "zip";
+        m_info.channelNames = ch == 1   ? std::vector<std::string>{"Y"}
+                              : ch == 2 ? std::vector<std::string>{"Y", "A"}
+                              : ch == 3 ? std::vector<std::string>{"R", "G", "B"}
+                                        : std::vector<std::string>{"R", "G", "B", "A"};
+        m_info.alphaChannel = (ch == 2 || ch == 4) ? ch - 1 : -1;
+        m_meta->pngColourType = colour;
+        m_meta->pngBitDepth = depth;
+        m_metadata = m_meta;
+    }
+    ~PngSource() override { png_destroy_read_struct(&m_png, &m_pngInfo, nullptr); }
+
+    void readRows(int y0, int y1, void* dst) override {
+        if (y0 == 0) // before decoding: more pixels than the deflated data can hold is refused
+            checkImageSize(m_in.path(), m_info.width, m_info.height, m_info.channels, m_in.size(),
+                           1032.0);
+        const std::size_t rb = rowBytes(m_info);
+        readRowsAt(y0, y1, static_cast<png_bytep>(dst), rb);
+    }
+
+    void readRowsAt(int y0, int y1, png_bytep out, std::size_t rb) {
+        if (m_passes > 1) { // interlaced: the whole image once, then rows from it
+            if (m_frame.empty()) {
+                m_frame.resize(rb * static_cast<std::size_t>(m_info.height));
+                std::vector<png_bytep> rows(static_cast<std::size_t>(m_info.height));
+                for (int y = 0; y < m_info.height; ++y)
+                    rows[static_cast<std::size_t>(y)] =
+                        m_frame.data() + rb * static_cast<std::size_t>(y);
+                if (setjmp(png_jmpbuf(m_png)))
+                    fail();
+                png_read_image(m_png, rows.data());
+            }
+            std::memcpy(out, m_frame.data() + rb * static_cast<std::size_t>(y0),
+                        rb * static_cast<std::size_t>(y1 - y0));
+            return;
+        }
+        m_next = out;
+        m_rowBytes = rb;
+        if (setjmp(png_jmpbuf(m_png)))
+            fail();
+        for (int y = y0; y < y1; ++y, m_next += m_rowBytes)
+            png_read_row(m_png, m_next, nullptr);
+    }
+
+    void finish() override {
+        if (setjmp(png_jmpbuf(m_png)))
+            fail();
+        png_read_end(m_png, nullptr); // through IEND: a truncated file is an error here
+    }
+
+private:
+    [[noreturn]] void fail() {
+        std::string msg = m_error.message.empty() ? "corrupt PNG" : m_error.message;
+        if (msg.rfind(m_in.path() + ":", 0) == 0)
+            throw Error(msg);
+        throw Error(m_in.path() + ": cannot read PNG: " + msg);
+    }
+
+    // The ancillary chunks, by walking the chunk headers (IDAT data is skipped, not read).
+    void scanChunks() {
+        const std::string sig = m_in.head(8);
+        if (sig.size() < 8 || std::memcmp(sig.data(), kSignature, 8) != 0)
+            throw Error(m_in.path() + ": not a PNG file");
+        m_meta = std::make_shared<ImageMetadata>();
+        m_meta->format = "png";
+        std::uint64_t at = 8;
+        int place = 0;
+        unsigned char hdr[8];
+        while (at + 8 <= m_in.size() && m_in.pread(hdr, 8, at) == 8) {
+            const std::uint32_t len = be32(hdr);
+            const char* type = reinterpret_cast<const char*>(hdr + 4);
+            if (isType(type, "IEND") || len > (1u << 30))
+                break;
+            if (isType(type, "PLTE"))
+                place = std::max(place, 1);
+            else if (isType(type, "IDAT"))
+                place = 2;
+            const bool critical = (type[0] & 0x20) == 0;
+            const bool skip =
+                critical || isType(type, "tRNS") || isType(type, "hIST") || isType(type, "sPLT");
+            if (!skip && len <= (16u << 20) && at + 12 + len <= m_in.size()) {
+                ImageMetadata::PngChunk c;
+                std::memcpy(c.type, type, 4);
+                c.data.resize(len);
+                m_in.pread(c.data.data(), len, at + 8);
+                c.place = place == 2 ? 2 : place;
+                collectCommon(c);
+                m_meta->pngChunks.push_back(std::move(c));
+            }
+            at += 12 + static_cast<std::uint64_t>(len);
+        }
+    }
+
+    void collectCommon(const ImageMetadata::PngChunk& c) {
+        const std::string& d = c.data;
+        if (isType(c.type, "iCCP")) {
+            const std::size_t nul = d.find('\0');
+            if (nul != std::string::npos && nul + 2 <= d.size())
+                m_meta->icc = inflateAll(reinterpret_cast<const unsigned char*>(d.data()) + nul + 2,
+                                         d.size() - nul - 2, 16u << 20);
+        } else if (isType(c.type, "eXIf")) {
+            m_meta->exif = d;
+        } else if (isType(c.type, "tEXt")) {
+            const std::size_t nul = d.find('\0');
+            if (nul != std::string::npos)
+                m_meta->text.emplace_back(d.substr(0, nul), d.substr(nul + 1));
+        }
+    }
+
+    ByteReader m_in;
+    png_structp m_png = nullptr;
+    png_infop m_pngInfo = nullptr;
+    PngError m_error;
+    int m_passes = 1;
+    png_bytep m_next = nullptr; // members, not locals: longjmp may clobber locals
+    std::size_t m_rowBytes = 0;
+    std::vector<unsigned char> m_frame;
+    std::shared_ptr<ImageMetadata> m_meta;
+};
+
+} // namespace
+
+std::unique_ptr<ImageSource> openPngSource(const std::string& path, std::string memory) {
+    return std::make_unique<PngSource>(path, std::move(memory));
+}
+
+} // namespace lut::formats

@@ -1,0 +1,63 @@
+#pragma once
+// The one rule for every file lutkit writes (every subcommand that writes, through one call, so
+// the rule cannot differ between them):
+//  - "-" is standard output. A character device, FIFO or socket, and any path under /dev or /proc
+//    (/dev/stdout, /dev/null, /proc/self/fd/1), is written in place: opened and written, never
+//    replaced by renaming a file over it.
+//  - A folder is never an output file ("OUT: is a folder"), and no folder is ever created for a
+//    file output; the folder it goes in must exist.
+//  - An existing regular file is replaced only when the caller says so (ExistingOutput::Replace;
+//    lutkit's -y/--overwrite); Skip leaves it alone (-n/--no-clobber); Refuse throws
+//    OutputExistsError, and the file's bytes stay as they were.
+//  - An output is never one of the command's inputs: the same path, a symbolic link or a hard
+//    link to it (checkNotSameFile on each input; "-" and "" are skipped).
+//  - A symbolic link to a regular file is written through: the file it names is replaced and the
+//    link stays.
+// Regular files are then written through a temporary sibling renamed into place
+// (lut/io/OutputFile.h), so a failed write leaves the old file as it was.
+#include "lut/Error.h"
+
+#include <string>
+#include <vector>
+
+namespace lut {
+
+enum class ExistingOutput { Refuse, Replace, Skip };
+
+enum class OutputKind {
+    NewFile,      // nothing there yet
+    ExistingFile, // a regular file that will be replaced (ExistingOutput::Replace)
+    Stdout,       // "-"
+    Special,      // device, FIFO, socket, /dev/..., /proc/...: written in place
+};
+
+struct OutputTarget {
+    std::string path;      // as the caller gave it (for messages)
+    std::string writePath; // where the bytes go: path, or the file a symbolic link names
+    OutputKind kind = OutputKind::NewFile;
+    bool skip = false; // ExistingOutput::Skip and the file exists: write nothing
+    bool inPlace() const { return kind == OutputKind::Stdout || kind == OutputKind::Special; }
+};
+
+// "OUT: already exists (not replaced)". Programs add how to allow it (lutkit names -y).
+class OutputExistsError : public Error {
+public:
+    explicit OutputExistsError(const std::string& path);
+    const std::string& path() const { return m_path; }
+
+private:
+    std::string m_path;
+};
+
+// Applies the rule to one output path; never creates, opens or changes anything. Throws
+// OutputExistsError, or lut::Error naming the path ("is a folder", "folder DIR does not exist",
+// "output is the same file as input IN").
+OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
+                         const std::vector<std::string>& inputs = {});
+
+// Whether path stands for standard input or output ("-").
+inline bool isStdStream(const std::string& path) {
+    return path == "-";
+}
+
+} // namespace lut

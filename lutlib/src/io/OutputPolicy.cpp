@@ -1,0 +1,86 @@
+#include "lut/io/OutputPolicy.h"
+
+#include "lut/io/AtomicFile.h"
+
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sys/stat.h>
+
+namespace fs = std::filesystem;
+
+namespace lut {
+
+OutputExistsError::OutputExistsError(const std::string& path)
+    : Error(path + ": already exists (not replaced)"), m_path(path) {}
+
+namespace {
+
+bool underDevOrProc(const std::string& path) {
+    std::error_code ec;
+    const std::string abs = fs::absolute(path, ec).lexically_normal().string();
+    return abs.rfind("/dev/", 0) == 0 || abs.rfind("/proc/", 0) == 0;
+}
+
+std::string folderOf(const std::string& path) {
+    const fs::path parent = fs::path(path).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+}
+
+} // namespace
+
+OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
+                         const std::vector<std::string>& inputs) {
+    OutputTarget t;
+    t.path = path;
+    t.writePath = path;
+    if (path.empty())
+        throw Error("no output file named");
+    if (isStdStream(path)) {
+        t.kind = OutputKind::Stdout;
+        return t;
+    }
+    if (path.back() == '/')
+        throw Error(path + ": is a folder name, not a file");
+    for (const auto& in : inputs)
+        if (!in.empty() && !isStdStream(in))
+            checkNotSameFile(in, path);
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        const int err = errno;
+        if (err != ENOENT)
+            throw Error(path + ": cannot write: " + std::strerror(err));
+        struct stat lst {};
+        if (::lstat(path.c_str(), &lst) == 0) // a dangling symbolic link: never write through it
+            throw Error(path + ": is a symbolic link to a missing file; not written");
+        if (underDevOrProc(path))
+            throw Error(path + ": no such device");
+        const std::string dir = folderOf(path);
+        struct stat dst {};
+        if (::stat(dir.c_str(), &dst) != 0 || !S_ISDIR(dst.st_mode))
+            throw Error(path + ": folder " + dir + " does not exist");
+        t.kind = OutputKind::NewFile;
+        return t;
+    }
+    if (S_ISDIR(st.st_mode))
+        throw Error(path + ": is a folder, not a file");
+    if (!S_ISREG(st.st_mode) || underDevOrProc(path)) {
+        t.kind = OutputKind::Special;
+        return t;
+    }
+    if (rule == ExistingOutput::Refuse)
+        throw OutputExistsError(path);
+    t.kind = OutputKind::ExistingFile;
+    t.skip = rule == ExistingOutput::Skip;
+    struct stat lst {};
+    if (::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
+        char buf[PATH_MAX];
+        if (::realpath(path.c_str(), buf))
+            t.writePath = buf; // replace the file the link names; the link stays
+    }
+    return t;
+}
+
+} // namespace lut

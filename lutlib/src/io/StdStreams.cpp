@@ -1,0 +1,46 @@
+#include "lut/io/StdStreams.h"
+
+#include "lut/io/OutputFile.h"
+
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
+
+namespace lut {
+
+std::string readStandardInput(std::size_t maxBytes) {
+    std::string bytes;
+    char buf[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            throw Error(std::string("-: cannot read standard input: ") + std::strerror(errno));
+        }
+        if (n == 0)
+            break;
+        if (bytes.size() + static_cast<std::size_t>(n) > maxBytes)
+            throw LimitError("-: standard input is over the limit of " + std::to_string(maxBytes) +
+                             " bytes");
+        bytes.append(buf, static_cast<std::size_t>(n));
+    }
+    if (bytes.empty())
+        throw Error("-: standard input is empty");
+    return bytes;
+}
+
+Diagnostics writeLutFile(const Format& format, const std::string& path, const LutFile& lut,
+                         const FormatOptions& options, std::string* writtenBytes) {
+    const OutputTarget target = checkOutput(path, ExistingOutput::Replace);
+    if (!target.inPlace())
+        return format.write(target.writePath, lut, options);
+    Diagnostics d;
+    std::string bytes = format.writeMemory(lut, path, options, &d);
+    writeOutputBytes(target, bytes);
+    if (writtenBytes)
+        *writtenBytes = std::move(bytes);
+    return d;
+}
+
+} // namespace lut
