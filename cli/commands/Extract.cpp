@@ -67,7 +67,7 @@ int runExtract(const ExtractOptions& o) {
     fo.layout = o.layout;
     const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
     printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
-    std::cout << "wrote " << file.cube->size() << "^3 " << toString(eo.target)
+    std::cout << "wrote " << file.cube->size() << "^3 " << toString(res.target)
               << " LUT: " << o.output << "\n";
     return kExitOk;
 }

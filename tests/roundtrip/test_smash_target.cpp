@@ -185,7 +185,7 @@ TEST(SmashTarget, GameShowsTheEditedScreenshot) {
             "best 16^3 "
             "LUT: max %.2f mean %.3f; worst excess %.2f; predicted in-game %.2f max %.3f mean\n",
             name, c.maxSteps, c.meanSteps, c.pixels, ob.maxSteps, ob.meanSteps, c.maxExcess,
-            r.gameError.maxSteps8(), r.gameError.meanSteps8());
+            r.expected.overall.maxSteps, r.expected.overall.meanSteps);
         // On every pixel within 2 steps of what the best possible 16^3 game LUT shows (the game's
         // own lattice cannot follow a clamped saturation between its points: 8 steps there)...
         EXPECT_LE(c.maxExcess, 2.0 + 1e-3) << name;
@@ -197,7 +197,7 @@ TEST(SmashTarget, GameShowsTheEditedScreenshot) {
         // The report is an honest bound for what the scene showed, up to the screenshot's own
         // 8-bit rounding (which a steep edit such as levels near its black point magnifies: the
         // best LUT shows the same there).
-        EXPECT_LE(c.maxSteps, std::max(r.gameError.maxSteps8(), ob.maxSteps) + 2.0) << name;
+        EXPECT_LE(c.maxSteps, std::max(r.expected.overall.maxSteps, ob.maxSteps) + 2.0) << name;
     }
 }
 

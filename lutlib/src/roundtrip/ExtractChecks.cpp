@@ -1,7 +1,7 @@
 // Checks on a read patch before extract builds a LUT; see ExtractChecks.h.
 #include "roundtrip/ExtractChecks.h"
 
-#include "roundtrip/GameDisplay.h"
+#include "pipeline/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>
@@ -162,12 +162,19 @@ void checkPatch(const PatchReading& patch, ExtractResult& res) {
                                  "the edit is not a per-pixel colour function",
                                  double(res.suspiciousEntries), double(blocks)));
     }
+    // A stage patch's inputs are the stage LUT's picture: known only when the LUT was given.
+    const bool stage = pl.lattice == PatchLattice::SmashStage;
+    if (stage && !patch.inputs)
+        return;
     std::size_t clipped = 0, total = 0;
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r) {
                 const glm::vec3 v = patch.values.at(r, g, b);
-                const float in[3] = {patch.axis[r], patch.axis[g], patch.axis[b]};
+                const glm::vec3 inputs =
+                    stage ? patch.inputs->at(r, g, b)
+                          : glm::vec3(patch.axis[r], patch.axis[g], patch.axis[b]);
+                const float in[3] = {inputs.x, inputs.y, inputs.z};
                 for (int c = 0; c < 3; ++c) {
                     ++total;
                     const bool lo = v[c] <= 0.5f / 255.0f, hi = v[c] >= 1.0f - 0.5f / 255.0f;
@@ -183,19 +190,24 @@ void checkPatch(const PatchReading& patch, ExtractResult& res) {
                                  "bring them back",
                                  100.0 * double(clipped) / double(total), double(clipped),
                                  double(total)));
-    checkGreys(patch, res);
+    if (!stage)
+        checkGreys(patch, res);
 }
 
-ErrorStats subLatticeError(const PatchReading& patch) {
+SubLattice subLatticeCheck(const PatchReading& patch) {
     const int n = patch.values.size();
-    ErrorAccumulator acc;
+    SubLattice out;
+    out.residual = Lut3D(n);
     if (n < 3)
-        return acc.result();
+        return out;
     std::vector<int> keep;
+    std::vector<char> kept(n, 0);
     for (int i = 0; i < n; i += 2)
         keep.push_back(i);
     if (keep.back() != n - 1)
         keep.push_back(n - 1);
+    for (int i : keep)
+        kept[i] = 1;
     const int m = static_cast<int>(keep.size());
     Lut3D sub(m);
     std::vector<float> subAxis(m);
@@ -206,17 +218,44 @@ ErrorStats subLatticeError(const PatchReading& patch) {
             for (int r = 0; r < m; ++r)
                 sub.at(r, g, b) = patch.values.at(keep[r], keep[g], keep[b]);
     const PatchFunction coarse(sub, subAxis);
+    std::vector<double> steps;
     for (int b = 0; b < n; ++b)
         for (int g = 0; g < n; ++g)
             for (int r = 0; r < n; ++r) {
-                if (r % 2 == 0 && g % 2 == 0 && b % 2 == 0)
+                if (kept[r] && kept[g] && kept[b])
                     continue;
                 const glm::vec3 p = coarse(glm::vec3(patch.axis[r], patch.axis[g], patch.axis[b]));
                 const glm::vec3 t = patch.values.at(r, g, b);
-                for (int c = 0; c < 3; ++c)
-                    acc.add(p[c], t[c]);
+                glm::vec3 res;
+                for (int c = 0; c < 3; ++c) {
+                    res[c] = std::fabs(p[c] - t[c]) * 255.0f;
+                    steps.push_back(res[c]);
+                }
+                out.residual.at(r, g, b) = res;
             }
-    return acc.result();
+    out.stats = summariseSteps(steps);
+    // kept entries: the largest residual among their neighbours
+    Lut3D spread = out.residual;
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                if (!(kept[r] && kept[g] && kept[b]))
+                    continue;
+                glm::vec3 v(0.0f);
+                for (int db = -1; db <= 1; ++db)
+                    for (int dg = -1; dg <= 1; ++dg)
+                        for (int dr = -1; dr <= 1; ++dr) {
+                            const int rr = r + dr, gg = g + dg, bb = b + db;
+                            if (rr < 0 || gg < 0 || bb < 0 || rr >= n || gg >= n || bb >= n)
+                                continue;
+                            const glm::vec3 o = out.residual.at(rr, gg, bb);
+                            for (int c = 0; c < 3; ++c)
+                                v[c] = std::max(v[c], o[c]);
+                        }
+                spread.at(r, g, b) = v;
+            }
+    out.residual = std::move(spread);
+    return out;
 }
 
 } // namespace lut::detail

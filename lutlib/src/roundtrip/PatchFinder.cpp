@@ -49,7 +49,6 @@ glm::vec3 cellMean(const ImageView& img, int fx, int fy, int cell, int cx, int c
 }
 
 // Tries to read a frame whose top-left pixel is (fx, fy) with cells of `cell` pixels.
-// Tries to read a frame whose top-left pixel is (fx, fy) with cells of `cell` pixels.
 bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, float minSep,
                  PatchPlacement& out, double* score = nullptr) {
     double spread = 0.0; // how far the cells sit from their symbol, relative to the separation
@@ -83,9 +82,18 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
         bit = da < db ? 1 : 0;
         return true;
     };
-    // The geometry bits sit on the inner ring's top row; they say how long the ring is.
+    // The geometry bits sit on the inner ring's top row; they say how long the ring is. The sync
+    // byte says which header version follows.
     detail::HeaderBits bits{};
-    for (int i = 0; i < detail::kGeometryBits; ++i)
+    for (int i = 0; i < detail::kSyncBits; ++i)
+        if (!bitAt(1 + i, 1, bits[i]))
+            return false;
+    const int version = detail::versionFromSync(bits);
+    if (version == 0)
+        return false;
+    const int geometryBits = detail::geometryBitCount(version);
+    const int totalBits = detail::headerBitCount(version);
+    for (int i = detail::kSyncBits; i < geometryBits; ++i)
         if (!bitAt(1 + i, 1, bits[i]))
             return false;
     detail::MarkerHeader header;
@@ -98,14 +106,16 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
         return false;
     }
     const int fw = cw + 4, fh = ch + 4;
-    if (fw - 2 < detail::kMinHeaderRow)
+    if (fw - 2 < geometryBits + 2)
         return false;
     if (static_cast<long long>(fx) + static_cast<long long>(fw) * cell > img.width ||
         static_cast<long long>(fy) + static_cast<long long>(fh) * cell > img.height || fx < 0 ||
         fy < 0)
         return false;
     const auto ring = detail::innerRing(fw, fh);
-    for (int i = detail::kGeometryBits; i < detail::kHeaderBits; ++i)
+    if (static_cast<int>(ring.size()) < totalBits)
+        return false;
+    for (int i = geometryBits; i < totalBits; ++i)
         if (!bitAt(ring[i].first, ring[i].second, bits[i]))
             return false;
     if (!detail::decodeHeader(bits, header))
@@ -120,6 +130,9 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
     out.frameY = fy;
     out.frameWidth = fw * cell;
     out.frameHeight = fh * cell;
+    out.headerVersion = header.version;
+    out.target = header.target;
+    out.stageDigest = header.stageDigest;
     if (score)
         *score = spread;
     return true;

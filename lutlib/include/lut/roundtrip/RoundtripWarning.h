@@ -10,6 +10,7 @@ enum class RoundtripWarning {
     Clipping,      // many entries at 0 or 1
     Rescaled,      // the image was upscaled by a whole number (read anyway)
     OutOfRange,    // smash: entries the game cannot reach, clamped
+    StageMismatch, // the original LUT given is not the one the patch was embedded for
     LowCoverage,   // fit: the pixels cover little of the cube
     FewColours,    // fit: too few distinct colours for a 3D fit
     Outliers,      // fit: pixels the robust fit down-weighted
