@@ -181,6 +181,12 @@ inline void quantize(Image& img, int bitDepth) {
         img, [](glm::dvec3 c) { return c; }, bitDepth);
 }
 
+// The smallest screenshot the default patches fit at the default scale 8 (the 12^3 game-display
+// strip is 1184 pixels wide, the 16^3 Hald patches 544 high), smaller than a Switch capture
+// (1280x720) so the tests stay quick.
+constexpr int kShotWidth = 1216;
+constexpr int kShotHeight = 560;
+
 // A screenshot-like image: smooth gradients, some saturated shapes, deterministic noise.
 inline Image syntheticScreenshot(int w = 400, int h = 260, int bitDepth = 8) {
     Image img(w, h, 1.0f);

@@ -91,7 +91,7 @@ TEST(SelfDescribing, TheHeaderRecordsWhatEmbedWasAskedFor) {
         {ExtractTarget::Smash, &warm, PatchLattice::SmashStage, 16, LutLayout::Hald},
     };
     for (const auto& c : cases) {
-        Image shot = syntheticScreenshot(1280, 720, 8);
+        Image shot = syntheticScreenshot(kShotWidth, kShotHeight, 8);
         EmbedOptions eo;
         eo.target = c.target;
         eo.originalLut = c.original;
@@ -136,7 +136,7 @@ TEST(SelfDescribing, TheDigestTellsStageLutsApart) {
     EXPECT_NE(lutDigest(Lut3D::identity(16)), lutDigest(Lut3D::identity(17)));
     EXPECT_EQ(digestText(0x3fa2), "3fa2");
     // extract warns when the original LUT given is not the one the patch was made for
-    Image shot = syntheticScreenshot(1280, 720, 8);
+    Image shot = syntheticScreenshot(kShotWidth, kShotHeight, 8);
     EmbedOptions eo;
     eo.originalLut = &warm;
     embedPatch(shot.view(), eo);
@@ -152,7 +152,7 @@ TEST(SelfDescribing, TheDigestTellsStageLutsApart) {
     EmbedOptions bad;
     bad.target = ExtractTarget::Raw;
     bad.originalLut = &warm;
-    Image again = syntheticScreenshot(1280, 720, 8);
+    Image again = syntheticScreenshot(kShotWidth, kShotHeight, 8);
     EXPECT_THROW(embedPatch(again.view(), bad), Error);
 }
 

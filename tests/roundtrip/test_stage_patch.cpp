@@ -60,7 +60,7 @@ TEST(StagePatch, ReadsTheEditWhereTheCompensationNeedsIt) {
                                                   {"hue shift", hueShiftEdit(40.0)}};
     for (const auto& [name, edit] : edits) {
         // the stage patch, extracted without being told the stage LUT
-        Image shot = syntheticScreenshot(1280, 720, 8);
+        Image shot = syntheticScreenshot(kShotWidth, kShotHeight, 8);
         EmbedOptions eo;
         eo.originalLut = &warm;
         embedPatch(shot.view(), eo);
@@ -70,7 +70,7 @@ TEST(StagePatch, ReadsTheEditWhereTheCompensationNeedsIt) {
         double stageMean = 0.0;
         const double stageMax = worstAtLattice(stage.lut, warm, edit, &stageMean);
         // the neutral patch interpolated at the stage's colours (the way without --original-lut)
-        Image old = syntheticScreenshot(1280, 720, 8);
+        Image old = syntheticScreenshot(kShotWidth, kShotHeight, 8);
         embedPatch(old.view(), EmbedOptions{});
         applyEdit(old, edit, 8);
         ExtractOptions o;

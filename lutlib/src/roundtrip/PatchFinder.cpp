@@ -27,6 +27,10 @@ using detail::maxDiff;
 constexpr float kSameTolerance = 2.5f / 255.0f;
 // Smallest difference between the two symbols we accept (after an edit squeezed them together).
 constexpr float kMinSeparation = 8.0f / 255.0f;
+// Pixels either side in which the edge scan looks for a larger change (an edge's own ringing).
+constexpr int kEdgeWindow = 12;
+// A marker period this close to a whole number is whole (edge peaks jitter under JPEG).
+constexpr double kWholePeriod = 0.1;
 
 glm::vec3 cellMean(const ImageView& img, int fx, int fy, int cell, int cx, int cy, bool& ok) {
     const int inset = cell >= 3 ? 1 : 0;
@@ -208,7 +212,7 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
     found = false;
     double scaledPeriod = 0.0;
     std::vector<double> edges;
-    std::vector<float> diffs;
+    std::vector<float> diffs, localMax;
     std::map<std::pair<int, int>, int> lastSeen;
     for (int y = 0; y < img.height; ++y) {
         edges.clear();
@@ -217,8 +221,18 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
         diffs.assign(static_cast<std::size_t>(img.width), 0.0f);
         for (int x = 1; x < img.width; ++x)
             diffs[x] = maxDiff(img.pixel(x, y), img.pixel(x - 1, y));
+        // Only changes of at least 45% of the largest one nearby count: JPEG rings and blocks
+        // around a marker edge, a much smaller change next to the edge's own.
+        localMax.assign(diffs.size(), 0.0f);
         for (int x = 1; x < img.width; ++x) {
-            if (diffs[x] <= 6.0f / 255.0f)
+            float m = 0.0f;
+            for (int k = std::max(1, x - kEdgeWindow);
+                 k <= std::min(img.width - 1, x + kEdgeWindow); ++k)
+                m = std::max(m, diffs[k]);
+            localMax[x] = m;
+        }
+        for (int x = 1; x < img.width; ++x) {
+            if (diffs[x] <= 6.0f / 255.0f || diffs[x] < 0.45f * localMax[x])
                 continue;
             // values are quantised: "equal" changes may differ by float rounding
             constexpr float kPlateau = 1.0f / 255.0f;
@@ -240,25 +254,39 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
             std::size_t j = i + 1;
             while (j + 1 < edges.size() && std::fabs((edges[j + 1] - edges[j]) - g0) <= 1.01)
                 ++j;
-            // keep the part whose segment middles alternate between two colours
+            // keep the part whose segment middles alternate between two colours (the middle half
+            // of a segment, averaged: JPEG leaves noise on single pixels)
             auto mid = [&](std::size_t m) {
-                return img.pixel(static_cast<int>((edges[m] + edges[m + 1]) * 0.5), y);
+                const double a = edges[m], b = edges[m + 1], q = 0.25 * (b - a);
+                const int x0 = static_cast<int>(std::ceil(a + q)),
+                          x1 = std::max(x0, static_cast<int>(std::floor(b - q)));
+                glm::dvec3 acc(0.0);
+                for (int x = x0; x <= x1; ++x)
+                    acc += glm::dvec3(img.pixel(x, y)[0], img.pixel(x, y)[1], img.pixel(x, y)[2]);
+                return glm::vec3(acc / static_cast<double>(x1 - x0 + 1));
             };
             std::size_t end = i + 1;
-            while (end + 1 <= j &&
-                   (end < i + 2 || (maxDiff(mid(end), mid(end - 2)) <= 12.0f / 255.0f &&
-                                    maxDiff(mid(end), mid(end - 1)) >= kMinSeparation)))
+            while (end + 1 <= j) {
+                if (end >= i + 2) {
+                    const float sep = maxDiff(mid(end), mid(end - 1));
+                    if (sep < kMinSeparation ||
+                        maxDiff(mid(end), mid(end - 2)) > std::max(12.0f / 255.0f, 0.25f * sep))
+                        break;
+                }
                 ++end;
+            }
             const std::size_t count = end - i;
             if (count >= 20) {
                 j = end;
                 const double period = (edges[j] - edges[i]) / static_cast<double>(count);
-                bool uniform = true;
-                for (std::size_t k = i; k < j; ++k)
-                    if (std::fabs(edges[k + 1] - edges[k] - period) > 1e-9)
-                        uniform = false;
+                // every gap within a pixel of a whole-number cell (JPEG moves an edge's peak by
+                // a pixel); a resize leaves a fractional mean (3, 4, 3, 4: 3.5)
                 const int cell = static_cast<int>(std::lround(period));
-                if (uniform && std::fabs(period - cell) < 1e-6) {
+                bool uniform = std::fabs(period - cell) < kWholePeriod;
+                for (std::size_t k = i; k < j && uniform; ++k)
+                    if (std::fabs(edges[k + 1] - edges[k] - cell) > 1.01)
+                        uniform = false;
+                if (uniform) {
                     const int e0 = static_cast<int>(std::lround(edges[i]));
                     const auto key = std::make_pair(e0, cell);
                     auto it = lastSeen.find(key);
