@@ -23,6 +23,8 @@ static ImageInfo infoFromSpec(const OIIO::ImageSpec& spec, const std::string& fo
     info.height = spec.height;
     info.channels = spec.nchannels;
     info.format = format;
+    info.colorSpace = spec.get_string_attribute("oiio:ColorSpace");
+    info.chromaSubsampling = spec.get_string_attribute("jpeg:subsampling");
     switch (spec.format.basetype) {
     case OIIO::TypeDesc::UINT8:
         info.bitDepth = 8;

@@ -12,7 +12,7 @@
 
 namespace lut::formats::module {
 
-constexpr int kImageIOApiVersion = 1;
+constexpr int kImageIOApiVersion = 2; // 2: ImageInfo has colorSpace and chromaSubsampling
 constexpr const char* kImageIOModuleName = "lutkit_imageio.so";
 constexpr const char* kImageIOEntryPoint = "lutkit_imageio_api";
 

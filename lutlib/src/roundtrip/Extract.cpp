@@ -7,6 +7,7 @@
 #include "lut/interp/Sampler.h"
 #include "lut/pipeline/SmashAuthoring.h"
 #include "lut/pipeline/SmashConstants.h"
+#include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/LutDigest.h"
 #include "lut/roundtrip/PatchFinder.h"
 #include "pipeline/GameDisplay.h"
@@ -104,6 +105,48 @@ void checkStage(const PatchReading& patch, const ExtractOptions& o, ExtractResul
                          "edit at exactly its colours)");
 }
 
+// Chroma subsampling from the file's metadata and the patch's pixels: said, and a warning when
+// the patch's blocks do not line up with the subsampling grid.
+void checkChromaSubsampling(const PatchReading& patch, const ExtractOptions& o,
+                            ExtractResult& res) {
+    const PatchPlacement& pl = patch.placement;
+    const std::string& meta = o.fileChromaSubsampling;
+    const std::string seen = patch.chroma.scheme();
+    const bool metaSubsampled = !meta.empty() && meta != "4:4:4";
+    const bool seenSubsampled = !seen.empty() && seen != "4:4:4";
+    if (!metaSubsampled && !seenSubsampled) {
+        if (!meta.empty())
+            addNote(res, "the file stores chroma at full resolution (" + meta + ")");
+        return;
+    }
+    std::string how;
+    if (!meta.empty())
+        how = "the file's metadata says " + meta;
+    if (!seen.empty())
+        how += std::string(how.empty() ? "" : "; ") + "the patch's pixels show " + seen +
+               formatMessage(" (colour edges %.0f%% as sharp as brightness edges)",
+                             100.0 * std::min(patch.chroma.chromaSharpness[0] /
+                                                  std::max(patch.chroma.lumaSharpness[0], 1e-9),
+                                              patch.chroma.chromaSharpness[1] /
+                                                  std::max(patch.chroma.lumaSharpness[1], 1e-9)));
+    const bool aligned = pl.cell >= kDefaultPatchScale && pl.patchX() % kJpegGrid == 0 &&
+                         pl.patchY() % kJpegGrid == 0 && pl.cell % 8 == 0;
+    if (aligned) {
+        addNote(res, "chroma subsampling: " + how +
+                         "; the patch's blocks line up with the JPEG grid, so colours blend only "
+                         "inside them (the expected error includes what is left)");
+        return;
+    }
+    addWarning(res, RoundtripWarning::ChromaSubsampling,
+               "chroma subsampling: " + how +
+                   ": the colour of each entry blended with its neighbours' (the patch's " +
+                   std::to_string(pl.cell) + "-pixel blocks at (" + std::to_string(pl.patchX()) +
+                   ", " + std::to_string(pl.patchY()) +
+                   ") are not on the 16-pixel JPEG grid). Save the graded image as PNG or TIFF "
+                   "(or JPEG with 4:4:4 chroma), or embed again with the default --scale 8 and "
+                   "do not crop before saving");
+}
+
 } // namespace
 
 ExtractResult extractLut(const ImageView& edited, const ExtractOptions& options) {
@@ -140,6 +183,7 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                                  double(pl.cell) / pl.scale, pl.cell, pl.scale));
     }
     detail::checkPatch(patch, res);
+    checkChromaSubsampling(patch, options, res);
 
     const detail::SubLattice sub = detail::subLatticeCheck(patch);
     res.subLattice = sub.stats;

@@ -320,6 +320,50 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
     return scaledPeriod;
 }
 
+// How sharply the outer ring's checkerboard changes at the cell boundaries a frame at (fx, fy)
+// would have: summed across the top row's cells (vertical boundaries) and down the left column
+// (horizontal ones), each at the cells' middle line.
+double boundaryEnergy(const ImageView& img, int fx, int fy, int cell, int fw, int fh) {
+    double e = 0.0;
+    auto diff = [&](int x0, int y0, int x1, int y1) {
+        if (x0 < 0 || y0 < 0 || x1 < 0 || y1 < 0 || x0 >= img.width || x1 >= img.width ||
+            y0 >= img.height || y1 >= img.height)
+            return 0.0;
+        return static_cast<double>(maxDiff(img.pixel(x0, y0), img.pixel(x1, y1)));
+    };
+    const int mid = cell / 2;
+    for (int k = 1; k < fw; ++k)
+        e += diff(fx + k * cell - 1, fy + mid, fx + k * cell, fy + mid);
+    for (int k = 1; k < fh; ++k)
+        e += diff(fx + mid, fy + k * cell - 1, fx + mid, fy + k * cell);
+    return e;
+}
+
+// A frame found on a softened image (JPEG, blur) may be read a pixel off: the cells' middles
+// still decode. Move it to where the checkerboard's boundaries are sharpest, if it decodes there.
+void refinePhase(const ImageView& img, PatchPlacement& p) {
+    const int cell = p.cell, fw = p.frameWidth / cell, fh = p.frameHeight / cell;
+    if (cell < 3)
+        return;
+    double best = boundaryEnergy(img, p.frameX, p.frameY, cell, fw, fh);
+    int bx = p.frameX, by = p.frameY;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const double e = boundaryEnergy(img, p.frameX + dx, p.frameY + dy, cell, fw, fh);
+            if (e > best * 1.02) {
+                best = e;
+                bx = p.frameX + dx;
+                by = p.frameY + dy;
+            }
+        }
+    if (bx == p.frameX && by == p.frameY)
+        return;
+    PatchPlacement moved;
+    if (decodeFrame(img, bx, by, cell, 12.0f / 255.0f, kMinSeparation, moved) &&
+        moved.size == p.size && moved.layout == p.layout)
+        p = moved;
+}
+
 } // namespace
 
 FindResult findPatch(const ImageView& img) {
@@ -336,6 +380,7 @@ FindResult findPatch(const ImageView& img) {
     if (!found)
         period = edgeScan(img, p, found);
     if (found) {
+        refinePhase(img, p);
         result.status = FindStatus::Found;
         result.placement = p;
         result.observedPeriod = static_cast<double>(p.cell);

@@ -144,6 +144,7 @@ PatchReading readPatch(const ImageView& img, const PatchPlacement& pl) {
             }
     out.storedBits = all8 ? 8 : all16 ? 16 : 32;
     out.frameSpread = frameSpread(img, pl);
+    out.chroma = checkChroma(img, pl);
     return out;
 }
 

@@ -16,6 +16,8 @@ const char* toString(RoundtripWarning w) {
         return "out-of-range";
     case RoundtripWarning::StageMismatch:
         return "stage-mismatch";
+    case RoundtripWarning::ChromaSubsampling:
+        return "chroma-subsampling";
     case RoundtripWarning::LowCoverage:
         return "low-coverage";
     case RoundtripWarning::FewColours:

@@ -13,6 +13,11 @@ struct ImageInfo {
     int bitDepth = 0; // 8 or 16 for integer files, 32 for float (half counts as 32), 0 other
     bool isFloat = false;
     std::string format; // OIIO format name ("png", "openexr", "tiff", ...)
+    // What the file says about its pixels (empty when it says nothing): the colour space
+    // ("sRGB", "Linear", ...: OIIO's oiio:ColorSpace) and a JPEG's chroma subsampling ("4:2:0",
+    // "4:2:2", "4:4:4": jpeg:subsampling).
+    std::string colorSpace;
+    std::string chromaSubsampling;
 };
 
 struct LoadedImage {

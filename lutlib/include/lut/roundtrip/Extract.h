@@ -29,6 +29,9 @@ struct ExtractOptions {
     const Lut3D* originalLut = nullptr;
     int outputSize = 0;  // 0: 16, or the patch size for a uniform patch and raw
     bool refine = false; // smash: least-squares refinement between lattice points
+    // What the file's metadata says about chroma subsampling ("4:2:0", "4:2:2", "4:4:4"; ""
+    // unknown: lut::formats::ImageInfo::chromaSubsampling); the patch's pixels are checked too.
+    std::string fileChromaSubsampling;
     int nthreads = 0;
 };
 

@@ -3,6 +3,7 @@
 // the edit as a function of any input (PatchFunction).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/roundtrip/ChromaCheck.h"
 #include "lut/roundtrip/PatchPlacement.h"
 
 #include <glm/vec3.hpp>
@@ -29,6 +30,7 @@ struct PatchReading {
     Lut3D blockSpread;        // per entry and channel: RMS deviation of the averaged pixels
     double frameSpread = 0.0; // largest distance of a marker cell from the mean of its symbol
     int storedBits = 32;      // 8 or 16 when every patch value is a multiple of 1/255 or 1/65535
+    ChromaCheck chroma;       // chroma subsampling seen in the patch's pixels
 };
 // Throws lut::Error when the placement does not fit inside the image.
 PatchReading readPatch(const ImageView& image, const PatchPlacement& placement);
