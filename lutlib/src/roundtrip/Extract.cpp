@@ -182,7 +182,9 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                                          "resize",
                                  double(pl.cell) / pl.scale, pl.cell, pl.scale));
     }
-    detail::checkPatch(patch, res);
+    const bool lossyFile = !options.fileChromaSubsampling.empty() ||
+                           (patch.chroma.measured && patch.chroma.scheme() != "4:4:4");
+    detail::checkPatch(patch, res, lossyFile);
     checkChromaSubsampling(patch, options, res);
 
     const detail::SubLattice sub = detail::subLatticeCheck(patch);

@@ -23,7 +23,9 @@ std::string formatMessage(const char* format, double a, double b = 0, double c =
 // global edit explains (res.suspiciousEntries), values clipped at 0 or 1 (res.clippedValues),
 // and a grey axis that follows a pure gamma or sRGB <-> 2.2 curve (res.gamma): a colour-profile
 // conversion rather than an edit.
-void checkPatch(const PatchReading& patch, ExtractResult& res);
+// When blocks are not uniform the likely cause is named (res.cause) with its fix; lossyFile says
+// the file is known to be lossy (a JPEG), which makes colour-only deviation a compression mark.
+void checkPatch(const PatchReading& patch, ExtractResult& res, bool lossyFile);
 
 // Sub-lattice check: the patch's even lattice points (and the last one) predict the others by
 // the same interpolation extract uses (spacing 2h instead of h).

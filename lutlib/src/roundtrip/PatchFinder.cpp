@@ -5,6 +5,7 @@
 
 #include "lut/Error.h"
 #include "roundtrip/ColourDistance.h"
+#include "roundtrip/MarkerComb.h"
 #include "roundtrip/MarkerFrame.h"
 
 #include <glm/geometric.hpp>
@@ -29,7 +30,8 @@ constexpr float kSameTolerance = 2.5f / 255.0f;
 constexpr float kMinSeparation = 8.0f / 255.0f;
 // Pixels either side in which the edge scan looks for a larger change (an edge's own ringing).
 constexpr int kEdgeWindow = 12;
-// A marker period this close to a whole number is whole (edge peaks jitter under JPEG).
+// A marker period at most this close to a whole number is whole (edge peaks jitter under JPEG;
+// longer combs must come closer).
 constexpr double kWholePeriod = 0.1;
 
 glm::vec3 cellMean(const ImageView& img, int fx, int fy, int cell, int cx, int cy, bool& ok) {
@@ -208,7 +210,7 @@ bool runScan(const ImageView& img, float tol, float minSep, PatchPlacement& out)
 // >= 20 strong edges at nearly constant spacing whose middles alternate between two colours.
 // A whole-number spacing is tried as a frame (cell centres survive a small blur); otherwise the
 // spacing is returned as evidence that the image was resized.
-double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
+double edgeScan(const ImageView& img, PatchPlacement& out, bool& found, detail::Comb& comb) {
     found = false;
     double scaledPeriod = 0.0;
     std::vector<double> edges;
@@ -254,6 +256,16 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
             std::size_t j = i + 1;
             while (j + 1 < edges.size() && std::fabs((edges[j + 1] - edges[j]) - g0) <= 1.01)
                 ++j;
+            if (!comb.seen && j - i >= 20) {
+                const double p = (edges[j] - edges[i]) / static_cast<double>(j - i);
+                if (std::fabs(p - std::round(p)) < kWholePeriod) {
+                    comb.seen = true;
+                    comb.y = y;
+                    comb.cell = static_cast<int>(std::lround(p));
+                    comb.edges.assign(edges.begin() + static_cast<std::ptrdiff_t>(i),
+                                      edges.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+                }
+            }
             // keep the part whose segment middles alternate between two colours (the middle half
             // of a segment, averaged: JPEG leaves noise on single pixels)
             auto mid = [&](std::size_t m) {
@@ -282,7 +294,10 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
                 // every gap within a pixel of a whole-number cell (JPEG moves an edge's peak by
                 // a pixel); a resize leaves a fractional mean (3, 4, 3, 4: 3.5)
                 const int cell = static_cast<int>(std::lround(period));
-                bool uniform = std::fabs(period - cell) < kWholePeriod;
+                // the comb's ends may each be a pixel off: over `count` cells that moves the
+                // mean period by up to 1.5/count
+                bool uniform = std::fabs(period - cell) <
+                               std::min(kWholePeriod, std::max(0.02, 1.5 / double(count)));
                 for (std::size_t k = i; k < j && uniform; ++k)
                     if (std::fabs(edges[k + 1] - edges[k] - cell) > 1.01)
                         uniform = false;
@@ -377,8 +392,9 @@ FindResult findPatch(const ImageView& img) {
     bool found = runScan(img, kSameTolerance, kMinSeparation, p) ||
                  runScan(img, 10.0f / 255.0f, 30.0f / 255.0f, p);
     double period = 0.0;
+    detail::Comb comb;
     if (!found)
-        period = edgeScan(img, p, found);
+        period = edgeScan(img, p, found, comb);
     if (found) {
         refinePhase(img, p);
         result.status = FindStatus::Found;
@@ -399,9 +415,11 @@ FindResult findPatch(const ImageView& img) {
         result.message = buf;
         return result;
     }
+    if (comb.seen && detail::diagnoseComb(img, comb, result))
+        return result;
     result.message =
-        "no LUT patch found: the marker frame is missing, cropped, painted over, or an "
-        "edit mapped its black and white to the same colour";
+        "no LUT patch found: the marker frame is missing, cropped, painted over, blurred or "
+        "resized past reading, or an edit mapped its black and white to the same colour";
     return result;
 }
 

@@ -6,6 +6,7 @@
 #include "interp/ScalarLattice.h"
 #include "lut/Error.h"
 #include "lut/io/Layout.h"
+#include "roundtrip/BlockAnalysis.h"
 #include "roundtrip/ColourDistance.h"
 #include "roundtrip/MarkerFrame.h"
 
@@ -145,6 +146,7 @@ PatchReading readPatch(const ImageView& img, const PatchPlacement& pl) {
     out.storedBits = all8 ? 8 : all16 ? 16 : 32;
     out.frameSpread = frameSpread(img, pl);
     out.chroma = checkChroma(img, pl);
+    out.blocks = detail::gatherBlockEvidence(img, pl);
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/pipeline/GameError.h"
+#include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
 #include "lut/roundtrip/PatchReader.h"
 #include "lut/roundtrip/RoundtripTarget.h"
@@ -56,6 +57,7 @@ struct ExtractResult {
     Diagnostics diagnostics;
     std::vector<RoundtripWarning> warnings;
     bool has(RoundtripWarning w) const;
+    EditCause cause = EditCause::None; // the likely cause when the patch is not a global edit
 
     ExpectedError expected;
     // The parts of the estimate, 8-bit steps:

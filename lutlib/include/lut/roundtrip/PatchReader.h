@@ -3,6 +3,7 @@
 // the edit as a function of any input (PatchFunction).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/roundtrip/BlockEvidence.h"
 #include "lut/roundtrip/ChromaCheck.h"
 #include "lut/roundtrip/PatchPlacement.h"
 
@@ -31,6 +32,7 @@ struct PatchReading {
     double frameSpread = 0.0; // largest distance of a marker cell from the mean of its symbol
     int storedBits = 32;      // 8 or 16 when every patch value is a multiple of 1/255 or 1/65535
     ChromaCheck chroma;       // chroma subsampling seen in the patch's pixels
+    BlockEvidence blocks;     // how the pixels inside the blocks deviate (the likely cause)
 };
 // Throws lut::Error when the placement does not fit inside the image.
 PatchReading readPatch(const ImageView& image, const PatchPlacement& placement);
