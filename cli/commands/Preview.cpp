@@ -1,7 +1,9 @@
 // lutkit preview: an image through the post-processing chain (preset smash = the game's), with a
-// LUT, written display-encoded. Float inputs (EXR) are the linear scene; 8/16-bit inputs are
-// screenshots, decoded with the piecewise sRGB curve; --from-screenshot also undoes the game's
-// grading with --original-lut before grading with --lut (bloom cannot be undone).
+// LUT, written display-encoded. Which input is a screenshot and which a scene is the library's
+// rule (lut/pipeline/SceneKind.h, shared with the editor): 8/16-bit inputs are in-game
+// screenshots (the game's grading is undone with --original-lut before grading with --lut; bloom
+// cannot be undone), float inputs (EXR) and files tagged linear are linear scenes; the choice is
+// said per input and --from-screenshot / --scene override it.
 #include "commands/Preview.h"
 
 #include "Batch.h"
@@ -12,6 +14,7 @@
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/pipeline/SceneKind.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +22,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace lut::cli {
@@ -53,11 +57,11 @@ std::string paramText(const StageParam& p, bool current) {
 // The --help footer, generated from the stage registry and the presets.
 std::string previewFooter() {
     std::ostringstream os;
-    os << "Input: float images (EXR) are the linear scene; 8/16-bit images are decoded with the "
-          "sRGB curve.\n"
-          "--from-screenshot undoes the game's display encode and grading (with --original-lut, "
-          "default\n  neutral) before applying --lut; bloom already in the screenshot cannot be "
-          "undone.\n\nPresets (--preset):\n";
+    os << "Input: 8/16-bit images are in-game screenshots: the game's display encode and "
+          "grading (with\n  --original-lut, default neutral) are undone before --lut; bloom "
+          "already in a screenshot\n  cannot be undone. Float images (EXR) and files tagged "
+          "linear are linear scenes. The\n  choice is said for every input; --from-screenshot "
+          "and --scene override it.\n\nPresets (--preset):\n";
     for (const Preset preset : allPresets()) {
         const Pipeline p(preset);
         std::string aliases;
@@ -94,8 +98,8 @@ std::string previewFooter() {
           "Examples:\n"
           "  lutkit preview shot.png seen.png --lut grade.cube      # as Smash Ultimate shows "
           "it\n"
-          "  lutkit preview shot.png seen.png --from-screenshot --lut new.nutexb --original-lut "
-          "old.nutexb\n"
+          "  lutkit preview shot.png seen.png --lut new.nutexb --original-lut old.nutexb\n"
+          "  lutkit preview photo.png seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr out.png --preset filmic --lut grade.cube\n"
           "  lutkit preview frames/ -o seen/ --enable grain --stage grain.strength=0.05\n"
           "  lutkit preview --list-stages --preset cinematic";
@@ -156,10 +160,25 @@ int runPreview(const PreviewOptions& o) {
 
     return runBatch(jobs, o.threads, o.verbosity.quiet, [&](const BatchJob& j, int inner) {
         formats::LoadedImage img = formats::readImage(j.input);
-        // A screenshot holds display-encoded values whatever its bit depth.
-        const bool linear = img.info.isFloat && !o.fromScreenshot;
-        const Diagnostics notes = prepareSceneFrame(img.image.view(), linear, o.fromScreenshot,
-                                                    original.get(), settings.interpolation, inner);
+        // Screenshot or scene: the library's rule, or what the user said.
+        const SceneDecision scene =
+            decideSceneKind(SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
+                                          img.info.format},
+                            o.fromScreenshot ? std::optional<SceneKind>(SceneKind::Screenshot)
+                            : o.scene        ? std::optional<SceneKind>(SceneKind::Scene)
+                                             : std::nullopt);
+        Diagnostics notes =
+            prepareSceneFrame(img.image.view(), scene.storedIsLinear, scene.undoGrading,
+                              original.get(), settings.interpolation, inner);
+        Diagnostic said;
+        said.severity = Diagnostic::Severity::Info;
+        said.message = scene.reason;
+        notes.insert(notes.begin(), said);
+        if (original && !scene.undoGrading) {
+            Diagnostic ignored;
+            ignored.message = "--original-lut is ignored: a scene went through no grading";
+            notes.push_back(ignored);
+        }
         Pipeline pipeline(settings); // one per job: stages keep per-run buffers
         RunOptions run;
         run.nthreads = inner;
@@ -209,11 +228,15 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     sub->add_flag("--no-bloom", o->noBloom, "disable every bloom stage");
     addInterp(*sub, o->interp, "LUT interpolation (default trilinear, as the game's GPU)");
     auto* shot = sub->add_flag("--from-screenshot", o->fromScreenshot,
-                               "the input is an in-game screenshot: undo the game's grading first");
+                               "the inputs are in-game screenshots (the default for 8/16-bit "
+                               "files): undo the game's grading first");
+    sub->add_flag("--scene", o->scene,
+                  "the inputs are linear scenes (the default for float files; 8/16-bit files are "
+                  "sRGB-decoded)")
+        ->excludes(shot);
     sub->add_option("--original-lut", o->originalLut,
-                    "the LUT the screenshot was taken with (default neutral)")
-        ->type_name("FILE")
-        ->needs(shot);
+                    "the LUT the screenshots were taken with (default neutral)")
+        ->type_name("FILE");
     sub->add_option("--stage", o->stageSettings, "set a stage parameter (repeatable)")
         ->allow_extra_args(false)
         ->check(stageSettingValidator());

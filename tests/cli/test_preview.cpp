@@ -77,7 +77,7 @@ TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
     }
 }
 
-TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
+TEST(CliPreview, EightBitSceneIsSrgbDecodedAndRoundedToNearest) {
     const std::string dir = workDir();
     Image shot(8, 4);
     for (int y = 0; y < 4; ++y)
@@ -88,8 +88,11 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
             p[3] = 1.0f;
         }
     formats::writeImage(dir + "/shot.png", shot, {8, false, false});
-    const RunResult r = runCli("preview '" + dir + "/shot.png' '" + dir + "/out.png' --no-bloom");
+    // --scene: the 8-bit picture of a scene (not a screenshot, the default for 8-bit files)
+    const RunResult r =
+        runCli("preview '" + dir + "/shot.png' '" + dir + "/out.png' --no-bloom --scene");
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("a linear scene (an 8-bit png file"), std::string::npos) << r.err;
     const formats::LoadedImage got = formats::readImage(dir + "/out.png");
     EXPECT_EQ(got.info.bitDepth, 8);
     EXPECT_EQ(got.info.channels, 3);
@@ -112,6 +115,41 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
                 ++checked;
             }
     EXPECT_GT(checked, 80);
+}
+
+TEST(CliPreview, AnEightBitFileIsAScreenshotByDefaultAndSaysSo) {
+    // With the neutral LUT the game's picture of the game's picture is the picture: undoing the
+    // grading and grading again gives the screenshot back (the issue: treated as a scene it came
+    // out ~53 steps washed out).
+    const std::string dir = workDir();
+    Image shot(16, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) {
+            float* p = shot.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                p[c] = static_cast<float>(((x * 13 + y * 31 + c * 7) % 230) / 255.0);
+            p[3] = 1.0f;
+        }
+    formats::writeImage(dir + "/shot.png", shot, {8, false, false});
+    const RunResult r = runCli("preview '" + dir + "/shot.png' '" + dir + "/out.png' --no-bloom");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("an in-game screenshot (an 8-bit png file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--scene"), std::string::npos) << r.err;
+    const formats::LoadedImage got = formats::readImage(dir + "/out.png");
+    double worst = 0.0;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst,
+                                 std::fabs(got.image.pixel(x, y)[c] - shot.pixel(x, y)[c]) * 255.0);
+    EXPECT_LE(worst, 1.0);
+    // -q says nothing; --from-screenshot and --scene together are bad usage
+    const RunResult quiet =
+        runCli("preview '" + dir + "/shot.png' '" + dir + "/q.png' --no-bloom -q");
+    EXPECT_EQ(quiet.err, "");
+    EXPECT_EQ(runCli("preview '" + dir + "/shot.png' '" + dir + "/x.png' --from-screenshot --scene")
+                  .exitCode,
+              2);
 }
 
 TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {

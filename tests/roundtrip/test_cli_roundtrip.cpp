@@ -60,7 +60,7 @@ TEST(RoundtripCli, LatticeAcceptsGameDisplayAndItsAliasSmash) {
         const std::string out = dir + "/lattice-" + name + ".png";
         const auto r = runCli("embed " + q(shot) + " " + q(out) + " --lattice " + name);
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        EXPECT_NE(r.out.find("12^3 game-display-lattice"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("12^3 game-display patch for smash"), std::string::npos) << r.out;
         const auto img = formats::readImage(out);
         const FindResult f = findPatch(img.image.view());
         ASSERT_EQ(f.status, FindStatus::Found);
@@ -80,7 +80,7 @@ TEST(RoundtripCli, EmbedKeepsTheBitDepthAndTheScreenshot) {
         const std::string out = dir + "/embedded" + std::to_string(depth) + ".png";
         const auto r = runCli("embed " + q(shot) + " " + q(out) + " --corner bottom-right");
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        EXPECT_NE(r.out.find("12^3 game-display-lattice"), std::string::npos);
+        EXPECT_NE(r.out.find("12^3 game-display patch for smash"), std::string::npos);
         const auto img = formats::readImage(out);
         EXPECT_EQ(img.info.bitDepth, depth);
         const FindResult f = findPatch(img.image.view());
@@ -112,7 +112,7 @@ TEST(RoundtripCli, ExtractRawMatchesTheEdit) {
     const std::string dir = rtDir();
     const std::string shot = writeScreenshot(dir, 8);
     const std::string emb = dir + "/emb.png";
-    ASSERT_EQ(runCli("embed " + q(shot) + " " + q(emb) + " --size 16").exitCode, 0);
+    ASSERT_EQ(runCli("embed " + q(shot) + " " + q(emb) + " --target raw").exitCode, 0);
     const Edit f = saturationEdit();
     const std::string edited = editFile(emb, dir + "/edited.png", f);
     const std::string cube = dir + "/out.cube";

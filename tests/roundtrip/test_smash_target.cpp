@@ -343,3 +343,30 @@ TEST(SmashTarget, DefaultPatchIsTheMostAccurate) {
         EXPECT_LE(smashMax, 1.0) << ename; // the 8-bit rounding of the patch and of the edit
     }
 }
+
+TEST(SmashTarget, TheRefinementLowersTheMeanAndKeepsTheWhites) {
+    // A per-channel gamma: the white region (inputs above the brighten step's clip) wants white
+    // in every channel; an unguarded step once pushed entries there to 0.52 (67 steps dark).
+    const Image scene = loadScene();
+    Image shot = screenshot(scene, nullptr);
+    const PatchPlacement p = embedPatch(shot.view(), EmbedOptions{});
+    const Edit gamma = [](glm::dvec3 c) {
+        return glm::dvec3(std::pow(c.x, 0.8), std::pow(c.y, 0.9), std::pow(c.z, 1.1));
+    };
+    applyEdit(shot, gamma, 8);
+    ExtractOptions o;
+    o.refine = true;
+    const ExtractResult refined = extractLut(shot.view(), o);
+    ASSERT_TRUE(refined.refined);
+    o.refine = false;
+    const ExtractResult exact = extractLut(shot.view(), o);
+    const Compare cr = compareWithGame(scene, shot, refined.lut, p);
+    const Compare ce = compareWithGame(scene, shot, exact.lut, p);
+    std::printf("[ measured ] gamma edit, game vs edited screenshot: exact max %.2f mean %.3f, "
+                "refined max %.2f mean %.3f 8-bit steps\n",
+                ce.maxSteps, ce.meanSteps, cr.maxSteps, cr.meanSteps);
+    EXPECT_LE(cr.meanSteps, ce.meanSteps + 0.02);
+    EXPECT_LE(cr.maxSteps, ce.maxSteps + 1.0);
+    EXPECT_LE(refined.modelError.meanSteps, refined.exactModelError.meanSteps);
+    EXPECT_LE(refined.modelError.maxSteps, refined.exactModelError.maxSteps + 1.0);
+}

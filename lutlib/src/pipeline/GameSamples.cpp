@@ -138,10 +138,12 @@ const ShownTable& shownTable() {
     return table;
 }
 
-constexpr double kRidge = 1e-6;    // towards the exact entry, for unconstrained entries
-constexpr double kMinSlope = 0.02; // display slope floor (weights stay positive)
-constexpr int kOuterRounds = 4;    // re-weightings (the display is not linear in the entry)
-constexpr int kInnerSweeps = 6;    // Gauss-Seidel sweeps per weighting
+constexpr double kEdgeTolerance = 1e-6;  // wanted this close to white or black is white/black
+constexpr double kMaxStep = 4.0 / 255.0; // per Gauss-Seidel update
+constexpr double kRidge = 1e-6;          // towards the exact entry, for unconstrained entries
+constexpr double kMinSlope = 0.02;       // display slope floor (weights stay positive)
+constexpr int kOuterRounds = 4;          // re-weightings (the display is not linear in the entry)
+constexpr int kInnerSweeps = 6;          // Gauss-Seidel sweeps per weighting
 constexpr int kMaxIntegerSweeps = 4;
 
 // One channel: the display-space least squares solved as weighted least squares in LUT space
@@ -157,7 +159,8 @@ void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exa
     for (std::size_t p = 0; p < count; ++p) {
         const double t = sm.wanted(p, c);
         target[p] = lutForShown(t, sm.s(p, c));
-        side[p] = t >= 1.0 - 1e-9 ? 1 : t <= 1e-9 ? -1 : 0;
+        // (a float blend of white entries may miss 1 by a rounding)
+        side[p] = t >= 1.0 - kEdgeTolerance ? 1 : t <= kEdgeTolerance ? -1 : 0;
     }
     const std::vector<double> ex = channel(exact, c);
     std::vector<double> v(ex.size());
@@ -191,7 +194,10 @@ void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exa
                             num += weight[p] * w * r;
                             den += weight[p] * w * w;
                         });
-                        const double next = clampUnit(v[e] - num / den);
+                        // a step at most kMaxStep: the weights are from the round's start, and
+                        // a long step past the white or black point would overshoot
+                        const double step = std::clamp(-num / den, -kMaxStep, kMaxStep);
+                        const double next = clampUnit(v[e] + step);
                         const double delta = next - v[e];
                         if (delta == 0.0)
                             continue;
@@ -279,7 +285,8 @@ void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exa
 
 } // namespace
 
-GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads) {
+GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads,
+                        std::vector<double>* perSample) {
     const std::size_t count = sm.size();
     std::vector<double> steps(3 * count);
     const std::vector<double> ch[3] = {channel(lut, 0), channel(lut, 1), channel(lut, 2)};
@@ -295,6 +302,11 @@ GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads) {
                 steps[3 * p + c] = (shown - sm.wanted(p, c)) * 255.0;
             }
     });
+    if (perSample) {
+        perSample->resize(steps.size());
+        for (std::size_t i = 0; i < steps.size(); ++i)
+            (*perSample)[i] = std::fabs(steps[i]);
+    }
     return summariseSteps(steps);
 }
 

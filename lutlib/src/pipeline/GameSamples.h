@@ -37,7 +37,9 @@ private:
 
 // What the game shows at each sample with `lut` (values as given: round them first to measure the
 // 8-bit nutexb) against the wanted colour, in 8-bit display steps over every channel value.
-GameError gameErrorOver(const GameSamples& samples, const Lut3D& lut, int nthreads);
+// perSample (optional) receives the error of every channel value, 3 per sample.
+GameError gameErrorOver(const GameSamples& samples, const Lut3D& lut, int nthreads,
+                        std::vector<double>* perSample = nullptr);
 
 // The least-squares refinement (SmashAuthoring.h): per channel, the entries minimising the squared
 // display error over the samples, started from `exact` (clamped), weighted by the display's slope

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace lut {
@@ -88,6 +89,67 @@ glm::dvec3 inputForShown(const glm::dvec3& d, const StageModel& stage, std::size
     return glm::dvec3(smashEncode(scene));
 }
 
+// The grid's cell centres (offset by half a sample): where the error is reported besides the grid
+// itself, so a refinement fitted to the grid is not measured only where it was fitted.
+GameSamples offsetGrid(const WantedDisplay& wanted, int k) {
+    GameSamples samples(kSmashLutSize);
+    const int m = (kSmashLutSize - 1) * k;
+    samples.reserve(static_cast<std::size_t>(m) * m * m);
+    for (int b = 0; b < m; ++b)
+        for (int g = 0; g < m; ++g)
+            for (int r = 0; r < m; ++r) {
+                const glm::dvec3 s = (glm::dvec3(r, g, b) + 0.5) / static_cast<double>(m);
+                samples.add(s, wanted(s));
+            }
+    return samples;
+}
+
+// The largest error between the samples of an m^3 grid (errors given per sample and channel,
+// red fastest): along each axis, between two neighbouring samples a, b the error can peak where
+// a kink sits (a clamp of the edit, the 8-bit steps of the LUT); its height is at most the two
+// samples' mean plus half the steeper of the slopes just outside them times the spacing.
+double peakBetween(const std::vector<double>& e, int m) {
+    auto at = [&](int r, int g, int b, int c) {
+        return e[3 * (static_cast<std::size_t>(r) +
+                      static_cast<std::size_t>(m) * (g + static_cast<std::size_t>(m) * b)) +
+                 static_cast<std::size_t>(c)];
+    };
+    double best = 0.0;
+    for (int b = 0; b < m; ++b)
+        for (int g = 0; g < m; ++g)
+            for (int r = 0; r < m; ++r)
+                for (int axis = 0; axis < 3; ++axis) {
+                    int q[3] = {r, g, b};
+                    if (q[axis] + 1 >= m)
+                        continue;
+                    for (int c = 0; c < 3; ++c) {
+                        auto v = [&](int offset) {
+                            int t[3] = {r, g, b};
+                            t[axis] = std::clamp(q[axis] + offset, 0, m - 1);
+                            return at(t[0], t[1], t[2], c);
+                        };
+                        const double ea = v(0), eb = v(1);
+                        const double slope = std::max(std::fabs(ea - v(-1)), std::fabs(v(2) - eb));
+                        best = std::max(best, 0.5 * (ea + eb) + 0.5 * slope);
+                    }
+                }
+    return best;
+}
+
+// The error over the samples and, when given, the offset grid: the larger of each statistic
+// (means over both together).
+GameError reportOver(const GameSamples& a, const GameSamples* b, const Lut3D& lut, int nthreads) {
+    const GameError ea = detail::gameErrorOver(a, lut, nthreads);
+    if (!b)
+        return ea;
+    const GameError eb = detail::gameErrorOver(*b, lut, nthreads);
+    GameError e = GameError::worst(ea, eb);
+    e.count = ea.count + eb.count;
+    e.meanSteps = (ea.meanSteps * double(ea.count) + eb.meanSteps * double(eb.count)) /
+                  double(std::max<std::size_t>(1, e.count));
+    return e;
+}
+
 GameSamples makeSamples(const WantedDisplay& wanted, const StageModel& stage,
                         const SmashAuthoringOptions& o, std::string& over) {
     GameSamples samples(kSmashLutSize);
@@ -118,7 +180,8 @@ GameSamples makeSamples(const WantedDisplay& wanted, const StageModel& stage,
                 const glm::dvec3 s = glm::dvec3(r, g, b) / static_cast<double>(m - 1);
                 samples.add(s, wanted(s));
             }
-    over = "inputs on a " + std::to_string(m) + "^3 grid (" + std::to_string(k) + " per LUT cell)";
+    over = "inputs on a " + std::to_string(m) + "^3 grid and its " + std::to_string(m - 1) +
+           "^3 cell centres (" + std::to_string(k) + " per LUT cell)";
     return samples;
 }
 
@@ -166,11 +229,32 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
         return res;
     const StageModel stage(o.gameLut);
     const GameSamples samples = makeSamples(wanted, stage, o, res.measuredOver);
-    res.exactError = detail::gameErrorOver(samples, rounded8(res.lut), o.nthreads);
+    std::optional<GameSamples> centres;
+    if (!o.screenshot || o.screenshot->empty())
+        centres = offsetGrid(wanted, std::max(1, o.gridSubdivision));
+    const GameSamples* extra = centres ? &*centres : nullptr;
+    const int m = (kSmashLutSize - 1) * std::max(1, o.gridSubdivision) + 1;
+    auto report = [&](const Lut3D& lut) {
+        GameError e = reportOver(samples, extra, lut, o.nthreads);
+        if (extra) { // on a grid: what it can reach between its samples too
+            std::vector<double> each;
+            (void)detail::gameErrorOver(samples, lut, o.nthreads, &each);
+            e.maxSteps = std::max(e.maxSteps, peakBetween(each, m));
+        }
+        return e;
+    };
+    res.exactError = report(rounded8(res.lut));
     if (o.refine) {
-        res.lut = detail::refineSmashLut(samples, res.exact, o.nthreads);
+        Lut3D refined = detail::refineSmashLut(samples, res.exact, o.nthreads);
+        GameError refinedError = report(refined);
+        // a refinement that does not lower the mean error is no refinement: ship the exact one
+        if (refinedError.meanSteps > res.exactError.meanSteps) {
+            refined = rounded8(res.lut);
+            refinedError = res.exactError;
+        }
+        res.lut = std::move(refined);
         res.refined = true;
-        res.refinedError = detail::gameErrorOver(samples, res.lut, o.nthreads);
+        res.refinedError = refinedError;
     }
     return res;
 }

@@ -211,6 +211,27 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         res.lut = rawLut(edit, m);
         res.expected = detail::rawExpectedError(patch, sub, noise, res.lut, edit, res.modelError,
                                                 options.nthreads);
+    } else if (pl.lattice == PatchLattice::SmushLegacy) {
+        // Smush-LUT's model: the strip's edited values are the game's LUT (the screenshot was
+        // darkened to the LUT's own values before grading); nothing to compensate.
+        if (options.outputSize > 0 && options.outputSize != kSmashLutSize)
+            throw Error("the game's LUT is " + std::to_string(kSmashLutSize) + "^3; --size " +
+                        std::to_string(options.outputSize) + " does not apply to --target smash");
+        res.lut = patch.values;
+        for (auto& e : res.lut.entries())
+            for (int c = 0; c < 3; ++c)
+                e[c] = static_cast<float>(detail::clampUnit(e[c]));
+        GameError at, all;
+        at.maxSteps = res.readNoiseMax;
+        at.meanSteps = res.readNoiseMean;
+        at.p99Steps = res.readNoiseMax;
+        all.maxSteps = res.readNoiseMax + 0.5 * res.subLattice.maxSteps;
+        all.meanSteps = res.readNoiseMean + 0.5 * res.subLattice.meanSteps;
+        all.p99Steps = res.readNoiseMax + 0.5 * res.subLattice.p99Steps;
+        res.expected.atLattice = at;
+        res.expected.overall = all;
+        res.expected.covers = "the LUT's values against Smush-LUT's model (the strip's edit is an "
+                              "edit of the LUT's own values), 8-bit steps";
     } else {
         if (options.outputSize > 0 && options.outputSize != kSmashLutSize)
             throw Error("the game's LUT is " + std::to_string(kSmashLutSize) + "^3; --size " +
@@ -256,16 +277,19 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                      toString(res.target) + ")");
     addNote(res, "patch: " + patchText(pl));
     addNote(res, std::string("target: ") + toString(res.target) + " (" +
-                     toString(res.targetSource) + ")");
-    addNote(res, "expected error (an upper estimate from the patch's own redundancy): " +
-                     res.expected.covers + ": at the LUT's lattice points " +
-                     res.expected.atLattice.str() +
-                     "; over all inputs, between the lattice "
-                     "points too, " +
-                     res.expected.overall.str());
+                     (res.targetSource == TargetSource::Option && !options.targetReason.empty()
+                          ? options.targetReason
+                          : std::string(toString(res.targetSource))) +
+                     ")");
+    addNote(res, "expected error, an upper estimate from the patch's own redundancy (" +
+                     res.expected.covers + "):");
+    addNote(res, "  at the LUT's lattice points: " + res.expected.atLattice.str());
+    addNote(res,
+            "  over all inputs, between the lattice points too: " + res.expected.overall.str());
     addNote(res, formatMessage("  made of: read error of the entries up to %.2f steps (storage, "
-                               "block and marker spread), interpolation between patch entries up "
-                               "to %.2f (sub-lattice check), the LUT itself up to %.2f",
+                               "blocks, neighbouring entries, marker cells), interpolation "
+                               "between patch entries up to %.2f (sub-lattice check), the LUT "
+                               "itself up to %.2f",
                                res.readNoiseMax, res.subLattice.maxSteps, res.modelError.maxSteps));
     if (res.refined)
         addNote(res, "least-squares refinement: the game vs the patch's edit " +

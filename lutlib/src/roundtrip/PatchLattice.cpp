@@ -4,6 +4,7 @@
 #include "lut/Error.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
+#include "lut/roundtrip/SmushStrip.h"
 #include "pipeline/GameDisplay.h"
 
 #include <string>
@@ -11,7 +12,9 @@
 namespace lut {
 
 const char* toString(PatchLattice l) {
-    return l == PatchLattice::Uniform ? "uniform" : "game-display";
+    return l == PatchLattice::Uniform       ? "uniform"
+           : l == PatchLattice::SmushLegacy ? "smush-lut strip"
+                                            : "game-display";
 }
 
 PatchLattice parseLattice(std::string_view name) {
@@ -40,6 +43,8 @@ float quantizeTo(float v, int bitDepth) {
 float patchInputValue(PatchLattice lattice, int index, int size, int bitDepth) {
     if (lattice == PatchLattice::SmashStage)
         return static_cast<float>(index) / static_cast<float>(size - 1);
+    if (lattice == PatchLattice::SmushLegacy)
+        return smushStripAxis()[static_cast<std::size_t>(index)];
     const float v = lattice == PatchLattice::Smash
                         ? static_cast<float>(detail::gameDisplayLatticeValue(index))
                         : static_cast<float>(index) / static_cast<float>(size - 1);

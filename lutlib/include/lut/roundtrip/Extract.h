@@ -24,6 +24,7 @@ struct ExtractOptions {
     // Default: what the patch's header records (embed's --target), else smash for a game-display
     // patch and raw for a uniform one (patches made before the target was recorded).
     std::optional<ExtractTarget> target;
+    std::string targetReason; // why the caller chose the target, for the note ("" = "given")
     // Smash: the stage's LUT the screenshot was taken with. A patch embedded with --original-lut
     // already holds its picture (only checked against the recorded digest); other patches are
     // interpolated at the colours it shows.

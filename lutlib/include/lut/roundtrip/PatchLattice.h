@@ -20,13 +20,16 @@ namespace lut {
 //    of the 16^3 patch holds the colour the unedited game displays for its LUT input
 //    s = (i, j, k)/15, srgbEncode(min(1, (((L0(s) - s) * 0.99961 + s) * 1.3703)^2.2)), so the
 //    edit is read at exactly the colours the compensation needs (stagePatchInput).
-enum class PatchLattice { Uniform, Smash, SmashStage };
-// "uniform" or "game-display" (both game-display kinds).
+//  - SmushLegacy ("smush-lut strip"): not a lutkit patch; Smush-LUT's first .lut.png strip
+//    (lut/roundtrip/SmushStrip.h), per-axis values of the game's default stage LUT, whose
+//    edited values are the game's LUT itself. Never written to a header.
+enum class PatchLattice { Uniform, Smash, SmashStage, SmushLegacy };
+// "uniform", "game-display" (both game-display kinds) or "smush-lut strip".
 const char* toString(PatchLattice);
 // "uniform", "game-display" or its alias "smash"; throws lut::Error naming the accepted names.
 PatchLattice parseLattice(std::string_view name);
 constexpr int kSmashLatticeSize = 12;
-// True for the lattices made for the game (Smash, SmashStage).
+// True for the lattices made for the game (Smash, SmashStage, SmushLegacy).
 bool isGameDisplayLattice(PatchLattice lattice);
 
 // The input value a patch lattice index stands for once stored at bitDepth: j/(N-1) (or the
