@@ -2,6 +2,7 @@
 // the stage's LUT, so extract reads the edit exactly where the compensation needs it. Checked
 // against the game written out in float64 from docs/specs/smash-pipeline.md.
 #include "RoundtripTestUtil.h"
+#include "TruthOracle.h"
 
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/Extract.h"
@@ -51,6 +52,26 @@ double worstAtLattice(const Lut3D& lut, const Lut3D& stage, const Edit& edit, do
     return worst;
 }
 
+// What the game shows with the 8-bit `lut` against the edit of what it showed with `stage`, over
+// inputs s on the 61^3 grid (both LUTs sampled trilinearly in float64).
+Summary overallTruth(const Lut3D& lut, const Lut3D& stage, const Edit& edit) {
+    const Lut3D shipped = rounded8(lut);
+    std::vector<double> all;
+    for (int b = 0; b <= 60; ++b)
+        for (int g = 0; g <= 60; ++g)
+            for (int r = 0; r <= 60; ++r) {
+                const glm::dvec3 s = glm::dvec3(r, g, b) / 60.0;
+                const glm::dvec3 l0 = trilinear(stage, s), l = trilinear(shipped, s);
+                glm::dvec3 before;
+                for (int c = 0; c < 3; ++c)
+                    before[c] = shown(l0[c], s[c]);
+                const glm::dvec3 want = edit(before);
+                for (int c = 0; c < 3; ++c)
+                    all.push_back(std::fabs(shown(l[c], s[c]) - clamp01(want[c])) * 255.0);
+            }
+    return summarise(all);
+}
+
 } // namespace
 
 TEST(StagePatch, ReadsTheEditWhereTheCompensationNeedsIt) {
@@ -87,7 +108,15 @@ TEST(StagePatch, ReadsTheEditWhereTheCompensationNeedsIt) {
         EXPECT_LE(stageMax, 2.0) << name;
         EXPECT_LE(stageMean, 0.5) << name;
         EXPECT_LE(stageMax, oldMax + 1e-9) << name;
-        // and the printed bound holds there
+        // and the printed bounds hold, at the lattice and between its points
         EXPECT_LE(stageMax, stage.expected.atLattice.maxSteps) << name;
+        EXPECT_LE(stageMean, stage.expected.atLattice.meanSteps) << name;
+        const Summary all = overallTruth(stage.lut, warm, edit);
+        std::printf("[ measured ] stage LUT, %-12s over all inputs: true max %.2f mean %.3f p99 "
+                    "%.2f, printed %s\n",
+                    name, all.max, all.mean, all.p99, stage.expected.overall.str().c_str());
+        EXPECT_LE(all.max, stage.expected.overall.maxSteps) << name;
+        EXPECT_LE(all.mean, stage.expected.overall.meanSteps) << name;
+        EXPECT_LE(all.p99, stage.expected.overall.p99Steps) << name;
     }
 }
