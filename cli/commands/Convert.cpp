@@ -7,6 +7,8 @@
 
 #include "lut/formats/Convert.h"
 #include "lut/formats/Nutexb.h"
+#include "lut/io/FileNames.h"
+#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <CLI/CLI.hpp>
 
@@ -100,12 +102,26 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
 } // namespace
 
 int runConvert(const ConvertOptions& o) {
-    const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input});
+    const OutputTarget target =
+        resolveOutput(o.output, o.overwrite, {o.input, o.originalLut, o.screenshot});
     if (target.skip) {
         if (!o.verbosity.quiet)
             std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
         return kExitOk;
     }
+    // A .nutexb is the game's LUT: written for the game unless asked otherwise (or copied from
+    // another .nutexb).
+    const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
+    const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb";
+    const bool smash =
+        !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash : gameOut && !gameIn;
+    if (smash)
+        return runConvertGame(o, !o.target.empty()
+                                     ? "asked for"
+                                     : "the output is a .nutexb, the game's LUT; --target raw "
+                                       "writes the LUT as it is");
+    if (!o.originalLut.empty() || !o.screenshot.empty() || o.refine)
+        throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
     formats::ConvertOptions co;
     co.inFormat = o.inFormat;
     co.outFormat = o.format;
@@ -146,10 +162,32 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_flag("--json", o->json, "print the report as JSON");
     addOverwriteOptions(*sub, o->overwrite);
+    sub->add_option("--target", o->target,
+                    std::string("what OUT is for (default: ") + toString(ExtractTarget::Smash) +
+                        " for a .nutexb, else " + toString(ExtractTarget::Raw) +
+                        "): " + toString(ExtractTarget::Raw) + " = the LUT as it is; " +
+                        toString(ExtractTarget::Smash) +
+                        " = IN is an edit of the game's picture (a graded strip such as "
+                        "Smush-LUT's neutral.png), OUT the game's LUT that shows it")
+        ->type_name("NAME")
+        ->check(choicesValidator(targetChoices()));
+    sub->add_option("--original-lut", o->originalLut,
+                    "smash: the stage's LUT the edited picture was taken with (default neutral)")
+        ->type_name("FILE");
+    sub->add_option("--screenshot", o->screenshot,
+                    "smash: a screenshot whose colours the error is measured and refined over "
+                    "(default: every input on a 61^3 grid)")
+        ->type_name("FILE");
+    sub->add_flag("--refine", o->refine,
+                  "smash: write the least-squares refinement (best between the game's 16^3 "
+                  "points) instead of the exact composition; both are reported");
     addVerbosity(*sub, o->verbosity, "also say how a LUT image input was read");
     sub->footer("Examples:\n"
                 "  lutkit convert grade.cube color_grading_lut.nutexb   # for Smash Ultimate "
-                "(16^3)\n"
+                "(compensated)\n"
+                "  lutkit convert neutral_graded.png color_grading_lut.nutexb --original-lut "
+                "stage.nutexb --refine\n"
+                "  lutkit convert game.cube color_grading_lut.nutexb --target raw  # as it is\n"
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"

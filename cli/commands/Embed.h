@@ -18,10 +18,12 @@ namespace lut::cli {
 struct EmbedOptions {
     std::string input;
     std::string output;
-    std::string lattice;             // lattice name ("" = the default; uniform when --size given)
+    std::string target = "smash";    // what the modder is making (raw | smash): recorded
+    std::string originalLut;         // smash: the stage's LUT the screenshot was taken with
+    std::string lattice;             // lattice name ("" = from the target; uniform with --size)
     int size = 16;                   // uniform lattice size
     std::optional<LutLayout> layout; // patch layout (default: hald for square sizes, else unreal)
-    int scale = 2;
+    int scale = 0;                   // 0: 8, or the largest that fits a smaller screenshot
     std::string corner = "top-left";
     int margin = 8;
     OutputOptions overwrite; // -y / -n (the output is the positional OUT)

@@ -1,6 +1,7 @@
 // lutkit extract: the LUT an edited screenshot's patch shows (docs/roundtrip.md).
 #include "commands/Extract.h"
 
+#include "GameLut.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -8,9 +9,12 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/Layout.h"
+#include "lut/ops/Resample.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchFinder.h"
 #include "lut/roundtrip/PatchReader.h"
+#include "lut/roundtrip/SmushStrip.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +23,52 @@
 
 namespace lut::cli {
 
+namespace {
+
+bool isGameOutput(const ExtractOptions& o) {
+    return extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
+}
+
+void writeOut(const ExtractOptions& o, Lut3D lut, const std::string& what) {
+    LutFile file;
+    file.cube = std::move(lut);
+    FormatOptions fo;
+    fo.layout = o.layout;
+    const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
+    printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
+    std::cout << "wrote " << file.cube->size() << "^3 " << what << " LUT: " << o.output << "\n";
+}
+
+// No marker frame, but EDITED is a LUT image: a graded neutral (Smush-LUT's neutral.png).
+int extractFromLutImage(const ExtractOptions& o, bool smash) {
+    FormatOptions ro;
+    ro.layout = o.inLayout;
+    const LutFile file = formats::readLut(o.input, ro);
+    printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
+    const Lut3D edit = file.toLut3D();
+    if (!o.verbosity.quiet)
+        std::cout << "no patch: " << o.input << " is a " << edit.size() << "^3 LUT image ("
+                  << file.dialect
+                  << " layout), read as a graded neutral (Smush-LUT's neutral.png, or lutkit "
+                     "neutral): the edit itself\n";
+    if (!smash) {
+        Lut3D out = o.size > 0 && o.size != edit.size()
+                        ? resample(edit, o.size, Interpolation::Tetrahedral)
+                        : edit;
+        writeOut(o, std::move(out), "raw");
+        return kExitOk;
+    }
+    if (o.size > 0 && o.size != 16)
+        throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
+    GameLutRequest q;
+    q.stageLut = o.originalLut;
+    q.refine = o.refine;
+    writeOut(o, makeGameLut(edit, q, o.verbosity, std::cout), "smash");
+    return kExitOk;
+}
+
+} // namespace
+
 int runExtract(const ExtractOptions& o) {
     const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input, o.originalLut});
     if (target.skip) {
@@ -26,33 +76,54 @@ int runExtract(const ExtractOptions& o) {
             std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
         return kExitOk;
     }
-    auto loaded = formats::readImage(o.input);
     lut::ExtractOptions eo;
-    eo.target = parseTarget(o.target);
+    if (!o.target.empty()) {
+        eo.target = parseTarget(o.target);
+    } else if (isGameOutput(o)) {
+        eo.target = ExtractTarget::Smash;
+        eo.targetReason = "the output is a .nutexb, the game's LUT; --target raw writes the edit";
+    }
+    if (!o.originalLut.empty() && eo.target && *eo.target == ExtractTarget::Raw)
+        throw UsageError("--original-lut is for --target smash: a raw LUT does not depend on the "
+                         "stage's LUT");
+    if (o.refine && eo.target && *eo.target == ExtractTarget::Raw)
+        throw UsageError("--refine is for --target smash (the game's interpolation between its "
+                         "16^3 entries)");
     eo.outputSize = o.size;
-    if (eo.outputSize == 0 && extensionOf(o.output) == ".nutexb")
-        eo.outputSize = 16;
+    eo.refine = o.refine;
     Lut3D original;
     if (!o.originalLut.empty()) {
-        if (eo.target != ExtractTarget::Smash)
-            std::cerr << "lutkit: warning: --original-lut only matters with --target "
-                      << toString(ExtractTarget::Smash) << "\n";
         original = formats::readLut(o.originalLut).toLut3D();
         eo.originalLut = &original;
     }
+    auto loaded = formats::readImage(o.input);
+    eo.fileChromaSubsampling = loaded.info.chromaSubsampling;
     const FindResult found = findPatch(loaded.image.view());
-    if (found.status != FindStatus::Found) {
+    PatchReading patch;
+    if (found.status == FindStatus::Found) {
+        patch = readPatch(loaded.image.view(), found.placement);
+    } else if (found.status != FindStatus::Found &&
+               loaded.image.width() == loaded.image.height() * loaded.image.height()) {
+        // an N^2 x N picture is a LUT strip, not a screenshot
+        return extractFromLutImage(o, !eo.target || *eo.target == ExtractTarget::Smash);
+    } else if (found.status == FindStatus::NotFound && isSmushStripName(o.input) &&
+               loaded.image.width() >= 256 && loaded.image.height() >= 16) {
+        if (!o.verbosity.quiet)
+            std::cout << "no patch: " << o.input
+                      << " is named like a Smush-LUT strip (.lut.): its top-left 256x16 pixels "
+                         "read as Smush-LUT's strip (the default stage LUT's values, graded)\n";
+        patch = readSmushStrip(loaded.image.view());
+    } else {
         std::cerr << "lutkit: error: " << o.input << ": " << found.message << "\n";
         return kExitFailure;
     }
     if (o.verbosity.verbose) {
-        const PatchPlacement& p = found.placement;
-        std::cout << "found a " << p.size << "^3 " << toString(p.lattice) << "-lattice "
-                  << toString(p.layout) << " patch, " << p.bitDepth << "-bit, scale " << p.scale
+        const PatchPlacement& p = patch.placement;
+        std::cout << "found a " << p.size << "^3 " << toString(p.lattice) << " patch, "
+                  << toString(p.layout) << " layout, " << p.bitDepth << "-bit, scale " << p.scale
                   << " (" << p.cell << " pixels per entry as found), frame at (" << p.frameX << ", "
                   << p.frameY << ")\n";
     }
-    const PatchReading patch = readPatch(loaded.image.view(), found.placement);
     ExtractResult res = extractLut(patch, eo);
     for (const auto& d : res.diagnostics) {
         if (!isShown(d, o.verbosity))
@@ -62,18 +133,10 @@ int runExtract(const ExtractOptions& o) {
         else
             std::cerr << "lutkit: " << o.input << ": " << d.str() << "\n";
     }
-    if (eo.target == ExtractTarget::Smash && res.clampedEntries > 0)
+    if (res.target == ExtractTarget::Smash && res.clampedEntries > 0)
         std::cout << "clamped " << res.clampedEntries << " values (farthest "
                   << res.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
-
-    LutFile file;
-    file.cube = std::move(res.lut);
-    FormatOptions fo;
-    fo.layout = o.layout;
-    const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
-    printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
-    std::cout << "wrote " << file.cube->size() << "^3 " << toString(eo.target)
-              << " LUT: " << o.output << "\n";
+    writeOut(o, std::move(res.lut), toString(res.target));
     return kExitOk;
 }
 
@@ -81,28 +144,44 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
     auto o = std::make_shared<ExtractOptions>();
     auto* sub = app.add_subcommand(
         "extract", "Find the embedded patch in an edited screenshot and write its LUT");
-    sub->add_option("EDITED", o->input, "the graded screenshot")->required()->type_name("FILE");
+    sub->add_option("EDITED", o->input,
+                    "the graded screenshot (or a graded LUT image: Smush-LUT's neutral.png, its "
+                    ".lut.png strips)")
+        ->required()
+        ->type_name("FILE");
     sub->add_option("OUT", o->output, "output LUT (any format: .cube, .nutexb, .png strip...)")
         ->required()
         ->type_name("FILE");
     sub->add_option("--target", o->target,
-                    std::string(toString(ExtractTarget::Raw)) + " (the edit itself, default) or " +
-                        toString(ExtractTarget::Smash) + " (compensated for the game)")
+                    std::string("default: what the patch records (embed --target), ") +
+                        toString(ExtractTarget::Smash) + " for a .nutexb output; " +
+                        toString(ExtractTarget::Raw) + " = the edit itself, " +
+                        toString(ExtractTarget::Smash) + " = compensated for the game")
         ->type_name("NAME")
         ->check(choicesValidator(targetChoices()));
     sub->add_option("--original-lut", o->originalLut,
-                    "smash: the stage's LUT the screenshot was taken with")
+                    "smash: the stage's LUT the screenshot was taken with (default neutral; a "
+                    "patch embedded with --original-lut already holds it)")
         ->type_name("FILE");
-    sub->add_option("--size", o->size, "output LUT size (default: patch size; 16 for smash/nutexb)")
+    sub->add_flag("--refine", o->refine,
+                  "smash: write the least-squares refinement (best between the game's 16^3 "
+                  "points) instead of the exact composition; both are reported");
+    sub->add_option("--size", o->size,
+                    "output LUT size (default: the patch's for raw, 16 for smash and .nutexb)")
         ->check(CLI::Range(2, 256));
     addOutputFormat(*sub, o->format);
     addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
     addOverwriteOptions(*sub, o->overwrite);
+    addLayout(*sub, "--in-layout", o->inLayout,
+              "EDITED is a graded LUT image: its layout (default: detected)");
     addVerbosity(*sub, o->verbosity, "also say where the patch was found and how it was made");
     sub->footer("Examples:\n"
-                "  lutkit extract graded.png grade.cube\n"
-                "  lutkit extract graded.png color_grading_lut.nutexb --target smash\n"
-                "  lutkit extract graded.png strip.png --layout unity");
+                "  lutkit extract graded.png color_grading_lut.nutexb   # for Smash Ultimate\n"
+                "  lutkit extract graded.png grade.cube                 # what embed set up\n"
+                "  lutkit extract graded.png grade.cube --target raw    # the edit itself\n"
+                "  lutkit extract graded.png color_grading_lut.nutexb --refine\n"
+                "  lutkit extract neutral_graded.png color_grading_lut.nutexb  # Smush-LUT's "
+                "neutral.png");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

@@ -1,5 +1,7 @@
 #pragma once
 // lutkit extract EDITED OUT: find the patch in an edited screenshot and write the LUT it shows.
+// Also reads Smush-LUT's files: a graded LUT image (its neutral.png) and its first versions'
+// `.lut.png` strips (lut/roundtrip/SmushStrip.h).
 #include "Notes.h"
 #include "Outputs.h"
 
@@ -18,12 +20,15 @@ namespace lut::cli {
 struct ExtractOptions {
     std::string input;
     std::string output;
-    std::string target = "raw";      // target name (raw | smash)
-    std::string originalLut;         // smash: the stage's LUT the screenshot was taken with
-    int size = 0;                    // output size (0: raw = patch size, smash/nutexb = 16)
-    std::string format;              // output format name ("" = by extension)
-    std::optional<LutLayout> layout; // output layout for LUT images
-    OutputOptions overwrite;         // -y / -n (the output is the positional OUT)
+    // target name (raw | smash); "" = what the patch records, smash for a .nutexb output
+    std::string target;
+    std::string originalLut;           // smash: the stage's LUT the screenshot was taken with
+    bool refine = false;               // smash: the least-squares refinement
+    int size = 0;                      // output size (0: raw = patch size, smash = 16)
+    std::string format;                // output format name ("" = by extension)
+    std::optional<LutLayout> layout;   // output layout for LUT images
+    std::optional<LutLayout> inLayout; // EDITED is a graded LUT image: its layout
+    OutputOptions overwrite;           // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };
 

@@ -1,7 +1,9 @@
 // lutkit preview: an image through the post-processing chain (preset smash = the game's), with a
-// LUT, written display-encoded. Float inputs (EXR) are the linear scene; 8/16-bit inputs are
-// screenshots, decoded with the piecewise sRGB curve; --from-screenshot also undoes the game's
-// grading with --original-lut before grading with --lut (bloom cannot be undone).
+// LUT, written display-encoded. Which input is a screenshot and which a scene is the library's
+// rule (lut/pipeline/SceneKind.h, shared with the editor): 8/16-bit inputs are in-game
+// screenshots (the game's grading is undone with --original-lut before grading with --lut; bloom
+// cannot be undone), float inputs (EXR) and files tagged linear are linear scenes; the choice is
+// said per input and --from-screenshot / --scene override it.
 #include "commands/Preview.h"
 
 #include "Batch.h"
@@ -13,14 +15,18 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
+#include "lut/pipeline/SceneKind.h"
 #include "lut/pipeline/Transfer.h"
 
 #include <CLI/CLI.hpp>
+
+#include <algorithm>
 
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace lut::cli {
@@ -55,11 +61,12 @@ std::string paramText(const StageParam& p, bool current) {
 // The --help footer, generated from the stage registry and the presets.
 std::string previewFooter() {
     std::ostringstream os;
-    os << "Input: float images (EXR) are the linear scene; 8/16-bit images are decoded with the "
-          "sRGB curve.\n"
-          "--from-screenshot undoes the game's display encode and grading (with --original-lut, "
-          "default\n  neutral) before applying --lut; bloom already in the screenshot cannot be "
-          "undone.\n\nPresets (--preset):\n";
+    os << "Input: 8/16-bit images are in-game screenshots: the game's display encode and "
+          "grading (with\n  --original-lut, default neutral) are undone before --lut; bloom "
+          "already in a screenshot\n  cannot be undone, and none is added (--enable bloom adds "
+          "it). Float images (EXR) and files tagged "
+          "linear are linear scenes. The\n  choice is said for every input; --from-screenshot "
+          "and --scene override it.\n\nPresets (--preset):\n";
     for (const Preset preset : allPresets()) {
         const Pipeline p(preset);
         std::string aliases;
@@ -96,8 +103,8 @@ std::string previewFooter() {
           "Examples:\n"
           "  lutkit preview shot.png -o seen.png --lut grade.cube   # as Smash Ultimate shows "
           "it\n"
-          "  lutkit preview shot.png -o seen.png --from-screenshot --lut new.nutexb --original-lut "
-          "old.nutexb\n"
+          "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut old.nutexb\n"
+          "  lutkit preview photo.png -o seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
           "  lutkit preview frames/ -o seen/ --enable grain --stage grain.strength=0.05\n"
           "  lutkit preview --list-stages --preset cinematic";
@@ -157,8 +164,7 @@ int runPreview(const PreviewOptions& o) {
         std::cout << stageList(*configured);
         return kExitOk;
     }
-    const BatchPlan plan =
-        planBatch(o.inputs, o.output, {o.lut, o.fromScreenshot ? o.originalLut : ""}, o.frames);
+    const BatchPlan plan = planBatch(o.inputs, o.output, {o.lut, o.originalLut}, o.frames);
     BatchOptions bo;
     bo.threads = o.threads;
     bo.quiet = o.verbosity.quiet;
@@ -191,15 +197,48 @@ int runPreview(const PreviewOptions& o) {
                                   std::to_string(info.height) + " image");
         }
         formats::LoadedImage img = formats::readImage(j.input, o.inFormat);
-        // A screenshot holds display-encoded values whatever its bit depth.
-        bool linear = img.info.isFloat && !o.fromScreenshot;
+        // Screenshot or scene: the library's rule, or what the user said.
+        const SceneDecision scene =
+            decideSceneKind(SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
+                                          img.info.format},
+                            o.fromScreenshot ? std::optional<SceneKind>(SceneKind::Screenshot)
+                            : o.scene        ? std::optional<SceneKind>(SceneKind::Scene)
+                                             : std::nullopt);
+        bool linear = scene.storedIsLinear;
         if (!linear && img.info.type == formats::PixelType::UInt8) {
-            decodeSrgbCodes8(img.image.view());
+            decodeSrgbCodes8(img.image.view()); // exact: 8-bit values are k/255
             linear = true; // decoded: prepareSceneFrame only undoes the grading
         }
-        const Diagnostics notes = prepareSceneFrame(img.image.view(), linear, o.fromScreenshot,
-                                                    original.get(), settings.interpolation, inner);
-        Pipeline pipeline(settings); // one per job: stages keep per-run buffers
+        Diagnostics notes = prepareSceneFrame(img.image.view(), linear, scene.undoGrading,
+                                              original.get(), settings.interpolation, inner);
+        // A screenshot has the game's bloom in it already: none is added again unless asked for
+        // (--enable bloom), as the editor shows it.
+        PipelineSettings jobSettings = settings;
+        const bool bloomAsked =
+            std::any_of(o.enable.begin(), o.enable.end(), [](const std::string& n) {
+                return n.size() >= 5 && n.compare(n.size() - 5, 5, "bloom") == 0;
+            });
+        if (scene.undoGrading && settings.bloom && !bloomAsked) {
+            jobSettings.bloom = false;
+            notes.erase(std::remove_if(notes.begin(), notes.end(),
+                                       [](const Diagnostic& d) {
+                                           return d.message.rfind("bloom cannot be undone", 0) == 0;
+                                       }),
+                        notes.end());
+        }
+        Diagnostic said;
+        said.severity = Diagnostic::Severity::Info;
+        said.message = scene.reason;
+        if (scene.undoGrading && settings.bloom && !bloomAsked)
+            said.message += "; no bloom added (the screenshot has the game's; --enable bloom adds "
+                            "it again)";
+        notes.insert(notes.begin(), said);
+        if (original && !scene.undoGrading) {
+            Diagnostic ignored;
+            ignored.message = "--original-lut is ignored: a scene went through no grading";
+            notes.push_back(ignored);
+        }
+        Pipeline pipeline(jobSettings); // one per job: stages keep per-run buffers
         RunOptions run;
         run.nthreads = inner;
         run.frameIndex = o.frame;
@@ -259,11 +298,15 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     sub->add_flag("--no-bloom", o->noBloom, "disable every bloom stage");
     addInterp(*sub, o->interp, "LUT interpolation (default trilinear, as the game's GPU)");
     auto* shot = sub->add_flag("--from-screenshot", o->fromScreenshot,
-                               "the input is an in-game screenshot: undo the game's grading first");
+                               "the inputs are in-game screenshots (the default for 8/16-bit "
+                               "files): undo the game's grading first");
+    sub->add_flag("--scene", o->scene,
+                  "the inputs are linear scenes (the default for float files; 8/16-bit files are "
+                  "sRGB-decoded)")
+        ->excludes(shot);
     sub->add_option("--original-lut", o->originalLut,
-                    "the LUT the screenshot was taken with (default neutral)")
-        ->type_name("FILE")
-        ->needs(shot);
+                    "the LUT the screenshots were taken with (default neutral)")
+        ->type_name("FILE");
     sub->add_option("--stage", o->stageSettings, "set a stage parameter (repeatable)")
         ->allow_extra_args(false)
         ->check(stageSettingValidator());

@@ -31,7 +31,8 @@ struct PreviewOptions {
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none
     bool noBloom = false;
     Interpolation interp = Interpolation::Trilinear; // the game samples with hardware trilinear
-    bool fromScreenshot = false;            // input went through the game's grading already
+    bool fromScreenshot = false;            // inputs are screenshots (default for integer files)
+    bool scene = false;                     // inputs are linear scenes (default for float files)
     std::string originalLut;                // the LUT the screenshot was graded with (neutral)
     std::vector<std::string> stageSettings; // "stage.param=value"
     std::vector<std::string> enable;

@@ -174,8 +174,8 @@ TEST(CliConvert, EightBitQuantisationMatchesReference) {
 TEST(CliConvert, ToNutexbResamplesTo16Tetrahedral) {
     const std::string dir = workDir();
     const std::string out = dir + "/color_grading_lut.nutexb";
-    const auto r =
-        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
+    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) +
+                          " --json --target raw");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     ASSERT_FALSE(js["resample"].isNull()) << r.out;

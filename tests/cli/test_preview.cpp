@@ -77,7 +77,7 @@ TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
     }
 }
 
-TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
+TEST(CliPreview, EightBitSceneIsSrgbDecodedAndRoundedToNearest) {
     const std::string dir = workDir();
     Image shot(8, 4);
     for (int y = 0; y < 4; ++y)
@@ -88,9 +88,11 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
             p[3] = 1.0f;
         }
     formats::writeImage(dir + "/shot.png", shot, {8, false, false});
+    // --scene: the 8-bit picture of a scene (not a screenshot, the default for 8-bit files)
     const RunResult r =
-        runCli("preview '" + dir + "/shot.png' -o '" + dir + "/out.png' --no-bloom");
+        runCli("preview '" + dir + "/shot.png' -o '" + dir + "/out.png' --no-bloom --scene");
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("a linear scene (an 8-bit png file"), std::string::npos) << r.err;
     const formats::LoadedImage got = formats::readImage(dir + "/out.png");
     EXPECT_EQ(got.info.bitDepth, 8);
     EXPECT_EQ(got.info.channels, 3);
@@ -113,6 +115,70 @@ TEST(CliPreview, EightBitScreenshotIsSrgbDecodedAndRoundedToNearest) {
                 ++checked;
             }
     EXPECT_GT(checked, 80);
+}
+
+TEST(CliPreview, AScreenshotGetsNoSecondBloomByDefault) {
+    // The screenshot has the game's bloom in it: the default preview adds none (as the editor
+    // shows it); before, the default added the bloom a second time. --enable bloom asks for it.
+    const std::string dir = workDir();
+    Image shot(64, 32);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) {
+            float* p = shot.pixel(x, y);
+            const bool bright = x > 24 && x < 40 && y > 8 && y < 24;
+            for (int c = 0; c < 3; ++c)
+                p[c] = bright ? 1.0f : static_cast<float>(((x * 5 + y * 3 + c * 11) % 90) / 255.0);
+            p[3] = 1.0f;
+        }
+    formats::writeImage(dir + "/shot.png", shot, {8, false, false});
+    const std::string in = "preview '" + dir + "/shot.png' -o '" + dir;
+    const RunResult byDefault = runCli(in + "/default.png'");
+    ASSERT_EQ(byDefault.exitCode, 0) << byDefault.err;
+    EXPECT_NE(byDefault.err.find("no bloom added"), std::string::npos) << byDefault.err;
+    ASSERT_EQ(runCli(in + "/nobloom.png' --no-bloom").exitCode, 0);
+    ASSERT_EQ(runCli(in + "/bloom.png' --enable bloom").exitCode, 0);
+    const Image a = formats::readImage(dir + "/default.png").image;
+    const Image b = formats::readImage(dir + "/nobloom.png").image;
+    const Image c = formats::readImage(dir + "/bloom.png").image;
+    EXPECT_EQ(a.pixels(), b.pixels());
+    EXPECT_NE(a.pixels(), c.pixels()); // the bloom does change this picture when asked for
+}
+
+TEST(CliPreview, AnEightBitFileIsAScreenshotByDefaultAndSaysSo) {
+    // With the neutral LUT the game's picture of the game's picture is the picture: undoing the
+    // grading and grading again gives the screenshot back (the issue: treated as a scene it came
+    // out ~53 steps washed out).
+    const std::string dir = workDir();
+    Image shot(16, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) {
+            float* p = shot.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                p[c] = static_cast<float>(((x * 13 + y * 31 + c * 7) % 230) / 255.0);
+            p[3] = 1.0f;
+        }
+    formats::writeImage(dir + "/shot.png", shot, {8, false, false});
+    const RunResult r =
+        runCli("preview '" + dir + "/shot.png' -o '" + dir + "/out.png' --no-bloom");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("an in-game screenshot (an 8-bit png file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--scene"), std::string::npos) << r.err;
+    const formats::LoadedImage got = formats::readImage(dir + "/out.png");
+    double worst = 0.0;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst,
+                                 std::fabs(got.image.pixel(x, y)[c] - shot.pixel(x, y)[c]) * 255.0);
+    EXPECT_LE(worst, 1.0);
+    // -q says nothing; --from-screenshot and --scene together are bad usage
+    const RunResult quiet =
+        runCli("preview '" + dir + "/shot.png' -o '" + dir + "/q.png' --no-bloom -q");
+    EXPECT_EQ(quiet.err, "");
+    EXPECT_EQ(
+        runCli("preview '" + dir + "/shot.png' -o '" + dir + "/x.png' --from-screenshot --scene")
+            .exitCode,
+        2);
 }
 
 TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {

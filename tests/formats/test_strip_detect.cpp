@@ -1,6 +1,7 @@
 // Auto-detection of the layout of an N^2 x N image (rule in formats/src/StripFormat.cpp): a
 // table that is close to neutral (each output channel follows its own input axis) in exactly
-// one layout is read in it; otherwise unreal (pilot) when it is the most plausible, else refused.
+// one layout is read in it; else the one layout whose brightness is neutral-shaped; otherwise
+// unreal (pilot) when it is the most plausible, else refused.
 #include "lut/formats/Registry.h"
 
 #include "TestSupport.h"
@@ -92,22 +93,57 @@ TEST(StripDetect, GradedLutIsFoundInItsOwnLayout) {
     }
 }
 
-TEST(StripDetect, UndecidableStripDefaultsToPilotWithWarning) {
-    // Black and white: every channel is the luma of the input, so no layout has each channel on
-    // its own axis; pilot and smush score the same, so the N^2 x N default (pilot) is used.
+TEST(StripDetect, NeutralShapedBrightnessDecidesWhenNoChannelFollowsItsAxis) {
+    // Black and white, a gradient map and an inverting map of a neutral: every channel is a
+    // function of the input's luma, so no layout has each channel on its own axis; only in the
+    // layout it was drawn in does the table's brightness weigh r, g, b like a neutral's. This is
+    // Smush-LUT's neutral.png (smush layout) graded with a gradient map.
     const std::string dir = tempDir();
-    lut::Lut3D bw(16);
+    auto lumaMap = [](auto f) {
+        lut::Lut3D l(16);
+        for (int b = 0; b < 16; ++b)
+            for (int g = 0; g < 16; ++g)
+                for (int r = 0; r < 16; ++r)
+                    l.at(r, g, b) = f((0.2126f * r + 0.7152f * g + 0.0722f * b) / 15.0f);
+        return l;
+    };
+    const lut::Lut3D maps[] = {
+        lumaMap([](float y) { return glm::vec3(y); }),
+        lumaMap([](float y) { return glm::vec3(0.1f + 0.8f * y, 0.9f * y * y, 0.3f + 0.4f * y); }),
+        lumaMap([](float y) { return glm::vec3(1.0f - y, 0.95f - 0.9f * y, 0.9f - 0.8f * y); })};
+    for (const char* layout : {"pilot", "smush", "unity"})
+        for (std::size_t i = 0; i < 3; ++i) {
+            SCOPED_TRACE(std::string(layout) + " map " + std::to_string(i));
+            const std::string path = dir + "/map" + std::to_string(i) + layout + ".png";
+            write(path, maps[i], layout);
+            const lut::LutFile f = lut::formats::readLut(path);
+            EXPECT_EQ(f.dialect, toString(lut::parseLayout(layout)));
+            const lut::Diagnostic* d = find(f.diagnostics, "brightness");
+            ASSERT_NE(d, nullptr);
+            EXPECT_EQ(d->severity, lut::Diagnostic::Severity::Info);
+            EXPECT_NE(d->message.find("--in-layout"), std::string::npos);
+            EXPECT_NEAR(f.cube->at(15, 0, 0).x, maps[i].at(15, 0, 0).x, 0.5f / 255.0f);
+        }
+}
+
+TEST(StripDetect, UndecidableStripDefaultsToPilotWithWarning) {
+    // A table no layout explains (each channel a valley along its own axis: no correlation, no
+    // brightness trend): pilot and smush score the same, so the N^2 x N default (unreal) is used,
+    // with a warning.
+    const std::string dir = tempDir();
+    lut::Lut3D wave(16);
     for (int b = 0; b < 16; ++b)
         for (int g = 0; g < 16; ++g)
             for (int r = 0; r < 16; ++r)
-                bw.at(r, g, b) = glm::vec3((0.2126f * r + 0.7152f * g + 0.0722f * b) / 15.0f);
-    write(dir + "/bw.png", bw, "pilot");
-    const lut::LutFile f = lut::formats::readLut(dir + "/bw.png");
+                wave.at(r, g, b) = glm::vec3((r - 7.5f) * (r - 7.5f), (g - 7.5f) * (g - 7.5f),
+                                             (b - 7.5f) * (b - 7.5f)) /
+                                   56.25f;
+    write(dir + "/wave.png", wave, "pilot");
+    const lut::LutFile f = lut::formats::readLut(dir + "/wave.png");
     EXPECT_EQ(f.dialect, "unreal");
     const lut::Diagnostic* d = find(f.diagnostics, "read as unreal, the default");
     ASSERT_NE(d, nullptr);
     EXPECT_EQ(d->severity, lut::Diagnostic::Severity::Warning);
-    EXPECT_NEAR(f.cube->at(15, 0, 0).x, 0.2126f, 0.5f / 255.0f);
 }
 
 TEST(StripDetect, AmbiguousAndNotPilotLikeIsRefusedNamingLayouts) {

@@ -111,12 +111,14 @@ TEST(ExitCodes, EverySubcommand) {
         {"preview @/img.png -o @/p.png --no-such-option", 2, unexpected},
         {"preview @/missing.png -o @/p.png", 1, missingPng},
         {"preview @/bad.png -o @/p.png", 1, badPng},
-        {"preview @/img.png -o @/p.png", 0, ""},
+        // the screenshot/scene decision is said (issue 14)
+        {"preview @/img.png -o @/p.png", 0,
+         "lutkit: note: " + dir + "/img.png: an in-game screenshot"},
         // embed, then extract from what it wrote
         {"embed @/big.png @/e.png --no-such-option", 2, unexpected},
         {"embed @/missing.png @/e.png", 1, missingPng},
         {"embed @/bad.png @/e.png", 1, badPng},
-        {"embed @/big.png @/e.png", 0, ""},
+        {"embed @/big.png @/e.png", 0, "the screenshot is too small for scale 8"},
         {"extract @/e.png @/x.cube --no-such-option", 2, unexpected},
         {"extract @/missing.png @/x.cube", 1, missingPng},
         {"extract @/bad.png @/x.cube", 1, badPng},

@@ -115,6 +115,44 @@ inline Edit invertingGradientMap() {
     return gradientMapEdit({0.0, 1.0}, {{1.0, 0.95, 0.9}, {0.0, 0.05, 0.1}});
 }
 
+// A hue rotation in HSV (what an editor's Hue/Saturation dialog does): piecewise linear in RGB,
+// with kinks where the largest or smallest channel changes.
+inline Edit hueShiftEdit(double degrees = 40.0) {
+    return [=](glm::dvec3 c) {
+        const double mx = std::max({c.x, c.y, c.z}), mn = std::min({c.x, c.y, c.z});
+        const double d = mx - mn;
+        if (d <= 0.0)
+            return c;
+        double h = mx == c.x   ? std::fmod((c.y - c.z) / d + 6.0, 6.0)
+                   : mx == c.y ? (c.z - c.x) / d + 2.0
+                               : (c.x - c.y) / d + 4.0;
+        h = std::fmod(h + degrees / 60.0 + 6.0, 6.0);
+        const double x = d * (1.0 - std::fabs(std::fmod(h, 2.0) - 1.0));
+        glm::dvec3 o;
+        switch (static_cast<int>(h)) {
+        case 0:
+            o = {d, x, 0};
+            break;
+        case 1:
+            o = {x, d, 0};
+            break;
+        case 2:
+            o = {0, d, x};
+            break;
+        case 3:
+            o = {0, x, d};
+            break;
+        case 4:
+            o = {x, 0, d};
+            break;
+        default:
+            o = {d, 0, x};
+            break;
+        }
+        return o + glm::dvec3(mn);
+    };
+}
+
 inline double srgbEnc(double x) {
     x = clamp01(x);
     return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
@@ -142,6 +180,12 @@ inline void quantize(Image& img, int bitDepth) {
     applyEdit(
         img, [](glm::dvec3 c) { return c; }, bitDepth);
 }
+
+// The smallest screenshot the default patches fit at the default scale 8 (the 12^3 game-display
+// strip is 1184 pixels wide, the 16^3 Hald patches 544 high), smaller than a Switch capture
+// (1280x720) so the tests stay quick.
+constexpr int kShotWidth = 1216;
+constexpr int kShotHeight = 560;
 
 // A screenshot-like image: smooth gradients, some saturated shapes, deterministic noise.
 inline Image syntheticScreenshot(int w = 400, int h = 260, int bitDepth = 8) {

@@ -185,7 +185,7 @@ TEST(SmashTarget, GameShowsTheEditedScreenshot) {
             "best 16^3 "
             "LUT: max %.2f mean %.3f; worst excess %.2f; predicted in-game %.2f max %.3f mean\n",
             name, c.maxSteps, c.meanSteps, c.pixels, ob.maxSteps, ob.meanSteps, c.maxExcess,
-            r.gameError.maxSteps8(), r.gameError.meanSteps8());
+            r.expected.overall.maxSteps, r.expected.overall.meanSteps);
         // On every pixel within 2 steps of what the best possible 16^3 game LUT shows (the game's
         // own lattice cannot follow a clamped saturation between its points: 8 steps there)...
         EXPECT_LE(c.maxExcess, 2.0 + 1e-3) << name;
@@ -197,7 +197,7 @@ TEST(SmashTarget, GameShowsTheEditedScreenshot) {
         // The report is an honest bound for what the scene showed, up to the screenshot's own
         // 8-bit rounding (which a steep edit such as levels near its black point magnifies: the
         // best LUT shows the same there).
-        EXPECT_LE(c.maxSteps, std::max(r.gameError.maxSteps8(), ob.maxSteps) + 2.0) << name;
+        EXPECT_LE(c.maxSteps, std::max(r.expected.overall.maxSteps, ob.maxSteps) + 2.0) << name;
     }
 }
 
@@ -342,4 +342,31 @@ TEST(SmashTarget, DefaultPatchIsTheMostAccurate) {
         EXPECT_LE(smashMax, uniform16Max + 0.05) << ename;
         EXPECT_LE(smashMax, 1.0) << ename; // the 8-bit rounding of the patch and of the edit
     }
+}
+
+TEST(SmashTarget, TheRefinementLowersTheMeanAndKeepsTheWhites) {
+    // A per-channel gamma: the white region (inputs above the brighten step's clip) wants white
+    // in every channel; an unguarded step once pushed entries there to 0.52 (67 steps dark).
+    const Image scene = loadScene();
+    Image shot = screenshot(scene, nullptr);
+    const PatchPlacement p = embedPatch(shot.view(), EmbedOptions{});
+    const Edit gamma = [](glm::dvec3 c) {
+        return glm::dvec3(std::pow(c.x, 0.8), std::pow(c.y, 0.9), std::pow(c.z, 1.1));
+    };
+    applyEdit(shot, gamma, 8);
+    ExtractOptions o;
+    o.refine = true;
+    const ExtractResult refined = extractLut(shot.view(), o);
+    ASSERT_TRUE(refined.refined);
+    o.refine = false;
+    const ExtractResult exact = extractLut(shot.view(), o);
+    const Compare cr = compareWithGame(scene, shot, refined.lut, p);
+    const Compare ce = compareWithGame(scene, shot, exact.lut, p);
+    std::printf("[ measured ] gamma edit, game vs edited screenshot: exact max %.2f mean %.3f, "
+                "refined max %.2f mean %.3f 8-bit steps\n",
+                ce.maxSteps, ce.meanSteps, cr.maxSteps, cr.meanSteps);
+    EXPECT_LE(cr.meanSteps, ce.meanSteps + 0.02);
+    EXPECT_LE(cr.maxSteps, ce.maxSteps + 1.0);
+    EXPECT_LE(refined.modelError.meanSteps, refined.exactModelError.meanSteps);
+    EXPECT_LE(refined.modelError.maxSteps, refined.exactModelError.maxSteps + 1.0);
 }

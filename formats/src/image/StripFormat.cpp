@@ -26,7 +26,13 @@
 //     exactly one layout passes, it is taken; an Info diagnostic says so only when it is not
 //     unreal, the default of an N^2 x N strip (a clean default read changes nothing the user
 //     expects, so it needs no note).
-//  4. If none passes (e.g. a black-and-white or strongly cross-channel grade), the image is read
+//  4. Otherwise (none or several pass), the layout that is "neutral-shaped" in brightness: the
+//     table's output luminance, fitted linearly to the input indices, weighs them like the
+//     neutral's (0.2126 r + 0.7152 g + 0.0722 b, all of one sign: a gradient map, a
+//     black-and-white conversion or an inverting map of the neutral keeps that shape, the other
+//     layouts swap green and blue or reverse green). If exactly one layout fits that shape
+//     (cosine >= 0.9, every other one < 0.7) it is taken, with an Info diagnostic.
+//  5. If that does not decide either (e.g. a strongly cross-channel grade), the image is read
 //     as unreal, the default layout of an N^2 x N strip, with a Warning -- but only when unreal
 //     scores best or ties (sum of the three correlations, within 0.05); if another layout looks
 //     more plausible, the read is refused with the layouts that fit and their scores, asking for
@@ -44,6 +50,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace lut::formats {
 
@@ -107,6 +114,66 @@ AxisScore axisScore(const Lut3D& lut) {
     return s;
 }
 
+// How much the table's luminance weighs the input axes like the neutral's: the cosine between
+// the least-squares weights (w_r, w_g, w_b) of luma(out) ~ c + w . (r, g, b) and (0.2126, 0.7152,
+// 0.0722), as an absolute value; 0 when the weights are not all of one sign or one of them is
+// less than a quarter of the neutral's.
+double lumaShape(const Lut3D& lut) {
+    const int n = lut.size();
+    // normal equations on centred indices: the three axes are uncorrelated over the full lattice
+    double sxy[3] = {0, 0, 0}, sxx = 0.0;
+    double mean = 0.0;
+    const double cm = (n - 1) / 2.0;
+    std::size_t count = 0;
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 v = lut.at(r, g, b);
+                const double y = 0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z;
+                if (!std::isfinite(y))
+                    continue;
+                mean += y;
+                ++count;
+            }
+    if (count == 0)
+        return 0.0;
+    mean /= static_cast<double>(count);
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 v = lut.at(r, g, b);
+                const double y = 0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z - mean;
+                if (!std::isfinite(y))
+                    continue;
+                const double idx[3] = {r - cm, g - cm, b - cm};
+                for (int c = 0; c < 3; ++c)
+                    sxy[c] += idx[c] * y;
+            }
+    for (int i = 0; i < n; ++i)
+        sxx += (i - cm) * (i - cm);
+    sxx *= static_cast<double>(n) * n;
+    const double w[3] = {sxy[0] / sxx, sxy[1] / sxx, sxy[2] / sxx};
+    const bool oneSign = (w[0] > 0 && w[1] > 0 && w[2] > 0) || (w[0] < 0 && w[1] < 0 && w[2] < 0);
+    if (!oneSign)
+        return 0.0;
+    const double ref[3] = {0.2126, 0.7152, 0.0722};
+    double dot = 0.0, ww = 0.0, rr = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        dot += w[c] * ref[c];
+        ww += w[c] * w[c];
+        rr += ref[c] * ref[c];
+    }
+    if (!(ww > 0.0))
+        return 0.0;
+    // every axis must count, at least a quarter as much as in the neutral (a flat channel is
+    // not a neutral's shape)
+    const double scale = std::sqrt(ww / rr);
+    for (int c = 0; c < 3; ++c)
+        if (std::fabs(w[c]) < 0.25 * ref[c] * scale)
+            return 0.0;
+    return std::fabs(dot) / std::sqrt(ww * rr);
+}
+
 std::string sizeText(int w, int h) {
     return std::to_string(w) + "x" + std::to_string(h);
 }
@@ -133,6 +200,34 @@ std::string stripLayoutNames() {
 int defaultBitDepth(const std::string& path) {
     const std::string ext = extensionOf(path);
     return ext == ".exr" || ext == ".hdr" ? 32 : 8;
+}
+
+struct Shaped {
+    std::size_t index;
+    std::string table;
+};
+
+// The one layout whose table is neutral-shaped in brightness (lumaShape >= 0.9, the others
+// < 0.7), if there is one.
+std::optional<Shaped> neutralShaped(const ImageView& img, const std::vector<LayoutFit>& fits) {
+    std::vector<double> shape;
+    std::string table;
+    for (const auto& f : fits) {
+        shape.push_back(lumaShape(lutFromImage(img, f.layout, f.size)));
+        table += (table.empty() ? "" : ", ") + std::string(toString(f.layout)) + " " +
+                 fmt2(shape.back());
+    }
+    std::optional<Shaped> found;
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+        if (shape[i] >= 0.9) {
+            if (found)
+                return std::nullopt;
+            found = Shaped{i, "brightness shape " + table};
+        } else if (shape[i] >= 0.7) {
+            return std::nullopt;
+        }
+    }
+    return found;
 }
 
 } // namespace
@@ -211,6 +306,16 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                         " fits " + fitsText(fits) + "; only in " + toString(layout) +
                         " does each output channel follow its own input axis, correlations " +
                         table + "); name the layout (--in-layout) to override"));
+        } else if (const auto shaped = neutralShaped(img.image.view(), fits)) {
+            layout = fits[shaped->index].layout;
+            n = fits[shaped->index].size;
+            file.diagnostics.push_back(makeDiagnostic(
+                S::Info, path,
+                std::string("layout detected: ") + toString(layout) + " (" + sizeText(w, h) +
+                    " fits " + fitsText(fits) + "; only in " + toString(layout) +
+                    " does the table's brightness weigh the inputs like a neutral's, e.g. after "
+                    "a gradient map: " +
+                    shaped->table + "); name the layout (--in-layout) to override"));
         } else {
             std::size_t best = 0;
             for (std::size_t i = 1; i < fits.size(); ++i)

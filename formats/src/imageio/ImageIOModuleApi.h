@@ -17,7 +17,7 @@
 
 namespace lut::formats::module {
 
-constexpr int kImageIOApiVersion = 2;
+constexpr int kImageIOApiVersion = 3; // 3: ImageInfo has colorSpace and chromaSubsampling
 constexpr const char* kImageIOModuleName = "lutkit_imageio.so";
 constexpr const char* kImageIOEntryPoint = "lutkit_imageio_api";
 

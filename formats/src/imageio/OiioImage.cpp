@@ -200,6 +200,8 @@ void OiioSource::describe(ImageInfo& info, ImageMetadata& meta, int& granularity
     info.compression = s.get_string_attribute("compression");
     info.channelNames.assign(s.channelnames.begin(), s.channelnames.end());
     info.alphaChannel = s.alpha_channel;
+    info.colorSpace = s.get_string_attribute("oiio:ColorSpace");
+    info.chromaSubsampling = s.get_string_attribute("jpeg:subsampling");
     granularity = s.tile_height > 0 ? s.tile_height : 1;
     meta.format = info.format;
     meta.oiioAttributes = serialize(s.extra_attribs);

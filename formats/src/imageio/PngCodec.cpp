@@ -225,6 +225,14 @@ private:
             if (nul != std::string::npos && nul + 2 <= d.size())
                 m_meta->icc = inflateAll(reinterpret_cast<const unsigned char*>(d.data()) + nul + 2,
                                          d.size() - nul - 2, 16u << 20);
+        } else if (isType(c.type, "sRGB")) {
+            m_info.colorSpace = "sRGB";
+        } else if (isType(c.type, "gAMA") && d.size() == 4 && m_info.colorSpace.empty()) {
+            const unsigned char* g = reinterpret_cast<const unsigned char*>(d.data());
+            const std::uint32_t gamma = (std::uint32_t(g[0]) << 24) | (std::uint32_t(g[1]) << 16) |
+                                        (std::uint32_t(g[2]) << 8) | g[3];
+            if (gamma == 100000) // stored values are linear light
+                m_info.colorSpace = "Linear";
         } else if (isType(c.type, "eXIf")) {
             m_meta->exif = d;
         } else if (isType(c.type, "tEXt")) {

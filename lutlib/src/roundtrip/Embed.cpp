@@ -4,6 +4,7 @@
 
 #include "lut/Error.h"
 #include "lut/Lut3D.h"
+#include "lut/roundtrip/LutDigest.h"
 #include "roundtrip/MarkerFrame.h"
 
 #include <cmath>
@@ -43,37 +44,84 @@ LutLayout defaultPatchLayout(int size) {
     return level * level == size && level >= 3 ? LutLayout::Hald : LutLayout::Pilot;
 }
 
+PatchLattice effectiveLattice(const EmbedOptions& o) {
+    const PatchLattice chosen =
+        o.lattice ? *o.lattice
+                  : (o.target == ExtractTarget::Raw ? PatchLattice::Uniform : PatchLattice::Smash);
+    if (chosen == PatchLattice::Smash && o.originalLut)
+        return PatchLattice::SmashStage;
+    if (chosen == PatchLattice::SmashStage && !o.originalLut)
+        return PatchLattice::Smash;
+    return chosen;
+}
+
+namespace {
+
+// The frame's position along one axis: `margin` from the near edge (or the far one), moved
+// inwards until the patch's first entry (2 cells in) sits on the JPEG grid when asked and possible.
+int framePosition(int imageSize, int frameSize, int margin, int cell, bool far, bool align) {
+    int pos = far ? imageSize - margin - frameSize : margin;
+    if (!align)
+        return pos;
+    for (int shift = 0; shift < kJpegGrid; ++shift) {
+        const int p = far ? pos - shift : pos + shift;
+        if (p < 0 || p + frameSize > imageSize)
+            break;
+        if ((p + 2 * cell) % kJpegGrid == 0)
+            return p;
+    }
+    return pos;
+}
+
+} // namespace
+
 PatchPlacement embedPatch(const ImageView& image, const EmbedOptions& o) {
     if (o.bitDepth != 8 && o.bitDepth != 16 && o.bitDepth != 32)
         throw Error("embed: bit depth must be 8, 16 or 32, not " + std::to_string(o.bitDepth));
     if (o.margin < 0)
         throw Error("embed: negative margin");
-    const int size = o.lattice == PatchLattice::Smash ? kSmashLatticeSize : o.size;
+    if (o.originalLut && o.target == ExtractTarget::Raw)
+        throw Error("embed: an original LUT is for the smash target (a raw LUT does not depend on "
+                    "the stage's LUT)");
+    if (o.originalLut && o.originalLut->empty())
+        throw Error("embed: the original LUT is empty");
+    const PatchLattice lattice = effectiveLattice(o);
+    const int size = lattice == PatchLattice::Smash        ? kSmashLatticeSize
+                     : lattice == PatchLattice::SmashStage ? kSmashLutSize
+                                                           : o.size;
     const LutLayout layout = o.layout ? *o.layout : defaultPatchLayout(size);
+    int scale = o.scale > 0 ? o.scale : kDefaultPatchScale;
     int fwPx = 0, fhPx = 0;
-    patchFrameSize(layout, size, o.scale, fwPx, fhPx);
+    patchFrameSize(layout, size, scale, fwPx, fhPx);
+    while (o.scale == 0 && scale > 1 &&
+           (static_cast<long long>(fwPx) + o.margin > image.width ||
+            static_cast<long long>(fhPx) + o.margin > image.height))
+        patchFrameSize(layout, size, --scale, fwPx, fhPx);
     if (static_cast<long long>(fwPx) + o.margin > image.width ||
         static_cast<long long>(fhPx) + o.margin > image.height)
         throw Error("embed: the " + std::to_string(size) + "^3 " + toString(layout) +
-                    " patch at scale " + std::to_string(o.scale) + " needs " +
+                    " patch at scale " + std::to_string(scale) + " needs " +
                     std::to_string(fwPx + o.margin) + "x" + std::to_string(fhPx + o.margin) +
                     " pixels with its margin, the screenshot is " + std::to_string(image.width) +
-                    "x" + std::to_string(image.height) + " (use a smaller --size or --scale)");
+                    "x" + std::to_string(image.height) + " (use a smaller --scale or --size)");
     PatchPlacement p;
-    p.lattice = o.lattice;
+    p.lattice = lattice;
     p.layout = layout;
     p.size = size;
-    p.scale = o.scale;
-    p.cell = o.scale;
+    p.scale = scale;
+    p.cell = scale;
     p.bitDepth = o.bitDepth;
     p.frameWidth = fwPx;
     p.frameHeight = fhPx;
+    p.target = o.target;
+    if (o.originalLut)
+        p.stageDigest = lutDigest(*o.originalLut);
     const bool right = o.corner == PatchCorner::TopRight || o.corner == PatchCorner::BottomRight;
     const bool bottom = o.corner == PatchCorner::BottomLeft || o.corner == PatchCorner::BottomRight;
-    p.frameX = right ? image.width - o.margin - fwPx : o.margin;
-    p.frameY = bottom ? image.height - o.margin - fhPx : o.margin;
+    p.frameX = framePosition(image.width, fwPx, o.margin, scale, right, o.alignToJpegGrid);
+    p.frameY = framePosition(image.height, fhPx, o.margin, scale, bottom, o.alignToJpegGrid);
 
-    const int k = o.scale;
+    const int k = scale;
     int cw = 0, ch = 0;
     detail::patchCells(layout, size, cw, ch);
     const int fw = cw + 4, fh = ch + 4;
@@ -91,23 +139,30 @@ PatchPlacement embedPatch(const ImageView& image, const EmbedOptions& o) {
             if (cx == 0 || cy == 0 || cx == fw - 1 || cy == fh - 1)
                 fillCell(cx, cy, ((cx + cy) & 1) ? 0.0f : 1.0f);
     detail::MarkerHeader header;
-    header.lattice = o.lattice;
+    header.lattice = lattice;
     header.bitDepth = o.bitDepth;
     header.layout = layout;
     header.size = size;
-    header.scale = o.scale;
+    header.scale = scale;
+    header.target = p.target;
+    header.stageDigest = p.stageDigest;
     const auto bits = detail::headerBits(header);
+    const int headerLength = detail::headerBitCount(header.version);
     const auto ring = detail::innerRing(fw, fh);
     for (std::size_t i = 0; i < ring.size(); ++i)
-        fillCell(ring[i].first, ring[i].second, bits[i % detail::kHeaderBits] ? 1.0f : 0.0f);
+        fillCell(ring[i].first, ring[i].second, bits[i % headerLength] ? 1.0f : 0.0f);
 
     Lut3D neutral(size);
-    for (int b = 0; b < size; ++b)
-        for (int g = 0; g < size; ++g)
-            for (int r = 0; r < size; ++r)
-                neutral.at(r, g, b) = glm::vec3(patchInputValue(o.lattice, r, size, o.bitDepth),
-                                                patchInputValue(o.lattice, g, size, o.bitDepth),
-                                                patchInputValue(o.lattice, b, size, o.bitDepth));
+    if (lattice == PatchLattice::SmashStage) {
+        neutral = stagePatchInputs(*o.originalLut, size, o.bitDepth);
+    } else {
+        for (int b = 0; b < size; ++b)
+            for (int g = 0; g < size; ++g)
+                for (int r = 0; r < size; ++r)
+                    neutral.at(r, g, b) = glm::vec3(patchInputValue(lattice, r, size, o.bitDepth),
+                                                    patchInputValue(lattice, g, size, o.bitDepth),
+                                                    patchInputValue(lattice, b, size, o.bitDepth));
+    }
     drawLut(neutral, layout, image, p.patchX(), p.patchY(), k);
     return p;
 }

@@ -1,14 +1,18 @@
 // Extract: the LUT from a read patch, for a raw engine (the edit itself) or for the game (the
-// edit composed with what the game does to its LUT's output); see lut/roundtrip/Extract.h,
-// docs/roundtrip.md and, for the game's side, docs/specs/smash-pipeline.md.
+// edit composed with what the game does to its LUT's output, lut/pipeline/SmashAuthoring.h); see
+// lut/roundtrip/Extract.h, docs/roundtrip.md and, for the game's side,
+// docs/specs/smash-pipeline.md.
 #include "lut/roundtrip/Extract.h"
 
 #include "lut/interp/Sampler.h"
-#include "lut/ops/QuantizeLut.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/pipeline/SmashAuthoring.h"
+#include "lut/pipeline/SmashConstants.h"
+#include "lut/roundtrip/Embed.h"
+#include "lut/roundtrip/LutDigest.h"
 #include "lut/roundtrip/PatchFinder.h"
+#include "pipeline/GameDisplay.h"
+#include "roundtrip/ExtractBounds.h"
 #include "roundtrip/ExtractChecks.h"
-#include "roundtrip/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,20 +23,18 @@ namespace lut {
 
 using detail::addNote;
 using detail::addWarning;
-using detail::clampUnit;
 using detail::formatMessage;
-using detail::gameShown;
 
-const char* toString(ExtractTarget t) {
-    return t == ExtractTarget::Raw ? "raw" : "smash";
-}
-
-ExtractTarget parseTarget(std::string_view name) {
-    if (name == "raw")
-        return ExtractTarget::Raw;
-    if (name == "smash")
-        return ExtractTarget::Smash;
-    throw Error("unknown target '" + std::string(name) + "' (expected raw or smash)");
+const char* toString(TargetSource s) {
+    switch (s) {
+    case TargetSource::Option:
+        return "given";
+    case TargetSource::Patch:
+        return "recorded in the patch";
+    case TargetSource::Lattice:
+        return "the patch's lattice";
+    }
+    return "?";
 }
 
 bool ExtractResult::has(RoundtripWarning w) const {
@@ -51,77 +53,98 @@ Lut3D rawLut(const PatchFunction& edit, int m) {
     return out;
 }
 
-// Smash: the m^3 LUT that makes the game show the edited look, the values it had to clamp, and
-// the error the game shows with it once it is stored in 8 bits.
-void smashLut(const PatchFunction& edit, int m, const Lut3D* originalLut, ExtractResult& res) {
-    std::unique_ptr<Sampler> original;
-    if (originalLut)
-        original = makeSampler(*originalLut, Interpolation::Trilinear);
-    // What the modder wants the game to show for the gamma-space input s: the edit applied to
-    // what the unedited screenshot showed there. With the game-display lattice and a neutral
-    // stage LUT, every lattice input lands (up to the patch's storage rounding) on a patch node;
-    // otherwise the patch is interpolated.
-    auto wanted = [&](glm::vec3 s) {
-        const glm::vec3 l0 = original ? original->sample(s) : s;
-        glm::vec3 shot;
+Lut3D rounded8(const Lut3D& lut) {
+    Lut3D out = lut;
+    for (auto& e : out.entries())
         for (int c = 0; c < 3; ++c)
-            shot[c] = static_cast<float>(gameShown(l0[c], s[c]));
-        return edit(shot);
-    };
-    Lut3D out(m);
-    std::size_t clamped = 0;
-    double farthest = 0.0;
-    for (int b = 0; b < m; ++b)
-        for (int g = 0; g < m; ++g)
-            for (int r = 0; r < m; ++r) {
-                const glm::vec3 s = glm::vec3(r, g, b) / static_cast<float>(m - 1);
-                const glm::vec3 want = wanted(s);
-                glm::vec3 targetLinear;
-                for (int c = 0; c < 3; ++c)
-                    targetLinear[c] =
-                        static_cast<float>(detail::srgbDecodeUnit(clampUnit(want[c])));
-                // the shared inverse of the game's grading (lut/pipeline/SmashGrading.h)
-                const glm::vec3 exact = smashLutEntryForTarget(targetLinear, s);
-                glm::vec3 entry;
-                for (int c = 0; c < 3; ++c) {
-                    const double l = exact[c];
-                    const double lc = clampUnit(l);
-                    // The brighten step keeps 0.039% of s: a black target for a bright input
-                    // needs L slightly below 0 (at most 0.1 8-bit steps); counted too.
-                    if (std::fabs(l - lc) > 1e-6) {
-                        ++clamped;
-                        farthest = std::max(farthest, std::fabs(l - lc));
-                    }
-                    entry[c] = static_cast<float>(lc);
-                }
-                out.at(r, g, b) = entry;
-            }
-    res.clampedEntries = clamped;
-    res.clampedMax = farthest;
-    if (clamped > 0)
-        addWarning(res, RoundtripWarning::OutOfRange,
-                   formatMessage("%g LUT values would need to leave [0,1] (by up to %.3g, %.3g "
-                                 "8-bit steps) to show the edited colours in game; they were "
-                                 "clamped: the game cannot show those colours",
-                                 double(clamped), farthest, farthest * 255.0));
-    // The in-game error: the 8-bit LUT the game receives, sampled trilinearly between lattice
-    // points, against the edited look, on probes at quarter lattice steps.
-    Lut3D shipped = out;
-    quantize8(shipped);
-    const auto game = makeSampler(shipped, Interpolation::Trilinear);
-    ErrorAccumulator acc;
-    const int probes = 4 * (m - 1) + 1;
-    for (int b = 0; b < probes; ++b)
-        for (int g = 0; g < probes; ++g)
-            for (int r = 0; r < probes; ++r) {
-                const glm::vec3 s = glm::vec3(r, g, b) / static_cast<float>(probes - 1);
-                const glm::vec3 want = wanted(s);
-                const glm::vec3 l = game->sample(s);
-                for (int c = 0; c < 3; ++c)
-                    acc.add(gameShown(l[c], s[c]), clampUnit(want[c]));
-            }
-    res.gameError = acc.result();
-    res.lut = std::move(out);
+            e[c] = static_cast<float>(std::lround(detail::clampUnit(e[c]) * 255.0) / 255.0);
+    return out;
+}
+
+std::string patchText(const PatchPlacement& pl) {
+    std::string s = std::to_string(pl.size) + "^3 " + toString(pl.lattice) + " lattice";
+    if (pl.lattice == PatchLattice::SmashStage)
+        s += " for the stage LUT " + digestText(pl.stageDigest.value_or(0));
+    s += ", " + std::string(toString(pl.layout)) + " layout at scale " + std::to_string(pl.scale) +
+         ", " + std::to_string(pl.bitDepth) + "-bit";
+    if (pl.target)
+        s += std::string(", made for ") + toString(*pl.target);
+    if (pl.headerVersion == 1)
+        s += " (an older patch: no target recorded)";
+    return s + ", frame at (" + std::to_string(pl.frameX) + ", " + std::to_string(pl.frameY) + ")";
+}
+
+void resolveTarget(const PatchPlacement& pl, const ExtractOptions& o, ExtractResult& res) {
+    if (o.target) {
+        res.target = *o.target;
+        res.targetSource = TargetSource::Option;
+    } else if (pl.target) {
+        res.target = *pl.target;
+        res.targetSource = TargetSource::Patch;
+    } else {
+        res.target = isGameDisplayLattice(pl.lattice) ? ExtractTarget::Smash : ExtractTarget::Raw;
+        res.targetSource = TargetSource::Lattice;
+    }
+}
+
+// The stage LUT the caller gave against the digest the patch recorded.
+void checkStage(const PatchReading& patch, const ExtractOptions& o, ExtractResult& res) {
+    const PatchPlacement& pl = patch.placement;
+    if (!o.originalLut)
+        return;
+    const std::uint16_t given = lutDigest(*o.originalLut);
+    if (pl.stageDigest && *pl.stageDigest != given)
+        addWarning(res, RoundtripWarning::StageMismatch,
+                   "the patch was embedded for the stage LUT " + digestText(*pl.stageDigest) +
+                       " but the original LUT given is " + digestText(given) +
+                       ": the patch's colours are that LUT's picture, the given one is ignored");
+    else if (!pl.stageDigest && pl.headerVersion >= 2 && isGameDisplayLattice(pl.lattice))
+        addNote(res, "the patch was embedded for a neutral stage; the original LUT " +
+                         digestText(given) +
+                         " is applied by interpolating the patch (embed --original-lut reads the "
+                         "edit at exactly its colours)");
+}
+
+// Chroma subsampling from the file's metadata and the patch's pixels: said, and a warning when
+// the patch's blocks do not line up with the subsampling grid.
+void checkChromaSubsampling(const PatchReading& patch, const ExtractOptions& o,
+                            ExtractResult& res) {
+    const PatchPlacement& pl = patch.placement;
+    const std::string& meta = o.fileChromaSubsampling;
+    const std::string seen = patch.chroma.scheme();
+    const bool metaSubsampled = !meta.empty() && meta != "4:4:4";
+    const bool seenSubsampled = !seen.empty() && seen != "4:4:4";
+    if (!metaSubsampled && !seenSubsampled) {
+        if (!meta.empty())
+            addNote(res, "the file stores chroma at full resolution (" + meta + ")");
+        return;
+    }
+    std::string how;
+    if (!meta.empty())
+        how = "the file's metadata says " + meta;
+    if (!seen.empty())
+        how += std::string(how.empty() ? "" : "; ") + "the patch's pixels show " + seen +
+               formatMessage(" (colour edges %.0f%% as sharp as brightness edges)",
+                             100.0 * std::min(patch.chroma.chromaSharpness[0] /
+                                                  std::max(patch.chroma.lumaSharpness[0], 1e-9),
+                                              patch.chroma.chromaSharpness[1] /
+                                                  std::max(patch.chroma.lumaSharpness[1], 1e-9)));
+    const bool aligned = pl.cell >= kDefaultPatchScale && pl.patchX() % kJpegGrid == 0 &&
+                         pl.patchY() % kJpegGrid == 0 && pl.cell % 8 == 0;
+    if (aligned) {
+        addNote(res, "chroma subsampling: " + how +
+                         "; the patch's blocks line up with the JPEG grid, so colours blend only "
+                         "inside them (the expected error includes what is left)");
+        return;
+    }
+    addWarning(res, RoundtripWarning::ChromaSubsampling,
+               "chroma subsampling: " + how +
+                   ": the colour of each entry blended with its neighbours' (the patch's " +
+                   std::to_string(pl.cell) + "-pixel blocks at (" + std::to_string(pl.patchX()) +
+                   ", " + std::to_string(pl.patchY()) +
+                   ") are not on the 16-pixel JPEG grid). Save the graded image as PNG or TIFF "
+                   "(or JPEG with 4:4:4 chroma), or embed again with the default --scale 8 and "
+                   "do not crop before saving");
 }
 
 } // namespace
@@ -134,11 +157,19 @@ ExtractResult extractLut(const ImageView& edited, const ExtractOptions& options)
     return extractLut(patch, options);
 }
 
-ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& options) {
+ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& options) {
     ExtractResult res;
-    res.placement = patch.placement;
-    const int n = patch.values.size();
-    const PatchPlacement& pl = patch.placement;
+    res.placement = reading.placement;
+    const PatchPlacement& pl = reading.placement;
+    const int n = reading.values.size();
+    resolveTarget(pl, options, res);
+    checkStage(reading, options, res);
+    const bool stage = pl.lattice == PatchLattice::SmashStage;
+    const bool stageMatches =
+        stage && options.originalLut && pl.stageDigest == lutDigest(*options.originalLut);
+    PatchReading patch = reading;
+    if (stageMatches)
+        patch.inputs = stagePatchInputs(*options.originalLut, n, pl.bitDepth);
 
     if (pl.cell != pl.scale) {
         const bool whole = pl.cell % pl.scale == 0;
@@ -151,37 +182,119 @@ ExtractResult extractLut(const PatchReading& patch, const ExtractOptions& option
                                          "resize",
                                  double(pl.cell) / pl.scale, pl.cell, pl.scale));
     }
-    detail::checkPatch(patch, res);
+    const bool lossyFile = !options.fileChromaSubsampling.empty() ||
+                           (patch.chroma.measured && patch.chroma.scheme() != "4:4:4");
+    detail::checkPatch(patch, res, lossyFile);
+    checkChromaSubsampling(patch, options, res);
 
-    // How well the patch predicts the edit between its lattice points.
-    res.subLatticeError = detail::subLatticeError(patch);
-    res.expectedError = res.subLatticeError;
-    res.expectedError.maxAbs /= 4.0;
-    res.expectedError.meanAbs /= 4.0;
+    const detail::SubLattice sub = detail::subLatticeCheck(patch);
+    res.subLattice = sub.stats;
+    const detail::ReadNoise noise = detail::estimateReadNoise(patch);
+    double noiseSum = 0.0;
+    for (std::size_t i = 0; i < noise.max.entryCount(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            res.readNoiseMax = std::max(res.readNoiseMax, double(noise.max.entries()[i][c]));
+            noiseSum += noise.mean.entries()[i][c];
+        }
+    res.readNoiseMean = noiseSum / (3.0 * static_cast<double>(noise.max.entryCount()));
 
     const PatchFunction edit(patch.values, patch.axis);
-    if (options.target == ExtractTarget::Raw) {
-        // the smash lattice is not uniform: its raw LUT defaults to the game's 16^3
-        const int m = options.outputSize > 0              ? options.outputSize
-                      : pl.lattice == PatchLattice::Smash ? kSmashLutSize
-                                                          : n;
+    if (res.target == ExtractTarget::Raw) {
+        if (stage)
+            throw Error("this patch was embedded for the game with a stage LUT: its colours are "
+                        "that LUT's picture, not a lattice a raw LUT can be read from; extract it "
+                        "with --target smash, or embed again with --target raw");
+        // the game-display lattice is not uniform: its raw LUT defaults to the game's 16^3
+        const int m = options.outputSize > 0             ? options.outputSize
+                      : isGameDisplayLattice(pl.lattice) ? kSmashLutSize
+                                                         : n;
         res.lut = rawLut(edit, m);
+        res.expected = detail::rawExpectedError(patch, sub, noise, res.lut, edit, res.modelError,
+                                                options.nthreads);
+    } else if (pl.lattice == PatchLattice::SmushLegacy) {
+        // Smush-LUT's model: the strip's edited values are the game's LUT (the screenshot was
+        // darkened to the LUT's own values before grading); nothing to compensate.
+        if (options.outputSize > 0 && options.outputSize != kSmashLutSize)
+            throw Error("the game's LUT is " + std::to_string(kSmashLutSize) + "^3; --size " +
+                        std::to_string(options.outputSize) + " does not apply to --target smash");
+        res.lut = patch.values;
+        for (auto& e : res.lut.entries())
+            for (int c = 0; c < 3; ++c)
+                e[c] = static_cast<float>(detail::clampUnit(e[c]));
+        GameError at, all;
+        at.maxSteps = res.readNoiseMax;
+        at.meanSteps = res.readNoiseMean;
+        at.p99Steps = res.readNoiseMax;
+        all.maxSteps = res.readNoiseMax + 0.5 * res.subLattice.maxSteps;
+        all.meanSteps = res.readNoiseMean + 0.5 * res.subLattice.meanSteps;
+        all.p99Steps = res.readNoiseMax + 0.5 * res.subLattice.p99Steps;
+        res.expected.atLattice = at;
+        res.expected.overall = all;
+        res.expected.covers = "the LUT's values against Smush-LUT's model (the strip's edit is an "
+                              "edit of the LUT's own values), 8-bit steps";
     } else {
-        smashLut(edit, options.outputSize > 0 ? options.outputSize : kSmashLutSize,
-                 options.originalLut, res);
+        if (options.outputSize > 0 && options.outputSize != kSmashLutSize)
+            throw Error("the game's LUT is " + std::to_string(kSmashLutSize) + "^3; --size " +
+                        std::to_string(options.outputSize) + " does not apply to --target smash");
+        std::unique_ptr<Sampler> original;
+        if (options.originalLut && !stage)
+            original = makeSampler(*options.originalLut, Interpolation::Trilinear);
+        // What the modder wants the game to show for its LUT input s: a stage patch holds it on
+        // the game's own lattice (interpolated in s between entries); other patches hold the
+        // edit, read at the colour the unedited game showed for s.
+        const std::function<glm::dvec3(const glm::dvec3&)> wanted = [&](const glm::dvec3& s) {
+            if (stage)
+                return glm::dvec3(edit(glm::vec3(s)));
+            const glm::vec3 l0 = original ? original->sample(glm::vec3(s)) : glm::vec3(s);
+            glm::vec3 shot;
+            for (int c = 0; c < 3; ++c)
+                shot[c] = static_cast<float>(detail::gameShown(l0[c], s[c]));
+            return glm::dvec3(edit(shot));
+        };
+        SmashAuthoringOptions ao;
+        ao.gameLut = stage ? nullptr : options.originalLut;
+        ao.refine = options.refine;
+        ao.measure = options.refine;
+        ao.nthreads = options.nthreads;
+        SmashAuthoringResult authored = authorSmashLut(wanted, ao);
+        res.clampedEntries = authored.clampedEntries;
+        res.clampedMax = authored.clampedMax;
+        res.refined = authored.refined;
+        res.exactModelError = authored.exactError;
+        res.lut = std::move(authored.lut);
+        if (res.clampedEntries > 0)
+            addWarning(res, RoundtripWarning::OutOfRange,
+                       formatMessage("%g LUT values would need to leave [0,1] (by up to %.3g, "
+                                     "%.3g 8-bit steps) to show the edited colours in game; they "
+                                     "were clamped: the game cannot show those colours",
+                                     double(res.clampedEntries), res.clampedMax,
+                                     res.clampedMax * 255.0));
+        res.expected = detail::smashExpectedError(patch, sub, noise, rounded8(res.lut), wanted,
+                                                  stage ? nullptr : options.originalLut,
+                                                  res.modelError, options.nthreads);
     }
     res.lut.setTitle(std::string("extracted from a ") + std::to_string(n) + "^3 patch (" +
-                     toString(options.target) + ")");
-    addNote(res, std::string("patch: ") + std::to_string(n) + "^3 " + toString(pl.lattice) +
-                     " lattice, " + toString(pl.layout) + " layout at scale " +
-                     std::to_string(pl.scale) + ", frame at (" + std::to_string(pl.frameX) + ", " +
-                     std::to_string(pl.frameY) + ")");
-    addNote(res, "expected error between patch lattice points: " + res.expectedError.str() +
-                     " (sub-lattice check at twice the spacing: " + res.subLatticeError.str() +
+                     toString(res.target) + ")");
+    addNote(res, "patch: " + patchText(pl));
+    addNote(res, std::string("target: ") + toString(res.target) + " (" +
+                     (res.targetSource == TargetSource::Option && !options.targetReason.empty()
+                          ? options.targetReason
+                          : std::string(toString(res.targetSource))) +
                      ")");
-    if (options.target == ExtractTarget::Smash)
-        addNote(res, "expected in-game error (8-bit LUT, trilinear, display-encoded): " +
-                         res.gameError.str());
+    addNote(res, "expected error, an upper estimate from the patch's own redundancy (" +
+                     res.expected.covers + "):");
+    addNote(res, "  at the LUT's lattice points: " + res.expected.atLattice.str());
+    addNote(res,
+            "  over all inputs, between the lattice points too: " + res.expected.overall.str());
+    addNote(res, formatMessage("  made of: read error of the entries up to %.2f steps (storage, "
+                               "blocks, neighbouring entries, marker cells), interpolation "
+                               "between patch entries up to %.2f (sub-lattice check), the LUT "
+                               "itself up to %.2f",
+                               res.readNoiseMax, res.subLattice.maxSteps, res.modelError.maxSteps));
+    if (res.refined)
+        addNote(res, "least-squares refinement: the game vs the patch's edit " +
+                         res.exactModelError.str() + " with the exact composition, " +
+                         res.modelError.str() + " refined");
     return res;
 }
 

@@ -3,6 +3,7 @@
 // reports what it found (warnings with a kind, info notes). Each warning has a test that
 // triggers it (docs/roundtrip.md, "Warnings").
 #include "lut/ErrorStats.h"
+#include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchReader.h"
 #include "lut/roundtrip/RoundtripWarning.h"
@@ -22,10 +23,18 @@ std::string formatMessage(const char* format, double a, double b = 0, double c =
 // global edit explains (res.suspiciousEntries), values clipped at 0 or 1 (res.clippedValues),
 // and a grey axis that follows a pure gamma or sRGB <-> 2.2 curve (res.gamma): a colour-profile
 // conversion rather than an edit.
-void checkPatch(const PatchReading& patch, ExtractResult& res);
+// When blocks are not uniform the likely cause is named (res.cause) with its fix; lossyFile says
+// the file is known to be lossy (a JPEG), which makes colour-only deviation a compression mark.
+void checkPatch(const PatchReading& patch, ExtractResult& res, bool lossyFile);
 
 // Sub-lattice check: the patch's even lattice points (and the last one) predict the others by
-// the same interpolation extract uses; the error over all channels of the others.
-ErrorStats subLatticeError(const PatchReading& patch);
+// the same interpolation extract uses (spacing 2h instead of h).
+struct SubLattice {
+    GameError stats; // over all channels of the predicted entries, 8-bit steps
+    // Per entry and channel, 8-bit steps: at a predicted entry its prediction error, at a kept
+    // one the largest of its neighbours' (so every cell of the patch has a local value).
+    Lut3D residual;
+};
+SubLattice subLatticeCheck(const PatchReading& patch);
 
 } // namespace lut::detail

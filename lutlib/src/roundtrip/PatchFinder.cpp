@@ -5,6 +5,7 @@
 
 #include "lut/Error.h"
 #include "roundtrip/ColourDistance.h"
+#include "roundtrip/MarkerComb.h"
 #include "roundtrip/MarkerFrame.h"
 
 #include <glm/geometric.hpp>
@@ -27,6 +28,11 @@ using detail::maxDiff;
 constexpr float kSameTolerance = 2.5f / 255.0f;
 // Smallest difference between the two symbols we accept (after an edit squeezed them together).
 constexpr float kMinSeparation = 8.0f / 255.0f;
+// Pixels either side in which the edge scan looks for a larger change (an edge's own ringing).
+constexpr int kEdgeWindow = 12;
+// A marker period at most this close to a whole number is whole (edge peaks jitter under JPEG;
+// longer combs must come closer).
+constexpr double kWholePeriod = 0.1;
 
 glm::vec3 cellMean(const ImageView& img, int fx, int fy, int cell, int cx, int cy, bool& ok) {
     const int inset = cell >= 3 ? 1 : 0;
@@ -48,7 +54,6 @@ glm::vec3 cellMean(const ImageView& img, int fx, int fy, int cell, int cx, int c
                      static_cast<float>(acc[2] * inv));
 }
 
-// Tries to read a frame whose top-left pixel is (fx, fy) with cells of `cell` pixels.
 // Tries to read a frame whose top-left pixel is (fx, fy) with cells of `cell` pixels.
 bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, float minSep,
                  PatchPlacement& out, double* score = nullptr) {
@@ -83,9 +88,18 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
         bit = da < db ? 1 : 0;
         return true;
     };
-    // The geometry bits sit on the inner ring's top row; they say how long the ring is.
+    // The geometry bits sit on the inner ring's top row; they say how long the ring is. The sync
+    // byte says which header version follows.
     detail::HeaderBits bits{};
-    for (int i = 0; i < detail::kGeometryBits; ++i)
+    for (int i = 0; i < detail::kSyncBits; ++i)
+        if (!bitAt(1 + i, 1, bits[i]))
+            return false;
+    const int version = detail::versionFromSync(bits);
+    if (version == 0)
+        return false;
+    const int geometryBits = detail::geometryBitCount(version);
+    const int totalBits = detail::headerBitCount(version);
+    for (int i = detail::kSyncBits; i < geometryBits; ++i)
         if (!bitAt(1 + i, 1, bits[i]))
             return false;
     detail::MarkerHeader header;
@@ -98,14 +112,16 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
         return false;
     }
     const int fw = cw + 4, fh = ch + 4;
-    if (fw - 2 < detail::kMinHeaderRow)
+    if (fw - 2 < geometryBits + 2)
         return false;
     if (static_cast<long long>(fx) + static_cast<long long>(fw) * cell > img.width ||
         static_cast<long long>(fy) + static_cast<long long>(fh) * cell > img.height || fx < 0 ||
         fy < 0)
         return false;
     const auto ring = detail::innerRing(fw, fh);
-    for (int i = detail::kGeometryBits; i < detail::kHeaderBits; ++i)
+    if (static_cast<int>(ring.size()) < totalBits)
+        return false;
+    for (int i = geometryBits; i < totalBits; ++i)
         if (!bitAt(ring[i].first, ring[i].second, bits[i]))
             return false;
     if (!detail::decodeHeader(bits, header))
@@ -120,6 +136,9 @@ bool decodeFrame(const ImageView& img, int fx, int fy, int cell, float sameTol, 
     out.frameY = fy;
     out.frameWidth = fw * cell;
     out.frameHeight = fh * cell;
+    out.headerVersion = header.version;
+    out.target = header.target;
+    out.stageDigest = header.stageDigest;
     if (score)
         *score = spread;
     return true;
@@ -191,11 +210,11 @@ bool runScan(const ImageView& img, float tol, float minSep, PatchPlacement& out)
 // >= 20 strong edges at nearly constant spacing whose middles alternate between two colours.
 // A whole-number spacing is tried as a frame (cell centres survive a small blur); otherwise the
 // spacing is returned as evidence that the image was resized.
-double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
+double edgeScan(const ImageView& img, PatchPlacement& out, bool& found, detail::Comb& comb) {
     found = false;
     double scaledPeriod = 0.0;
     std::vector<double> edges;
-    std::vector<float> diffs;
+    std::vector<float> diffs, localMax;
     std::map<std::pair<int, int>, int> lastSeen;
     for (int y = 0; y < img.height; ++y) {
         edges.clear();
@@ -204,8 +223,18 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
         diffs.assign(static_cast<std::size_t>(img.width), 0.0f);
         for (int x = 1; x < img.width; ++x)
             diffs[x] = maxDiff(img.pixel(x, y), img.pixel(x - 1, y));
+        // Only changes of at least 45% of the largest one nearby count: JPEG rings and blocks
+        // around a marker edge, a much smaller change next to the edge's own.
+        localMax.assign(diffs.size(), 0.0f);
         for (int x = 1; x < img.width; ++x) {
-            if (diffs[x] <= 6.0f / 255.0f)
+            float m = 0.0f;
+            for (int k = std::max(1, x - kEdgeWindow);
+                 k <= std::min(img.width - 1, x + kEdgeWindow); ++k)
+                m = std::max(m, diffs[k]);
+            localMax[x] = m;
+        }
+        for (int x = 1; x < img.width; ++x) {
+            if (diffs[x] <= 6.0f / 255.0f || diffs[x] < 0.45f * localMax[x])
                 continue;
             // values are quantised: "equal" changes may differ by float rounding
             constexpr float kPlateau = 1.0f / 255.0f;
@@ -227,25 +256,52 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
             std::size_t j = i + 1;
             while (j + 1 < edges.size() && std::fabs((edges[j + 1] - edges[j]) - g0) <= 1.01)
                 ++j;
-            // keep the part whose segment middles alternate between two colours
+            if (!comb.seen && j - i >= 20) {
+                const double p = (edges[j] - edges[i]) / static_cast<double>(j - i);
+                if (std::fabs(p - std::round(p)) < kWholePeriod) {
+                    comb.seen = true;
+                    comb.y = y;
+                    comb.cell = static_cast<int>(std::lround(p));
+                    comb.edges.assign(edges.begin() + static_cast<std::ptrdiff_t>(i),
+                                      edges.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+                }
+            }
+            // keep the part whose segment middles alternate between two colours (the middle half
+            // of a segment, averaged: JPEG leaves noise on single pixels)
             auto mid = [&](std::size_t m) {
-                return img.pixel(static_cast<int>((edges[m] + edges[m + 1]) * 0.5), y);
+                const double a = edges[m], b = edges[m + 1], q = 0.25 * (b - a);
+                const int x0 = static_cast<int>(std::ceil(a + q)),
+                          x1 = std::max(x0, static_cast<int>(std::floor(b - q)));
+                glm::dvec3 acc(0.0);
+                for (int x = x0; x <= x1; ++x)
+                    acc += glm::dvec3(img.pixel(x, y)[0], img.pixel(x, y)[1], img.pixel(x, y)[2]);
+                return glm::vec3(acc / static_cast<double>(x1 - x0 + 1));
             };
             std::size_t end = i + 1;
-            while (end + 1 <= j &&
-                   (end < i + 2 || (maxDiff(mid(end), mid(end - 2)) <= 12.0f / 255.0f &&
-                                    maxDiff(mid(end), mid(end - 1)) >= kMinSeparation)))
+            while (end + 1 <= j) {
+                if (end >= i + 2) {
+                    const float sep = maxDiff(mid(end), mid(end - 1));
+                    if (sep < kMinSeparation ||
+                        maxDiff(mid(end), mid(end - 2)) > std::max(12.0f / 255.0f, 0.25f * sep))
+                        break;
+                }
                 ++end;
+            }
             const std::size_t count = end - i;
             if (count >= 20) {
                 j = end;
                 const double period = (edges[j] - edges[i]) / static_cast<double>(count);
-                bool uniform = true;
-                for (std::size_t k = i; k < j; ++k)
-                    if (std::fabs(edges[k + 1] - edges[k] - period) > 1e-9)
-                        uniform = false;
+                // every gap within a pixel of a whole-number cell (JPEG moves an edge's peak by
+                // a pixel); a resize leaves a fractional mean (3, 4, 3, 4: 3.5)
                 const int cell = static_cast<int>(std::lround(period));
-                if (uniform && std::fabs(period - cell) < 1e-6) {
+                // the comb's ends may each be a pixel off: over `count` cells that moves the
+                // mean period by up to 1.5/count
+                bool uniform = std::fabs(period - cell) <
+                               std::min(kWholePeriod, std::max(0.02, 1.5 / double(count)));
+                for (std::size_t k = i; k < j && uniform; ++k)
+                    if (std::fabs(edges[k + 1] - edges[k] - cell) > 1.01)
+                        uniform = false;
+                if (uniform) {
                     const int e0 = static_cast<int>(std::lround(edges[i]));
                     const auto key = std::make_pair(e0, cell);
                     auto it = lastSeen.find(key);
@@ -279,6 +335,50 @@ double edgeScan(const ImageView& img, PatchPlacement& out, bool& found) {
     return scaledPeriod;
 }
 
+// How sharply the outer ring's checkerboard changes at the cell boundaries a frame at (fx, fy)
+// would have: summed across the top row's cells (vertical boundaries) and down the left column
+// (horizontal ones), each at the cells' middle line.
+double boundaryEnergy(const ImageView& img, int fx, int fy, int cell, int fw, int fh) {
+    double e = 0.0;
+    auto diff = [&](int x0, int y0, int x1, int y1) {
+        if (x0 < 0 || y0 < 0 || x1 < 0 || y1 < 0 || x0 >= img.width || x1 >= img.width ||
+            y0 >= img.height || y1 >= img.height)
+            return 0.0;
+        return static_cast<double>(maxDiff(img.pixel(x0, y0), img.pixel(x1, y1)));
+    };
+    const int mid = cell / 2;
+    for (int k = 1; k < fw; ++k)
+        e += diff(fx + k * cell - 1, fy + mid, fx + k * cell, fy + mid);
+    for (int k = 1; k < fh; ++k)
+        e += diff(fx + mid, fy + k * cell - 1, fx + mid, fy + k * cell);
+    return e;
+}
+
+// A frame found on a softened image (JPEG, blur) may be read a pixel off: the cells' middles
+// still decode. Move it to where the checkerboard's boundaries are sharpest, if it decodes there.
+void refinePhase(const ImageView& img, PatchPlacement& p) {
+    const int cell = p.cell, fw = p.frameWidth / cell, fh = p.frameHeight / cell;
+    if (cell < 3)
+        return;
+    double best = boundaryEnergy(img, p.frameX, p.frameY, cell, fw, fh);
+    int bx = p.frameX, by = p.frameY;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const double e = boundaryEnergy(img, p.frameX + dx, p.frameY + dy, cell, fw, fh);
+            if (e > best * 1.02) {
+                best = e;
+                bx = p.frameX + dx;
+                by = p.frameY + dy;
+            }
+        }
+    if (bx == p.frameX && by == p.frameY)
+        return;
+    PatchPlacement moved;
+    if (decodeFrame(img, bx, by, cell, 12.0f / 255.0f, kMinSeparation, moved) &&
+        moved.size == p.size && moved.layout == p.layout)
+        p = moved;
+}
+
 } // namespace
 
 FindResult findPatch(const ImageView& img) {
@@ -292,9 +392,11 @@ FindResult findPatch(const ImageView& img) {
     bool found = runScan(img, kSameTolerance, kMinSeparation, p) ||
                  runScan(img, 10.0f / 255.0f, 30.0f / 255.0f, p);
     double period = 0.0;
+    detail::Comb comb;
     if (!found)
-        period = edgeScan(img, p, found);
+        period = edgeScan(img, p, found, comb);
     if (found) {
+        refinePhase(img, p);
         result.status = FindStatus::Found;
         result.placement = p;
         result.observedPeriod = static_cast<double>(p.cell);
@@ -313,9 +415,11 @@ FindResult findPatch(const ImageView& img) {
         result.message = buf;
         return result;
     }
+    if (comb.seen && detail::diagnoseComb(img, comb, result))
+        return result;
     result.message =
-        "no LUT patch found: the marker frame is missing, cropped, painted over, or an "
-        "edit mapped its black and white to the same colour";
+        "no LUT patch found: the marker frame is missing, cropped, painted over, blurred or "
+        "resized past reading, or an edit mapped its black and white to the same colour";
     return result;
 }
 

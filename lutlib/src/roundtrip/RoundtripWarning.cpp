@@ -14,6 +14,10 @@ const char* toString(RoundtripWarning w) {
         return "rescaled";
     case RoundtripWarning::OutOfRange:
         return "out-of-range";
+    case RoundtripWarning::StageMismatch:
+        return "stage-mismatch";
+    case RoundtripWarning::ChromaSubsampling:
+        return "chroma-subsampling";
     case RoundtripWarning::LowCoverage:
         return "low-coverage";
     case RoundtripWarning::FewColours:

@@ -31,6 +31,12 @@ struct ImageInfo {
     std::string compression;               // as OpenImageIO names it ("zip", "none", "lzw")
     std::vector<std::string> channelNames; // "R", "G", "B", "A", "Y", "Z" ...
     int alphaChannel = -1;                 // index of alpha, -1 = none
+    // What the file says about its pixels (empty when it says nothing): the colour space
+    // ("sRGB", "Linear", ...: OIIO's oiio:ColorSpace; a PNG's sRGB chunk, or "Linear" for a
+    // gAMA of 1.0) and a JPEG's chroma subsampling ("4:2:0",
+    // "4:2:2", "4:4:4": jpeg:subsampling).
+    std::string colorSpace;
+    std::string chromaSubsampling;
 };
 
 // What a file carries besides its pixels (PNG chunks, EXR header attributes, TIFF/EXIF tags, the

@@ -21,9 +21,11 @@
 // cannot reach stay outside [0,1] so callers can count them (lut/ops/Clipping.h); the nutexb
 // writer clamps and rounds.
 //
-// Until the round trip's exact compensation (issue 14) lands in lutlib this is the editor's
-// composition; it differs from smashGameLut (lut/pipeline/SmashCompensation.h), which treats the
-// edit as the whole gamma-space picture without the game's brighten step.
+// This is lut/pipeline/SmashAuthoring.h's exact composition (authorSmashLutForEdit) with
+// AboveWhite::Continue; use authorSmashLutForEdit directly for the screenshot's rule above white
+// (AboveWhite::Clip, what the round trip and `convert --target smash` ship), the refinement and
+// the error report. It differs from smashGameLut (lut/pipeline/SmashCompensation.h), which
+// treats the edit as the whole gamma-space picture without the game's brighten step.
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
 

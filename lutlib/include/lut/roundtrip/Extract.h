@@ -5,41 +5,73 @@
 #include "lut/ErrorStats.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/pipeline/GameError.h"
+#include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
 #include "lut/roundtrip/PatchReader.h"
+#include "lut/roundtrip/RoundtripTarget.h"
 #include "lut/roundtrip/RoundtripWarning.h"
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace lut {
 
-enum class ExtractTarget { Raw, Smash };
-const char* toString(ExtractTarget);
-ExtractTarget parseTarget(std::string_view name); // "raw", "smash"; throws lut::Error
-
 struct ExtractOptions {
-    ExtractTarget target = ExtractTarget::Raw;
-    const Lut3D* originalLut = nullptr; // smash: the stage's LUT the screenshot was taken with
-    int outputSize = 0;                 // 0: 16, or the patch size for a uniform patch and raw
+    // Default: what the patch's header records (embed's --target), else smash for a game-display
+    // patch and raw for a uniform one (patches made before the target was recorded).
+    std::optional<ExtractTarget> target;
+    std::string targetReason; // why the caller chose the target, for the note ("" = "given")
+    // Smash: the stage's LUT the screenshot was taken with. A patch embedded with --original-lut
+    // already holds its picture (only checked against the recorded digest); other patches are
+    // interpolated at the colours it shows.
+    const Lut3D* originalLut = nullptr;
+    int outputSize = 0;  // 0: 16, or the patch size for a uniform patch and raw
+    bool refine = false; // smash: least-squares refinement between lattice points
+    // What the file's metadata says about chroma subsampling ("4:2:0", "4:2:2", "4:4:4"; ""
+    // unknown: lut::formats::ImageInfo::chromaSubsampling); the patch's pixels are checked too.
+    std::string fileChromaSubsampling;
     int nthreads = 0;
+};
+
+// Where the target came from.
+enum class TargetSource { Option, Patch, Lattice };
+const char* toString(TargetSource); // "given", "recorded in the patch", "the patch's lattice"
+
+// An estimate that is meant to be an upper bound of the true error in practice: built from the
+// patch's own redundancy (the spread of the pixels of each block, the marker cells' spread, the
+// sub-lattice check of neighbouring cells), never from a best case (docs/roundtrip.md).
+struct ExpectedError {
+    GameError atLattice; // at the output LUT's lattice points
+    GameError overall;   // at every input: the lattice points and between them
+    std::string covers;  // what is compared with what, in which units
 };
 
 struct ExtractResult {
     Lut3D lut;
     PatchPlacement placement;
+    ExtractTarget target = ExtractTarget::Raw;
+    TargetSource targetSource = TargetSource::Lattice;
     Diagnostics diagnostics;
     std::vector<RoundtripWarning> warnings;
     bool has(RoundtripWarning w) const;
+    EditCause cause = EditCause::None; // the likely cause when the patch is not a global edit
 
-    // Sub-lattice check: the patch's even lattice points predict the odd ones (spacing 2h);
-    // between lattice points at spacing h the error is expected to be about a quarter of this.
-    ErrorStats subLatticeError;
-    ErrorStats expectedError; // subLatticeError / 4: the interpolation error at the patch spacing
-    // Smash: what the game shows with the written (8-bit) LUT vs the edited look, on probes
-    // between the 16^3 lattice points, display-encoded (8-bit steps via maxSteps8()).
-    ErrorStats gameError;
+    ExpectedError expected;
+    // The parts of the estimate, 8-bit steps:
+    GameError subLattice;      // the patch's even points predicting the odd ones (spacing 2h)
+    double readNoiseMax = 0.0; // largest read error of one entry (storage, blocks, marker cells)
+    double readNoiseMean = 0.0;
+    // What the LUT does against the edit as the patch measured it (no read or interpolation
+    // error of the patch counted): smash, the game with the 8-bit LUT; raw, the LUT applied with
+    // trilinear interpolation. A best case: the expected error above adds what the patch cannot
+    // know.
+    GameError modelError;
+    bool refined = false;           // smash: the LUT is the least-squares refinement
+    GameError exactModelError;      // smash with refine: the exact composition's model error
     std::size_t clampedEntries = 0; // smash: channel values that needed L outside [0,1]
     double clampedMax = 0.0;        // ... and the farthest one (in [0,1] units)
     std::size_t clippedValues = 0;  // channel values at 0 or 1 that were not 0 or 1 in the neutral

@@ -1,0 +1,70 @@
+// lutkit convert --target smash: the game's LUT for an edit of its picture (Smush-LUT's whole
+// job: a graded neutral strip in, a compensated color_grading_lut.nutexb out), through
+// lut::authorSmashLutForEdit (GameLut.h).
+#include "commands/Convert.h"
+
+#include "GameLut.h"
+#include "Json.h"
+#include "Usage.h"
+
+#include "lut/formats/Nutexb.h"
+#include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+
+#include <iostream>
+#include <sstream>
+
+namespace lut::cli {
+
+int runConvertGame(const ConvertOptions& o, const std::string& reason) {
+    checkNotSameFile(o.input, o.output);
+    if (o.size != 0 && o.size != 16)
+        throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
+    FormatOptions ro;
+    ro.layout = o.inLayout;
+    const LutFile in = formats::readLut(o.input, ro, o.inFormat);
+    std::ostringstream text;
+    text << "read     " << o.input << ": " << in.format
+         << (in.dialect.empty() ? "" : " (" + in.dialect + ")") << ", "
+         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string("1D")) << "\n";
+    printDiagnostics(text, in.diagnostics, o.verbosity);
+    text << "target   smash (" << reason << ")\n";
+    GameLutRequest q;
+    q.stageLut = o.originalLut;
+    q.screenshot = o.screenshot;
+    q.refine = o.refine;
+    q.interp = o.interp;
+    SmashAuthoringResult authored;
+    const Lut3D game = makeGameLut(in.toLut3D(), q, o.verbosity, text, &authored);
+    LutFile out;
+    out.cube = game;
+    FormatOptions wo;
+    wo.layout = o.layout;
+    wo.bitDepth = o.bitDepth;
+    wo.dither = o.dither;
+    if (!o.name.empty())
+        wo.setAttribute(formats::nutexb::kNameAttribute, o.name);
+    const Diagnostics wd = formats::writeLut(o.output, out, wo, o.format);
+    text << "wrote    " << o.output << ": 16^3 game LUT\n";
+    printDiagnostics(text, wd, o.verbosity);
+    if (o.json) {
+        std::cout << "{\"input\": " << json::quote(o.input)
+                  << ", \"output\": " << json::quote(o.output)
+                  << ", \"target\": \"smash\", \"measured_over\": "
+                  << json::quote(authored.measuredOver)
+                  << ",\n \"exact\": {\"max\": " << json::number(authored.exactError.maxSteps)
+                  << ", \"mean\": " << json::number(authored.exactError.meanSteps)
+                  << ", \"p99\": " << json::number(authored.exactError.p99Steps)
+                  << "},\n \"refined\": {\"max\": " << json::number(authored.refinedError.maxSteps)
+                  << ", \"mean\": " << json::number(authored.refinedError.meanSteps)
+                  << ", \"p99\": " << json::number(authored.refinedError.p99Steps)
+                  << "},\n \"written\": " << json::quote(o.refine ? "refined" : "exact")
+                  << ", \"clamped\": " << authored.clampedEntries
+                  << ",\n \"diagnostics\": " << json::diagnostics(wd) << "}\n";
+    } else {
+        std::cout << text.str();
+    }
+    return kExitOk;
+}
+
+} // namespace lut::cli

@@ -1,0 +1,83 @@
+#pragma once
+// Authoring a Smash Ultimate LUT for a look the modder made on the game's picture: the exact
+// composition at the game's 16^3 lattice, an optional least-squares refinement between lattice
+// points, and what the game then shows, measured (docs/roundtrip.md, "The compensation";
+// docs/specs/smash-pipeline.md). One implementation for `lutkit convert --target smash`, the
+// round trip's `extract --target smash` and the editor's game export.
+//
+// For every lattice input s of the game's LUT (s = (i, j, k)/15), in double precision:
+//     shown(s)  = srgb(min(1, (((G(s) - s) * 0.99961 + s) * 1.3703)^2.2))   G = the stage LUT
+//     wanted(s) = edit(shown(s))                                            (display colours)
+//     L(s)      = (srgb^-1(wanted)^(1/2.2) / 1.3703 - s) / 0.99961 + s      the exact entry
+// so the game shows wanted(s) at every lattice point. Between lattice points the game interpolates
+// L trilinearly, which is not the composition evaluated there: the refinement chooses the entries
+// that minimise the squared error of what the game shows over the colours that occur (a
+// screenshot's pixels, else inputs on a grid four times finer than the LUT's), and rounds them
+// to the 8-bit values the nutexb stores by a search on the true error.
+#include "lut/Image.h"
+#include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
+#include "lut/pipeline/GameError.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace lut {
+
+// Colours the unedited game displayed as white (every input with s > 1/1.3703 = 0.73 clips):
+//   Clip      the edit of white, edit(1): what the edited screenshot shows there (the default;
+//             the round trip and convert use it);
+//   Continue  edit(1) + (shown - 1) with shown the unclipped display value: the edit continued
+//             with slope 1 above its domain (bright highlights stay brighter than the edit's
+//             white).
+enum class AboveWhite { Clip, Continue };
+
+// The display colour the game should show for its LUT input s (gamma space, [0,1]^3).
+using WantedDisplay = std::function<glm::dvec3(const glm::dvec3& s)>;
+// An edit of display colours (what a modder does to a screenshot), [0,1]^3 -> colours.
+using DisplayEdit = std::function<glm::vec3(glm::vec3)>;
+
+struct SmashAuthoringOptions {
+    const Lut3D* gameLut = nullptr; // the stage's LUT the picture was made with (null: neutral)
+    AboveWhite aboveWhite = AboveWhite::Clip;
+    bool refine = false; // also compute the least-squares refinement and ship it
+    // The colours that occur: a screenshot the game showed (display-encoded, unedited). Null: the
+    // inputs s on a grid gridSubdivision times finer than the LUT's (61^3 for 4).
+    const ImageView* screenshot = nullptr;
+    std::size_t maxSamples = 250000; // a screenshot's pixels are subsampled regularly beyond this
+    int gridSubdivision = 4;
+    bool measure = true; // false: only the exact composition (no error report, no refinement)
+    int nthreads = 0;
+};
+
+struct SmashAuthoringResult {
+    Lut3D exact;          // the composition at the lattice points, unclamped (16^3)
+    Lut3D lut;            // what to ship: the refinement when asked for, else exact in [0,1]
+    bool refined = false; // lut is the refinement
+    // What the game shows with the 8-bit LUT vs wanted, over the colours (display steps):
+    GameError exactError;           // with exact rounded to nearest
+    GameError refinedError;         // with the refinement (count 0 unless refined)
+    std::size_t clampedEntries = 0; // channel values of exact outside [0,1]
+    double clampedMax = 0.0;        // ... the farthest (in [0,1] units)
+    std::string measuredOver;       // "the screenshot's 921600 pixels" / "inputs on a 61^3 grid"
+};
+
+// The general form: any wanted colour per input (the round trip uses it with the patch).
+SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted,
+                                    const SmashAuthoringOptions& options);
+// wanted(s) = edit(shown(s)) with options.aboveWhite.
+SmashAuthoringResult authorSmashLutForEdit(const DisplayEdit& edit,
+                                           const SmashAuthoringOptions& options);
+// The edit as a LUT file (any size and domain) sampled with `editInterpolation`; outside its
+// domain the edit takes the edge value.
+SmashAuthoringResult authorSmashLutForEdit(const Lut3D& edit, Interpolation editInterpolation,
+                                           const SmashAuthoringOptions& options);
+
+// The display colour (display-encoded) the game shows for its LUT input s with the stage LUT
+// `gameLut` (null: neutral); unclipped above 1 when `clip` is false.
+glm::dvec3 smashShownColour(const glm::dvec3& s, const Lut3D* gameLut, bool clip = true);
+
+} // namespace lut

@@ -1,0 +1,88 @@
+// The game's display model in double; see GameDisplay.h.
+#include "pipeline/GameDisplay.h"
+
+#include "lut/pipeline/SmashConstants.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lut::detail {
+
+namespace {
+// The pipeline's float literals, exactly, in double.
+constexpr double kBrightenMix = kSmashBrightenMix;
+constexpr double kBrightenScale = kSmashBrightenScale;
+constexpr double kGammaDecode = kSmashDecodeExponent;
+} // namespace
+
+double srgbEncodeUnit(double x) {
+    if (!(x > 0.0))
+        return 0.0;
+    if (x >= 1.0)
+        return 1.0;
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+}
+
+double srgbDecodeUnit(double v) {
+    if (!(v > 0.0))
+        return 0.0;
+    if (v >= 1.0)
+        return 1.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+double srgbEncodeExtended(double x) {
+    if (!(x == x))
+        return 0.0;
+    const double a = std::fabs(x);
+    const double e = a <= 0.0031308 ? 12.92 * a : 1.055 * std::pow(a, 1.0 / 2.4) - 0.055;
+    return x < 0 ? -e : e;
+}
+
+double srgbDecodeExtended(double e) {
+    if (!(e == e))
+        return 0.0;
+    const double a = std::fabs(e);
+    const double x = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    return e < 0 ? -x : x;
+}
+
+double clampUnit(double v) {
+    return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+}
+
+double gameShown(double lutOut, double s) {
+    const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
+    return srgbEncodeUnit(clampUnit(std::pow(std::max(r, 0.0), kGammaDecode)));
+}
+
+double gameShownUnclipped(double lutOut, double s) {
+    const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
+    return srgbEncodeExtended(std::pow(std::max(r, 0.0), kGammaDecode));
+}
+
+double gameShownSlope(double lutOut, double s) {
+    const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
+    if (!(r > 0.0))
+        return 0.0;
+    const double x = std::pow(r, kGammaDecode);
+    if (x >= 1.0)
+        return 0.0;
+    const double dx =
+        kGammaDecode * std::pow(r, kGammaDecode - 1.0) * kBrightenScale * kBrightenMix;
+    const double de = x <= 0.0031308 ? 12.92 : 1.055 / 2.4 * std::pow(x, 1.0 / 2.4 - 1.0);
+    return de * dx;
+}
+
+double lutForShown(double display, double s) {
+    const double t = srgbDecodeExtended(display);
+    const double r = t > 0.0 ? std::pow(t, 1.0 / kGammaDecode) : 0.0;
+    return (r / kBrightenScale - s) / kBrightenMix + s;
+}
+
+double gameDisplayLatticeValue(int index) {
+    const double s = index / static_cast<double>(kSmashLutSize - 1);
+    return srgbEncodeUnit(clampUnit(std::pow(s * kBrightenScale, kGammaDecode)));
+}
+
+} // namespace lut::detail
