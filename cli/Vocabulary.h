@@ -7,6 +7,7 @@
 // mean", and a name the library learns is accepted here without an edit.
 #include "Notes.h"
 
+#include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 
@@ -40,6 +41,7 @@ Choices latticeChoices();
 Choices targetChoices();
 Choices cornerChoices();
 Choices bitDepthChoices();
+Choices shaperChoices(); // lutkit bake --shaper: auto, none, log2
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 
@@ -66,6 +68,15 @@ CLI::Option* addLayout(CLI::App& sub, const std::string& name, std::optional<Lut
 CLI::Option* addInterp(CLI::App& sub, Interpolation& target, const std::string& help);
 CLI::Option* addBitDepth(CLI::App& sub, int& target, const std::string& help);
 CLI::Option* addThreads(CLI::App& sub, int& target);
+
+// Colour management (lut/formats/ColorTransform.h), named as ocioconvert and ociobakelut name
+// them: --config FILE, --from SPACE, --to SPACE, --look LOOKS, --display NAME, --view NAME and,
+// when lutSpaces, --lut-space SPACE and --lut-output-space SPACE. The names are checked against
+// the config when the command runs (the config may come later on the command line): value names
+// SPACE, LOOKS, DISPLAY and VIEW.
+void addColorOptions(CLI::App& sub, formats::ColorSpec& target, bool lutSpaces);
+// --config FILE alone (bake adds its own names around it).
+CLI::Option* addConfig(CLI::App& sub, std::string& target);
 
 // -q/--quiet, and -v/--verbose when verboseHelp says what it adds ("" = nothing to add: no -v).
 void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp);

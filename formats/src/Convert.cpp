@@ -83,8 +83,13 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     ConvertReport report;
     report.outputFormat = writer->name();
 
+    // Readers that sample (OpenColorIO's chains) sample at the size the output stores, through
+    // the whole processor, instead of being resampled afterwards.
+    FormatOptions readOptions = options.read;
+    if (readOptions.size == 0)
+        readOptions.size = wantSize ? wantSize : writer->fixedSize();
     auto t0 = Clock::now();
-    report.input = readLut(input, options.read, options.inFormat);
+    report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
     const LutFile& in = report.input;
     if (!in.cube && !in.shaper)
@@ -97,10 +102,18 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
     LutFile toWrite = in;
     if (targetSize != 0 && targetSize != sourceSize) {
-        ResampleResult r = resampleWithError(in.toLut3D(0), targetSize, options.interp);
-        report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
-        toWrite.shaper.reset();
-        toWrite.cube = std::move(r.lut);
+        if (in.shaper && in.cube && writer->holdsShaper()) {
+            // The output keeps the shaper: only the cube changes size.
+            ResampleResult r = resampleWithError(*in.cube, targetSize, options.interp);
+            r.lut.setDomain(in.cube->domainMin(), in.cube->domainMax());
+            report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
+            toWrite.cube = std::move(r.lut);
+        } else {
+            ResampleResult r = resampleWithError(in.toLut3D(0), targetSize, options.interp);
+            report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
+            toWrite.shaper.reset();
+            toWrite.cube = std::move(r.lut);
+        }
     }
     toWrite.diagnostics.clear();
 
