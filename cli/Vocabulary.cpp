@@ -282,17 +282,19 @@ CLI::Option* addConfig(CLI::App& sub, std::string& target) {
         ->type_name("FILE");
 }
 
-void addColorOptions(CLI::App& sub, formats::ColorSpec& t, bool lutSpaces) {
+void addColorOptions(CLI::App& sub, formats::ColorSpec& t, ColorOptionSet set) {
+    const bool all = set == ColorOptionSet::All;
     const std::string group = "Colour management (OpenColorIO)";
     addConfig(sub, t.config)->group(group);
     sub.add_option("--from", t.from, "colour space of the input image (a name, alias or role)")
         ->type_name("SPACE")
         ->group(group);
     sub.add_option("--to", t.to,
-                   "colour space to write the output in (default: the LUT's output space)")
+                   "colour space to write the output in (default: the LUT's output space; "
+                   "preview: sRGB)")
         ->type_name("SPACE")
         ->group(group);
-    if (lutSpaces) {
+    if (all) {
         sub.add_option("--lut-space", t.lutSpace,
                        "colour space the LUT was made for (default: --from)")
             ->type_name("SPACE")
@@ -305,6 +307,8 @@ void addColorOptions(CLI::App& sub, formats::ColorSpec& t, bool lutSpaces) {
     sub.add_option("--look", t.looks, "OpenColorIO looks to apply after --from (\"a, +b, -c\")")
         ->type_name("LOOKS")
         ->group(group);
+    if (!all)
+        return;
     sub.add_option("--display", t.display, "write for this display (with --view; not with --to)")
         ->type_name("DISPLAY")
         ->group(group);

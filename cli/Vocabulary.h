@@ -70,11 +70,12 @@ CLI::Option* addBitDepth(CLI::App& sub, int& target, const std::string& help);
 CLI::Option* addThreads(CLI::App& sub, int& target);
 
 // Colour management (lut/formats/ColorTransform.h), named as ocioconvert and ociobakelut name
-// them: --config FILE, --from SPACE, --to SPACE, --look LOOKS, --display NAME, --view NAME and,
-// when lutSpaces, --lut-space SPACE and --lut-output-space SPACE. The names are checked against
-// the config when the command runs (the config may come later on the command line): value names
+// them: --config FILE, --from SPACE, --to SPACE, --look LOOKS and, for All, --lut-space SPACE,
+// --lut-output-space SPACE, --display DISPLAY and --view VIEW. The names are checked against the
+// config when the command runs (the config may come later on the command line): value names
 // SPACE, LOOKS, DISPLAY and VIEW.
-void addColorOptions(CLI::App& sub, formats::ColorSpec& target, bool lutSpaces);
+enum class ColorOptionSet { All, Preview };
+void addColorOptions(CLI::App& sub, formats::ColorSpec& target, ColorOptionSet set);
 // --config FILE alone (bake adds its own names around it).
 CLI::Option* addConfig(CLI::App& sub, std::string& target);
 

@@ -14,6 +14,7 @@
 
 #include <iostream>
 #include <memory>
+#include <mutex>
 
 namespace lut::cli {
 
@@ -27,10 +28,25 @@ int runApply(const ApplyOptions& o) {
         if (const std::string d = layoutDetail(file, o.lutLayout.has_value(), "--lut-layout");
             !d.empty())
             std::cerr << "lutkit: " << o.lut << ": " << d << "\n";
-    const auto sampler = makeSampler(file.toLut3D(), o.interp);
+    const Lut3D lut = file.toLut3D();
+    const formats::ColorPlan plan = formats::planColor(o.color);
+    printDiagnostics(std::cerr, plan.diagnostics, o.verbosity, "lutkit: ");
+    if (o.verbosity.verbose && o.color.any())
+        std::cerr << "lutkit: " << plan.describe() << "\n";
+    std::mutex noteMutex;
     return runBatch(jobs, o.threads, o.verbosity.quiet, [&](const BatchJob& j, int inner) {
         formats::LoadedImage img = formats::readImage(j.input);
-        sampler->apply(img.image.view(), inner);
+        std::shared_ptr<const DomainProbe> probe;
+        formats::lutPixelChain(plan, lut, o.interp, &probe).apply(img.image.view(), inner);
+        if (const DomainExcess e = probe->result(); e.any()) {
+            std::lock_guard lock(noteMutex);
+            std::cerr << "lutkit: warning: " << j.input << ": " << e.str()
+                      << ": the LUT clamps them to its edge"
+                      << (o.color.any() ? ""
+                                        : " (--from/--lut-space put the image in the "
+                                          "space the LUT was made for)")
+                      << "\n";
+        }
         formats::ImageWriteOptions w;
         w.bitDepth = img.info.isFloat || img.info.bitDepth == 0 ? 32 : img.info.bitDepth;
         w.alpha =
@@ -42,8 +58,9 @@ int runApply(const ApplyOptions& o) {
 
 CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onParsed) {
     auto o = std::make_shared<ApplyOptions>();
-    auto* sub = app.add_subcommand("apply", "Apply a LUT to the stored pixel values of images (no "
-                                            "colour conversion, alpha and bit depth kept)");
+    auto* sub = app.add_subcommand(
+        "apply", "Apply a LUT to the stored pixel values of images (alpha and bit depth kept), or "
+                 "in its own colour space (--from)");
     sub->add_option("--lut", o->lut, "LUT file (any supported format)")
         ->required()
         ->type_name("FILE");
@@ -56,11 +73,14 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
         ->type_name("DIR");
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
     addThreads(*sub, o->threads);
+    addColorOptions(*sub, o->color, ColorOptionSet::All);
     addVerbosity(*sub, o->verbosity, "print IN -> OUT for every file written");
     sub->footer("Examples:\n"
                 "  lutkit apply --lut grade.cube shot.png graded.png\n"
                 "  lutkit apply --lut grade.cube frames/ -o graded/     # every image in frames/\n"
-                "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif out.tif");
+                "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif out.tif\n"
+                "  lutkit apply --lut log_look.cube --from ACEScg --lut-space ACEScct --to sRGB "
+                "render.exr out.png");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

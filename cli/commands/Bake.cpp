@@ -31,8 +31,8 @@ std::string vec(glm::vec3 v) {
     return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
 }
 
-void printJson(const BakeCommandOptions& o, const formats::BakeReport& r) {
-    std::cout << "{\"output\": " << json::quote(o.output)
+void printJson(const std::string& output, const formats::BakeReport& r) {
+    std::cout << "{\"output\": " << json::quote(output)
               << ", \"format\": " << json::quote(r.outputFormat)
               << ",\n \"baked\": " << json::quote(r.what)
               << ", \"config\": " << json::quote(r.configUsed)
@@ -50,20 +50,27 @@ void printJson(const BakeCommandOptions& o, const formats::BakeReport& r) {
               << ", \"seconds\": " << json::number(r.totalSeconds) << "}\n";
 }
 
-void printText(const BakeCommandOptions& o, const formats::BakeReport& r) {
+void printText(const std::string& output, const formats::BakeReport& r,
+               const Verbosity& verbosity) {
     std::cout << "baked    " << r.what << "\n";
     if (!r.configUsed.empty())
         std::cout << "config   " << r.configUsed << "\n";
-    if (r.shaperSize)
-        std::cout << "shaper   " << r.shaper << ", " << r.shaperSize << " entries\n";
-    else
-        std::cout << "shaper   " << r.shaper << "\n";
-    std::cout << "table    " << r.cubeSize << "^3 over " << num(r.domainMin.x) << ".."
-              << num(r.domainMax.x) << (r.shaperSize ? " (through the shaper)" : "") << ", "
-              << ms(r.sampleSeconds) << "\n";
-    std::cout << "wrote    " << o.output << ": " << r.outputFormat << ", " << ms(r.writeSeconds)
+    if (r.cubeSize == 0) {
+        std::cout << "table    " << r.shaper << ", " << r.shaperSize << " entries over "
+                  << num(r.domainMin.x) << ".." << num(r.domainMax.x) << ", " << ms(r.sampleSeconds)
+                  << "\n";
+    } else {
+        if (r.shaperSize)
+            std::cout << "shaper   " << r.shaper << ", " << r.shaperSize << " entries\n";
+        else
+            std::cout << "shaper   " << r.shaper << "\n";
+        std::cout << "table    " << r.cubeSize << "^3 over " << num(r.domainMin.x) << ".."
+                  << num(r.domainMax.x) << (r.shaperSize ? " (through the shaper)" : "") << ", "
+                  << ms(r.sampleSeconds) << "\n";
+    }
+    std::cout << "wrote    " << output << ": " << r.outputFormat << ", " << ms(r.writeSeconds)
               << "\n";
-    printDiagnostics(std::cout, r.diagnostics, o.verbosity);
+    printDiagnostics(std::cout, r.diagnostics, verbosity);
     std::cout << "error    "
               << (r.measuredFile ? "the file read back"
                                  : "the table (the file cannot be read "
@@ -79,12 +86,16 @@ void printText(const BakeCommandOptions& o, const formats::BakeReport& r) {
 
 } // namespace
 
-int runBake(const BakeCommandOptions& o) {
-    const formats::BakeReport r = formats::bake(o.output, o.bake);
-    if (o.json)
-        printJson(o, r);
+void printBakeReport(const std::string& output, const formats::BakeReport& report, bool json,
+                     const Verbosity& verbosity) {
+    if (json)
+        printJson(output, report);
     else
-        printText(o, r);
+        printText(output, report, verbosity);
+}
+
+int runBake(const BakeCommandOptions& o) {
+    printBakeReport(o.output, formats::bake(o.output, o.bake), o.json, o.verbosity);
     return kExitOk;
 }
 

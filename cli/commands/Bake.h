@@ -25,6 +25,10 @@ struct BakeCommandOptions {
 
 int runBake(const BakeCommandOptions& options);
 
+// The report of a bake (text or JSON) on stdout; also what convert --from/--to prints.
+void printBakeReport(const std::string& output, const formats::BakeReport& report, bool json,
+                     const Verbosity& verbosity);
+
 // Adds the subcommand to app; onParsed is called with the options once they are parsed.
 CLI::App* setupBake(CLI::App& app, std::function<void(const BakeCommandOptions&)> onParsed);
 

@@ -3,6 +3,7 @@
 // (lut::formats::convertLut does the work; this prints its report as text or JSON).
 #include "Notes.h"
 
+#include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 
@@ -23,12 +24,17 @@ struct ConvertOptions {
     std::string inFormat;              // input format name ("" = from the extension)
     std::optional<LutLayout> layout;   // output image layout
     std::optional<LutLayout> inLayout; // input image layout
-    int size = 0; // output lattice size (0 = the format's fixed size, else the input's)
+    int size = 0;  // output lattice size (0 = the format's fixed size, else the input's)
+    int level = 0; // Hald level L: size L^2, layout hald
     Interpolation interp = Interpolation::Tetrahedral;
     int bitDepth = 0; // image output bit depth (0 = the format's default)
     bool dither = false;
     std::string name; // nutexb name field
     bool json = false;
+    // --config, --from, --to ...: the LUT baked with colour conversions around it
+    // (lut/formats/Bake.h), e.g. a display LUT made for sRGB turned into one for ACEScg input.
+    formats::ColorSpec color;
+    int shaperSize = 0;
     Verbosity verbosity;
 };
 

@@ -97,6 +97,7 @@ std::string previewFooter() {
           "  lutkit preview shot.png seen.png --from-screenshot --lut new.nutexb --original-lut "
           "old.nutexb\n"
           "  lutkit preview render.exr out.png --preset filmic --lut grade.cube\n"
+          "  lutkit preview acescg_render.exr out.png --from ACEScg --lut grade.cube\n"
           "  lutkit preview frames/ -o seen/ --enable grain --stage grain.strength=0.05\n"
           "  lutkit preview --list-stages --preset cinematic";
     return os.str();
@@ -151,13 +152,24 @@ int runPreview(const PreviewOptions& o) {
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
         original = std::make_shared<const Lut3D>(formats::readLut(o.originalLut).toLut3D());
+    if (o.fromScreenshot && !o.color.from.empty())
+        throw UsageError("--from-screenshot and --from both say what the input is: give one");
+    const formats::ColorPlan color = formats::planPreviewColor(o.color);
+    printDiagnostics(std::cerr, color.diagnostics, o.verbosity, "lutkit: ");
     bool noted = false;
     std::mutex noteMutex;
 
     return runBatch(jobs, o.threads, o.verbosity.quiet, [&](const BatchJob& j, int inner) {
         formats::LoadedImage img = formats::readImage(j.input);
-        // A screenshot holds display-encoded values whatever its bit depth.
-        const bool linear = img.info.isFloat && !o.fromScreenshot;
+        // A screenshot holds display-encoded values whatever its bit depth; --from converts any
+        // input to sRGB-encoded values.
+        bool linear = img.info.isFloat && !o.fromScreenshot;
+        if (color.before) {
+            PixelChain toSrgb;
+            toSrgb.append(color.before);
+            toSrgb.apply(img.image.view(), inner);
+            linear = false;
+        }
         const Diagnostics notes = prepareSceneFrame(img.image.view(), linear, o.fromScreenshot,
                                                     original.get(), settings.interpolation, inner);
         Pipeline pipeline(settings); // one per job: stages keep per-run buffers
@@ -165,6 +177,11 @@ int runPreview(const PreviewOptions& o) {
         run.nthreads = inner;
         run.frameIndex = o.frame;
         const PipelineReport report = pipeline.run(img.image.view(), run);
+        if (color.after) {
+            PixelChain fromSrgb;
+            fromSrgb.append(color.after);
+            fromSrgb.apply(img.image.view(), inner);
+        }
         formats::writeImage(j.output, img.image,
                             formats::renderedImageWriteOptions(img.info, j.output, o.bitDepth));
         {
@@ -228,6 +245,7 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     sub->add_option("--frame", o->frame, "frame index (film grain changes per frame)");
     addBitDepth(*sub, o->bitDepth, "output bit depth 8, 16 or 32 (default: the input's)");
     addThreads(*sub, o->threads);
+    addColorOptions(*sub, o->color, ColorOptionSet::Preview);
     sub->add_flag("--list-stages", o->listStages,
                   "print the stages and parameters of the preset and exit");
     addVerbosity(*sub, o->verbosity, "list the stages that ran and their time");

@@ -3,6 +3,7 @@
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
+#include "lut/formats/Hald.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -100,6 +101,18 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     int targetSize = wantSize ? wantSize : writer->fixedSize();
     if (targetSize == 0)
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
+    // A Hald image holds N = L^2 only: resample once, to the size it will hold.
+    const bool hald = writer->name() == "hald" ||
+                      (options.write.layout == LutLayout::Hald && writer->name() == "strip");
+    Diagnostics sizeNotes;
+    if (hald && targetSize != 0 && haldSizeFor(targetSize) != targetSize) {
+        const int held = haldSizeFor(targetSize);
+        sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
+                             std::to_string(targetSize) +
+                                 "^3 is not a square: a Hald image stores N = L^2, so " +
+                                 haldSizeText(held) + " (--level L asks for N = L^2)"});
+        targetSize = held;
+    }
     LutFile toWrite = in;
     if (targetSize != 0 && targetSize != sourceSize) {
         if (in.shaper && in.cube && writer->holdsShaper()) {
@@ -121,6 +134,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     writeOptions.size = targetSize;
     t0 = Clock::now();
     report.writeDiagnostics = writer->write(output, toWrite, writeOptions);
+    report.writeDiagnostics.insert(report.writeDiagnostics.begin(), sizeNotes.begin(),
+                                   sizeNotes.end());
     report.writeSeconds = since(t0);
 
     // Read back what was written, in the layout it was written in.

@@ -13,6 +13,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -125,6 +126,46 @@ Diagnostic diag(const std::string& path, std::string message,
     return ocioDiagnostic(path, std::move(message), s);
 }
 
+// Writes the file, reads it back and measures it against the function, probes spread like the
+// lattice (through the shaper's inverse when there is one).
+void finishBake(const std::string& output, const BakeOptions& o, const Format& writer,
+                const LutFile& file, const BakeSource& source, const RgbFunction* shaperInverse,
+                BakeReport& report) {
+    FormatOptions w = o.write;
+    w.size = file.cube ? file.cube->size() : 0;
+    if (!o.format.empty())
+        FormatRegistry::instance().applyAlias(o.format, w);
+    const auto t0 = Clock::now();
+    const Diagnostics wd = writer.write(output, file, w);
+    report.writeSeconds = since(t0);
+    report.diagnostics.insert(report.diagnostics.end(), wd.begin(), wd.end());
+
+    ProbeGrid grid;
+    if (!file.cube) {
+        grid.greyOnly = true;
+        grid.perAxis = std::min(4 * (file.shaper->size() - 1) + 1, 16385);
+    } else {
+        grid.perAxis = probesFor(file.cube->size(), 65);
+    }
+    if (shaperInverse) {
+        grid.toInput = *shaperInverse;
+    } else {
+        grid.domainMin = report.domainMin;
+        grid.domainMax = report.domainMax;
+    }
+    LutFile measured = file;
+    try {
+        FormatOptions back;
+        back.layout = o.write.layout;
+        measured = readLut(output, back);
+        report.measuredFile = true;
+    } catch (const Error& e) {
+        report.readBackError = e.what();
+    }
+    report.error =
+        measureAgainst(LutFileFunction(measured).function(), source.truth, grid, o.nthreads);
+}
+
 } // namespace
 
 BakeReport bake(const std::string& output, const BakeOptions& o) {
@@ -191,10 +232,39 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
         o.cubeSize ? o.cubeSize : (writer->fixedSize() ? writer->fixedSize() : kDefaultBakeSize);
     report.cubeSize = n;
 
-    // Sample.
+    // A conversion that mixes no channels is per-channel curves: a 1D table holds it exactly at
+    // its entries (as ociobakelut writes it), where the format holds one.
+    const bool curvesOnly = !source.crosstalk && o.cubeSize == 0 &&
+                            o.shaper == ShaperChoice::Auto && o.shaperSpace.empty() &&
+                            shaper.kind != ShaperPlan::Kind::Curve && writer->holdsShaper();
     auto t0 = Clock::now();
     LutFile file;
     file.format = writer->name();
+    if (curvesOnly) {
+        const int ns = o.shaperSize ? o.shaperSize : kDefaultShaperSize;
+        Lut1D curves(ns);
+        if (shaper.kind == ShaperPlan::Kind::Range)
+            curves.setDomain(shaper.lo, shaper.hi);
+        for (int i = 0; i < ns; ++i)
+            curves[i] = curves.domainMin() + (curves.domainMax() - curves.domainMin()) *
+                                                 (static_cast<float>(i) / (ns - 1));
+        source.truth(&curves.entries()[0].x, curves.entries().size());
+        if (const std::size_t bad = replaceNonFiniteEntries(curves.entries()))
+            report.diagnostics.push_back(diag(
+                output, std::to_string(bad) + " NaN/Inf values of the conversion replaced by 0",
+                Diagnostic::Severity::Warning));
+        curves.setTitle(source.what);
+        report.cubeSize = 0;
+        report.shaperSize = ns;
+        report.shaper = "1D table per channel (the conversion mixes no channels)";
+        report.domainMin = curves.domainMin();
+        report.domainMax = curves.domainMax();
+        file.shaper = std::move(curves);
+        report.sampleSeconds = since(t0);
+        finishBake(output, o, *writer, file, source, nullptr, report);
+        report.totalSeconds = since(tStart);
+        return report;
+    }
     Lut3D cube(n);
     if (shaper.kind == ShaperPlan::Kind::Range)
         cube.setDomain(shaper.lo, shaper.hi);
@@ -230,36 +300,8 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
     file.cube = std::move(cube);
     report.sampleSeconds = since(t0);
 
-    // Write.
-    FormatOptions w = o.write;
-    w.size = n;
-    if (!o.format.empty())
-        registry.applyAlias(o.format, w);
-    t0 = Clock::now();
-    const Diagnostics wd = writer->write(output, file, w);
-    report.writeSeconds = since(t0);
-    report.diagnostics.insert(report.diagnostics.end(), wd.begin(), wd.end());
-
-    // Measure the file as written against the function, probes spread like the lattice.
-    ProbeGrid grid;
-    grid.perAxis = probesFor(n, 65);
-    if (shaper.kind == ShaperPlan::Kind::Curve) {
-        grid.toInput = shaper.inverse;
-    } else {
-        grid.domainMin = report.domainMin;
-        grid.domainMax = report.domainMax;
-    }
-    LutFile measured = file;
-    try {
-        FormatOptions back;
-        back.layout = o.write.layout;
-        measured = readLut(output, back);
-        report.measuredFile = true;
-    } catch (const Error& e) {
-        report.readBackError = e.what();
-    }
-    report.error =
-        measureAgainst(LutFileFunction(measured).function(), source.truth, grid, o.nthreads);
+    finishBake(output, o, *writer, file, source,
+               shaper.kind == ShaperPlan::Kind::Curve ? &shaper.inverse : nullptr, report);
     report.totalSeconds = since(tStart);
     return report;
 }

@@ -39,6 +39,7 @@ BakeSource fromConfig(const BakeOptions& o) {
     }
     s.what = t->description();
     s.truth = [t](float* rgb, std::size_t n) { t->processRgb(rgb, n); };
+    s.crosstalk = t->hasChannelCrosstalk();
     return s;
 }
 
@@ -74,6 +75,7 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
             OCIO::PackedImageDesc desc(rgb, static_cast<long>(n), 1, 3);
             cpu->apply(desc);
         };
+        s.crosstalk = cpu->hasChannelCrosstalk();
         if (o.files.size() == 1 && !o.files.front().inverse) {
             doing = "inspecting the processor";
             const OcioStructure st = analyseProcessor(config, processor);
@@ -85,7 +87,7 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
         throw;
     } catch (const std::exception& e) {
         std::string msg = ocioFailure(current, doing, e.what());
-        if (msg.find("CCC") != std::string::npos)
+        if ((msg.find("CCC") != std::string::npos || msg.find("cccid") != std::string::npos))
             msg += " (name the correction with --cccid)";
         throw Error(msg);
     }
@@ -112,6 +114,8 @@ BakeSource fromLut(const BakeOptions& o, const std::string& output) {
             after->processRgb(rgb, n);
     };
     s.what = o.lut;
+    s.crosstalk = file.cube.has_value() || (before && before->hasChannelCrosstalk()) ||
+                  (after && after->hasChannelCrosstalk());
     if (spec.any()) {
         s.config = ColorConfig::load(plan.config);
         s.configUsed = plan.config.describe();

@@ -17,6 +17,7 @@ struct BakeSource {
     std::string inputSpace;            // resolved name ("" when not known)
     std::optional<ColorSpaceInfo> inputInfo;
     std::optional<std::pair<glm::vec3, glm::vec3>> ownRange; // a source file's input range
+    bool crosstalk = true; // false: the function works on each channel alone
     Diagnostics diagnostics;
 };
 

@@ -202,6 +202,16 @@ ColorSpaceInfo ColorConfig::info(const std::string& name) const {
     return i;
 }
 
+std::string ColorConfig::srgbSpace() const {
+    for (const char* n : {"sRGB - Texture", "srgb_tx", "Utility - sRGB - Texture", "sRGB", "srgb"})
+        if (const auto cs = m_impl->config->getColorSpace(n))
+            return cs->getName();
+    throw ColorOptionError(
+        m_impl->location.describe() +
+        " has no sRGB colour space (looked for \"sRGB - Texture\", srgb_tx, "
+        "\"Utility - sRGB - Texture\", sRGB): lutkit preview converts through it");
+}
+
 void ColorConfig::checkLooks(const std::string& looks) const {
     std::stringstream ss(looks);
     std::string item;

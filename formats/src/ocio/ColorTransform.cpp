@@ -4,6 +4,8 @@
 #include "ocio/ColorConfigImpl.h"
 #include "ocio/OcioStructure.h"
 
+#include "lut/interp/Sampler.h"
+
 namespace lut::formats {
 
 struct ColorTransform::Impl {
@@ -174,6 +176,41 @@ ColorPlan planColor(const ColorSpec& spec) {
     if (plan.after && plan.after->isNoOp())
         plan.after.reset();
     return plan;
+}
+
+ColorPlan planPreviewColor(const ColorSpec& spec) {
+    ColorPlan plan;
+    if (!spec.any())
+        return plan;
+    if (!spec.lutSpace.empty() || !spec.lutOutputSpace.empty() || !spec.display.empty() ||
+        !spec.view.empty())
+        throw ColorOptionError("lutkit preview takes --from, --look and --to: its LUT works on "
+                               "the game's sRGB display values");
+    if (!spec.looks.empty() && spec.from.empty())
+        throw ColorOptionError("--look needs --from (the input image's colour space)");
+    const ColorConfig config = ColorConfig::load(spec.config);
+    plan.config = config.location();
+    plan.diagnostics = config.diagnostics();
+    const std::string srgb = config.srgbSpace();
+    plan.lutInputSpace = plan.lutOutputSpace = srgb;
+    if (!spec.from.empty())
+        plan.before = ColorTransform::convert(config, spec.from, srgb, spec.looks);
+    if (!spec.to.empty() && config.colorSpace(spec.to) != srgb)
+        plan.after = ColorTransform::convert(config, srgb, spec.to);
+    return plan;
+}
+
+PixelChain lutPixelChain(const ColorPlan& plan, const Lut3D& lut, Interpolation interp,
+                         std::shared_ptr<const DomainProbe>* probe) {
+    PixelChain chain;
+    chain.append(plan.before);
+    auto p = std::make_shared<const DomainProbe>(lut.domainMin(), lut.domainMax());
+    chain.append(p);
+    if (probe)
+        *probe = p;
+    chain.append(samplerProcessor(makeSampler(lut, interp)));
+    chain.append(plan.after);
+    return chain;
 }
 
 } // namespace lut::formats

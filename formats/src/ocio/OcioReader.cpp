@@ -114,7 +114,8 @@ public:
             // OCIO::Exception, and C++ library errors from inside OCIO (std::length_error's
             // "vector::reserve" when a reader believes a size in the file, std::bad_alloc).
             std::string msg = ocioFailure(path, doing, e.what());
-            if (msg.find("CCC") != std::string::npos && !options.attribute(kOcioCccIdAttribute))
+            if ((msg.find("CCC") != std::string::npos || msg.find("cccid") != std::string::npos) &&
+                !options.attribute(kOcioCccIdAttribute))
                 msg += " (name the correction with --cccid)";
             throw Error(msg);
         }

@@ -13,7 +13,9 @@
 // HDR or log a 1D shaper comes first (--shaperspace S: OCIO's input -> S; log2: the input space's
 // lg2 allocation, or -6.5..+6.5 stops around 0.18; an input range: a straight shaper) and the
 // lattice lies in the shaper's coordinates. Formats that hold a shaper (.cube Resolve, .clf, .ctf,
-// .csp) keep it; for the others the table covers [0,1] and the loss is said. The file is written
+// .csp) keep it; for the others the table covers [0,1] and the loss is said. A conversion that
+// mixes no channels becomes a 1D table of shaperSize entries instead (where the format holds one
+// and no --cubesize asks for a lattice). The file is written
 // through the format registry (any writable format, or ociobakelut's format names), read back,
 // and compared with the function on a probe grid between the lattice points (evenly spread in the
 // shaper's coordinates): that error, max and mean, is reported with the time each step took.
@@ -55,8 +57,8 @@ struct BakeOptions {
 
     std::string shaperSpace; // a colour space of the config to shape the input with
     ShaperChoice shaper = ShaperChoice::Auto;
-    int shaperSize = 0; // 0 = 2 for a straight shaper, else kDefaultShaperSize
-    int cubeSize = 0;   // 0 = the format's fixed size, else 33
+    int shaperSize = 0; // shaper (or 1D table) entries; 0 = kDefaultShaperSize
+    int cubeSize = 0;   // 0 = the format's fixed size, else 33 (or a 1D table: see above)
     std::string format; // output format name or alias ("" = by the output's extension)
     FormatOptions write;
     int nthreads = 0;
@@ -69,7 +71,7 @@ struct BakeReport {
     std::string what;       // "ACEScg -> sRGB", "grade.cube, 2 files ..."
     std::string configUsed; // ConfigLocation::describe(), "" for config-free bakes
     std::string outputFormat;
-    int cubeSize = 0;
+    int cubeSize = 0;   // 0 = a 1D table only (shaperSize entries, described by `shaper`)
     int shaperSize = 0; // 0 = no shaper
     std::string shaper; // "none", "log2 -8.97..4.03 stops", "colour space 'ACEScct'" ...
     glm::vec3 domainMin{0.0f}, domainMax{1.0f}; // input range the table covers

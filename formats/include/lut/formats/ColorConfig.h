@@ -85,6 +85,10 @@ public:
     // The colour space a name, alias or role stands for. Throws ColorOptionError.
     std::string colorSpace(const std::string& nameAliasOrRole) const;
     ColorSpaceInfo info(const std::string& nameAliasOrRole) const;
+    // The config's sRGB-encoded colour space: the first of "sRGB - Texture", "srgb_tx",
+    // "Utility - sRGB - Texture", "sRGB", "srgb" it has (lutkit preview's frames are sRGB-encoded
+    // or linear sRGB). Throws ColorOptionError when it has none.
+    std::string srgbSpace() const;
     // Each look of an OCIO look list ("a, +b, -c") exists. Throws ColorOptionError.
     void checkLooks(const std::string& looks) const;
     // display exists and has view. Throws ColorOptionError.

@@ -8,8 +8,11 @@
 //                   --> --to, or the (--display, --view) pair
 //
 // Every colour space may be a name, an alias or a role of the config (lut/formats/ColorConfig.h).
+#include "lut/DomainProbe.h"
+#include "lut/Lut3D.h"
 #include "lut/PixelProcessor.h"
 #include "lut/formats/ColorConfig.h"
+#include "lut/interp/Interpolation.h"
 
 #include <cstddef>
 #include <memory>
@@ -70,5 +73,18 @@ struct ColorPlan {
 // ColorOptionError for unknown names or options that do not go together (--to with --display,
 // --lut-space without --from), lut::Error when the config cannot be read.
 ColorPlan planColor(const ColorSpec& spec);
+
+// What lutkit preview does with the colour options: its frames are sRGB-encoded (screenshots) or
+// linear sRGB (EXR scenes), so `before` converts --from (with --look) to the config's sRGB space
+// (ColorConfig::srgbSpace; values above 1 stay), and `after` converts the preview's
+// display-encoded sRGB to --to. --lut-space, --lut-output-space, --display and --view are refused.
+ColorPlan planPreviewColor(const ColorSpec& spec);
+
+// The pixel steps of applying `lut` under `plan`: the conversion into the LUT's space, a
+// DomainProbe counting the values outside the LUT's domain (which the sampler clamps; *probe
+// receives it when not null), the LUT, the conversion out. Run it on whole images
+// (PixelChain::apply) or chunk by chunk (PixelChain::processPixels).
+PixelChain lutPixelChain(const ColorPlan& plan, const Lut3D& lut, Interpolation interp,
+                         std::shared_ptr<const DomainProbe>* probe = nullptr);
 
 } // namespace lut::formats
