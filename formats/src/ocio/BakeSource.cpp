@@ -69,8 +69,10 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
         }
         const auto processor = config->getProcessor(group);
         doing = "building the CPU processor";
+        // Lossless: OCIO's default optimisation approximates (inverse tables, 1D tables merged
+        // and resampled: 1.4e-3 on unknown_elements.clf, 0.26 on lut3d_example_Inv.ctf).
         const auto cpu = processor->getOptimizedCPUProcessor(
-            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_DEFAULT);
+            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
         s.truth = [cpu](float* rgb, std::size_t n) {
             OCIO::PackedImageDesc desc(rgb, static_cast<long>(n), 1, 3);
             cpu->apply(desc);

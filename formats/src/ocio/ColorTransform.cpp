@@ -9,8 +9,8 @@
 namespace lut::formats {
 
 struct ColorTransform::Impl {
-    OCIO::ConstCPUProcessorRcPtr rgba; // F32 RGBA packed
-    OCIO::ConstCPUProcessorRcPtr rgb;
+    OCIO::ConstCPUProcessorRcPtr rgba; // F32 RGBA packed, OCIO's default optimisation (speed)
+    OCIO::ConstCPUProcessorRcPtr rgb;  // lossless optimisation (baking, measuring)
     bool noOp = false;
     bool crosstalk = false;
     std::string description;
@@ -28,8 +28,9 @@ std::shared_ptr<ColorTransform::Impl> build(const ColorConfig& config,
         const auto processor = cfg->getProcessor(transform);
         impl->rgba = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
                                                          OCIO::OPTIMIZATION_DEFAULT);
-        impl->rgb = impl->rgba;
-        impl->noOp = impl->rgba->isNoOp();
+        impl->rgb = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                        OCIO::OPTIMIZATION_LOSSLESS);
+        impl->noOp = impl->rgba->isNoOp() && impl->rgb->isNoOp();
         impl->crosstalk = impl->rgba->hasChannelCrosstalk();
     } catch (const std::exception& e) {
         throw Error(config.location().path + ": OpenColorIO cannot build the conversion " +

@@ -6,11 +6,14 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lut::formats {
 
 namespace {
+
+constexpr int kMinPrelutPoints = 4096;
 
 // %.9g: every float reads back as itself.
 void put(std::string& out, double v) {
@@ -56,17 +59,25 @@ Diagnostics writeCspWithShaper(const std::string& path, const LutFile& file, int
     text += "END METADATA\n\n";
     for (int c = 0; c < 3; ++c) {
         if (file.shaper && cube) {
+            // OCIO reads the prelut as a cubic through its points: between the points of a coarse
+            // curved shaper that bends away from lutkit's straight segments. Each segment is cut
+            // into k straight pieces (at least 4096 points in all), so the cubic has little room.
             const Lut1D& sh = *file.shaper;
             const int n = sh.size();
-            text += std::to_string(n) + "\n";
+            const int k = std::max(1, (kMinPrelutPoints + n - 2) / (n - 1));
+            const int points = (n - 1) * k + 1;
+            text += std::to_string(points) + "\n";
             const double lo = sh.domainMin()[c], hi = sh.domainMax()[c];
-            for (int i = 0; i < n; ++i) {
-                put(text, lo + (hi - lo) * i / (n - 1));
-                text += i + 1 < n ? ' ' : '\n';
+            for (int i = 0; i < points; ++i) {
+                put(text, lo + (hi - lo) * i / (points - 1));
+                text += i + 1 < points ? ' ' : '\n';
             }
-            for (int i = 0; i < n; ++i) {
-                put(text, (double(sh[i][c]) - cmin[c]) / (double(cmax[c]) - cmin[c]));
-                text += i + 1 < n ? ' ' : '\n';
+            for (int i = 0; i < points; ++i) {
+                const int seg = std::min(i / k, n - 2);
+                const double t = double(i - seg * k) / k;
+                const double v = double(sh[seg][c]) + t * (double(sh[seg + 1][c]) - sh[seg][c]);
+                put(text, (v - cmin[c]) / (double(cmax[c]) - cmin[c]));
+                text += i + 1 < points ? ' ' : '\n';
             }
         } else {
             // A straight prelut: the table's own input range onto [0,1].

@@ -32,7 +32,9 @@ public:
     toDisplay(const ColorConfig& config, const std::string& from, const std::string& display,
               const std::string& view, const std::string& looks = {});
 
+    // Images: OCIO's default optimisation (fast; it may approximate inverted tables).
     void processPixels(float* rgba, std::size_t count) const override;
+    // Packed RGB with the lossless optimisation: what bakes sample and measure against.
     void processRgb(float* rgb, std::size_t count) const;
     bool isNoOp() const;
     bool hasChannelCrosstalk() const;
