@@ -296,7 +296,9 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
         report.diagnostics.push_back(diag(
             output, std::to_string(nonFinite) + " NaN/Inf values of the conversion replaced by 0",
             Diagnostic::Severity::Warning));
-    cube.setTitle(source.what);
+    // A comment, not a title: OpenColorIO 2.1 refuses TITLE in a Resolve .cube (the dialect that
+    // keeps a shaper or an input range).
+    cube.comments().push_back("lutkit bake: " + source.what);
     file.cube = std::move(cube);
     report.sampleSeconds = since(t0);
 
