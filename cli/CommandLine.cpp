@@ -10,6 +10,7 @@
 
 #include "lut/Error.h"
 #include "lut/Version.h"
+#include "lut/formats/ColorConfig.h"
 #include "lut/formats/LibraryMessages.h"
 #include "lut/io/TempFiles.h"
 
@@ -67,6 +68,15 @@ CommandLine::CommandLine(const RunHooks& hooks)
     setupExtract(m_app, runner(hooks.extract, runExtract, m_exitCode));
     setupFit(m_app, runner(hooks.fit, runFit, m_exitCode));
     setupBench(m_app, runner(hooks.bench, runBench, m_exitCode));
+    setupBake(m_app, runner(hooks.bake, runBake, m_exitCode));
+    setupDiff(m_app, runner(hooks.diff, runDiff, m_exitCode));
+    setupCompose(m_app, runner(hooks.compose, runCompose, m_exitCode));
+    setupInvert(m_app, runner(hooks.invert, runInvert, m_exitCode));
+    setupResize(m_app, runner(hooks.resize, runResize, m_exitCode));
+    setupSmooth(m_app, runner(hooks.smooth, runSmooth, m_exitCode));
+    setupMix(m_app, runner(hooks.mix, runMix, m_exitCode));
+    setupPlot(m_app, runner(hooks.plot, runPlot, m_exitCode));
+    setupAdjust(m_app, runner(hooks.adjust, runAdjust, m_exitCode));
 
     const std::vector<std::string> commands = commandNames(m_app);
     auto* help = m_app.add_subcommand("help", "Show the help of lutkit or of one command");
@@ -160,6 +170,12 @@ int CommandLine::run(const std::vector<std::string>& args) {
         std::cerr << "lutkit: interrupted (" << signalName(interruptSignal())
                   << "); unfinished outputs removed\n";
         return kExitInterrupted;
+    } catch (const formats::ColorOptionError& e) { // a name the config lacks: bad usage
+        std::cerr << commandPrefix() << e.what() << "\n";
+        if (!e.value().empty())
+            if (const auto guess = closestWord(e.value(), e.known()))
+                std::cerr << commandPrefix() << "did you mean '" << *guess << "'?\n";
+        return kExitUsage;
     } catch (const Error& e) { // the library: bad input or a failed operation
         std::cerr << "lutkit: error: " << e.what() << "\n";
         return kExitFailure;

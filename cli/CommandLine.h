@@ -6,15 +6,24 @@
 // main() is `return lut::cli::CommandLine().run(argc, argv);`. Tests and the CLI fuzzer build the
 // same command line with hooks in place of the run functions, so they see exactly the options,
 // validators and conversions users get.
+#include "commands/Adjust.h"
 #include "commands/Apply.h"
+#include "commands/Bake.h"
 #include "commands/Bench.h"
+#include "commands/Compose.h"
 #include "commands/Convert.h"
+#include "commands/Diff.h"
 #include "commands/Embed.h"
 #include "commands/Extract.h"
 #include "commands/Fit.h"
 #include "commands/Info.h"
+#include "commands/Invert.h"
+#include "commands/Mix.h"
 #include "commands/Neutral.h"
+#include "commands/Plot.h"
 #include "commands/Preview.h"
+#include "commands/Resize.h"
+#include "commands/Smooth.h"
 #include "commands/Validate.h"
 
 #include <CLI/CLI.hpp>
@@ -41,6 +50,15 @@ struct RunHooks {
     RunFn<ExtractOptions> extract;
     RunFn<FitOptions> fit;
     RunFn<BenchOptions> bench;
+    RunFn<BakeCommandOptions> bake;
+    RunFn<DiffCommandOptions> diff;
+    RunFn<ComposeCommandOptions> compose;
+    RunFn<InvertCommandOptions> invert;
+    RunFn<ResizeCommandOptions> resize;
+    RunFn<SmoothCommandOptions> smooth;
+    RunFn<MixCommandOptions> mix;
+    RunFn<PlotCommandOptions> plot;
+    RunFn<AdjustCommandOptions> adjust;
 };
 
 class CommandLine {

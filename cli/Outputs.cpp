@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <iostream>
+
 namespace lut::cli {
 
 void addOverwriteOptions(CLI::App& sub, OutputOptions& o) {
@@ -29,6 +31,16 @@ OutputTarget resolveOutput(const std::string& path, const OutputOptions& options
     } catch (const OutputExistsError& e) {
         throw Error(existsMessage(e.path(), false));
     }
+}
+
+bool beginOutput(const std::string& path, const OutputOptions& options,
+                 const std::vector<std::string>& inputs, bool quiet) {
+    if (resolveOutput(path, options, inputs).skip) {
+        if (!quiet)
+            std::cerr << "lutkit: " << path << " exists; skipped (-n)\n";
+        return false;
+    }
+    return true;
 }
 
 } // namespace lut::cli

@@ -39,4 +39,9 @@ std::string existsMessage(const std::string& path, bool batch);
 OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
                            const std::vector<std::string>& inputs);
 
+// resolveOutput for the commands with one positional OUT: false when -n found the file there
+// (said on stderr unless quiet): the command then writes nothing and succeeds.
+bool beginOutput(const std::string& path, const OutputOptions& options,
+                 const std::vector<std::string>& inputs, bool quiet);
+
 } // namespace lut::cli

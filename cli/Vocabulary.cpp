@@ -43,9 +43,14 @@ Choices formatChoices(const std::string& kind, bool writers) {
     formats::registerBuiltinFormats();
     Choices c{kind, writers ? "output format" : "input format", {}, {}, {}};
     for (const Format* f : FormatRegistry::instance().all())
-        if (writers ? f->canWrite() : f->canRead())
+        if (writers ? f->canWrite() : f->canRead()) {
             c.names.push_back(f->name());
-    const std::vector<std::string> names = c.names;
+            // OpenColorIO's names (resolve_cube, cinespace, 3dl ...), for ociobakelut users.
+            for (const auto& a : f->aliases())
+                c.aliases.push_back(a.name);
+        }
+    std::vector<std::string> names = c.names;
+    names.insert(names.end(), c.aliases.begin(), c.aliases.end());
     c.accept = [names](const std::string& s) {
         if (std::find(names.begin(), names.end(), s) == names.end())
             throw Error("unknown format '" + s + "'");
@@ -175,6 +180,15 @@ Choices compressionChoices() {
     return c;
 }
 
+Choices shaperChoices() {
+    Choices c{"shaper", "shaper", {"auto", "none", "log2"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "auto" && s != "none" && s != "log2")
+            throw Error("unknown shaper '" + s + "'");
+    };
+    return c;
+}
+
 std::optional<Choices> choicesForValidator(const std::string& name) {
     const std::string prefix = kChoicesValidatorPrefix;
     if (name.compare(0, prefix.size(), prefix) != 0)
@@ -183,7 +197,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
     for (Choices (*make)() :
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
-          imageFormatChoices, compressionChoices}) {
+          imageFormatChoices, compressionChoices, shaperChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;
@@ -361,6 +375,48 @@ CLI::Option* addMaxMemory(CLI::App& sub, std::string& target) {
                 return {};
             },
             "SIZE", "memory-size"));
+}
+
+CLI::Option* addConfig(CLI::App& sub, std::string& target) {
+    return sub
+        .add_option("--config", target,
+                    "OpenColorIO config (default: $OCIO, else lutkit's own: docs/colour.md)")
+        ->type_name("FILE");
+}
+
+void addColorOptions(CLI::App& sub, formats::ColorSpec& t, ColorOptionSet set) {
+    const bool all = set == ColorOptionSet::All;
+    const std::string group = "Colour management (OpenColorIO)";
+    addConfig(sub, t.config)->group(group);
+    sub.add_option("--from", t.from, "colour space of the input image (a name, alias or role)")
+        ->type_name("SPACE")
+        ->group(group);
+    sub.add_option("--to", t.to,
+                   "colour space to write the output in (default: the LUT's output space; "
+                   "preview: sRGB)")
+        ->type_name("SPACE")
+        ->group(group);
+    if (all) {
+        sub.add_option("--lut-space", t.lutSpace,
+                       "colour space the LUT was made for (default: --from)")
+            ->type_name("SPACE")
+            ->group(group);
+        sub.add_option("--lut-output-space", t.lutOutputSpace,
+                       "colour space of the LUT's output (default: --lut-space)")
+            ->type_name("SPACE")
+            ->group(group);
+    }
+    sub.add_option("--look", t.looks, "OpenColorIO looks to apply after --from (\"a, +b, -c\")")
+        ->type_name("LOOKS")
+        ->group(group);
+    if (!all)
+        return;
+    sub.add_option("--display", t.display, "write for this display (with --view; not with --to)")
+        ->type_name("DISPLAY")
+        ->group(group);
+    sub.add_option("--view", t.view, "the display's view (default: the display's first)")
+        ->type_name("VIEW")
+        ->group(group);
 }
 
 void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp) {

@@ -7,6 +7,7 @@
 // mean", and a name the library learns is accepted here without an edit.
 #include "Notes.h"
 
+#include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 
@@ -42,6 +43,7 @@ Choices cornerChoices();
 Choices bitDepthChoices();
 Choices imageFormatChoices(); // image files apply and preview read and write: png, exr, tif ...
 Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip, piz, lzw ...)
+Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 
@@ -76,6 +78,16 @@ void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outForma
 CLI::Option* addCompression(CLI::App& sub, std::string& target);
 // --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together.
 CLI::Option* addMaxMemory(CLI::App& sub, std::string& target);
+
+// Colour management (lut/formats/ColorTransform.h), named as ocioconvert and ociobakelut name
+// them: --config FILE, --from SPACE, --to SPACE, --look LOOKS and, for All, --lut-space SPACE,
+// --lut-output-space SPACE, --display DISPLAY and --view VIEW. The names are checked against the
+// config when the command runs (the config may come later on the command line): value names
+// SPACE, LOOKS, DISPLAY and VIEW.
+enum class ColorOptionSet { All, Preview };
+void addColorOptions(CLI::App& sub, formats::ColorSpec& target, ColorOptionSet set);
+// --config FILE alone (bake adds its own names around it).
+CLI::Option* addConfig(CLI::App& sub, std::string& target);
 
 // -q/--quiet, and -v/--verbose when verboseHelp says what it adds ("" = nothing to add: no -v).
 void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp);

@@ -7,6 +7,8 @@
 #   P/lib/liblutlib.a, P/lib/liblutkit_formats.a
 #   P/lib/cmake/lutkit/              find_package(lutkit) -> lutkit::lutlib, lutkit::formats and
 #                                    lutkit::imageio (the module, for $<TARGET_FILE:...>)
+#   P/share/lutkit/ocio/config.ocio  lutkit's own OpenColorIO config (found relative to the
+#                                    executable, formats/src/ocio/ColorConfig.cpp)
 # tests/install checks the installed tree: the installed lutkit runs, and a one-file project
 # builds against it with find_package.
 include(CMakePackageConfigHelpers)
@@ -23,6 +25,9 @@ install(TARGETS lutlib lutkit_formats lutkit_imageio EXPORT lutkitTargets
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lutlib/include/ ${PROJECT_SOURCE_DIR}/formats/include/
                   ${PROJECT_BINARY_DIR}/lutlib/generated/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+
+# Not CMAKE_INSTALL_DATADIR: found relative to the executable (bin/../share/lutkit).
+install(FILES ${PROJECT_SOURCE_DIR}/share/ocio/config.ocio DESTINATION share/lutkit/ocio)
 
 install(EXPORT lutkitTargets NAMESPACE lutkit:: DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/lutkitConfig.cmake.in

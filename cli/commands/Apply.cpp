@@ -17,7 +17,11 @@
 namespace lut::cli {
 
 int runApply(const ApplyOptions& o) {
-    const BatchPlan plan = planBatch(o.inputs, o.output, {o.lut}, o.frames);
+    // The LUT, in the colour space it was made for when --from/--to... ask (OpenColorIO's
+    // conversions as steps before and after it). First: a misspelt name is bad usage (exit 2),
+    // whatever the files.
+    const formats::ColorPlan colour = formats::planColor(o.color);
+    const BatchPlan plan = planBatch(o.inputs, o.output, {o.lut, o.color.config}, o.frames);
     BatchOptions bo;
     bo.threads = o.threads;
     bo.quiet = o.verbosity.quiet;
@@ -30,8 +34,10 @@ int runApply(const ApplyOptions& o) {
         if (const std::string d = layoutDetail(file, o.lutLayout.has_value(), "--lut-layout");
             !d.empty())
             std::cerr << "lutkit: " << o.lut << ": " << d << "\n";
-    PixelChain chain;
-    chain.setLut(file.toLut3D(), o.interp);
+    printDiagnostics(std::cerr, colour.diagnostics, o.verbosity, "lutkit: ");
+    if (o.verbosity.verbose && o.color.any())
+        std::cerr << "lutkit: " << colour.describe() << "\n";
+    const PixelChain chain = formats::lutPixelChain(colour, file.toLut3D(), o.interp);
     std::mutex noteMutex;
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         formats::ApplyImageOptions ao;
@@ -46,7 +52,11 @@ int runApply(const ApplyOptions& o) {
             const std::string outside = r.domain.str(chain.domainMin(), chain.domainMax());
             if (!outside.empty())
                 std::cerr << "lutkit: warning: " << j.input << ": " << outside
-                          << "; they take the LUT's edge values\n";
+                          << "; they take the LUT's edge values"
+                          << (o.color.any() ? ""
+                                            : " (--from/--lut-space put the image in the space "
+                                              "the LUT was made for)")
+                          << "\n";
             for (const auto& d : r.diagnostics)
                 if (isShown(d, o.verbosity))
                     std::cerr << "lutkit: " << severityWord(d.severity) << ": " << j.input << ": "
@@ -62,8 +72,8 @@ int runApply(const ApplyOptions& o) {
 CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onParsed) {
     auto o = std::make_shared<ApplyOptions>();
     auto* sub = app.add_subcommand(
-        "apply", "Apply a LUT to the stored pixel values of images (no colour conversion; data "
-                 "type, alpha, compression and metadata kept)");
+        "apply", "Apply a LUT to the stored pixel values of images (data type, alpha, compression "
+                 "and metadata kept), or in its own colour space (--from)");
     sub->add_option("--lut", o->lut, "LUT file (any supported format)")
         ->required()
         ->type_name("FILE");
@@ -83,6 +93,7 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
     addMaxMemory(*sub, o->maxMemory);
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
     addThreads(*sub, o->threads);
+    addColorOptions(*sub, o->color, ColorOptionSet::All);
     addVerbosity(*sub, o->verbosity, "print IN -> OUT for every file written");
     sub->footer(
         "Examples:\n"
@@ -91,6 +102,8 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
         "  lutkit apply --lut grade.cube f.%04d.exr --frames 1-100 -o out.%04d.exr\n"
         "  lutkit apply --lut grade.cube - --in-format png -o - --format png < in.png > out.png\n"
         "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif -o out.tif -y\n"
+        "  lutkit apply --lut log_look.cube --from ACEScg --lut-space ACEScct --to sRGB "
+        "render.exr -o out.png\n"
         "An existing output is replaced only with -y; -n skips existing outputs.");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;

@@ -4,6 +4,7 @@
 #include "Notes.h"
 #include "Outputs.h"
 
+#include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 
@@ -30,12 +31,15 @@ struct ApplyOptions {
     std::string compression;            // "" = the input's (EXR, TIFF)
     std::string maxMemory;              // --max-memory (default half the RAM)
     Interpolation interp = Interpolation::Tetrahedral;
-    int threads = 0; // 0 = all cores
+    int threads = 0;          // 0 = all cores
+    formats::ColorSpec color; // --config, --from, --to ...: the LUT runs in its own space
     Verbosity verbosity;
 };
 
-// Applies the LUT to the stored pixel values (no colour conversion), alpha, data type,
-// compression and metadata kept -- what Photoshop's Color Lookup does, file by file.
+// Applies the LUT to the stored pixel values, alpha, data type, compression and metadata kept --
+// what Photoshop's Color Lookup does, file by file. No colour conversion unless --from/--to...
+// ask for one: then OpenColorIO converts into the LUT's space and out of it
+// (lut/formats/ColorTransform.h). Values outside the LUT's domain are counted and reported.
 int runApply(const ApplyOptions& options);
 
 // Adds the subcommand to app; onParsed is called with the options once they are parsed.

@@ -4,8 +4,12 @@
 #include "Json.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "commands/Bake.h"
 
+#include "lut/formats/Bake.h"
 #include "lut/formats/Convert.h"
+#include "lut/formats/Hald.h"
+#include "lut/formats/ImageFiles.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/io/FileNames.h"
 #include "lut/roundtrip/RoundtripTarget.h"
@@ -102,8 +106,10 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
 } // namespace
 
 int runConvert(const ConvertOptions& o) {
-    const OutputTarget target =
-        resolveOutput(o.output, o.overwrite, {o.input, o.originalLut, o.screenshot});
+    if (o.color.any())
+        (void)formats::planColor(o.color); // a misspelt colour name is bad usage, before files
+    const OutputTarget target = resolveOutput(
+        o.output, o.overwrite, {o.input, o.originalLut, o.screenshot, o.color.config});
     if (target.skip) {
         if (!o.verbosity.quiet)
             std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
@@ -122,12 +128,44 @@ int runConvert(const ConvertOptions& o) {
                                        "writes the LUT as it is");
     if (!o.originalLut.empty() || !o.screenshot.empty() || o.refine)
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
+    if (o.color.any()) {
+        // The LUT in its own colour space, OpenColorIO's conversions around it, baked.
+        formats::BakeOptions b;
+        b.config = o.color.config;
+        b.lut = o.input;
+        b.lutFormat = o.inFormat;
+        b.lutRead.layout = o.inLayout;
+        b.around = o.color;
+        b.cubeSize = o.size;
+        b.shaperSize = o.shaperSize;
+        b.format = o.format;
+        b.write.layout = o.layout;
+        b.write.bitDepth = o.bitDepth;
+        b.write.dither = o.dither;
+        if (!o.name.empty())
+            b.write.setAttribute(formats::nutexb::kNameAttribute, o.name);
+        printBakeReport(o.output, formats::bake(o.output, b), o.json, o.verbosity);
+        return kExitOk;
+    }
     formats::ConvertOptions co;
     co.inFormat = o.inFormat;
     co.outFormat = o.format;
     co.read.layout = o.inLayout;
     co.write.layout = o.layout;
     co.write.size = o.size;
+    if (o.level) {
+        if (o.layout && *o.layout != LutLayout::Hald)
+            throw UsageError(std::string("--level is a Hald level; the layout is ") +
+                             toString(*o.layout) + " (use --size)");
+        const bool image = o.format.empty() ? formats::isImageExtension(o.output)
+                                            : o.format == "hald" || o.format == "strip";
+        if (!image)
+            throw UsageError("--level is a Hald level; " + o.output +
+                             " is not a LUT image (use --size)");
+        co.write.size = o.level * o.level;
+        if (o.format != "hald")
+            co.write.layout = LutLayout::Hald;
+    }
     co.write.bitDepth = o.bitDepth;
     co.write.dither = o.dither;
     if (!o.name.empty())
@@ -153,9 +191,14 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     addInputFormat(*sub, o->inFormat);
     addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
     addLayout(*sub, "--in-layout", o->inLayout, "input LUT image layout (default: detected)");
-    sub->add_option("--size", o->size,
-                    "output lattice size (default: the format's own, else the input's)")
-        ->check(CLI::Range(2, 256));
+    auto* size = sub->add_option("--size", o->size,
+                                 "output lattice size N, N^3 (default: the format's own, else the "
+                                 "input's)")
+                     ->check(CLI::Range(2, 256));
+    sub->add_option("--level", o->level,
+                    "Hald level L as ImageMagick's hald:L (N = L^2, layout hald)")
+        ->check(CLI::Range(formats::kMinHaldLevel, formats::kMaxHaldLevel))
+        ->excludes(size);
     addInterp(*sub, o->interp, "resampling interpolation (default tetrahedral)");
     addBitDepth(*sub, o->bitDepth, "LUT image output: 8, 16 or 32 (float)");
     sub->add_flag("--dither", o->dither, "8-bit image output: ordered dither");
@@ -181,6 +224,11 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--refine", o->refine,
                   "smash: write the least-squares refinement (best between the game's 16^3 "
                   "points) instead of the exact composition; both are reported");
+    addColorOptions(*sub, o->color, ColorOptionSet::All);
+    sub->add_option("--shaper-size,--shapersize", o->shaperSize,
+                    "with --from: shaper entries when the input is HDR (default 4096)")
+        ->check(CLI::Range(2, 65536))
+        ->group("Colour management (OpenColorIO)");
     addVerbosity(*sub, o->verbosity, "also say how a LUT image input was read");
     sub->footer("Examples:\n"
                 "  lutkit convert grade.cube color_grading_lut.nutexb   # for Smash Ultimate "
@@ -191,7 +239,9 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
-                "  lutkit convert grade.3dl grade.cube --size 33 --json");
+                "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
+                "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "
+                "--to sRGB");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

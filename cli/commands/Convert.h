@@ -4,6 +4,7 @@
 #include "Notes.h"
 #include "Outputs.h"
 
+#include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 
@@ -24,7 +25,8 @@ struct ConvertOptions {
     std::string inFormat;              // input format name ("" = from the extension)
     std::optional<LutLayout> layout;   // output image layout
     std::optional<LutLayout> inLayout; // input image layout
-    int size = 0; // output lattice size (0 = the format's fixed size, else the input's)
+    int size = 0;  // output lattice size (0 = the format's fixed size, else the input's)
+    int level = 0; // Hald level L: size L^2, layout hald
     Interpolation interp = Interpolation::Tetrahedral;
     int bitDepth = 0; // image output bit depth (0 = the format's default)
     bool dither = false;
@@ -38,6 +40,10 @@ struct ConvertOptions {
     std::string originalLut; // smash: the stage's LUT (default neutral)
     std::string screenshot;  // smash: the colours that occur (default: an input grid)
     bool refine = false;     // smash: write the least-squares refinement
+    // --config, --from, --to ...: the LUT baked with colour conversions around it
+    // (lut/formats/Bake.h), e.g. a display LUT made for sRGB turned into one for ACEScg input.
+    formats::ColorSpec color;
+    int shaperSize = 0;
     Verbosity verbosity;
 };
 

@@ -6,6 +6,7 @@
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
+#include "lut/formats/Hald.h"
 #include "lut/formats/Registry.h"
 
 #include <CLI/CLI.hpp>
@@ -98,7 +99,10 @@ int runInfo(const InfoOptions& o) {
               << "format      " << file.format
               << (file.dialect.empty() ? "" : " (" + file.dialect + ")") << "\n";
     if (file.cube)
-        std::cout << "size        " << file.cube->size() << "^3\n";
+        std::cout << "size        "
+                  << (file.format == "hald" ? formats::haldSizeText(file.cube->size())
+                                            : std::to_string(file.cube->size()) + "^3")
+                  << "\n";
     if (file.shaper)
         std::cout << "shaper      1D, " << file.shaper->size() << " entries, domain "
                   << vec(file.shaper->domainMin()) << " .. " << vec(file.shaper->domainMax())

@@ -5,6 +5,7 @@
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
+#include "lut/formats/Hald.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
@@ -38,25 +39,45 @@ int runNeutral(const NeutralOptions& o) {
         throw Error(o.output + ": no format writes '" + extensionOf(o.output) +
                     "' files (name the output format: --format)");
 
-    const int size = o.size ? o.size : defaultNeutralSize(o.output, writer->fixedSize());
+    std::optional<LutLayout> layout = o.layout;
+    if (o.level) {
+        if (layout && *layout != LutLayout::Hald)
+            throw UsageError(std::string("--level is a Hald level; the layout is ") +
+                             toString(*layout) + " (use --size)");
+        if (writer->name() != "hald" && writer->name() != "strip")
+            throw UsageError("--level is a Hald level; " + writer->name() +
+                             " is not a LUT image (use --size)");
+        layout = LutLayout::Hald;
+    }
+    const bool hald = writer->name() == "hald" || layout == LutLayout::Hald;
+    const int asked = o.level  ? o.level * o.level
+                      : o.size ? o.size
+                               : defaultNeutralSize(o.output, writer->fixedSize());
+    // A Hald image holds N = L^2 only: say so rather than write another size than the one named.
+    const int size = hald ? formats::haldSizeFor(asked) : asked;
     LutFile file;
     file.cube = Lut3D::identity(size);
     file.cube->setTitle(o.title.empty() ? "neutral " + std::to_string(size) : o.title);
     FormatOptions options;
-    options.layout = o.layout;
+    options.layout = layout;
     options.size = size;
     options.bitDepth = o.bitDepth;
     if (!o.name.empty())
         options.setAttribute(formats::nutexb::kNameAttribute, o.name);
     const Diagnostics diags = formats::writeLut(o.output, file, options, writer->name());
-    std::cout << "wrote " << o.output << ": " << writer->name() << ", neutral " << size << "^3";
-    if (o.layout)
-        std::cout << ", layout " << toString(*o.layout);
+    std::cout << "wrote " << o.output << ": " << writer->name() << ", neutral "
+              << (hald ? formats::haldSizeText(size) : std::to_string(size) + "^3");
+    if (layout)
+        std::cout << ", layout " << toString(*layout);
     if (o.bitDepth)
         std::cout << ", " << o.bitDepth << "-bit";
     std::cout << "\n";
     if (o.verbosity.verbose)
         std::cout << "  " << writer->name() << ": " << writer->description() << "\n";
+    if (hald && size != asked && !o.verbosity.quiet)
+        std::cout << "  note: --size " << asked << " is not a square; a Hald image stores N = "
+                  << "L^2, so " << formats::haldSizeText(size)
+                  << " was written (--level L asks for N = L^2)\n";
     printDiagnostics(std::cout, diags, o.verbosity);
     return kExitOk;
 }
@@ -67,9 +88,15 @@ CLI::App* setupNeutral(CLI::App& app, std::function<void(const NeutralOptions&)>
     sub->add_option("OUT", o->output, "output file (format from the extension)")
         ->required()
         ->type_name("FILE");
-    sub->add_option("--size", o->size,
-                    "lattice size (default: the format's fixed size; 16 for images; 33 otherwise)")
-        ->check(CLI::Range(2, 256));
+    auto* size =
+        sub->add_option("--size", o->size,
+                        "lattice size N (N^3; default: the format's fixed size; 16 for images; 33 "
+                        "otherwise)")
+            ->check(CLI::Range(2, 256));
+    sub->add_option("--level", o->level,
+                    "Hald level L as ImageMagick's hald:L (N = L^2, an L^3 x L^3 image)")
+        ->check(CLI::Range(formats::kMinHaldLevel, formats::kMaxHaldLevel))
+        ->excludes(size);
     addOutputFormat(*sub, o->format);
     addLayout(*sub, "--layout", o->layout, "LUT images: the layout (default unreal, 256x16)");
     addBitDepth(*sub, o->bitDepth, "LUT images: 8, 16 or 32 (float)");
@@ -83,6 +110,8 @@ CLI::App* setupNeutral(CLI::App& app, std::function<void(const NeutralOptions&)>
                 "  lutkit neutral color_grading_lut.nutexb       # Smash Ultimate's 16^3 "
                 "neutral\n"
                 "  lutkit neutral --size 65 identity.cube\n"
+                "  lutkit neutral --level 8 hald8.png                # ImageMagick's hald:8, "
+                "64^3\n"
                 "  lutkit neutral --layout unity --bit-depth 16 unity_neutral.png");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;

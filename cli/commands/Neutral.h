@@ -20,6 +20,7 @@ struct NeutralOptions {
     std::string format;              // output format name ("" = from the extension)
     std::optional<LutLayout> layout; // LUT images: the layout (default: the format's)
     int size = 0;                    // 0 = default for the format (see defaultNeutralSize)
+    int level = 0;                   // Hald level L (N = L^2, layout hald); 0 = use size
     int bitDepth = 0;                // LUT images: 8, 16 or 32 (0 = the format's default)
     std::string name;                // nutexb name field
     std::string title;

@@ -106,6 +106,7 @@ std::string previewFooter() {
           "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut old.nutexb\n"
           "  lutkit preview photo.png -o seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
+          "  lutkit preview acescg_render.exr -o out.png --from ACEScg --lut grade.cube\n"
           "  lutkit preview frames/ -o seen/ --enable grain --stage grain.strength=0.05\n"
           "  lutkit preview --list-stages --preset cinematic";
     return os.str();
@@ -164,7 +165,11 @@ int runPreview(const PreviewOptions& o) {
         std::cout << stageList(*configured);
         return kExitOk;
     }
-    const BatchPlan plan = planBatch(o.inputs, o.output, {o.lut, o.originalLut}, o.frames);
+    if (o.fromScreenshot && !o.color.from.empty())
+        throw UsageError("--from-screenshot and --from both say what the input is: give one");
+    const formats::ColorPlan color = formats::planPreviewColor(o.color); // names first: usage
+    const BatchPlan plan =
+        planBatch(o.inputs, o.output, {o.lut, o.originalLut, o.color.config}, o.frames);
     BatchOptions bo;
     bo.threads = o.threads;
     bo.quiet = o.verbosity.quiet;
@@ -183,6 +188,7 @@ int runPreview(const PreviewOptions& o) {
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
         original = std::make_shared<const Lut3D>(formats::readLut(o.originalLut).toLut3D());
+    printDiagnostics(std::cerr, color.diagnostics, o.verbosity, "lutkit: ");
     bool noted = false;
     std::mutex noteMutex;
 
@@ -202,10 +208,16 @@ int runPreview(const PreviewOptions& o) {
             decideSceneKind(SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
                                           img.info.format},
                             o.fromScreenshot ? std::optional<SceneKind>(SceneKind::Screenshot)
-                            : o.scene        ? std::optional<SceneKind>(SceneKind::Scene)
-                                             : std::nullopt);
+                            : o.scene || color.before ? std::optional<SceneKind>(SceneKind::Scene)
+                                                      : std::nullopt);
         bool linear = scene.storedIsLinear;
-        if (!linear && img.info.type == formats::PixelType::UInt8) {
+        if (color.before) {
+            // --from: OpenColorIO converts the input to sRGB-encoded values first.
+            ProcessorChain toSrgb;
+            toSrgb.append(color.before);
+            toSrgb.apply(img.image.view(), inner);
+            linear = false;
+        } else if (!linear && img.info.type == formats::PixelType::UInt8) {
             decodeSrgbCodes8(img.image.view()); // exact: 8-bit values are k/255
             linear = true; // decoded: prepareSceneFrame only undoes the grading
         }
@@ -243,6 +255,11 @@ int runPreview(const PreviewOptions& o) {
         run.nthreads = inner;
         run.frameIndex = o.frame;
         const PipelineReport report = pipeline.run(img.image.view(), run);
+        if (color.after) {
+            ProcessorChain fromSrgb;
+            fromSrgb.append(color.after);
+            fromSrgb.apply(img.image.view(), inner);
+        }
         formats::ImageWriteOptions wo =
             formats::renderedImageWriteOptions(img.info, j.output, o.bitDepth);
         wo.format = o.format.empty() && j.target.inPlace() ? img.info.format : o.format;
@@ -321,6 +338,7 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     sub->add_option("--frame", o->frame, "frame index (film grain changes per frame)");
     addBitDepth(*sub, o->bitDepth, "output bit depth 8, 16 or 32 (default: the input's)");
     addThreads(*sub, o->threads);
+    addColorOptions(*sub, o->color, ColorOptionSet::Preview);
     sub->add_flag("--list-stages", o->listStages,
                   "print the stages and parameters of the preset and exit");
     addVerbosity(*sub, o->verbosity, "list the stages that ran and their time");

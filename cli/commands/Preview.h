@@ -4,6 +4,7 @@
 #include "Notes.h"
 #include "Outputs.h"
 
+#include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 #include "lut/pipeline/Pipeline.h"
@@ -41,6 +42,9 @@ struct PreviewOptions {
     int bitDepth = 0;             // 0 = the input's (float input: 32 for .exr/.hdr, else 16/8)
     int threads = 0;
     bool listStages = false;
+    // --config, --from, --look, --to: the input converted to sRGB before the pipeline, the
+    // output from sRGB after it (lut/formats/ColorTransform.h, planPreviewColor).
+    formats::ColorSpec color;
     Verbosity verbosity; // -v: the stages that ran and their time
 };
 

@@ -3,6 +3,7 @@
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
+#include "lut/formats/Hald.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -85,8 +86,13 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     ConvertReport report;
     report.outputFormat = writer->name();
 
+    // Readers that sample (OpenColorIO's chains) sample at the size the output stores, through
+    // the whole processor, instead of being resampled afterwards.
+    FormatOptions readOptions = options.read;
+    if (readOptions.size == 0)
+        readOptions.size = wantSize ? wantSize : writer->fixedSize();
     auto t0 = Clock::now();
-    report.input = readLut(input, options.read, options.inFormat);
+    report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
     const LutFile& in = report.input;
     if (!in.cube && !in.shaper)
@@ -97,12 +103,32 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     int targetSize = wantSize ? wantSize : writer->fixedSize();
     if (targetSize == 0)
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
+    // A Hald image holds N = L^2 only: resample once, to the size it will hold.
+    const bool hald = writer->name() == "hald" ||
+                      (options.write.layout == LutLayout::Hald && writer->name() == "strip");
+    Diagnostics sizeNotes;
+    if (hald && targetSize != 0 && haldSizeFor(targetSize) != targetSize) {
+        const int held = haldSizeFor(targetSize);
+        sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
+                             std::to_string(targetSize) +
+                                 "^3 is not a square: a Hald image stores N = L^2, so " +
+                                 haldSizeText(held) + " (--level L asks for N = L^2)"});
+        targetSize = held;
+    }
     LutFile toWrite = in;
     if (targetSize != 0 && targetSize != sourceSize) {
-        ResampleResult r = resampleWithError(in.toLut3D(0), targetSize, options.interp);
-        report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
-        toWrite.shaper.reset();
-        toWrite.cube = std::move(r.lut);
+        if (in.shaper && in.cube && writer->holdsShaper()) {
+            // The output keeps the shaper: only the cube changes size.
+            ResampleResult r = resampleWithError(*in.cube, targetSize, options.interp);
+            r.lut.setDomain(in.cube->domainMin(), in.cube->domainMax());
+            report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
+            toWrite.cube = std::move(r.lut);
+        } else {
+            ResampleResult r = resampleWithError(in.toLut3D(0), targetSize, options.interp);
+            report.resample = ResampleStep{sourceSize, targetSize, options.interp, r.error};
+            toWrite.shaper.reset();
+            toWrite.cube = std::move(r.lut);
+        }
     }
     toWrite.diagnostics.clear();
 
@@ -111,6 +137,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     t0 = Clock::now();
     std::string inPlaceBytes; // what went to standard output or a device, to read back
     report.writeDiagnostics = writeLutFile(*writer, output, toWrite, writeOptions, &inPlaceBytes);
+    report.writeDiagnostics.insert(report.writeDiagnostics.begin(), sizeNotes.begin(),
+                                   sizeNotes.end());
     report.writeSeconds = since(t0);
 
     // Read back what was written, in the layout it was written in.

@@ -24,6 +24,15 @@ inline cli::RunHooks stubHooks() {
     h.extract = [](const cli::ExtractOptions&) { return 0; };
     h.fit = [](const cli::FitOptions&) { return 0; };
     h.bench = [](const cli::BenchOptions&) { return 0; };
+    h.bake = [](const cli::BakeCommandOptions&) { return 0; };
+    h.diff = [](const cli::DiffCommandOptions&) { return 0; };
+    h.compose = [](const cli::ComposeCommandOptions&) { return 0; };
+    h.invert = [](const cli::InvertCommandOptions&) { return 0; };
+    h.resize = [](const cli::ResizeCommandOptions&) { return 0; };
+    h.smooth = [](const cli::SmoothCommandOptions&) { return 0; };
+    h.mix = [](const cli::MixCommandOptions&) { return 0; };
+    h.plot = [](const cli::PlotCommandOptions&) { return 0; };
+    h.adjust = [](const cli::AdjustCommandOptions&) { return 0; };
     return h;
 }
 

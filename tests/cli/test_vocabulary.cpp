@@ -92,8 +92,12 @@ const OptionEntry* findOption(const CommandEntry& c, const std::string& name) {
 std::string minimalLine(const CommandEntry& c, const std::string& extra) {
     std::string line = c.name;
     for (const auto& o : c.options)
-        if (o.required)
-            line += (o.positional.empty() ? " " + o.longNames.front() + " x" : " x");
+        if (o.required) {
+            const bool number =
+                o.valueName == "INT" || o.valueName == "UINT" || o.valueName == "FLOAT";
+            line += (o.positional.empty() ? " " + o.longNames.front() : std::string()) +
+                    (number ? " 2" : " x");
+        }
     return line + " " + extra;
 }
 
@@ -104,9 +108,10 @@ TEST(Vocabulary, EveryCommandIsInTheTable) {
     std::vector<std::string> names;
     for (const auto& c : p.commands)
         names.push_back(c.name);
-    EXPECT_EQ(names,
-              (std::vector<std::string>{"neutral", "convert", "info", "validate", "apply",
-                                        "preview", "embed", "extract", "fit", "bench", "help"}));
+    EXPECT_EQ(names, (std::vector<std::string>{
+                         "neutral", "convert", "info",  "validate", "apply",  "preview", "embed",
+                         "extract", "fit",     "bench", "bake",     "diff",   "compose", "invert",
+                         "resize",  "smooth",  "mix",   "plot",     "adjust", "help"}));
 }
 
 TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {
@@ -188,8 +193,12 @@ TEST(Vocabulary, EveryValueFromAFixedSetIsValidated) {
     // Value names of options whose values are free: files, folders, paths (-o: a file, a folder
     // or a frame pattern), numbers (CLI11 converts and ranges check them), frame ranges and
     // memory sizes (their own validators) and two pieces of text.
-    const std::set<std::string> free = {"FILE",  "DIR",  "PATH",  "INT", "UINT",
-                                        "FLOAT", "TEXT", "RANGE", "SIZE"};
+    // SPACE, LOOKS, DISPLAY, VIEW (colour management) and ID (a CCC id) name things of an
+    // OpenColorIO config or file that the command line may name after them: checked when the
+    // command runs, against the config's own lists (lut::formats::ColorOptionError, exit 2).
+    const std::set<std::string> free = {"FILE",  "DIR",     "PATH",  "INT",  "UINT",
+                                        "FLOAT", "TEXT",    "RANGE", "SIZE", "SPACE",
+                                        "LOOKS", "DISPLAY", "VIEW",  "ID"};
     const std::set<std::string> freeText = {"--name", "--title", "--stage"};
     for (const auto& c : p.commands)
         for (const auto& o : c.options) {

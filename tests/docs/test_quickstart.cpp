@@ -5,10 +5,6 @@
 // specs: the strip layout (docs/specs/strip-layouts.md), the game's compensation
 // (docs/specs/smash-pipeline.md) in float64, OpenColorIO's reading of the .3dl, an affine grade
 // that every interpolation reproduces exactly.
-//
-// Behaviour that other branches bring is detected from `lutkit COMMAND --help`; until it is
-// there, the checks that need it are not run and the test ends SKIPPED, naming what it waits
-// for (see pendingReasons). Remove a detection once its branch is merged.
 #include "TestSupport.h"
 
 #include "lut/formats/Registry.h"
@@ -88,30 +84,6 @@ LineRun runLine(const fs::path& dir, const std::string& line) {
 std::string describe(const std::string& line, const LineRun& r) {
     return "README line: " + line + "\nexit " + std::to_string(r.exitCode) + "\nstdout:\n" + r.out +
            "\nstderr:\n" + r.err;
-}
-
-bool helpMentions(const std::string& command, const std::string& word) {
-    return lut::test::runCli(command + " --help").out.find(word) != std::string::npos;
-}
-
-// What the quick start needs from branches not merged yet, each detected by an option it adds.
-struct Landed {
-    // P1 (issue 13): the output is named by -o (a file for one input), -y replaces.
-    bool outputRules =
-        helpMentions("preview", "--overwrite") && helpMentions("apply", "--overwrite");
-    // P1 (issue 13): frame sequences (frame.%04d.exr) in and out.
-    bool sequences = helpMentions("apply", "--frames");
-    // P3 (issue 14): a .nutexb output of convert means the game: --target smash by default.
-    bool convertTarget = helpMentions("convert", "--target");
-    // P3 (issue 14): preview takes an 8-bit image for an in-game screenshot (--scene overrides).
-    bool screenshotRule = helpMentions("preview", "--scene");
-};
-
-std::string pendingReasons(const std::vector<std::string>& pending) {
-    std::string s = "not checked until merged:";
-    for (const auto& p : pending)
-        s += "\n  - " + p;
-    return s;
 }
 
 struct Picture {
@@ -235,9 +207,6 @@ TEST(QuickStart, Modder) {
     const auto lines = quickstartLines("modder");
     ASSERT_EQ(lines.size(), 3u);
     const fs::path dir = workDir();
-    const Landed landed;
-    std::vector<std::string> pending;
-
     // The user's in-game screenshot: 8-bit sRGB, display values up to 230. Those all reach the
     // game's LUT below its lattice point 10/15, where the compensated neutral LUT is exactly
     // neutral; brighter ones fall between point 10 and the points compensated to clip to white,
@@ -282,7 +251,7 @@ TEST(QuickStart, Modder) {
     EXPECT_EQ(nutexb.format, "nutexb");
     ASSERT_TRUE(nutexb.cube);
     ASSERT_EQ(nutexb.cube->size(), 16);
-    if (landed.convertTarget) {
+    {
         int off = 0;
         std::string first;
         for (int b = 0; b < 16; ++b)
@@ -302,15 +271,12 @@ TEST(QuickStart, Modder) {
                     }
                 }
         EXPECT_EQ(off, 0) << "the nutexb is not the compensated neutral; first: " << first;
-    } else {
-        pending.push_back("line 2's values: a .nutexb output of convert compensated for the game "
-                          "(--target smash by default; P3, issue 14)");
     }
 
     // 3. What the game shows: with the compensated neutral, the screenshot itself (8-bit, same
     // size), within one step.
     r = runLine(dir, lines[2]);
-    if (landed.outputRules && landed.screenshotRule) {
+    {
         ASSERT_EQ(r.exitCode, 0) << describe(lines[2], r);
         ASSERT_TRUE(fs::is_regular_file(dir / "in_game.png")) << describe(lines[2], r);
         const Picture seen = readPicture(dir / "in_game.png");
@@ -322,12 +288,7 @@ TEST(QuickStart, Modder) {
         for (std::size_t i = 0; i < shot.size(); ++i)
             worst = std::max(worst, std::abs(double(seen.pixels[i]) - shot[i]) * 255);
         EXPECT_LE(worst, 1.0) << "in_game.png differs from the screenshot by " << worst << " steps";
-    } else {
-        pending.push_back("line 3: preview -o names the output file (P1, issue 13) and an 8-bit "
-                          "image is an in-game screenshot by default (P3, issue 14)");
     }
-    if (!pending.empty())
-        GTEST_SKIP() << pendingReasons(pending);
 }
 
 // A .cube to .3dl, then the .cube applied to a three-frame half-float EXR sequence.
@@ -335,8 +296,6 @@ TEST(QuickStart, Colourist) {
     const auto lines = quickstartLines("colourist");
     ASSERT_EQ(lines.size(), 2u);
     const fs::path dir = workDir();
-    const Landed landed;
-    std::vector<std::string> pending;
 
     // The user's LUT and frames.
     writeLookCube(dir / "look.cube", 17);
@@ -381,11 +340,6 @@ TEST(QuickStart, Colourist) {
 
     // 2. The sequence: graded.0001..0003.exr, half with alpha and metadata, the grade applied.
     r = runLine(dir, lines[1]);
-    if (!(landed.outputRules && landed.sequences)) {
-        pending.push_back("line 2: frame sequences (plate.%04d.exr) and -o naming the output "
-                          "(P1, issue 13)");
-        GTEST_SKIP() << pendingReasons(pending);
-    }
     ASSERT_EQ(r.exitCode, 0) << describe(lines[1], r);
     EXPECT_FALSE(fs::exists(dir / "graded.0004.exr"));
     for (int f = 1; f <= frames; ++f) {

@@ -165,8 +165,7 @@ TEST(OcioFormat, FlameStoresTwelveBitIntegers) {
         }
 }
 
-TEST(OcioFormat, NonDefaultDomainIsResampledOverUnitInputs) {
-    const std::string path = workDir() + "/domain.csp";
+lut::LutFile domainFile() {
     lut::LutFile file;
     lut::Lut3D l = lut::Lut3D::identity(5);
     l.setDomain(glm::vec3(0.0f), glm::vec3(2.0f));
@@ -175,12 +174,19 @@ TEST(OcioFormat, NonDefaultDomainIsResampledOverUnitInputs) {
             for (int r = 0; r < 5; ++r)
                 l.at(r, g, b) = affine(l.latticeInput(r, g, b) * 0.5f);
     file.cube = l;
-    const auto diags = lut::formats::writeLut(path, file, {}, "csp");
+    return file;
+}
+
+TEST(OcioFormat, NonDefaultDomainIsResampledOverUnitInputsWithoutAShaper) {
+    // .itx holds neither a shaper nor an input range.
+    const std::string path = workDir() + "/domain.itx";
+    const auto diags = lut::formats::writeLut(path, domainFile(), {}, "itx");
     EXPECT_TRUE(std::any_of(diags.begin(), diags.end(), [](const lut::Diagnostic& d) {
         return d.message.find("domain") != std::string::npos;
     }));
     const lut::LutFile back = lut::formats::readLut(path);
     ASSERT_TRUE(back.cube);
+    EXPECT_TRUE(back.cube->hasDefaultDomain());
     // The file maps input x in [0,1] to affine(x / 2): the table over [0,2] evaluated there.
     for (int b = 0; b < 5; ++b)
         for (int g = 0; g < 5; ++g)
@@ -190,6 +196,35 @@ TEST(OcioFormat, NonDefaultDomainIsResampledOverUnitInputs) {
                 for (int c = 0; c < 3; ++c)
                     EXPECT_NEAR(got[c], want[c], 1e-5) << r << g << b;
             }
+}
+
+TEST(OcioFormat, FormatsWithAShaperKeepTheInputRange) {
+    // .clf, .ctf (a range Matrix) and .csp (a straight prelut) keep the 0..2 input range: the
+    // file read back has the same domain and entries, and OCIO's processor on the written file
+    // gives affine(x / 2) at x = 2 (where a [0,1] file would have clamped to affine(1/2)).
+    for (const char* ext : {".clf", ".ctf", ".csp"}) {
+        SCOPED_TRACE(ext);
+        const std::string path = workDir() + "/domain" + ext;
+        const auto diags = lut::formats::writeLut(path, domainFile());
+        EXPECT_FALSE(std::any_of(diags.begin(), diags.end(), [](const lut::Diagnostic& d) {
+            return d.severity == lut::Diagnostic::Severity::Warning;
+        }));
+        const lut::LutFile back = lut::formats::readLut(path);
+        ASSERT_TRUE(back.cube);
+        EXPECT_EQ(back.cube->size(), 5);
+        EXPECT_EQ(back.cube->domainMax(), glm::vec3(2.0f));
+        EXPECT_LE(maxEntryDiff(*domainFile().cube, *back.cube), 2e-6);
+
+        auto ft = OCIO::FileTransform::Create();
+        ft->setSrc(path.c_str());
+        ft->setInterpolation(OCIO::INTERP_BEST);
+        const auto cpu = OCIO::Config::CreateRaw()->getProcessor(ft)->getDefaultCPUProcessor();
+        float rgb[3] = {2.0f, 1.0f, 0.5f};
+        cpu->applyRGB(rgb);
+        const glm::vec3 want = affine(glm::vec3(1.0f, 0.5f, 0.25f));
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(rgb[c], want[c], 1e-5);
+    }
 }
 
 TEST(OcioFormat, RefusesTablesLargerThanOcioHolds) {

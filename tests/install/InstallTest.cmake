@@ -1,7 +1,8 @@
 # ctest install_tree (tests/install/CMakeLists.txt): checks that `cmake --install` gives a tree
 # that works on its own.
 #  1. cmake --install BUILD_DIR --prefix WORK_DIR/prefix
-#  2. the installed lutkit converts the sample grade to a nutexb and to a LUT strip PNG; the strip
+#  2. the installed lutkit converts the sample grade to a nutexb and to a LUT strip PNG, and bakes
+#     with lutkit's own OpenColorIO config, found in the installed share/lutkit/ocio/; the strip
 #     needs the image module, which must be loaded from the installed lib/lutkit/ (checked with
 #     the dynamic loader's LD_DEBUG=files log, since the build tree's copy would work too);
 #     `lutkit info --json` on both outputs reports the sizes the formats store (16 and 33); the
@@ -37,7 +38,8 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 
 # 1. Install.
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(f bin/lutkit lib/lutkit/lutkit_imageio.so include/lut/Version.h include/lut/Lut3D.h
+foreach(f bin/lutkit lib/lutkit/lutkit_imageio.so share/lutkit/ocio/config.ocio
+          include/lut/Version.h include/lut/Lut3D.h
           include/lut/formats/Registry.h lib/cmake/lutkit/lutkitConfig.cmake
           lib/cmake/lutkit/lutkitConfigVersion.cmake)
   if(NOT EXISTS ${prefix}/${f})
@@ -62,6 +64,13 @@ expect_match("the image module loaded from the installed tree"
              "^file=${prefix_regex}/bin/\\.\\./lib/lutkit/lutkit_imageio\\.so" "${loads}")
 run("installed lutkit info on the strip" ${lutkit} info --json ${WORK_DIR}/strip.tif)
 expect_match("info strip.tif" "\"format\": \"strip\".*\"size\": 33," "${out}")
+
+# lutkit's own OpenColorIO config, found next to the installed program (not the build tree's
+# copy) when $OCIO names none.
+run("installed lutkit bake with its own config" ${CMAKE_COMMAND} -E env --unset=OCIO
+    ${lutkit} bake --inputspace ACEScg --outputspace sRGB --cubesize 9 --json ${WORK_DIR}/acescg.cube)
+expect_match("bake's config" "\"config\": \"${prefix_regex}/share/lutkit/ocio/config.ocio \\(lutkit's own\\)\""
+             "${out}")
 
 if(EXISTS ${prefix}/bin/lutkit-editor)
   run("installed lutkit-editor --version" ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen

@@ -138,6 +138,18 @@ TEST(Smooth, KeepsIdentityAndAffineLutsAndZeroSigma) {
     for (std::size_t i = 0; i < affine.entryCount(); ++i)
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(s.lut.entries()[i][c], affine.entries()[i][c], 1e-6);
+    // A kernel wider than the lattice (3 sigma = 24 steps on a 3^3 LUT): the reflection past
+    // the edge repeats, so the affine LUT still stays itself (it moved by 0.12 when the far edge
+    // entry was repeated instead).
+    for (const int n : {2, 3, 5}) {
+        const Lut3D small = lutFrom(n, [](glm::vec3 x) {
+            return glm::vec3(0.8f * x.r + 0.1f, 0.5f * x.g + 0.2f * x.b, 1.0f - 0.7f * x.b);
+        });
+        const OpResult w = smooth(small, 8.0);
+        for (std::size_t i = 0; i < small.entryCount(); ++i)
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(w.lut.entries()[i][c], small.entries()[i][c], 1e-6) << n;
+    }
     const Lut3D noisy = randomLut(9);
     const OpResult none = smooth(noisy, 0.0);
     EXPECT_TRUE(sameBits(none.lut, noisy));

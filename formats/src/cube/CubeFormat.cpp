@@ -17,6 +17,13 @@ public:
         return ".cube 1D/3D LUT, Adobe 1.0 and Resolve dialects (text)";
     }
     std::vector<std::string> extensions() const override { return {".cube"}; }
+    // OpenColorIO's baker names (ociobakelut --format): the Resolve dialect writes a shaper as
+    // LUT_1D + LUT_3D, the Iridas/Adobe one bakes it into the cube.
+    std::vector<FormatAlias> aliases() const override {
+        return {{"resolve_cube", kCubeDialectAttribute, "resolve"},
+                {"iridas_cube", kCubeDialectAttribute, "adobe"}};
+    }
+    bool holdsShaper() const override { return true; }
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         CubeReadOptions o;
         o.strict = options.strict;
@@ -34,16 +41,25 @@ public:
     }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {
+        CubeWriteOptions wo;
+        if (const auto d = options.attribute(kCubeDialectAttribute)) {
+            if (*d == "resolve")
+                wo.dialect = CubeWriteOptions::Dialect::Resolve;
+            else if (*d == "adobe")
+                wo.dialect = CubeWriteOptions::Dialect::Adobe;
+            else
+                throw Error(path + ": unknown .cube dialect '" + *d + "' (adobe or resolve)");
+        }
         if (options.size != 0 && lut.cube && options.size != lut.cube->size()) {
             LutFile resized = lut;
             resized.cube = resample(*lut.cube, options.size, Interpolation::Tetrahedral);
-            Diagnostics d = writeCube(path, resized);
+            Diagnostics d = writeCube(path, resized, wo);
             d.insert(d.begin(), {Diagnostic::Severity::Info, path, 0, 0,
                                  "3D table resampled from " + std::to_string(lut.cube->size()) +
                                      "^3 to " + std::to_string(options.size) + "^3 (tetrahedral)"});
             return d;
         }
-        return writeCube(path, lut);
+        return writeCube(path, lut, wo);
     }
 };
 

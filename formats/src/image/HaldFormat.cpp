@@ -12,6 +12,7 @@
 #include "lut/Error.h"
 
 #include <cmath>
+#include <string>
 
 namespace lut::formats {
 
@@ -20,9 +21,21 @@ int haldSizeFor(int size) {
         static_cast<int>(std::ceil(std::sqrt(static_cast<double>(size < 4 ? 4 : size)) - 1e-9));
     if (level < 2)
         level = 2;
-    if (level * level > 256)
-        level = 16;
+    if (level > kMaxHaldLevel)
+        level = kMaxHaldLevel;
     return level * level;
+}
+
+int haldLevelOf(int size) {
+    int level = static_cast<int>(std::floor(std::sqrt(static_cast<double>(size)) + 1e-9));
+    return level < 1 ? 1 : level;
+}
+
+std::string haldSizeText(int size) {
+    const int level = haldLevelOf(size);
+    const int edge = level * level * level;
+    return std::to_string(size) + "^3 (Hald level " + std::to_string(level) + ", " +
+           std::to_string(edge) + "x" + std::to_string(edge) + ")";
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #pragma once
 // Internal: LUT images shared by StripFormat.cpp ("strip": pilot, unity, smush and, when asked,
 // hald) and HaldFormat.cpp ("hald").
+#include "lut/formats/Hald.h"
 #include "lut/io/Format.h"
 #include "lut/io/Layout.h"
 
@@ -16,9 +17,5 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
 // Writes a LUT image in `layout`; bit depth from options (0 = 8 for PNG/TIFF, float for EXR).
 Diagnostics writeLutImage(const std::string& path, const LutFile& file,
                           const FormatOptions& options, LutLayout layout);
-
-// The Hald lattice size to write for a requested size: itself when it is L^2 (L >= 2), else the
-// next larger square (a Hald image stores N = L^2 only), capped at 256.
-int haldSizeFor(int size);
 
 } // namespace lut::formats

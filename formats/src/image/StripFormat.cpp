@@ -380,11 +380,10 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source,
         const int own = size > 0 ? size : source.toLut3D(0).size();
         size = haldSizeFor(own);
         if (size != own)
-            diags.push_back(makeDiagnostic(
-                S::Info, path,
-                "a Hald image stores N = L^2 only: " + std::to_string(own) + "^3 written as " +
-                    std::to_string(size) + "^3 (level " +
-                    std::to_string(static_cast<int>(std::lround(std::sqrt(size)))) + ")"));
+            diags.push_back(
+                makeDiagnostic(S::Info, path,
+                               "a Hald image stores N = L^2 only: " + std::to_string(own) +
+                                   "^3 written as " + haldSizeText(size)));
     }
     const Lut3D lut = prepareUnitLut(source, size, path, diags);
     if (bits != 32) {

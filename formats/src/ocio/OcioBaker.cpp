@@ -7,13 +7,21 @@
 // reported by callers that read the file back (lutkit convert). Reading goes through the one
 // "ocio" reader (OcioReader.cpp). .spi3d, which OCIO 2.1 reads but cannot bake, is written by
 // hand (Spi3dFormat.cpp).
+//
+// Formats that hold a shaper keep it, and keep an input range other than [0,1]: .clf and .ctf are
+// written as the transforms themselves (range Matrix, Lut1D, Lut3D) by OCIO's GroupTransform
+// writer (OCIO's Baker would resample them); .csp gets a prelut written by hand (CspWriter.cpp),
+// since the Baker derives its prelut from a colour space, never from a table it is given. Each
+// format also answers to OCIO's own name for it (ociobakelut --format cinespace, truelight ...).
 #include "Formats.h"
+#include "ocio/CspWriter.h"
 #include "ocio/OcioSession.h"
 
 #include "lut/Error.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
+#include <optional>
 #include <sstream>
 
 namespace lut::formats {
@@ -25,12 +33,17 @@ constexpr int kOcioMaxGrid = 129;
 
 class OcioBakeFormat final : public Format {
 public:
+    enum class Shaper { None, Transforms, Csp };
     OcioBakeFormat(std::string name, std::string ocioName, std::string ext, std::string description,
-                   int storedBits, int minSize = 2)
+                   int storedBits, int minSize = 2, std::vector<FormatAlias> aliases = {},
+                   Shaper shaper = Shaper::None)
         : m_name(std::move(name)), m_ocioName(std::move(ocioName)), m_ext(std::move(ext)),
-          m_description(std::move(description)), m_storedBits(storedBits), m_minSize(minSize) {}
+          m_description(std::move(description)), m_storedBits(storedBits), m_minSize(minSize),
+          m_aliases(std::move(aliases)), m_shaper(shaper) {}
 
     std::string name() const override { return m_name; }
+    std::vector<FormatAlias> aliases() const override { return m_aliases; }
+    bool holdsShaper() const override { return m_shaper != Shaper::None; }
     std::string description() const override { return m_description; }
     std::vector<std::string> extensions() const override { return {m_ext}; }
     // Reading goes through the one "ocio" reader, which detects the variant itself.
@@ -41,6 +54,11 @@ public:
 
     Diagnostics write(const std::string& path, const LutFile& file,
                       const FormatOptions& options) const override {
+        const bool plain = !file.shaper && file.cube && file.cube->hasDefaultDomain();
+        if (m_shaper == Shaper::Transforms && !plain)
+            return writeTransforms(path, file, options);
+        if (m_shaper == Shaper::Csp && !plain)
+            return writeCspWithShaper(path, file, options.size);
         Diagnostics diags;
         if (file.shaper)
             diags.push_back(ocioDiagnostic(path, "the 1D shaper was baked into the 3D table",
@@ -144,33 +162,124 @@ public:
     int storedBitDepth() const override { return m_storedBits; }
 
 private:
+    // .clf/.ctf: [range Matrix] [Lut1D] [range Matrix] Lut3D, exactly the LutFile.
+    Diagnostics writeTransforms(const std::string& path, const LutFile& file,
+                                const FormatOptions& options) const;
+
     std::string m_name, m_ocioName, m_ext, m_description;
     int m_storedBits;
     int m_minSize;
+    std::vector<FormatAlias> m_aliases;
+    Shaper m_shaper;
 };
+
+// A Matrix that maps [lo, hi] onto [0,1] per channel.
+OCIO::MatrixTransformRcPtr rangeMatrix(glm::vec3 lo, glm::vec3 hi) {
+    double oldMin[4] = {lo.x, lo.y, lo.z, 0.0}, oldMax[4] = {hi.x, hi.y, hi.z, 1.0};
+    double newMin[4] = {0, 0, 0, 0}, newMax[4] = {1, 1, 1, 1};
+    double m44[16], offset4[4];
+    OCIO::MatrixTransform::Fit(m44, offset4, oldMin, oldMax, newMin, newMax);
+    auto mt = OCIO::MatrixTransform::Create();
+    mt->setMatrix(m44);
+    mt->setOffset(offset4);
+    return mt;
+}
+
+Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFile& file,
+                                            const FormatOptions& options) const {
+    Diagnostics diags;
+    std::optional<Lut3D> cube = file.cube;
+    if (cube && options.size != 0 && options.size != cube->size()) {
+        diags.push_back(
+            ocioDiagnostic(path, "3D table resampled from " + std::to_string(cube->size()) +
+                                     "^3 to " + std::to_string(options.size) + "^3 (tetrahedral)"));
+        Lut3D r = resample(*cube, options.size, Interpolation::Tetrahedral);
+        r.setDomain(cube->domainMin(), cube->domainMax());
+        cube = std::move(r);
+    }
+    if (cube && cube->size() > kOcioMaxGrid)
+        throw Error(path + ": OpenColorIO writes tables up to " + std::to_string(kOcioMaxGrid) +
+                    "^3; this one is " + std::to_string(cube->size()) + "^3 (use --size)");
+    OcioSession session(path);
+    std::ostringstream os;
+    try {
+        auto group = OCIO::GroupTransform::Create();
+        const std::string title = cube ? cube->title() : file.shaper->title();
+        auto& md = group->getFormatMetadata();
+        md.addAttribute(OCIO::METADATA_ID, "lutkit");
+        if (!title.empty()) {
+            md.addAttribute(OCIO::METADATA_NAME, title.c_str());
+            md.addChildElement(OCIO::METADATA_DESCRIPTION, title.c_str());
+        }
+        if (cube)
+            for (const auto& c : cube->comments())
+                if (!c.empty())
+                    md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
+        if (file.shaper) {
+            const Lut1D& sh = *file.shaper;
+            if (sh.domainMin() != glm::vec3(0.0f) || sh.domainMax() != glm::vec3(1.0f))
+                group->appendTransform(rangeMatrix(sh.domainMin(), sh.domainMax()));
+            auto l1 = OCIO::Lut1DTransform::Create(static_cast<unsigned long>(sh.size()), false);
+            for (int i = 0; i < sh.size(); ++i)
+                l1->setValue(static_cast<unsigned long>(i), sh[i].x, sh[i].y, sh[i].z);
+            l1->setInterpolation(OCIO::INTERP_LINEAR);
+            group->appendTransform(l1);
+        }
+        if (cube) {
+            if (!cube->hasDefaultDomain())
+                group->appendTransform(rangeMatrix(cube->domainMin(), cube->domainMax()));
+            const int n = cube->size();
+            auto l3 = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
+            for (int b = 0; b < n; ++b)
+                for (int g = 0; g < n; ++g)
+                    for (int r = 0; r < n; ++r) {
+                        const glm::vec3 v = cube->at(r, g, b);
+                        l3->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
+                                     static_cast<unsigned long>(b), v.x, v.y, v.z);
+                    }
+            l3->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+            group->appendTransform(l3);
+        }
+        group->write(OCIO::Config::CreateRaw(), m_ocioName.c_str(), os);
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw Error(path + ": OpenColorIO cannot write " + m_name + ": " + ocioMessage(e.what()));
+    }
+    writeFileAtomically(path, os.str());
+    session.appendDiagnostics(diags);
+    return diags;
+}
 
 } // namespace
 
 std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
     std::vector<std::unique_ptr<Format>> v;
     // Order matters where two share an extension: the first is the default writer (.3dl -> flame).
+    using S = OcioBakeFormat::Shaper;
     v.push_back(std::make_unique<OcioBakeFormat>(
-        "flame", "flame", ".3dl", "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4));
+        "flame", "flame", ".3dl", "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4,
+        std::vector<FormatAlias>{{"3dl", "", ""}}));
     v.push_back(std::make_unique<OcioBakeFormat>(
         "lustre", "lustre", ".3dl", "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12,
         4));
-    v.push_back(std::make_unique<OcioBakeFormat>("csp", "cinespace", ".csp",
-                                                 "Cinespace .csp, via OpenColorIO", 0));
-    v.push_back(
-        std::make_unique<OcioBakeFormat>("clf", "Academy/ASC Common LUT Format", ".clf",
-                                         "Academy/ASC Common LUT Format .clf, via OpenColorIO", 0));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "csp", "cinespace", ".csp", "Cinespace .csp (with its prelut), via OpenColorIO", 0, 2,
+        std::vector<FormatAlias>{{"cinespace", "", ""}}, S::Csp));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "clf", "Academy/ASC Common LUT Format", ".clf",
+        "Academy/ASC Common LUT Format .clf (shaper kept), via OpenColorIO", 0, 2,
+        std::vector<FormatAlias>{{"Academy/ASC Common LUT Format", "", ""}}, S::Transforms));
     v.push_back(std::make_unique<OcioBakeFormat>(
         "ctf", "Color Transform Format", ".ctf",
-        "Autodesk Color Transform Format .ctf, via OpenColorIO", 0));
+        "Autodesk Color Transform Format .ctf (shaper kept), via OpenColorIO", 0, 2,
+        std::vector<FormatAlias>{{"Color Transform Format", "", ""}}, S::Transforms));
     v.push_back(std::make_unique<OcioBakeFormat>("cub", "truelight", ".cub",
-                                                 "Truelight .cub, via OpenColorIO", 0));
+                                                 "Truelight .cub, via OpenColorIO", 0, 2,
+                                                 std::vector<FormatAlias>{{"truelight", "", ""}}));
     v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx",
-                                                 "Iridas .itx, via OpenColorIO", 0));
+                                                 "Iridas .itx, via OpenColorIO", 0, 2,
+                                                 std::vector<FormatAlias>{{"iridas_itx", "", ""}}));
     v.push_back(makeSpi3dFormat());
     v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut",
                                                  "Houdini .lut, via OpenColorIO", 0));

@@ -113,7 +113,24 @@ const Format* FormatRegistry::byName(const std::string& name) const {
     for (const auto& f : m_formats)
         if (f->name() == name)
             return f.get();
+    for (const auto& f : m_formats)
+        for (const auto& a : f->aliases())
+            if (a.name == name)
+                return f.get();
     return nullptr;
+}
+
+void FormatRegistry::applyAlias(const std::string& name, FormatOptions& options) const {
+    for (const auto& f : m_formats) {
+        if (f->name() == name)
+            return;
+        for (const auto& a : f->aliases())
+            if (a.name == name) {
+                if (!a.attribute.empty() && !options.attribute(a.attribute))
+                    options.setAttribute(a.attribute, a.value);
+                return;
+            }
+    }
 }
 
 std::string extensionOf(const std::string& path) {
@@ -173,6 +190,11 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
         if (!f)
             throw Error("unknown format '" + formatName + "'");
         candidates.push_back(f);
+        if (f->name() != formatName) {
+            FormatOptions aliased = options;
+            applyAlias(formatName, aliased);
+            return read(path, aliased, f->name());
+        }
     } else {
         candidates = forExtension(path);
     }
@@ -238,6 +260,11 @@ Diagnostics FormatRegistry::write(const std::string& path, const LutFile& lut,
     if (!f || !f->canWrite())
         throw Error(path + ": no format writes '" + extensionOf(path) +
                     "' files (writable: " + knownExtensions(m_formats, false) + ")");
+    if (!formatName.empty() && f->name() != formatName) {
+        FormatOptions aliased = options;
+        applyAlias(formatName, aliased);
+        return writeLutFile(*f, path, lut, aliased);
+    }
     return writeLutFile(*f, path, lut, options);
 }
 

@@ -15,7 +15,8 @@ namespace {
 
 // One pass of the kernel along axis `axis` (0 = red, 1 = green, 2 = blue) of an n^3 grid of
 // deviations. Past an edge the deviation is extended by point reflection about the edge entry
-// (d(-k) = 2 d(0) - d(k)), which keeps linear trends, so nothing is pulled towards the middle.
+// (d(-k) = 2 d(0) - d(k), repeated while the index is outside), which keeps linear trends, so
+// nothing is pulled towards the middle.
 // Works on slabs of whole red rows (contiguous in memory) so the strided axes stay cache-friendly.
 void blurAxis(std::vector<glm::dvec3>& d, int n, int axis, const std::vector<double>& kernel,
               int nthreads) {
@@ -47,13 +48,25 @@ void blurAxis(std::vector<glm::dvec3>& d, int n, int axis, const std::vector<dou
                         one(i, u);
             }
         };
+        // Reflections repeat until the index is inside: a kernel wider than the lattice (sigma 2
+        // on a 3^3 LUT) still sees a linear trend continued, not the far edge repeated.
         auto at = [&](int j, std::size_t u) {
             auto row = [&](int k) { return slab[static_cast<std::size_t>(k) * nn + u]; };
-            if (j < 0)
-                return 2.0 * row(0) - row(std::min(-j, n - 1));
-            if (j > n - 1)
-                return 2.0 * row(n - 1) - row(std::max(2 * (n - 1) - j, 0));
-            return row(j);
+            glm::dvec3 sum(0.0);
+            double sign = 1.0;
+            for (;;) {
+                if (j < 0) {
+                    sum += sign * 2.0 * row(0);
+                    sign = -sign;
+                    j = -j;
+                } else if (j > n - 1) {
+                    sum += sign * 2.0 * row(n - 1);
+                    sign = -sign;
+                    j = 2 * (n - 1) - j;
+                } else {
+                    return sum + sign * row(j);
+                }
+            }
         };
         for (int v = v0; v < v1; ++v) {
             const std::size_t base = static_cast<std::size_t>(v) * sv;

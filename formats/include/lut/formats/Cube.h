@@ -31,6 +31,10 @@ LutFile parseCube(std::string_view text, const std::string& path = "<memory>",
 // lut::LimitError if it is larger than lut::limits::kMaxLutFileBytes.
 LutFile readCube(const std::string& path, const CubeReadOptions& options = {});
 
+// FormatOptions attribute for the registry's "cube" writer: "adobe" or "resolve" (what the aliases
+// iridas_cube and resolve_cube, OpenColorIO's names, set); unset = CubeWriteOptions::Dialect::Auto.
+constexpr const char* kCubeDialectAttribute = "cube:dialect";
+
 struct CubeWriteOptions {
     enum class Dialect {
         Auto,   // Resolve when the file has a shaper and a cube, Adobe otherwise

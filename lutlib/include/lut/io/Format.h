@@ -10,12 +10,22 @@
 
 namespace lut {
 
+// Another name a format answers to (e.g. OpenColorIO's "cinespace" for "csp"), optionally with a
+// format-specific setting it implies ("resolve_cube" = "cube" with "cube:dialect" = "resolve").
+struct FormatAlias {
+    std::string name;
+    std::string attribute; // "" = none
+    std::string value;
+};
+
 class Format {
 public:
     virtual ~Format();
     virtual std::string name() const = 0; // "cube", "nutexb", "strip"...
     virtual std::string description() const = 0;
     virtual std::vector<std::string> extensions() const = 0; // lower case, with dot: ".cube"
+    // Other names accepted for this format (by --format and FormatRegistry::byName).
+    virtual std::vector<FormatAlias> aliases() const { return {}; }
     virtual bool canRead() const { return true; }
     virtual bool canWrite() const { return true; }
     virtual LutFile read(const std::string& path, const FormatOptions& options) const = 0;
@@ -38,6 +48,9 @@ public:
     // depth of its values (0 = float or varies with options).
     virtual int fixedSize() const { return 0; }
     virtual int storedBitDepth() const { return 0; }
+    // Whether the written file keeps a 1D shaper and a 3D table's input range (domain) as they
+    // are (.cube's Resolve dialect, .clf, .ctf, .csp), so an HDR or log input needs no resampling.
+    virtual bool holdsShaper() const { return false; }
 };
 
 } // namespace lut

@@ -1,0 +1,53 @@
+#include "LutFiles.h"
+
+#include "lut/Error.h"
+#include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
+#include "lut/io/FormatRegistry.h"
+
+#include <iostream>
+
+namespace lut::cli {
+
+Lut3D readLutTable(const std::string& path, const Verbosity& verbosity) {
+    const LutFile file = formats::readLut(path, {});
+    printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
+    return file.toLut3D();
+}
+
+WrittenLut writeLutFile(const std::string& path, const LutFile& file, const std::string& format,
+                        const std::vector<std::string>& inputs) {
+    for (const auto& in : inputs)
+        checkNotSameFile(in, path);
+    formats::registerBuiltinFormats();
+    const auto& registry = FormatRegistry::instance();
+    const Format* writer = format.empty() ? registry.writerForPath(path) : registry.byName(format);
+    if (!writer || !writer->canWrite())
+        throw Error(path + ": no format writes '" + extensionOf(path) +
+                    "' files (name the output format: --format)");
+    WrittenLut w;
+    w.format = writer->name();
+    w.diagnostics = formats::writeLut(path, file, {}, format);
+    return w;
+}
+
+void writeLutTable(std::ostream& os, const std::string& path, const Lut3D& lut,
+                   const std::string& format, const std::vector<std::string>& inputs,
+                   const Verbosity& verbosity) {
+    LutFile file;
+    file.cube = lut;
+    const WrittenLut w = writeLutFile(path, file, format, inputs);
+    os << "wrote    " << path << ": " << w.format << ", " << lut.size() << "^3\n";
+    printDiagnostics(os, w.diagnostics, verbosity);
+}
+
+std::string costText(const ErrorStats& error, std::size_t sanitizedEntries) {
+    std::string s = error.str();
+    if (sanitizedEntries)
+        s += " (" + std::to_string(sanitizedEntries) +
+             " NaN/Inf entries of the input counted as 0 or +-65504)";
+    return s;
+}
+
+} // namespace lut::cli

@@ -1,0 +1,173 @@
+// lutkit diff: prints lut::diffLuts' report (and writes its heat map).
+#include "commands/Diff.h"
+
+#include "Json.h"
+#include "LutFiles.h"
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/formats/ImageIO.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/ops/Diff.h"
+#include "lut/ops/HeatMap.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace lut::cli {
+
+namespace {
+
+std::string f2(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+std::string triple(glm::vec3 v) {
+    return f2(v.x) + " " + f2(v.y) + " " + f2(v.z);
+}
+
+std::string steps(glm::dvec3 v) {
+    return "R " + f2(v.x) + "  G " + f2(v.y) + "  B " + f2(v.z);
+}
+
+std::string jvec(glm::dvec3 v) {
+    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
+}
+
+void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScale) {
+    std::cout << "{\"a\": " << json::quote(o.a) << ", \"b\": " << json::quote(o.b)
+              << ", \"over\": " << json::quote(o.image.empty() ? "lattice" : o.image)
+              << ", \"colors\": " << r.count
+              << ", \"identical\": " << (r.identical() ? "true" : "false")
+              << ",\n \"delta_e2000\": {\"max\": " << json::number(r.maxDeltaE)
+              << ", \"mean\": " << json::number(r.meanDeltaE)
+              << ", \"p95\": " << json::number(r.p95DeltaE) << "}"
+              << ",\n \"max_8bit_steps\": " << jvec(r.maxSteps8)
+              << ", \"mean_8bit_steps\": " << jvec(r.meanSteps8)
+              << ",\n \"worst\": {\"input\": " << jvec(r.worst.input)
+              << ", \"a\": " << jvec(r.worst.a) << ", \"b\": " << jvec(r.worst.b)
+              << ", \"delta_e2000\": " << json::number(r.worst.deltaE) << "},\n \"regions\": [";
+    const auto ranked = r.rankedRegions();
+    for (std::size_t i = 0; i < ranked.size(); ++i) {
+        const auto& g = ranked[i];
+        std::cout << (i ? ",\n   " : "\n   ") << "{\"region\": " << json::quote(toString(g.region))
+                  << ", \"colors\": " << g.count
+                  << ", \"mean_delta_e2000\": " << json::number(g.meanDeltaE)
+                  << ", \"max_delta_e2000\": " << json::number(g.maxDeltaE)
+                  << ", \"max_8bit_steps\": " << jvec(g.maxSteps8)
+                  << ", \"worst_input\": " << jvec(g.worstInput) << "}";
+    }
+    std::cout << "],\n \"heatmap\": "
+              << (o.heatmap.empty() ? "null"
+                                    : "{\"path\": " + json::quote(o.heatmap) +
+                                          ", \"max_delta_e2000\": " + json::number(heatScale) + "}")
+              << ", \"seconds\": " << json::number(r.seconds) << "}\n";
+}
+
+void printText(const DiffCommandOptions& o, const DiffReport& r) {
+    std::cout << "compared " << r.count << " colours "
+              << (o.image.empty() ? "on a lattice over A's domain" : "of " + o.image) << "\n";
+    if (r.identical()) {
+        std::cout << "identical: ΔE2000 0, 0 8-bit steps\n";
+        return;
+    }
+    std::cout << "ΔE2000   max " << f2(r.maxDeltaE) << ", mean " << f2(r.meanDeltaE)
+              << ", 95th percentile " << f2(r.p95DeltaE) << " (entries taken as sRGB-encoded)\n"
+              << "8-bit    max   " << steps(r.maxSteps8) << "\n"
+              << "         mean  " << steps(r.meanSteps8) << "\n"
+              << "worst    input " << triple(r.worst.input) << ": A " << triple(r.worst.a) << ", B "
+              << triple(r.worst.b) << " (ΔE " << f2(r.worst.deltaE) << ")\n"
+              << "where    (largest mean ΔE first)\n";
+    for (const auto& g : r.rankedRegions())
+        std::cout << "  " << toString(g.region)
+                  << std::string(12 - std::string(toString(g.region)).size(), ' ') << "mean ΔE "
+                  << f2(g.meanDeltaE) << ", max " << f2(g.maxDeltaE) << " at "
+                  << triple(g.worstInput) << " (" << g.count << " colours)\n";
+    if (r.sanitizedEntriesA || r.sanitizedEntriesB)
+        std::cout << "note     NaN/Inf entries counted as 0 or +-65504: A " << r.sanitizedEntriesA
+                  << ", B " << r.sanitizedEntriesB << "\n";
+}
+
+} // namespace
+
+int runDiff(const DiffCommandOptions& o) {
+    const Lut3D a = readLutTable(o.a, o.verbosity);
+    const Lut3D b = readLutTable(o.b, o.verbosity);
+    lut::DiffOptions d;
+    d.method = o.interp;
+    d.size = o.size;
+    HeatMapOptions h;
+    h.maxDeltaE = o.maxDeltaE;
+    h.method = o.interp;
+    DiffReport report;
+    HeatMap heat;
+    // -n with an existing heat map: the comparison is still printed, the picture not rewritten.
+    const bool writeHeatmap =
+        !o.heatmap.empty() &&
+        resolveOutput(o.heatmap, o.overwrite, {o.a, o.b, o.image}).skip == false;
+    if (!o.image.empty()) {
+        const formats::LoadedImage img = formats::readImage(o.image);
+        report = diffLutsOnImage(a, b, img.image.view(), d);
+        if (!o.heatmap.empty())
+            heat = diffHeatMap(a, b, img.image.view(), h);
+    } else {
+        report = diffLuts(a, b, d);
+        if (!o.heatmap.empty())
+            heat = diffHeatMapSlices(a, b, h, o.slices);
+    }
+    if (writeHeatmap) {
+        formats::ImageWriteOptions w;
+        w.bitDepth = 8;
+        w.alpha = false;
+        formats::writeImage(o.heatmap, heat.image, w);
+    }
+    if (o.json) {
+        printJson(o, report, heat.maxDeltaE);
+        return kExitOk;
+    }
+    printText(o, report);
+    if (writeHeatmap)
+        std::cout << "wrote    " << o.heatmap << ": heat map, black = ΔE 0 to pale yellow = ΔE "
+                  << f2(heat.maxDeltaE) << " and above\n";
+    return kExitOk;
+}
+
+CLI::App* setupDiff(CLI::App& app, std::function<void(const DiffCommandOptions&)> onParsed) {
+    auto o = std::make_shared<DiffCommandOptions>();
+    auto* sub = app.add_subcommand(
+        "diff", "Compare two LUTs: ΔE2000 and 8-bit steps, where they differ, a heat map");
+    sub->add_option("A", o->a, "first LUT file")->required()->type_name("FILE");
+    sub->add_option("B", o->b, "second LUT file")->required()->type_name("FILE");
+    sub->add_option("--image", o->image,
+                    "compare over this image's colours (e.g. a screenshot) instead of the lattice")
+        ->type_name("FILE");
+    sub->add_option("--heatmap", o->heatmap,
+                    "write a heat-map PNG: on the image, or on slices of the cube")
+        ->type_name("FILE");
+    sub->add_option("--size", o->size, "lattice compared on (default: the larger of the two)")
+        ->check(CLI::Range(2, 256));
+    sub->add_option("--slices", o->slices, "heat map of the lattice: slices of the cube (1-16)")
+        ->check(CLI::Range(1, 16));
+    sub->add_option("--max-delta-e", o->maxDeltaE,
+                    "ΔE2000 at the top of the heat map's ramp (default 10; 0 = the largest)")
+        ->check(CLI::Range(0.0, 1000.0));
+    addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
+    sub->add_flag("--json", o->json, "print the report as JSON");
+    addOverwriteOptions(*sub, o->overwrite);
+    addVerbosity(*sub, o->verbosity, "");
+    sub->footer("ΔE2000 takes LUT entries as sRGB-encoded display values. Exit code 0 whether "
+                "the LUTs differ or not.\n\n"
+                "Examples:\n"
+                "  lutkit diff old.cube new.cube\n"
+                "  lutkit diff old.cube new.cube --image screenshot.png --heatmap where.png\n"
+                "  lutkit diff a.cube b.3dl --heatmap slices.png --slices 9 --json");
+    sub->callback([o, onParsed] { onParsed(*o); });
+    return sub;
+}
+
+} // namespace lut::cli

@@ -1,0 +1,136 @@
+// lutkit invert: lut::invert, then the result written and its report printed.
+#include "commands/Invert.h"
+
+#include "Json.h"
+#include "LutFiles.h"
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/formats/Registry.h"
+#include "lut/io/AtomicFile.h"
+#include "lut/ops/Invert.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace lut::cli {
+
+namespace {
+
+std::string g(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+std::string triple(glm::vec3 v) {
+    return g(v.x) + " " + g(v.y) + " " + g(v.z);
+}
+
+void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD) {
+    if (o.json) {
+        std::cout << "{\"input\": " << json::quote(o.input)
+                  << ", \"output\": " << json::quote(o.output) << ", \"points\": " << r.points
+                  << ", \"unreachable\": " << r.unreachable
+                  << ", \"folded_cells\": " << r.foldedCells
+                  << ", \"invertible\": " << (r.invertible() ? "true" : "false")
+                  << ", \"max_residual\": " << json::number(r.maxResidual)
+                  << ", \"mean_residual\": " << json::number(r.meanResidual)
+                  << ", \"round_trip\": " << json::stats(r.roundTrip)
+                  << ", \"unreachable_by_region\": {";
+        bool first = true;
+        for (int i = 0; i < kRegionCount; ++i)
+            if (r.unreachableByRegion[static_cast<std::size_t>(i)]) {
+                std::cout << (first ? "" : ", ") << json::quote(toString(static_cast<Region>(i)))
+                          << ": " << r.unreachableByRegion[static_cast<std::size_t>(i)];
+                first = false;
+            }
+        std::cout << "}, \"seconds\": " << json::number(r.seconds) << "}\n";
+        return;
+    }
+    std::cout << "inverted " << o.input << (oneD ? " (1D, per channel)" : "") << ": " << r.points
+              << " points, " << g(r.seconds * 1e3) << " ms\n";
+    if (r.invertible())
+        std::cout << "         invertible everywhere";
+    else
+        std::cout << "         " << r.unreachable << " points have no exact preimage "
+                  << "(least-squares answer); " << r.foldedCells
+                  << (oneD ? " segments not strictly monotone" : " cells flat or folded");
+    std::cout << "\nresidual |A(inverse(y)) - y|: max " << g(r.maxResidual) << ", mean "
+              << g(r.meanResidual) << "\n"
+              << "round trip |inverse(A(x)) - x|: " << r.roundTrip.str() << "\n";
+    if (r.unreachable) {
+        std::cout << "where    no inverse:";
+        for (int i = 0; i < kRegionCount; ++i)
+            if (const auto n = r.unreachableByRegion[static_cast<std::size_t>(i)])
+                std::cout << " " << toString(static_cast<Region>(i)) << " " << n;
+        std::cout << "\n";
+        for (const auto& w : r.worst)
+            if (o.verbosity.verbose)
+                std::cout << "  target " << triple(w.target) << " -> " << triple(w.solution)
+                          << " reaches " << triple(w.reached) << " (off by " << g(w.residual)
+                          << ")\n";
+    }
+}
+
+} // namespace
+
+int runInvert(const InvertCommandOptions& o) {
+    if (!beginOutput(o.output, o.overwrite, {o.input}, o.verbosity.quiet))
+        return kExitOk;
+    const LutFile file = formats::readLut(o.input, {});
+    printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
+    InvertOptions io;
+    io.size = o.size;
+    io.outputRangeDomain = o.outputRange;
+    std::ostringstream written; // after the report (JSON: not at all)
+    if (file.shaper && !file.cube) {
+        // Per-channel curves stay curves: inverted exactly where monotone.
+        const InvertResult1D r = invert(*file.shaper, io);
+        LutFile out;
+        out.shaper = r.lut;
+        const WrittenLut w = writeLutFile(o.output, out, o.format, {o.input});
+        printReport(o, r.report, true);
+        if (!o.json) {
+            std::cout << "wrote    " << o.output << ": " << w.format << ", 1D, " << r.lut.size()
+                      << " entries\n";
+            printDiagnostics(std::cout, w.diagnostics, o.verbosity);
+        }
+        return kExitOk;
+    }
+    const InvertResult r = invert(file.toLut3D(), io);
+    writeLutTable(written, o.output, r.lut, o.format, {o.input}, o.verbosity);
+    printReport(o, r.report, false);
+    if (!o.json)
+        std::cout << written.str();
+    return kExitOk;
+}
+
+CLI::App* setupInvert(CLI::App& app, std::function<void(const InvertCommandOptions&)> onParsed) {
+    auto o = std::make_shared<InvertCommandOptions>();
+    auto* sub =
+        app.add_subcommand("invert", "Invert a LUT, reporting where it has no inverse (never NaN)");
+    sub->add_option("A", o->input, "the LUT to invert")->required()->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT file (format from the extension)")
+        ->required()
+        ->type_name("FILE");
+    sub->add_option("--size", o->size, "lattice size (1D: entries) of the inverse (default: A's)")
+        ->check(CLI::Range(2, 65536));
+    sub->add_flag("--output-range", o->outputRange,
+                  "span the inverse over the range of A's outputs instead of A's domain");
+    addOutputFormat(*sub, o->format);
+    sub->add_flag("--json", o->json, "print the report as JSON");
+    addOverwriteOptions(*sub, o->overwrite);
+    addVerbosity(*sub, o->verbosity, "list the targets furthest from an inverse");
+    sub->footer("Examples:\n"
+                "  lutkit invert to_log.cube from_log.cube\n"
+                "  lutkit invert grade.cube ungrade.cube --size 65 -v");
+    sub->callback([o, onParsed] { onParsed(*o); });
+    return sub;
+}
+
+} // namespace lut::cli

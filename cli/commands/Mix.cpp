@@ -1,0 +1,56 @@
+// lutkit mix: lut::mix, the result written and its error printed.
+#include "commands/Mix.h"
+
+#include "LutFiles.h"
+#include "Usage.h"
+#include "Vocabulary.h"
+
+#include "lut/ops/Compose.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace lut::cli {
+
+int runMix(const MixCommandOptions& o) {
+    if (!beginOutput(o.output, o.overwrite, {o.a, o.b}, o.verbosity.quiet))
+        return kExitOk;
+    const Lut3D a = readLutTable(o.a, o.verbosity);
+    const Lut3D b = readLutTable(o.b, o.verbosity);
+    const OpResult r = mix(a, b, o.strength, o.interp);
+    std::cout << "mixed    " << o.a << " and " << o.b << " at strength " << o.strength << " on A's "
+              << r.lut.size() << "^3 lattice\n"
+              << "error    "
+              << (r.error.maxAbs == 0.0
+                      ? std::string("none: B has A's lattice, the mix is exact")
+                      : "B resampled onto A's lattice: " + costText(r.error, r.sanitizedEntries))
+              << "\n";
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity);
+    return kExitOk;
+}
+
+CLI::App* setupMix(CLI::App& app, std::function<void(const MixCommandOptions&)> onParsed) {
+    auto o = std::make_shared<MixCommandOptions>();
+    auto* sub = app.add_subcommand("mix", "Blend two LUTs: (1 - t) A + t B");
+    sub->add_option("A", o->a, "the LUT at strength 0")->required()->type_name("FILE");
+    sub->add_option("B", o->b, "the LUT at strength 1")->required()->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT file (format from the extension)")
+        ->required()
+        ->type_name("FILE");
+    sub->add_option("--strength", o->strength,
+                    "t: 0 = A, 1 = B, between blends, -1..2 extrapolates (default 0.5)")
+        ->check(CLI::Range(-1.0, 2.0));
+    addOutputFormat(*sub, o->format);
+    addInterp(*sub, o->interp, "interpolation when B has another lattice (default tetrahedral)");
+    addOverwriteOptions(*sub, o->overwrite);
+    addVerbosity(*sub, o->verbosity, "");
+    sub->footer("Examples:\n"
+                "  lutkit mix neutral.cube grade.cube half.cube --strength 0.5\n"
+                "  lutkit mix day.cube night.cube dusk.cube --strength 0.3");
+    sub->callback([o, onParsed] { onParsed(*o); });
+    return sub;
+}
+
+} // namespace lut::cli

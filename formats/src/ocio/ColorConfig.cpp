@@ -1,0 +1,252 @@
+// Finding and loading OpenColorIO configs, and checking the names users give against them.
+#include "lut/formats/ColorConfig.h"
+
+#include "ocio/ColorConfigImpl.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+namespace lut::formats {
+
+namespace {
+
+constexpr const char* kShippedRelative = "share/lutkit/ocio/config.ocio";
+
+std::string executableDir() {
+    std::vector<char> buf(4096);
+    const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
+    if (n <= 0)
+        return {};
+    std::string p(buf.data(), static_cast<std::size_t>(n));
+    const auto slash = p.find_last_of('/');
+    return slash == std::string::npos ? std::string() : p.substr(0, slash);
+}
+
+bool isFile(const std::string& p) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec);
+}
+
+std::string listText(const std::vector<std::string>& names) {
+    std::string s;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        s += (i ? ", " : "") + names[i];
+    return s;
+}
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t");
+    const auto e = s.find_last_not_of(" \t");
+    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+} // namespace
+
+std::string ConfigLocation::describe() const {
+    switch (source) {
+    case ConfigSource::Option:
+        return path + " (--config)";
+    case ConfigSource::Environment:
+        return path + " ($OCIO)";
+    case ConfigSource::Shipped:
+        break;
+    }
+    return path + " (lutkit's own)";
+}
+
+std::string shippedConfigPath() {
+    std::vector<std::string> candidates;
+    if (const std::string exe = executableDir(); !exe.empty())
+        candidates.push_back(exe + "/../" + kShippedRelative);
+#ifdef LUTKIT_INSTALL_PREFIX
+    candidates.push_back(std::string(LUTKIT_INSTALL_PREFIX) + "/" + kShippedRelative);
+#endif
+#ifdef LUTKIT_BUILD_SHARE_DIR
+    candidates.push_back(std::string(LUTKIT_BUILD_SHARE_DIR) + "/lutkit/ocio/config.ocio");
+#endif
+    for (const auto& c : candidates)
+        if (isFile(c))
+            return std::filesystem::weakly_canonical(c).string();
+    return {};
+}
+
+ConfigLocation locateConfig(const std::string& given) {
+    if (!given.empty())
+        return {given, ConfigSource::Option};
+    if (const char* env = std::getenv("OCIO"); env && *env)
+        return {env, ConfigSource::Environment};
+    const std::string shipped = shippedConfigPath();
+    if (shipped.empty())
+        throw Error("no OpenColorIO config: name one with --config FILE or $OCIO (lutkit's own, " +
+                    std::string(kShippedRelative) + " next to the program, is missing)");
+    return {shipped, ConfigSource::Shipped};
+}
+
+ColorOptionError::ColorOptionError(const std::string& message, std::string kind, std::string value,
+                                   std::vector<std::string> known)
+    : Error(message), m_kind(std::move(kind)), m_value(std::move(value)),
+      m_known(std::move(known)) {}
+
+bool ColorSpaceInfo::isHdrLinear() const {
+    return !isData && (encoding == "scene-linear" || lg2Allocation);
+}
+
+ColorConfig ColorConfig::load(const ConfigLocation& location) {
+    auto impl = std::make_shared<Impl>();
+    impl->location = location;
+    if (!isFile(location.path))
+        throw Error(
+            location.path + ": cannot open the OpenColorIO config: " +
+            (std::filesystem::exists(location.path) ? "not a regular file" : "no such file") +
+            (location.source == ConfigSource::Environment ? " (named by $OCIO)" : ""));
+    OcioSession session(location.path);
+    try {
+        auto config = OCIO::Config::CreateFromFile(location.path.c_str());
+        config->validate();
+        impl->config = config;
+    } catch (const std::exception& e) {
+        throw Error(location.path +
+                    ": OpenColorIO cannot read the config: " + ocioMessage(e.what()));
+    }
+    session.appendDiagnostics(impl->diagnostics);
+    ColorConfig c;
+    c.m_impl = std::move(impl);
+    return c;
+}
+
+const ConfigLocation& ColorConfig::location() const {
+    return m_impl->location;
+}
+
+const Diagnostics& ColorConfig::diagnostics() const {
+    return m_impl->diagnostics;
+}
+
+std::vector<std::string> ColorConfig::colorSpaces() const {
+    std::vector<std::string> out;
+    const auto& c = m_impl->config;
+    for (int i = 0;
+         i < c->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i)
+        out.emplace_back(
+            c->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i));
+    return out;
+}
+
+std::vector<std::string> ColorConfig::roles() const {
+    std::vector<std::string> out;
+    for (int i = 0; i < m_impl->config->getNumRoles(); ++i)
+        out.emplace_back(m_impl->config->getRoleName(i));
+    return out;
+}
+
+std::vector<std::string> ColorConfig::displays() const {
+    std::vector<std::string> out;
+    for (int i = 0; i < m_impl->config->getNumDisplays(); ++i)
+        out.emplace_back(m_impl->config->getDisplay(i));
+    return out;
+}
+
+std::vector<std::string> ColorConfig::views(const std::string& display) const {
+    std::vector<std::string> out;
+    for (int i = 0; i < m_impl->config->getNumViews(display.c_str()); ++i)
+        out.emplace_back(m_impl->config->getView(display.c_str(), i));
+    return out;
+}
+
+std::vector<std::string> ColorConfig::looks() const {
+    std::vector<std::string> out;
+    for (int i = 0; i < m_impl->config->getNumLooks(); ++i)
+        out.emplace_back(m_impl->config->getLookNameByIndex(i));
+    return out;
+}
+
+std::string ColorConfig::defaultDisplay() const {
+    return m_impl->config->getDefaultDisplay();
+}
+
+std::string ColorConfig::defaultView(const std::string& display) const {
+    return m_impl->config->getDefaultView(display.c_str());
+}
+
+std::string ColorConfig::colorSpace(const std::string& name) const {
+    const auto cs = m_impl->config->getColorSpace(name.c_str()); // names, aliases and roles
+    if (cs)
+        return cs->getName();
+    std::vector<std::string> known = colorSpaces();
+    for (const auto& r : roles())
+        known.push_back(r);
+    throw ColorOptionError("unknown colour space '" + name + "' in " + m_impl->location.describe() +
+                               " (colour spaces: " + listText(colorSpaces()) +
+                               "; roles: " + listText(roles()) + ")",
+                           "colour space", name, known);
+}
+
+ColorSpaceInfo ColorConfig::info(const std::string& name) const {
+    const auto cs = m_impl->config->getColorSpace(colorSpace(name).c_str());
+    ColorSpaceInfo i;
+    i.name = cs->getName();
+    for (std::size_t a = 0; a < cs->getNumAliases(); ++a)
+        i.aliases.emplace_back(cs->getAlias(a));
+    i.family = cs->getFamily();
+    i.encoding = cs->getEncoding();
+    i.description = cs->getDescription();
+    i.isData = cs->isData();
+    i.lg2Allocation = cs->getAllocation() == OCIO::ALLOCATION_LG2;
+    i.allocationVars.resize(static_cast<std::size_t>(cs->getAllocationNumVars()));
+    if (!i.allocationVars.empty())
+        cs->getAllocationVars(i.allocationVars.data());
+    return i;
+}
+
+std::string ColorConfig::srgbSpace() const {
+    for (const char* n : {"sRGB - Texture", "srgb_tx", "Utility - sRGB - Texture", "sRGB", "srgb"})
+        if (const auto cs = m_impl->config->getColorSpace(n))
+            return cs->getName();
+    throw ColorOptionError(
+        m_impl->location.describe() +
+        " has no sRGB colour space (looked for \"sRGB - Texture\", srgb_tx, "
+        "\"Utility - sRGB - Texture\", sRGB): lutkit preview converts through it");
+}
+
+void ColorConfig::checkLooks(const std::string& looks) const {
+    std::stringstream ss(looks);
+    std::string item;
+    const auto known = this->looks();
+    while (std::getline(ss, item, ',')) {
+        // OCIO look lists: "a, +b, -c" and alternatives "a | b".
+        std::stringstream alt(item);
+        std::string one;
+        while (std::getline(alt, one, '|')) {
+            std::string n = trim(one);
+            if (!n.empty() && (n[0] == '+' || n[0] == '-'))
+                n = trim(n.substr(1));
+            if (n.empty() || std::find(known.begin(), known.end(), n) != known.end())
+                continue;
+            throw ColorOptionError(
+                "unknown look '" + n + "' in " + m_impl->location.describe() +
+                    (known.empty() ? " (it has no looks)" : " (looks: " + listText(known) + ")"),
+                "look", n, known);
+        }
+    }
+}
+
+void ColorConfig::checkDisplayView(const std::string& display, const std::string& view) const {
+    const auto displays = this->displays();
+    if (std::find(displays.begin(), displays.end(), display) == displays.end())
+        throw ColorOptionError("unknown display '" + display + "' in " +
+                                   m_impl->location.describe() +
+                                   " (displays: " + listText(displays) + ")",
+                               "display", display, displays);
+    const auto views = this->views(display);
+    if (std::find(views.begin(), views.end(), view) == views.end())
+        throw ColorOptionError("display '" + display + "' has no view '" + view + "' in " +
+                                   m_impl->location.describe() + " (views: " + listText(views) +
+                                   ")",
+                               "view", view, views);
+}
+
+} // namespace lut::formats
