@@ -38,7 +38,7 @@ for entry in "${neutrals[@]}"; do
   name="${entry%%|*}"
   opts="${entry#*|}"
   # shellcheck disable=SC2086
-  msg="$("$lutkit" neutral --size 16 $opts "$out/$name")"
+  msg="$("$lutkit" neutral -y --size 16 $opts "$out/$name")"
   msg="${msg%%$'\n'*}"
   echo "${msg#wrote }, $(bytes "$out/$name") bytes"
 done
@@ -48,13 +48,18 @@ convert() {
   local dst="$1"
   shift
   local report
-  report="$("$lutkit" convert "$sample" "$out/$dst" "$@")"
-  local wrote resample storage total
+  report="$("$lutkit" convert -y "$sample" "$out/$dst" "$@")"
+  local wrote resample storage total game
   wrote="$(sed -n 's/^wrote *//p' <<<"$report")"
   resample="$(sed -n 's/^resample *//p' <<<"$report")"
   storage="$(sed -n 's/^storage *(quantisation, written file read back): /storage /p' <<<"$report")"
   total="$(sed -n 's/^total *//p' <<<"$report")"
-  echo "$wrote, $(bytes "$out/$dst") bytes; resample $resample; $storage; total $total"
+  game="$(sed -n 's/^ *exact composition: *//p' <<<"$report")"
+  if [ -n "$game" ]; then # a .nutexb: made for the game (convert --target smash)
+    echo "$wrote, $(bytes "$out/$dst") bytes; in game vs the grade: $game"
+  else
+    echo "$wrote, $(bytes "$out/$dst") bytes; resample $resample; $storage; total $total"
+  fi
 }
 echo "== $sample converted"
 convert sample_grade.nutexb
