@@ -96,7 +96,7 @@ CommandLine::CommandLine(const RunHooks& hooks)
         ->group("");
     m_app.footer("Run 'lutkit help COMMAND' (or lutkit COMMAND --help) for a command's options "
                  "and examples.\nExit codes: 0 success, 1 bad input or failed operation, 2 bad "
-                 "usage.");
+                 "usage, 130 interrupted (Ctrl-C, SIGTERM; nothing half-written is left).");
 }
 
 int CommandLine::run(int argc, const char* const* argv) {

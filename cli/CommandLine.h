@@ -75,7 +75,7 @@ public:
 
     // Everything main does: parses the arguments (after the program name), runs the subcommand,
     // prints help, usage errors ("did you mean") and library errors; returns the exit code:
-    // 0 ok, 1 bad input or failed operation, 2 bad usage.
+    // 0 ok, 1 bad input or failed operation, 2 bad usage, 130 interrupted.
     int run(int argc, const char* const* argv);
     int run(const std::vector<std::string>& args);
 
