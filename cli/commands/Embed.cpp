@@ -66,7 +66,7 @@ int runEmbed(const EmbedOptions& o) {
               << ", " << toString(p.layout) << " layout at scale " << p.scale << " ("
               << p.frameWidth << "x" << p.frameHeight << " pixels with its frame) at (" << p.frameX
               << ", " << p.frameY << "), " << wo.bitDepth << "-bit: " << o.output << "\n";
-    if (p.scale < kDefaultPatchScale)
+    if (o.scale == 0 && p.scale < kDefaultPatchScale) // the default did not fit
         std::cerr << "lutkit: warning: " << o.output << ": the screenshot is too small for scale "
                   << kDefaultPatchScale << "; at scale " << p.scale
                   << " a JPEG save (4:2:0 chroma) blends the patch's colours: save the graded "

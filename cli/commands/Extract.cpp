@@ -50,7 +50,14 @@ int extractFromLutImage(const ExtractOptions& o, bool smash) {
         std::cout << "no patch: " << o.input << " is a " << edit.size() << "^3 LUT image ("
                   << file.dialect
                   << " layout), read as a graded neutral (Smush-LUT's neutral.png, or lutkit "
-                     "neutral): the edit itself\n";
+                     "neutral): the edit itself\n"
+                  << "target: "
+                  << (smash ? "smash (the game's LUT that shows this edit)"
+                            : "raw (the edit as it is; a .nutexb output or "
+                              "--target smash makes the game's LUT)")
+                  << "\n";
+    if (!smash && (!o.originalLut.empty() || o.refine))
+        throw UsageError("--original-lut and --refine are for the game's LUT (--target smash)");
     if (!smash) {
         Lut3D out = o.size > 0 && o.size != edit.size()
                         ? resample(edit, o.size, Interpolation::Tetrahedral)
@@ -105,7 +112,9 @@ int runExtract(const ExtractOptions& o) {
     } else if (found.status != FindStatus::Found &&
                loaded.image.width() == loaded.image.height() * loaded.image.height()) {
         // an N^2 x N picture is a LUT strip, not a screenshot
-        return extractFromLutImage(o, !eo.target || *eo.target == ExtractTarget::Smash);
+        // No patch records a target: the game for a .nutexb output or --target smash, else the
+        // edit itself (as convert does with the same file).
+        return extractFromLutImage(o, eo.target && *eo.target == ExtractTarget::Smash);
     } else if (found.status == FindStatus::NotFound && isSmushStripName(o.input) &&
                loaded.image.width() >= 256 && loaded.image.height() >= 16) {
         if (!o.verbosity.quiet)

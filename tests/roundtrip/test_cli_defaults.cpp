@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -164,6 +167,26 @@ TEST(RoundtripDefaults, ConvertMakesTheGamesLutFromAGradedStrip) {
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_TRUE(has(x.out, "Smush-LUT's neutral.png")) << x.out;
     EXPECT_EQ(bytesOf(dir + "/cgl.nutexb"), bytesOf(dir + "/cgl-extract.nutexb"));
+    // to a .cube, the edit as it is, the table convert writes from the same file (extract
+    // compensated it for the game before, while saying "the edit itself")
+    const auto xc =
+        runCli("extract " + q(dir + "/neutral_graded.png") + " " + q(dir + "/x-extract.cube"));
+    ASSERT_EQ(xc.exitCode, 0) << xc.err;
+    EXPECT_TRUE(has(xc.out, "target: raw")) << xc.out;
+    ASSERT_EQ(runCli("convert " + q(dir + "/neutral_graded.png") + " " + q(dir + "/x-convert.cube"))
+                  .exitCode,
+              0);
+    const Lut3D viaExtract = formats::readLut(dir + "/x-extract.cube").toLut3D();
+    const Lut3D viaConvert = formats::readLut(dir + "/x-convert.cube").toLut3D();
+    ASSERT_EQ(viaExtract.size(), viaConvert.size());
+    float worstCube = 0.0f;
+    for (int b = 0; b < viaExtract.size(); ++b)
+        for (int g = 0; g < viaExtract.size(); ++g)
+            for (int r = 0; r < viaExtract.size(); ++r)
+                for (int c = 0; c < 3; ++c)
+                    worstCube = std::max(worstCube, std::fabs(viaExtract.at(r, g, b)[c] -
+                                                              viaConvert.at(r, g, b)[c]));
+    EXPECT_LE(worstCube, 1e-6f);
     // --refine writes the refinement; --target raw the strip as it is
     ASSERT_EQ(runCli("convert " + q(dir + "/neutral_graded.png") + " " +
                      q(dir + "/refined.nutexb") + " --refine")

@@ -262,7 +262,9 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         res.refined = authored.refined;
         res.exactModelError = authored.exactError;
         res.lut = std::move(authored.lut);
-        if (res.clampedEntries > 0)
+        // Below half an 8-bit step the clamp cannot change a stored entry: no warning (the CLI
+        // still says how many were clamped).
+        if (res.clampedEntries > 0 && res.clampedMax * 255.0 >= 0.5)
             addWarning(res, RoundtripWarning::OutOfRange,
                        formatMessage("%g LUT values would need to leave [0,1] (by up to %.3g, "
                                      "%.3g 8-bit steps) to show the edited colours in game; they "
