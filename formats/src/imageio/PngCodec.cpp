@@ -81,6 +81,19 @@ void onWarning(png_structp, png_const_charp) {} // libpng's warnings are not our
 class PngSource : public ImageSource {
 public:
     PngSource(const std::string& path, std::string memory) : m_in(path, std::move(memory)) {
+        // The destructor does not run for a constructor that throws (a refused size, a libpng
+        // error): the reader's structures go here then.
+        try {
+            open(path);
+        } catch (...) {
+            png_destroy_read_struct(&m_png, &m_pngInfo, nullptr);
+            throw;
+        }
+    }
+    ~PngSource() override { png_destroy_read_struct(&m_png, &m_pngInfo, nullptr); }
+
+private:
+    void open(const std::string& path) {
         scanChunks();
         m_png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &m_error, onError, onWarning);
         m_pngInfo = m_png ? png_create_info_struct(m_png) : nullptr;
@@ -135,8 +148,8 @@ public:
         m_meta->pngBitDepth = depth;
         m_metadata = m_meta;
     }
-    ~PngSource() override { png_destroy_read_struct(&m_png, &m_pngInfo, nullptr); }
 
+public:
     void readRows(int y0, int y1, void* dst) override {
         if (y0 == 0) // before decoding: more pixels than the deflated data can hold is refused
             checkImageSize(m_in.path(), m_info.width, m_info.height, m_info.channels, m_in.size(),

@@ -18,8 +18,9 @@ struct Registry {
     std::uint32_t magic = kMagic;
     std::atomic<char*> paths[kSlots] = {};
     std::atomic<int> signal{0};
-    // Set by the handler before it reads any slot: from then on unregistering leaks the path
-    // instead of freeing it (the handler may hold it; the process is about to end anyway).
+    // Walks in progress (the handler counts itself in before it reads any slot, out when done):
+    // meanwhile unregistering leaks the path instead of freeing it, since the handler may hold
+    // it. Afterwards paths are freed again (an interrupted batch goes on to finish its jobs).
     std::atomic<int> walking{0};
 };
 
@@ -34,7 +35,7 @@ Registry& registry() noexcept {
 
 void removeTempFilesInFlight() noexcept {
     Registry& r = registry();
-    r.walking.store(1);
+    r.walking.fetch_add(1);
     for (int pass = 0; pass < 2; ++pass) // files first, then the (now empty) folders
         for (int i = 0; i < Registry::kSlots; ++i) {
             const char* p = r.paths[i].load();
@@ -45,6 +46,7 @@ void removeTempFilesInFlight() noexcept {
             else
                 ::rmdir(p + 1);
         }
+    r.walking.fetch_sub(1);
 }
 
 void markInterrupted(int sig) noexcept {
@@ -107,8 +109,8 @@ void TempPathRegistration::release() noexcept {
     Registry& r = *static_cast<Registry*>(m_registry); // the one it was registered in
     char* p = r.paths[m_slot].exchange(nullptr);
     m_slot = -1;
-    // Sequentially consistent: if the handler began its walk before the exchange, we see
-    // `walking` and leave the path alive for it.
+    // Sequentially consistent: if a walk began before the exchange and may still hold the path,
+    // we see `walking` and leave the path alive for it (a few bytes, only then).
     if (r.walking.load() == 0)
         delete[] p;
 }
