@@ -288,6 +288,26 @@ bool FileActions::savePreviewImage(const QString& path) {
     return true;
 }
 
+bool FileActions::savePicture(const QString& path, const Image& image, bool overwrite) {
+    if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, false)) {
+        m_window->reportError(
+            tr("Save picture"),
+            tr("%1 exists and was not replaced.").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
+    try {
+        formats::ImageWriteOptions o;
+        o.bitDepth = 8;
+        o.alpha = false;
+        formats::writeImage(path.toStdString(), image, o);
+    } catch (const std::exception& e) {
+        m_window->reportError(tr("Cannot save the picture"), human(e));
+        return false;
+    }
+    showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
 bool FileActions::saveAdjustments(const QString& path) {
     try {
         m_window->document()->saveAdjustmentList(path);

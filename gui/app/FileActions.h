@@ -10,6 +10,7 @@
 // through the window (dialog, or stderr when headless) and leaves the document as it was.
 #include "ExportTarget.h"
 
+#include "lut/Image.h"
 #include "lut/io/Format.h"
 
 #include <QObject>
@@ -49,6 +50,10 @@ public:
     // The full-resolution preview with the current settings, written the way `lutkit preview`
     // does (lut::formats::renderedImageWriteOptions: 8-bit unless the extension is float).
     bool savePreviewImage(const QString& path);
+    // A picture made by the tools (the LUT plot, a heat map), written the way lutkit plot and
+    // lutkit diff write theirs (8-bit RGB; the format by extension). An existing file is
+    // replaced only when `overwrite` is true or the user says so (headless: refused).
+    bool savePicture(const QString& path, const Image& image, bool overwrite = false);
     bool saveAdjustments(const QString& path);
     bool loadAdjustments(const QString& path);
     // Asks Save As (Save once the original was replaced in this session) / Discard / Cancel

@@ -1,10 +1,12 @@
 #include "ScriptRunner.h"
 
 #include "AdjustmentsPanel.h"
+#include "CompareDialog.h"
 #include "Document.h"
 #include "ExportDialog.h"
 #include "FileActions.h"
 #include "MainWindow.h"
+#include "PlotDialog.h"
 #include "PreviewController.h"
 #include "WindowActions.h"
 
@@ -27,6 +29,7 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace lut::gui {
@@ -325,6 +328,21 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
     } else if (cmd == "save-preview") {
         settle(w);
         noNewError(w.savePreviewImage(arg(0)));
+    } else if (cmd == "plot-save") {
+        settle(w);
+        const Image plot = plotExportedLut(*doc, preview->options().target);
+        noNewError(w.fileActions()->savePicture(arg(0), plot));
+    } else if (cmd == "compare") {
+        settle(w);
+        const Comparison c = compareWithFile(*doc, preview->options().target, arg(0));
+        char exact[40];
+        std::snprintf(exact, sizeof exact, "%.9g", c.report.maxDeltaE);
+        const QString text =
+            comparisonText(c) + QStringLiteral("max-delta-e2000 ") + QString::fromLatin1(exact);
+        QSaveFile f(arg(1));
+        need(f.open(QIODevice::WriteOnly) && f.write(text.toUtf8() + '\n') >= 0 && f.commit(),
+             QStringLiteral("cannot write %1").arg(arg(1)));
+        out << "compared " << arg(0) << ": max ΔE2000 " << exact << "\n";
     } else if (cmd == "screenshot") {
         settle(w);
         const QImage shot = w.grab().toImage();

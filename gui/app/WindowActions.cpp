@@ -1,8 +1,11 @@
 #include "WindowActions.h"
 
+#include "CompareDialog.h"
 #include "Document.h"
+#include "ErrorText.h"
 #include "FileActions.h"
 #include "MainWindow.h"
+#include "PlotDialog.h"
 #include "PreviewController.h"
 #include "PreviewView.h"
 
@@ -13,6 +16,8 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -63,6 +68,7 @@ WindowActions::WindowActions(MainWindow* window) : QObject(window), m_window(win
     buildEditMenu();
     buildViewMenu();
     buildPreviewMenu();
+    buildToolsMenu();
     buildHelpMenu();
     buildToolbars();
     // Shortcuts work in every window of the editor (floating docks too); modal dialogs still
@@ -222,6 +228,49 @@ void WindowActions::buildPreviewMenu() {
     }
     for (QComboBox* box : {m_target, m_input, m_chain, m_interp})
         connect(box, &QComboBox::activated, this, &WindowActions::applyWidgets);
+}
+
+void WindowActions::buildToolsMenu() {
+    QMenu* menu = m_window->menuBar()->addMenu(tr("&Tools"));
+    QAction* plot = menu->addAction(tr("&Plot LUT…"), this, &WindowActions::showPlot);
+    plot->setObjectName("plotLut");
+    plot->setToolTip(tr("Draw the LUT the export writes for the target, as lutkit plot does"));
+    QAction* compare =
+        menu->addAction(tr("&Compare with LUT File…"), this, &WindowActions::compareWithFile);
+    compare->setObjectName("compareLut");
+    compare->setToolTip(tr("How the export differs from a LUT file (ΔE2000, 8-bit steps, where), "
+                           "over the open image's colours or the lattice, as lutkit diff does"));
+}
+
+void WindowActions::showPlot() {
+    try {
+        PlotDialog dlg(m_window);
+        dlg.exec();
+    } catch (const std::exception& e) {
+        m_window->reportError(tr("Cannot plot the LUT"),
+                              QString::fromStdString(humanErrorText(e.what())));
+    }
+}
+
+void WindowActions::compareWithFile() {
+    Document* doc = m_window->document();
+    const QString from = !doc->lutPath().isEmpty() ? doc->lutPath() : doc->imagePath();
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Compare with LUT File"),
+        from.isEmpty() ? QString() : QFileInfo(from).absolutePath(), FileActions::lutFilter());
+    if (path.isEmpty())
+        return;
+    try {
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        Comparison c = lut::gui::compareWithFile(*doc, m_window->preview()->options().target, path);
+        QApplication::restoreOverrideCursor();
+        CompareDialog dlg(m_window, std::move(c));
+        dlg.exec();
+    } catch (const std::exception& e) {
+        QApplication::restoreOverrideCursor();
+        m_window->reportError(tr("Cannot compare the LUTs"),
+                              QString::fromStdString(humanErrorText(e.what())));
+    }
 }
 
 void WindowActions::buildHelpMenu() {

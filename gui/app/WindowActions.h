@@ -1,11 +1,12 @@
 #pragma once
 // The window's menus, toolbars and shortcuts: File (FileActions), Edit (undo/redo, reset), View
-// (zoom, split/after/before, clipping overlay, docks), Preview (the PreviewController's options)
-// and Help. The preview toolbar shows the one choice that drives preview and export, the target
-// (Smash Ultimate, an engine strip, a .cube), and what the picture is (an in-game screenshot or a
-// linear scene: detected on open, switchable here), then the chain, bloom, LUT and
-// interpolation. The widgets show the controller's options and write them back; nothing here
-// keeps state of its own. Shortcuts work from every widget of the window (ShortcutGuard).
+// (zoom, split/after/before, clipping overlay, docks), Preview (the PreviewController's options),
+// Tools (the LUT plot and the comparison with a LUT file: PlotDialog, CompareDialog) and Help. The
+// preview toolbar shows the one choice that drives preview and export, the target (Smash Ultimate,
+// an engine strip, a .cube), and what the picture is (an in-game screenshot or a linear scene:
+// detected on open, switchable here), then the chain, bloom, LUT and interpolation. The widgets
+// show the controller's options and write them back; nothing here keeps state of its own. Shortcuts
+// work from every widget of the window (ShortcutGuard).
 #include "PreviewRenderer.h"
 
 #include <QObject>
@@ -43,7 +44,10 @@ private:
     void buildEditMenu();
     void buildViewMenu();
     void buildPreviewMenu();
+    void buildToolsMenu();
     void buildHelpMenu();
+    void showPlot();
+    void compareWithFile();
     void buildToolbars();
     // The options as the widgets show them, and the widgets from the options.
     PreviewOptions optionsFromWidgets() const;

@@ -2,15 +2,19 @@
 // undo step per gesture, checked against what the tool must do written out here: a curve passes
 // through its points, hue curves leave greys alone, a colour wheel keeps luminance, strength
 // mixes with the identity, Shift makes a slider ten times finer, the scopes count the frame's
-// pixels, the clipping count and overlay mark what is out of range.
+// pixels, the clipping count and overlay mark what is out of range. Issue 16: the Tools menu's
+// plot and comparison dialogs show the library's results for the target's export.
 #include "GuiTestSupport.h"
 
 #include "AdjustmentsPanel.h"
 #include "ColorWheel.h"
+#include "CompareDialog.h"
 #include "CurveEditor.h"
 #include "CurvesPanel.h"
 #include "Document.h"
 #include "MainWindow.h"
+#include "PlotDialog.h"
+#include "PreviewController.h"
 #include "PreviewView.h"
 #include "ScopesView.h"
 #include "WheelsPanel.h"
@@ -20,11 +24,14 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QMouseEvent>
+#include <QPlainTextEdit>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStyle>
 #include <QStyleOptionSlider>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -270,6 +277,59 @@ private slots:
         QCOMPARE(marked, clipped);
         w.windowActions()->clippingAction()->trigger();
         QVERIFY(w.previewView()->showsClipping());
+    }
+
+    void toolsMenuShowsThePlotAndTheComparison() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        PreviewOptions o = w.preview()->options();
+        o.target = ExportTarget::Grading;
+        w.setPreviewOptions(o);
+        w.waitForPreview();
+
+        // Plot: lut::plotLut of the export, shown.
+        {
+            PlotDialog dlg(&w);
+            dlg.show();
+            const Image expected = plotExportedLut(*w.document(), ExportTarget::Grading);
+            QCOMPARE(dlg.plot().width(), expected.width());
+            QVERIFY(dlg.plot().pixels() == expected.pixels());
+            auto* picture = dlg.findChild<QLabel*>("plotPicture");
+            QVERIFY(picture && !picture->pixmap().isNull());
+        }
+        // The menu entries open their dialogs (closed here as a user would).
+        QAction* plot = w.findChild<QAction*>("plotLut");
+        QVERIFY(plot);
+        bool shown = false;
+        QTimer::singleShot(50, [&] {
+            if (auto* d = qobject_cast<PlotDialog*>(QApplication::activeModalWidget())) {
+                shown = true;
+                d->reject();
+            }
+        });
+        plot->trigger();
+        QVERIFY(shown);
+        QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
+        QVERIFY(w.findChild<QAction*>("compareLut"));
+
+        // Compare with the opened file itself: over the image's colours, identical.
+        Comparison c =
+            compareWithFile(*w.document(), ExportTarget::Grading, samplePath("sample_grade.cube"));
+        QCOMPARE(c.over, w.document()->imagePath());
+        QCOMPARE(c.report.count, std::size_t(w.document()->storedImage()->width()) *
+                                     std::size_t(w.document()->storedImage()->height()));
+        QVERIFY(c.report.identical());
+        QCOMPARE(c.heat.image.width(), w.document()->storedImage()->width());
+        CompareDialog dlg(&w, c);
+        dlg.show();
+        auto* report = dlg.findChild<QPlainTextEdit*>("compareReport");
+        QVERIFY(report);
+        QCOMPARE(report->toPlainText(), comparisonText(c));
+        QVERIFY2(report->toPlainText().contains(QStringLiteral("identical")),
+                 qPrintable(report->toPlainText()));
     }
 };
 

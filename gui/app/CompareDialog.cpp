@@ -1,0 +1,127 @@
+#include "CompareDialog.h"
+
+#include "Document.h"
+#include "FileActions.h"
+#include "MainWindow.h"
+#include "PlotDialog.h"
+#include "PreviewFrame.h"
+
+#include "lut/formats/Registry.h"
+
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include <utility>
+
+namespace lut::gui {
+
+namespace {
+
+QString g3(double v) {
+    return QString::number(v, 'g', 3);
+}
+
+QString triple(glm::vec3 v) {
+    return g3(v.x) + ' ' + g3(v.y) + ' ' + g3(v.z);
+}
+
+QString steps(glm::dvec3 v) {
+    return QStringLiteral("R %1  G %2  B %3").arg(g3(v.x), g3(v.y), g3(v.z));
+}
+
+} // namespace
+
+Comparison compareWithFile(const Document& doc, ExportTarget target, const QString& otherPath) {
+    const std::shared_ptr<const Lut3D> a = exportedLut(doc, target);
+    const Lut3D b = formats::readLut(otherPath.toStdString()).toLut3D();
+    Comparison c;
+    c.otherPath = otherPath;
+    if (const std::shared_ptr<const Image> image = doc.storedImage()) {
+        c.over = doc.imagePath();
+        c.report = diffLutsOnImage(*a, b, image->view());
+        c.heat = diffHeatMap(*a, b, image->view());
+    } else {
+        c.report = diffLuts(*a, b);
+        c.heat = diffHeatMapSlices(*a, b);
+    }
+    return c;
+}
+
+QString comparisonText(const Comparison& c) {
+    const DiffReport& r = c.report;
+    QString t;
+    t += QStringLiteral("A  the export (what the editor writes now)\nB  %1\n")
+             .arg(QDir::toNativeSeparators(c.otherPath));
+    t += QStringLiteral("compared %1 colours %2\n")
+             .arg(r.count)
+             .arg(c.over.isEmpty() ? QStringLiteral("on a lattice over A's domain")
+                                   : "of " + QDir::toNativeSeparators(c.over));
+    if (r.identical())
+        return t + QStringLiteral("identical: ΔE2000 0, 0 8-bit steps\n");
+    t += QStringLiteral("ΔE2000   max %1, mean %2, 95th percentile %3 (entries taken as "
+                        "sRGB-encoded)\n")
+             .arg(g3(r.maxDeltaE), g3(r.meanDeltaE), g3(r.p95DeltaE));
+    t += QStringLiteral("8-bit    max   %1\n         mean  %2\n")
+             .arg(steps(r.maxSteps8), steps(r.meanSteps8));
+    t += QStringLiteral("worst    input %1: A %2, B %3 (ΔE %4)\n")
+             .arg(triple(r.worst.input), triple(r.worst.a), triple(r.worst.b), g3(r.worst.deltaE));
+    t += QStringLiteral("where    (largest mean ΔE first)\n");
+    for (const RegionDiff& g : r.rankedRegions())
+        t += QStringLiteral("  %1mean ΔE %2, max %3 at %4 (%5 colours)\n")
+                 .arg(QString::fromLatin1(toString(g.region)).leftJustified(12), g3(g.meanDeltaE),
+                      g3(g.maxDeltaE), triple(g.worstInput))
+                 .arg(g.count);
+    if (r.sanitizedEntriesA || r.sanitizedEntriesB)
+        t += QStringLiteral("note     NaN/Inf entries counted as 0 or +-65504: A %1, B %2\n")
+                 .arg(r.sanitizedEntriesA)
+                 .arg(r.sanitizedEntriesB);
+    return t;
+}
+
+CompareDialog::CompareDialog(MainWindow* window, Comparison comparison)
+    : QDialog(window), m_window(window), m_comparison(std::move(comparison)) {
+    setWindowTitle(tr("Compare with %1").arg(QFileInfo(m_comparison.otherPath).fileName()));
+    auto* layout = new QVBoxLayout(this);
+    auto* text = new QPlainTextEdit(reportText(), this);
+    text->setObjectName("compareReport");
+    text->setReadOnly(true);
+    text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    text->setLineWrapMode(QPlainTextEdit::NoWrap);
+    layout->addWidget(text);
+    layout->addWidget(new QLabel(tr("Heat map: black = ΔE2000 0 to pale yellow = ΔE %1 and above")
+                                     .arg(g3(m_comparison.heat.maxDeltaE)),
+                                 this));
+    auto* picture = new QLabel(this);
+    picture->setObjectName("heatMap");
+    picture->setPixmap(QPixmap::fromImage(toDisplayImage(m_comparison.heat.image)));
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(picture);
+    scroll->setAlignment(Qt::AlignCenter);
+    layout->addWidget(scroll, 1);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    QPushButton* save = buttons->addButton(tr("Save Heat Map…"), QDialogButtonBox::ActionRole);
+    connect(save, &QPushButton::clicked, this, [this] {
+        const QString path =
+            QFileDialog::getSaveFileName(this, tr("Save Heat Map"), QStringLiteral("heatmap.png"),
+                                         tr("PNG pictures (*.png);;All files (*)"));
+        if (!path.isEmpty()) // the file dialog asked before replacing
+            m_window->fileActions()->savePicture(path, m_comparison.heat.image, true);
+    });
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+    resize(900, 700);
+}
+
+QString CompareDialog::reportText() const {
+    return comparisonText(m_comparison);
+}
+
+} // namespace lut::gui
