@@ -7,6 +7,10 @@
 #include <cstring>
 #include <vector>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
+
 namespace lut::formats {
 
 namespace detail {
@@ -20,7 +24,10 @@ bool hasF16c() {
 #if defined(__x86_64__) || defined(__i386__)
     static const bool yes = [] {
         __builtin_cpu_init();
-        return __builtin_cpu_supports("avx") && __builtin_cpu_supports("f16c");
+        // F16C from CPUID itself: clang 14's __builtin_cpu_supports does not know "f16c".
+        unsigned a = 0, b = 0, c = 0, d = 0;
+        return __builtin_cpu_supports("avx") && __get_cpuid(1, &a, &b, &c, &d) &&
+               (c & bit_F16C) != 0;
     }();
     return yes;
 #else
