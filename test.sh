@@ -13,6 +13,9 @@ t0=$(date +%s)
 trap 'rc=$?; if [ $rc -ne 0 ]; then echo "test.sh: FAILED in stage: $stage (exit $rc) after $(( $(date +%s) - t0 )) s"; fi' EXIT
 "$root/scripts/install-deps.sh"
 jobs="$(nproc)"
+# ccache (CMakeLists.txt uses it when installed): paths inside the clone are hashed relative to
+# it and the build folder is not hashed, so another clone of the same sources reuses the objects.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 
 stage="release"
 echo "== Release build and tests"
