@@ -56,7 +56,9 @@ std::string canonicalImageFormat(const std::string& formatOrPath) {
     return e.size() > 1 ? e.substr(1) : e;
 }
 
-std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std::string& format) {
+namespace {
+
+std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::string& format) {
     std::string memory;
     std::string head;
     if (isStdStream(path)) {
@@ -106,6 +108,21 @@ std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std:
             throw Error(path + ": JPEG file ends before its end-of-image marker (truncated)");
     }
     return openOiioSource(path, std::move(memory), named.empty() ? format : named);
+}
+
+} // namespace
+
+std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std::string& format) {
+    auto src = openAnySource(path, format);
+    // A header may declare no pixels at all (a DPX of width 0 was read without a word: found by
+    // fuzz_image_apply); nothing downstream can use that.
+    const ImageInfo& info = src->info();
+    if (info.width <= 0 || info.height <= 0 || info.channels <= 0)
+        throw Error((isStdStream(path) ? std::string("standard input") : path) +
+                    ": the image has no pixels (" + std::to_string(info.width) + "x" +
+                    std::to_string(info.height) + ", " + std::to_string(info.channels) +
+                    " channels)");
+    return src;
 }
 
 std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target, const SinkSpec& spec) {
