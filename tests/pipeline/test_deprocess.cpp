@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <limits>
+
 using namespace lut;
 using namespace lut::test;
 
@@ -76,6 +79,40 @@ TEST(Deprocess, NeutralOriginalLutIsExact) {
     prepareSceneFrame(shot.view(), false, true, nullptr);
     EXPECT_LT(maxDiff(shot, x), 1e-5);
     EXPECT_LT(maxDiff(preview(shot, L1), preview(x, L1)), 2e-5);
+}
+
+TEST(Deprocess, NeutralUngradeOfAFrameIsThePerPixelInverseBitForBit) {
+    // smashUngrade remembers the neutral inverse per channel value (a screenshot has at most 256
+    // per channel); every pixel must still get exactly smashGradeInverse's bits, with repeated
+    // values, values beyond 1, NaN, and alpha below 1 (the iterative path) mixed in.
+    const int w = 256, h = 6;
+    Image frame(w, h);
+    Rng r(11);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = frame.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                p[c] = y < 3 ? float(((x * 7 + c * 31 + y * 5) % 256) / 255.0)
+                             : float(2.0 * r.uniform() - 0.2);
+            p[3] = y == 4 ? float(r.uniform()) : 1.0f;
+        }
+    frame.pixel(3, 5)[1] = std::numeric_limits<float>::quiet_NaN();
+    frame.pixel(4, 5)[2] = 70000.0f;
+    const Image before = frame;
+    const Lut3D neutral = Lut3D::identity(16);
+    const auto sampler = makeSampler(neutral, Interpolation::Trilinear);
+    smashUngrade(frame.view(), nullptr, Interpolation::Trilinear, 2);
+    int differ = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = before.pixel(x, y);
+            const glm::vec3 want =
+                smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3], *sampler, true);
+            const float* got = frame.pixel(x, y);
+            for (int c = 0; c < 3; ++c)
+                differ += std::memcmp(&got[c], &want[c], sizeof(float)) != 0;
+        }
+    EXPECT_EQ(differ, 0);
 }
 
 TEST(Deprocess, ScalarInverseSolvesTheGrading) {

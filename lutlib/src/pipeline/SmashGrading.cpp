@@ -9,6 +9,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <vector>
 
 namespace lut {
 
@@ -106,11 +110,52 @@ double maxAbs(const glm::dvec3& v) {
     return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
 }
 
+// The inverse for an identity LUT with alpha 1, one channel: a function of that channel's value
+// alone (the brighten pass is per channel), so it can be memoised per value (smashUngrade).
+float neutralUngradeChannel(float v) {
+    const float o = std::max(sanitizeValue(v, limits::kMaxColorValue), 0.0f);
+    const double target = o > 0.0f ? std::pow(static_cast<double>(o), 1.0 / 2.2) : 0.0;
+    const double k = 1.0 - static_cast<double>(kSmashBrightenMix);
+    const double t = target / static_cast<double>(kSmashBrightenScale);
+    const double s = t <= 1.0 ? t : (t - static_cast<double>(kSmashBrightenMix)) / k;
+    return smashEncodeInverse(static_cast<float>(s));
+}
+
+// neutralUngradeChannel remembered for the values seen (a screenshot has at most 256 per
+// channel): direct-mapped on the value's bits, one per thread, bit-identical by construction.
+class NeutralUngradeMemo {
+public:
+    float operator()(float v) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &v, 4);
+        const std::uint32_t slot = (bits ^ (bits >> 13) ^ (bits >> 23)) & (kSlots - 1);
+        if (!m_used[slot] || m_key[slot] != bits) {
+            m_key[slot] = bits;
+            m_value[slot] = neutralUngradeChannel(v);
+            m_used[slot] = 1;
+        }
+        return m_value[slot];
+    }
+
+private:
+    static constexpr std::uint32_t kSlots = 4096;
+    std::vector<std::uint32_t> m_key = std::vector<std::uint32_t>(kSlots);
+    std::vector<float> m_value = std::vector<float>(kSlots);
+    std::vector<unsigned char> m_used = std::vector<unsigned char>(kSlots, 0);
+};
+
 } // namespace
 
 glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& lut,
                             bool identityLut, bool* converged) {
     const float a = detail::clamp01(alpha);
+    if (identityLut && a >= 1.0f) {
+        if (converged)
+            *converged = true;
+        return glm::vec3(neutralUngradeChannel(outputLinear.x),
+                         neutralUngradeChannel(outputLinear.y),
+                         neutralUngradeChannel(outputLinear.z));
+    }
     glm::vec3 out;
     for (int c = 0; c < 3; ++c)
         out[c] = std::max(sanitizeValue(outputLinear[c], limits::kMaxColorValue), 0.0f);
@@ -122,7 +167,7 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
     glm::dvec3 target;
     for (int c = 0; c < 3; ++c)
         target[c] = out[c] > 0.0f ? std::pow(static_cast<double>(out[c]), 1.0 / 2.2) : 0.0;
-    // The neutral solution: exact for an identity LUT with alpha 1, the start point otherwise.
+    // The neutral solution (exact for an identity LUT with alpha 1: above): the start point.
     const double k = 1.0 - static_cast<double>(kSmashBrightenMix);
     glm::dvec3 s;
     for (int c = 0; c < 3; ++c) {
@@ -135,8 +180,6 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
             x[c] = smashEncodeInverse(static_cast<float>(sv[c]));
         return x;
     };
-    if (identityLut && a >= 1.0f)
-        return toLinear(s);
 
     const GradeMap phi{lut, a};
     const double tol = 1e-6 * std::max(1.0, maxAbs(target));
@@ -208,9 +251,18 @@ UngradeResult smashUngrade(const ImageView& frame, const Lut3D* originalLut, Int
     if (!frame.empty()) {
         parallelFor(frame.height, nthreads, [&](int y0, int y1) {
             std::size_t localBad = 0;
+            std::optional<NeutralUngradeMemo> memo;
+            if (identity)
+                memo.emplace();
             for (int y = y0; y < y1; ++y) {
                 float* p = frame.row(y);
                 for (int x = 0; x < frame.width; ++x, p += 4) {
+                    if (memo && detail::clamp01(p[3]) >= 1.0f) { // the same as smashGradeInverse
+                        p[0] = (*memo)(p[0]);
+                        p[1] = (*memo)(p[1]);
+                        p[2] = (*memo)(p[2]);
+                        continue;
+                    }
                     bool ok = true;
                     const glm::vec3 v = smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3],
                                                           *sampler, identity, &ok);
