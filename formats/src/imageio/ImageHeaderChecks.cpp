@@ -71,6 +71,27 @@ void checkExr(const std::string& path, const std::vector<unsigned char>& b,
 
 } // namespace
 
+// DPX (SMPTE 268M): "SDPX" big-endian or "XPDS" little-endian; pixels per line at byte 772, lines
+// per element at 776. OpenImageIO allocates the frame from them when it opens the file (a 2 KB
+// file claiming 32704x32704 asked for 4.3 GB: found by fuzz_image_apply). No DPX stores less than
+// one bit per pixel.
+void checkDpx(const std::string& path, const std::vector<unsigned char>& b, std::uint64_t size) {
+    if (b.size() < 780)
+        return;
+    const bool big = b[0] == 'S';
+    auto u32 = [&](std::size_t at) {
+        return big ? (std::uint32_t(b[at]) << 24) | (std::uint32_t(b[at + 1]) << 16) |
+                         (std::uint32_t(b[at + 2]) << 8) | b[at + 3]
+                   : (std::uint32_t(b[at + 3]) << 24) | (std::uint32_t(b[at + 2]) << 16) |
+                         (std::uint32_t(b[at + 1]) << 8) | b[at];
+    };
+    const std::uint64_t w = u32(772), h = u32(776);
+    if (w * h > 8 * size)
+        throw Error(path + ": DPX header declares " + std::to_string(w) + "x" + std::to_string(h) +
+                    " pixels, more than the file's " + std::to_string(size) +
+                    " bytes can hold (truncated or corrupt)");
+}
+
 void checkImageHeader(const std::string& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0)
@@ -95,6 +116,9 @@ void checkImageHeader(const std::string& path) {
     static const unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
     if (b.size() >= 8 && std::memcmp(b.data(), kExrMagic, 4) == 0)
         checkExr(path, b, static_cast<std::uint64_t>(st.st_size));
+    if (b.size() >= 4 &&
+        (std::memcmp(b.data(), "SDPX", 4) == 0 || std::memcmp(b.data(), "XPDS", 4) == 0))
+        checkDpx(path, b, static_cast<std::uint64_t>(st.st_size));
 }
 
 } // namespace lut::formats
