@@ -10,6 +10,19 @@
 
 namespace lut::cli {
 
+LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& layout,
+                       const Verbosity& verbosity) {
+    FormatOptions options;
+    options.layout = layout;
+    LutFile file = formats::readLut(path, options);
+    printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
+    if (verbosity.verbose)
+        if (const std::string d = layoutDetail(file, layout.has_value(), "--lut-layout");
+            !d.empty())
+            std::cerr << "lutkit: " << path << ": " << d << "\n";
+    return file;
+}
+
 Lut3D readLutTable(const std::string& path, const Verbosity& verbosity) {
     const LutFile file = formats::readLut(path, {});
     printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");

@@ -7,13 +7,20 @@
 #include "lut/ErrorStats.h"
 #include "lut/Lut3D.h"
 #include "lut/LutFile.h"
+#include "lut/io/Layout.h"
 
+#include <optional>
 #include <ostream>
 #include <vector>
 
 #include <string>
 
 namespace lut::cli {
+
+// The LUT that apply and preview take with --lut (--lut-layout when it is an image): its
+// diagnostics printed to stderr, and with -v how its layout was chosen.
+LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& layout,
+                       const Verbosity& verbosity);
 
 // The file as one 3D table (a shaper baked in), its diagnostics printed to stderr.
 Lut3D readLutTable(const std::string& path, const Verbosity& verbosity);

@@ -2,6 +2,7 @@
 #include "commands/Apply.h"
 
 #include "Batch.h"
+#include "LutFiles.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -26,14 +27,7 @@ int runApply(const ApplyOptions& o) {
     bo.threads = o.threads;
     bo.quiet = o.verbosity.quiet;
     bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
-    FormatOptions lutOptions;
-    lutOptions.layout = o.lutLayout;
-    const LutFile file = formats::readLut(o.lut, lutOptions);
-    printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
-    if (o.verbosity.verbose)
-        if (const std::string d = layoutDetail(file, o.lutLayout.has_value(), "--lut-layout");
-            !d.empty())
-            std::cerr << "lutkit: " << o.lut << ": " << d << "\n";
+    const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
     printDiagnostics(std::cerr, colour.diagnostics, o.verbosity, "lutkit: ");
     if (o.verbosity.verbose && o.color.any())
         std::cerr << "lutkit: " << colour.describe() << "\n";

@@ -7,6 +7,7 @@
 #include "commands/Preview.h"
 
 #include "Batch.h"
+#include "LutFiles.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -175,14 +176,7 @@ int runPreview(const PreviewOptions& o) {
     bo.quiet = o.verbosity.quiet;
     bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
     if (!o.lut.empty()) {
-        FormatOptions lutOptions;
-        lutOptions.layout = o.lutLayout;
-        const LutFile file = formats::readLut(o.lut, lutOptions);
-        printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
-        if (o.verbosity.verbose)
-            if (const std::string d = layoutDetail(file, o.lutLayout.has_value(), "--lut-layout");
-                !d.empty())
-                std::cerr << "lutkit: " << o.lut << ": " << d << "\n";
+        const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
         settings.lut = std::make_shared<const Lut3D>(file.toLut3D());
     }
     std::shared_ptr<const Lut3D> original;
