@@ -54,16 +54,20 @@ glm::dvec3 fromOklab(glm::dvec3 lab) {
 }
 
 // NaN -> 0, +-Inf and beyond -> +-kMaxColorValue, as every LUT operation does (ops/OpsDetail.h).
-double sanitize(float v) {
+double sanitize(double v) {
     if (v != v)
         return 0.0;
     constexpr double m = limits::kMaxColorValue;
-    return v < -m ? -m : v > m ? m : static_cast<double>(v);
+    return v < -m ? -m : v > m ? m : v;
+}
+
+double limited(double v) {
+    constexpr double m = limits::kMaxColorValue;
+    return v != v ? 0.0 : v < -m ? -m : v > m ? m : v;
 }
 
 float toStored(double v) {
-    constexpr double m = limits::kMaxColorValue;
-    return static_cast<float>(v != v ? 0.0 : v < -m ? -m : v > m ? m : v);
+    return static_cast<float>(limited(v));
 }
 
 double checkedAmount(double v, const char* what) {
@@ -88,6 +92,19 @@ bool isFullStrength(const StrengthOptions& options) {
     return a.luma == 1.0 && a.chroma == 1.0;
 }
 
+glm::dvec3 blendStrength(const glm::dvec3& input, const glm::dvec3& graded,
+                         const StrengthAmounts& amount) {
+    const glm::dvec3 x(sanitize(input.x), sanitize(input.y), sanitize(input.z));
+    const glm::dvec3 y(sanitize(graded.x), sanitize(graded.y), sanitize(graded.z));
+    const glm::dvec3 lx = toOklab(x);
+    const glm::dvec3 ly = toOklab(y);
+    const double tl = amount.luma, tc = amount.chroma;
+    const glm::dvec3 lab(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
+                         lx.z + tc * (ly.z - lx.z));
+    const glm::dvec3 e = fromOklab(lab);
+    return {limited(e.x), limited(e.y), limited(e.z)};
+}
+
 Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
     if (lut.empty())
         throw Error("strength: the LUT has no entries");
@@ -107,13 +124,9 @@ Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
                         continue;
                     }
                     const glm::vec3 y = lut.at(r, g, b);
-                    const glm::dvec3 lx = toOklab(glm::dvec3(x));
-                    const glm::dvec3 ly =
-                        toOklab(glm::dvec3(sanitize(y.x), sanitize(y.y), sanitize(y.z)));
-                    const double tl = amount.luma, tc = amount.chroma;
-                    const glm::dvec3 lab(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
-                                         lx.z + tc * (ly.z - lx.z));
-                    const glm::dvec3 e = fromOklab(lab);
+                    const glm::dvec3 e = blendStrength(
+                        glm::dvec3(x), glm::dvec3(sanitize(y.x), sanitize(y.y), sanitize(y.z)),
+                        amount);
                     out.at(r, g, b) = glm::vec3(toStored(e.x), toStored(e.y), toStored(e.z));
                 }
     });

@@ -6,6 +6,8 @@
 // per-entry RGB blend of two LUTs.
 #include "lut/Lut3D.h"
 
+#include <glm/vec3.hpp>
+
 #include <optional>
 
 namespace lut {
@@ -46,5 +48,12 @@ bool isFullStrength(const StrengthOptions& options);
 //   to an 8-bit format then reports that as storage error.
 // Title, comments and domain are kept. Throws lut::Error for an empty LUT or a bad amount.
 Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options);
+
+// The same blend for one colour: `graded` is what the LUT (or any transfer) gives for `input`.
+// applyStrength is this at every lattice point; a transfer that is not a plain 3D table on its
+// own inputs (lutkit match: a shaper, then a table) blends with it before it is tabulated. The
+// amounts are taken as they are (strengthAmounts checks them); NaN and Inf as above.
+glm::dvec3 blendStrength(const glm::dvec3& input, const glm::dvec3& graded,
+                         const StrengthAmounts& amounts);
 
 } // namespace lut
