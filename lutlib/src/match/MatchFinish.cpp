@@ -33,7 +33,7 @@ glm::dvec3 display(const glm::dvec3& c, bool linear) {
 double neutralWeight(const glm::dvec3& c) {
     const glm::dvec3 lab = srgbToLab(c);
     const double chroma = std::hypot(lab.y, lab.z);
-    return 1.0 - smoothstep(4.0, 12.0, chroma);
+    return 1.0 - smoothstep(6.0, 18.0, chroma);
 }
 
 double skinWeight(const glm::dvec3& c) {
@@ -70,6 +70,10 @@ void MatchFinish::check() const {
 bool MatchFinish::isIdentity() const {
     return preserve.empty() && lumaStrength.value_or(strength) == 1.0 &&
            chromaStrength.value_or(strength) == 1.0;
+}
+
+bool MatchFinish::isNeutral() const {
+    return lumaStrength.value_or(strength) == 0.0 && chromaStrength.value_or(strength) == 0.0;
 }
 
 glm::dvec3 MatchFinish::operator()(const glm::dvec3& source, const glm::dvec3& matched) const {

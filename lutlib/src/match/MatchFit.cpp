@@ -1,5 +1,6 @@
 // Fitting the transfer by each method, and auto's choice: see lut/match/Match.h.
 #include "lut/Error.h"
+#include "lut/match/LutQuality.h"
 #include "lut/match/Match.h"
 #include "lut/match/MatchFinish.h"
 #include "lut/match/WorkingSpace.h"
@@ -114,6 +115,17 @@ std::array<ChannelCurve, 3> matchChannels(const detail::ChannelStats& src,
     return curves;
 }
 
+// Whether the transfer tabulates (the size asked for, full strength) into a LUT that neither
+// folds colours over nor goes down along a channel's own axis, as the report will measure it.
+bool cleanShape(const MatchTransfer& t, const MatchOptions& o) {
+    MatchOptions q;
+    q.size = o.size;
+    q.nthreads = o.nthreads;
+    const LutQuality shape = measureLutQuality(bakeMatch(t, q), t.linear, t.domainMin, t.domainMax,
+                                               Interpolation::Tetrahedral);
+    return shape.foldedCells == 0 && shape.decreasingSteps == 0;
+}
+
 struct Fitted {
     MatchTransfer transfer;
     double seconds = 0.0;
@@ -189,7 +201,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
                (o.method == MatchMethod::Regularised && m == MatchMethod::HmMklHm);
     };
     std::vector<Fitted> fitted;
-    Diagnostics hmNotes, mklNotes, hmmklNotes;
+    Diagnostics hmNotes, mklNotes, hmmklNotes, regNotes;
     std::array<ChannelCurve, 3> h1;
     if (wants(MatchMethod::Hm) || wants(MatchMethod::HmMklHm)) {
         const auto t = Clock::now();
@@ -275,6 +287,19 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
             [&](const glm::dvec3& u) { return baseTransfer.workingOutput(u); }, to);
         f.transfer.residualSize = r.size;
         f.transfer.residual = r.residual;
+        // The correction may bend the table where the base map is steep; it is scaled down until
+        // the LUT neither folds nor goes down along a channel's own axis (0 = HM-MKL-HM itself).
+        double scale = 1.0;
+        while (scale > 0.0 && !cleanShape(f.transfer, o)) {
+            scale = scale > 0.1 ? scale * 0.5 : 0.0;
+            for (std::size_t i = 0; i < r.residual.size(); ++i)
+                f.transfer.residual[i] = r.residual[i] * static_cast<float>(scale);
+        }
+        if (scale < 1.0)
+            warn(regNotes, "",
+                 fmt("the regularised correction is scaled to %.3g%% so the LUT does not fold "
+                     "colours over",
+                     100.0 * scale));
         f.seconds = secondsSince(t) + fitted.back().seconds;
         fitted.push_back(std::move(f));
     }
@@ -307,20 +332,30 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
             rep.candidates.push_back(c);
         }
     }
-    // The choice: the closest; a simpler method (earlier in the list) within kSimpler of it wins.
+    // The choice: the closest among the candidates whose LUT neither folds nor goes down along a
+    // channel's own axis (all of them when none is clean); a simpler method (earlier in the
+    // list) within kSimpler of it wins.
     constexpr double kSimpler = 1.05;
     std::size_t chosen = 0;
     if (all) {
+        std::vector<bool> clean(rep.candidates.size());
+        bool anyClean = false;
+        for (std::size_t i = 0; i < rep.candidates.size(); ++i) {
+            clean[i] = cleanShape(fitted[i].transfer, o);
+            anyClean = anyClean || clean[i];
+        }
         double best = INFINITY;
-        for (const auto& c : rep.candidates)
-            best = std::min(best, c.after.slicedWasserstein);
         for (std::size_t i = 0; i < rep.candidates.size(); ++i)
-            if (rep.candidates[i].after.slicedWasserstein <= kSimpler * best + 1e-9) {
+            if (clean[i] || !anyClean)
+                best = std::min(best, rep.candidates[i].after.slicedWasserstein);
+        for (std::size_t i = 0; i < rep.candidates.size(); ++i)
+            if ((clean[i] || !anyClean) &&
+                rep.candidates[i].after.slicedWasserstein <= kSimpler * best + 1e-9) {
                 chosen = i;
                 break;
             }
-        rep.choice = fmt("auto: the closest to the reference (sliced Wasserstein %.3g), or a "
-                         "simpler method within 5%% of it",
+        rep.choice = fmt("auto: the closest to the reference (sliced Wasserstein %.3g) of the "
+                         "methods whose LUT does not fold, or a simpler one within 5%% of it",
                          best);
     } else {
         for (std::size_t i = 0; i < fitted.size(); ++i)

@@ -122,42 +122,68 @@ LutFile bakeMatch(const MatchTransfer& t, const MatchOptions& o) {
     const MatchFinish finish = MatchFinish::fromOptions(o, t.linear);
     finish.check();
     LutFile file;
+    if (finish.isNeutral()) { // strength 0: the neutral LUT over the domain, to the bit
+        const double a = std::min({t.domainMin.x, t.domainMin.y, t.domainMin.z});
+        const double b = std::max({t.domainMax.x, t.domainMax.y, t.domainMax.z});
+        Lut3D id = Lut3D::identity(o.size);
+        if (a != 0.0 || b != 1.0) {
+            id.setDomain(glm::vec3(static_cast<float>(a)), glm::vec3(static_cast<float>(b)));
+            const int n = o.size;
+            for (int bb = 0; bb < n; ++bb)
+                for (int g = 0; g < n; ++g)
+                    for (int r = 0; r < n; ++r)
+                        id.at(r, g, bb) = id.latticeInput(r, g, bb);
+        }
+        id.setTitle("lutkit match (strength 0)");
+        file.cube = std::move(id);
+        file.format = "match";
+        return file;
+    }
+    // One domain for every channel (formats such as Resolve's .cube have one input range): the
+    // shaper covers the widest channel's range and maps each channel's u onto [0, 1], the
+    // table's domain.
     glm::dvec3 uMin = t.domainMin, uMax = t.domainMax;
+    const double lo = std::min({t.domainMin.x, t.domainMin.y, t.domainMin.z});
+    const double hi = std::max({t.domainMax.x, t.domainMax.y, t.domainMax.z});
     if (t.hasShaper()) {
         const int n = codeAlignedShaper(t) ? 1021 : 4096;
         Lut1D shaper(n);
-        shaper.setDomain(glm::vec3(t.domainMin), glm::vec3(t.domainMax));
-        const glm::dvec3 lo(shaper.domainMin()), hi(shaper.domainMax());
-        for (int i = 0; i < n; ++i) {
-            const glm::dvec3 x = lo + (hi - lo) * (static_cast<double>(i) / (n - 1));
-            shaper[i] = glm::vec3(t.toLattice(x));
-        }
-        for (int c = 0; c < 3; ++c) {
-            uMin[c] = shaper[0][c];
-            uMax[c] = shaper[n - 1][c];
-            if (!(uMax[c] > uMin[c])) { // cannot happen for increasing curves; keep it valid
+        shaper.setDomain(glm::vec3(static_cast<float>(lo)), glm::vec3(static_cast<float>(hi)));
+        const double a = shaper.domainMin().x, b = shaper.domainMax().x;
+        uMin = t.toLattice(glm::dvec3(a));
+        uMax = t.toLattice(glm::dvec3(b));
+        for (int c = 0; c < 3; ++c)
+            if (!(uMax[c] > uMin[c])) // cannot happen for increasing curves; keep it valid
                 uMax[c] = uMin[c] + 1e-6;
-            }
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec3 u =
+                t.toLattice(glm::dvec3(a + (b - a) * (static_cast<double>(i) / (n - 1))));
+            shaper[i] = glm::vec3((u - uMin) / (uMax - uMin));
         }
-        shaper.setTitle("match shaper");
         file.shaper = std::move(shaper);
     }
+    const bool normalised = t.hasShaper();
     Lut3D cube(o.size);
-    cube.setDomain(glm::vec3(uMin), glm::vec3(uMax));
+    if (!normalised)
+        cube.setDomain(glm::vec3(static_cast<float>(lo)), glm::vec3(static_cast<float>(hi)));
     const int n = o.size;
-    const glm::dvec3 lo(cube.domainMin()), hi(cube.domainMax());
+    const glm::dvec3 cubeLo(cube.domainMin()), cubeHi(cube.domainMax());
     parallelFor(n, o.nthreads, [&](int b0, int b1) {
         for (int b = b0; b < b1; ++b)
             for (int g = 0; g < n; ++g)
                 for (int r = 0; r < n; ++r) {
-                    const glm::dvec3 u =
-                        lo + (hi - lo) * (glm::dvec3(r, g, b) / static_cast<double>(n - 1));
+                    const glm::dvec3 s = cubeLo + (cubeHi - cubeLo) * (glm::dvec3(r, g, b) /
+                                                                       static_cast<double>(n - 1));
+                    const glm::dvec3 u = normalised ? uMin + (uMax - uMin) * s : s;
                     const glm::dvec3 y = t.latticeOutput(u);
                     const glm::dvec3 e = finish.isIdentity() ? y : finish(t.fromLattice(u), y);
                     cube.at(r, g, b) = glm::vec3(e);
                 }
     });
-    cube.setTitle(std::string("lutkit match (") + toString(t.method) + ")");
+    // A title only on a plain table: .cube files with a shaper are Resolve's dialect, whose
+    // OpenColorIO reader refuses a TITLE line (Nuke, Blender and ociochecklut read them so).
+    if (!file.shaper)
+        cube.setTitle(std::string("lutkit match (") + toString(t.method) + ")");
     file.cube = std::move(cube);
     file.format = "match";
     return file;

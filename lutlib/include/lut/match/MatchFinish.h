@@ -6,7 +6,9 @@
 //   amounts   luma = lumaStrength (else strength), chroma = chromaStrength (else strength)
 //   luma      preserved: the luma amount is 0 (the source's Oklab L)
 //   neutrals  preserved: the chroma amount is scaled by 1 - n(x), n = 1 for a source colour of
-//             CIELAB chroma <= 4, 0 from chroma 12, smooth in between (greys stay grey)
+//             CIELAB chroma <= 6, 0 from chroma 18, smooth in between (greys stay grey; the
+//             zone is wide because the table interpolates between lattice inputs that are not
+//             grey)
 //   skin      preserved: the chroma amount is scaled by 1 - s(x), s = 1 for CIELAB hue 30..70
 //             degrees and chroma 10..45, falling smoothly to 0 at hue 15 and 85 degrees and at
 //             chroma 5 and 60 (the hue and chroma of skin under daylight)
@@ -29,6 +31,8 @@ struct MatchFinish {
     static MatchFinish fromOptions(const MatchOptions& options, bool linear);
     // True when finish() returns the matched colour as it is.
     bool isIdentity() const;
+    // True when it returns the source colour (both amounts 0): the neutral LUT.
+    bool isNeutral() const;
     // Throws lut::Error naming the option when an amount is NaN or outside [0, 2].
     void check() const;
     glm::dvec3 operator()(const glm::dvec3& source, const glm::dvec3& matched) const;

@@ -30,8 +30,9 @@ MatchMethod parseMatchMethod(std::string_view name);             // throws lut::
 // What keeps the source's values (each blends towards the source in Oklab, per colour, smoothly):
 //   Luma      lightness: only the colour of the look is taken (Oklab L of the source);
 //   Neutrals  colours near grey keep their chroma (greys stay grey; weight falls off by CIELAB
-//             chroma 4 .. 12);
-//   Skin      skin tones keep their chroma and hue (CIELAB hue 25..75 degrees, chroma 8..60).
+//             chroma 6 .. 18);
+//   Skin      skin tones keep their chroma and hue (CIELAB hue 30..70 degrees, chroma 10..45,
+//             fading out to 15..85 degrees and 5..60) (lut/match/MatchFinish.h).
 enum class MatchPreserve { Luma, Neutrals, Skin };
 const char* toString(MatchPreserve preserve); // "luma", "neutrals", "skin"
 const std::vector<MatchPreserve>& allMatchPreserves();
