@@ -4,6 +4,7 @@
 #include "lut/interp/Sampler.h"
 #include "lut/match/WorkingSpace.h"
 
+#include <glm/common.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
@@ -47,19 +48,30 @@ void LutFileSampler::applyPixels(float* rgba, std::size_t count) const {
         m_impl->table->applyPixels(rgba, count);
 }
 
+namespace {
+std::string fmt3(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+} // namespace
+
 std::string LutQuality::str() const {
     char buf[512];
     const bool monotone = decreasingSteps == 0;
-    std::snprintf(buf, sizeof buf,
-                  "%s along each channel's own axis (slopes %.3g..%.3g), %s along grey; %s; "
-                  "largest second difference %.3g 8-bit steps",
-                  monotone ? "monotone" : "NOT monotone", smallestSlope, largestSlope,
-                  monotoneAlongGrey ? "monotone" : "NOT monotone",
-                  foldedCells == 0 ? "no fold-overs"
-                                   : (std::to_string(foldedCells) + " of " + std::to_string(cells) +
-                                      " cells folded")
-                                         .c_str(),
-                  largestSecondDifference);
+    std::snprintf(
+        buf, sizeof buf,
+        "%s along each channel's own axis (slopes %.3g..%.3g), %s along grey; %s; "
+        "largest second difference %.3g 8-bit steps",
+        monotone ? "monotone" : "NOT monotone", smallestSlope, largestSlope,
+        monotoneAlongGrey
+            ? "monotone"
+            : ("NOT monotone (down by up to " + fmt3(largestGreyDrop) + " 8-bit steps)").c_str(),
+        foldedCells == 0
+            ? "no fold-overs"
+            : (std::to_string(foldedCells) + " of " + std::to_string(cells) + " cells folded")
+                  .c_str(),
+        largestSecondDifference);
     std::string s = buf;
     if (decreasingSteps > 0)
         s += " (" + std::to_string(decreasingSteps) + " of " + std::to_string(steps) +
@@ -141,7 +153,7 @@ LutQuality measureLutQuality(const LutFile& lut, bool linear, const glm::dvec3& 
     // The grey axis, finer than the grid.
     constexpr int kGreySteps = 256;
     q.smallestGreySlope = INFINITY;
-    glm::dvec3 prev(0.0);
+    glm::dvec3 prev(0.0), peak(-INFINITY);
     for (int i = 0; i <= kGreySteps; ++i) {
         const double t = static_cast<double>(i) / kGreySteps;
         glm::vec3 x;
@@ -156,10 +168,12 @@ LutQuality measureLutQuality(const LutFile& lut, bool linear, const glm::dvec3& 
                 const double d = o[c] - prev[c];
                 if (d < -1e-6)
                     q.monotoneAlongGrey = false;
+                q.largestGreyDrop = std::max(q.largestGreyDrop, (peak[c] - o[c]) * 255.0);
                 q.smallestGreySlope =
                     std::min(q.smallestGreySlope, d * kGreySteps / std::max(w1[c] - w0[c], 1e-12));
             }
         prev = o;
+        peak = glm::max(peak, o);
     }
     if (!std::isfinite(q.smallestSlope))
         q.smallestSlope = 0.0;

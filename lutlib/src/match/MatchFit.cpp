@@ -115,15 +115,17 @@ std::array<ChannelCurve, 3> matchChannels(const detail::ChannelStats& src,
     return curves;
 }
 
-// Whether the transfer tabulates (the size asked for, full strength) into a LUT that neither
-// folds colours over nor goes down along a channel's own axis, as the report will measure it.
+// Whether the transfer tabulates (the size asked for, full strength) into a LUT that does not
+// fold colours over and never goes down along a channel's own axis or along grey, as the report
+// will measure it.
 bool cleanShape(const MatchTransfer& t, const MatchOptions& o) {
     MatchOptions q;
     q.size = o.size;
     q.nthreads = o.nthreads;
     const LutQuality shape = measureLutQuality(bakeMatch(t, q), t.linear, t.domainMin, t.domainMax,
                                                Interpolation::Tetrahedral);
-    return shape.foldedCells == 0 && shape.decreasingSteps == 0;
+    // Along grey, a drop of a quarter of an 8-bit step is invisible; more is a reversal.
+    return shape.foldedCells == 0 && shape.decreasingSteps == 0 && shape.largestGreyDrop <= 0.25;
 }
 
 struct Fitted {
@@ -288,7 +290,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
         f.transfer.residualSize = r.size;
         f.transfer.residual = r.residual;
         // The correction may bend the table where the base map is steep; it is scaled down until
-        // the LUT neither folds nor goes down along a channel's own axis (0 = HM-MKL-HM itself).
+        // the LUT neither folds nor goes down along a channel's axis or grey (0 = HM-MKL-HM).
         double scale = 1.0;
         while (scale > 0.0 && !cleanShape(f.transfer, o)) {
             scale = scale > 0.1 ? scale * 0.5 : 0.0;
@@ -332,9 +334,9 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
             rep.candidates.push_back(c);
         }
     }
-    // The choice: the closest among the candidates whose LUT neither folds nor goes down along a
-    // channel's own axis (all of them when none is clean); a simpler method (earlier in the
-    // list) within kSimpler of it wins.
+    // The choice: the closest among the candidates whose LUT does not fold and never goes down
+    // along a channel's axis or grey (all of them when none is clean); a simpler method
+    // (earlier in the list) within kSimpler of it wins.
     constexpr double kSimpler = 1.05;
     std::size_t chosen = 0;
     if (all) {

@@ -7,7 +7,9 @@
 //                          ...): the steps where it goes down, the smallest and largest slope;
 //                          a slope near 0 crushes levels together (banding), a large one
 //                          stretches them apart;
-//   grey axis              every output channel along (t, t, t), 256 steps: monotone or not;
+//   grey axis              every output channel along (t, t, t), 256 steps: monotone or not,
+//                          and by how much it goes down where it does (from its running
+//                          maximum, 8-bit steps);
 //   fold-overs             grid cells whose Jacobian (finite differences over the cell's corners)
 //                          has a determinant <= 0: colours the LUT folds onto each other;
 //   smoothness             the largest second difference along any axis, in 8-bit steps (1/255
@@ -31,6 +33,7 @@ struct LutQuality {
     double largestSlope = 0.0;
     bool monotoneAlongGrey = true;
     double smallestGreySlope = 0.0; // the smallest channel slope along the grey axis
+    double largestGreyDrop = 0.0;   // the most a channel goes down along grey, 8-bit steps
     std::size_t cells = 0;
     std::size_t foldedCells = 0;
     double largestSecondDifference = 0.0; // 8-bit steps
