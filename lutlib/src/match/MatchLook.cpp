@@ -235,8 +235,8 @@ MatchResult matchLook(const MatchPicture& source, const std::vector<MatchPicture
     rep.interpolation = summariseSteps(steps);
 
     // What the LUT clips, per pixel: display values beyond half an 8-bit step outside [0, 1]
-    // (closer ones round to 0 or 255 as they are), scene-linear values below 0.
-    const double loLimit = linear ? 0.0 : -0.5 / 255.0;
+    // (closer ones round to 0 or 255 as they are), scene-linear values below -0.5/255.
+    const double loLimit = -0.5 / 255.0;
     const double hiLimit = linear ? INFINITY : 1.0 + 0.5 / 255.0;
     for (std::size_t i = 0; i < colours.size(); ++i)
         for (int c = 0; c < 3; ++c) {

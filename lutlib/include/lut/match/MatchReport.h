@@ -35,8 +35,8 @@ struct MatchReport {
     std::size_t interpolationColours = 0;
     LutQuality quality;
 
-    // What the LUT does to SOURCE's counted pixels: channel values outside [0, 1] (display
-    // encoded; below 0 for scene-linear), which an 8-bit output clips.
+    // What the LUT does to SOURCE's counted pixels: channel values more than half an 8-bit step
+    // outside [0, 1] (display encoded; below 0 for scene-linear), which an 8-bit output clips.
     std::size_t clippedValues = 0;
     std::size_t values = 0;
     double clippedMaxSteps = 0.0;       // the farthest, 8-bit steps beyond the range
