@@ -16,8 +16,8 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QDialogButtonBox>
-#include <QPushButton>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QtTest>
