@@ -8,6 +8,8 @@
 #   the preview pipeline's stages (bloom, grading, display)                  pipeline_tests
 #   the parallel .cube row reader; image files (OIIO's own threads)          formats_tests
 #   the round trip's fit                                                     roundtrip_tests (Fit.*)
+#   lutkit match: samples, histograms, transport, table, measures            match_tests (the
+#                                                                            smaller cases)
 #   lutkit apply's batch and preview (a ThreadSanitizer-built lutkit)        cli_tests (CliApply.*,
 #                                                                            CliPreview.*)
 #   the editor's document model and preview rendering                       gui_model_tests
@@ -42,6 +44,7 @@ runs=(
   "pipeline_tests:"
   "formats_tests:-CubeRead.FloatParsingMatchesFromChars"
   "roundtrip_tests:Fit.*-Fit.NaturalImageWarnsAboutCoverage"
+  "match_tests:MatchStiff.*:MatchReport.*:HistogramMatch.*"
   "cli_tests:CliApply.*:CliPreview.*"
 )
 

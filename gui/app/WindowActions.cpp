@@ -5,6 +5,7 @@
 #include "ErrorText.h"
 #include "FileActions.h"
 #include "MainWindow.h"
+#include "MatchDialog.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
 #include "PreviewView.h"
@@ -240,6 +241,37 @@ void WindowActions::buildToolsMenu() {
     compare->setObjectName("compareLut");
     compare->setToolTip(tr("How the export differs from a LUT file (ΔE2000, 8-bit steps, where), "
                            "over the open image's colours or the lattice, as lutkit diff does"));
+    menu->addSeparator();
+    QAction* match =
+        menu->addAction(tr("&Match to Reference…"), this, &WindowActions::matchToReference);
+    match->setObjectName("matchReference");
+    match->setToolTip(tr("A LUT that gives the open picture the look of another picture, as "
+                         "lutkit match makes it, with its strength shown live"));
+}
+
+void WindowActions::matchToReference() {
+    Document* doc = m_window->document();
+    if (!doc->hasImage()) {
+        m_window->reportError(tr("Cannot match"),
+                              tr("Open a picture first: its look is matched to the reference."));
+        return;
+    }
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Match to Reference"),
+                                                      QFileInfo(doc->imagePath()).absolutePath(),
+                                                      FileActions::imageFilter());
+    if (path.isEmpty())
+        return;
+    try {
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        auto session =
+            std::make_unique<MatchSession>(doc->storedImage(), doc->imageInfo().isFloat, path);
+        QApplication::restoreOverrideCursor();
+        MatchDialog dlg(m_window, std::move(session));
+        dlg.exec();
+    } catch (const std::exception& e) {
+        QApplication::restoreOverrideCursor();
+        m_window->reportError(tr("Cannot match"), QString::fromStdString(humanErrorText(e.what())));
+    }
 }
 
 void WindowActions::showPlot() {

@@ -48,6 +48,7 @@ private:
     void buildHelpMenu();
     void showPlot();
     void compareWithFile();
+    void matchToReference();
     void buildToolbars();
     // The options as the widgets show them, and the widgets from the options.
     PreviewOptions optionsFromWidgets() const;
