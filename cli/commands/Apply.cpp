@@ -31,7 +31,7 @@ int runApply(const ApplyOptions& o) {
     printDiagnostics(std::cerr, colour.diagnostics, o.verbosity, "lutkit: ");
     if (o.verbosity.verbose && o.color.any())
         std::cerr << "lutkit: " << colour.describe() << "\n";
-    const PixelChain chain = formats::lutPixelChain(colour, file.toLut3D(), o.interp);
+    const PixelChain chain = formats::lutPixelChain(colour, file, o.interp);
     std::mutex noteMutex;
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         formats::ApplyImageOptions ao;

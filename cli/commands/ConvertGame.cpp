@@ -35,7 +35,7 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     q.refine = o.refine;
     q.interp = o.interp;
     SmashAuthoringResult authored;
-    const Lut3D game = makeGameLut(in.toLut3D(), q, o.verbosity, text, &authored);
+    const Lut3D game = makeGameLut(in, q, o.verbosity, text, &authored);
     LutFile out;
     out.cube = game;
     FormatOptions wo;

@@ -202,12 +202,18 @@ ColorPlan planPreviewColor(const ColorSpec& spec) {
 }
 
 PixelChain lutPixelChain(const ColorPlan& plan, const Lut3D& lut, Interpolation interp) {
+    LutFile file;
+    file.cube = lut;
+    return lutPixelChain(plan, file, interp);
+}
+
+PixelChain lutPixelChain(const ColorPlan& plan, const LutFile& file, Interpolation interp) {
     PixelChain chain;
     if (plan.before)
         chain.addBefore(
             "colour: " + plan.lutInputSpace,
             [t = plan.before](float* rgba, std::size_t n) { t->processPixels(rgba, n); });
-    chain.setLut(lut, interp);
+    chain.setLut(file, interp);
     if (plan.after)
         chain.addAfter("colour: out of " + plan.lutOutputSpace,
                        [t = plan.after](float* rgba, std::size_t n) { t->processPixels(rgba, n); });
