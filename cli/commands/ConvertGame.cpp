@@ -8,6 +8,7 @@
 #include "Usage.h"
 
 #include "lut/formats/Nutexb.h"
+#include "lut/formats/OcioFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 
@@ -22,6 +23,8 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
         throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
     FormatOptions ro;
     ro.layout = o.inLayout;
+    if (!o.cccid.empty())
+        ro.setAttribute(formats::kOcioCccIdAttribute, o.cccid);
     const LutFile in = formats::readLut(o.input, ro, o.inFormat);
     std::ostringstream text;
     text << "read     " << o.input << ": " << in.format
