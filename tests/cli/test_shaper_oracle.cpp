@@ -1,12 +1,13 @@
 // A Resolve .cube holding a 1D shaper (a log2 shaper of 4096 entries over 0..64) and a 33^3
 // grade, through every command that processes pixels with it, against OpenColorIO's processor of
-// the same file (FileTransform, OPTIMIZATION_NONE): apply (float EXR), the game's LUT made from it
-// (the authoring formula of docs/specs/smash-pipeline.md written here in float64, the edit
-// evaluated by OCIO), its inverse (OCIO evaluates both the file and the written inverse), a LUT
-// image written from it (OCIO at the lattice, the printed error against the truth between lattice
-// points) and --original-lut (the note that says what sampling the stage's LUT cost). Before the
-// fix the shaper and table were merged into one 33^3 table over 0..64 first: apply was off by
-// mean 82 / max 91 8-bit steps on inputs in [0,1].
+// the same file (FileTransform, OPTIMIZATION_NONE): apply (float EXR), preview's LUT stage, the
+// game's LUT made from it (the authoring formula of docs/specs/smash-pipeline.md written here in
+// float64, the edit evaluated by OCIO), its inverse (OCIO evaluates both the file and the written
+// inverse), a LUT image written from it (its entries against OCIO at the lattice, the printed
+// error against the truth between lattice points, interpolated here in float64) and
+// --original-lut (the note that says what sampling the stage's LUT cost). Before the fix the
+// shaper and table were merged into one 33^3 table over 0..64 first: apply was off OCIO by mean
+// 81 / max 108 8-bit steps on a [0,1] gradient.
 #include "OcioTestUtil.h"
 #include "TestSupport.h"
 
@@ -153,6 +154,40 @@ TEST(ShaperOracle, ApplyEqualsOcioOnFloatImages) {
     EXPECT_LT(worst * 255, 0.01) << "max 8-bit steps from OCIO; mean " << sum / (3 * 4096) * 255;
 }
 
+TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
+    // preview's LUT stage alone (preset none, lut on, display off) on a linear float scene.
+    const std::string dir = workDir();
+    const std::string cube = writeShapedCube(dir);
+    Image img(32, 32);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            float* p = img.pixel(x, y);
+            p[0] = x / 31.0f;
+            p[1] = y / 31.0f;
+            p[2] = (x + y) / 62.0f * 4.0f; // up to 4: HDR
+            p[3] = 1.0f;
+        }
+    formats::writeImage(dir + "/scene.exr", img, formats::ImageWriteOptions(32, false, false));
+    const RunResult r = runCli("preview " + q(dir + "/scene.exr") + " -o " + q(dir + "/p.exr") +
+                               " --preset none --enable lut --disable display --interp "
+                               "tetrahedral --lut " +
+                               q(cube));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    int w = 0, h = 0;
+    const std::vector<float> got = readRgb(dir + "/p.exr", w, h);
+    ASSERT_EQ(w, 32);
+    const auto ocio = ocioFileProcessor(cube);
+    double worst = 0;
+    for (int i = 0; i < 32 * 32; ++i) {
+        const float* p = img.pixel(i % 32, i / 32);
+        glm::vec3 want(p[0], p[1], p[2]);
+        ocio->applyRGB(&want.x);
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::fabs(double(got[3 * i + c]) - want[c]));
+    }
+    EXPECT_LT(worst * 255, 0.01) << "max 8-bit steps from OCIO";
+}
+
 TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
     // convert shaped.cube game.nutexb (the default target: the game shows the edit): every entry
     // is L(s) = (srgb^-1(edit(shown(s)))^(1/2.2) / 1.3703 - s) / 0.99961 + s with shown(s) =
@@ -177,7 +212,9 @@ TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
                 shown = srgbEncode(shown);
                 glm::vec3 e(shown);
                 ocio->applyRGB(&e.x);
-                glm::dvec3 wanted = glm::clamp(glm::dvec3(e), 0.0, 1.0);
+                glm::dvec3 wanted;
+                for (int c = 0; c < 3; ++c)
+                    wanted[c] = std::clamp(double(e[c]), 0.0, 1.0);
                 const glm::dvec3 lin = srgbDecode(wanted);
                 for (int c = 0; c < 3; ++c) {
                     const double l = (std::pow(lin[c], 1.0 / 2.2) / 1.3703 - s[c]) / 0.99961 + s[c];
@@ -197,7 +234,7 @@ TEST(ShaperOracle, InverseResidualWithinThePrintedBound) {
     const std::string inv = dir + "/inverse.cube";
     const RunResult r = runCli("invert " + q(cube) + " " + q(inv));
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    ASSERT_THAT(r.out, HasSubstr("between lattice points"));
+    ASSERT_THAT(r.out, HasSubstr("between the inverse's lattice points"));
     const double printed = numberAfter(r.out.substr(r.out.find("between  ")), ": max ");
     ASSERT_TRUE(std::isfinite(printed)) << r.out;
     // The truth on other targets: OCIO reads the inverse and the source.

@@ -10,7 +10,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cstdio>
@@ -122,7 +121,7 @@ TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
     const Inputs in = makeInputs();
     for (const Row& row : rows(in)) {
         SCOPED_TRACE(row.name + ": lutkit " + row.args);
-        const std::string data = in.dir + "/" + row.name + ".out";
+        const std::string data = in.dir + "/" + row.name + (row.image ? ".png" : ".cube");
         const std::string err = in.dir + "/" + row.name + ".err";
         const std::string reader = in.dir + "/" + row.name + ".read";
         // The command's stdout piped into the reader, as a user would.
@@ -140,11 +139,9 @@ TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
         if (row.image) {
             ASSERT_GE(bytes.size(), 8u);
             EXPECT_EQ(bytes.substr(1, 3), "PNG") << "PNG bytes first";
-            // The whole of stdout is one picture.
-            OIIO::Filesystem::IOMemReader mem(bytes.data(), bytes.size());
-            OIIO::ImageSpec config;
-            config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &mem);
-            auto img = OIIO::ImageInput::open(data, &config);
+            // The whole of stdout is one picture: it ends with PNG's IEND chunk and its CRC.
+            EXPECT_EQ(bytes.substr(bytes.size() - 8, 4), "IEND") << "nothing after the picture";
+            auto img = OIIO::ImageInput::open(data);
             ASSERT_TRUE(img) << OIIO::geterror();
             std::vector<unsigned char> px(img->spec().image_bytes());
             EXPECT_TRUE(
