@@ -42,13 +42,13 @@ Lut3D readLutTable(const std::string& path, const Verbosity& verbosity) {
     LatticeResult r = sampleOnLattice(file);
     r.error.seconds = 0.0;
     Diagnostic d;
-    d.severity = r.error.maxSteps8() > 1.0 ? Diagnostic::Severity::Warning
-                                           : Diagnostic::Severity::Info;
+    d.severity =
+        r.error.maxSteps8() > 1.0 ? Diagnostic::Severity::Warning : Diagnostic::Severity::Info;
     d.path = path;
-    d.message = "its 1D shaper and table taken as one " + std::to_string(r.lut.size()) +
-                "^3 table over the shaper's range (this command works on one lattice): " +
-                r.error.str() + " on " + std::to_string(r.heldOut) +
-                " inputs between lattice points";
+    d.message =
+        "its 1D shaper and table taken as one " + std::to_string(r.lut.size()) +
+        "^3 table over the shaper's range (this command works on one lattice): " + r.error.str() +
+        " on " + std::to_string(r.heldOut) + " inputs between lattice points";
     printDiagnostics(std::cerr, {d}, verbosity, "lutkit: ");
     return std::move(r.lut);
 }
