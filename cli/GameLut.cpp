@@ -34,6 +34,9 @@ Lut3D makeGameLut(const LutFile& edit, const GameLutRequest& q, const Verbosity&
         o.screenshot = &view;
     }
     o.refine = true; // always measured: the report says what --refine gives
+    if (!edit.cube && !edit.shaper)
+        throw Error("the edit holds no table");
+    const std::string title = edit.cube ? edit.cube->title() : edit.shaper->title();
     SmashAuthoringResult r;
     if (!edit.shaper) {
         r = authorSmashLutForEdit(*edit.cube, q.interp, o);
@@ -41,7 +44,6 @@ Lut3D makeGameLut(const LutFile& edit, const GameLutRequest& q, const Verbosity&
         // The shaper, then the table, at every colour the authoring evaluates.
         const std::shared_ptr<const Sampler> exact = makeSampler(edit, q.interp);
         r = authorSmashLutForEdit([exact](glm::vec3 c) { return exact->sample(c); }, o);
-        const std::string title = edit.cube ? edit.cube->title() : edit.shaper->title();
         r.exact.setTitle(title);
         r.lut.setTitle(title);
     }
@@ -65,7 +67,7 @@ Lut3D makeGameLut(const LutFile& edit, const GameLutRequest& q, const Verbosity&
         for (auto& e : lut.entries())
             for (int c = 0; c < 3; ++c)
                 e[c] = std::min(1.0f, std::max(0.0f, e[c]));
-    lut.setTitle(r.lut.title());
+    lut.setTitle(title);
     if (out)
         *out = std::move(r);
     return lut;

@@ -29,7 +29,9 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     std::ostringstream text;
     text << "read     " << o.input << ": " << in.format
          << (in.dialect.empty() ? "" : " (" + in.dialect + ")") << ", "
-         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string("1D")) << "\n";
+         << (in.shaper ? "1D shaper " + std::to_string(in.shaper->size()) + (in.cube ? ", " : "")
+                       : std::string())
+         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string()) << "\n";
     printDiagnostics(text, in.diagnostics, o.verbosity);
     text << "target   smash (" << reason << ")\n";
     GameLutRequest q;
