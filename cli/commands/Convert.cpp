@@ -107,6 +107,15 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
 } // namespace
 
 int runConvert(const ConvertOptions& o) {
+    if (!o.cccid.empty()) {
+        // --cccid picks a correction of a .ccc/.cdl/.cc file: anywhere else it would be ignored
+        // without a word.
+        const std::string ext = extensionOf(o.input);
+        if (ext != ".ccc" && ext != ".cdl" && ext != ".cc")
+            throw UsageError("--cccid " + o.cccid + ": " + o.input +
+                             " is not a .ccc, .cdl or .cc file (it picks one of their "
+                             "corrections)");
+    }
     if (o.color.any())
         (void)formats::planColor(o.color); // a misspelt colour name is bad usage, before files
     const OutputTarget target = resolveOutput(

@@ -52,7 +52,7 @@ CLI::App* setupPlot(CLI::App& app, std::function<void(const PlotCommandOptions&)
     sub->footer("Examples:\n"
                 "  lutkit plot grade.cube grade.png\n"
                 "  lutkit plot extracted.nutexb look.png --lattice-points 17\n"
-                "  lutkit plot grade.cube - | display -          # PNG on standard output");
+                "  lutkit plot grade.cube - --format png     # the picture on standard output");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <ostream>
 
 namespace fs = std::filesystem;
 using namespace lut::test;
@@ -30,6 +31,11 @@ struct Case {
     std::string name; // path under the corpus folder
     std::string cccid;
 };
+
+// How gtest and ctest name a case: its path (not the bytes of the struct).
+[[maybe_unused]] void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.name << (c.cccid.empty() ? "" : " --cccid " + c.cccid);
+}
 
 std::vector<Case> allFiles() {
     std::vector<Case> out;
