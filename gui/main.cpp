@@ -3,6 +3,7 @@
 //   lutkit-editor --screenshot OUT.png [IMAGE [LUT]]   render the window offscreen, save, exit
 //   lutkit-editor --save-preview OUT.png IMAGE [LUT]   write the preview image like lutkit preview
 //   lutkit-editor --script FILE [IMAGE [LUT]]          drive the window (ScriptRunner.h), exit
+#include "CpuState.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "PreviewController.h"
@@ -176,6 +177,7 @@ int main(int argc, char** argv) {
     if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
+    lut::gui::clearUpperVectorState(); // threads started from here inherit it (CpuState.h)
     // The desktop entry and icon installed from gui/desktop (window grouping, taskbar icon).
     QGuiApplication::setDesktopFileName(QStringLiteral("lutkit-editor"));
     QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("lutkit-editor")));

@@ -1,5 +1,7 @@
 #include "FileLoader.h"
 
+#include "CpuState.h"
+
 #include "lut/formats/Registry.h"
 
 #include <QCoreApplication>
@@ -21,6 +23,7 @@ void FileLoader::start(quint64 generation, bool isLut, const QString& path, Read
     if (m_running++ == 0)
         emit busyChanged(true);
     m_pool.start([this, generation, isLut, path, read, deliver] {
+        clearUpperVectorState(); // CpuState.h
         auto result = decltype(read())();
         QString error;
         try {
