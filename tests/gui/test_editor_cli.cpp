@@ -156,6 +156,35 @@ private slots:
         QCOMPARE(bad.code, 2);
     }
 
+    void helpAllAndBadOptionValuesExitTwoWithoutADisplay() {
+        // Issue 28: --help-all and a bad option value aborted (exit 134) looking for a display.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+        const Run all = run(QStringLiteral(LUTKIT_EDITOR), {"--help-all"}, env);
+        QCOMPARE(all.code, 0);
+        QVERIFY2(all.out.contains(QStringLiteral("Usage: lutkit-editor")), qPrintable(all.err));
+        const QList<QStringList> bad = {
+            {"--preset", "sepia"},    {"--target", "xbox"},      {"--interp", "cubic"},
+            {"--input", "photo"},     {"--view", "sideways"},    {"--zoom", "big"},
+            {"--zoom", "-5"},         {"--window-size", "huge"}, {"--window-size", "0x0"},
+            {"--adjust", "exposure"}, {"--adjust", "warmth=1"},  {"a.png", "b.cube", "c.png"}};
+        for (const QStringList& args : bad) {
+            const Run r = run(QStringLiteral(LUTKIT_EDITOR), args, env);
+            QVERIFY2(r.code == 2, qPrintable(args.join(' ') + ": exit " + QString::number(r.code) +
+                                             " " + r.err));
+            // One line saying what is wrong, naming the value, then where to look.
+            const QStringList lines = r.err.trimmed().split('\n');
+            QCOMPARE(lines.size(), 2);
+            QVERIFY2(lines[0].startsWith(QStringLiteral("lutkit-editor: ")) &&
+                         lines[0].contains(args.size() == 3 ? QStringLiteral("3 files")
+                                                            : args.last().section('=', 0, 0)),
+                     qPrintable(lines[0]));
+            QCOMPARE(lines[1], QStringLiteral("Run 'lutkit-editor --help' for usage."));
+        }
+    }
+
     void aRealWindowUnderXvfb() {
         const QString xvfb = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
         if (xvfb.isEmpty())
