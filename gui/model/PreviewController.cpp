@@ -269,21 +269,35 @@ void PreviewController::waitForFullResolution() {
     }
 }
 
-Image PreviewController::renderFullResolution() const {
+bool PreviewController::hasFullResolutionFrame() const {
+    return m_frame && m_frame->proxyFactor == 1 && isCurrent(*m_frame);
+}
+
+std::function<Image(const Progress&)> PreviewController::fullResolutionRenderer() const {
     if (!m_stored)
-        return {};
-    if (m_frame && m_frame->proxyFactor == 1 && isCurrent(*m_frame))
-        return m_frame->image;
+        return [](const Progress&) { return Image(); };
+    if (hasFullResolutionFrame())
+        return [frame = m_frame](const Progress&) { return frame->image; };
     std::shared_ptr<const Image> scene = m_sceneReady ? m_scene : nullptr;
-    if (!scene)
-        scene = std::make_shared<const Image>(prepareScene(*m_stored, m_storedIsFloat, m_options));
-    auto beforeLut = scene == m_scene ? cachedBeforeLut(scene, m_options) : nullptr;
-    if (!beforeLut)
-        beforeLut = std::make_shared<const Image>(renderBeforeLut(*scene, m_options));
-    auto target = targetLut();
-    if (!target)
-        target = std::make_shared<const TargetLut>(makeTargetLut(jobSource(), m_options.target));
-    return renderFromLut(*beforeLut, m_options, target->shown).image;
+    std::shared_ptr<const Image> beforeLut = scene ? cachedBeforeLut(scene, m_options) : nullptr;
+    return [stored = m_stored, isFloat = m_storedIsFloat, options = m_options, scene, beforeLut,
+            target = targetLut(), source = jobSource()](const Progress& progress) {
+        std::shared_ptr<const Image> s = scene, b = beforeLut;
+        if (!s)
+            s = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
+        progress.check("preview");
+        if (!b)
+            b = std::make_shared<const Image>(renderBeforeLut(*s, options));
+        progress.check("preview");
+        auto t = target ? target
+                        : std::make_shared<const TargetLut>(makeTargetLut(source, options.target));
+        progress.check("preview");
+        return renderFromLut(*b, options, t->shown).image;
+    };
+}
+
+Image PreviewController::renderFullResolution() const {
+    return fullResolutionRenderer()(Progress());
 }
 
 } // namespace lut::gui

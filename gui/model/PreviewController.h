@@ -15,11 +15,14 @@
 #include "PreviewFrame.h"
 #include "PreviewRenderer.h"
 
+#include "lut/Progress.h"
+
 #include <QImage>
 #include <QList>
 #include <QObject>
 #include <QSize>
 
+#include <functional>
 #include <memory>
 
 namespace lut::gui {
@@ -77,6 +80,12 @@ public:
     // current frame's image when it is that, else rendered on the calling thread (with the
     // caches when they apply). Empty without an image.
     Image renderFullResolution() const;
+    // The same as a function that may run on any thread (it holds what it needs, so the
+    // controller may change meanwhile): the current frame's image when it is that, else a render
+    // that checks `progress` between its steps (lut::CancelledError). Empty without an image.
+    std::function<Image(const Progress& progress)> fullResolutionRenderer() const;
+    // Whether the current frame already is the full-resolution preview (nothing to render).
+    bool hasFullResolutionFrame() const;
 
 signals:
     void imageChanged(); // a new image (imageSize(); empty: no image)
