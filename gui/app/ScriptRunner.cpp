@@ -3,10 +3,13 @@
 #include "AdjustmentsPanel.h"
 #include "BackgroundTask.h"
 #include "CompareDialog.h"
+#include "CurveEditor.h"
+#include "CurvesPanel.h"
 #include "Document.h"
 #include "ExportDialog.h"
 #include "FileActions.h"
 #include "FileLoader.h"
+#include "HueRanges.h"
 #include "MainWindow.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
@@ -20,12 +23,14 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
+#include <QPushButton>
 #include <QSaveFile>
 #include <QSlider>
 #include <QStatusBar>
@@ -318,6 +323,23 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
             id == CurveId::HueVsHue || id == CurveId::HueVsSat || id == CurveId::HueVsLum;
         doc->editCurve(id, Curve(hue ? CurveKind::Hue : CurveKind::Tone, pts));
         doc->endGesture();
+    } else if (cmd == "hue-range") {
+        // As a user does: the curve's button, the range's button, a value typed in Amount.
+        const CurveId id = curveByName(arg(0));
+        need(id == CurveId::HueVsHue || id == CurveId::HueVsSat || id == CurveId::HueVsLum,
+             QStringLiteral("hue-range takes hue.hue, hue.sat or hue.lum"));
+        const HueRange* range = hueRangeByKey(arg(1).toLatin1().constData());
+        need(range != nullptr, QStringLiteral("unknown hue range '%1' (reds yellows greens cyans "
+                                              "blues magentas)")
+                                   .arg(arg(1)));
+        bool ok = false;
+        const double amount = arg(2).toDouble(&ok);
+        need(ok, QStringLiteral("expected an amount, got '%1'").arg(arg(2)));
+        CurvesPanel* panel = w.curvesPanel();
+        panel->curveButton(id)->click();
+        panel->rangeButton(range->key)->click();
+        need(panel->amountBox()->isEnabled(), QStringLiteral("no point selected"));
+        panel->amountBox()->setValue(amount);
     } else if (cmd == "start-open-image") {
         need(w.fileActions()->startOpenImage(arg(0)), QStringLiteral("nothing started"));
     } else if (cmd == "start-compare") {
@@ -491,6 +513,12 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
             out << QString::number(w.previewView()->zoom() * 100, 'f', 1) << " %";
         } else if (what.startsWith("task:")) {
             out << taskState(w, what.mid(5));
+        } else if (what.startsWith("curve:")) {
+            const Curve& c = curveOf(doc->adjustments(), curveByName(what.mid(6)));
+            QStringList pts;
+            for (const auto& p : c.points())
+                pts << QStringLiteral("%1,%2").arg(p.x).arg(p.y);
+            out << (pts.isEmpty() ? QStringLiteral("(neutral)") : pts.join(' '));
         } else if (what == "focus")
             out << (QApplication::focusWidget() ? QApplication::focusWidget()->objectName()
                                                 : QStringLiteral("(none)"));
