@@ -1,9 +1,10 @@
 // Issue 28, the colourist's tools: hue curves with local influence (a point changes only the hues
-// near it; six hue-range presets; the active curve visible). The oracles are written here from
-// the definitions: the Fritsch-Carlson curve through a point and its neutral anchors 60 degrees
-// either side is the Hermite blend 3t^2 - 2t^3 between them, the saturation by hue is
-// Y + (1 + s)(e - Y) with Rec. 709 luma (lut/ops/Adjust.h), the hue shift turns the HSV hue
-// keeping max and min.
+// near it; six hue-range presets; the active curve visible) and the luma waveform and vectorscope.
+// The oracles are written here from the definitions: the Fritsch-Carlson curve through a point
+// and its neutral anchors 60 degrees either side is the Hermite blend 3t^2 - 2t^3 between them,
+// the saturation by hue is Y + (1 + s)(e - Y) with Rec. 709 luma (lut/ops/Adjust.h), the hue
+// shift turns the HSV hue keeping max and min; the waveform and vectorscope counts are computed
+// from the preview frame's 8-bit pixels with the Rec. 709 formulas of gui/model/Scopes.h.
 #include "GuiTestSupport.h"
 
 #include "CurveEditor.h"
@@ -11,6 +12,7 @@
 #include "Document.h"
 #include "MainWindow.h"
 #include "PreviewController.h"
+#include "ScopesView.h"
 
 #include <QAbstractButton>
 #include <QDockWidget>
@@ -22,6 +24,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace lut;
 using namespace lut::gui;
@@ -230,6 +233,75 @@ private slots:
                     bright += qGray(img.pixel(x, y)) > 110;
             QVERIFY2(bright > 15, qPrintable(QString::number(bright)));
         }
+    }
+
+    void waveformAndVectorscopeCountThePreviewPixels() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.resize(1480, 920);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        w.waitForPreview();
+        const auto frame = w.currentFrame();
+        QVERIFY(frame && frame->proxyFactor == 1);
+        const QImage& d = frame->display;
+        const Scopes& s = w.scopesView()->scopes();
+        QCOMPARE(s.pixels, std::uint64_t(d.width()) * d.height());
+        // The waveform: per column (x * 256 / width), the luma level in 16-bit fixed point; the
+        // vectorscope: Cb, Cr in 16-bit fixed point (Scopes.h), each within a level or a cell of
+        // the float64 Rec. 709 definition.
+        const int cols = 256, n = 256;
+        std::vector<std::uint32_t> wave(std::size_t(cols) * 256, 0), vec(std::size_t(n) * n, 0);
+        int farLevels = 0, farCells = 0;
+        for (int y = 0; y < d.height(); ++y) {
+            const uchar* p = d.constScanLine(y);
+            for (int x = 0; x < d.width(); ++x, p += 4) {
+                const int r = p[0], g = p[1], b = p[2];
+                const int level = (13933 * r + 46871 * g + 4732 * b + 32768) >> 16;
+                ++wave[std::size_t(x) * cols / d.width() * 256 + std::size_t(level)];
+                const int u = -7509 * r - 25259 * g + 32768 * b;
+                const int v = 32768 * r - 29763 * g - 3005 * b;
+                const int col = std::min(n - 1, (u + 8355840) / 65280);
+                const int row = n - 1 - std::min(n - 1, (v + 8355840) / 65280);
+                ++vec[std::size_t(row) * n + std::size_t(col)];
+                // The same in float64 from the Rec. 709 definitions.
+                const double luma = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+                farLevels += std::abs(level - luma) > 0.5 + 1e-3;
+                const double yp = luma / 255, cb = (b / 255.0 - yp) / 1.8556,
+                             cr = (r / 255.0 - yp) / 1.5748;
+                const int fcol = std::clamp(int(std::floor((cb + 0.5) * n)), 0, n - 1);
+                const int frow = n - 1 - std::clamp(int(std::floor((cr + 0.5) * n)), 0, n - 1);
+                farCells += std::abs(fcol - col) > 1 || std::abs(frow - row) > 1;
+            }
+        }
+        QCOMPARE(farLevels, 0);
+        QCOMPARE(farCells, 0);
+        QCOMPARE(s.columns, cols);
+        QVERIFY(s.waveform == wave);
+        QVERIFY(s.vectorscope == vec);
+        QCOMPARE(s.waveformImage.size(), QSize(cols, 256));
+        QCOMPARE(s.vectorscopeImage.size(), QSize(n, n));
+        // Both are on screen by default, and the skin-tone line is drawn at 123 degrees.
+        raiseDock(w, "dock.scopes");
+        ScopesView* view = w.scopesView();
+        QVERIFY(view->isShown(ScopesView::Kind::Waveform));
+        QVERIFY(view->isShown(ScopesView::Kind::Vectorscope));
+        QVERIFY(!view->scopeRect(ScopesView::Kind::Vectorscope).isEmpty());
+        const QImage shot = view->grab().toImage();
+        const double a = kSkinToneDegrees * std::numbers::pi / 180;
+        int skin = 0;
+        for (double t = 0.2; t < 0.45; t += 0.05) {
+            const QPoint at = view->vectorscopePoint(t * std::cos(a), t * std::sin(a)).toPoint();
+            bool found = false;
+            for (int dy = -1; dy <= 1 && !found; ++dy)
+                for (int dx = -1; dx <= 1 && !found; ++dx) {
+                    const QRgb c = shot.pixel(at + QPoint(dx, dy));
+                    found = qRed(c) > 200 && qGreen(c) > 150 && qBlue(c) > 100 && qBlue(c) < 200;
+                }
+            skin += found;
+        }
+        QVERIFY2(skin >= 4, qPrintable(QString::number(skin)));
     }
 };
 
