@@ -20,7 +20,7 @@ namespace {
 
 // The chosen curve's button in the highlight colour, bold: which curve the editor edits is never
 // a matter of telling two greys apart.
-const char* kChoiceStyle = "QPushButton { padding: 3px 6px; }"
+const char* kChoiceStyle = "QPushButton { padding: 3px 2px; }"
                            "QPushButton:checked { background: #3d8ee6; color: white; "
                            "font-weight: bold; border: 1px solid #8cc0ff; }";
 
@@ -33,6 +33,8 @@ CurvesPanel::CurvesPanel(Document* doc, QWidget* parent)
     v->setContentsMargins(6, 6, 6, 6);
     auto* grid = new QGridLayout;
     grid->setSpacing(2);
+    auto* hueRow = new QHBoxLayout; // three equal buttons: the names fit in bold
+    hueRow->setSpacing(2);
     const CurveId choices[] = {CurveId::Master,  CurveId::Red,      CurveId::Green,
                                CurveId::Blue,    CurveId::HueVsHue, CurveId::HueVsSat,
                                CurveId::HueVsLum};
@@ -50,11 +52,12 @@ CurvesPanel::CurvesPanel(Document* doc, QWidget* parent)
         if (i < 4)
             grid->addWidget(b, 0, i);
         else
-            grid->addWidget(b, 1, (i - 4) * 4 / 3, 1, i == 6 ? 2 : 1);
+            hueRow->addWidget(b, 1);
         ++i;
     }
     m_choice->button(static_cast<int>(CurveId::Master))->setChecked(true);
     v->addLayout(grid);
+    v->addLayout(hueRow);
     v->addWidget(m_editor, 1);
 
     // Hue curves: the six ranges and the selected point's amount.

@@ -182,7 +182,7 @@ void MainWindow::buildDocks() {
     tabifyDockWidget(scopesDock, historyDock);
     scopesDock->raise();
     resizeDocks({lutDock, adjustDock}, {330, 340}, Qt::Horizontal);
-    resizeDocks({lutDock, scopesDock}, {420, 300}, Qt::Vertical);
+    resizeDocks({lutDock, scopesDock}, {340, 420}, Qt::Vertical); // room for the vectorscope
     resizeDocks({adjustDock, curvesDock}, {520, 300}, Qt::Vertical);
 }
 

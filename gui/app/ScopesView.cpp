@@ -39,7 +39,7 @@ ScopesView::ScopesView(QWidget* parent) : QWidget(parent) {
         b->setText(labels[i]);
         b->setToolTip(tips[i]);
         b->setCheckable(true);
-        b->setChecked(i != 1);
+        b->setChecked(i >= 2); // the waveform and the vectorscope, as grading tools open
         b->setAutoRaise(true);
         b->setStyleSheet(QStringLiteral("QToolButton:checked { background: #3d8ee6; color: white; "
                                         "border-radius: 3px; }"));
@@ -95,26 +95,30 @@ QRectF ScopesView::scopeRect(Kind kind) const {
         return {};
     // The shown scopes share the canvas: side by side when it is wide, else stacked; the
     // vectorscope keeps its square, centred in its share.
-    int count = 0, index = 0;
+    int count = 0;
     for (int k = 0; k < 4; ++k)
-        if (isShown(static_cast<Kind>(k))) {
-            if (k == static_cast<int>(kind))
-                index = count;
-            ++count;
-        }
+        count += isShown(static_cast<Kind>(k));
     const QRectF c = canvas();
     const bool across = c.width() > c.height() * 1.6;
     const double gap = 6;
-    QRectF r;
-    if (across) {
-        const double w = (c.width() - gap * (count - 1)) / count;
-        r = QRectF(c.left() + index * (w + gap), c.top(), w, c.height());
-    } else {
-        const double h = (c.height() - gap * (count - 1)) / count;
-        r = QRectF(c.left(), c.top() + index * (h + gap), c.width(), h);
-    }
+    // The vectorscope takes the square it needs (at most an even share), the others the rest.
+    const bool vector = isShown(Kind::Vectorscope);
+    const double length = (across ? c.width() : c.height()) - gap * (count - 1);
+    const double vectorLength =
+        !vector      ? 0.0
+        : count == 1 ? length
+                     : std::min(across ? c.height() : c.width(), length * (count == 2 ? 0.5 : 0.4));
+    const double other =
+        count > (vector ? 1 : 0) ? (length - vectorLength) / (count - (vector ? 1 : 0)) : 0.0;
+    double start = 0.0;
+    for (int k = 0; k < 4 && k < static_cast<int>(kind); ++k)
+        if (isShown(static_cast<Kind>(k)))
+            start += (static_cast<Kind>(k) == Kind::Vectorscope ? vectorLength : other) + gap;
+    const double size = kind == Kind::Vectorscope ? vectorLength : other;
+    QRectF r = across ? QRectF(c.left() + start, c.top(), size, c.height())
+                      : QRectF(c.left(), c.top() + start, c.width(), size);
     if (kind == Kind::Vectorscope) {
-        const double side = std::min(r.width(), r.height());
+        const double side = std::min(r.width(), r.height()) - 2;
         r = QRectF(r.center().x() - side / 2, r.center().y() - side / 2, side, side);
     }
     return r;

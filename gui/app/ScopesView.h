@@ -2,7 +2,8 @@
 // The scopes of the preview (gui/model/Scopes.h, computed on the worker with every frame): the
 // histogram of R, G, B and luma, the RGB parade, the luma waveform (with 0, 25, 50, 75 and 100 %
 // lines) and the vectorscope (the 75 % primary and secondary targets, the skin-tone line), any of
-// them chosen with the buttons on top; the clipped pixels are counted below.
+// them chosen with the buttons on top (the waveform and the vectorscope by default); the clipped
+// pixels are counted below.
 #include "Scopes.h"
 
 #include <QWidget>
@@ -21,7 +22,7 @@ public:
     void clear();
     const Scopes& scopes() const { return m_scopes; }
     QString clipText() const;
-    // Which scopes are shown (default: histogram, waveform and vectorscope).
+    // Which scopes are shown (default: the waveform and the vectorscope).
     void setShown(Kind kind, bool on);
     bool isShown(Kind kind) const;
     // Where each shown scope is drawn (widget coordinates; empty when hidden). The vectorscope's

@@ -19,7 +19,7 @@ TaskStatus::TaskStatus(const QString& name, QWidget* parent)
     h->setSpacing(4);
     m_bar->setObjectName(name + QStringLiteral(".bar"));
     m_bar->setRange(0, 0);
-    m_bar->setMaximumWidth(120);
+    m_bar->setMaximumWidth(90);
     m_bar->setMaximumHeight(16);
     m_bar->setTextVisible(false);
     m_cancel->setObjectName(name + QStringLiteral(".cancel"));
@@ -40,11 +40,15 @@ void TaskStatus::setBusy(bool busy) {
 }
 
 void TaskStatus::setText(const QString& text) {
-    m_label->setText(text);
+    // A long file name is elided in the middle to keep the status bar's other fields; the
+    // tooltip has it whole.
+    m_text = text;
+    m_label->setText(m_label->fontMetrics().elidedText(text, Qt::ElideMiddle, 180));
+    m_label->setToolTip(text);
 }
 
 QString TaskStatus::text() const {
-    return m_label->text();
+    return m_text;
 }
 
 void TaskStatus::setFraction(double fraction) {

@@ -1,6 +1,7 @@
 #pragma once
 // A long task in the status bar: what runs ("Opening shot.png…"), how far it is (a percentage
 // once the task reports one, else a busy bar) and a Cancel button. Hidden while nothing runs.
+#include <QString>
 #include <QWidget>
 
 class QLabel;
@@ -27,6 +28,7 @@ private:
     QLabel* m_label;
     QProgressBar* m_bar;
     QToolButton* m_cancel;
+    QString m_text;
 };
 
 } // namespace lut::gui

@@ -280,7 +280,7 @@ void WindowActions::startCompare(const QString& path) {
     const CompareInput input =
         compareInput(*m_window->document(), m_window->preview()->options().target, path);
     m_compareTask->start(
-        tr("Comparing with %1…").arg(QFileInfo(path).fileName()),
+        tr("Comparing %1…").arg(QFileInfo(path).fileName()),
         [this, input](const Progress& progress) -> BackgroundTask::Delivery {
             auto c = std::make_shared<const Comparison>(compareLuts(input, &progress));
             return [this, c] {

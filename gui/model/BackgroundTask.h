@@ -33,7 +33,7 @@ public:
     // Cancels the running work and waits for it to stop (it checks within a few ms).
     ~BackgroundTask() override;
 
-    // Starts `work` (labelled e.g. "Comparing with grade.cube"); a running task is cancelled.
+    // Starts `work` (labelled e.g. "Comparing grade.cube…"); a running task is cancelled.
     void start(const QString& label, Work work, Failure failed = {});
     void cancel();
     bool isBusy() const { return m_state != nullptr; }
