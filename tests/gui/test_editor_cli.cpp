@@ -243,7 +243,8 @@ private slots:
         QVERIFY(QFileInfo::exists(preview));
         QVERIFY2(r.out.contains(QStringLiteral("task:load busy")), qPrintable(r.out));
         QVERIFY(r.out.contains(QStringLiteral("task:load idle")));
-        QVERIFY2(r.out.contains(QStringLiteral("title grade.cube[*] — shot.png")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("title grade.cube[*] — shot.png")),
+                 qPrintable(r.out));
         // Every probe: the window's own longest gap under 100 ms.
         const auto probes =
             QRegularExpression(QStringLiteral("probe longest-gap ([0-9.]+) ms own ([0-9.]+) ms"))
