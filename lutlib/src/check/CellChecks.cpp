@@ -20,7 +20,10 @@ namespace {
 constexpr std::array<std::array<int, 3>, 6> kPaths = {
     {{0, 1, 2}, {0, 2, 1}, {2, 0, 1}, {1, 0, 2}, {1, 2, 0}, {2, 1, 0}}};
 
-constexpr double kFlatDeterminant = 1e-6; // |det J| below this (output per input, cubed): flat
+// A tetrahedron is flat when one of its edges hardly moves the output (under 1e-5 per unit of
+// input) or its three edges are nearly in one plane: |det| under 1e-3 of the product of their
+// lengths (the sine of the angles they make); folded when det is below minus that.
+constexpr double kStillEdge = 1e-5, kFlatSine = 1e-3;
 
 } // namespace
 
@@ -29,6 +32,7 @@ void measureInvertibility(const Context& ctx, CheckFigures& figures, glm::vec3& 
     const int cells = ctx.cellsPerAxis();
     const double volume = std::pow(1.0 / cells, 3.0); // of a cell in normalised input, cubed
     std::vector<double> dets(static_cast<std::size_t>(cells) * cells * cells * 6);
+    std::vector<double> volumes(dets.size()); // signed, per unit of input volume
     parallelFor(cells, ctx.nthreads(), [&](int b0, int b1) {
         for (int b = b0; b < b1; ++b)
             for (int g = 0; g < cells; ++g)
@@ -45,22 +49,29 @@ void measureInvertibility(const Context& ctx, CheckFigures& figures, glm::vec3& 
                             col[axis] = next - prev;
                             prev = next;
                         }
-                        dets[base + k] = glm::dot(col[0], glm::cross(col[1], col[2])) / volume;
+                        const double l0 = glm::length(col[0]), l1 = glm::length(col[1]),
+                                     l2 = glm::length(col[2]);
+                        const double still = kStillEdge / cells;
+                        dets[base + k] =
+                            l0 < still || l1 < still || l2 < still
+                                ? 0.0
+                                : glm::dot(col[0], glm::cross(col[1], col[2])) / (l0 * l1 * l2);
+                        volumes[base + k] = dets[base + k] * l0 * l1 * l2 / volume;
                     }
                 }
     });
     // The LUT's orientation is the sign of its total volume (a negative LUT is turned over
     // everywhere, and that is one-to-one).
     double total = 0.0;
-    for (double d : dets)
-        total += d;
+    for (double v : volumes)
+        total += v;
     const double sign = total < 0.0 ? -1.0 : 1.0;
     double folded = 0.0, flat = 0.0, worst = 0.0;
     std::size_t worstCell = 0;
     for (std::size_t i = 0; i < dets.size(); ++i) {
         const double d = sign * dets[i];
         const double w = ctx.cellWeight(static_cast<std::uint32_t>(i / 6)) / 6.0;
-        if (std::fabs(d) <= kFlatDeterminant)
+        if (std::fabs(d) <= kFlatSine)
             flat += w;
         else if (d < 0.0) {
             folded += w;
