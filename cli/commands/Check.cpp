@@ -12,6 +12,8 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/pipeline/SmashShownEdit.h"
+#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <CLI/CLI.hpp>
 
@@ -164,9 +166,22 @@ int runCheck(const CheckCommandOptions& o) {
         try {
             FormatOptions read;
             read.layout = o.inLayout;
-            const LutFile file = formats::readLut(path, read, o.inFormat);
+            LutFile file = formats::readLut(path, read, o.inFormat);
             printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
-            const CheckReport report = checkLut(file, options);
+            // A game LUT is judged by the look the game shows with it.
+            const bool game = !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash
+                                                : file.format == "nutexb";
+            std::string description;
+            if (game) {
+                description = "Smash Ultimate game LUT " + std::to_string(file.toLut3D().size()) +
+                              "^3, checked as the edit the game shows";
+                LutFile shown;
+                shown.cube = smashShownEdit(file.toLut3D());
+                file = std::move(shown);
+            }
+            CheckReport report = checkLut(file, options);
+            if (game)
+                report.description = description + " (" + report.description + ")";
             CheckStatus verdict = report.status();
             const bool fails =
                 verdict == CheckStatus::Fail || (o.strict && verdict == CheckStatus::Warn);
@@ -226,6 +241,13 @@ CLI::App* setupCheck(CLI::App& app, std::function<void(const CheckCommandOptions
                     "thresholds file: lines 'NAME = WARN FAIL' (docs/check.md)")
         ->type_name("FILE");
     sub->add_flag("--json", o->json, "print the report as JSON");
+    sub->add_option("--target", o->target,
+                    std::string("what the LUT is for: ") + toString(ExtractTarget::Smash) +
+                        " = Smash Ultimate's LUT, checked as the look the game shows with it "
+                        "(default for a .nutexb); " +
+                        toString(ExtractTarget::Raw) + " = the table as it is")
+        ->type_name("NAME")
+        ->check(choicesValidator(targetChoices()));
     addInputFormat(*sub, o->inFormat);
     addLayout(*sub, "--in-layout", o->inLayout, "LUT images: the layout (default: detected)");
     addOverwriteOptions(*sub, o->overwrite);

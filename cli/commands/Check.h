@@ -25,6 +25,8 @@ struct CheckCommandOptions {
     std::string image;      // check over this picture's colours
     std::string report;     // the report picture (a folder with several LUTs)
     std::string thresholds; // a thresholds file (docs/check.md)
+    std::string target;     // raw | smash: a game LUT is checked as what the game shows
+                            // (default smash for a .nutexb)
     std::string inFormat;
     std::optional<LutLayout> inLayout;
     OutputOptions overwrite; // -y / -n for the report picture

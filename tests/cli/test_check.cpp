@@ -245,3 +245,38 @@ TEST(CliChart, WritesTheCharts) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("did you mean 'hue-saturation'"));
 }
+
+TEST(CliCheck, QuietCheckAfterWritingALut) {
+    const std::string dir = workDir();
+    const std::string folded = writeCube(dir + "/fold.cube", 17, fold);
+    const std::string neutral = writeCube(dir + "/neutral.cube", 17, same);
+    RunResult r = runCli("compose " + q(folded) + " " + q(neutral) + " " + q(dir + "/c.cube"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("warning: " + dir +
+                                 "/c.cube: check monotonicity fails: "
+                                 "fold-over"));
+    EXPECT_THAT(r.err, HasSubstr("lutkit check " + dir + "/c.cube --report"));
+    r = runCli("convert " + q(folded) + " " + q(dir + "/c.3dl"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("check monotonicity fails"));
+    // A game LUT is judged by what the game shows with it, not by its compensated numbers: the
+    // neutral one passes, the folded one fails the same way.
+    r = runCli("convert " + q(neutral) + " " + q(dir + "/n.nutexb"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, Not(HasSubstr("check")));
+    r = runCli("convert " + q(folded) + " " + q(dir + "/f.nutexb"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("check monotonicity of the edit the game shows fails"));
+    r = runCli("check " + q(dir + "/n.nutexb"));
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("checked as the edit the game shows"));
+    r = runCli("compose -q " + q(folded) + " " + q(neutral) + " " + q(dir + "/q.cube"));
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_THAT(r.err, Not(HasSubstr("check")));
+    r = runCli("compose " + q(neutral) + " " + q(neutral) + " " + q(dir + "/n.cube"));
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err, "");
+    r = runCli("invert " + q(neutral) + " " + q(dir + "/i.cube"));
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err, "");
+}
