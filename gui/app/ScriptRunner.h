@@ -14,6 +14,8 @@
 //   undo  redo  save  save-as PATH  adjustments-save PATH  adjustments-load PATH
 //   export [PATH [FORMAT [LAYOUT]]] [overwrite]   (no PATH: the export dialog's suggestion)
 //   save-preview PATH   screenshot PATH   wait   sleep MS   close
+//   check [N]                  (the Check panel raised and current, its verdict printed; with N,
+//                               finding N clicked: its colours highlighted on the picture)
 //   dialogs accept|reject      (how modal dialogs a command opens are answered: Return or Escape;
 //                               default reject)
 //   print WHAT                 (state on stdout: target input chain bloom param:KEY undo-count
