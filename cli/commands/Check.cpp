@@ -70,6 +70,7 @@ std::string figuresJson(const CheckFigures& f) {
            ", \"worst_second_difference\": " + json::number(f.worstRough) +
            ", \"total_variation_ratio\": " + json::number(f.totalVariationRatio) +
            ", \"folded_share\": " + json::number(f.foldedShare) +
+           ", \"worst_folded_at\": " + jvec(f.worstFolded) +
            ", \"flat_share\": " + json::number(f.flatShare) + ", \"neutral\": " +
            (f.neutralMeasured ? "{\"max_delta_e2000\": " + json::number(f.neutralMaxDeltaE) +
                                     ", \"mean_delta_e2000\": " + json::number(f.neutralMeanDeltaE) +

@@ -103,6 +103,16 @@ TEST(CheckDefects, FoldOverOnTheRedAxisOnly) {
     for (const CheckFinding* f : folds)
         share += f->share;
     EXPECT_NEAR(share, volume, slack) << "volume " << volume;
+    // Invertibility: folded cells, the worst one where the formula's red falls (within a cell).
+    EXPECT_GT(r.figures.foldedShare, 0.0);
+    const glm::vec3 folded = r.figures.worstFolded;
+    bool falls = false;
+    for (int d = -1; d <= 1; ++d) {
+        const double x = folded.r + d * kCell;
+        falls =
+            falls || foldRed(x + 1e-4, folded.g, folded.b) < foldRed(x - 1e-4, folded.g, folded.b);
+    }
+    EXPECT_TRUE(falls) << folded.r << " " << folded.g << " " << folded.b;
 }
 
 TEST(CheckDefects, PosterisedBandInTheBlues) {

@@ -107,7 +107,11 @@ void summarise(CheckReport& report, const CheckThresholds& t, bool oneD) {
         f.foldedShare <= 0.0 && f.flatShare <= 0.0
             ? std::string("one-to-one everywhere")
             : format("%.2f%% folded, %.2f%% flat ", 100.0 * f.foldedShare, 100.0 * f.flatShare) +
-                  of + " (no unique inverse there)";
+                  of + " (no unique inverse there)" +
+                  (f.foldedShare > 0.0
+                       ? format("; worst fold in the cell at RGB (%.3f, %.3f, %.3f)",
+                                f.worstFolded.x, f.worstFolded.y, f.worstFolded.z)
+                       : std::string());
     text(CheckKind::Neutral) =
         f.neutralMeasured
             ? format("distance from neutral: max dE2000 %.2f (%.1f 8-bit steps), mean %.2f",
@@ -139,6 +143,7 @@ CheckReport checkLut(const LutFile& file, const CheckOptions& options) {
         check::groupFlags(ctx, flags, findings, fig);
         glm::vec3 worstFolded(0.0f);
         check::measureInvertibility(ctx, fig, worstFolded);
+        fig.worstFolded = ctx.fileInput(worstFolded);
         if (file.shaper) { // the shaper's own curves, as a file of its own
             LutFile shaperOnly;
             shaperOnly.shaper = file.shaper;

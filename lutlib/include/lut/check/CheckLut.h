@@ -77,8 +77,9 @@ struct CheckFigures {
     double worstRough = 0.0;          // 8-bit steps on a 33-point lattice
     double totalVariationRatio = 1.0; // total variation / net change along the lattice lines
     // invertibility
-    double foldedShare = 0.0; // of the cube's volume (tetrahedra turned inside out)
-    double flatShare = 0.0;   // flat tetrahedra
+    double foldedShare = 0.0;    // of the cube's volume (tetrahedra turned inside out)
+    double flatShare = 0.0;      // flat tetrahedra
+    glm::vec3 worstFolded{0.0f}; // the centre of the cell folded worst (an input colour)
     // neutral (when measured)
     bool neutralMeasured = false;
     double neutralMaxDeltaE = 0.0, neutralMeanDeltaE = 0.0, neutralMaxSteps = 0.0;
