@@ -1,5 +1,5 @@
-// Oklab (lut/check/Oklab.h) against the values Björn Ottosson and CSS Color 4 publish.
-#include "lut/check/Oklab.h"
+// Oklab (lut/ops/Oklab.h) against the values Björn Ottosson and CSS Color 4 publish.
+#include "lut/ops/Oklab.h"
 
 #include <gtest/gtest.h>
 

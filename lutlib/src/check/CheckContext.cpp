@@ -2,7 +2,7 @@
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
-#include "lut/check/Oklab.h"
+#include "lut/ops/Oklab.h"
 #include "ops/OpsDetail.h"
 
 #include <glm/common.hpp>

@@ -1,7 +1,7 @@
 #include "lut/check/CheckFinding.h"
 
 #include "lut/Parallel.h"
-#include "lut/check/Oklab.h"
+#include "lut/ops/Oklab.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // with.
 #include "check/CheckDetail.h"
 
-#include "lut/check/Oklab.h"
+#include "lut/ops/Oklab.h"
 
 #include <glm/common.hpp>
 

@@ -1,4 +1,4 @@
-#include "lut/check/Oklab.h"
+#include "lut/ops/Oklab.h"
 
 #include "lut/ops/ColorDifference.h"
 

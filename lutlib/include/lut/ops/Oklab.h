@@ -1,9 +1,10 @@
 #pragma once
 // Oklab (Björn Ottosson, "A perceptual color space for image processing", 2020,
-// https://bottosson.github.io/posts/oklab/): the perceptual space lutkit's check measures hue in.
-// Values are sRGB-encoded display values, as elsewhere in lutkit's colour maths
+// https://bottosson.github.io/posts/oklab/), the perceptual space lutkit's check measures hue in.
+// srgbToOklab takes sRGB-encoded display values, as elsewhere in lutkit's colour maths
 // (lut/ops/ColorDifference.h): decoded with the sRGB curve (mirrored for negatives), then linear
-// sRGB -> LMS -> cube root -> Lab with Ottosson's published matrices. Hue is atan2(b, a) in
+// sRGB -> LMS -> cube root -> Lab with Ottosson's published matrices; linearSrgbToOklab takes
+// linear values. Hue is atan2(b, a) in
 // degrees, in [0, 360); chroma is hypot(a, b).
 #include <glm/vec3.hpp>
 
