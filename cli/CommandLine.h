@@ -10,6 +10,8 @@
 #include "commands/Apply.h"
 #include "commands/Bake.h"
 #include "commands/Bench.h"
+#include "commands/Chart.h"
+#include "commands/Check.h"
 #include "commands/Compose.h"
 #include "commands/Convert.h"
 #include "commands/Diff.h"
@@ -61,6 +63,8 @@ struct RunHooks {
     RunFn<PlotCommandOptions> plot;
     RunFn<AdjustCommandOptions> adjust;
     RunFn<MatchCommandOptions> match;
+    RunFn<CheckCommandOptions> check;
+    RunFn<ChartCommandOptions> chart;
 };
 
 class CommandLine {

@@ -23,7 +23,7 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags -Wno-unknown-warning-option" \
   -DLUTKIT_FUZZ=ON -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
 
-all=(cube strip hald nutexb cli_numbers ocio image_apply patch)
+all=(cube strip hald nutexb cli_numbers ocio image_apply patch check)
 targets=()
 for f in "${all[@]}"; do
   [ -f "$root/tests/fuzz/fuzz_$f.cpp" ] && targets+=("fuzz_$f")
@@ -35,7 +35,7 @@ echo "fuzz: build took $(( $(date +%s) - start )) s"
 # descriptions, not raw images, so their seeds are only the checked-in ones).
 seed_globs() {
   case "$1" in
-    cube) echo "*.cube" ;;
+    cube | check) echo "*.cube" ;;
     nutexb) echo "*.nutexb" ;;
     *) echo "" ;;
   esac

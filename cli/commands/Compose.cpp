@@ -4,6 +4,7 @@
 #include "LutFiles.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/ops/Compose.h"
 
@@ -28,6 +29,7 @@ int runCompose(const ComposeCommandOptions& o) {
               << "error    between lattice points, against B(A(x)): "
               << costText(r.error, r.sanitizedEntries) << "\n";
     writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity);
+    checkWrittenLut(o.output, r.lut, o.verbosity);
     return kExitOk;
 }
 

@@ -4,6 +4,7 @@
 #include "Json.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 #include "commands/Bake.h"
 
 #include "lut/formats/Bake.h"
@@ -190,6 +191,7 @@ int runConvert(const ConvertOptions& o) {
         std::cout << reportJson(o, report);
     else
         printReport(o, report);
+    checkWrittenLut(o.output, report.readBack ? *report.readBack : report.input, o.verbosity);
     return kExitOk;
 }
 

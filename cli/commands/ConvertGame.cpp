@@ -6,6 +6,7 @@
 #include "GameLut.h"
 #include "Json.h"
 #include "Usage.h"
+#include "WrittenCheck.h"
 
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/OcioFiles.h"
@@ -69,6 +70,7 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     } else {
         std::cout << text.str();
     }
+    checkWrittenLut(o.output, out, o.verbosity, true);
     return kExitOk;
 }
 

@@ -5,6 +5,7 @@
 #include "LutFiles.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -38,6 +39,7 @@ void writeOut(const ExtractOptions& o, Lut3D lut, const std::string& what) {
     const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
     printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
     std::cout << "wrote " << file.cube->size() << "^3 " << what << " LUT: " << o.output << "\n";
+    checkWrittenLut(o.output, file, o.verbosity, what == toString(ExtractTarget::Smash));
 }
 
 // No marker frame, but EDITED is a LUT image: a graded neutral (Smush-LUT's neutral.png).
@@ -71,7 +73,7 @@ int extractFromLutImage(const ExtractOptions& o, bool smash) {
     GameLutRequest q;
     q.stageLut = o.originalLut;
     q.refine = o.refine;
-    writeOut(o, makeGameLut(edit, q, o.verbosity, std::cout), "smash");
+    writeOut(o, makeGameLut(edit, q, o.verbosity, std::cout), toString(ExtractTarget::Smash));
     return kExitOk;
 }
 

@@ -3,6 +3,7 @@
 
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -47,6 +48,7 @@ int runFit(const FitOptions& o) {
     const Diagnostics wd = formats::writeLut(o.output, file, wo, o.format);
     printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
     std::cout << "wrote " << o.output << "\n";
+    checkWrittenLut(o.output, file, o.verbosity);
     return kExitOk;
 }
 

@@ -5,6 +5,7 @@
 #include "LutFiles.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
@@ -101,6 +102,7 @@ int runInvert(const InvertCommandOptions& o) {
                       << " entries\n";
             printDiagnostics(std::cout, w.diagnostics, o.verbosity);
         }
+        checkWrittenLut(o.output, out, o.verbosity);
         return kExitOk;
     }
     if (file.shaper) {
@@ -125,6 +127,7 @@ int runInvert(const InvertCommandOptions& o) {
     printReport(o, r.report, false);
     if (!o.json)
         std::cout << written.str();
+    checkWrittenLut(o.output, r.lut, o.verbosity);
     return kExitOk;
 }
 

@@ -239,6 +239,7 @@ bool FileActions::exportLut(const QString& path, const QString& format,
         QStringList lines;
         for (const auto& x : d)
             lines << QString::fromStdString(x.str());
+        lines << m_window->checkWarnings(target); // lutkit check's failing checks, if any
         showStatus(tr("Exported %1").arg(QDir::toNativeSeparators(path)));
         m_window->showNotes(lines);
     } catch (const std::exception& e) {

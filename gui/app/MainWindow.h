@@ -23,6 +23,8 @@ namespace lut::gui {
 class AdjustmentsPanel;
 class BackgroundTask;
 class TaskStatus;
+class CheckModel;
+class CheckPanel;
 class CurvesPanel;
 class Document;
 class FileActions;
@@ -48,6 +50,10 @@ public:
     PreviewView* previewView() const { return m_view; }
     LutView* lutView() const { return m_lutView; }
     ScopesView* scopesView() const { return m_scopes; }
+    CheckPanel* checkPanel() const { return m_check; }
+    // The failing checks of the LUT the preview's target exports (lutkit check), one line each:
+    // what an export of that target warns about.
+    QStringList checkWarnings(ExportTarget target) const;
 
     // false: errors go to stderr and lastError() instead of a dialog, no question is asked and
     // no setting is written (tests, --screenshot, --save-preview, scripts).
@@ -124,6 +130,8 @@ private:
     WheelsPanel* m_wheels = nullptr;
     ScopesView* m_scopes = nullptr;
     QUndoView* m_undoView = nullptr;
+    CheckModel* m_checkModel = nullptr;
+    CheckPanel* m_check = nullptr;
     FileActions* m_files = nullptr;
     WindowActions* m_actions = nullptr;
 

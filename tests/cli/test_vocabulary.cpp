@@ -88,7 +88,8 @@ const OptionEntry* findOption(const CommandEntry& c, const std::string& name) {
     return nullptr;
 }
 
-// A command line that satisfies every required argument of c, with `extra` appended.
+// A command line that satisfies every required argument of c (a name from the fixed set where
+// it has one), with `extra` appended.
 std::string minimalLine(const CommandEntry& c, const std::string& extra) {
     std::string line = c.name;
     for (const auto& o : c.options)
@@ -96,7 +97,9 @@ std::string minimalLine(const CommandEntry& c, const std::string& extra) {
             const bool number =
                 o.valueName == "INT" || o.valueName == "UINT" || o.valueName == "FLOAT";
             line += (o.positional.empty() ? " " + o.longNames.front() : std::string()) +
-                    (number ? " 2" : " x");
+                    (!o.values.empty() ? " " + o.values.front()
+                     : number          ? " 2"
+                                       : " x");
         }
     return line + " " + extra;
 }
@@ -111,7 +114,8 @@ TEST(Vocabulary, EveryCommandIsInTheTable) {
     EXPECT_EQ(names, (std::vector<std::string>{
                          "neutral", "convert", "info",   "validate", "apply", "preview", "embed",
                          "extract", "fit",     "match",  "bench",    "bake",  "diff",    "compose",
-                         "invert",  "resize",  "smooth", "mix",      "plot",  "adjust",  "help"}));
+                         "invert",  "resize",  "smooth", "mix",      "plot",  "adjust",  "check",
+                         "chart",   "help"}));
 }
 
 TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {

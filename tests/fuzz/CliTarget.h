@@ -121,6 +121,16 @@ inline lut::cli::RunHooks hooks() {
             checkInterp(m);
         return 0;
     };
+    h.check = [](const CheckCommandOptions& o) {
+        checkLayout(o.inLayout);
+        return 0;
+    };
+    h.chart = [](const ChartCommandOptions& o) {
+        checkBitDepth(o.bitDepth);
+        checkSize(o.width, 16, 16384);
+        checkSize(o.height, 16, 16384);
+        return 0;
+    };
     return h;
 }
 
