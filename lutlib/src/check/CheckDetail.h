@@ -87,7 +87,7 @@ struct Flag {
     bool point = false;      // `share` is a lattice point's (entries, second differences)
     std::int8_t ray = -1;    // the ray (rays()) when axis == -1
     std::uint8_t cellCount = 0;
-    float size = 0.0f;
+    double size = 0.0;            // double: an entry near FLT_MAX times 255 stays finite
     float share = 0.0f;           // of the cube (or picture) along `axis`
     glm::vec3 at{0.0f};           // table coordinates of the worst place
     float from = 0.0f, to = 0.0f; // kind-specific detail (fold: the values it falls between ...)

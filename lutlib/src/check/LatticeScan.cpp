@@ -334,7 +334,7 @@ void scanEntries(const Context& ctx, std::vector<Flag>& flags, CheckFigures& fig
                     f.channel = static_cast<std::int8_t>(c);
                     f.variant = e[c] > 1.0f ? 0 : 1;
                     f.point = true;
-                    f.size = over * 255.0f;
+                    f.size = double(over) * 255.0;
                     f.from = f.to = e[c];
                     f.at = glm::vec3(p) * scale;
                     pointCells(ctx, p, f);

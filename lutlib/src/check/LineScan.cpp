@@ -161,7 +161,7 @@ void scanClips(const LineSpec& line, const ClipBounds& bounds, Segments& s,
             e.at = static_cast<float>(p > 0 ? p - fracBefore : q + fracAfter);
             if (p == 0 && q < last)
                 e.at = static_cast<float>(q + fracAfter);
-            e.size = static_cast<float>(trend * length * line.step * kSteps); // range cut off
+            e.size = trend * length * line.step * kSteps; // range cut off
             e.from = bound;
             e.to = bound;
             events.push_back(e);

@@ -42,8 +42,8 @@ struct LineEvent {
     int channel = -1;
     int variant = 0;        // Clip: 0 top, 1 bottom
     int begin = 0, end = 0; // segments [begin, end); Rough: the sample is `begin`, end = begin
-    float size = 0.0f;
-    float at = 0.0f; // the worst place, in segment units from sample 0
+    double size = 0.0;      // in 8-bit steps (double: an entry near FLT_MAX times 255 stays finite)
+    float at = 0.0f;        // the worst place, in segment units from sample 0
     float from = 0.0f, to = 0.0f;
     // Clip: the share of the first and last segment of [begin, end) that is clipped.
     float firstFraction = 1.0f, lastFraction = 1.0f;

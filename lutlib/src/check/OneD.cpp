@@ -93,7 +93,7 @@ void scan1D(const Context& ctx, std::vector<CheckFinding>& findings, CheckFigure
             if (v > 1.0f + 0.5f / 255.0f || v < -0.5f / 255.0f) {
                 e.kind = FindingKind::OutOfRange;
                 e.variant = v > 1.0f ? 0 : 1;
-                e.size = (v > 1.0f ? v - 1.0f : -v) * 255.0f;
+                e.size = (v > 1.0f ? double(v) - 1.0 : -double(v)) * 255.0;
                 events.push_back(e);
                 outside += (i == 0 || i == n - 1 ? 0.5 : 1.0) * step / 3.0;
             }
