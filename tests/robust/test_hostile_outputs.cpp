@@ -1,5 +1,6 @@
-// What lutkit writes (issue 29): a new output is created exclusively, so a second writer of the
-// same new file fails naming it instead of replacing the first one's result.
+// What lutkit writes that is not a file (issue 29): reports on standard output are checked like
+// any write; a new output is created exclusively, so a second writer of the same new file fails
+// naming it instead of replacing the first one's result.
 #include "HostileSupport.h"
 
 #include "lut/Error.h"
@@ -17,6 +18,29 @@ using namespace lut::robust;
 using ::testing::HasSubstr;
 
 namespace {
+
+// `info --json`, `diff --json`, `convert --json`, `bake --json` and `validate` redirected to a
+// full disk exited 0 with an empty file: the report is output the user asked for.
+TEST(HostileOutputs, ReportsOnStandardOutputToAFullDiskAreAFailedWrite) {
+    if (!std::filesystem::exists("/dev/full"))
+        GTEST_SKIP() << "no /dev/full";
+    const std::string dir = lut::test::tempDir();
+    writeBytes(dir + "/a.cube", neutralCube(3));
+    writeBytes(dir + "/b.cube", neutralCube(4));
+    const std::string a = q(dir + "/a.cube"), b = q(dir + "/b.cube");
+    for (const std::string& args :
+         {"info " + a + " --json", "diff " + a + " " + b + " --json",
+          "convert " + a + " " + q(dir + "/c.cube") + " --json", "validate " + a,
+          "bake " + q(dir + "/baked.cube") + " --lut " + a + " --json", "info " + a}) {
+        const std::string err = dir + "/err.txt";
+        const int status =
+            std::system((q(LUTKIT_CLI) + " " + args + " >/dev/full 2>" + q(err)).c_str());
+        SCOPED_TRACE(args);
+        EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+        EXPECT_EQ(readBytes(err).substr(readBytes(err).find("lutkit: error: -:")),
+                  "lutkit: error: -: cannot write standard output: No space left on device\n");
+    }
+}
 
 // Two `lutkit convert` writing one new file: each checked that it did not exist, then wrote it.
 // Both succeeded, the second replacing the first's result without -y. Standard input holds each
