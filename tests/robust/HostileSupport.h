@@ -15,6 +15,20 @@
 
 namespace lut::robust {
 
+// Sanitizer builds (scripts/sanitize.sh, tsan.sh) keep freed memory in quarantine and add
+// shadow memory: peak memory figures mean nothing there.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kMemorySanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kMemorySanitized = true;
+#else
+constexpr bool kMemorySanitized = false;
+#endif
+#else
+constexpr bool kMemorySanitized = false;
+#endif
+
 inline std::string q(const std::string& s) {
     return "'" + s + "'";
 }

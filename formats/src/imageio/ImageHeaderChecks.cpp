@@ -10,6 +10,7 @@
 #include "lut/io/InputFile.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -205,6 +206,17 @@ std::string sniffImageFormat(const HeaderBytes& b, const std::string& nameOrForm
         return "iff";
     if (starts("BM", 2))
         return "bmp";
+    if (h.size() >= 3 && h[0] == 'P' && h[1] >= '1' && h[1] <= '7' &&
+        std::isspace(static_cast<unsigned char>(h[2])))
+        return "pnm";
+    // Formats OpenImageIO reads that have no scanner here: known by their magic numbers (so
+    // standard input may be one), held to the pixel limit once OpenImageIO has read the header.
+    if (starts("\x01\xda", 2) || starts("\x80\x2a\x5f\xd7", 4) || starts("\xd7\x5f\x2a\x80", 4) ||
+        starts("DDS ", 4) || starts("\x53\x80\xf6\x34", 4) || starts("SIMPLE  =", 9) ||
+        starts("\xff\x4f\xff\x51", 4) || starts("\0\0\0\x0cjP  ", 8) ||
+        starts("\x2f\x08\x67\xab", 4) || starts("\xab\x67\x08\x2f", 4) ||
+        (h.size() >= 12 && h.compare(4, 4, "ftyp") == 0))
+        return "other";
     // TGA has no magic number: its name, the named format, or the TGA 2.0 footer.
     std::string ext = nameOrFormat.find('.') == std::string::npos ? "." + nameOrFormat
                                                                   : extensionOf(nameOrFormat);
@@ -240,6 +252,13 @@ DeclaredImage scanImageHeader(const HeaderBytes& b, const std::string& format,
         return scanIff(b, path);
     if (format == "bmp")
         return scanBmp(b, path);
+    if (format == "pnm")
+        return scanPnm(b, path);
+    if (format == "other") {
+        DeclaredImage d;
+        d.format = format;
+        return d;
+    }
     if (format == "targa")
         return scanTga(b, path);
     return {};

@@ -70,6 +70,7 @@ DeclaredImage scanBmp(const HeaderBytes& b, const std::string& path);
 DeclaredImage scanTga(const HeaderBytes& b, const std::string& path);
 DeclaredImage scanHdr(const HeaderBytes& b, const std::string& path);
 DeclaredImage scanWebp(const HeaderBytes& b, const std::string& path);
+DeclaredImage scanPnm(const HeaderBytes& b, const std::string& path);
 DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path);
 DeclaredImage scanPsd(const HeaderBytes& b, const std::string& path);
 DeclaredImage scanDpx(const HeaderBytes& b, const std::string& path);

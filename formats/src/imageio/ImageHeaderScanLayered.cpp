@@ -180,52 +180,75 @@ DeclaredImage scanPsd(const HeaderBytes& b, const std::string& path) {
     return d;
 }
 
-// DPX (SMPTE 268M): "SDPX" big-endian or "XPDS" little-endian; the image header (byte 768) gives
-// the pixels per line and lines, its first element the descriptor (the components), the bit
-// depth, the packing, the encoding and where its data starts. Uncompressed: the data must hold
-// every line (10-bit samples filled three to a 32-bit word, 12-bit ones in 16 bits). A 2 KB file
-// claiming 32704x32704 made OpenImageIO ask for 4.3 GB (found by fuzz_image_apply).
+// DPX (SMPTE 268M): "SDPX" big-endian or "XPDS" little-endian; the generic header gives the size
+// of the user data (at byte 2048), the image header (byte 768) the number of image elements
+// (OpenImageIO's subimages, at most 8), the pixels per line and lines, and each element (72 bytes
+// from byte 780) its descriptor (the components), bit depth, packing, encoding and where its data
+// starts. Uncompressed: the data must hold every line (10-bit samples filled three to a 32-bit
+// word, 12-bit ones in 16 bits). OpenImageIO allocates the user data whole when it opens the
+// file: a 9 KB file whose user data size said 2 GB took 14 GB (found by fuzz_image_apply), one
+// saying 4 GB aborted; a 2 KB file claiming 32704x32704 made it ask for 4.3 GB. Run-length
+// encoded elements are refused: OpenImageIO 2.4 does not decode them, but sized a row buffer
+// from the width first (a 268435456-pixel line: 384 GB asked for).
 DeclaredImage scanDpx(const HeaderBytes& b, const std::string& path) {
-    (void)path;
     DeclaredImage d;
     d.format = "dpx";
     const bool big = b.get(0, 4) == "SDPX";
     auto num = [&](std::uint64_t at, int n) { return big ? b.be(at, n) : b.le(at, n); };
     if (b.size() < 812)
         return d;
+    constexpr std::uint64_t kUserDataAt = 2048;
+    const std::uint64_t user = num(32, 4);
+    if (user != 0 && user != 0xFFFFFFFFu && b.whole() &&
+        (b.size() < kUserDataAt || user > b.size() - kUserDataAt))
+        pastEnd(path, "DPX user data (its size at byte 32)", user,
+                b.size() > kUserDataAt ? b.size() - kUserDataAt : 0);
     const std::uint64_t w = num(772, 4), h = num(776, 4);
-    const int descriptor = b.byte(800), bits = b.byte(803);
-    const std::uint64_t packing = num(804, 2), encoding = num(806, 2);
-    std::uint64_t offset = num(808, 4);
-    if (offset == 0 || offset == 0xFFFFFFFFu)
-        offset = num(4, 4);
-    int comps = 1;
-    if (descriptor == 50 || descriptor == 102)
-        comps = 3;
-    else if (descriptor == 51 || descriptor == 52 || descriptor == 103)
-        comps = 4;
-    else if (descriptor == 100)
-        comps = 2;
-    else if (descriptor == 101)
-        comps = 3;
-    else if (descriptor >= 150 && descriptor <= 156)
-        comps = descriptor - 148;
-    std::uint64_t rowBytes = 0;
-    if (bits == 10 && packing != 0)
-        rowBytes = ceilDiv(w * static_cast<std::uint64_t>(comps), 3) * 4;
-    else if (bits == 12 && packing != 0)
-        rowBytes = w * static_cast<std::uint64_t>(comps) * 2;
-    else
-        rowBytes = w * static_cast<std::uint64_t>(comps) * static_cast<std::uint64_t>(bits) / 8;
-    DeclaredPart p;
-    p.width = w;
-    p.height = h;
-    p.channels = comps;
-    p.storedBytes = rowBytes * h;
-    p.dataBytes = offset < b.size() ? b.size() - offset : 0;
-    p.maxRatio = encoding == 1 ? 0.0 : 1.0; // run-length DPX: OpenImageIO refuses it anyway
-    p.codec = encoding == 1 ? "run-length DPX" : "uncompressed";
-    d.parts.push_back(p);
+    const std::uint64_t declared = num(770, 2);
+    if (declared > 8)
+        throw Error(path + ": DPX header declares " + std::to_string(declared) +
+                    " image elements (at most 8): corrupt");
+    const std::uint64_t elements = std::clamp<std::uint64_t>(declared, 1, 8);
+    for (std::uint64_t e = 0; e < elements; ++e) {
+        const std::uint64_t at = 780 + 72 * e;
+        const int descriptor = b.byte(at + 20), bits = b.byte(at + 23);
+        const std::uint64_t packing = num(at + 24, 2), encoding = num(at + 26, 2);
+        std::uint64_t offset = num(at + 28, 4);
+        if (offset == 0 || offset == 0xFFFFFFFFu)
+            offset = num(4, 4);
+        if (encoding == 1)
+            throw Error(path + ": DPX image element " + std::to_string(e + 1) +
+                        " is run-length encoded, which OpenImageIO's DPX reader does not decode");
+        int comps = 1;
+        if (descriptor == 50 || descriptor == 102)
+            comps = 3;
+        else if (descriptor == 51 || descriptor == 52 || descriptor == 103)
+            comps = 4;
+        else if (descriptor == 100)
+            comps = 2;
+        else if (descriptor == 101)
+            comps = 3;
+        else if (descriptor >= 150 && descriptor <= 156)
+            comps = descriptor - 148;
+        std::uint64_t rowBytes = 0;
+        if (bits == 10 && packing != 0)
+            rowBytes = ceilDiv(w * static_cast<std::uint64_t>(comps), 3) * 4;
+        else if (bits == 12 && packing != 0)
+            rowBytes = w * static_cast<std::uint64_t>(comps) * 2;
+        else
+            rowBytes = w * static_cast<std::uint64_t>(comps) * static_cast<std::uint64_t>(bits) / 8;
+        DeclaredPart p;
+        if (elements > 1)
+            p.what = "image element " + std::to_string(e + 1);
+        p.width = w;
+        p.height = h;
+        p.channels = comps;
+        p.storedBytes = rowBytes * h;
+        p.dataBytes = offset < b.size() ? b.size() - offset : 0;
+        p.maxRatio = 1.0;
+        p.codec = "uncompressed";
+        d.parts.push_back(p);
+    }
     return d;
 }
 

@@ -7,6 +7,7 @@
 #include "lut/Error.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 
@@ -336,6 +337,51 @@ DeclaredImage scanWebp(const HeaderBytes& b, const std::string& path) {
     d.parts.push_back(part(w, h, 4, w * h * 4, b.size(), lossless ? 65536.0 : 32768.0,
                            lossless ? "lossless WebP" : "WebP"));
     d.decoderBytes = w * h * 4;
+    return d;
+}
+
+// PNM (Netpbm): "P5"/"P6" (binary grey, RGB; also the ASCII P1-P3 and P4, P7 OpenImageIO
+// reads), then width, height and, but for bitmaps, maxval as text. Binary samples are stored
+// flat (one or two bytes, P4 one bit); the native codec then wants exactly that many bytes.
+DeclaredImage scanPnm(const HeaderBytes& b, const std::string& path) {
+    (void)path;
+    DeclaredImage d;
+    d.format = "pnm";
+    const int kind = b.byte(1) - '0';
+    const std::string head = b.get(0, 4096);
+    std::uint64_t v[3] = {0, 0, 1};
+    std::size_t i = 2;
+    const int fields = kind == 1 || kind == 4 ? 2 : 3;
+    for (int k = 0; k < fields; ++k) {
+        for (;;) { // blanks and comments
+            while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i])))
+                ++i;
+            if (i < head.size() && head[i] == '#') {
+                while (i < head.size() && head[i] != '\n')
+                    ++i;
+                continue;
+            }
+            break;
+        }
+        if (i >= head.size() || !std::isdigit(static_cast<unsigned char>(head[i])))
+            return d; // the codec says what is wrong (P7's header is not numbers)
+        v[k] = 0;
+        while (i < head.size() && std::isdigit(static_cast<unsigned char>(head[i])) &&
+               v[k] < (std::uint64_t(1) << 32))
+            v[k] = v[k] * 10 + static_cast<std::uint64_t>(head[i++] - '0');
+    }
+    const std::uint64_t w = v[0], h = v[1], bytes = v[2] > 255 ? 2 : 1;
+    const int channels = kind == 3 || kind == 6 ? 3 : 1;
+    const std::uint64_t data = b.size() > i + 1 ? b.size() - i - 1 : 0;
+    if (kind == 5 || kind == 6)
+        d.parts.push_back(part(w, h, channels, w * h * static_cast<std::uint64_t>(channels) * bytes,
+                               data, 1.0, "uncompressed"));
+    else if (kind == 4)
+        d.parts.push_back(part(w, h, 1, h * ceilDiv(w, 8), data, 1.0, "uncompressed"));
+    else // ASCII: a sample takes a digit and a blank at least (a P1 bit: one character)
+        d.parts.push_back(part(w, h, channels,
+                               w * h * static_cast<std::uint64_t>(channels) * (kind == 1 ? 1 : 2),
+                               data, 1.0, "ASCII"));
     return d;
 }
 

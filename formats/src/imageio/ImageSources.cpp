@@ -72,7 +72,7 @@ std::string readImageStream(const std::string& named) {
             }
             if (d.format.empty() && named.empty())
                 throw Error("-: standard input is not an image lutkit reads (no PNG, JPEG, TIFF, "
-                            "OpenEXR, DPX, PSD, GIF, BMP, HDR, WebP or IFF header; name the "
+                            "OpenEXR, DPX, PSD, GIF, BMP, HDR, WebP, IFF or PNM header; name the "
                             "format of a TGA or another one with --in-format)");
             const std::uint64_t most = plausibleFileBytes(d);
             if (most == 0)
