@@ -279,9 +279,10 @@ TEST(Vocabulary, NotANumberAndInfinityAreBadUsageForEveryNumberOption) {
                 EXPECT_EQ(r.exitCode, 2) << r.err;
                 // A range check says so first for the infinities; NaN passes every range.
                 const bool nan = std::string(value) == "nan" || std::string(value) == "NaN";
-                if (nan || r.err.find("not in range") == std::string::npos)
+                if (nan || r.err.find("not in range") == std::string::npos) {
                     EXPECT_THAT(r.err, HasSubstr("value " + std::string(value) +
                                                  " is not a finite number"));
+                }
             }
             ++checked;
         }
