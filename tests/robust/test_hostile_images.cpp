@@ -254,6 +254,12 @@ std::vector<Lying> lyingHeaders() {
     files.push_back({"big.ppm", std::string("P6\n16000 16000\n255\nabc"),
                      "declares 16000x16000 pixels (768000000 bytes as stored) in 3 bytes of PNM "
                      "data, more than uncompressed data can hold (at most 1:1)"});
+    // GIF whose version is garbage ("GIF8\x7f\x05": giflib checks "GIF" only) and whose screen is
+    // 32639x14718: the scanner took it for no GIF, OpenImageIO allocated a 1.9 GB canvas (found
+    // by fuzz_image_oiio).
+    files.push_back({"version.gif",
+                     std::string("GIF8\x7f\x05\x7f\x7f\x7e\x39\x61\x60\xea\x60\xea\0\0\0;", 19),
+                     "image is 32639x14718 with 4 channels, over the limit"});
     // PNG: interlaced 16-bit RGBA 8000x8000, its IDAT tiny, the file padded with a private chunk
     // (the old check counted the file's bytes, not the image data's: 2 GB allocated).
     std::string padded =

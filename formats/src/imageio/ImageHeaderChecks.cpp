@@ -188,7 +188,7 @@ std::string sniffImageFormat(const HeaderBytes& b, const std::string& nameOrForm
         return "png";
     if (starts("\xff\xd8\xff", 3))
         return "jpeg";
-    if (starts("GIF87a", 6) || starts("GIF89a", 6))
+    if (starts("GIF", 3)) // giflib checks these three bytes only, not the version after them
         return "gif";
     if (starts("II*\0", 4) || starts("MM\0*", 4) || starts("II+\0", 4) || starts("MM\0+", 4))
         return "tiff";
