@@ -40,8 +40,22 @@ struct Plan {
     bool unchanged = false;                  // stored values copied, the chain skipped
 };
 
+// What the chain saw outside the LUT's domain, and the values outside [0,1] an integer output
+// type clamps.
+struct ChunkStats {
+    DomainStats domain, clamped;
+    void merge(const ChunkStats& o) {
+        domain.merge(o.domain);
+        clamped.merge(o.clamped);
+    }
+};
+
 void computeChunk(const Plan& p, const PixelChain& chain, const unsigned char* src,
-                  unsigned char* dst, std::size_t pixels, DomainStats& stats) {
+                  unsigned char* dst, std::size_t pixels, ChunkStats& stats) {
+    const bool integerOut = p.out.type == PixelType::UInt8 || p.out.type == PixelType::UInt16;
+    // Half a step of the output type beyond [0,1]: what rounding alone maps to 0 or the top code,
+    // so only values the clamp changes are counted.
+    const float half = p.out.type == PixelType::UInt8 ? 0.5f / 255.0f : 0.5f / 65535.0f;
     const std::size_t inPix = static_cast<std::size_t>(p.in.channels * bytesPerSample(p.in.type));
     const std::size_t outPix =
         static_cast<std::size_t>(p.out.channels * bytesPerSample(p.out.type));
@@ -52,7 +66,10 @@ void computeChunk(const Plan& p, const PixelChain& chain, const unsigned char* s
         const unsigned char* s = src + at * inPix;
         unsigned char* d = dst + at * outPix;
         toRgba(s, p.in.type, p.in.channels, p.inMap, n, rgba.data());
-        chain.run(rgba.data(), n, &stats);
+        chain.run(rgba.data(), n, &stats.domain);
+        if (integerOut)
+            countOutsideDomain(rgba.data(), n, glm::vec3(-half), glm::vec3(1.0f + half),
+                               stats.clamped);
         for (const auto& [ci, co] : p.extras)
             copyChannel(s, p.in.type, p.in.channels, ci, d, p.out.type, p.out.channels, co, n);
         fromRgba(rgba.data(), n, d, p.out.type, p.out.channels, p.outMap);
@@ -127,7 +144,7 @@ int chunkRowsFor(const Plan& p, int srcGranularity, int sinkGranularity,
 
 // One part through the chain, read, computed and written overlapped when asked.
 void streamPart(ImageSource& src, ImageSink& sink, const Plan& p, const PixelChain& chain,
-                const ApplyImageOptions& o, DomainStats& total) {
+                const ApplyImageOptions& o, ChunkStats& total) {
     const int rows = chunkRowsFor(p, src.rowGranularity(), sink.rowGranularity(), o);
     const int chunks = (p.in.height + rows - 1) / rows;
     const std::size_t inRow = rowBytes(p.in), outRow = rowBytes(p.out);
@@ -199,7 +216,7 @@ void streamPart(ImageSource& src, ImageSink& sink, const Plan& p, const PixelCha
     std::vector<std::thread> workers;
     for (int w = 0; w < computeThreads; ++w)
         workers.emplace_back([&] {
-            DomainStats local;
+            ChunkStats local;
             try {
                 for (;;) {
                     Slot* s = nullptr;
@@ -340,7 +357,7 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
     auto sink = createImageSink(target, specs);
     report.output = plans.front().out;
     report.output.format = fmt;
-    DomainStats total;
+    ChunkStats total;
     for (std::size_t i = 0; i < plans.size(); ++i) {
         if (plans.size() > 1 || parts.size() > 1)
             src->selectPart(parts[i]); // planning left the source at the last part
@@ -350,7 +367,8 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
     }
     src->finish();
     sink->finish();
-    report.domain = total;
+    report.domain = total.domain;
+    report.clamped = total.clamped;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return report;
 }

@@ -6,6 +6,7 @@
 // LUT through an image without a float frame: lut/formats/ApplyImage.h.
 #include "lut/Error.h"
 #include "lut/Image.h"
+#include "lut/Progress.h"
 
 #include <cstdint>
 #include <memory>
@@ -88,9 +89,12 @@ std::string subimageKind(const std::string& format);
 // from its first bytes). Throws lut::Error naming the file (truncated and corrupt files too:
 // never grey pixels), LimitError for images larger than lut::limits::kMaxImagePixels or
 // declaring more pixels than their bytes can hold, refused before any pixel buffer is allocated.
-// FIFOs, devices and folders are refused before they are opened.
+// FIFOs, devices and folders are refused before they are opened. With `progress`, the rows
+// decoded so far are reported and a cancel stops the read at the next chunk of rows
+// (CancelledError naming the file). `subimage`: which image of a file that holds several
+// (kOnlyImage: the file must hold one).
 LoadedImage readImage(const std::string& path, const std::string& format = {},
-                      int subimage = kOnlyImage);
+                      const Progress* progress = nullptr, int subimage = kOnlyImage);
 // Describes subimage `subimage` (kOnlyImage: the first; info.subimages says how many there are).
 ImageInfo readImageInfo(const std::string& path, const std::string& format = {},
                         int subimage = kOnlyImage);
@@ -123,6 +127,9 @@ struct ImageWriteOptions {
     std::shared_ptr<const ImageMetadata> metadata; // copied into the file where it fits
     std::string compression;                       // "" = the format's default
     std::string format; // the format for "-" and devices ("png"; "" = from the extension)
+    // Rows written so far; a cancel stops the write at the next chunk of rows (CancelledError
+    // naming the file), the old file left as it was.
+    const Progress* progress = nullptr;
 };
 
 // Writes through lut::OutputFile (lut/io/OutputFile.h): a regular file via a temporary file
