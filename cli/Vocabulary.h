@@ -83,6 +83,12 @@ CLI::Option* addImageOutputFormat(CLI::App& sub, std::string& target, const std:
 CLI::Option* addCompression(CLI::App& sub, std::string& target);
 // --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together.
 CLI::Option* addMaxMemory(CLI::App& sub, std::string& target);
+// --subimage INT: which image of a file holding several (an OpenEXR part, a TIFF page, a GIF
+// frame; from 0). Unset: -1.
+CLI::Option* addSubimage(CLI::App& sub, int& target, const std::string& help);
+// Every FLOAT option of app and its subcommands refuses NaN and infinities as bad usage (CLI11
+// reads "nan" and "inf" as numbers, and its range checks let NaN through).
+void refuseNonFiniteNumbers(CLI::App& app);
 
 // Colour management (lut/formats/ColorTransform.h), named as ocioconvert and ociobakelut name
 // them: --config FILE, --from SPACE, --to SPACE, --look LOOKS and, for All, --lut-space SPACE,

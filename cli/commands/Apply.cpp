@@ -56,7 +56,21 @@ int runApply(const ApplyOptions& o) {
         ao.inFormat = o.inFormat;
         ao.outFormat = o.format;
         ao.threads = ctx.innerThreads();
-        const formats::ApplyImageReport r = formats::applyToImage(j.input, j.target, chain, ao);
+        ao.subimage = o.subimage;
+        // Held before anything is decoded: files in parallel stay within --max-memory.
+        ao.reserveMemory = [&ctx](std::uint64_t bytes, const std::string& what) {
+            ctx.reserveMemory(bytes, what);
+        };
+        formats::ApplyImageReport r;
+        try {
+            r = formats::applyToImage(j.input, j.target, chain, ao);
+        } catch (const formats::MultiImageError& e) {
+            throw Error(j.input + ": holds " + std::to_string(e.count()) + " images (" + e.kind() +
+                        ") and " + j.output +
+                        "'s format holds one: write .exr or .tif to keep every one, or pick "
+                        "one with --subimage N (0 to " +
+                        std::to_string(e.count() - 1) + ")");
+        }
         {
             std::lock_guard<std::mutex> lock(noteMutex);
             const std::string outside = r.domain.str(chain.domainMin(), chain.domainMax());
@@ -103,6 +117,9 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
                 "output data type: 8, 16 (half for EXR) or 32 (float) (default: the input's)");
     addCompression(*sub, o->compression);
     addMaxMemory(*sub, o->maxMemory);
+    addSubimage(*sub, o->subimage,
+                "only this image of files holding several (OpenEXR part, TIFF page, GIF frame; "
+                "from 0) (default: every one, where the output format holds them)");
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
     addThreads(*sub, o->threads);
     addColorOptions(*sub, o->color, ColorOptionSet::All);

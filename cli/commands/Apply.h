@@ -30,6 +30,7 @@ struct ApplyOptions {
     int bitDepth = 0;                   // 0 = the input's type
     std::string compression;            // "" = the input's (EXR, TIFF)
     std::string maxMemory;              // --max-memory (default half the RAM)
+    int subimage = -1;                  // --subimage: one image of a file holding several
     Interpolation interp = Interpolation::Tetrahedral;
     int threads = 0;          // 0 = all cores
     formats::ColorSpec color; // --config, --from, --to ...: the LUT runs in its own space

@@ -193,14 +193,24 @@ int runPreview(const PreviewOptions& o) {
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         const int inner = ctx.innerThreads();
         if (j.input != "-") {
-            // The frame, and the blur pyramids of the bloom stages (about one more frame).
-            const formats::ImageInfo info = formats::readImageInfo(j.input);
+            // Before anything is decoded (the header checked against the file first): the
+            // frame, the blur pyramids of the bloom stages (about one more frame) and what the
+            // format's decoder holds.
+            const formats::ImageInfo info = formats::readImageInfo(j.input, o.inFormat, o.subimage);
             ctx.reserveMemory(static_cast<std::uint64_t>(info.width) *
-                                  static_cast<std::uint64_t>(info.height) * 16u * 2u,
+                                      static_cast<std::uint64_t>(info.height) * 16u * 2u +
+                                  info.decoderBytes,
                               "the preview of a " + std::to_string(info.width) + "x" +
                                   std::to_string(info.height) + " image");
         }
-        formats::LoadedImage img = formats::readImage(j.input, o.inFormat);
+        formats::LoadedImage img;
+        try {
+            img = formats::readImage(j.input, o.inFormat, nullptr, o.subimage);
+        } catch (const formats::MultiImageError& e) {
+            throw Error(j.input + ": holds " + std::to_string(e.count()) + " images (" + e.kind() +
+                        "): pick one with --subimage N (0 to " + std::to_string(e.count() - 1) +
+                        ")");
+        }
         // Screenshot or scene: the library's rule, or what the user said.
         const SceneDecision scene =
             decideSceneKind(SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
@@ -302,6 +312,8 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     addFrames(*sub, o->frames);
     addImageFormats(*sub, o->inFormat, o->format);
     addMaxMemory(*sub, o->maxMemory);
+    addSubimage(*sub, o->subimage,
+                "the image of files holding several (OpenEXR part, TIFF page, GIF frame; from 0)");
     sub->add_option("--lut", o->lut, "grading LUT (default: neutral)")->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");

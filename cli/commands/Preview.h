@@ -27,6 +27,7 @@ struct PreviewOptions {
     std::string inFormat;               // --in-format: the image format of standard input
     std::string format;                 // --format: the image format written to standard output
     std::string maxMemory;              // --max-memory (default half the RAM)
+    int subimage = -1;                  // --subimage: one image of a file holding several
     std::string lut;                    // grading LUT (default neutral)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none

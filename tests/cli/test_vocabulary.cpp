@@ -266,6 +266,35 @@ TEST(Vocabulary, AnyBadValueIsBadUsage) {
     EXPECT_EQ(runInProcess("nosuch").exitCode, 2);
 }
 
+// CLI11 reads "nan" and "inf" as numbers and its range checks let NaN through: `lutkit mix A B
+// o.cube --strength nan` wrote a LUT of NaN, exit 0 (issue 29). Every FLOAT option of every
+// command refuses them as bad usage, the stage settings of preview too.
+TEST(Vocabulary, NotANumberAndInfinityAreBadUsageForEveryNumberOption) {
+    const auto p = programTable();
+    int checked = 0;
+    for (const auto& c : p.commands)
+        for (const auto& o : c.options) {
+            if (o.valueName != "FLOAT" || o.hidden || !o.positional.empty())
+                continue;
+            for (const char* value : {"nan", "NaN", "inf", "-inf", "infinity"}) {
+                const std::string line = minimalLine(c, o.longNames.front() + " " + value);
+                SCOPED_TRACE(line);
+                const auto r = runInProcess(line);
+                EXPECT_EQ(r.exitCode, 2) << r.err;
+                // A range check says so first for the infinities; NaN passes every range.
+                const bool nan = std::string(value) == "nan" || std::string(value) == "NaN";
+                if (nan || r.err.find("not in range") == std::string::npos) {
+                    EXPECT_THAT(r.err, HasSubstr("value " + std::string(value) +
+                                                 " is not a finite number"));
+                }
+            }
+            ++checked;
+        }
+    EXPECT_GE(checked, 4); // mix --strength, smooth --sigma, fit --smoothness, diff --max-delta-e
+    EXPECT_EQ(runInProcess("preview a.png b.png --stage vignette.strength=nan").exitCode, 2);
+    EXPECT_EQ(runInProcess("mix a.cube b.cube o.cube --strength 0.25").exitCode, 0);
+}
+
 TEST(Vocabulary, OldNamesAndSpellingsStillWork) {
     lut::cli::RunHooks h = lut::test::stubHooks();
     lut::cli::PreviewOptions seen;

@@ -40,6 +40,7 @@
 #include "Formats.h"
 #include "LutPrep.h"
 #include "image/LutImage.h"
+#include "imageio/ImageHeaderChecks.h"
 
 #include "lut/Error.h"
 #include "lut/Quantize.h"
@@ -415,6 +416,9 @@ public:
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         return readLutImage(path, options);
+    }
+    std::uint64_t maxStreamBytes(std::string_view head) const override {
+        return imageStreamBytes(head);
     }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {
