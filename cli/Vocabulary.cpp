@@ -357,6 +357,12 @@ void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outForma
         ->check(choicesValidator(c));
 }
 
+CLI::Option* addImageOutputFormat(CLI::App& sub, std::string& target, const std::string& help) {
+    return sub.add_option("--format", target, help)
+        ->type_name("NAME")
+        ->check(choicesValidator(imageFormatChoices()));
+}
+
 CLI::Option* addCompression(CLI::App& sub, std::string& target) {
     return sub
         .add_option("--compression", target,

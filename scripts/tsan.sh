@@ -13,11 +13,14 @@
 #   lutkit apply's batch and preview (a ThreadSanitizer-built lutkit)        cli_tests (CliApply.*,
 #                                                                            CliPreview.*)
 #   the editor's document model and preview rendering                       gui_model_tests
-# Not here: gui_preview_tests and gui_editor_tests, which drive the editor's preview worker
-# (gui/model/PreviewWorker.cpp). It hands each task to a QThreadPool and each delivery back with a
-# queued QMetaObject::invokeMethod; both hand-overs are synchronised inside Debian's libQt6Core,
-# which is not built with ThreadSanitizer, so each is reported as a race (75 reports in
-# gui_preview_tests, all on the task's functor, its captures and the delivery; none elsewhere).
+#   lut::Progress (cancelled from another thread), diffs, heat maps and     lutlib_tests, ops_tests,
+#   image reads and writes reporting progress and stopping                  formats_tests
+# Not here: gui_preview_tests, gui_editor_tests and gui_editor_tasks_tests, which drive the
+# editor's workers (gui/model: PreviewWorker, FileLoader, BackgroundTask). Each hands its task to a
+# QThreadPool and its delivery back with a queued QMetaObject::invokeMethod; both hand-overs are
+# synchronised inside Debian's libQt6Core, which is not built with ThreadSanitizer, so each is
+# reported as a race (75 reports in gui_preview_tests, all on the task's functor, its captures
+# and the delivery; none elsewhere).
 # Annotating the two hand-overs (__tsan_release/__tsan_acquire on a static key) removes the reports
 # on lutkit's data but leaves those on Qt's own objects (slot objects and QWaitConditions created
 # and freed on different threads), so checking the worker needs a Qt built with ThreadSanitizer or
