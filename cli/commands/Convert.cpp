@@ -86,7 +86,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
     if (r.resample)
         std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
-                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n";
+                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n"
+                  << "         max: " << r.resample->error.coverage() << "\n";
     else
         std::cout << "resample none (same size)\n";
     std::cout << "wrote    " << o.output << ": " << r.outputFormat;
@@ -96,7 +97,7 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     printDiagnostics(std::cout, r.writeDiagnostics, o.verbosity);
     if (r.storage)
         std::cout << "storage  (quantisation, written file read back): " << r.storage->str()
-                  << "\n";
+                  << (r.storage->bounded ? "\n         max: " + r.storage->coverage() : "") << "\n";
     else
         std::cout << "storage  not measured: cannot read the output back: " << r.readBackError
                   << "\n";
