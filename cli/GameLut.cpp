@@ -3,8 +3,6 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 
-#include <algorithm>
-
 namespace lut::cli {
 
 Lut3D makeGameLut(const Lut3D& edit, const GameLutRequest& q, const Verbosity& v, std::ostream& os,
@@ -22,7 +20,7 @@ Lut3D makeGameLut(const Lut3D& edit, const GameLutRequest& q, const Verbosity& v
         view = shot.view();
         o.screenshot = &view;
     }
-    o.refine = true; // always measured: the report says what --refine gives
+    o.refine = q.refine; // without --refine only what is written is computed
     SmashAuthoringResult r = authorSmashLutForEdit(edit, q.interp, o);
     const std::string stageText = q.stageLut.empty() ? "neutral" : q.stageLut;
     os << "game     the LUT that makes Smash Ultimate show this edit of its own picture (stage "
@@ -31,19 +29,21 @@ Lut3D makeGameLut(const Lut3D& edit, const GameLutRequest& q, const Verbosity& v
        << "nearest)\n";
     os << "in game  what the game shows with the 8-bit LUT vs the edited colours, over "
        << r.measuredOver << ":\n";
-    os << "         exact composition:       " << r.exactError.str()
-       << (q.refine ? "" : "  (written)") << "\n";
-    os << "         least-squares refinement: " << r.refinedError.str()
-       << (q.refine ? "  (written)" : "  (--refine writes it)") << "\n";
+    os << "         exact composition:        " << r.exactError.str()
+       << (r.refined ? "" : "  (written)") << "\n";
+    if (r.refinementComputed) {
+        os << "         least-squares refinement: " << r.refinedError.str()
+           << (r.refined ? "  (written)" : "") << "\n";
+        os << "refine   fitted on " << r.fittedOn << "; written: " << r.decision << "\n";
+    } else {
+        os << "         least-squares refinement: not computed (--refine fits it on part of the "
+              "colours and writes it if it beats the exact composition on the rest)\n";
+    }
     if (r.clampedEntries > 0)
         os << "clamped  " << r.clampedEntries << " values the game cannot reach (up to "
            << r.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
     (void)v;
-    Lut3D lut = q.refine ? r.lut : r.exact;
-    if (!q.refine)
-        for (auto& e : lut.entries())
-            for (int c = 0; c < 3; ++c)
-                e[c] = std::min(1.0f, std::max(0.0f, e[c]));
+    Lut3D lut = r.lut; // the refinement, or the exact composition clamped to [0,1]
     lut.setTitle(edit.title());
     if (out)
         *out = std::move(r);
