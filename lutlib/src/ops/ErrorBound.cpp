@@ -136,15 +136,19 @@ Axis makeAxis(double lo, double hi, int intervals, const std::vector<double>& br
     return a;
 }
 
-int pointsPerCell(const BoundOptions& o, int cells) {
+// The grid's intervals per axis: `perCell` per lattice cell when given; else as many per cell as
+// the budget allows, at least one; a lattice finer than the budget allows gets a coarser grid
+// (its boxes span several cells: a larger slope term, which the refinement then narrows).
+int gridIntervals(const BoundOptions& o, int cells) {
     if (o.perCell > 0)
-        return o.perCell;
-    if (o.constantBetweenBreaks)
-        return 1;
+        return cells * o.perCell;
     if (o.greyOnly) // a curve: up to 64 points per entry interval, at most ~2^18 in all
-        return std::clamp(static_cast<int>(262144 / std::max(1, cells)), 1, 64);
-    const double perAxis = std::cbrt(static_cast<double>(std::max<std::size_t>(o.budget, 1)));
-    return std::max(1, static_cast<int>(perAxis / cells));
+        return cells * std::clamp(static_cast<int>(262144 / std::max(1, cells)), 1, 64);
+    const int perAxis = std::max(
+        1, static_cast<int>(std::cbrt(static_cast<double>(std::max<std::size_t>(o.budget, 1)))));
+    if (o.constantBetweenBreaks)
+        return std::min(cells, perAxis);
+    return cells >= perAxis ? perAxis : cells * std::max(1, perAxis / cells);
 }
 
 void maxInto(Slopes& a, const Slopes& b) {
@@ -433,22 +437,35 @@ double refineBoxes(const DifferenceFn& fn, const BoundOptions& o, Tally& total,
 ErrorStats boundError(const DifferenceFn& fn, const BoundOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     const int cells = std::max(1, o.cells);
-    const int intervals = cells * pointsPerCell(o, cells);
+    const int intervals = gridIntervals(o, cells);
+    // Planes that would take the grid far over its budget (a 256^3 lattice's) are left out: the
+    // slope term covers the kinks between the grid's planes then, and jumps too (the difference
+    // is no longer constant in a box).
+    BoundOptions opts = o;
+    double gridPoints = 1.0;
+    for (int a = 0; a < (o.greyOnly ? 1 : 3); ++a)
+        gridPoints *= intervals + static_cast<double>(o.breaks[static_cast<std::size_t>(a)].size());
+    if (gridPoints > 16.0 * static_cast<double>(std::max<std::size_t>(o.budget, 1)) &&
+        gridPoints > std::pow(static_cast<double>(intervals), o.greyOnly ? 1.0 : 3.0)) {
+        for (auto& all : opts.breaks)
+            all.clear();
+        opts.constantBetweenBreaks = false;
+    }
     Tally total;
     std::size_t points = 0;
     if (o.greyOnly) {
-        const Axis t = makeAxis(o.lo.x, o.hi.x, intervals, o.breaks[0]);
+        const Axis t = makeAxis(o.lo.x, o.hi.x, intervals, opts.breaks[0]);
         points = t.centre.size();
-        total = boundCurve(fn, o, t);
+        total = boundCurve(fn, opts, t);
     } else {
         std::array<Axis, 3> axes;
         for (int a = 0; a < 3; ++a)
             axes[static_cast<std::size_t>(a)] =
-                makeAxis(o.lo[a], o.hi[a], intervals, o.breaks[static_cast<std::size_t>(a)]);
+                makeAxis(o.lo[a], o.hi[a], intervals, opts.breaks[static_cast<std::size_t>(a)]);
         points = axes[0].centre.size() * axes[1].centre.size() * axes[2].centre.size();
         if (o.values)
             o.values->assign(3 * points, NAN);
-        const Grid3 grid(fn, o, std::move(axes));
+        const Grid3 grid(fn, opts, std::move(axes));
         const int mz = grid.planes();
         std::mutex mutex;
         // Slabs of at least 8 planes: the halo (up to 4 planes) is recomputed by both neighbours.
@@ -463,7 +480,7 @@ ErrorStats boundError(const DifferenceFn& fn, const BoundOptions& o) {
         });
     }
     std::size_t refinedPoints = 0;
-    const double refined = refineBoxes(fn, o, total, refinedPoints);
+    const double refined = refineBoxes(fn, opts, total, refinedPoints);
     ErrorStats stats;
     stats.maxAbs = refined;
     stats.sampledMax = total.seen;
