@@ -43,7 +43,7 @@ glm::dvec3 gameDifference(const Lut3D& lut8, const glm::dvec3& s, const glm::dve
     const glm::dvec3 l = gameLookup(lut8, s);
     glm::dvec3 d;
     for (int c = 0; c < 3; ++c)
-        d[c] = gameShown(l[c], clampUnit(s[c])) - clampUnit(wanted[c]);
+        d[c] = gameShownTabulated(l[c], clampUnit(s[c])) - clampUnit(wanted[c]);
     return d;
 }
 

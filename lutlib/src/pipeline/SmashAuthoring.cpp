@@ -3,6 +3,7 @@
 #include "lut/pipeline/SmashAuthoring.h"
 
 #include "lut/Error.h"
+#include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
 #include "lut/pipeline/SmashConstants.h"
@@ -99,10 +100,11 @@ std::string decide(const GameError& exact, const GameError& refined, const std::
                       refined.meanSteps, exact.meanSteps);
     else if (refined.p99Steps > exact.p99Steps)
         std::snprintf(buf, sizeof buf, "its %s 99th percentile is higher: %.2f vs %.2f",
-                      where.c_str(), refined.p99Steps, exact.p99Steps);
+                      where.c_str(), roundUpDecimals(refined.p99Steps, 2),
+                      roundUpDecimals(exact.p99Steps, 2));
     else if (refined.maxSteps > exact.maxSteps + kMaxSlackSteps)
         std::snprintf(buf, sizeof buf, "its %s maximum is higher: %.2f vs %.2f", where.c_str(),
-                      refined.maxSteps, exact.maxSteps);
+                      roundUpDecimals(refined.maxSteps, 2), roundUpDecimals(exact.maxSteps, 2));
     else
         return {};
     return std::string("the exact composition: the refinement does not beat it (") + buf +
@@ -213,8 +215,10 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
         char buf[200];
         std::snprintf(buf, sizeof buf, "mean %.3f -> %.3f, p99 %.2f -> %.2f, max %.2f -> %.2f",
                       res.heldOutExact.meanSteps, res.heldOutRefined.meanSteps,
-                      res.heldOutExact.p99Steps, res.heldOutRefined.p99Steps,
-                      res.heldOutExact.maxSteps, res.heldOutRefined.maxSteps);
+                      roundUpDecimals(res.heldOutExact.p99Steps, 2),
+                      roundUpDecimals(res.heldOutRefined.p99Steps, 2),
+                      roundUpDecimals(res.heldOutExact.maxSteps, 2),
+                      roundUpDecimals(res.heldOutRefined.maxSteps, 2));
         res.decision = std::string("the refinement: it beats the exact composition where it was "
                                    "not fitted (held-out ") +
                        buf + " 8-bit steps)";
