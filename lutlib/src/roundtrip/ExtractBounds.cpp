@@ -290,7 +290,8 @@ ExpectedError summarise(const std::function<Bounds3(const glm::dvec3&)>& boundsA
     // centres (a steep power's largest error sits near a corner of its box) would otherwise fall
     // out of the percentile.
     addSlopeTerm(p99, m);
-    e.overall.p99Steps = summariseSteps(p99).p99Steps;
+    // (never above the maximum, which bounds every input)
+    e.overall.p99Steps = std::min(summariseSteps(p99).p99Steps, e.overall.maxSteps);
     const GameError mm = summariseSteps(mean);
     e.overall.meanSteps = mm.meanSteps;
     e.overall.count = mm.count;
