@@ -219,12 +219,13 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                     "smash: the stage's LUT the edited picture was taken with (default neutral)")
         ->type_name("FILE");
     sub->add_option("--screenshot", o->screenshot,
-                    "smash: a screenshot whose colours the error is measured and refined over "
-                    "(default: every input on a 61^3 grid)")
+                    "smash: a screenshot whose pixels the error is measured over and refined "
+                    "on (default: every input)")
         ->type_name("FILE");
     sub->add_flag("--refine", o->refine,
-                  "smash: write the least-squares refinement (best between the game's 16^3 "
-                  "points) instead of the exact composition; both are reported");
+                  "smash: also compute the least-squares refinement (best between the game's "
+                  "16^3 points) and write it if it beats the exact composition on colours it was "
+                  "not fitted on; both are reported, and which was written");
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     sub->add_option("--shaper-size,--shapersize", o->shaperSize,
                     "with --from: shaper entries when the input is HDR (default 4096)")
