@@ -8,6 +8,7 @@
 #include "Usage.h"
 
 #include "lut/formats/Nutexb.h"
+#include "lut/formats/OcioFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 
@@ -22,11 +23,15 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
         throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
     FormatOptions ro;
     ro.layout = o.inLayout;
+    if (!o.cccid.empty())
+        ro.setAttribute(formats::kOcioCccIdAttribute, o.cccid);
     const LutFile in = formats::readLut(o.input, ro, o.inFormat);
     std::ostringstream text;
     text << "read     " << o.input << ": " << in.format
          << (in.dialect.empty() ? "" : " (" + in.dialect + ")") << ", "
-         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string("1D")) << "\n";
+         << (in.shaper ? "1D shaper " + std::to_string(in.shaper->size()) + (in.cube ? ", " : "")
+                       : std::string())
+         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string()) << "\n";
     printDiagnostics(text, in.diagnostics, o.verbosity);
     text << "target   smash (" << reason << ")\n";
     GameLutRequest q;
@@ -35,7 +40,7 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     q.refine = o.refine;
     q.interp = o.interp;
     SmashAuthoringResult authored;
-    const Lut3D game = makeGameLut(in.toLut3D(), q, o.verbosity, text, &authored);
+    const Lut3D game = makeGameLut(in, q, o.verbosity, text, &authored);
     LutFile out;
     out.cube = game;
     FormatOptions wo;

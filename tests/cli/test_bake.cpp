@@ -77,8 +77,8 @@ TEST(Bake, SameAsOciobakelutOnChainsAtTheCubeSizeAskedFor) {
         GTEST_SKIP() << "ociobakelut is not installed";
     const std::string dir = workDir();
     // The files: convert --size 33 differed from ociobakelut --cubesize 33 by up to 1.0.
-    for (const char* name :
-         {"multiple_ops.clf", "nuke_3d.vf", "lut1d_lut3d_lut1d.clf", "unknown_elements.clf"}) {
+    for (const char* name : {"clf/multiple_ops.clf", "nuke_3d.vf", "clf/lut1d_lut3d_lut1d.clf",
+                             "clf/illegal/unknown_elements.clf"}) {
         SCOPED_TRACE(name);
         const std::string src = corpusPath(name);
         const std::string theirs = dir + "/ocio.cube", converted = dir + "/conv.cube",
@@ -122,7 +122,7 @@ TEST(Bake, ReportedErrorBoundsTheFileAgainstTheProcessor) {
     // The reported maximum bounds |file - processor| over every input of the table's domain:
     // measured here on 100,000 random inputs with OCIO reading the written file and the source.
     const std::string dir = workDir();
-    const std::string src = corpusPath("multiple_ops.clf"), out = dir + "/m.cube";
+    const std::string src = corpusPath("clf/multiple_ops.clf"), out = dir + "/m.cube";
     const auto r = runCli("bake --lut " + q(src) + " --cubesize 9 --json " + q(out));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto e = r.out.find("\"error\": ");
