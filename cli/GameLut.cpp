@@ -6,7 +6,6 @@
 #include "lut/formats/Registry.h"
 #include "lut/interp/Sampler.h"
 
-#include <algorithm>
 #include <memory>
 
 namespace lut::cli {
@@ -33,7 +32,7 @@ Lut3D makeGameLut(const LutFile& edit, const GameLutRequest& q, const Verbosity&
         view = shot.view();
         o.screenshot = &view;
     }
-    o.refine = true; // always measured: the report says what --refine gives
+    o.refine = q.refine; // without --refine only what is written is computed
     if (!edit.cube && !edit.shaper)
         throw Error("the edit holds no table");
     const std::string title = edit.cube ? edit.cube->title() : edit.shaper->title();
@@ -54,19 +53,21 @@ Lut3D makeGameLut(const LutFile& edit, const GameLutRequest& q, const Verbosity&
        << "nearest)\n";
     os << "in game  what the game shows with the 8-bit LUT vs the edited colours, over "
        << r.measuredOver << ":\n";
-    os << "         exact composition:       " << r.exactError.str()
-       << (q.refine ? "" : "  (written)") << "\n";
-    os << "         least-squares refinement: " << r.refinedError.str()
-       << (q.refine ? "  (written)" : "  (--refine writes it)") << "\n";
+    os << "         exact composition:        " << r.exactError.str()
+       << (r.refined ? "" : "  (written)") << "\n";
+    if (r.refinementComputed) {
+        os << "         least-squares refinement: " << r.refinedError.str()
+           << (r.refined ? "  (written)" : "") << "\n";
+        os << "refine   fitted on " << r.fittedOn << "; written: " << r.decision << "\n";
+    } else {
+        os << "         least-squares refinement: not computed (--refine fits it on part of the "
+              "colours and writes it if it beats the exact composition on the rest)\n";
+    }
     if (r.clampedEntries > 0)
         os << "clamped  " << r.clampedEntries << " values the game cannot reach (up to "
            << r.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
     (void)v;
-    Lut3D lut = q.refine ? r.lut : r.exact;
-    if (!q.refine)
-        for (auto& e : lut.entries())
-            for (int c = 0; c < 3; ++c)
-                e[c] = std::min(1.0f, std::max(0.0f, e[c]));
+    Lut3D lut = r.lut; // the refinement, or the exact composition clamped to [0,1]
     lut.setTitle(title);
     if (out)
         *out = std::move(r);

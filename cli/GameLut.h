@@ -19,13 +19,14 @@ namespace lut::cli {
 struct GameLutRequest {
     std::string stageLut;   // --original-lut: the stage's LUT ("" = neutral)
     std::string screenshot; // --screenshot: the colours that occur ("" = the input grid)
-    bool refine = false;    // --refine: ship the least-squares refinement
+    bool refine = false;    // --refine: the refinement, shipped when it wins on held-out colours
     Interpolation interp = Interpolation::Tetrahedral; // how the edit is evaluated
 };
 
 // Reads the stage LUT and the screenshot the request names, authors the game's LUT for `edit`
-// and prints what the game will show (exact composition and refinement, 8-bit display steps,
-// over which colours) to `os`. Returns the LUT to write.
+// and prints what the game will show (the exact composition and, with refine, the refinement and
+// which of the two is written and why; 8-bit display steps, over which colours) to `os`. Returns
+// the LUT to write.
 Lut3D makeGameLut(const Lut3D& edit, const GameLutRequest& request, const Verbosity& verbosity,
                   std::ostream& os, SmashAuthoringResult* result = nullptr);
 // The same for an edit given as a LUT file: a file with a 1D shaper is evaluated exactly (the

@@ -82,6 +82,8 @@ void printText(const std::string& output, const formats::BakeReport& r,
                       ? "OpenColorIO's processor"
                       : "the conversion")
               << ": " << r.error.str() << "\n";
+    if (r.error.bounded)
+        std::cout << "         max: " << r.error.coverage() << "\n";
     std::cout << "total    " << ms(r.totalSeconds) << "\n";
 }
 

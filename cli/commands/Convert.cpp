@@ -88,7 +88,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
     if (r.resample)
         std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
-                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n";
+                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n"
+                  << "         max: " << r.resample->error.coverage() << "\n";
     else
         std::cout << "resample none (same size)\n";
     std::cout << "wrote    " << o.output << ": " << r.outputFormat;
@@ -98,7 +99,7 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     printDiagnostics(std::cout, r.writeDiagnostics, o.verbosity);
     if (r.storage)
         std::cout << "storage  (quantisation, written file read back): " << r.storage->str()
-                  << "\n";
+                  << (r.storage->bounded ? "\n         max: " + r.storage->coverage() : "") << "\n";
     else
         std::cout << "storage  not measured: cannot read the output back: " << r.readBackError
                   << "\n";
@@ -238,12 +239,13 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                     "smash: the stage's LUT the edited picture was taken with (default neutral)")
         ->type_name("FILE");
     sub->add_option("--screenshot", o->screenshot,
-                    "smash: a screenshot whose colours the error is measured and refined over "
-                    "(default: every input on a 61^3 grid)")
+                    "smash: a screenshot whose pixels the error is measured over and refined "
+                    "on (default: every input)")
         ->type_name("FILE");
     sub->add_flag("--refine", o->refine,
-                  "smash: write the least-squares refinement (best between the game's 16^3 "
-                  "points) instead of the exact composition; both are reported");
+                  "smash: also compute the least-squares refinement (best between the game's "
+                  "16^3 points) and write it if it beats the exact composition on colours it was "
+                  "not fitted on; both are reported, and which was written");
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     sub->add_option("--shaper-size,--shapersize", o->shaperSize,
                     "with --from: shaper entries when the input is HDR (default 4096)")

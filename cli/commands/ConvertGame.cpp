@@ -61,10 +61,19 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
                   << ",\n \"exact\": {\"max\": " << json::number(authored.exactError.maxSteps)
                   << ", \"mean\": " << json::number(authored.exactError.meanSteps)
                   << ", \"p99\": " << json::number(authored.exactError.p99Steps)
-                  << "},\n \"refined\": {\"max\": " << json::number(authored.refinedError.maxSteps)
-                  << ", \"mean\": " << json::number(authored.refinedError.meanSteps)
-                  << ", \"p99\": " << json::number(authored.refinedError.p99Steps)
-                  << "},\n \"written\": " << json::quote(o.refine ? "refined" : "exact")
+                  << "},\n \"refined\": ";
+        if (authored.refinementComputed)
+            std::cout << "{\"max\": " << json::number(authored.refinedError.maxSteps)
+                      << ", \"mean\": " << json::number(authored.refinedError.meanSteps)
+                      << ", \"p99\": " << json::number(authored.refinedError.p99Steps)
+                      << ", \"held_out_mean\": " << json::number(authored.heldOutRefined.meanSteps)
+                      << ", \"exact_held_out_mean\": "
+                      << json::number(authored.heldOutExact.meanSteps)
+                      << ", \"fitted_on\": " << json::quote(authored.fittedOn)
+                      << ", \"decision\": " << json::quote(authored.decision) << "}";
+        else
+            std::cout << "null";
+        std::cout << ",\n \"written\": " << json::quote(authored.refined ? "refined" : "exact")
                   << ", \"clamped\": " << authored.clampedEntries
                   << ",\n \"diagnostics\": " << json::diagnostics(wd) << "}\n";
     } else {

@@ -176,8 +176,9 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
                     "patch embedded with --original-lut already holds it)")
         ->type_name("FILE");
     sub->add_flag("--refine", o->refine,
-                  "smash: write the least-squares refinement (best between the game's 16^3 "
-                  "points) instead of the exact composition; both are reported");
+                  "smash: also compute the least-squares refinement (best between the game's "
+                  "16^3 points) and write it if it beats the exact composition on colours it was "
+                  "not fitted on; both are reported, and which was written");
     sub->add_option("--size", o->size,
                     "output LUT size (default: the patch's for raw, 16 for smash and .nutexb)")
         ->check(CLI::Range(2, 256));

@@ -42,6 +42,7 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
                   << ", \"invertible\": " << (r.invertible() ? "true" : "false")
                   << ", \"max_residual\": " << json::number(r.maxResidual)
                   << ", \"mean_residual\": " << json::number(r.meanResidual)
+                  << ", \"residual\": " << json::stats(r.residual)
                   << ", \"round_trip\": " << json::stats(r.roundTrip)
                   << ", \"unreachable_by_region\": {";
         bool first = true;
@@ -62,9 +63,12 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
         std::cout << "         " << r.unreachable << " points have no exact preimage "
                   << "(least-squares answer); " << r.foldedCells
                   << (oneD ? " segments not strictly monotone" : " cells flat or folded");
-    std::cout << "\nresidual |A(inverse(y)) - y|: max " << g(r.maxResidual) << ", mean "
-              << g(r.meanResidual) << "\n"
-              << "round trip |inverse(A(x)) - x|: " << r.roundTrip.str() << "\n";
+    std::cout << "\nresidual |A(inverse(y)) - y| at the inverse's lattice points: max "
+              << g(roundUpSignificant(r.maxResidual)) << ", mean " << g(r.meanResidual) << "\n"
+              << "         over every y, between them too: " << r.residual.str() << "\n"
+              << "         max: " << r.residual.coverage() << "\n"
+              << "round trip |inverse(A(x)) - x| over every x: " << r.roundTrip.str() << "\n"
+              << "         max: " << r.roundTrip.coverage() << "\n";
     if (r.unreachable) {
         std::cout << "where    no inverse:";
         for (int i = 0; i < kRegionCount; ++i)

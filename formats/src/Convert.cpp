@@ -13,7 +13,11 @@
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
 
+#include <glm/mat3x3.hpp>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace lut::formats {
 
@@ -26,6 +30,28 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// The steepest slope of a table's interpolant: [axis][channel] = the largest |change| of the
+// channel along an edge of a cell parallel to the axis, per unit of input. Tetrahedral and
+// trilinear interpolation step along such edges, so no slope of either is steeper.
+glm::dmat3 cubeSlopes(const Lut3D& cube) {
+    glm::dmat3 out(0.0);
+    const int n = cube.size();
+    for (int axis = 0; axis < 3; ++axis) {
+        const double h = (double(cube.domainMax()[axis]) - cube.domainMin()[axis]) / (n - 1);
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    int q[3] = {r, g, b};
+                    if (++q[axis] >= n)
+                        continue;
+                    const glm::vec3 d = cube.at(q[0], q[1], q[2]) - cube.at(r, g, b);
+                    for (int c = 0; c < 3; ++c)
+                        out[axis][c] = std::max(out[axis][c], std::fabs(double(d[c])) / h);
+                }
+    }
+    return out;
 }
 
 // Compares the table handed to the writer with what the file reads back as. When both have the
@@ -42,17 +68,34 @@ ErrorStats storageError(const LutFile& written, const LutFile& back) {
                              written.shaper->domainMax() == back.shaper->domainMax()));
     if (!sameShape)
         return compareLuts(written.toLut3D(), back.toLut3D(), Interpolation::Tetrahedral);
+    // One lattice: the cubes' interpolants differ by at most their largest entry difference, and
+    // a shaper stored differently moves each lookup in the cube by at most its largest entry
+    // difference per channel, which changes the output by at most the cube's slope times that.
     ErrorAccumulator acc;
     const auto& a = written.cube->entries();
     const auto& b = back.cube->entries();
     for (std::size_t i = 0; i < a.size(); ++i)
         for (int c = 0; c < 3; ++c)
             acc.add(a[i][c], b[i][c]);
-    if (written.shaper)
+    ErrorStats s = acc.result();
+    if (written.shaper) {
+        glm::dvec3 moved(0.0);
         for (int i = 0; i < written.shaper->size(); ++i)
             for (int c = 0; c < 3; ++c)
-                acc.add((*written.shaper)[i][c], (*back.shaper)[i][c]);
-    return acc.result();
+                moved[c] = std::max(moved[c], std::fabs(double((*written.shaper)[i][c]) -
+                                                        double((*back.shaper)[i][c])));
+        if (moved != glm::dvec3(0.0)) {
+            const glm::dmat3 slope = cubeSlopes(*written.cube);
+            double worst = 0.0;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, slope[0][c] * moved[0] + slope[1][c] * moved[1] +
+                                            slope[2][c] * moved[2]);
+            s.maxAbs += worst;
+        }
+    }
+    s.bounded = true;
+    s.sampledMax = s.maxAbs;
+    return s;
 }
 
 const Format* formatNamed(const std::string& name) {

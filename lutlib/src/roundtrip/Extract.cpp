@@ -225,9 +225,11 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         at.maxSteps = res.readNoiseMax;
         at.meanSteps = res.readNoiseMean;
         at.p99Steps = res.readNoiseMax;
-        all.maxSteps = res.readNoiseMax + 0.5 * res.subLattice.maxSteps;
+        // between the strip's points: all of the sub-lattice residual for the largest values
+        // (as for every patch, ExtractBounds.cpp), half for the mean
+        all.maxSteps = res.readNoiseMax + res.subLattice.maxSteps;
         all.meanSteps = res.readNoiseMean + 0.5 * res.subLattice.meanSteps;
-        all.p99Steps = res.readNoiseMax + 0.5 * res.subLattice.p99Steps;
+        all.p99Steps = res.readNoiseMax + res.subLattice.p99Steps;
         res.expected.atLattice = at;
         res.expected.overall = all;
         res.expected.covers = "the LUT's values against Smush-LUT's model (the strip's edit is an "
@@ -251,6 +253,17 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                 shot[c] = static_cast<float>(detail::gameShown(l0[c], s[c]));
             return glm::dvec3(edit(shot));
         };
+        // The same from the display's table (within 0.0003 8-bit steps) for the expected error,
+        // which evaluates it at ~700k inputs: the authoring above keeps the exact display.
+        const std::function<glm::dvec3(const glm::dvec3&)> wantedFast = [&](const glm::dvec3& s) {
+            if (stage)
+                return glm::dvec3(edit(glm::vec3(s)));
+            const glm::vec3 l0 = original ? original->sample(glm::vec3(s)) : glm::vec3(s);
+            glm::vec3 shot;
+            for (int c = 0; c < 3; ++c)
+                shot[c] = static_cast<float>(detail::gameShownTabulated(l0[c], s[c]));
+            return glm::dvec3(edit(shot));
+        };
         SmashAuthoringOptions ao;
         ao.gameLut = stage ? nullptr : options.originalLut;
         ao.refine = options.refine;
@@ -261,6 +274,9 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         res.clampedMax = authored.clampedMax;
         res.refined = authored.refined;
         res.exactModelError = authored.exactError;
+        res.refineDecision = authored.refinementComputed ? "fitted on " + authored.fittedOn +
+                                                               "; written: " + authored.decision
+                                                         : std::string();
         res.lut = std::move(authored.lut);
         // Below half an 8-bit step the clamp cannot change a stored entry: no warning (the CLI
         // still says how many were clamped).
@@ -271,7 +287,7 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                                      "were clamped: the game cannot show those colours",
                                      double(res.clampedEntries), res.clampedMax,
                                      res.clampedMax * 255.0));
-        res.expected = detail::smashExpectedError(patch, sub, noise, rounded8(res.lut), wanted,
+        res.expected = detail::smashExpectedError(patch, sub, noise, rounded8(res.lut), wantedFast,
                                                   stage ? nullptr : options.originalLut,
                                                   res.modelError, options.nthreads);
     }
@@ -290,13 +306,13 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
             "  over all inputs, between the lattice points too: " + res.expected.overall.str());
     addNote(res, formatMessage("  made of: read error of the entries up to %.2f steps (storage, "
                                "blocks, neighbouring entries, marker cells), interpolation "
-                               "between patch entries up to %.2f (sub-lattice check), the LUT "
-                               "itself up to %.2f",
-                               res.readNoiseMax, res.subLattice.maxSteps, res.modelError.maxSteps));
-    if (res.refined)
-        addNote(res, "least-squares refinement: the game vs the patch's edit " +
-                         res.exactModelError.str() + " with the exact composition, " +
-                         res.modelError.str() + " refined");
+                               "between patch entries up to %.2f (sub-lattice check and each "
+                               "entry against its neighbours), the LUT itself up to %.2f at "
+                               "the points measured",
+                               res.readNoiseMax, res.expected.interpolationSteps,
+                               res.modelError.maxSteps));
+    if (!res.refineDecision.empty())
+        addNote(res, "least-squares refinement: " + res.refineDecision);
     return res;
 }
 

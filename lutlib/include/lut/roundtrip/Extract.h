@@ -48,6 +48,9 @@ struct ExpectedError {
     GameError atLattice; // at the output LUT's lattice points
     GameError overall;   // at every input: the lattice points and between them
     std::string covers;  // what is compared with what, in which units
+    // The largest interpolation term between the patch's entries (8-bit steps): the sub-lattice
+    // check and each entry's prediction from its neighbours.
+    double interpolationSteps = 0.0;
 };
 
 struct ExtractResult {
@@ -72,6 +75,7 @@ struct ExtractResult {
     GameError modelError;
     bool refined = false;           // smash: the LUT is the least-squares refinement
     GameError exactModelError;      // smash with refine: the exact composition's model error
+    std::string refineDecision;     // smash with refine: what it was fitted on, which was written
     std::size_t clampedEntries = 0; // smash: channel values that needed L outside [0,1]
     double clampedMax = 0.0;        // ... and the farthest one (in [0,1] units)
     std::size_t clippedValues = 0;  // channel values at 0 or 1 that were not 0 or 1 in the neutral
