@@ -54,11 +54,11 @@ glm::dvec3 fromOklab(glm::dvec3 lab) {
 }
 
 // NaN -> 0, +-Inf and beyond -> +-kMaxColorValue, as every LUT operation does (ops/OpsDetail.h).
-double sanitize(float v) {
+double sanitize(double v) {
     if (v != v)
         return 0.0;
     constexpr double m = limits::kMaxColorValue;
-    return v < -m ? -m : v > m ? m : static_cast<double>(v);
+    return v < -m ? -m : v > m ? m : v;
 }
 
 float toStored(double v) {
@@ -88,6 +88,14 @@ bool isFullStrength(const StrengthOptions& options) {
     return a.luma == 1.0 && a.chroma == 1.0;
 }
 
+glm::dvec3 blendWithStrength(glm::dvec3 from, glm::dvec3 to, const StrengthAmounts& amounts) {
+    const glm::dvec3 lx = toOklab(glm::dvec3(sanitize(from.x), sanitize(from.y), sanitize(from.z)));
+    const glm::dvec3 ly = toOklab(glm::dvec3(sanitize(to.x), sanitize(to.y), sanitize(to.z)));
+    const double tl = amounts.luma, tc = amounts.chroma;
+    return fromOklab(glm::dvec3(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
+                                lx.z + tc * (ly.z - lx.z)));
+}
+
 Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
     if (lut.empty())
         throw Error("strength: the LUT has no entries");
@@ -107,13 +115,7 @@ Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
                         continue;
                     }
                     const glm::vec3 y = lut.at(r, g, b);
-                    const glm::dvec3 lx = toOklab(glm::dvec3(x));
-                    const glm::dvec3 ly =
-                        toOklab(glm::dvec3(sanitize(y.x), sanitize(y.y), sanitize(y.z)));
-                    const double tl = amount.luma, tc = amount.chroma;
-                    const glm::dvec3 lab(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
-                                         lx.z + tc * (ly.z - lx.z));
-                    const glm::dvec3 e = fromOklab(lab);
+                    const glm::dvec3 e = blendWithStrength(glm::dvec3(x), glm::dvec3(y), amount);
                     out.at(r, g, b) = glm::vec3(toStored(e.x), toStored(e.y), toStored(e.z));
                 }
     });

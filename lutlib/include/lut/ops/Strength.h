@@ -6,6 +6,8 @@
 // per-entry RGB blend of two LUTs.
 #include "lut/Lut3D.h"
 
+#include <glm/vec3.hpp>
+
 #include <optional>
 
 namespace lut {
@@ -27,6 +29,10 @@ StrengthAmounts strengthAmounts(const StrengthOptions& options);
 
 // True when options leaves a LUT as it is (both amounts 1).
 bool isFullStrength(const StrengthOptions& options);
+
+// One colour of the blend below: `from` (what there was without the LUT) moved towards `to`
+// (what the LUT gives) by the amounts; the inputs are sanitized as below, the result is not.
+glm::dvec3 blendWithStrength(glm::dvec3 from, glm::dvec3 to, const StrengthAmounts& amounts);
 
 // Entry (r, g, b) of the result, with x the lattice input and y the LUT's entry there:
 //     Lab(x) = Oklab(decode(x)), Lab(y) = Oklab(decode(y))
