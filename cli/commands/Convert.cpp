@@ -2,6 +2,7 @@
 #include "commands/Convert.h"
 
 #include "Json.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "commands/Bake.h"
@@ -60,7 +61,11 @@ std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r)
                       : "{\"path\": " + json::quote(o.output) +
                             ", \"format\": " + json::quote(r.outputFormat) +
                             ", \"seconds\": " + json::number(r.writeSeconds) + "}")
-       << ",\n \"output_format\": " << json::quote(r.outputFormat) << ",\n \"resample\": ";
+       << ",\n \"output_format\": " << json::quote(r.outputFormat) << ",\n \"strength\": "
+       << (r.strength ? "{\"luma\": " + json::number(r.strength->luma) +
+                            ", \"chroma\": " + json::number(r.strength->chroma) + "}"
+                      : std::string("null"))
+       << ",\n \"resample\": ";
     if (r.resample)
         js << "{\"from\": " << r.resample->from << ", \"to\": " << r.resample->to
            << ", \"interp\": " << json::quote(toString(r.resample->interp))
@@ -84,6 +89,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
             !d.empty())
             std::cout << "  " << d << "\n";
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
+    if (r.strength)
+        std::cout << "strength " << strengthText(o.strength) << "\n";
     if (r.resample)
         std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
                   << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n";
@@ -129,6 +136,9 @@ int runConvert(const ConvertOptions& o) {
     if (!o.originalLut.empty() || !o.screenshot.empty() || o.refine)
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
     if (o.color.any()) {
+        if (!isFullStrength(o.strength))
+            throw UsageError("--strength does not combine with --from/--to yet: convert at the "
+                             "strength first, then bake the result");
         // The LUT in its own colour space, OpenColorIO's conversions around it, baked.
         formats::BakeOptions b;
         b.config = o.color.config;
@@ -171,6 +181,7 @@ int runConvert(const ConvertOptions& o) {
     if (!o.name.empty())
         co.write.setAttribute(formats::nutexb::kNameAttribute, o.name);
     co.interp = o.interp;
+    co.strength = o.strength;
     const formats::ConvertReport report = formats::convertLut(o.input, o.output, co);
     if (o.json)
         std::cout << reportJson(o, report);
@@ -224,6 +235,7 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--refine", o->refine,
                   "smash: write the least-squares refinement (best between the game's 16^3 "
                   "points) instead of the exact composition; both are reported");
+    addStrengthOptions(*sub, o->strength);
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     sub->add_option("--shaper-size,--shapersize", o->shaperSize,
                     "with --from: shaper entries when the input is HDR (default 4096)")
@@ -239,6 +251,7 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
+                "  lutkit convert grade.cube subtle.cube --strength 0.6 --chroma-strength 0.3\n"
                 "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
                 "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "
                 "--to sRGB");

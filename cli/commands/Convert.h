@@ -7,6 +7,7 @@
 #include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 
 #include <functional>
 #include <optional>
@@ -44,6 +45,7 @@ struct ConvertOptions {
     // (lut/formats/Bake.h), e.g. a display LUT made for sRGB turned into one for ACEScg input.
     formats::ColorSpec color;
     int shaperSize = 0;
+    StrengthOptions strength; // --strength, --luma-strength, --chroma-strength
     Verbosity verbosity;
 };
 

@@ -5,6 +5,7 @@
 
 #include "GameLut.h"
 #include "Json.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 
 #include "lut/formats/Nutexb.h"
@@ -28,6 +29,12 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
          << (in.dialect.empty() ? "" : " (" + in.dialect + ")") << ", "
          << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string("1D")) << "\n";
     printDiagnostics(text, in.diagnostics, o.verbosity);
+    Lut3D edit = in.toLut3D();
+    if (!isFullStrength(o.strength)) {
+        // The edit at the strength asked for, then made for the game: the game shows the blend.
+        edit = applyStrength(edit, o.strength);
+        text << "strength " << strengthText(o.strength) << ", of the edit\n";
+    }
     text << "target   smash (" << reason << ")\n";
     GameLutRequest q;
     q.stageLut = o.originalLut;
@@ -35,7 +42,7 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     q.refine = o.refine;
     q.interp = o.interp;
     SmashAuthoringResult authored;
-    const Lut3D game = makeGameLut(in.toLut3D(), q, o.verbosity, text, &authored);
+    const Lut3D game = makeGameLut(edit, q, o.verbosity, text, &authored);
     LutFile out;
     out.cube = game;
     FormatOptions wo;

@@ -8,6 +8,7 @@
 
 #include "Batch.h"
 #include "LutFiles.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -105,6 +106,7 @@ std::string previewFooter() {
           "  lutkit preview shot.png -o seen.png --lut grade.cube   # as Smash Ultimate shows "
           "it\n"
           "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut old.nutexb\n"
+          "  lutkit preview shot.png -o seen.png --lut grade.cube --strength 0.7\n"
           "  lutkit preview photo.png -o seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
           "  lutkit preview acescg_render.exr -o out.png --from ACEScg --lut grade.cube\n"
@@ -177,7 +179,11 @@ int runPreview(const PreviewOptions& o) {
     bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
     if (!o.lut.empty()) {
         const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
-        settings.lut = std::make_shared<const Lut3D>(file.toLut3D());
+        settings.lut = std::make_shared<const Lut3D>(
+            strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity));
+    } else if (!isFullStrength(o.strength)) {
+        throw UsageError("--strength, --luma-strength and --chroma-strength blend --lut with "
+                         "neutral: give --lut");
     }
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
@@ -301,6 +307,7 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     sub->add_option("--lut", o->lut, "grading LUT (default: neutral)")->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");
+    addStrengthOptions(*sub, o->strength);
     sub->add_option_function<std::string>(
            "--preset", [o](const std::string& v) { o->preset = parsePreset(v); },
            "the post-processing chain (default smash; also pilot, lecture)")

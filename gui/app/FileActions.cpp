@@ -210,7 +210,8 @@ bool FileActions::confirmReplace(const QString& path, bool original) {
 }
 
 bool FileActions::exportLut(const QString& path, const QString& format,
-                            const FormatOptions& options, ExportTarget target, bool overwrite) {
+                            const FormatOptions& options, ExportTarget target, bool overwrite,
+                            const StrengthOptions& strength) {
     const bool isOriginal = !m_window->document()->lutPath().isEmpty() &&
                             QFileInfo(path).absoluteFilePath() ==
                                 QFileInfo(m_window->document()->lutPath()).absoluteFilePath();
@@ -222,7 +223,8 @@ bool FileActions::exportLut(const QString& path, const QString& format,
     }
     try {
         QDir().mkpath(QFileInfo(path).absolutePath()); // the "edited" folder beside an original
-        const Diagnostics d = m_window->document()->exportLut(path, format, options, target);
+        const Diagnostics d =
+            m_window->document()->exportLut(path, format, options, target, strength);
         QStringList lines;
         for (const auto& x : d)
             lines << QString::fromStdString(x.str());
@@ -425,7 +427,7 @@ void FileActions::exportDialog() {
     ExportDialog dlg(m_window->preview()->options().target, naming, m_window);
     if (dlg.exec() != QDialog::Accepted || dlg.path().isEmpty())
         return;
-    exportLut(dlg.path(), dlg.choice().format, dlg.options(), dlg.target());
+    exportLut(dlg.path(), dlg.choice().format, dlg.options(), dlg.target(), false, dlg.strength());
 }
 
 void FileActions::savePreviewDialog() {

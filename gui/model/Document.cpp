@@ -256,9 +256,10 @@ void Document::loadAdjustmentList(const QString& path) {
 }
 
 Diagnostics Document::exportLut(const QString& path, const QString& formatName,
-                                const FormatOptions& options, ExportTarget target) const {
+                                const FormatOptions& options, ExportTarget target,
+                                const StrengthOptions& strength) const {
     LutFile file;
-    file.cube = exportTable(lutSource(), target);
+    file.cube = exportTable(lutSource(), target, strength);
     return formats::writeLut(path.toStdString(), file, options, formatName.toStdString());
 }
 
