@@ -50,8 +50,8 @@ std::optional<Choices> choicesForValidator(const std::string& validatorName);
 constexpr const char* kChoicesValidatorPrefix = "choices:";
 constexpr const char* kMovedValidatorName = "moved";
 
-// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush or hald; also
-// pilot, godot, lattice)"
+// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush, hald, reshade or
+// unity-32; also pilot, godot, lattice, unreal-32)"
 std::string unknownNameMessage(const Choices& choices, const std::string& value);
 // Validator named "choices:<kind>": accepts what choices.accept accepts.
 CLI::Validator choicesValidator(const Choices& choices);

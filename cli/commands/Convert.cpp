@@ -135,6 +135,9 @@ int runConvert(const ConvertOptions& o) {
                                        "writes the LUT as it is");
     if (!o.originalLut.empty() || !o.screenshot.empty() || o.refine)
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
+    if (o.layout)
+        if (const std::string problem = layoutSizeProblem(*o.layout, o.size); !problem.empty())
+            throw UsageError(problem);
     if (o.color.any()) {
         if (!isFullStrength(o.strength))
             throw UsageError("--strength does not combine with --from/--to yet: convert at the "
@@ -200,7 +203,8 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
         ->type_name("FILE");
     addOutputFormat(*sub, o->format);
     addInputFormat(*sub, o->inFormat);
-    addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addLayout(*sub, "--layout", o->layout,
+              "output LUT image layout (default unreal; reshade and unity-32 are 32^3, 1024x32)");
     addLayout(*sub, "--in-layout", o->inLayout, "input LUT image layout (default: detected)");
     auto* size = sub->add_option("--size", o->size,
                                  "output lattice size N, N^3 (default: the format's own, else the "
@@ -251,6 +255,7 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
+                "  lutkit convert grade.cube lut.png --layout reshade       # ReShade's LUT.fx\n"
                 "  lutkit convert grade.cube subtle.cube --strength 0.6 --chroma-strength 0.3\n"
                 "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
                 "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "

@@ -91,7 +91,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // the whole processor, instead of being resampled afterwards.
     FormatOptions readOptions = options.read;
     if (readOptions.size == 0)
-        readOptions.size = wantSize ? wantSize : writer->fixedSize();
+        readOptions.size = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     auto t0 = Clock::now();
     report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
@@ -117,7 +117,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
 
     // Resample when the output stores another lattice size.
     const int sourceSize = in.cube ? in.cube->size() : 0;
-    int targetSize = wantSize ? wantSize : writer->fixedSize();
+    int targetSize = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     if (targetSize == 0)
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
     // A Hald image holds N = L^2 only: resample once, to the size it will hold.

@@ -160,10 +160,16 @@ void ExportDialog::choiceChanged() {
     n.layout = c.layout;
     n.extension = c.extension;
     m_path->setText(suggestedExportPath(n));
-    // Strips at their natural size (16^3 = 256x16), the game's at its own; else as edited.
+    // Strips at their natural size (16^3 = 256x16; reshade and unity-32 are 32^3 only), the
+    // game's at its own; else as edited.
     const ExportTargetInfo& t = exportTargetInfo(m_target);
     const bool strip = !c.layout.isEmpty();
-    m_size->setValue(c.format == QString::fromStdString(t.format) ? t.size : strip ? 16 : 0);
+    const int fixed = strip ? layoutFixedSize(parseLayout(c.layout.toStdString())) : 0;
+    m_size->setValue(fixed                                          ? fixed
+                     : c.format == QString::fromStdString(t.format) ? t.size
+                     : strip                                        ? 16
+                                                                    : 0);
+    m_size->setEnabled(fixed == 0);
     m_bitDepth->setCurrentIndex(0);
     m_dither->setChecked(false);
     updateNote();

@@ -382,9 +382,9 @@ void FileActions::openLutDialog() {
         // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
         // agree (a heavy grade can fool it).
         QStringList items = {tr("Detect automatically")};
-        for (LutLayout l : allLayouts())
-            if (l != LutLayout::Hald)
-                items << QString::fromLatin1(toString(l));
+        const formats::ImageInfo info = formats::readImageInfo(path.toStdString());
+        for (const LayoutFit& f : layoutsForImageSize(info.width, info.height))
+            items << QString::fromLatin1(toString(f.layout));
         bool ok = false;
         const QString item = QInputDialog::getItem(
             m_window, tr("Strip layout"),
