@@ -42,6 +42,7 @@
 //     the layout (lutkit: --in-layout). Reading never swaps axes silently.
 #include "Formats.h"
 #include "LutPrep.h"
+#include "image/LayoutScore.h"
 #include "image/LutImage.h"
 
 #include "lut/Error.h"
@@ -61,64 +62,8 @@ namespace {
 
 using S = Diagnostic::Severity;
 
-constexpr double kAxisCorrelationMin = 0.75;
-// The layout of an N^2 x N strip when nothing else decides: Unreal's 256x16, and ReShade's
-// 1024x32 (the same pixel placement) for N = 32.
-LutLayout defaultStripLayout(int n) {
-    return n == layoutFixedSize(LutLayout::Reshade) ? LutLayout::Reshade : LutLayout::Pilot;
-}
 // Sums of correlations closer than this count as a tie (unreal, the default, wins ties).
 constexpr double kScoreTie = 0.05;
-
-std::string fmt2(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f", v);
-    return buf;
-}
-
-// Pearson correlation of output channel c with input index c, c = 0..2 (NaN/Inf entries skipped;
-// a constant channel correlates 0).
-struct AxisScore {
-    double corr[3] = {0, 0, 0};
-    double sum() const { return corr[0] + corr[1] + corr[2]; }
-    bool followsAxes() const {
-        return corr[0] >= kAxisCorrelationMin && corr[1] >= kAxisCorrelationMin &&
-               corr[2] >= kAxisCorrelationMin;
-    }
-    std::string str() const {
-        return "r " + fmt2(corr[0]) + ", g " + fmt2(corr[1]) + ", b " + fmt2(corr[2]);
-    }
-};
-
-AxisScore axisScore(const Lut3D& lut) {
-    AxisScore s;
-    const int n = lut.size();
-    for (int c = 0; c < 3; ++c) {
-        double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, cnt = 0;
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const double v = lut.at(r, g, b)[c];
-                    if (!std::isfinite(v))
-                        continue;
-                    const double x = c == 0 ? r : c == 1 ? g : b;
-                    sx += x;
-                    sy += v;
-                    sxx += x * x;
-                    syy += v * v;
-                    sxy += x * v;
-                    cnt += 1;
-                }
-        if (cnt < 2)
-            continue;
-        const double vx = sxx - sx * sx / cnt, vy = syy - sy * sy / cnt, cxy = sxy - sx * sy / cnt;
-        if (vx <= 0 || vy <= 1e-20 * cnt)
-            continue;
-        const double r = cxy / std::sqrt(vx * vy);
-        s.corr[c] = std::isfinite(r) ? std::max(-1.0, std::min(1.0, r)) : 0.0;
-    }
-    return s;
-}
 
 // How much the table's luminance weighs the input axes like the neutral's: the cosine between
 // the least-squares weights (w_r, w_g, w_b) of luma(out) ~ c + w . (r, g, b) and (0.2126, 0.7152,
