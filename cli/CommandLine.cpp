@@ -77,6 +77,7 @@ CommandLine::CommandLine(const RunHooks& hooks)
     setupMix(m_app, runner(hooks.mix, runMix, m_exitCode));
     setupPlot(m_app, runner(hooks.plot, runPlot, m_exitCode));
     setupAdjust(m_app, runner(hooks.adjust, runAdjust, m_exitCode));
+    setupAtlas(m_app, runner(hooks.atlas, runAtlas, m_exitCode));
 
     const std::vector<std::string> commands = commandNames(m_app);
     auto* help = m_app.add_subcommand("help", "Show the help of lutkit or of one command");

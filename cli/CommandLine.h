@@ -8,6 +8,7 @@
 // validators and conversions users get.
 #include "commands/Adjust.h"
 #include "commands/Apply.h"
+#include "commands/Atlas.h"
 #include "commands/Bake.h"
 #include "commands/Bench.h"
 #include "commands/Compose.h"
@@ -59,6 +60,7 @@ struct RunHooks {
     RunFn<MixCommandOptions> mix;
     RunFn<PlotCommandOptions> plot;
     RunFn<AdjustCommandOptions> adjust;
+    RunFn<AtlasCommandOptions> atlas;
 };
 
 class CommandLine {

@@ -128,6 +128,15 @@ Choices targetChoices() {
     return c;
 }
 
+Choices atlasActionChoices() {
+    Choices c{"atlas-action", "atlas action", {"build", "split", "info"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "build" && s != "split" && s != "info")
+            throw Error("unknown atlas action '" + s + "'");
+    };
+    return c;
+}
+
 Choices cornerChoices() {
     Choices c{"corner",
               "corner",
@@ -197,7 +206,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
     for (Choices (*make)() :
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
-          imageFormatChoices, compressionChoices, shaperChoices}) {
+          imageFormatChoices, compressionChoices, shaperChoices, atlasActionChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;

@@ -44,6 +44,7 @@ Choices bitDepthChoices();
 Choices imageFormatChoices(); // image files apply and preview read and write: png, exr, tif ...
 Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip, piz, lzw ...)
 Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
+Choices atlasActionChoices(); // lutkit atlas ACTION: build, split, info
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 

@@ -33,6 +33,7 @@ inline cli::RunHooks stubHooks() {
     h.mix = [](const cli::MixCommandOptions&) { return 0; };
     h.plot = [](const cli::PlotCommandOptions&) { return 0; };
     h.adjust = [](const cli::AdjustCommandOptions&) { return 0; };
+    h.atlas = [](const cli::AtlasCommandOptions&) { return 0; };
     return h;
 }
 

@@ -95,8 +95,9 @@ std::string minimalLine(const CommandEntry& c, const std::string& extra) {
         if (o.required) {
             const bool number =
                 o.valueName == "INT" || o.valueName == "UINT" || o.valueName == "FLOAT";
+            // a value from the fixed set where there is one (atlas ACTION)
             line += (o.positional.empty() ? " " + o.longNames.front() : std::string()) +
-                    (number ? " 2" : " x");
+                    (number ? " 2" : o.values.empty() ? " x" : " " + o.values.front());
         }
     return line + " " + extra;
 }
@@ -111,7 +112,7 @@ TEST(Vocabulary, EveryCommandIsInTheTable) {
     EXPECT_EQ(names, (std::vector<std::string>{
                          "neutral", "convert", "info",  "validate", "apply",  "preview", "embed",
                          "extract", "fit",     "bench", "bake",     "diff",   "compose", "invert",
-                         "resize",  "smooth",  "mix",   "plot",     "adjust", "help"}));
+                         "resize",  "smooth",  "mix",   "plot",     "adjust", "atlas",   "help"}));
 }
 
 TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {
