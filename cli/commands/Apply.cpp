@@ -70,7 +70,9 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
     auto* sub = app.add_subcommand(
         "apply", "Apply a LUT to the stored pixel values of images (data type, alpha, compression "
                  "and metadata kept), or in its own colour space (--from)");
-    sub->add_option("--lut", o->lut, "LUT file (any supported format)")
+    sub->add_option("--lut", o->lut,
+                    "LUT file (any supported format), or a built-in: builtin:neutral, "
+                    "builtin:smash-default")
         ->required()
         ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,

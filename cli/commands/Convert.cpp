@@ -12,6 +12,7 @@
 #include "lut/formats/Hald.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/Nutexb.h"
+#include "lut/io/BuiltinLut.h"
 #include "lut/io/FileNames.h"
 #include "lut/roundtrip/RoundtripTarget.h"
 
@@ -125,7 +126,8 @@ int runConvert(const ConvertOptions& o) {
     // A .nutexb is the game's LUT: written for the game unless asked otherwise (or copied from
     // another .nutexb).
     const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
-    const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb";
+    const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb" ||
+                        isBuiltinGameLut(o.input); // builtin:smash-default is the game's LUT
     const bool smash =
         !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash : gameOut && !gameIn;
     if (smash)
@@ -230,7 +232,8 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
         ->type_name("NAME")
         ->check(choicesValidator(targetChoices()));
     sub->add_option("--original-lut", o->originalLut,
-                    "smash: the stage's LUT the edited picture was taken with (default neutral)")
+                    "smash: the stage's LUT the edited picture was taken with (default neutral; "
+                    "a stage without its own LUT: builtin:smash-default)")
         ->type_name("FILE");
     sub->add_option("--screenshot", o->screenshot,
                     "smash: a screenshot whose colours the error is measured and refined over "

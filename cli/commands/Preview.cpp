@@ -106,6 +106,8 @@ std::string previewFooter() {
           "  lutkit preview shot.png -o seen.png --lut grade.cube   # as Smash Ultimate shows "
           "it\n"
           "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut old.nutexb\n"
+          "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut "
+          "builtin:smash-default\n"
           "  lutkit preview shot.png -o seen.png --lut grade.cube --strength 0.7\n"
           "  lutkit preview photo.png -o seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
@@ -304,7 +306,10 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     addFrames(*sub, o->frames);
     addImageFormats(*sub, o->inFormat, o->format);
     addMaxMemory(*sub, o->maxMemory);
-    sub->add_option("--lut", o->lut, "grading LUT (default: neutral)")->type_name("FILE");
+    sub->add_option("--lut", o->lut,
+                    "grading LUT (default: neutral); a file or builtin:neutral, "
+                    "builtin:smash-default")
+        ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");
     addStrengthOptions(*sub, o->strength);
@@ -323,7 +328,10 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
                   "sRGB-decoded)")
         ->excludes(shot);
     sub->add_option("--original-lut", o->originalLut,
-                    "the LUT the screenshots were taken with (default neutral)")
+                    "the LUT the screenshots were taken with (default neutral); a file or a "
+                    "built-in: a stage without its own LUT was most likely shot with "
+                    "builtin:smash-default, the game's default stage LUT as the reference "
+                    "renderer (ssbh_wgpu) has it")
         ->type_name("FILE");
     sub->add_option("--stage", o->stageSettings, "set a stage parameter (repeatable)")
         ->allow_extra_args(false)
