@@ -8,7 +8,8 @@
 #   the preview pipeline's stages (bloom, grading, display)                  pipeline_tests
 #   the parallel .cube row reader; image files (OIIO's own threads)          formats_tests
 #   the round trip's fit                                                     roundtrip_tests (Fit.*)
-#   lutkit apply's batch and preview (a ThreadSanitizer-built lutkit)        cli_tests (CliApply.*,
+#   lutkit apply's batch, preview and convert of a folder (a ThreadSanitizer  cli_tests (CliApply.*,
+#   -built lutkit)                                                           CliConvertBatch.*,
 #                                                                            CliPreview.*)
 #   the editor's document model and preview rendering                       gui_model_tests
 # Not here: gui_preview_tests and gui_editor_tests, which drive the editor's preview worker
@@ -42,7 +43,7 @@ runs=(
   "pipeline_tests:"
   "formats_tests:-CubeRead.FloatParsingMatchesFromChars"
   "roundtrip_tests:Fit.*-Fit.NaturalImageWarnsAboutCoverage"
-  "cli_tests:CliApply.*:CliPreview.*"
+  "cli_tests:CliApply.*:CliPreview.*:CliConvertBatch.*"
 )
 
 start=$(date +%s)

@@ -114,6 +114,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
 } // namespace
 
 int runConvert(const ConvertOptions& o) {
+    if (isConvertBatch(o))
+        return runConvertBatch(o);
     if (o.color.any())
         (void)formats::planColor(o.color); // a misspelt colour name is bad usage, before files
     const OutputTarget target = resolveOutput(
@@ -199,9 +201,10 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     auto o = std::make_shared<ConvertOptions>();
     auto* sub = app.add_subcommand(
         "convert", "Convert a LUT to another format, reporting the error introduced");
-    sub->add_option("IN", o->input, "input LUT file")->required()->type_name("FILE");
-    sub->add_option("OUT", o->output, "output LUT file (format from the extension)")
+    sub->add_option("IN", o->input, "input LUT file, or a folder of them (with -o DIR/)")
         ->required()
+        ->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT file (format from the extension), or -o OUT")
         ->type_name("FILE");
     addOutputFormat(*sub, o->format);
     addInputFormat(*sub, o->inFormat);
@@ -221,7 +224,9 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--dither", o->dither, "8-bit image output: ordered dither");
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_flag("--json", o->json, "print the report as JSON");
-    addOverwriteOptions(*sub, o->overwrite);
+    addOutputOptions(*sub, o->overwrite,
+                     "the output, as OUT; a folder (existing, or ending in /) for a folder IN: "
+                     "each LUT under its own name, as --format (default nutexb)");
     sub->add_option("--target", o->target,
                     std::string("what OUT is for (default: ") + toString(ExtractTarget::Smash) +
                         " for a .nutexb, else " + toString(ExtractTarget::Raw) +
@@ -262,8 +267,18 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "  lutkit convert grade.cube subtle.cube --strength 0.6 --chroma-strength 0.3\n"
                 "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
                 "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "
-                "--to sRGB");
-    sub->callback([o, onParsed] { onParsed(*o); });
+                "--to sRGB\n"
+                "  lutkit convert edited_strips/ -o stage_luts/   # every strip: a .nutexb, "
+                "each with its in-game error");
+    sub->callback([o, onParsed] {
+        if (!o->output.empty() && !o->overwrite.output.empty())
+            throw UsageError("OUT and -o both name the output: give one");
+        if (o->output.empty())
+            o->output = o->overwrite.output;
+        if (o->output.empty())
+            throw UsageError("OUT is required (or -o OUT; -o DIR/ for a folder of LUTs)");
+        onParsed(*o);
+    });
     return sub;
 }
 
