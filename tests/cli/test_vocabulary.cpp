@@ -97,7 +97,9 @@ std::string minimalLine(const CommandEntry& c, const std::string& extra) {
                 o.valueName == "INT" || o.valueName == "UINT" || o.valueName == "FLOAT";
             // a value from the fixed set where there is one (atlas ACTION)
             line += (o.positional.empty() ? " " + o.longNames.front() : std::string()) +
-                    (number ? " 2" : o.values.empty() ? " x" : " " + o.values.front());
+                    (number             ? " 2"
+                     : o.values.empty() ? " x"
+                                        : " " + o.values.front());
         }
     return line + " " + extra;
 }

@@ -1,7 +1,6 @@
 // The editor driven like a user, offscreen: open files, drag a slider, undo, export, compare the
 // exported LUT with a float64 expectation, and check the preview pixels against the pipeline and
 // (when it exists) `lutkit preview`.
-#include "../support/OklabReference.h"
 #include "GuiTestSupport.h"
 
 #include "AdjustmentsPanel.h"
@@ -22,7 +21,6 @@
 #include "lut/pipeline/SmashDisplayEdit.h"
 
 #include <QAbstractButton>
-#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -578,66 +576,6 @@ private slots:
                           QStringLiteral("tetrahedral"), QStringLiteral("--preset"),
                           QStringLiteral("filmic"), samplePath("sample_scene.png")}),
                      0);
-    }
-
-    void exportAtStrengthIsTheOklabBlend() {
-        // The export dialog's Strength (lutkit --luma-strength/--chroma-strength): the file holds
-        // the float64 Oklab blend of each entry with its input (tests/support/OklabReference.h).
-        QTemporaryDir dir;
-        MainWindow w;
-        w.setInteractiveErrors(false);
-        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
-        StrengthOptions s;
-        s.luma = 0.25;
-        s.chroma = 0.75;
-        const QString out = dir.filePath("blend.cube");
-        QVERIFY(w.exportLut(out, QStringLiteral("cube"), {}, ExportTarget::Grading, false, s));
-        const Lut3D base =
-            formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D();
-        const Lut3D back = formats::readLut(out.toStdString()).toLut3D();
-        QCOMPARE(back.size(), base.size());
-        double worst = 0;
-        const int n = base.size();
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const glm::dvec3 want =
-                        lut::test::strengthBlend(glm::dvec3(base.latticeInput(r, g, b)),
-                                                 glm::dvec3(base.at(r, g, b)), 0.25, 0.75);
-                    for (int c = 0; c < 3; ++c)
-                        worst = std::max(worst, std::abs(back.at(r, g, b)[c] - want[c]));
-                }
-        QVERIFY2(worst < 2e-6, qPrintable(QString::number(worst)));
-
-        // The dialog: the amounts it returns, and it says the file is not what the preview shows.
-        ExportDialog dlg(ExportTarget::Grading, {});
-        QVERIFY(dlg.matchesPreview());
-        dlg.setStrength(s);
-        const StrengthAmounts a = strengthAmounts(dlg.strength());
-        QCOMPARE(a.luma, 0.25);
-        QCOMPARE(a.chroma, 0.75);
-        QVERIFY(!dlg.matchesPreview());
-        auto* note = dlg.findChild<QLabel*>(QStringLiteral("note"));
-        QVERIFY(note && note->text().contains(QLatin1String("lightness 0.25")));
-        auto* apart = dlg.findChild<QCheckBox*>(QStringLiteral("separate"));
-        QVERIFY(apart && apart->isChecked());
-        apart->setChecked(false);
-        dlg.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->setValue(0.5);
-        QCOMPARE(strengthAmounts(dlg.strength()).chroma, 0.5);
-
-        // Smash at strength 0: the game's LUT for no edit, the neutral document's export.
-        const QString zero = dir.filePath("zero.nutexb");
-        StrengthOptions none;
-        none.strength = 0;
-        QVERIFY(w.exportLut(zero, QStringLiteral("nutexb"), {}, ExportTarget::Smash, false, none));
-        MainWindow neutral;
-        neutral.setInteractiveErrors(false);
-        neutral.document()->newNeutral(33);
-        const QString plain = dir.filePath("neutral.nutexb");
-        QVERIFY(neutral.exportLut(plain, QStringLiteral("nutexb"), {}, ExportTarget::Smash));
-        QFile fa(zero), fb(plain);
-        QVERIFY(fa.open(QIODevice::ReadOnly) && fb.open(QIODevice::ReadOnly));
-        QVERIFY(fa.readAll() == fb.readAll());
     }
 };
 
