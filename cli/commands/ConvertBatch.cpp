@@ -94,8 +94,9 @@ std::string convertAsItIs(const ConvertOptions& o, const std::string& format, co
 bool isConvertBatch(const ConvertOptions& o) {
     if (o.input == "-" || o.output == "-")
         return false;
-    return isDirectory(o.input) || (!o.output.empty() && o.output.back() == '/') ||
-           isDirectory(o.output);
+    // A folder IN needs a folder OUT (as -o's help says); with a file OUT it is refused as any
+    // folder given for a LUT file is ("is a directory, not a regular file").
+    return (!o.output.empty() && o.output.back() == '/') || isDirectory(o.output);
 }
 
 int runConvertBatch(const ConvertOptions& o) {

@@ -131,4 +131,10 @@ TEST(CliConvertBatch, UsageAndEmptyFolders) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     r = runCli("convert '" + dir + "/in/a.png'");
     EXPECT_EQ(r.exitCode, 2) << r.err;
+    // A folder IN with a file OUT is a folder given for a LUT file: refused (robust_tests
+    // SpecialFiles: "is a directory" for folder.cube), nothing written.
+    r = runCli("convert '" + dir + "/in' '" + dir + "/one.cube'");
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(dir + "/in: "), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/one.cube"));
 }

@@ -116,7 +116,7 @@ TEST(GeneratedDocs, ManPageNamesEveryCommandAndOptionAndRenders) {
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.out, "") << "warnings from man/groff";
     const Shell text = sh("MANWIDTH=100 man -l '" + path + "' 2>/dev/null");
-    EXPECT_THAT(text.out, HasSubstr("lutkit convert [OPTIONS] IN OUT"));
+    EXPECT_THAT(text.out, HasSubstr("lutkit convert [OPTIONS] IN [OUT]"));
 }
 
 TEST(GeneratedDocs, CompletionScriptsNameEveryCommandAndOption) {
