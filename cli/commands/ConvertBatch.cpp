@@ -94,9 +94,12 @@ std::string convertAsItIs(const ConvertOptions& o, const std::string& format, co
 bool isConvertBatch(const ConvertOptions& o) {
     if (o.input == "-" || o.output == "-")
         return false;
-    // A folder IN needs a folder OUT (as -o's help says); with a file OUT it is refused as any
-    // folder given for a LUT file is ("is a directory, not a regular file").
-    return (!o.output.empty() && o.output.back() == '/') || isDirectory(o.output);
+    // OUT ending in / is a folder; an existing folder is one for a folder IN only. A folder IN
+    // with a file OUT is refused as any folder given for a LUT file is ("is a directory, not a
+    // regular file"), a file IN with an existing folder OUT as any folder in a file's place
+    // ("is a folder, not a file": robust_tests NothingLost).
+    return (!o.output.empty() && o.output.back() == '/') ||
+           (isDirectory(o.input) && isDirectory(o.output));
 }
 
 int runConvertBatch(const ConvertOptions& o) {

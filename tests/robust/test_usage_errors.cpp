@@ -59,6 +59,7 @@ TEST(UsageErrors, AnUnknownValueExitsTwoInEveryCommand) {
         {"mix", "mix -y " + d + "a.cube' " + d + "a.cube' " + d + "mx.cube' --strength 0.5"},
         {"plot", "plot -y " + d + "a.cube' " + d + "pl.png'"},
         {"adjust", "adjust -y " + d + "a.cube' --adjustments " + d + "adj.txt' " + d + "ad.cube'"},
+        {"atlas", "atlas build -y " + d + "a.cube' -o " + d + "at.png' --size 3 --layout unreal"},
     };
     // Values that are files, folders or free text are not words from a set.
     const std::set<std::string> notWords = {"FILE", "DIR", "TEXT", "PATH", "NAME"};
