@@ -19,6 +19,7 @@
 #include "commands/Fit.h"
 #include "commands/Info.h"
 #include "commands/Invert.h"
+#include "commands/Match.h"
 #include "commands/Mix.h"
 #include "commands/Neutral.h"
 #include "commands/Plot.h"
@@ -60,6 +61,7 @@ struct RunHooks {
     RunFn<MixCommandOptions> mix;
     RunFn<PlotCommandOptions> plot;
     RunFn<AdjustCommandOptions> adjust;
+    RunFn<MatchCommandOptions> match;
     RunFn<AtlasCommandOptions> atlas;
 };
 

@@ -6,6 +6,7 @@
 
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutFile.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/SmashAuthoring.h"
 
@@ -26,6 +27,11 @@ struct GameLutRequest {
 // and prints what the game will show (exact composition and refinement, 8-bit display steps,
 // over which colours) to `os`. Returns the LUT to write.
 Lut3D makeGameLut(const Lut3D& edit, const GameLutRequest& request, const Verbosity& verbosity,
+                  std::ostream& os, SmashAuthoringResult* result = nullptr);
+// The same for an edit given as a LUT file: a file with a 1D shaper is evaluated exactly (the
+// shaper, then its table) wherever the game's LUT is computed and measured, never merged into one
+// table first.
+Lut3D makeGameLut(const LutFile& edit, const GameLutRequest& request, const Verbosity& verbosity,
                   std::ostream& os, SmashAuthoringResult* result = nullptr);
 
 } // namespace lut::cli

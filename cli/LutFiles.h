@@ -22,7 +22,13 @@ namespace lut::cli {
 LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& layout,
                        const Verbosity& verbosity);
 
-// The file as one 3D table (a shaper baked in), its diagnostics printed to stderr.
+// The game's stage LUT named by --original-lut (lut/pipeline/StageLut.h: a file with a shaper is
+// sampled at the game's 16^3 lattice, the error said), its diagnostics printed to stderr.
+Lut3D readStageLut(const std::string& path, const Verbosity& verbosity);
+
+// The file as one 3D table, its diagnostics printed to stderr; a file with a shaper is sampled at
+// the table's size over the shaper's range (lut::sampleOnLattice) and the error that costs between
+// lattice points is said.
 Lut3D readLutTable(const std::string& path, const Verbosity& verbosity);
 
 struct WrittenLut {

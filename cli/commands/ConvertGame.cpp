@@ -9,10 +9,12 @@
 #include "Usage.h"
 
 #include "lut/formats/Nutexb.h"
+#include "lut/formats/OcioFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace lut::cli {
@@ -23,16 +25,20 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
         throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
     FormatOptions ro;
     ro.layout = o.inLayout;
+    if (!o.cccid.empty())
+        ro.setAttribute(formats::kOcioCccIdAttribute, o.cccid);
     const LutFile in = formats::readLut(o.input, ro, o.inFormat);
     std::ostringstream text;
     text << "read     " << o.input << ": " << in.format
          << (in.dialect.empty() ? "" : " (" + in.dialect + ")") << ", "
-         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string("1D")) << "\n";
+         << (in.shaper ? "1D shaper " + std::to_string(in.shaper->size()) + (in.cube ? ", " : "")
+                       : std::string())
+         << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string()) << "\n";
     printDiagnostics(text, in.diagnostics, o.verbosity);
-    Lut3D edit = in.toLut3D();
+    std::optional<Lut3D> blended;
     if (!isFullStrength(o.strength)) {
         // The edit at the strength asked for, then made for the game: the game shows the blend.
-        edit = applyStrength(edit, o.strength);
+        blended = applyStrength(in.toLut3D(), o.strength);
         text << "strength " << strengthText(o.strength) << ", of the edit\n";
     }
     text << "target   smash (" << reason << ")\n";
@@ -42,7 +48,8 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     q.refine = o.refine;
     q.interp = o.interp;
     SmashAuthoringResult authored;
-    const Lut3D game = makeGameLut(edit, q, o.verbosity, text, &authored);
+    const Lut3D game = blended ? makeGameLut(*blended, q, o.verbosity, text, &authored)
+                               : makeGameLut(in, q, o.verbosity, text, &authored);
     LutFile out;
     out.cube = game;
     FormatOptions wo;

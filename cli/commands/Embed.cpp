@@ -2,6 +2,7 @@
 // screenshot (docs/roundtrip.md); lutkit extract finds it again after grading.
 #include "commands/Embed.h"
 
+#include "LutFiles.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -41,7 +42,7 @@ int runEmbed(const EmbedOptions& o) {
     eo.margin = o.margin;
     Lut3D original;
     if (!o.originalLut.empty()) {
-        original = formats::readLut(o.originalLut).toLut3D();
+        original = readStageLut(o.originalLut, o.verbosity);
         eo.originalLut = &original;
     }
     auto loaded = formats::readImage(o.input);
@@ -52,7 +53,8 @@ int runEmbed(const EmbedOptions& o) {
     formats::ImageWriteOptions wo;
     wo.bitDepth = eo.bitDepth;
     wo.alpha = loaded.info.channels == 2 || loaded.info.channels == 4;
-    const std::string ext = extensionOf(o.output);
+    wo.format = !o.format.empty() ? o.format : loaded.info.format; // for - and devices
+    const std::string ext = target.inPlace() ? "." + wo.format : extensionOf(o.output);
     if (ext == ".png" && eo.bitDepth == 32)
         wo.bitDepth = 16;
     wo.metadata = loaded.metadata;
@@ -91,9 +93,12 @@ CLI::App* setupEmbed(CLI::App& app, std::function<void(const EmbedOptions&)> onP
     sub->add_option("SCREENSHOT", o->input, "screenshot to copy (8- or 16-bit kept)")
         ->required()
         ->type_name("FILE");
-    sub->add_option("OUT", o->output, "output image (PNG or TIFF recommended)")
+    sub->add_option("OUT", o->output, "output image (PNG or TIFF recommended; - for stdout)")
         ->required()
         ->type_name("FILE");
+    addImageOutputFormat(*sub, o->format,
+                         "image format when OUT is - (standard output) (default: the "
+                         "screenshot's)");
     sub->add_option("--target", o->target,
                     std::string("what you are making, recorded in the patch so extract needs no "
                                 "options: ") +

@@ -2,6 +2,7 @@
 #include "commands/Extract.h"
 
 #include "GameLut.h"
+#include "LutFiles.h"
 #include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
@@ -104,7 +105,7 @@ int runExtract(const ExtractOptions& o) {
     eo.strength = o.strength;
     Lut3D original;
     if (!o.originalLut.empty()) {
-        original = formats::readLut(o.originalLut).toLut3D();
+        original = readStageLut(o.originalLut, o.verbosity);
         eo.originalLut = &original;
     }
     auto loaded = formats::readImage(o.input);

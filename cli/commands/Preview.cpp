@@ -180,16 +180,25 @@ int runPreview(const PreviewOptions& o) {
     bo.quiet = o.verbosity.quiet;
     bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
     if (!o.lut.empty()) {
+        // Its shaper (a Resolve .cube's) and table, each run exactly by the LUT stage.
         const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
-        settings.lut = std::make_shared<const Lut3D>(
-            strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity));
+        if (!isFullStrength(o.strength)) {
+            // A blend with neutral needs one table: the shaper and table baked, then blended.
+            settings.lut = std::make_shared<const Lut3D>(
+                strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity));
+        } else {
+            if (file.cube)
+                settings.lut = std::make_shared<const Lut3D>(*file.cube);
+            if (file.shaper)
+                settings.shaper = std::make_shared<const Lut1D>(*file.shaper);
+        }
     } else if (!isFullStrength(o.strength)) {
         throw UsageError("--strength, --luma-strength and --chroma-strength blend --lut with "
                          "neutral: give --lut");
     }
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
-        original = std::make_shared<const Lut3D>(formats::readLut(o.originalLut).toLut3D());
+        original = std::make_shared<const Lut3D>(readStageLut(o.originalLut, o.verbosity));
     printDiagnostics(std::cerr, color.diagnostics, o.verbosity, "lutkit: ");
     bool noted = false;
     std::mutex noteMutex;

@@ -61,9 +61,13 @@ double sanitize(double v) {
     return v < -m ? -m : v > m ? m : v;
 }
 
-float toStored(double v) {
+double limited(double v) {
     constexpr double m = limits::kMaxColorValue;
-    return static_cast<float>(v != v ? 0.0 : v < -m ? -m : v > m ? m : v);
+    return v != v ? 0.0 : v < -m ? -m : v > m ? m : v;
+}
+
+float toStored(double v) {
+    return static_cast<float>(limited(v));
 }
 
 double checkedAmount(double v, const char* what) {
@@ -88,12 +92,17 @@ bool isFullStrength(const StrengthOptions& options) {
     return a.luma == 1.0 && a.chroma == 1.0;
 }
 
-glm::dvec3 blendWithStrength(glm::dvec3 from, glm::dvec3 to, const StrengthAmounts& amounts) {
-    const glm::dvec3 lx = toOklab(glm::dvec3(sanitize(from.x), sanitize(from.y), sanitize(from.z)));
-    const glm::dvec3 ly = toOklab(glm::dvec3(sanitize(to.x), sanitize(to.y), sanitize(to.z)));
-    const double tl = amounts.luma, tc = amounts.chroma;
-    return fromOklab(glm::dvec3(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
-                                lx.z + tc * (ly.z - lx.z)));
+glm::dvec3 blendStrength(const glm::dvec3& input, const glm::dvec3& graded,
+                         const StrengthAmounts& amount) {
+    const glm::dvec3 x(sanitize(input.x), sanitize(input.y), sanitize(input.z));
+    const glm::dvec3 y(sanitize(graded.x), sanitize(graded.y), sanitize(graded.z));
+    const glm::dvec3 lx = toOklab(x);
+    const glm::dvec3 ly = toOklab(y);
+    const double tl = amount.luma, tc = amount.chroma;
+    const glm::dvec3 lab(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
+                         lx.z + tc * (ly.z - lx.z));
+    const glm::dvec3 e = fromOklab(lab);
+    return {limited(e.x), limited(e.y), limited(e.z)};
 }
 
 Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
@@ -115,7 +124,7 @@ Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
                         continue;
                     }
                     const glm::vec3 y = lut.at(r, g, b);
-                    const glm::dvec3 e = blendWithStrength(glm::dvec3(x), glm::dvec3(y), amount);
+                    const glm::dvec3 e = blendStrength(glm::dvec3(x), glm::dvec3(y), amount);
                     out.at(r, g, b) = glm::vec3(toStored(e.x), toStored(e.y), toStored(e.z));
                 }
     });

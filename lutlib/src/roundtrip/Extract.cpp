@@ -164,7 +164,7 @@ void blendEdit(PatchReading& patch, bool stage, const StrengthOptions& strength,
                                                            patch.axis[static_cast<std::size_t>(g)],
                                                            patch.axis[static_cast<std::size_t>(b)]);
                 patch.values.at(r, g, b) = glm::vec3(
-                    blendWithStrength(glm::dvec3(before), glm::dvec3(patch.values.at(r, g, b)), a));
+                    blendStrength(glm::dvec3(before), glm::dvec3(patch.values.at(r, g, b)), a));
             }
     addNote(res, formatMessage("strength: the edit blended with the picture before it, lightness "
                                "%g, chroma %g (Oklab)",

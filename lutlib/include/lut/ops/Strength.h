@@ -30,10 +30,6 @@ StrengthAmounts strengthAmounts(const StrengthOptions& options);
 // True when options leaves a LUT as it is (both amounts 1).
 bool isFullStrength(const StrengthOptions& options);
 
-// One colour of the blend below: `from` (what there was without the LUT) moved towards `to`
-// (what the LUT gives) by the amounts; the inputs are sanitized as below, the result is not.
-glm::dvec3 blendWithStrength(glm::dvec3 from, glm::dvec3 to, const StrengthAmounts& amounts);
-
 // Entry (r, g, b) of the result, with x the lattice input and y the LUT's entry there:
 //     Lab(x) = Oklab(decode(x)), Lab(y) = Oklab(decode(y))
 //     L  = L(x)  + luma   * (L(y)  - L(x))
@@ -52,5 +48,12 @@ glm::dvec3 blendWithStrength(glm::dvec3 from, glm::dvec3 to, const StrengthAmoun
 //   to an 8-bit format then reports that as storage error.
 // Title, comments and domain are kept. Throws lut::Error for an empty LUT or a bad amount.
 Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options);
+
+// The same blend for one colour: `graded` is what the LUT (or any transfer) gives for `input`.
+// applyStrength is this at every lattice point; a transfer that is not a plain 3D table on its
+// own inputs (lutkit match: a shaper, then a table) blends with it before it is tabulated. The
+// amounts are taken as they are (strengthAmounts checks them); NaN and Inf as above.
+glm::dvec3 blendStrength(const glm::dvec3& input, const glm::dvec3& graded,
+                         const StrengthAmounts& amounts);
 
 } // namespace lut
