@@ -83,6 +83,7 @@ CommandLine::CommandLine(const RunHooks& hooks)
     setupAdjust(m_app, runner(hooks.adjust, runAdjust, m_exitCode));
     setupCheck(m_app, runner(hooks.check, runCheck, m_exitCode));
     setupChart(m_app, runner(hooks.chart, runChart, m_exitCode));
+    setupAtlas(m_app, runner(hooks.atlas, runAtlas, m_exitCode));
 
     refuseNonFiniteNumbers(m_app);
 

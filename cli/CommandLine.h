@@ -8,6 +8,7 @@
 // validators and conversions users get.
 #include "commands/Adjust.h"
 #include "commands/Apply.h"
+#include "commands/Atlas.h"
 #include "commands/Bake.h"
 #include "commands/Bench.h"
 #include "commands/Chart.h"
@@ -65,6 +66,7 @@ struct RunHooks {
     RunFn<MatchCommandOptions> match;
     RunFn<CheckCommandOptions> check;
     RunFn<ChartCommandOptions> chart;
+    RunFn<AtlasCommandOptions> atlas;
 };
 
 class CommandLine {

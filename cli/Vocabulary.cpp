@@ -146,6 +146,15 @@ Choices preserveChoices() {
     return c;
 }
 
+Choices atlasActionChoices() {
+    Choices c{"atlas-action", "atlas action", {"build", "split", "info"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "build" && s != "split" && s != "info")
+            throw Error("unknown atlas action '" + s + "'");
+    };
+    return c;
+}
+
 Choices cornerChoices() {
     Choices c{"corner",
               "corner",
@@ -216,7 +225,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
           imageFormatChoices, compressionChoices, shaperChoices, matchMethodChoices,
-          preserveChoices}) {
+          preserveChoices, atlasActionChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;

@@ -46,14 +46,15 @@ Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip,
 Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
 Choices matchMethodChoices(); // lutkit match --method: auto, hm, mkl, hm-mkl-hm, regularised
 Choices preserveChoices();    // lutkit match --preserve: luma, neutrals, skin
+Choices atlasActionChoices(); // lutkit atlas ACTION: build, split, info
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 
 constexpr const char* kChoicesValidatorPrefix = "choices:";
 constexpr const char* kMovedValidatorName = "moved";
 
-// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush or hald; also
-// pilot, godot, lattice)"
+// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush, hald, reshade or
+// unity-32; also pilot, godot, lattice, unreal-32)"
 std::string unknownNameMessage(const Choices& choices, const std::string& value);
 // Validator named "choices:<kind>": accepts what choices.accept accepts.
 CLI::Validator choicesValidator(const Choices& choices);

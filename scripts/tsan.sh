@@ -10,7 +10,8 @@
 #   the round trip's fit                                                     roundtrip_tests (Fit.*)
 #   lutkit match: samples, histograms, transport, table, measures            match_tests (the
 #                                                                            smaller cases)
-#   lutkit apply's batch and preview (a ThreadSanitizer-built lutkit)        cli_tests (CliApply.*,
+#   lutkit apply's batch, preview and convert of a folder (a ThreadSanitizer  cli_tests (CliApply.*,
+#   -built lutkit)                                                           CliConvertBatch.*,
 #                                                                            CliPreview.*)
 #   the editor's document model and preview rendering                       gui_model_tests
 #   lut::Progress (cancelled from another thread), diffs, heat maps and     lutlib_tests, ops_tests,
@@ -49,7 +50,7 @@ runs=(
   "formats_tests:-CubeRead.FloatParsingMatchesFromChars"
   "roundtrip_tests:Fit.*-Fit.NaturalImageWarnsAboutCoverage"
   "match_tests:MatchStiff.*:MatchReport.*:HistogramMatch.*"
-  "cli_tests:CliApply.*:CliPreview.*"
+  "cli_tests:CliApply.*:CliPreview.*:CliConvertBatch.*"
 )
 
 start=$(date +%s)

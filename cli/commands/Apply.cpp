@@ -3,6 +3,7 @@
 
 #include "Batch.h"
 #include "LutFiles.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -47,7 +48,12 @@ int runApply(const ApplyOptions& o) {
     printDiagnostics(std::cerr, colour.diagnostics, o.verbosity, "lutkit: ");
     if (o.verbosity.verbose && o.color.any())
         std::cerr << "lutkit: " << colour.describe() << "\n";
-    const PixelChain chain = formats::lutPixelChain(colour, file, o.interp);
+    // At full strength the file as it is (a shaper applied exactly); a blend needs one table.
+    const PixelChain chain =
+        isFullStrength(o.strength)
+            ? formats::lutPixelChain(colour, file, o.interp)
+            : formats::lutPixelChain(
+                  colour, strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity), o.interp);
     std::mutex noteMutex;
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         formats::ApplyImageOptions ao;
@@ -100,7 +106,9 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
     auto* sub = app.add_subcommand(
         "apply", "Apply a LUT to the stored pixel values of images (data type, alpha, compression "
                  "and metadata kept), or in its own colour space (--from)");
-    sub->add_option("--lut", o->lut, "LUT file (any supported format)")
+    sub->add_option("--lut", o->lut,
+                    "LUT file (any supported format), or a built-in: builtin:neutral, "
+                    "builtin:smash-default")
         ->required()
         ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
@@ -122,6 +130,7 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
                 "from 0) (default: every one, where the output format holds them)");
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
     addThreads(*sub, o->threads);
+    addStrengthOptions(*sub, o->strength);
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     addVerbosity(*sub, o->verbosity, "print IN -> OUT for every file written");
     sub->footer(
@@ -131,6 +140,7 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
         "  lutkit apply --lut grade.cube f.%04d.exr --frames 1-100 -o out.%04d.exr\n"
         "  lutkit apply --lut grade.cube - --in-format png -o - --format png < in.png > out.png\n"
         "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif -o out.tif -y\n"
+        "  lutkit apply --lut grade.cube --strength 0.5 shot.png -o half.png\n"
         "  lutkit apply --lut log_look.cube --from ACEScg --lut-space ACEScct --to sRGB "
         "render.exr -o out.png\n"
         "An existing output is replaced only with -y; -n skips existing outputs.");

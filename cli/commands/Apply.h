@@ -7,6 +7,7 @@
 #include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 
 #include <functional>
 #include <optional>
@@ -34,6 +35,7 @@ struct ApplyOptions {
     Interpolation interp = Interpolation::Tetrahedral;
     int threads = 0;          // 0 = all cores
     formats::ColorSpec color; // --config, --from, --to ...: the LUT runs in its own space
+    StrengthOptions strength; // the LUT blended with neutral first
     Verbosity verbosity;
 };
 

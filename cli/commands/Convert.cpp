@@ -2,6 +2,7 @@
 #include "commands/Convert.h"
 
 #include "Json.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
@@ -13,6 +14,7 @@
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/OcioFiles.h"
+#include "lut/io/BuiltinLut.h"
 #include "lut/io/FileNames.h"
 #include "lut/roundtrip/RoundtripTarget.h"
 
@@ -62,7 +64,11 @@ std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r)
                       : "{\"path\": " + json::quote(o.output) +
                             ", \"format\": " + json::quote(r.outputFormat) +
                             ", \"seconds\": " + json::number(r.writeSeconds) + "}")
-       << ",\n \"output_format\": " << json::quote(r.outputFormat) << ",\n \"resample\": ";
+       << ",\n \"output_format\": " << json::quote(r.outputFormat) << ",\n \"strength\": "
+       << (r.strength ? "{\"luma\": " + json::number(r.strength->luma) +
+                            ", \"chroma\": " + json::number(r.strength->chroma) + "}"
+                      : std::string("null"))
+       << ",\n \"resample\": ";
     if (r.resample)
         js << "{\"from\": " << r.resample->from << ", \"to\": " << r.resample->to
            << ", \"interp\": " << json::quote(toString(r.resample->interp))
@@ -86,6 +92,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
             !d.empty())
             std::cout << "  " << d << "\n";
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
+    if (r.strength)
+        std::cout << "strength " << strengthText(o.strength) << "\n";
     if (r.resample)
         std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
                   << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n"
@@ -118,6 +126,8 @@ int runConvert(const ConvertOptions& o) {
                              " is not a .ccc, .cdl or .cc file (it picks one of their "
                              "corrections)");
     }
+    if (isConvertBatch(o))
+        return runConvertBatch(o);
     if (o.color.any())
         (void)formats::planColor(o.color); // a misspelt colour name is bad usage, before files
     const OutputTarget target = resolveOutput(
@@ -130,7 +140,8 @@ int runConvert(const ConvertOptions& o) {
     // A .nutexb is the game's LUT: written for the game unless asked otherwise (or copied from
     // another .nutexb).
     const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
-    const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb";
+    const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb" ||
+                        isBuiltinGameLut(o.input); // builtin:smash-default is the game's LUT
     const bool smash =
         !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash : gameOut && !gameIn;
     if (smash)
@@ -140,7 +151,13 @@ int runConvert(const ConvertOptions& o) {
                                        "writes the LUT as it is");
     if (!o.originalLut.empty() || !o.screenshot.empty() || o.refine)
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
+    if (o.layout)
+        if (const std::string problem = layoutSizeProblem(*o.layout, o.size); !problem.empty())
+            throw UsageError(problem);
     if (o.color.any()) {
+        if (!isFullStrength(o.strength))
+            throw UsageError("--strength does not combine with --from/--to yet: convert at the "
+                             "strength first, then bake the result");
         // The LUT in its own colour space, OpenColorIO's conversions around it, baked.
         formats::BakeOptions b;
         b.config = o.color.config;
@@ -187,6 +204,7 @@ int runConvert(const ConvertOptions& o) {
     if (!o.name.empty())
         co.write.setAttribute(formats::nutexb::kNameAttribute, o.name);
     co.interp = o.interp;
+    co.strength = o.strength;
     const formats::ConvertReport report = formats::convertLut(o.input, o.output, co);
     if (o.json)
         std::cout << reportJson(o, report);
@@ -200,13 +218,15 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     auto o = std::make_shared<ConvertOptions>();
     auto* sub = app.add_subcommand(
         "convert", "Convert a LUT to another format, reporting the error introduced");
-    sub->add_option("IN", o->input, "input LUT file")->required()->type_name("FILE");
-    sub->add_option("OUT", o->output, "output LUT file (format from the extension)")
+    sub->add_option("IN", o->input, "input LUT file, or a folder of them (with -o DIR/)")
         ->required()
+        ->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT file (format from the extension), or -o OUT")
         ->type_name("FILE");
     addOutputFormat(*sub, o->format);
     addInputFormat(*sub, o->inFormat);
-    addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addLayout(*sub, "--layout", o->layout,
+              "output LUT image layout (default unreal; reshade and unity-32 are 32^3, 1024x32)");
     addLayout(*sub, "--in-layout", o->inLayout, "input LUT image layout (default: detected)");
     sub->add_option("--cccid", o->cccid,
                     "the correction of a .ccc/.cdl input: its id or index (as ociobakelut "
@@ -225,7 +245,9 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--dither", o->dither, "8-bit image output: ordered dither");
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_flag("--json", o->json, "print the report as JSON");
-    addOverwriteOptions(*sub, o->overwrite);
+    addOutputOptions(*sub, o->overwrite,
+                     "the output, as OUT; a folder (existing, or ending in /) for a folder IN: "
+                     "each LUT under its own name, as --format (default nutexb)");
     sub->add_option("--target", o->target,
                     std::string("what OUT is for (default: ") + toString(ExtractTarget::Smash) +
                         " for a .nutexb, else " + toString(ExtractTarget::Raw) +
@@ -236,7 +258,8 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
         ->type_name("NAME")
         ->check(choicesValidator(targetChoices()));
     sub->add_option("--original-lut", o->originalLut,
-                    "smash: the stage's LUT the edited picture was taken with (default neutral)")
+                    "smash: the stage's LUT the edited picture was taken with (default neutral; "
+                    "a stage without its own LUT: builtin:smash-default)")
         ->type_name("FILE");
     sub->add_option("--screenshot", o->screenshot,
                     "smash: a screenshot whose pixels the error is measured over and refined "
@@ -246,6 +269,7 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                   "smash: also compute the least-squares refinement (best between the game's "
                   "16^3 points) and write it if it beats the exact composition on colours it was "
                   "not fitted on; both are reported, and which was written");
+    addStrengthOptions(*sub, o->strength);
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     sub->add_option("--shaper-size,--shapersize", o->shaperSize,
                     "with --from: shaper entries when the input is HDR (default 4096)")
@@ -261,11 +285,23 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
+                "  lutkit convert grade.cube lut.png --layout reshade       # ReShade's LUT.fx\n"
+                "  lutkit convert grade.cube subtle.cube --strength 0.6 --chroma-strength 0.3\n"
                 "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
                 "  lutkit convert grades.ccc shot042.cube --cccid shot042\n"
                 "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "
-                "--to sRGB");
-    sub->callback([o, onParsed] { onParsed(*o); });
+                "--to sRGB\n"
+                "  lutkit convert edited_strips/ -o stage_luts/   # every strip: a .nutexb, "
+                "each with its in-game error");
+    sub->callback([o, onParsed] {
+        if (!o->output.empty() && !o->overwrite.output.empty())
+            throw UsageError("OUT and -o both name the output: give one");
+        if (o->output.empty())
+            o->output = o->overwrite.output;
+        if (o->output.empty())
+            throw UsageError("OUT is required (or -o OUT; -o DIR/ for a folder of LUTs)");
+        onParsed(*o);
+    });
     return sub;
 }
 

@@ -5,6 +5,7 @@
 
 #include "GameLut.h"
 #include "Json.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "WrittenCheck.h"
 
@@ -14,6 +15,7 @@
 #include "lut/io/AtomicFile.h"
 
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace lut::cli {
@@ -34,6 +36,12 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
                        : std::string())
          << (in.cube ? std::to_string(in.cube->size()) + "^3" : std::string()) << "\n";
     printDiagnostics(text, in.diagnostics, o.verbosity);
+    std::optional<Lut3D> blended;
+    if (!isFullStrength(o.strength)) {
+        // The edit at the strength asked for, then made for the game: the game shows the blend.
+        blended = applyStrength(in.toLut3D(), o.strength);
+        text << "strength " << strengthText(o.strength) << ", of the edit\n";
+    }
     text << "target   smash (" << reason << ")\n";
     GameLutRequest q;
     q.stageLut = o.originalLut;
@@ -41,7 +49,8 @@ int runConvertGame(const ConvertOptions& o, const std::string& reason) {
     q.refine = o.refine;
     q.interp = o.interp;
     SmashAuthoringResult authored;
-    const Lut3D game = makeGameLut(in, q, o.verbosity, text, &authored);
+    const Lut3D game = blended ? makeGameLut(*blended, q, o.verbosity, text, &authored)
+                               : makeGameLut(in, q, o.verbosity, text, &authored);
     LutFile out;
     out.cube = game;
     FormatOptions wo;

@@ -3,6 +3,7 @@
 
 #include "GameLut.h"
 #include "LutFiles.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
@@ -48,7 +49,7 @@ int extractFromLutImage(const ExtractOptions& o, bool smash) {
     ro.layout = o.inLayout;
     const LutFile file = formats::readLut(o.input, ro);
     printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
-    const Lut3D edit = file.toLut3D();
+    const Lut3D edit = applyStrength(file.toLut3D(), o.strength);
     if (!o.verbosity.quiet)
         std::cout << "no patch: " << o.input << " is a " << edit.size() << "^3 LUT image ("
                   << file.dialect
@@ -59,6 +60,8 @@ int extractFromLutImage(const ExtractOptions& o, bool smash) {
                             : "raw (the edit as it is; a .nutexb output or "
                               "--target smash makes the game's LUT)")
                   << "\n";
+    if (!o.verbosity.quiet && !isFullStrength(o.strength))
+        std::cout << "strength: " << strengthText(o.strength) << ", of the edit\n";
     if (!smash && (!o.originalLut.empty() || o.refine))
         throw UsageError("--original-lut and --refine are for the game's LUT (--target smash)");
     if (!smash) {
@@ -101,6 +104,7 @@ int runExtract(const ExtractOptions& o) {
                          "16^3 entries)");
     eo.outputSize = o.size;
     eo.refine = o.refine;
+    eo.strength = o.strength;
     Lut3D original;
     if (!o.originalLut.empty()) {
         original = readStageLut(o.originalLut, o.verbosity);
@@ -187,12 +191,14 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
     addOverwriteOptions(*sub, o->overwrite);
     addLayout(*sub, "--in-layout", o->inLayout,
               "EDITED is a graded LUT image: its layout (default: detected)");
+    addStrengthOptions(*sub, o->strength);
     addVerbosity(*sub, o->verbosity, "also say where the patch was found and how it was made");
     sub->footer("Examples:\n"
                 "  lutkit extract graded.png color_grading_lut.nutexb   # for Smash Ultimate\n"
                 "  lutkit extract graded.png grade.cube                 # what embed set up\n"
                 "  lutkit extract graded.png grade.cube --target raw    # the edit itself\n"
                 "  lutkit extract graded.png color_grading_lut.nutexb --refine\n"
+                "  lutkit extract graded.png grade.cube --chroma-strength 0.5  # half the colour\n"
                 "  lutkit extract neutral_graded.png color_grading_lut.nutexb  # Smush-LUT's "
                 "neutral.png");
     sub->callback([o, onParsed] { onParsed(*o); });

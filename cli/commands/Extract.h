@@ -6,6 +6,7 @@
 #include "Outputs.h"
 
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 
 #include <functional>
 #include <optional>
@@ -29,6 +30,7 @@ struct ExtractOptions {
     std::optional<LutLayout> layout;   // output layout for LUT images
     std::optional<LutLayout> inLayout; // EDITED is a graded LUT image: its layout
     OutputOptions overwrite;           // -y / -n (the output is the positional OUT)
+    StrengthOptions strength;          // the edit blended with what was there before it
     Verbosity verbosity;
 };
 

@@ -8,6 +8,7 @@
 
 #include "Batch.h"
 #include "LutFiles.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -105,6 +106,9 @@ std::string previewFooter() {
           "  lutkit preview shot.png -o seen.png --lut grade.cube   # as Smash Ultimate shows "
           "it\n"
           "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut old.nutexb\n"
+          "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut "
+          "builtin:smash-default\n"
+          "  lutkit preview shot.png -o seen.png --lut grade.cube --strength 0.7\n"
           "  lutkit preview photo.png -o seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
           "  lutkit preview acescg_render.exr -o out.png --from ACEScg --lut grade.cube\n"
@@ -178,10 +182,19 @@ int runPreview(const PreviewOptions& o) {
     if (!o.lut.empty()) {
         // Its shaper (a Resolve .cube's) and table, each run exactly by the LUT stage.
         const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
-        if (file.cube)
-            settings.lut = std::make_shared<const Lut3D>(*file.cube);
-        if (file.shaper)
-            settings.shaper = std::make_shared<const Lut1D>(*file.shaper);
+        if (!isFullStrength(o.strength)) {
+            // A blend with neutral needs one table: the shaper and table baked, then blended.
+            settings.lut = std::make_shared<const Lut3D>(
+                strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity));
+        } else {
+            if (file.cube)
+                settings.lut = std::make_shared<const Lut3D>(*file.cube);
+            if (file.shaper)
+                settings.shaper = std::make_shared<const Lut1D>(*file.shaper);
+        }
+    } else if (!isFullStrength(o.strength)) {
+        throw UsageError("--strength, --luma-strength and --chroma-strength blend --lut with "
+                         "neutral: give --lut");
     }
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
@@ -314,9 +327,13 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     addMaxMemory(*sub, o->maxMemory);
     addSubimage(*sub, o->subimage,
                 "the image of files holding several (OpenEXR part, TIFF page, GIF frame; from 0)");
-    sub->add_option("--lut", o->lut, "grading LUT (default: neutral)")->type_name("FILE");
+    sub->add_option("--lut", o->lut,
+                    "grading LUT (default: neutral); a file or builtin:neutral, "
+                    "builtin:smash-default")
+        ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");
+    addStrengthOptions(*sub, o->strength);
     sub->add_option_function<std::string>(
            "--preset", [o](const std::string& v) { o->preset = parsePreset(v); },
            "the post-processing chain (default smash; also pilot, lecture)")
@@ -332,7 +349,10 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
                   "sRGB-decoded)")
         ->excludes(shot);
     sub->add_option("--original-lut", o->originalLut,
-                    "the LUT the screenshots were taken with (default neutral)")
+                    "the LUT the screenshots were taken with (default neutral); a file or a "
+                    "built-in: a stage without its own LUT was most likely shot with "
+                    "builtin:smash-default, the game's default stage LUT as the reference "
+                    "renderer (ssbh_wgpu) has it")
         ->type_name("FILE");
     sub->add_option("--stage", o->stageSettings, "set a stage parameter (repeatable)")
         ->allow_extra_args(false)

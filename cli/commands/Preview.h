@@ -7,6 +7,7 @@
 #include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 #include "lut/pipeline/Pipeline.h"
 
 #include <functional>
@@ -30,6 +31,7 @@ struct PreviewOptions {
     int subimage = -1;                  // --subimage: one image of a file holding several
     std::string lut;                    // grading LUT (default neutral)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
+    StrengthOptions strength;           // --lut blended with neutral first
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none
     bool noBloom = false;
     Interpolation interp = Interpolation::Trilinear; // the game samples with hardware trilinear

@@ -12,6 +12,7 @@
 #include "lut/io/StdStreams.h"
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
+#include "lut/ops/Strength.h"
 
 #include <glm/mat3x3.hpp>
 
@@ -138,23 +139,38 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // the whole processor, instead of being resampled afterwards.
     FormatOptions readOptions = options.read;
     if (readOptions.size == 0)
-        readOptions.size = wantSize ? wantSize : writer->fixedSize();
+        readOptions.size = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     auto t0 = Clock::now();
     report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
-    const LutFile& in = report.input;
-    if (!in.cube && !in.shaper)
+    if (!report.input.cube && !report.input.shaper)
         throw Error(input + ": holds no table");
+    // The LUT at the strength asked for: what is then resampled and written.
+    Diagnostics sizeNotes;
+    LutFile blended;
+    if (!isFullStrength(options.strength)) {
+        blended = report.input;
+        if (blended.shaper) {
+            blended.cube = blended.toLut3D(0);
+            sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
+                                 "the 1D shaper was baked into a " +
+                                     std::to_string(blended.cube->size()) +
+                                     "^3 table to blend it with neutral (--strength)"});
+            blended.shaper.reset();
+        }
+        blended.cube = applyStrength(*blended.cube, options.strength);
+        report.strength = strengthAmounts(options.strength);
+    }
+    const LutFile& in = report.strength ? blended : report.input;
 
     // Resample when the output stores another lattice size.
     const int sourceSize = in.cube ? in.cube->size() : 0;
-    int targetSize = wantSize ? wantSize : writer->fixedSize();
+    int targetSize = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     if (targetSize == 0)
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
     // A Hald image holds N = L^2 only: resample once, to the size it will hold.
     const bool hald = writer->name() == "hald" ||
                       (options.write.layout == LutLayout::Hald && writer->name() == "strip");
-    Diagnostics sizeNotes;
     if (hald && targetSize != 0 && haldSizeFor(targetSize) != targetSize) {
         const int held = haldSizeFor(targetSize);
         sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,

@@ -303,8 +303,8 @@ bool MainWindow::openScreenshotLut(const QString& path) {
 }
 
 bool MainWindow::exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                           ExportTarget target, bool overwrite) {
-    return m_files->exportLut(path, format, options, target, overwrite);
+                           ExportTarget target, bool overwrite, const StrengthOptions& strength) {
+    return m_files->exportLut(path, format, options, target, overwrite, strength);
 }
 
 bool MainWindow::savePreviewImage(const QString& path) {

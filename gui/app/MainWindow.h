@@ -7,6 +7,7 @@
 #include "PreviewController.h"
 
 #include "lut/io/Format.h"
+#include "lut/ops/Strength.h"
 
 #include <QMainWindow>
 #include <QStringList>
@@ -82,7 +83,8 @@ public:
     bool openLutFile(const QString& path, const FormatOptions& options = {});
     bool openScreenshotLut(const QString& path);
     bool exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                   ExportTarget target, bool overwrite = false);
+                   ExportTarget target, bool overwrite = false,
+                   const StrengthOptions& strength = {});
     bool savePreviewImage(const QString& path);
     bool saveDocument();
     bool saveDocumentAs(const QString& path);

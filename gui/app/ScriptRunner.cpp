@@ -419,6 +419,24 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         noNewError(w.fileActions()->loadAdjustments(arg(0)));
     } else if (cmd == "export") {
         const bool overwrite = args.removeAll(QStringLiteral("overwrite")) > 0;
+        // strength=T, luma=T, chroma=T: the export dialog's strength (lutkit --strength ...).
+        StrengthOptions strength;
+        for (int i = args.size() - 1; i >= 0; --i) {
+            const QString key = args[i].section(QLatin1Char('='), 0, 0);
+            if (!args[i].contains(QLatin1Char('=')) ||
+                (key != "strength" && key != "luma" && key != "chroma"))
+                continue;
+            bool ok = false;
+            const double v = args[i].section(QLatin1Char('='), 1).toDouble(&ok);
+            need(ok, QStringLiteral("%1 needs a number").arg(key));
+            if (key == "strength")
+                strength.strength = v;
+            else if (key == "luma")
+                strength.luma = v;
+            else
+                strength.chroma = v;
+            args.removeAt(i);
+        }
         ExportChoice choice;
         QString path = suggestedExport(w, &choice);
         FormatOptions o = targetFormatOptions(preview->options().target);
@@ -434,7 +452,8 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
                 o = targetFormatOptions(preview->options().target);
         }
         out << "exported " << path << "\n";
-        noNewError(w.exportLut(path, choice.format, o, preview->options().target, overwrite));
+        noNewError(
+            w.exportLut(path, choice.format, o, preview->options().target, overwrite, strength));
     } else if (cmd == "save-preview") {
         settle(w);
         noNewError(w.savePreviewImage(arg(0)));

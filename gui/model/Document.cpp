@@ -6,6 +6,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/BuiltinLut.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
 #include "lut/ops/AdjustmentList.h"
@@ -55,6 +56,8 @@ constexpr int kCurveKeyBase = 100;
 bool looksLikeLutFile(const QString& path) {
     formats::registerBuiltinFormats();
     const std::string p = path.toStdString();
+    if (isBuiltinLutName(p)) // builtin:smash-default ...: a LUT known by name
+        return true;
     if (!hasPictureExtension(p))
         return !FormatRegistry::instance().forExtension(p).empty();
     try {
@@ -187,8 +190,15 @@ QStringList Document::adoptLut(const LutFile& file, const QString& path) {
     } else {
         lut = file.toLut3D();
     }
-    const LutRole role = file.format == "nutexb" ? LutRole::GameLut : LutRole::Look;
-    replaceLut(std::move(lut), path, path, QString::fromStdString(file.format), false, role, notes);
+    // A built-in LUT is no file: the document is untitled (Save asks where), named by its origin.
+    // The game's own default stage LUT is a game LUT, as a .nutexb is.
+    const bool builtin = file.format == "builtin";
+    const LutRole role =
+        file.format == "nutexb" || (builtin && isBuiltinGameLut(path.toStdString()))
+            ? LutRole::GameLut
+            : LutRole::Look;
+    replaceLut(std::move(lut), builtin ? QString() : path, path,
+               QString::fromStdString(file.format), false, role, notes);
     return notes;
 }
 
@@ -272,9 +282,10 @@ void Document::loadAdjustmentList(const QString& path) {
 }
 
 Diagnostics Document::exportLut(const QString& path, const QString& formatName,
-                                const FormatOptions& options, ExportTarget target) const {
+                                const FormatOptions& options, ExportTarget target,
+                                const StrengthOptions& strength) const {
     LutFile file;
-    file.cube = exportTable(lutSource(), target);
+    file.cube = exportTable(lutSource(), target, strength);
     return formats::writeLut(path.toStdString(), file, options, formatName.toStdString());
 }
 

@@ -37,19 +37,22 @@ ExportTarget parseExportTarget(std::string_view key) {
     throw Error("unknown target '" + std::string(key) + "' (expected smash, engine or cube)");
 }
 
-Lut3D exportTable(const LutSource& source, ExportTarget target) {
+Lut3D exportTable(const LutSource& source, ExportTarget target, const StrengthOptions& strength) {
     static const Lut3D neutral = Lut3D::identity(33);
+    const bool full = isFullStrength(strength);
     const Lut3D& effective = source.effective ? *source.effective : neutral;
     if (target != ExportTarget::Smash)
-        return effective;
+        return full ? effective : applyStrength(effective, strength);
     // The edit is a LUT on display colours, sampled tetrahedrally (exact for affine edits, the
     // neutral one included).
     if (source.gameBase) {
         const bool neutralEdit = !source.adjustments || source.adjustments->isNeutral();
         const Lut3D edit = neutralEdit ? neutral : applyAdjustments(neutral, *source.adjustments);
-        return smashLutForDisplayEdit(edit, source.gameBase.get(), Interpolation::Tetrahedral);
+        return smashLutForDisplayEdit(full ? edit : applyStrength(edit, strength),
+                                      source.gameBase.get(), Interpolation::Tetrahedral);
     }
-    return smashLutForDisplayEdit(effective, nullptr, Interpolation::Tetrahedral);
+    return smashLutForDisplayEdit(full ? effective : applyStrength(effective, strength), nullptr,
+                                  Interpolation::Tetrahedral);
 }
 
 FormatOptions targetFormatOptions(ExportTarget target) {

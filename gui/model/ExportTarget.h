@@ -14,6 +14,7 @@
 #include "lut/io/FormatOptions.h"
 #include "lut/ops/Adjust.h"
 #include "lut/ops/Clipping.h"
+#include "lut/ops/Strength.h"
 
 #include <memory>
 #include <optional>
@@ -61,8 +62,11 @@ struct TargetLut {
     Diagnostics notes;                  // what the writer reported (rounding, resampling...)
 };
 
-// The table a target exports (Smash: the compensated 16^3 LUT; others: the effective LUT).
-Lut3D exportTable(const LutSource& source, ExportTarget target);
+// The table a target exports (Smash: the compensated 16^3 LUT; others: the effective LUT). At a
+// partial strength (lut/ops/Strength.h) the edit is blended with neutral first: for Smash before
+// it is made for the game, so the game shows that share of the edit.
+Lut3D exportTable(const LutSource& source, ExportTarget target,
+                  const StrengthOptions& strength = {});
 // The default format options of a target for writing `table`.
 FormatOptions targetFormatOptions(ExportTarget target);
 // Writes the target's default export to memory and reads it back; throws lut::Error.

@@ -36,6 +36,7 @@ inline cli::RunHooks stubHooks() {
     h.adjust = [](const cli::AdjustCommandOptions&) { return 0; };
     h.check = [](const cli::CheckCommandOptions&) { return 0; };
     h.chart = [](const cli::ChartCommandOptions&) { return 0; };
+    h.atlas = [](const cli::AtlasCommandOptions&) { return 0; };
     return h;
 }
 

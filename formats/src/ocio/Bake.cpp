@@ -239,8 +239,8 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
                      Diagnostic::Severity::Warning));
     }
     report.shaper = shaper.text;
-    const int n =
-        o.cubeSize ? o.cubeSize : (writer->fixedSize() ? writer->fixedSize() : kDefaultBakeSize);
+    const int fixed = writer->fixedSizeFor(o.write);
+    const int n = o.cubeSize ? o.cubeSize : (fixed ? fixed : kDefaultBakeSize);
     report.cubeSize = n;
 
     // A conversion that mixes no channels is per-channel curves: a 1D table holds it exactly at

@@ -147,6 +147,30 @@ void checkChromaSubsampling(const PatchReading& patch, const ExtractOptions& o,
                    "do not crop before saving");
 }
 
+// --strength: every entry of the edit moved back towards what it was before the edit (a stage
+// patch's colours before the edit, else its lattice inputs).
+void blendEdit(PatchReading& patch, bool stage, const StrengthOptions& strength,
+               ExtractResult& res) {
+    if (stage && !patch.inputs)
+        throw Error("a partial strength needs the colours this patch held before the edit: name "
+                    "the stage's LUT it was embedded with (--original-lut)");
+    const StrengthAmounts a = strengthAmounts(strength);
+    const int n = patch.values.size();
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 before = stage ? patch.inputs->at(r, g, b)
+                                               : glm::vec3(patch.axis[static_cast<std::size_t>(r)],
+                                                           patch.axis[static_cast<std::size_t>(g)],
+                                                           patch.axis[static_cast<std::size_t>(b)]);
+                patch.values.at(r, g, b) = glm::vec3(
+                    blendStrength(glm::dvec3(before), glm::dvec3(patch.values.at(r, g, b)), a));
+            }
+    addNote(res, formatMessage("strength: the edit blended with the picture before it, lightness "
+                               "%g, chroma %g (Oklab)",
+                               a.luma, a.chroma));
+}
+
 } // namespace
 
 ExtractResult extractLut(const ImageView& edited, const ExtractOptions& options) {
@@ -198,6 +222,8 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         }
     res.readNoiseMean = noiseSum / (3.0 * static_cast<double>(noise.max.entryCount()));
 
+    if (!isFullStrength(options.strength))
+        blendEdit(patch, stage, options.strength, res);
     const PatchFunction edit(patch.values, patch.axis);
     if (res.target == ExtractTarget::Raw) {
         if (stage)

@@ -11,6 +11,7 @@
 #include "lut/LutFile.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/FormatOptions.h"
+#include "lut/ops/Strength.h"
 
 #include <optional>
 #include <string>
@@ -25,6 +26,9 @@ struct ConvertOptions {
     // fixed size if it has one, else the input's.
     FormatOptions write;
     Interpolation interp = Interpolation::Tetrahedral; // for resampling
+    // The LUT blended with neutral before it is resampled and written (lut/ops/Strength.h); a
+    // shaper is baked into the 3D table first (the neutral of the whole file).
+    StrengthOptions strength;
 };
 
 struct ResampleStep {
@@ -37,8 +41,9 @@ struct ResampleStep {
 struct ConvertReport {
     LutFile input; // as read (with its diagnostics)
     double readSeconds = 0.0;
-    std::string outputFormat;             // the writer's name
-    std::optional<ResampleStep> resample; // nullopt: written at the input's size
+    std::string outputFormat;                // the writer's name
+    std::optional<StrengthAmounts> strength; // nullopt: full strength, the LUT as read
+    std::optional<ResampleStep> resample;    // nullopt: written at the input's size
     Diagnostics writeDiagnostics;
     double writeSeconds = 0.0;
     std::optional<LutFile> readBack;   // the output read back (nullopt: it could not be read)
@@ -47,10 +52,10 @@ struct ConvertReport {
     double totalSeconds = 0.0;
 };
 
-// Reads `input`, resamples when the output stores another size, writes `output`, reads it back
-// and measures. Throws lut::Error for an unknown format name, an output extension no format
-// writes, an unreadable input, a size outside lut/Limits.h, or a failed write (the old output,
-// if any, is left as it was).
+// Reads `input`, blends it with neutral when options.strength asks, resamples when the output
+// stores another size, writes `output`, reads it back and measures. Throws lut::Error for an
+// unknown format name, an output extension no format writes, an unreadable input, a size outside
+// lut/Limits.h, or a failed write (the old output, if any, is left as it was).
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options = {});
 

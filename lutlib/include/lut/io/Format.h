@@ -48,6 +48,12 @@ public:
     // error before writing: the one lattice size the format stores (0 = any) and the integer bit
     // depth of its values (0 = float or varies with options).
     virtual int fixedSize() const { return 0; }
+    // The same for a write with these options (a LUT image's layout may fix the size: reshade and
+    // unity-32 are 32^3).
+    virtual int fixedSizeFor(const FormatOptions& options) const {
+        (void)options;
+        return fixedSize();
+    }
     virtual int storedBitDepth() const { return 0; }
     // Whether the written file keeps a 1D shaper and a 3D table's input range (domain) as they
     // are (.cube's Resolve dialect, .clf, .ctf, .csp), so an HDR or log input needs no resampling.

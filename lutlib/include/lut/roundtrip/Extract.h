@@ -5,6 +5,7 @@
 #include "lut/ErrorStats.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/ops/Strength.h"
 #include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
@@ -34,6 +35,10 @@ struct ExtractOptions {
     // What the file's metadata says about chroma subsampling ("4:2:0", "4:2:2", "4:4:4"; ""
     // unknown: lut::formats::ImageInfo::chromaSubsampling); the patch's pixels are checked too.
     std::string fileChromaSubsampling;
+    // The edit at a strength (lut/ops/Strength.h): each patch entry blended with the colour it
+    // held before the edit, so the LUT (raw, or the game's) gives that share of the edit. The
+    // checks of the patch look at the edit as it was made.
+    StrengthOptions strength;
     int nthreads = 0;
 };
 
