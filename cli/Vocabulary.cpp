@@ -428,7 +428,7 @@ void refuseNonFiniteNumbers(CLI::App& app) {
         "", "finite");
     for (CLI::Option* o : app.get_options())
         if (o->get_type_name().rfind("FLOAT", 0) == 0)
-            o->check(finite);
+            o->transform(finite); // first, before any range check (which would say "not in range")
     for (CLI::App* sub : app.get_subcommands({}))
         refuseNonFiniteNumbers(*sub);
 }

@@ -89,7 +89,16 @@ void checkText(const std::string& path, std::vector<std::string>& chain) {
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     for (const std::string& ref : referencedPaths(text)) {
         const std::filesystem::path p(ref);
-        checkFileOnce((p.is_absolute() ? p : folder / p).lexically_normal().string(), chain);
+        // The refusal names the file that holds the reference too: the user gave that one.
+        try {
+            checkFileOnce((p.is_absolute() ? p : folder / p).lexically_normal().string(), chain);
+        } catch (const LimitError& e) {
+            throw LimitError(path + ": references " + ref + ": " + e.what());
+        } catch (const ParseError&) {
+            throw; // names its own file, line and column
+        } catch (const Error& e) {
+            throw Error(path + ": references " + ref + ": " + e.what());
+        }
     }
 }
 
