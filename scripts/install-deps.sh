@@ -8,7 +8,7 @@
 set -euo pipefail
 # The CLI and its image module: compiler, CMake, OpenImageIO, OpenColorIO, the native codecs,
 # GLM, CLI11, ccache.
-CLI_PACKAGES=(cmake make g++ pkg-config libopenimageio-dev libopenexr-dev libpng-dev zlib1g-dev
+CLI_PACKAGES=(cmake make g++ pkg-config libopenimageio-dev libopenexr-dev libpng-dev zlib1g-dev libdeflate-dev
   libopencolorio-dev libglm-dev libcli11-dev ccache)
 EDITOR_PACKAGES=(qt6-base-dev libqt6opengl6-dev)
 case "${1:-}" in
