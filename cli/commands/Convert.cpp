@@ -6,13 +6,13 @@
 #include "Vocabulary.h"
 #include "commands/Bake.h"
 
+#include "lut/LutPurpose.h"
 #include "lut/formats/Bake.h"
 #include "lut/formats/Convert.h"
 #include "lut/formats/Hald.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/io/FileNames.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <CLI/CLI.hpp>
 

@@ -5,11 +5,11 @@
 // lut/roundtrip/Extract.h). Works on lut::Image (no file I/O).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/PatchLattice.h"
 #include "lut/roundtrip/PatchPlacement.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <optional>
 #include <string_view>

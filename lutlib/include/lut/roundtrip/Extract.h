@@ -5,11 +5,11 @@
 #include "lut/ErrorStats.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutPurpose.h"
 #include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
 #include "lut/roundtrip/PatchReader.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 #include "lut/roundtrip/RoundtripWarning.h"
 
 #include <cstddef>

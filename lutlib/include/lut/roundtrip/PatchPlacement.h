@@ -12,9 +12,9 @@
 // "the colour of the odd outer cells", whatever the edit made of white and black. Any per-pixel
 // global edit (curves, levels, inversion, gradient maps, channel mixing) keeps equal pixels equal
 // and so keeps the pattern; only an edit that maps white and black to the same colour destroys it.
+#include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
 #include "lut/roundtrip/PatchLattice.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <cstdint>
 #include <optional>

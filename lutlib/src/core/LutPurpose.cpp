@@ -1,5 +1,5 @@
-// The round trip's target names; see lut/roundtrip/RoundtripTarget.h.
-#include "lut/roundtrip/RoundtripTarget.h"
+// The round trip's target names; see lut/LutPurpose.h.
+#include "lut/LutPurpose.h"
 
 #include "lut/Error.h"
 
