@@ -120,7 +120,7 @@ int runConvert(const ConvertOptions& o) {
     const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
     const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb";
     const bool smash =
-        !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash : gameOut && !gameIn;
+        !o.target.empty() ? parseLutPurpose(o.target) == LutPurpose::Smash : gameOut && !gameIn;
     if (smash)
         return runConvertGame(o, !o.target.empty()
                                      ? "asked for"
@@ -206,10 +206,10 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--json", o->json, "print the report as JSON");
     addOverwriteOptions(*sub, o->overwrite);
     sub->add_option("--target", o->target,
-                    std::string("what OUT is for (default: ") + toString(ExtractTarget::Smash) +
-                        " for a .nutexb, else " + toString(ExtractTarget::Raw) +
-                        "): " + toString(ExtractTarget::Raw) + " = the LUT as it is; " +
-                        toString(ExtractTarget::Smash) +
+                    std::string("what OUT is for (default: ") + toString(LutPurpose::Smash) +
+                        " for a .nutexb, else " + toString(LutPurpose::Raw) +
+                        "): " + toString(LutPurpose::Raw) + " = the LUT as it is; " +
+                        toString(LutPurpose::Smash) +
                         " = IN is an edit of the game's picture (a graded strip such as "
                         "Smush-LUT's neutral.png), OUT the game's LUT that shows it")
         ->type_name("NAME")

@@ -85,15 +85,15 @@ int runExtract(const ExtractOptions& o) {
     }
     lut::ExtractOptions eo;
     if (!o.target.empty()) {
-        eo.target = parseTarget(o.target);
+        eo.target = parseLutPurpose(o.target);
     } else if (isGameOutput(o)) {
-        eo.target = ExtractTarget::Smash;
+        eo.target = LutPurpose::Smash;
         eo.targetReason = "the output is a .nutexb, the game's LUT; --target raw writes the edit";
     }
-    if (!o.originalLut.empty() && eo.target && *eo.target == ExtractTarget::Raw)
+    if (!o.originalLut.empty() && eo.target && *eo.target == LutPurpose::Raw)
         throw UsageError("--original-lut is for --target smash: a raw LUT does not depend on the "
                          "stage's LUT");
-    if (o.refine && eo.target && *eo.target == ExtractTarget::Raw)
+    if (o.refine && eo.target && *eo.target == LutPurpose::Raw)
         throw UsageError("--refine is for --target smash (the game's interpolation between its "
                          "16^3 entries)");
     eo.outputSize = o.size;
@@ -114,7 +114,7 @@ int runExtract(const ExtractOptions& o) {
         // an N^2 x N picture is a LUT strip, not a screenshot
         // No patch records a target: the game for a .nutexb output or --target smash, else the
         // edit itself (as convert does with the same file).
-        return extractFromLutImage(o, eo.target && *eo.target == ExtractTarget::Smash);
+        return extractFromLutImage(o, eo.target && *eo.target == LutPurpose::Smash);
     } else if (found.status == FindStatus::NotFound && isSmushStripName(o.input) &&
                loaded.image.width() >= 256 && loaded.image.height() >= 16) {
         if (!o.verbosity.quiet)
@@ -142,7 +142,7 @@ int runExtract(const ExtractOptions& o) {
         else
             std::cerr << "lutkit: " << o.input << ": " << d.str() << "\n";
     }
-    if (res.target == ExtractTarget::Smash && res.clampedEntries > 0)
+    if (res.target == LutPurpose::Smash && res.clampedEntries > 0)
         std::cout << "clamped " << res.clampedEntries << " values (farthest "
                   << res.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
     writeOut(o, std::move(res.lut), toString(res.target));
@@ -163,9 +163,9 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
         ->type_name("FILE");
     sub->add_option("--target", o->target,
                     std::string("default: what the patch records (embed --target), ") +
-                        toString(ExtractTarget::Smash) + " for a .nutexb output; " +
-                        toString(ExtractTarget::Raw) + " = the edit itself, " +
-                        toString(ExtractTarget::Smash) + " = compensated for the game")
+                        toString(LutPurpose::Smash) + " for a .nutexb output; " +
+                        toString(LutPurpose::Raw) + " = the edit itself, " +
+                        toString(LutPurpose::Smash) + " = compensated for the game")
         ->type_name("NAME")
         ->check(choicesValidator(targetChoices()));
     sub->add_option("--original-lut", o->originalLut,

@@ -185,7 +185,7 @@ void Document::startFrom(Lut3D base, const QString& origin) {
 QStringList Document::startFromScreenshot(const QString& path) {
     formats::LoadedImage loaded = formats::readImage(path.toStdString());
     ExtractOptions options;
-    options.target = ExtractTarget::Raw;
+    options.target = LutPurpose::Raw;
     ExtractResult result = extractLut(loaded.image.view(), options);
     QStringList notes;
     for (const Diagnostic& d : result.diagnostics)

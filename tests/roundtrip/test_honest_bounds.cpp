@@ -29,10 +29,10 @@ std::vector<std::pair<const char*, Edit>> testEdits() {
 } // namespace
 
 // One test per target and file type (each runs the five edits), so each stays short.
-class HonestBounds : public ::testing::TestWithParam<std::tuple<ExtractTarget, Storage>> {};
+class HonestBounds : public ::testing::TestWithParam<std::tuple<LutPurpose, Storage>> {};
 
 TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
-    const ExtractTarget target = std::get<0>(GetParam());
+    const LutPurpose target = std::get<0>(GetParam());
     const Storage storage = std::get<1>(GetParam());
     const std::string dir = rtDir();
     for (const auto& [name, edit] : testEdits()) {
@@ -47,7 +47,7 @@ TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
         const ExtractResult r = extractLut(saved.view(), {});
         ASSERT_EQ(r.target, target);
         const Truth t =
-            target == ExtractTarget::Smash ? smashTruth(r.lut, edit) : rawTruth(r.lut, edit);
+            target == LutPurpose::Smash ? smashTruth(r.lut, edit) : rawTruth(r.lut, edit);
         const ExpectedError& e = r.expected;
         std::printf("[ measured ] %-5s %-12s %-12s lattice true %5.2f/%5.3f printed "
                     "%5.2f/%5.3f | all true %5.2f/%5.3f/%5.2f printed %5.2f/%5.3f/%5.2f "
@@ -65,16 +65,15 @@ TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    EveryEditFileAndTarget, HonestBounds,
-    ::testing::Combine(::testing::Values(ExtractTarget::Smash, ExtractTarget::Raw),
-                       ::testing::Values(Storage::Png8, Storage::Tiff16, Storage::Jpeg420,
-                                         Storage::Jpeg444)),
-    [](const ::testing::TestParamInfo<std::tuple<ExtractTarget, Storage>>& info) {
-        std::string name = std::string(toString(std::get<0>(info.param))) + "_" +
-                           storageName(std::get<1>(info.param));
-        for (char& ch : name)
-            if (ch == '-')
-                ch = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(EveryEditFileAndTarget, HonestBounds,
+                         ::testing::Combine(::testing::Values(LutPurpose::Smash, LutPurpose::Raw),
+                                            ::testing::Values(Storage::Png8, Storage::Tiff16,
+                                                              Storage::Jpeg420, Storage::Jpeg444)),
+                         [](const ::testing::TestParamInfo<std::tuple<LutPurpose, Storage>>& info) {
+                             std::string name = std::string(toString(std::get<0>(info.param))) +
+                                                "_" + storageName(std::get<1>(info.param));
+                             for (char& ch : name)
+                                 if (ch == '-')
+                                     ch = '_';
+                             return name;
+                         });

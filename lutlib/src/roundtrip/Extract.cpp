@@ -82,7 +82,7 @@ void resolveTarget(const PatchPlacement& pl, const ExtractOptions& o, ExtractRes
         res.target = *pl.target;
         res.targetSource = TargetSource::Patch;
     } else {
-        res.target = isGameDisplayLattice(pl.lattice) ? ExtractTarget::Smash : ExtractTarget::Raw;
+        res.target = isGameDisplayLattice(pl.lattice) ? LutPurpose::Smash : LutPurpose::Raw;
         res.targetSource = TargetSource::Lattice;
     }
 }
@@ -199,7 +199,7 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
     res.readNoiseMean = noiseSum / (3.0 * static_cast<double>(noise.max.entryCount()));
 
     const PatchFunction edit(patch.values, patch.axis);
-    if (res.target == ExtractTarget::Raw) {
+    if (res.target == LutPurpose::Raw) {
         if (stage)
             throw Error("this patch was embedded for the game with a stage LUT: its colours are "
                         "that LUT's picture, not a lattice a raw LUT can be read from; extract it "

@@ -37,7 +37,7 @@ struct MarkerHeader {
     LutLayout layout = LutLayout::Hald;
     int size = 0;
     int scale = 0;
-    std::optional<ExtractTarget> target;      // version 2
+    std::optional<LutPurpose> target;         // version 2
     std::optional<std::uint16_t> stageDigest; // version 2
 };
 
