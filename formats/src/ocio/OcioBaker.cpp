@@ -143,6 +143,8 @@ public:
                 md.addAttribute(OCIO::METADATA_NAME, lut.title().c_str());
                 md.addChildElement(OCIO::METADATA_DESCRIPTION, lut.title().c_str());
             }
+            if (file.purpose)
+                md.addChildElement(OCIO::METADATA_DESCRIPTION, purposeTag(*file.purpose).c_str());
             for (const auto& c : lut.comments())
                 if (!c.empty())
                     md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
@@ -211,6 +213,8 @@ Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFi
             md.addAttribute(OCIO::METADATA_NAME, title.c_str());
             md.addChildElement(OCIO::METADATA_DESCRIPTION, title.c_str());
         }
+        if (file.purpose)
+            md.addChildElement(OCIO::METADATA_DESCRIPTION, purposeTag(*file.purpose).c_str());
         if (cube)
             for (const auto& c : cube->comments())
                 if (!c.empty())
