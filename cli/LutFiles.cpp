@@ -23,10 +23,19 @@ LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& 
     return file;
 }
 
-Lut3D readLutTable(const std::string& path, const Verbosity& verbosity) {
+Lut3D readLutTable(const std::string& path, const Verbosity& verbosity, PurposeDecision* purpose,
+                   std::optional<LutPurpose> given) {
     const LutFile file = formats::readLut(path, {});
     printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
+    if (purpose)
+        *purpose = decidePurpose(file, given);
     return file.toLut3D();
+}
+
+std::optional<LutPurpose> knownPurpose(const PurposeDecision& d) {
+    if (d.source == PurposeSource::Assumed)
+        return std::nullopt;
+    return d.purpose;
 }
 
 WrittenLut writeLutFile(const std::string& path, const LutFile& file, const std::string& format,
@@ -47,9 +56,10 @@ WrittenLut writeLutFile(const std::string& path, const LutFile& file, const std:
 
 void writeLutTable(std::ostream& os, const std::string& path, const Lut3D& lut,
                    const std::string& format, const std::vector<std::string>& inputs,
-                   const Verbosity& verbosity) {
+                   const Verbosity& verbosity, std::optional<LutPurpose> purpose) {
     LutFile file;
     file.cube = lut;
+    file.purpose = purpose;
     const WrittenLut w = writeLutFile(path, file, format, inputs);
     os << "wrote    " << path << ": " << w.format << ", " << lut.size() << "^3\n";
     printDiagnostics(os, w.diagnostics, verbosity);

@@ -2,6 +2,7 @@
 // screenshot (docs/roundtrip.md); lutkit extract finds it again after grading.
 #include "commands/Embed.h"
 
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -41,7 +42,7 @@ int runEmbed(const EmbedOptions& o) {
     eo.margin = o.margin;
     Lut3D original;
     if (!o.originalLut.empty()) {
-        original = formats::readLut(o.originalLut).toLut3D();
+        original = readStageLut(o.originalLut, o.verbosity);
         eo.originalLut = &original;
     }
     auto loaded = formats::readImage(o.input);

@@ -29,6 +29,7 @@ struct PreviewOptions {
     std::string maxMemory;              // --max-memory (default half the RAM)
     std::string lut;                    // grading LUT (default neutral)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
+    std::string lutTarget;              // what the LUT is for ("" = its tag, else raw)
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none
     bool noBloom = false;
     Interpolation interp = Interpolation::Trilinear; // the game samples with hardware trilinear

@@ -10,7 +10,9 @@
 #include "lut/io/StdStreams.h"
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
+#include "lut/pipeline/SmashConstants.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace lut::formats {
@@ -63,6 +65,13 @@ const Format* formatNamed(const std::string& name) {
 
 } // namespace
 
+LutPurpose outputPurpose(LutPurpose input, std::optional<LutPurpose> given,
+                         const std::string& writerName) {
+    if (given)
+        return *given;
+    return writerName == "nutexb" ? LutPurpose::Smash : input;
+}
+
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options) {
     const auto tStart = Clock::now();
@@ -88,15 +97,45 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
 
     // Readers that sample (OpenColorIO's chains) sample at the size the output stores, through
     // the whole processor, instead of being resampled afterwards.
+    // (Not when the table is to change purpose: the edit is then evaluated at the game's
+    // colours, from the file's own lattice.)
+    const bool mayConvert = options.outPurpose || options.inPurpose || writer->name() == "nutexb";
     FormatOptions readOptions = options.read;
-    if (readOptions.size == 0)
+    if (readOptions.size == 0 && !mayConvert)
         readOptions.size = wantSize ? wantSize : writer->fixedSize();
     auto t0 = Clock::now();
     report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
-    const LutFile& in = report.input;
-    if (!in.cube && !in.shaper)
+    if (!report.input.cube && !report.input.shaper)
         throw Error(input + ": holds no table");
+
+    // What the input is for and what the output is for; the table for the output's purpose.
+    PurposeStep& step = report.purpose;
+    step.input = decidePurpose(report.input, options.inPurpose);
+    step.output = outputPurpose(step.input.purpose, options.outPurpose, writer->name());
+    step.outputGiven = options.outPurpose.has_value();
+    LutFile converted = report.input;
+    if (step.output != step.input.purpose) {
+        if (step.output == LutPurpose::Smash && wantSize != 0 && wantSize != kSmashLutSize)
+            throw Error("the game's LUT is " + std::to_string(kSmashLutSize) +
+                        "^3: another size does not apply to it");
+        PurposeOptions po = options.purpose;
+        if (step.output == LutPurpose::Raw)
+            po.rawSize = wantSize              ? wantSize
+                         : writer->fixedSize() ? writer->fixedSize()
+                         : report.input.cube   ? std::max(report.input.cube->size(), 33)
+                                               : 33;
+        step.conversion =
+            convertPurpose(report.input.toLut3D(), step.input.purpose, step.output, po);
+        converted.shaper.reset();
+        converted.cube = step.conversion->lut;
+    }
+    // The output says what it is for when that is known: the file or the user said it, or the
+    // table was made for it (an assumption is not turned into a statement).
+    const bool known = step.input.source != PurposeSource::Assumed || step.conversion ||
+                       step.outputGiven || step.output == LutPurpose::Smash;
+    converted.purpose = known ? std::optional<LutPurpose>(step.output) : std::nullopt;
+    const LutFile& in = converted;
 
     // Resample when the output stores another lattice size.
     const int sourceSize = in.cube ? in.cube->size() : 0;

@@ -68,8 +68,10 @@ TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
     for (bool bloom : {true, false}) {
         const std::string out = dir + (bloom ? "/bloom.exr" : "/nobloom.exr");
-        const RunResult r = runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut '" +
-                                   cube + "'" + (bloom ? "" : " --no-bloom"));
+        // (the table is the game's LUT: a .cube that does not say is taken as an edit)
+        const RunResult r =
+            runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut-target smash --lut '" +
+                   cube + "'" + (bloom ? "" : " --no-bloom"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const formats::LoadedImage got = formats::readImage(out);
         EXPECT_EQ(got.info.bitDepth, 32);
@@ -193,16 +195,16 @@ TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {
         scene.pixels()[i] = 1.0f;
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
     ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' -o '" + dir +
-                     "/shot.exr' --no-bloom --lut '" + l0 + "'")
+                     "/shot.exr' --no-bloom --lut-target smash --lut '" + l0 + "'")
                   .exitCode,
               0);
-    const RunResult r =
-        runCli("preview '" + dir + "/shot.exr' -o '" + dir + "/regraded.exr' --no-bloom --lut '" +
-               l1 + "' --from-screenshot --original-lut '" + l0 + "'");
+    const RunResult r = runCli("preview '" + dir + "/shot.exr' -o '" + dir +
+                               "/regraded.exr' --no-bloom --lut-target smash --lut '" + l1 +
+                               "' --from-screenshot --original-lut '" + l0 + "'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("bloom cannot be undone"), std::string::npos);
     ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' -o '" + dir +
-                     "/direct.exr' --no-bloom --lut '" + l1 + "'")
+                     "/direct.exr' --no-bloom --lut-target smash --lut '" + l1 + "'")
                   .exitCode,
               0);
     const Image a = formats::readImage(dir + "/regraded.exr").image;

@@ -1,0 +1,154 @@
+#include "PurposeText.h"
+
+#include "Json.h"
+#include "Vocabulary.h"
+
+#include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
+#include "lut/pipeline/SmashConstants.h"
+
+#include <iostream>
+#include <sstream>
+
+namespace lut::cli {
+
+CLI::Option* addPurpose(CLI::App& sub, const std::string& name, std::string& target,
+                        const std::string& help) {
+    return sub.add_option(name, target, help)
+        ->type_name("NAME")
+        ->check(choicesValidator(targetChoices()));
+}
+
+std::optional<LutPurpose> purposeOption(const std::string& value) {
+    if (value.empty())
+        return std::nullopt;
+    return parseLutPurpose(value);
+}
+
+void printConversion(std::ostream& os, const PurposeConversion& c, const ConversionWords& w) {
+    if (!c.converted())
+        return;
+    if (c.to == LutPurpose::Raw) {
+        os << "edit     the edit this game LUT makes of the neutral game's picture, "
+           << c.lut.size() << "^3 (" << toString(Interpolation::Tetrahedral)
+           << " between its points) against that edit: " << c.sampling.str() << " over "
+           << c.measuredOver << "\n";
+        return;
+    }
+    const SmashAuthoringResult& r = c.authoring;
+    os << "game     the LUT that makes Smash Ultimate show this edit of its own picture (stage "
+          "LUT: "
+       << w.stage << "; the edit evaluated " << toString(w.interp)
+       << ", entries rounded to nearest)\n";
+    if (r.exactError.count > 0) {
+        os << "in game  what the game shows with the 8-bit LUT vs the edited colours, over "
+           << r.measuredOver << ":\n";
+        os << "         exact composition:       " << r.exactError.str()
+           << (w.refine ? "" : "  (written)") << "\n";
+        os << "         least-squares refinement: " << r.refinedError.str()
+           << (w.refine ? "  (written)" : "  (--refine writes it)") << "\n";
+    }
+    if (r.clampedEntries > 0)
+        os << "clamped  " << r.clampedEntries << " values the game cannot reach (up to "
+           << r.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
+}
+
+std::string conversionJson(const std::optional<PurposeConversion>& c, bool refine) {
+    if (!c || !c->converted())
+        return "null";
+    auto err = [](const GameError& e) {
+        return "{\"max\": " + json::number(e.maxSteps) +
+               ", \"mean\": " + json::number(e.meanSteps) +
+               ", \"p99\": " + json::number(e.p99Steps) + "}";
+    };
+    std::ostringstream js;
+    js << "{\"from\": " << json::quote(toString(c->from))
+       << ", \"to\": " << json::quote(toString(c->to))
+       << ", \"measured_over\": " << json::quote(c->measuredOver);
+    if (c->to == LutPurpose::Raw) {
+        js << ", \"size\": " << c->lut.size() << ", \"sampling\": " << err(c->sampling) << "}";
+        return js.str();
+    }
+    const SmashAuthoringResult& r = c->authoring;
+    js << ", \"exact\": " << err(r.exactError) << ", \"refined\": " << err(r.refinedError)
+       << ", \"written\": " << json::quote(refine ? "refined" : "exact")
+       << ", \"clamped\": " << r.clampedEntries << "}";
+    return js.str();
+}
+
+PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose wanted,
+                   std::optional<LutPurpose> given, const std::string& flag,
+                   const PurposeOptions& options, const Verbosity& verbosity) {
+    PurposedLut out;
+    out.decision = decidePurpose(file, given);
+    const Lut3D table = file.toLut3D();
+    if (out.decision.purpose == wanted) {
+        out.lut = table;
+    } else {
+        out.conversion = convertPurpose(table, out.decision.purpose, wanted, options);
+        out.lut = out.conversion->lut;
+    }
+    // Said when it changes the table, or when the file does not say and could be either: the
+    // game's LUTs are all 16^3, so an unsaid 16^3 table may be one (a 33^3 grade is no game's).
+    const bool ambiguous =
+        out.decision.source == PurposeSource::Assumed && table.size() == kSmashLutSize;
+    if ((ambiguous || out.conversion) && !verbosity.quiet) {
+        std::cerr << "lutkit: note: " << path << " is " << out.decision.text(flag);
+        if (out.conversion)
+            std::cerr << ": used as " << describe(wanted);
+        std::cerr << "\n";
+        if (out.conversion) {
+            std::ostringstream os;
+            ConversionWords w;
+            w.interp = options.editInterpolation;
+            w.refine = options.refine;
+            printConversion(os, *out.conversion, w);
+            std::istringstream lines(os.str());
+            for (std::string line; std::getline(lines, line);)
+                std::cerr << "lutkit: note: " << path << ": " << line << "\n";
+        }
+    }
+    return out;
+}
+
+ResultPurpose resultPurpose(const PurposeDecision& a, const PurposeDecision& b,
+                            std::optional<LutPurpose> given, const std::string& output,
+                            const std::string& format) {
+    ResultPurpose r;
+    if (given) {
+        r.to = *given;
+        r.known = true;
+        r.why = "--target";
+    } else if (extensionOf(output) == ".nutexb" || format == "nutexb") {
+        r.to = LutPurpose::Smash;
+        r.known = true;
+        r.why = "the output is a .nutexb, the game's LUT";
+    } else {
+        r.to = a.purpose;
+        r.known = a.source != PurposeSource::Assumed || b.purpose != a.purpose;
+        r.why = "as A; --target chooses";
+    }
+    return r;
+}
+
+void printInputsPurpose(std::ostream& os, const PurposeDecision& a, const PurposeDecision& b,
+                        const ResultPurpose& out) {
+    os << "purpose  A:   " << a.text("--in-target") << "\n"
+       << "         B:   " << b.text("--in-target") << "\n"
+       << "         OUT: " << toString(out.to) << " (" << out.why << ")\n";
+}
+
+Lut3D readStageLut(const std::string& path, const Verbosity& verbosity) {
+    const LutFile file = formats::readLut(path);
+    printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
+    const PurposeDecision d = decidePurpose(file, std::nullopt, LutPurpose::Smash);
+    if (d.purpose == LutPurpose::Smash)
+        return file.toLut3D();
+    const PurposeConversion c = convertPurpose(file.toLut3D(), LutPurpose::Raw, LutPurpose::Smash);
+    if (!verbosity.quiet)
+        std::cerr << "lutkit: note: " << path << " (--original-lut) is " << d.text("")
+                  << ": the stage runs the game's LUT that shows it\n";
+    return c.lut;
+}
+
+} // namespace lut::cli
