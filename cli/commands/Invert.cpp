@@ -3,6 +3,7 @@
 
 #include "Json.h"
 #include "LutFiles.h"
+#include "Numbers.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -20,16 +21,6 @@
 namespace lut::cli {
 
 namespace {
-
-std::string g(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
-std::string triple(glm::vec3 v) {
-    return g(v.x) + " " + g(v.y) + " " + g(v.z);
-}
 
 void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD) {
     if (o.json) {
@@ -53,15 +44,15 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
         return;
     }
     std::cout << "inverted " << o.input << (oneD ? " (1D, per channel)" : "") << ": " << r.points
-              << " points, " << g(r.seconds * 1e3) << " ms\n";
+              << " points, " << significant(r.seconds * 1e3) << " ms\n";
     if (r.invertible())
         std::cout << "         invertible everywhere";
     else
         std::cout << "         " << r.unreachable << " points have no exact preimage "
                   << "(least-squares answer); " << r.foldedCells
                   << (oneD ? " segments not strictly monotone" : " cells flat or folded");
-    std::cout << "\nresidual |A(inverse(y)) - y|: max " << g(r.maxResidual) << ", mean "
-              << g(r.meanResidual) << "\n"
+    std::cout << "\nresidual |A(inverse(y)) - y|: max " << significant(r.maxResidual) << ", mean "
+              << significant(r.meanResidual) << "\n"
               << "round trip |inverse(A(x)) - x|: " << r.roundTrip.str() << "\n";
     if (r.unreachable) {
         std::cout << "where    no inverse:";
@@ -72,8 +63,8 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
         for (const auto& w : r.worst)
             if (o.verbosity.verbose)
                 std::cout << "  target " << triple(w.target) << " -> " << triple(w.solution)
-                          << " reaches " << triple(w.reached) << " (off by " << g(w.residual)
-                          << ")\n";
+                          << " reaches " << triple(w.reached) << " (off by "
+                          << significant(w.residual) << ")\n";
     }
 }
 

@@ -5,6 +5,7 @@
 #include "lut/Error.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "pipeline/GameDisplay.h"
@@ -185,14 +186,6 @@ GameSamples makeSamples(const WantedDisplay& wanted, const StageModel& stage,
     return samples;
 }
 
-Lut3D rounded8(const Lut3D& lut) {
-    Lut3D out = lut;
-    for (auto& e : out.entries())
-        for (int c = 0; c < 3; ++c)
-            e[c] = fromUnorm8(toUnorm8(e[c]));
-    return out;
-}
-
 } // namespace
 
 glm::dvec3 smashShownColour(const glm::dvec3& s, const Lut3D* gameLut, bool clip) {
@@ -243,13 +236,13 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
         }
         return e;
     };
-    res.exactError = report(rounded8(res.lut));
+    res.exactError = report(quantized8(res.lut));
     if (o.refine) {
         Lut3D refined = detail::refineSmashLut(samples, res.exact, o.nthreads);
         GameError refinedError = report(refined);
         // a refinement that does not lower the mean error is no refinement: ship the exact one
         if (refinedError.meanSteps > res.exactError.meanSteps) {
-            refined = rounded8(res.lut);
+            refined = quantized8(res.lut);
             refinedError = res.exactError;
         }
         res.lut = std::move(refined);

@@ -5,6 +5,7 @@
 #include "lut/roundtrip/Extract.h"
 
 #include "lut/interp/Sampler.h"
+#include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/SmashAuthoring.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/Embed.h"
@@ -50,14 +51,6 @@ Lut3D rawLut(const PatchFunction& edit, int m) {
         for (int g = 0; g < m; ++g)
             for (int r = 0; r < m; ++r)
                 out.at(r, g, b) = edit(glm::vec3(r, g, b) / static_cast<float>(m - 1));
-    return out;
-}
-
-Lut3D rounded8(const Lut3D& lut) {
-    Lut3D out = lut;
-    for (auto& e : out.entries())
-        for (int c = 0; c < 3; ++c)
-            e[c] = static_cast<float>(std::lround(detail::clampUnit(e[c]) * 255.0) / 255.0);
     return out;
 }
 
@@ -271,7 +264,7 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                                      "were clamped: the game cannot show those colours",
                                      double(res.clampedEntries), res.clampedMax,
                                      res.clampedMax * 255.0));
-        res.expected = detail::smashExpectedError(patch, sub, noise, rounded8(res.lut), wanted,
+        res.expected = detail::smashExpectedError(patch, sub, noise, quantized8(res.lut), wanted,
                                                   stage ? nullptr : options.originalLut,
                                                   res.modelError, options.nthreads);
     }
