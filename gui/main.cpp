@@ -143,6 +143,13 @@ int main(int argc, char** argv) {
         QStringLiteral("What the LUT is for: smash (Smash Ultimate, color_grading_lut.nutexb; "
                        "default), engine (a 16^3 strip PNG) or cube (a grading app)."),
         QStringLiteral("TARGET"));
+    QCommandLineOption lutTargetOpt(
+        QStringLiteral("lut-target"),
+        QStringLiteral("What LUT is for when the file does not say (as lutkit's --lut-target): "
+                       "raw (an edit, the look itself) or smash (the game's LUT, already made for "
+                       "Smash Ultimate). Default: ask once per file (taken as raw without a "
+                       "window)."),
+        QStringLiteral("NAME"));
     QCommandLineOption inputOpt(
         QStringLiteral("input"),
         QStringLiteral("What IMAGE holds: screenshot or scene (default: 8/16-bit files are "
@@ -155,7 +162,7 @@ int main(int argc, char** argv) {
         QStringLiteral("FILE"));
     parser.addOptions({versionOpt, shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt,
                        noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt,
-                       targetOpt, inputOpt, scriptOpt});
+                       targetOpt, lutTargetOpt, inputOpt, scriptOpt});
     if (!parser.parse(arguments)) {
         std::fprintf(stderr, "lutkit-editor: %s\nRun 'lutkit-editor --help' for usage.\n",
                      qPrintable(parser.errorText()));
@@ -201,6 +208,9 @@ int main(int argc, char** argv) {
         if (preset != lut::Preset::Smash)
             options.preset = preset;
         options.interpolation = lut::parseInterpolation(parser.value(interpOpt).toStdString());
+        if (parser.isSet(lutTargetOpt))
+            window.setLutPurposeAnswer(
+                lut::parseLutPurpose(parser.value(lutTargetOpt).toStdString()));
         if (parser.isSet(inputOpt))
             input = lut::parseSceneKind(parser.value(inputOpt).toStdString());
         else if (parser.isSet(fromShotOpt))

@@ -146,9 +146,10 @@ bool ExportDialog::matchesPreview() const {
 }
 
 void ExportDialog::updateNote() {
-    const QString what = m_target == ExportTarget::Smash
-                             ? tr("the Smash Ultimate game LUT that shows your edit (16³)")
-                             : tr("the LUT as edited");
+    const QString what = exportTargetInfo(m_target).purpose == LutPurpose::Smash
+                             ? tr("the Smash Ultimate game LUT that shows your edit (16³), "
+                                  "marked as the game's (LUTKIT_PURPOSE smash)")
+                             : tr("the LUT as edited, marked as an edit (LUTKIT_PURPOSE raw)");
     const QString target = QString::fromStdString(exportTargetInfo(m_target).label);
     m_note->setText(matchesPreview()
                         ? tr("%1; exactly what the preview shows (target: %2).").arg(what, target)

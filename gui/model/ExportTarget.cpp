@@ -3,18 +3,19 @@
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FormatRegistry.h"
-#include "lut/pipeline/SmashDisplayEdit.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/pipeline/PurposeConversion.h"
+#include "lut/pipeline/SmashConstants.h"
 
 namespace lut::gui {
 
 const std::vector<ExportTargetInfo>& exportTargets() {
     static const std::vector<ExportTargetInfo> targets = {
         {ExportTarget::Smash, "smash", "Smash Ultimate (.nutexb)", "nutexb", std::nullopt,
-         ".nutexb", kSmashLutSize, 0},
+         ".nutexb", kSmashLutSize, 0, LutPurpose::Smash},
         {ExportTarget::Engine, "engine", "Game engine strip (.png)", "strip", LutLayout::Pilot,
-         ".png", 16, 8},
-        {ExportTarget::Grading, "cube", "Grading app (.cube)", "cube", std::nullopt, ".cube", 0, 0},
+         ".png", 16, 8, LutPurpose::Raw},
+        {ExportTarget::Grading, "cube", "Grading app (.cube)", "cube", std::nullopt, ".cube", 0, 0,
+         LutPurpose::Raw},
     };
     return targets;
 }
@@ -37,19 +38,41 @@ ExportTarget parseExportTarget(std::string_view key) {
     throw Error("unknown target '" + std::string(key) + "' (expected smash, engine or cube)");
 }
 
-Lut3D exportTable(const LutSource& source, ExportTarget target) {
+Lut3D exportTable(const LutSource& source, ExportTarget target, ClipCount* clip) {
     static const Lut3D neutral = Lut3D::identity(33);
-    const Lut3D& effective = source.effective ? *source.effective : neutral;
-    if (target != ExportTarget::Smash)
-        return effective;
-    // The edit is a LUT on display colours, sampled tetrahedrally (exact for affine edits, the
-    // neutral one included).
-    if (source.gameBase) {
-        const bool neutralEdit = !source.adjustments || source.adjustments->isNeutral();
+    const LutPurpose to = exportTargetInfo(target).purpose;
+    // The edit is a LUT on display colours, evaluated tetrahedrally (exact for affine edits, the
+    // neutral one included), continued above white (a game LUT exported unchanged is itself).
+    PurposeOptions o;
+    o.aboveWhite = kEditAboveWhite;
+    o.editInterpolation = Interpolation::Tetrahedral;
+    const bool neutralEdit = !source.adjustments || source.adjustments->isNeutral();
+    Lut3D table;
+    if (source.gameBase && to == LutPurpose::Smash) {
+        // The adjustments edit the picture the game shows with its LUT: that LUT is the stage.
+        o.stageLut = source.gameBase.get();
         const Lut3D edit = neutralEdit ? neutral : applyAdjustments(neutral, *source.adjustments);
-        return smashLutForDisplayEdit(edit, source.gameBase.get(), Interpolation::Tetrahedral);
+        const PurposeConversion c = convertPurpose(edit, LutPurpose::Raw, to, o);
+        if (clip)
+            *clip = countOutOfRange(c.authoring.exact);
+        return c.authoring.exact; // the file clamps it, as it clamps convert's
     }
-    return smashLutForDisplayEdit(effective, nullptr, Interpolation::Tetrahedral);
+    if (source.gameBase) { // the edit the game's LUT makes, then the adjustments on it
+        const Lut3D edit = editOfGameLut(*source.gameBase, 33);
+        table = neutralEdit ? edit : applyAdjustments(edit, *source.adjustments);
+    } else {
+        const Lut3D& effective = source.effective ? *source.effective : neutral;
+        if (to == LutPurpose::Smash) {
+            const PurposeConversion c = convertPurpose(effective, LutPurpose::Raw, to, o);
+            if (clip)
+                *clip = countOutOfRange(c.authoring.exact);
+            return c.authoring.exact;
+        }
+        table = effective;
+    }
+    if (clip)
+        *clip = countOutOfRange(table);
+    return table;
 }
 
 FormatOptions targetFormatOptions(ExportTarget target) {
@@ -65,14 +88,14 @@ TargetLut makeTargetLut(const LutSource& source, ExportTarget target) {
     formats::registerBuiltinFormats();
     const ExportTargetInfo& info = exportTargetInfo(target);
     TargetLut out;
-    out.table = exportTable(source, target);
-    out.clip = countOutOfRange(out.table);
+    out.table = exportTable(source, target, &out.clip);
     const Format* format = FormatRegistry::instance().byName(info.format);
     if (!format)
         throw Error("the " + info.format + " format is not available");
     const FormatOptions options = targetFormatOptions(target);
     LutFile file;
     file.cube = out.table;
+    file.purpose = info.purpose;
     const std::string name = "export" + info.extension;
     if (info.format == "cube") {
         // The .cube writer writes every float as the shortest text that reads back as the same

@@ -294,7 +294,7 @@ private slots:
         formats::writeLut(path.toStdString(), f);
         Document doc;
         doc.openLut(path);
-        QCOMPARE(doc.lutRole(), LutRole::GameLut);
+        QCOMPARE(doc.lutPurpose(), LutPurpose::Smash); // a .nutexb is the game's LUT
         const TargetLut same = makeTargetLut(doc.lutSource(), ExportTarget::Smash);
         QCOMPARE(maxDiff(*same.shown, game), 0.0);
         doc.editParam(AdjustParam::Exposure, 0.3);
