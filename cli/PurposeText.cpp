@@ -1,6 +1,7 @@
 #include "PurposeText.h"
 
 #include "Json.h"
+#include "LutFiles.h"
 #include "Vocabulary.h"
 
 #include "lut/formats/Registry.h"
@@ -131,11 +132,40 @@ ResultPurpose resultPurpose(const PurposeDecision& a, const PurposeDecision& b,
     return r;
 }
 
-void printInputsPurpose(std::ostream& os, const PurposeDecision& a, const PurposeDecision& b,
-                        const ResultPurpose& out) {
-    os << "purpose  A:   " << a.text("--in-target") << "\n"
-       << "         B:   " << b.text("--in-target") << "\n"
-       << "         OUT: " << toString(out.to) << " (" << out.why << ")\n";
+PurposedPair readPurposedPair(const std::string& a, const std::string& b,
+                              const std::string& inTarget, const std::string& target,
+                              const std::string& output, const std::string& format,
+                              const Verbosity& verbosity) {
+    const std::optional<LutPurpose> given = purposeOption(inTarget);
+    PurposedPair p;
+    p.aPath = a;
+    p.bPath = b;
+    p.a = readLutTable(a, verbosity, &p.pa, given);
+    p.b = readLutTable(b, verbosity, &p.pb, given);
+    p.out = resultPurpose(p.pa, p.pb, purposeOption(target), output, format);
+    return p;
+}
+
+std::optional<LutPurpose> printPurposeOp(std::ostream& os, const PurposedPair& p,
+                                         const PurposeOpResult& result, Interpolation interp) {
+    const bool plain = p.pa.purpose == LutPurpose::Raw && p.pb.purpose == LutPurpose::Raw &&
+                       p.out.to == LutPurpose::Raw && p.pa.source == PurposeSource::Assumed &&
+                       p.pb.source == PurposeSource::Assumed;
+    if (!plain)
+        os << "purpose  A:   " << p.pa.text("--in-target") << "\n"
+           << "         B:   " << p.pb.text("--in-target") << "\n"
+           << "         OUT: " << toString(p.out.to) << " (" << p.out.why << ")\n";
+    for (const auto& [what, conversion] : result.conversions) {
+        os << "convert  " << what << ": " << toString(conversion.from) << " -> "
+           << toString(conversion.to) << "\n";
+        // B made into the game's LUT on A's picture: A is the stage
+        const bool staged = what.find("A's picture") != std::string::npos;
+        printConversion(os, conversion,
+                        ConversionWords{staged ? p.aPath : std::string("neutral"), interp, false});
+    }
+    if (p.out.known || !result.conversions.empty())
+        return p.out.to;
+    return std::nullopt;
 }
 
 Lut3D readStageLut(const std::string& path, const Verbosity& verbosity) {

@@ -9,6 +9,7 @@
 #include "lut/formats/Convert.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/PurposeConversion.h"
+#include "lut/pipeline/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 
@@ -64,9 +65,22 @@ struct ResultPurpose {
 ResultPurpose resultPurpose(const PurposeDecision& a, const PurposeDecision& b,
                             std::optional<LutPurpose> given, const std::string& output,
                             const std::string& format);
-// "purpose  A: ...\n         B: ...\n         OUT: ...\n"
-void printInputsPurpose(std::ostream& os, const PurposeDecision& a, const PurposeDecision& b,
-                        const ResultPurpose& out);
+// What compose and mix share: A and B read with what they are for (--in-target), what OUT is for
+// (--target), and after the operation its report and the purpose the output says.
+struct PurposedPair {
+    std::string aPath, bPath;
+    Lut3D a, b;
+    PurposeDecision pa, pb;
+    ResultPurpose out;
+};
+PurposedPair readPurposedPair(const std::string& a, const std::string& b,
+                              const std::string& inTarget, const std::string& target,
+                              const std::string& output, const std::string& format,
+                              const Verbosity& verbosity);
+// "purpose  A: ...  B: ...  OUT: ..." (when any is not an assumed edit) and each conversion made
+// on the way; returns what the output says it is for.
+std::optional<LutPurpose> printPurposeOp(std::ostream& os, const PurposedPair& pair,
+                                         const PurposeOpResult& result, Interpolation interp);
 
 // --original-lut: the stage's LUT, the game's by the option's meaning (a file that does not say
 // is taken as the game's; one that says raw is turned into the game's LUT that shows it, with a

@@ -19,28 +19,18 @@ namespace lut::cli {
 int runCompose(const ComposeCommandOptions& o) {
     if (!beginOutput(o.output, o.overwrite, {o.a, o.b}, o.verbosity.quiet))
         return kExitOk;
-    const std::optional<LutPurpose> given = purposeOption(o.inTarget);
-    PurposeDecision pa, pb;
-    const Lut3D a = readLutTable(o.a, o.verbosity, &pa, given);
-    const Lut3D b = readLutTable(o.b, o.verbosity, &pb, given);
-    const ResultPurpose out = resultPurpose(pa, pb, purposeOption(o.target), o.output, o.format);
+    const PurposedPair p =
+        readPurposedPair(o.a, o.b, o.inTarget, o.target, o.output, o.format, o.verbosity);
     ComposeOptions c;
     c.size = o.size;
     c.method = o.interp;
     // B's edit of the picture A gives, for what OUT is for (lut/pipeline/PurposeOps.h).
     PurposeOptions po;
     po.editInterpolation = o.interp;
-    const PurposeOpResult pr = composeForPurpose({&a, pa.purpose}, {&b, pb.purpose}, out.to, c, po);
+    const PurposeOpResult pr =
+        composeForPurpose({&p.a, p.pa.purpose}, {&p.b, p.pb.purpose}, p.out.to, c, po);
     const OpResult& r = pr.result;
-    const bool mixed =
-        pa.purpose != LutPurpose::Raw || pb.purpose != LutPurpose::Raw || out.to != LutPurpose::Raw;
-    if (mixed || pa.source != PurposeSource::Assumed || pb.source != PurposeSource::Assumed)
-        printInputsPurpose(std::cout, pa, pb, out);
-    for (const auto& [what, conversion] : pr.conversions) {
-        std::cout << "convert  " << what << ": " << toString(conversion.from) << " -> "
-                  << toString(conversion.to) << "\n";
-        printConversion(std::cout, conversion, ConversionWords{"A", o.interp, false});
-    }
+    const std::optional<LutPurpose> says = printPurposeOp(std::cout, p, pr, o.interp);
     if (pr.tableOp)
         std::cout << "composed " << o.b << " after " << o.a << " on a " << r.lut.size()
                   << "^3 lattice (" << toString(o.interp) << ")\n"
@@ -49,9 +39,7 @@ int runCompose(const ComposeCommandOptions& o) {
     else
         std::cout << "composed " << o.b << "'s edit on the picture the game shows with " << o.a
                   << ": the game's LUT that shows it (exact at its 16^3 lattice)\n";
-    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity,
-                  out.known || !pr.conversions.empty() ? std::optional<LutPurpose>(out.to)
-                                                       : std::nullopt);
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity, says);
     return kExitOk;
 }
 

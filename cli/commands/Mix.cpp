@@ -19,26 +19,15 @@ namespace lut::cli {
 int runMix(const MixCommandOptions& o) {
     if (!beginOutput(o.output, o.overwrite, {o.a, o.b}, o.verbosity.quiet))
         return kExitOk;
-    const std::optional<LutPurpose> given = purposeOption(o.inTarget);
-    PurposeDecision pa, pb;
-    const Lut3D a = readLutTable(o.a, o.verbosity, &pa, given);
-    const Lut3D b = readLutTable(o.b, o.verbosity, &pb, given);
-    const ResultPurpose out = resultPurpose(pa, pb, purposeOption(o.target), o.output, o.format);
+    const PurposedPair p =
+        readPurposedPair(o.a, o.b, o.inTarget, o.target, o.output, o.format, o.verbosity);
     // Both made for what OUT is for, then mixed (lut/pipeline/PurposeOps.h).
     PurposeOptions po;
     po.editInterpolation = o.interp;
-    const PurposeOpResult pr =
-        mixForPurpose({&a, pa.purpose}, {&b, pb.purpose}, o.strength, out.to, o.interp, po);
+    const PurposeOpResult pr = mixForPurpose({&p.a, p.pa.purpose}, {&p.b, p.pb.purpose}, o.strength,
+                                             p.out.to, o.interp, po);
     const OpResult& r = pr.result;
-    if (pa.purpose != LutPurpose::Raw || pb.purpose != LutPurpose::Raw ||
-        out.to != LutPurpose::Raw || pa.source != PurposeSource::Assumed ||
-        pb.source != PurposeSource::Assumed)
-        printInputsPurpose(std::cout, pa, pb, out);
-    for (const auto& [what, conversion] : pr.conversions) {
-        std::cout << "convert  " << what << ": " << toString(conversion.from) << " -> "
-                  << toString(conversion.to) << "\n";
-        printConversion(std::cout, conversion, ConversionWords{"neutral", o.interp, false});
-    }
+    const std::optional<LutPurpose> says = printPurposeOp(std::cout, p, pr, o.interp);
     std::cout << "mixed    " << o.a << " and " << o.b << " at strength " << o.strength << " on A's "
               << r.lut.size() << "^3 lattice\n"
               << "error    "
@@ -46,9 +35,7 @@ int runMix(const MixCommandOptions& o) {
                       ? std::string("none: B has A's lattice, the mix is exact")
                       : "B resampled onto A's lattice: " + costText(r.error, r.sanitizedEntries))
               << "\n";
-    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity,
-                  out.known || !pr.conversions.empty() ? std::optional<LutPurpose>(out.to)
-                                                       : std::nullopt);
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity, says);
     return kExitOk;
 }
 

@@ -293,3 +293,23 @@ TEST(CliPurpose, ComposeMixResizeInfoAndExtractHonourIt) {
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_EQ(formats::readLut(dir + "/x.nutexb").cube->entries(), game.entries());
 }
+
+// Compose names the stage its conversion was made on: A when B's edit is made into the game's LUT
+// on the picture A gives, the neutral game when the composed edit is (A and B both edits).
+TEST(CliPurpose, ComposeNamesTheStageOfItsConversion) {
+    const std::string dir = workDir();
+    writeTable(dir + "/stage.nutexb", gameLut(), std::nullopt);
+    writeTable(dir + "/look.cube", look(17), LutPurpose::Raw);
+    writeTable(dir + "/look2.cube", look(9), LutPurpose::Raw);
+    const auto staged = runCli("compose " + q(dir + "/stage.nutexb") + " " + q(dir + "/look.cube") +
+                               " " + q(dir + "/s.nutexb"));
+    ASSERT_EQ(staged.exitCode, 0) << staged.err;
+    EXPECT_TRUE(has(staged.out, "convert  B on A's picture: raw -> smash")) << staged.out;
+    EXPECT_TRUE(has(staged.out, "(stage LUT: " + dir + "/stage.nutexb;")) << staged.out;
+    const auto neutral = runCli("compose " + q(dir + "/look.cube") + " " + q(dir + "/look2.cube") +
+                                " " + q(dir + "/n.nutexb"));
+    ASSERT_EQ(neutral.exitCode, 0) << neutral.err;
+    EXPECT_TRUE(has(neutral.out, "convert  result: raw -> smash")) << neutral.out;
+    EXPECT_TRUE(has(neutral.out, "(stage LUT: neutral;")) << neutral.out;
+    EXPECT_FALSE(has(neutral.out, "stage LUT: A")) << neutral.out;
+}
