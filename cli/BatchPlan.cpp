@@ -115,6 +115,7 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
     if (stdinUsed && sources.size() > 1)
         throw UsageError("standard input (-) can only be the one input");
 
+    noteOutputPath(o); // data on stdout: every note on stderr
     const auto outPattern = o == "-" ? std::nullopt : parseFramePattern(o);
     const bool folder = !outPattern && o != "-" && (o.back() == '/' || isDir(o));
     const bool singleFile = inputs.size() == 1 && sources.size() == 1 && !isDir(inputs[0]) &&

@@ -67,6 +67,7 @@ CommandLine::CommandLine(const RunHooks& hooks)
     setupEmbed(m_app, runner(hooks.embed, runEmbed, m_exitCode));
     setupExtract(m_app, runner(hooks.extract, runExtract, m_exitCode));
     setupFit(m_app, runner(hooks.fit, runFit, m_exitCode));
+    setupMatch(m_app, runner(hooks.match, runMatch, m_exitCode));
     setupBench(m_app, runner(hooks.bench, runBench, m_exitCode));
     setupBake(m_app, runner(hooks.bake, runBake, m_exitCode));
     setupDiff(m_app, runner(hooks.diff, runDiff, m_exitCode));

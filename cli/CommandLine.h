@@ -18,6 +18,7 @@
 #include "commands/Fit.h"
 #include "commands/Info.h"
 #include "commands/Invert.h"
+#include "commands/Match.h"
 #include "commands/Mix.h"
 #include "commands/Neutral.h"
 #include "commands/Plot.h"
@@ -59,6 +60,7 @@ struct RunHooks {
     RunFn<MixCommandOptions> mix;
     RunFn<PlotCommandOptions> plot;
     RunFn<AdjustCommandOptions> adjust;
+    RunFn<MatchCommandOptions> match;
 };
 
 class CommandLine {

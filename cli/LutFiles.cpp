@@ -5,6 +5,7 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
+#include "lut/ops/Lattice.h"
 
 #include <iostream>
 
@@ -29,7 +30,21 @@ Lut3D readLutTable(const std::string& path, const Verbosity& verbosity, PurposeD
     printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
     if (purpose)
         *purpose = decidePurpose(file, given);
-    return file.toLut3D();
+    if (!file.shaper)
+        return file.toLut3D();
+    // One lattice over the file's input domain, never silently: what it costs between its points.
+    LatticeResult r = sampleOnLattice(file);
+    r.error.seconds = 0.0;
+    Diagnostic d;
+    d.severity =
+        r.error.maxSteps8() > 1.0 ? Diagnostic::Severity::Warning : Diagnostic::Severity::Info;
+    d.path = path;
+    d.message =
+        "its 1D shaper and table taken as one " + std::to_string(r.lut.size()) +
+        "^3 table over the shaper's range (this command works on one lattice): " + r.error.str() +
+        " on " + std::to_string(r.heldOut) + " inputs between lattice points";
+    printDiagnostics(std::cerr, {d}, verbosity, "lutkit: ");
+    return std::move(r.lut);
 }
 
 std::optional<LutPurpose> knownPurpose(const PurposeDecision& d) {

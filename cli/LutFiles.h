@@ -22,8 +22,10 @@ namespace lut::cli {
 LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& layout,
                        const Verbosity& verbosity);
 
-// The file as one 3D table (a shaper baked in), its diagnostics printed to stderr; `purpose`
-// (optional) receives what the file is for (lut/LutPurpose.h; `given`: a flag's value).
+// The file as one 3D table, its diagnostics printed to stderr; a file with a shaper is sampled at
+// the table's size over the shaper's range (lut::sampleOnLattice) and the error that costs between
+// lattice points is said. `purpose` (optional) receives what the file is for (lut/LutPurpose.h;
+// `given`: a flag's value).
 Lut3D readLutTable(const std::string& path, const Verbosity& verbosity,
                    PurposeDecision* purpose = nullptr,
                    std::optional<LutPurpose> given = std::nullopt);

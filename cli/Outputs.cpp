@@ -2,9 +2,37 @@
 
 #include <CLI/CLI.hpp>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <iostream>
 
 namespace lut::cli {
+
+bool writesToStdout(const std::string& path) {
+    if (path == "-" || path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1")
+        return true;
+    struct stat p {
+    }, out{};
+    // A special file that is our standard output (a terminal, a pipe): the same device and inode.
+    return !path.empty() && ::stat(path.c_str(), &p) == 0 && !S_ISREG(p.st_mode) &&
+           !S_ISDIR(p.st_mode) && ::fstat(STDOUT_FILENO, &out) == 0 && p.st_dev == out.st_dev &&
+           p.st_ino == out.st_ino;
+}
+
+void reserveStdoutForData() {
+    static bool done = false;
+    if (done)
+        return;
+    done = true;
+    std::cout.flush();
+    std::cout.rdbuf(std::cerr.rdbuf());
+}
+
+void noteOutputPath(const std::string& path) {
+    if (writesToStdout(path))
+        reserveStdoutForData();
+}
 
 void addOverwriteOptions(CLI::App& sub, OutputOptions& o) {
     auto* y = sub.add_flag("-y,--overwrite", o.overwrite, "replace output files that exist");
@@ -26,6 +54,7 @@ std::string existsMessage(const std::string& path, bool batch) {
 
 OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
                            const std::vector<std::string>& inputs) {
+    noteOutputPath(path);
     try {
         return checkOutput(path, options.rule(), inputs);
     } catch (const OutputExistsError& e) {

@@ -25,6 +25,19 @@ struct OutputOptions {
     }
 };
 
+// The one rule for what lutkit prints when a command's data goes to standard output ("-",
+// /dev/stdout, /dev/fd/1, /proc/self/fd/1, or any path that is the file descriptor 1): the data
+// alone is on stdout, every note, report, JSON and "wrote" line on stderr. Whether a path
+// writes to standard output:
+bool writesToStdout(const std::string& path);
+// Called (by resolveOutput, beginOutput and the batch planner) once a command knows its data goes
+// to standard output: from then on everything the command prints to std::cout goes to stderr.
+// The data itself is written to the file descriptor (lut/io/OutputFile.h), never through
+// std::cout. Idempotent.
+void reserveStdoutForData();
+// reserveStdoutForData() when writesToStdout(path).
+void noteOutputPath(const std::string& path);
+
 // -y/--overwrite and -n/--no-clobber (exclusive).
 void addOverwriteOptions(CLI::App& sub, OutputOptions& target);
 // -o/--output PATH (old spelling --output-dir), plus -y and -n.

@@ -7,6 +7,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/pipeline/SmashConstants.h"
+#include "lut/pipeline/StageLut.h"
 
 #include <iostream>
 #include <sstream>
@@ -82,17 +83,17 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
                    const PurposeOptions& options, const Verbosity& verbosity) {
     PurposedLut out;
     out.decision = decidePurpose(file, given);
-    const Lut3D table = file.toLut3D();
     if (out.decision.purpose == wanted) {
-        out.lut = table;
-    } else {
-        out.conversion = convertPurpose(table, out.decision.purpose, wanted, options);
+        out.lut = file.toLut3D();
+    } else { // a shaper evaluated exactly (lut/pipeline/PurposeConversion.h)
+        out.conversion = convertPurpose(file, out.decision.purpose, wanted, options);
         out.lut = out.conversion->lut;
     }
+    const int tableSize = file.cube ? file.cube->size() : 0;
     // Said when it changes the table, or when the file does not say and could be either: the
     // game's LUTs are all 16^3, so an unsaid 16^3 table may be one (a 33^3 grade is no game's).
     const bool ambiguous =
-        out.decision.source == PurposeSource::Assumed && table.size() == kSmashLutSize;
+        out.decision.source == PurposeSource::Assumed && tableSize == kSmashLutSize;
     if ((ambiguous || out.conversion) && !verbosity.quiet) {
         std::cerr << "lutkit: note: " << path << " is " << out.decision.text(flag);
         if (out.conversion)
@@ -172,9 +173,13 @@ Lut3D readStageLut(const std::string& path, const Verbosity& verbosity) {
     const LutFile file = formats::readLut(path);
     printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
     const PurposeDecision d = decidePurpose(file, std::nullopt, LutPurpose::Smash);
-    if (d.purpose == LutPurpose::Smash)
-        return file.toLut3D();
-    const PurposeConversion c = convertPurpose(file.toLut3D(), LutPurpose::Raw, LutPurpose::Smash);
+    if (d.purpose == LutPurpose::Smash) {
+        // A file with a shaper: sampled at the game's 16^3 lattice, the error said.
+        StageLutFile stage = stageLutFromFile(file, path);
+        printDiagnostics(std::cerr, stage.diagnostics, verbosity, "lutkit: ");
+        return std::move(stage.lut);
+    }
+    const PurposeConversion c = convertPurpose(file, LutPurpose::Raw, LutPurpose::Smash);
     if (!verbosity.quiet)
         std::cerr << "lutkit: note: " << path << " (--original-lut) is " << d.text("")
                   << ": the stage runs the game's LUT that shows it\n";

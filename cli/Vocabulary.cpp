@@ -5,6 +5,7 @@
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FrameSequence.h"
+#include "lut/match/MatchOptions.h"
 #include "lut/pipeline/Pipeline.h"
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/Extract.h"
@@ -128,6 +129,21 @@ Choices targetChoices() {
     return c;
 }
 
+Choices matchMethodChoices() {
+    Choices c{"match-method", "match method", namesOf(allMatchMethods()), {}, {}};
+    for (const MatchMethod m : allMatchMethods())
+        for (const auto& a : matchMethodAliases(m))
+            c.aliases.push_back(a);
+    c.accept = [](const std::string& s) { (void)parseMatchMethod(s); };
+    return c;
+}
+
+Choices preserveChoices() {
+    Choices c{"preserve", "preserve", namesOf(allMatchPreserves()), {}, {}};
+    c.accept = [](const std::string& s) { (void)parseMatchPreserve(s); };
+    return c;
+}
+
 Choices cornerChoices() {
     Choices c{"corner",
               "corner",
@@ -197,7 +213,8 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
     for (Choices (*make)() :
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
-          imageFormatChoices, compressionChoices, shaperChoices}) {
+          imageFormatChoices, compressionChoices, shaperChoices, matchMethodChoices,
+          preserveChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;
@@ -338,6 +355,12 @@ void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outForma
                    "image format written to standard output (default: the input's)")
         ->type_name("NAME")
         ->check(choicesValidator(c));
+}
+
+CLI::Option* addImageOutputFormat(CLI::App& sub, std::string& target, const std::string& help) {
+    return sub.add_option("--format", target, help)
+        ->type_name("NAME")
+        ->check(choicesValidator(imageFormatChoices()));
 }
 
 CLI::Option* addCompression(CLI::App& sub, std::string& target) {

@@ -44,6 +44,8 @@ Choices bitDepthChoices();
 Choices imageFormatChoices(); // image files apply and preview read and write: png, exr, tif ...
 Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip, piz, lzw ...)
 Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
+Choices matchMethodChoices(); // lutkit match --method: auto, hm, mkl, hm-mkl-hm, regularised
+Choices preserveChoices();    // lutkit match --preserve: luma, neutrals, skin
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 
@@ -74,6 +76,9 @@ CLI::Option* addThreads(CLI::App& sub, int& target);
 CLI::Option* addFrames(CLI::App& sub, std::string& target);
 // --in-format / --format for images read from standard input and written to standard output.
 void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outFormat);
+// --format NAME for a command that writes one picture: its image format (png, exr ...) when the
+// output is - (standard output) or has no extension.
+CLI::Option* addImageOutputFormat(CLI::App& sub, std::string& target, const std::string& help);
 // --compression NAME (default: the input's).
 CLI::Option* addCompression(CLI::App& sub, std::string& target);
 // --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together.

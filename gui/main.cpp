@@ -3,6 +3,7 @@
 //   lutkit-editor --screenshot OUT.png [IMAGE [LUT]]   render the window offscreen, save, exit
 //   lutkit-editor --save-preview OUT.png IMAGE [LUT]   write the preview image like lutkit preview
 //   lutkit-editor --script FILE [IMAGE [LUT]]          drive the window (ScriptRunner.h), exit
+#include "CpuState.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "PreviewController.h"
@@ -10,6 +11,8 @@
 #include "PreviewView.h"
 #include "ScriptRunner.h"
 
+#include "lut/Error.h"
+#include "lut/LutPurpose.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
@@ -168,7 +171,10 @@ int main(int argc, char** argv) {
                      qPrintable(parser.errorText()));
         return 2;
     }
-    if (parser.isSet(helpOpt)) { // without an application object Qt cannot name the program
+    // --help-all is Qt's "help with Qt's own options"; the editor takes none (its command line is
+    // read before Qt sees it), so it is --help.
+    if (parser.isSet(helpOpt) || parser.isSet(QStringLiteral("help-all"))) {
+        // Without an application object Qt cannot name the program.
         std::printf("%s", qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"),
                                                                QStringLiteral("lutkit-editor"))));
         return 0;
@@ -178,11 +184,104 @@ int main(int argc, char** argv) {
         return 0;
     }
 
+    // Every option value is checked here, before any window system is touched: a bad value is
+    // bad usage (exit 2 with one line), with or without a display.
+    const auto usage = [](const QString& message) {
+        std::fprintf(stderr, "lutkit-editor: %s\nRun 'lutkit-editor --help' for usage.\n",
+                     qPrintable(message));
+        return 2;
+    };
+    lut::gui::PreviewOptions options;
+    std::optional<lut::SceneKind> input;
+    std::optional<lut::LutPurpose> lutAnswer; // --lut-target
+    // The value of `option` through `parse`; a refusal names the option.
+    const auto value = [&parser](const QCommandLineOption& option, auto parse) {
+        try {
+            return parse(parser.value(option).toStdString());
+        } catch (const std::exception& e) {
+            throw lut::Error("--" + option.names().first().toStdString() + ": " + e.what());
+        }
+    };
+    try {
+        // --preset smash is the Smash target; another preset is an engine's chain.
+        const lut::Preset preset = value(presetOpt, lut::parsePreset);
+        options.target = parser.isSet(targetOpt) ? value(targetOpt, lut::gui::parseExportTarget)
+                         : preset == lut::Preset::Smash ? lut::gui::ExportTarget::Smash
+                                                        : lut::gui::ExportTarget::Engine;
+        if (preset != lut::Preset::Smash)
+            options.preset = preset;
+        options.interpolation = value(interpOpt, lut::parseInterpolation);
+        if (parser.isSet(lutTargetOpt))
+            lutAnswer = value(lutTargetOpt, lut::parseLutPurpose);
+        if (parser.isSet(inputOpt))
+            input = value(inputOpt, lut::parseSceneKind);
+        else if (parser.isSet(fromShotOpt))
+            input = lut::SceneKind::Screenshot;
+    } catch (const std::exception& e) {
+        return usage(QString::fromUtf8(e.what()));
+    }
+    options.bloom = !parser.isSet(noBloomOpt);
+    options.lutEnabled = !parser.isSet(noLutOpt);
+    options.brighten = !parser.isSet(noBrightenOpt);
+    QSize windowSize;
+    if (parser.isSet(sizeOpt)) {
+        const QStringList wh = parser.value(sizeOpt).split('x');
+        bool okW = false, okH = false;
+        if (wh.size() == 2)
+            windowSize = QSize(wh[0].toInt(&okW), wh[1].toInt(&okH));
+        if (!okW || !okH || windowSize.width() < 100 || windowSize.height() < 100 ||
+            windowSize.width() > 16384 || windowSize.height() > 16384)
+            return usage(QStringLiteral("--window-size %1: expected WxH, e.g. 1480x920 (100 to "
+                                        "16384 each)")
+                             .arg(parser.value(sizeOpt)));
+    }
+    const QString view = parser.value(viewOpt);
+    if (view != QLatin1String("split") && view != QLatin1String("after") &&
+        view != QLatin1String("before"))
+        return usage(QStringLiteral("--view %1: expected split, after or before").arg(view));
+    double zoomPercent = 0; // 0 = fit
+    if (parser.value(zoomOpt) != QLatin1String("fit")) {
+        bool isNumber = false;
+        zoomPercent = parser.value(zoomOpt).toDouble(&isNumber);
+        if (!isNumber || !(zoomPercent > 0) || zoomPercent > 6400)
+            return usage(QStringLiteral("--zoom %1: expected fit or a percentage from 1 to 6400")
+                             .arg(parser.value(zoomOpt)));
+    }
+    struct Adjust {
+        const lut::gui::AdjustParamInfo* info;
+        double value;
+    };
+    std::vector<Adjust> adjusts;
+    for (const QString& a : parser.values(adjustOpt)) {
+        const QString key = a.section('=', 0, 0).trimmed();
+        bool isNumber = false;
+        const double value = a.section('=', 1).toDouble(&isNumber);
+        const lut::gui::AdjustParamInfo* info = nullptr;
+        for (const auto& p : lut::gui::adjustParams())
+            if (QString::fromStdString(p.key) == key)
+                info = &p;
+        if (!info || !isNumber || !a.contains('=')) {
+            QString keys;
+            for (const auto& p : lut::gui::adjustParams())
+                keys += ' ' + QString::fromStdString(p.key);
+            return usage(
+                QStringLiteral("--adjust %1: expected KEY=NUMBER with KEY one of%2").arg(a, keys));
+        }
+        adjusts.push_back({info, std::clamp(value, info->min, info->max)});
+    }
+    // Positionals: IMAGE [LUT]. A file manager's "Open with" passes a single .cube or .nutexb,
+    // which must open as the LUT, and a LUT file named first is still taken as the LUT.
+    const QStringList args = parser.positionalArguments();
+    if (args.size() > 2)
+        return usage(
+            QStringLiteral("expected at most IMAGE and LUT, got %1 files").arg(args.size()));
+
     // Headless modes need a platform before QApplication exists.
     const bool headless = parser.isSet(shotOpt) || parser.isSet(saveOpt);
     if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
+    lut::gui::clearUpperVectorState(); // threads started from here inherit it (CpuState.h)
     // The desktop entry and icon installed from gui/desktop (window grouping, taskbar icon).
     QGuiApplication::setDesktopFileName(QStringLiteral("lutkit-editor"));
     QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("lutkit-editor")));
@@ -195,47 +294,12 @@ int main(int argc, char** argv) {
     window.setInteractiveErrors(!headless && !scripted);
     if (!headless && !scripted)
         window.restoreWindowState();
-
-    lut::gui::PreviewOptions options;
-    std::optional<lut::SceneKind> input;
-    try {
-        // --preset smash is the Smash target; another preset is an engine's chain.
-        const lut::Preset preset = lut::parsePreset(parser.value(presetOpt).toStdString());
-        options.target = parser.isSet(targetOpt)
-                             ? lut::gui::parseExportTarget(parser.value(targetOpt).toStdString())
-                         : preset == lut::Preset::Smash ? lut::gui::ExportTarget::Smash
-                                                        : lut::gui::ExportTarget::Engine;
-        if (preset != lut::Preset::Smash)
-            options.preset = preset;
-        options.interpolation = lut::parseInterpolation(parser.value(interpOpt).toStdString());
-        if (parser.isSet(lutTargetOpt))
-            window.setLutPurposeAnswer(
-                lut::parseLutPurpose(parser.value(lutTargetOpt).toStdString()));
-        if (parser.isSet(inputOpt))
-            input = lut::parseSceneKind(parser.value(inputOpt).toStdString());
-        else if (parser.isSet(fromShotOpt))
-            input = lut::SceneKind::Screenshot;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "lutkit-editor: %s\n", e.what());
-        return 2;
-    }
-    options.bloom = !parser.isSet(noBloomOpt);
-    options.lutEnabled = !parser.isSet(noLutOpt);
-    options.brighten = !parser.isSet(noBrightenOpt);
+    if (lutAnswer)
+        window.setLutPurposeAnswer(*lutAnswer);
     window.setPreviewOptions(options);
-    if (parser.isSet(sizeOpt)) {
-        const QStringList wh = parser.value(sizeOpt).split('x');
-        if (wh.size() == 2)
-            window.resize(wh[0].toInt(), wh[1].toInt());
-    }
+    if (windowSize.isValid())
+        window.resize(windowSize);
 
-    // Positionals: IMAGE [LUT]. A file manager's "Open with" passes a single .cube or .nutexb,
-    // which must open as the LUT, and a LUT file named first is still taken as the LUT.
-    const QStringList args = parser.positionalArguments();
-    if (args.size() > 2) {
-        std::fprintf(stderr, "lutkit-editor: expected at most IMAGE and LUT\n");
-        return 2;
-    }
     QString imagePath = args.value(0), lutPath = args.value(1);
     const auto lutOnly = [](const QString& p) { // a LUT extension that is not a picture's
         return lut::gui::looksLikeLutFile(p) && !lut::formats::isImageExtension(p.toStdString());
@@ -254,48 +318,21 @@ int main(int argc, char** argv) {
     }
     if (!lutPath.isEmpty())
         ok = window.openLutFile(lutPath) && ok;
-    for (const QString& a : parser.values(adjustOpt)) {
-        const QString key = a.section('=', 0, 0).trimmed();
-        bool isNumber = false;
-        const double value = a.section('=', 1).toDouble(&isNumber);
-        const lut::gui::AdjustParamInfo* info = nullptr;
-        for (const auto& p : lut::gui::adjustParams())
-            if (QString::fromStdString(p.key) == key)
-                info = &p;
-        if (!info || !isNumber || !a.contains('=')) {
-            std::fprintf(stderr, "lutkit-editor: --adjust %s: expected KEY=NUMBER with KEY one of",
-                         qPrintable(a));
-            for (const auto& p : lut::gui::adjustParams())
-                std::fprintf(stderr, " %s", p.key.c_str());
-            std::fprintf(stderr, "\n");
-            return 2;
-        }
-        window.document()->editParam(info->id, std::clamp(value, info->min, info->max));
+    for (const Adjust& a : adjusts) {
+        window.document()->editParam(a.info->id, a.value);
         window.document()->endGesture();
     }
     if ((headless || scripted) && !ok)
         return 1;
 
-    const QString view = parser.value(viewOpt);
     if (view == QLatin1String("after"))
         window.previewView()->setMode(lut::gui::PreviewView::Mode::After);
     else if (view == QLatin1String("before"))
         window.previewView()->setMode(lut::gui::PreviewView::Mode::Before);
-    else if (view != QLatin1String("split")) {
-        std::fprintf(stderr, "lutkit-editor: --view: expected split, after or before\n");
-        return 2;
-    }
     window.show();
     QApplication::processEvents(); // lay the window out before zooming about the view centre
-    if (parser.value(zoomOpt) != QLatin1String("fit")) {
-        bool isNumber = false;
-        const double percent = parser.value(zoomOpt).toDouble(&isNumber);
-        if (!isNumber || percent <= 0) {
-            std::fprintf(stderr, "lutkit-editor: --zoom: expected fit or a percentage\n");
-            return 2;
-        }
-        window.previewView()->zoomTo(percent / 100.0);
-    }
+    if (zoomPercent > 0)
+        window.previewView()->zoomTo(zoomPercent / 100.0);
     if (scripted) {
         QTextStream out(stdout);
         window.waitForPreview();

@@ -8,14 +8,19 @@
 #   the preview pipeline's stages (bloom, grading, display)                  pipeline_tests
 #   the parallel .cube row reader; image files (OIIO's own threads)          formats_tests
 #   the round trip's fit                                                     roundtrip_tests (Fit.*)
+#   lutkit match: samples, histograms, transport, table, measures            match_tests (the
+#                                                                            smaller cases)
 #   lutkit apply's batch and preview (a ThreadSanitizer-built lutkit)        cli_tests (CliApply.*,
 #                                                                            CliPreview.*)
 #   the editor's document model and preview rendering                       gui_model_tests
-# Not here: gui_preview_tests and gui_editor_tests, which drive the editor's preview worker
-# (gui/model/PreviewWorker.cpp). It hands each task to a QThreadPool and each delivery back with a
-# queued QMetaObject::invokeMethod; both hand-overs are synchronised inside Debian's libQt6Core,
-# which is not built with ThreadSanitizer, so each is reported as a race (75 reports in
-# gui_preview_tests, all on the task's functor, its captures and the delivery; none elsewhere).
+#   lut::Progress (cancelled from another thread), diffs, heat maps and     lutlib_tests, ops_tests,
+#   image reads and writes reporting progress and stopping                  formats_tests
+# Not here: gui_preview_tests, gui_editor_tests and gui_editor_tasks_tests, which drive the
+# editor's workers (gui/model: PreviewWorker, FileLoader, BackgroundTask). Each hands its task to a
+# QThreadPool and its delivery back with a queued QMetaObject::invokeMethod; both hand-overs are
+# synchronised inside Debian's libQt6Core, which is not built with ThreadSanitizer, so each is
+# reported as a race (75 reports in gui_preview_tests, all on the task's functor, its captures
+# and the delivery; none elsewhere).
 # Annotating the two hand-overs (__tsan_release/__tsan_acquire on a static key) removes the reports
 # on lutkit's data but leaves those on Qt's own objects (slot objects and QWaitConditions created
 # and freed on different threads), so checking the worker needs a Qt built with ThreadSanitizer or
@@ -42,6 +47,7 @@ runs=(
   "pipeline_tests:"
   "formats_tests:-CubeRead.FloatParsingMatchesFromChars"
   "roundtrip_tests:Fit.*-Fit.NaturalImageWarnsAboutCoverage"
+  "match_tests:MatchStiff.*:MatchReport.*:HistogramMatch.*"
   "cli_tests:CliApply.*:CliPreview.*"
 )
 

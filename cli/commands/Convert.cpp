@@ -15,6 +15,7 @@
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Nutexb.h"
+#include "lut/formats/OcioFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
@@ -130,6 +131,15 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
 } // namespace
 
 int runConvert(const ConvertOptions& o) {
+    if (!o.cccid.empty()) {
+        // --cccid picks a correction of a .ccc/.cdl/.cc file: anywhere else it would be ignored
+        // without a word.
+        const std::string ext = extensionOf(o.input);
+        if (ext != ".ccc" && ext != ".cdl" && ext != ".cc")
+            throw UsageError("--cccid " + o.cccid + ": " + o.input +
+                             " is not a .ccc, .cdl or .cc file (it picks one of their "
+                             "corrections)");
+    }
     if (o.color.any())
         (void)formats::planColor(o.color); // a misspelt colour name is bad usage, before files
     const OutputTarget target = resolveOutput(
@@ -159,6 +169,8 @@ int runConvert(const ConvertOptions& o) {
         b.lut = o.input;
         b.lutFormat = o.inFormat;
         b.lutRead.layout = o.inLayout;
+        if (!o.cccid.empty())
+            b.lutRead.setAttribute(formats::kOcioCccIdAttribute, o.cccid);
         b.around = o.color;
         b.cubeSize = o.size;
         b.shaperSize = o.shaperSize;
@@ -175,6 +187,8 @@ int runConvert(const ConvertOptions& o) {
     co.inFormat = o.inFormat;
     co.outFormat = o.format;
     co.read.layout = o.inLayout;
+    if (!o.cccid.empty())
+        co.read.setAttribute(formats::kOcioCccIdAttribute, o.cccid);
     co.write.layout = o.layout;
     co.write.size = o.size;
     if (o.level) {
@@ -247,6 +261,10 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     addInputFormat(*sub, o->inFormat);
     addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
     addLayout(*sub, "--in-layout", o->inLayout, "input LUT image layout (default: detected)");
+    sub->add_option("--cccid", o->cccid,
+                    "the correction of a .ccc/.cdl input: its id or index (as ociobakelut "
+                    "--cccid)")
+        ->type_name("ID");
     auto* size = sub->add_option("--size", o->size,
                                  "output lattice size N, N^3 (default: the format's own, else the "
                                  "input's)")
@@ -299,6 +317,7 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
                 "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
+                "  lutkit convert grades.ccc shot042.cube --cccid shot042\n"
                 "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "
                 "--to sRGB");
     sub->callback([o, onParsed] { onParsed(*o); });

@@ -25,6 +25,7 @@ struct ConvertOptions {
     std::string inFormat;              // input format name ("" = from the extension)
     std::optional<LutLayout> layout;   // output image layout
     std::optional<LutLayout> inLayout; // input image layout
+    std::string cccid;                 // the correction of a .ccc/.cdl input (id or index)
     int size = 0;  // output lattice size (0 = the format's fixed size, else the input's)
     int level = 0; // Hald level L: size L^2, layout hald
     Interpolation interp = Interpolation::Tetrahedral;

@@ -112,6 +112,7 @@ int runDiff(const DiffCommandOptions& o) {
         formats::ImageWriteOptions w;
         w.bitDepth = 8;
         w.alpha = false;
+        w.format = o.format.empty() ? "png" : o.format; // for - and devices
         formats::writeImage(o.heatmap, heat.image, w);
     }
     if (o.json) {
@@ -135,8 +136,11 @@ CLI::App* setupDiff(CLI::App& app, std::function<void(const DiffCommandOptions&)
                     "compare over this image's colours (e.g. a screenshot) instead of the lattice")
         ->type_name("FILE");
     sub->add_option("--heatmap", o->heatmap,
-                    "write a heat-map PNG: on the image, or on slices of the cube")
+                    "write a heat-map PNG: on the image, or on slices of the cube (- for stdout)")
         ->type_name("FILE");
+    addImageOutputFormat(*sub, o->format,
+                         "the heat map's image format when it is - (standard output) (default "
+                         "png)");
     sub->add_option("--size", o->size, "lattice compared on (default: the larger of the two)")
         ->check(CLI::Range(2, 256));
     sub->add_option("--slices", o->slices, "heat map of the lattice: slices of the cube (1-16)")

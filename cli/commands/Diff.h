@@ -20,6 +20,7 @@ struct DiffCommandOptions {
     std::string a, b;
     std::string image;       // compare over this image's colours ("" = over the lattice)
     std::string heatmap;     // write a heat-map PNG here ("" = none)
+    std::string format;      // the heat map's image format for - (standard output); default png
     int size = 0;            // lattice compared on (0 = the larger of the two)
     int slices = 5;          // heat map of the lattice: slices of the cube
     double maxDeltaE = 10.0; // ΔE at the top of the heat map's ramp (0 = the largest found)

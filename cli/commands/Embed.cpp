@@ -2,6 +2,7 @@
 // screenshot (docs/roundtrip.md); lutkit extract finds it again after grading.
 #include "commands/Embed.h"
 
+#include "LutFiles.h"
 #include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
@@ -53,7 +54,8 @@ int runEmbed(const EmbedOptions& o) {
     formats::ImageWriteOptions wo;
     wo.bitDepth = eo.bitDepth;
     wo.alpha = loaded.info.channels == 2 || loaded.info.channels == 4;
-    const std::string ext = extensionOf(o.output);
+    wo.format = !o.format.empty() ? o.format : loaded.info.format; // for - and devices
+    const std::string ext = target.inPlace() ? "." + wo.format : extensionOf(o.output);
     if (ext == ".png" && eo.bitDepth == 32)
         wo.bitDepth = 16;
     wo.metadata = loaded.metadata;
@@ -92,9 +94,12 @@ CLI::App* setupEmbed(CLI::App& app, std::function<void(const EmbedOptions&)> onP
     sub->add_option("SCREENSHOT", o->input, "screenshot to copy (8- or 16-bit kept)")
         ->required()
         ->type_name("FILE");
-    sub->add_option("OUT", o->output, "output image (PNG or TIFF recommended)")
+    sub->add_option("OUT", o->output, "output image (PNG or TIFF recommended; - for stdout)")
         ->required()
         ->type_name("FILE");
+    addImageOutputFormat(*sub, o->format,
+                         "image format when OUT is - (standard output) (default: the "
+                         "screenshot's)");
     sub->add_option("--target", o->target,
                     std::string("what you are making, recorded in the patch so extract needs no "
                                 "options: ") +

@@ -17,6 +17,7 @@ namespace lut::cli {
 
 struct EmbedOptions {
     std::string input;
+    std::string format; // image format for - (standard output); default: the screenshot's
     std::string output;
     std::string target = "smash";    // what the modder is making (raw | smash): recorded
     std::string originalLut;         // smash: the stage's LUT the screenshot was taken with

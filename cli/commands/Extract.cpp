@@ -1,6 +1,7 @@
 // lutkit extract: the LUT an edited screenshot's patch shows (docs/roundtrip.md).
 #include "commands/Extract.h"
 
+#include "LutFiles.h"
 #include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"

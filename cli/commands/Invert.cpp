@@ -10,6 +10,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/ops/Invert.h"
+#include "lut/ops/InvertFile.h"
 
 #include <CLI/CLI.hpp>
 
@@ -93,7 +94,24 @@ int runInvert(const InvertCommandOptions& o) {
         }
         return kExitOk;
     }
-    const InvertResult r = invert(file.toLut3D(), io);
+    if (file.shaper) {
+        // Shaper then table: the table inverted, the shaper inverted exactly on its entries.
+        const FileInvertResult r = invert(file, io);
+        writeLutTable(written, o.output, r.table.lut, o.format, {o.input}, o.verbosity);
+        printReport(o, r.table.report, false);
+        if (!o.json)
+            std::cout << "shaper   A is a 1D shaper then a " << file.cube->size()
+                      << "^3 table: the table inverted as above, the shaper exactly"
+                      << (r.shaperFolds ? " (" + std::to_string(r.shaperFolds) +
+                                              " segments not strictly monotone)"
+                                        : std::string())
+                      << "\nbetween  |A(inverse(y)) - y| with A exact, on " << r.heldOut
+                      << " targets between the inverse's lattice points: "
+                      << r.heldOutResidual.str() << "\n"
+                      << written.str();
+        return kExitOk;
+    }
+    const InvertResult r = invert(*file.cube, io);
     writeLutTable(written, o.output, r.lut, o.format, {o.input}, o.verbosity);
     printReport(o, r.report, false);
     if (!o.json)

@@ -27,6 +27,7 @@ int runPlot(const PlotCommandOptions& o) {
     formats::ImageWriteOptions w;
     w.bitDepth = 8;
     w.alpha = false;
+    w.format = o.format.empty() ? "png" : o.format; // for - and devices
     formats::writeImage(o.output, plot.image, w);
     std::cout << "wrote    " << o.output << ": " << plot.image.width() << "x" << plot.image.height()
               << " (curves along the neutral axis, slices at blue 0, 0.5, 1, the lattice in 3D)\n";
@@ -38,17 +39,20 @@ CLI::App* setupPlot(CLI::App& app, std::function<void(const PlotCommandOptions&)
     auto* sub = app.add_subcommand(
         "plot", "Draw a LUT: curves along the neutral axis, slices and the lattice in 3D");
     sub->add_option("LUT", o->input, "the LUT to draw")->required()->type_name("FILE");
-    sub->add_option("OUT", o->output, "the picture (PNG, or any image extension)")
+    sub->add_option("OUT", o->output, "the picture (PNG, or any image extension; - for stdout)")
         ->required()
         ->type_name("FILE");
     sub->add_option("--lattice-points", o->latticePoints,
                     "lattice points per axis in the 3D view (2-17, default 9)")
         ->check(CLI::Range(2, 17));
+    addImageOutputFormat(*sub, o->format,
+                         "image format when OUT is - (standard output) (default png)");
     addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
     sub->footer("Examples:\n"
                 "  lutkit plot grade.cube grade.png\n"
-                "  lutkit plot extracted.nutexb look.png --lattice-points 17");
+                "  lutkit plot extracted.nutexb look.png --lattice-points 17\n"
+                "  lutkit plot grade.cube - --format png     # the picture on standard output");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

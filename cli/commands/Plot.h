@@ -16,6 +16,7 @@ namespace lut::cli {
 struct PlotCommandOptions {
     std::string input, output;
     int latticePoints = 9;   // lattice points per axis in the 3D view
+    std::string format;      // image format for - (standard output); default png
     OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };

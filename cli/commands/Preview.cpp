@@ -175,8 +175,10 @@ int runPreview(const PreviewOptions& o) {
     if (!o.originalLut.empty())
         original = std::make_shared<const Lut3D>(readStageLut(o.originalLut, o.verbosity));
     // The chain's LUT, made for what the chain is (the game's LUT for the game's chain, as the
-    // .nutexb convert writes holds it; an edit for the others).
+    // .nutexb convert writes holds it; an edit for the others). A LUT used as it is keeps its
+    // shaper (a Resolve .cube's) and table, each run exactly by the LUT stage.
     std::shared_ptr<const Lut3D> lut;
+    std::shared_ptr<const Lut1D> shaper;
     if (!o.lut.empty()) {
         const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
         PurposeOptions po;
@@ -185,9 +187,16 @@ int runPreview(const PreviewOptions& o) {
         const LutPurpose wanted = previewLutPurpose(o.preset);
         PurposedLut used = lutFor(file, o.lut, wanted, purposeOption(o.lutTarget), "--lut-target",
                                   po, o.verbosity);
-        if (used.conversion && wanted == LutPurpose::Smash)
-            (void)quantize8(used.lut);
-        lut = std::make_shared<const Lut3D>(std::move(used.lut));
+        if (used.conversion) {
+            if (wanted == LutPurpose::Smash)
+                (void)quantize8(used.lut);
+            lut = std::make_shared<const Lut3D>(std::move(used.lut));
+        } else {
+            if (file.cube)
+                lut = std::make_shared<const Lut3D>(*file.cube);
+            if (file.shaper)
+                shaper = std::make_shared<const Lut1D>(*file.shaper);
+        }
     }
     printDiagnostics(std::cerr, color.diagnostics, o.verbosity, "lutkit: ");
     bool noted = false;
@@ -227,6 +236,7 @@ int runPreview(const PreviewOptions& o) {
         notes.insert(notes.end(), undo.begin(), undo.end());
         PipelineSettings settings = recipe.settings;
         settings.lut = lut;
+        settings.shaper = shaper;
         Pipeline pipeline(settings); // one per job: stages keep per-run buffers
         RunOptions run;
         run.nthreads = inner;

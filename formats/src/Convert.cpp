@@ -1,6 +1,8 @@
 // convertLut: read, resample when the output stores another size, write, read back, measure.
 #include "lut/formats/Convert.h"
 
+#include "LutPrep.h"
+
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/formats/Hald.h"
@@ -18,6 +20,9 @@
 namespace lut::formats {
 
 namespace {
+
+// The lattice a shaper-only file gets in a format without a shaper when none is asked for.
+constexpr int kDefaultUnitSize = 33;
 
 using Clock = std::chrono::steady_clock;
 
@@ -125,8 +130,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
                          : writer->fixedSize() ? writer->fixedSize()
                          : report.input.cube   ? std::max(report.input.cube->size(), 33)
                                                : 33;
-        step.conversion =
-            convertPurpose(report.input.toLut3D(), step.input.purpose, step.output, po);
+        step.conversion = convertPurpose(report.input, step.input.purpose, step.output, po);
         converted.shaper.reset();
         converted.cube = step.conversion->lut;
     }
@@ -155,7 +159,17 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
         targetSize = held;
     }
     LutFile toWrite = in;
-    if (targetSize != 0 && targetSize != sourceSize) {
+    if (in.shaper && !writer->holdsShaper()) {
+        // Every format without a shaper implies inputs 0..1: the shaper, then the table,
+        // evaluated exactly at the output's lattice there, the error measured between lattice
+        // points (never the two merged over the shaper's range first).
+        const int size = targetSize ? targetSize : kDefaultUnitSize;
+        ErrorStats error;
+        toWrite.cube = prepareUnitLut(in, size, output, sizeNotes, &error);
+        toWrite.shaper.reset();
+        report.resample = ResampleStep{sourceSize, size, options.interp, error};
+        targetSize = size;
+    } else if (targetSize != 0 && targetSize != sourceSize) {
         if (in.shaper && in.cube && writer->holdsShaper()) {
             // The output keeps the shaper: only the cube changes size.
             ResampleResult r = resampleWithError(*in.cube, targetSize, options.interp);

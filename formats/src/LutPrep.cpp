@@ -3,6 +3,7 @@
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/Lattice.h"
 #include "lut/ops/Resample.h"
 
 #include <algorithm>
@@ -29,14 +30,36 @@ static std::string vecStr(glm::vec3 v) {
     return f(v.x) + " " + f(v.y) + " " + f(v.z);
 }
 
-Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Diagnostics& diags) {
+Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Diagnostics& diags,
+                     ErrorStats* shaperError) {
     using S = Diagnostic::Severity;
+    if (file.shaper) {
+        // The shaper, then the table, evaluated exactly at the format's lattice over [0,1] --
+        // never first merged into a table of the table's size over the shaper's range.
+        LatticeRequest q;
+        q.size = size > 0 ? size : file.cube ? file.cube->size() : 33;
+        q.domainMin = glm::vec3(0.0f);
+        q.domainMax = glm::vec3(1.0f);
+        LatticeResult r = sampleOnLattice(file, q);
+        if (shaperError)
+            *shaperError = r.error;
+        r.error.seconds = 0.0;
+        const glm::vec3 lo = file.inputDomainMin(), hi = file.inputDomainMax();
+        const bool wider = lo.x < 0 || lo.y < 0 || lo.z < 0 || hi.x > 1 || hi.y > 1 || hi.z > 1;
+        diags.push_back(makeDiagnostic(
+            r.error.maxSteps8() > 1.0 ? S::Warning : S::Info, path,
+            std::string("the 1D shaper") +
+                (file.cube ? " and " + std::to_string(file.cube->size()) + "^3 table" : "") +
+                " sampled at a " + std::to_string(q.size) +
+                "^3 lattice over 0..1 (this format stores no shaper" +
+                (wider ? "; inputs outside 0..1 of the shaper's " + vecStr(lo) + " .. " +
+                             vecStr(hi) + " take the edge value"
+                       : std::string()) +
+                "): " + r.error.str() + " on " + std::to_string(r.heldOut) +
+                " inputs between lattice points"));
+        return std::move(r.lut);
+    }
     Lut3D lut = file.toLut3D(0);
-    if (file.shaper)
-        diags.push_back(makeDiagnostic(S::Info, path,
-                                       "the 1D shaper was baked into a " +
-                                           std::to_string(lut.size()) +
-                                           "^3 table (this format stores no shaper)"));
     const int target = size > 0 ? size : lut.size();
     if (!lut.hasDefaultDomain()) {
         // The file format implies inputs 0..1: evaluate the source there.

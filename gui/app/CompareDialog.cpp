@@ -19,6 +19,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
+#include <optional>
 #include <utility>
 
 namespace lut::gui {
@@ -39,20 +40,46 @@ QString steps(glm::dvec3 v) {
 
 } // namespace
 
-Comparison compareWithFile(const Document& doc, ExportTarget target, const QString& otherPath) {
-    const std::shared_ptr<const Lut3D> a = exportedLut(doc, target);
-    const Lut3D b = formats::readLut(otherPath.toStdString()).toLut3D();
+CompareInput compareInput(const Document& doc, ExportTarget target, const QString& otherPath) {
+    CompareInput in;
+    in.source = doc.lutSource();
+    in.target = target;
+    in.image = doc.storedImage();
+    in.imagePath = doc.imagePath();
+    in.otherPath = otherPath;
+    return in;
+}
+
+Comparison compareLuts(const CompareInput& in, const Progress* progress) {
+    checkCancelled(progress, in.otherPath.toStdString());
+    const std::shared_ptr<const Lut3D> a = makeTargetLut(in.source, in.target).shown;
+    const Lut3D b = formats::readLut(in.otherPath.toStdString()).toLut3D();
     Comparison c;
-    c.otherPath = otherPath;
-    if (const std::shared_ptr<const Image> image = doc.storedImage()) {
-        c.over = doc.imagePath();
-        c.report = diffLutsOnImage(*a, b, image->view());
-        c.heat = diffHeatMap(*a, b, image->view());
-    } else {
-        c.report = diffLuts(*a, b);
-        c.heat = diffHeatMapSlices(*a, b);
+    c.otherPath = in.otherPath;
+    const Progress* root = progress;
+    std::optional<Progress> diffPart, heatPart;
+    if (root) {
+        diffPart.emplace(*root, 0.0, 0.6);
+        heatPart.emplace(*root, 0.6, 1.0);
     }
+    DiffOptions diff;
+    diff.progress = root ? &*diffPart : nullptr;
+    HeatMapOptions heat;
+    heat.progress = root ? &*heatPart : nullptr;
+    if (in.image) {
+        c.over = in.imagePath;
+        c.report = diffLutsOnImage(*a, b, in.image->view(), diff);
+        c.heat = diffHeatMap(*a, b, in.image->view(), heat);
+    } else {
+        c.report = diffLuts(*a, b, diff);
+        c.heat = diffHeatMapSlices(*a, b, heat);
+    }
+    c.heatPicture = toDisplayImage(c.heat.image);
     return c;
+}
+
+Comparison compareWithFile(const Document& doc, ExportTarget target, const QString& otherPath) {
+    return compareLuts(compareInput(doc, target, otherPath));
 }
 
 QString comparisonText(const Comparison& c) {
@@ -101,7 +128,9 @@ CompareDialog::CompareDialog(MainWindow* window, Comparison comparison)
                                  this));
     auto* picture = new QLabel(this);
     picture->setObjectName("heatMap");
-    picture->setPixmap(QPixmap::fromImage(toDisplayImage(m_comparison.heat.image)));
+    picture->setPixmap(QPixmap::fromImage(m_comparison.heatPicture.isNull()
+                                              ? toDisplayImage(m_comparison.heat.image)
+                                              : m_comparison.heatPicture));
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(picture);
     scroll->setAlignment(Qt::AlignCenter);

@@ -1,5 +1,7 @@
 #include "CurveEditor.h"
 
+#include "HueRanges.h"
+
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -41,7 +43,86 @@ CurveEditor::CurveEditor(Document* doc, CurveId id, QWidget* parent)
 void CurveEditor::setCurveId(CurveId id) {
     m_id = id;
     m_drag = -1;
+    m_selectedX = -1;
+    emit selectionChanged();
     update();
+}
+
+QString CurveEditor::curveName(CurveId id) {
+    switch (id) {
+    case CurveId::Master:
+        return tr("Master");
+    case CurveId::Red:
+        return tr("Red");
+    case CurveId::Green:
+        return tr("Green");
+    case CurveId::Blue:
+        return tr("Blue");
+    case CurveId::HueVsHue:
+        return tr("Hue vs Hue");
+    case CurveId::HueVsSat:
+        return tr("Hue vs Sat");
+    case CurveId::HueVsLum:
+        return tr("Hue vs Lum");
+    }
+    return {};
+}
+
+void CurveEditor::select(double x) {
+    if (x == m_selectedX)
+        return;
+    m_selectedX = x;
+    emit selectionChanged();
+    update();
+}
+
+int CurveEditor::selectedPoint() const {
+    if (m_selectedX < 0)
+        return -1;
+    const auto pts = points();
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        if (pts[i].x == m_selectedX)
+            return static_cast<int>(i);
+    return -1;
+}
+
+glm::dvec2 CurveEditor::selectedPointValue() const {
+    const int i = selectedPoint();
+    return i < 0 ? glm::dvec2(0.0) : points()[static_cast<std::size_t>(i)];
+}
+
+void CurveEditor::setSelectedValue(double y) {
+    const int i = selectedPoint();
+    if (i < 0)
+        return;
+    auto pts = points();
+    glm::dvec2 p = pts[static_cast<std::size_t>(i)];
+    p.y = std::clamp(y, yMin(), yMax());
+    if (isHueCurve()) {
+        const Curve& curve = curveOf(m_doc->adjustments(), m_id);
+        pts = withLocalPoint(
+            pts, p, [&curve](double h) { return curve(h); }, nullptr);
+    } else {
+        pts[static_cast<std::size_t>(i)] = p;
+    }
+    commit(pts);
+    m_doc->endGesture();
+}
+
+bool CurveEditor::selectHue(double hue) {
+    if (!isHueCurve())
+        return false;
+    const Curve& curve = curveOf(m_doc->adjustments(), m_id);
+    int index = -1;
+    const auto pts = withLocalPoint(
+        points(), {hue, std::clamp(curve(hue), yMin(), yMax())},
+        [&curve](double h) { return curve(h); }, &index);
+    if (pts != points()) {
+        commit(pts);
+        m_doc->endGesture();
+    }
+    select(index >= 0 ? pts[static_cast<std::size_t>(index)].x : -1);
+    return true;
 }
 
 bool CurveEditor::isHueCurve() const {
@@ -120,6 +201,8 @@ void CurveEditor::removePoint(int index) {
     auto pts = points();
     if (index < 0 || index >= static_cast<int>(pts.size()))
         return;
+    if (pts[static_cast<std::size_t>(index)].x == m_selectedX)
+        select(-1);
     pts.erase(pts.begin() + index);
     // A tone curve with one point left is no curve: back to the identity.
     if (!isHueCurve() && pts.size() < 2)
@@ -139,9 +222,16 @@ void CurveEditor::mousePressEvent(QMouseEvent* e) {
     auto pts = points();
     int index = pointAt(pos);
     emit interactiveChanged(true);
-    if (index < 0) {
+    if (index < 0 && isHueCurve()) {
+        // A new point with its hue range: only the hues near the click change.
+        const Curve& curve = curveOf(m_doc->adjustments(), m_id);
+        const glm::dvec2 p = constrain(fromWidget(pos), -1, {});
+        pts = withLocalPoint(
+            pts, p, [&curve](double h) { return curve(h); }, &index);
+        commit(pts);
+    } else if (index < 0) {
         // A new point on the click; a tone curve without points starts from its end points.
-        if (!isHueCurve() && pts.empty())
+        if (pts.empty())
             pts = {{0.0, 0.0}, {1.0, 1.0}};
         glm::dvec2 p = fromWidget(pos);
         auto at = std::lower_bound(pts.begin(), pts.end(), p.x,
@@ -158,9 +248,14 @@ void CurveEditor::mousePressEvent(QMouseEvent* e) {
         }
         commit(pts);
     }
+    if (index < 0 || index >= static_cast<int>(points().size())) {
+        emit interactiveChanged(false);
+        return;
+    }
     m_drag = index;
     m_dragPoint = points()[index];
     m_lastPos = pos;
+    select(m_dragPoint.x);
 }
 
 void CurveEditor::mouseMoveEvent(QMouseEvent* e) {
@@ -178,8 +273,19 @@ void CurveEditor::mouseMoveEvent(QMouseEvent* e) {
     const QPointF w = toWidget(m_dragPoint) + delta;
     const glm::dvec2 p = fromWidget(w);
     m_dragPoint = constrain(p, m_drag, pts);
-    pts[m_drag] = m_dragPoint;
+    if (isHueCurve()) {
+        // The point keeps its hue range as it moves: a point without a neighbour within 60
+        // degrees (a lone point, an anchor) gets its anchors at the first move.
+        const Curve& curve = curveOf(m_doc->adjustments(), m_id);
+        pts.erase(pts.begin() + m_drag);
+        pts = withLocalPoint(
+            pts, m_dragPoint, [&curve](double h) { return curve(h); }, &m_drag);
+    } else {
+        pts[m_drag] = m_dragPoint;
+    }
+    m_selectedX = m_dragPoint.x; // the selection follows the point (no signal: same point)
     commit(pts);
+    emit selectionChanged();
 }
 
 void CurveEditor::mouseReleaseEvent(QMouseEvent* e) {
@@ -220,26 +326,57 @@ void CurveEditor::paintEvent(QPaintEvent*) {
     else
         p.drawLine(toWidget({0.0, 0.0}), toWidget({1.0, 1.0}));
 
-    const Curve& curve = curveOf(m_doc->adjustments(), m_id);
-    QPainterPath path;
     const int n = std::max(2, static_cast<int>(r.width()));
-    for (int i = 0; i <= n; ++i) {
-        const double x = (isHueCurve() ? 360.0 : 1.0) * i / n;
-        double y = curve.empty() ? (isHueCurve() ? 0.0 : x) : curve(x);
-        y = std::clamp(y, yMin(), yMax());
-        const QPointF w = toWidget({x, y});
-        if (i == 0)
-            path.moveTo(w);
-        else
-            path.lineTo(w);
-    }
-    p.setPen(QPen(curveColor(m_id), 2));
+    auto pathOf = [&](const Curve& curve) {
+        QPainterPath path;
+        for (int i = 0; i <= n; ++i) {
+            const double x = (isHueCurve() ? 360.0 : 1.0) * i / n;
+            double y = curve.empty() ? (isHueCurve() ? 0.0 : x) : curve(x);
+            y = std::clamp(y, yMin(), yMax());
+            const QPointF w = toWidget({x, y});
+            if (i == 0)
+                path.moveTo(w);
+            else
+                path.lineTo(w);
+        }
+        return path;
+    };
     p.setBrush(Qt::NoBrush);
-    p.drawPath(path);
-    p.setBrush(curveColor(m_id));
+    if (!isHueCurve()) {
+        // The other tone curves that do something, thin and dim: the active one stands out.
+        for (CurveId other : {CurveId::Master, CurveId::Red, CurveId::Green, CurveId::Blue}) {
+            const Curve& c = curveOf(m_doc->adjustments(), other);
+            if (other == m_id || c.isNeutral())
+                continue;
+            QColor dim = curveColor(other);
+            dim.setAlpha(90);
+            p.setPen(QPen(dim, 1));
+            p.drawPath(pathOf(c));
+        }
+    }
+    const QColor color = curveColor(m_id);
+    p.setPen(QPen(color, 2.5));
+    p.drawPath(pathOf(curveOf(m_doc->adjustments(), m_id)));
+    p.setBrush(color);
     p.setPen(QPen(Qt::black, 1));
-    for (const auto& pt : points())
-        p.drawEllipse(toWidget(pt), 4.5, 4.5);
+    const int selected = selectedPoint();
+    const auto pts = points();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        p.drawEllipse(toWidget(pts[i]), 4.5, 4.5);
+        if (static_cast<int>(i) == selected) {
+            p.save();
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(Qt::white, 1.5));
+            p.drawEllipse(toWidget(pts[i]), 8.0, 8.0);
+            p.restore();
+        }
+    }
+    // The curve's name, so which one is being edited never depends on reading the buttons.
+    QFont f = font();
+    f.setBold(true);
+    p.setFont(f);
+    p.setPen(color);
+    p.drawText(r.adjusted(6, 4, -6, -4), Qt::AlignLeft | Qt::AlignTop, curveName(m_id));
 }
 
 } // namespace lut::gui

@@ -1,5 +1,6 @@
 #include "FileActions.h"
 
+#include "BackgroundTask.h"
 #include "Document.h"
 #include "ErrorText.h"
 #include "ExportDialog.h"
@@ -7,6 +8,7 @@
 #include "MainWindow.h"
 #include "PreviewController.h"
 #include "RecentFiles.h"
+#include "TaskStatus.h"
 
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
@@ -41,7 +43,8 @@ QString human(const std::exception& e) {
 } // namespace
 
 FileActions::FileActions(MainWindow* window)
-    : QObject(window), m_window(window), m_loader(new FileLoader(this)) {
+    : QObject(window), m_window(window), m_loader(new FileLoader(this)),
+      m_saveTask(new BackgroundTask(this)) {
     connect(m_loader, &FileLoader::imageLoaded, this,
             [this](const QString& path, std::shared_ptr<formats::LoadedImage> image) {
                 m_lastDone = path;
@@ -90,6 +93,10 @@ FileActions::FileActions(MainWindow* window)
             });
     connect(m_loader, &FileLoader::busyChanged, m_window,
             [this](bool busy) { m_window->setLoading(busy); });
+    connect(m_loader, &FileLoader::progressChanged, m_window->loadingStatus(),
+            &TaskStatus::setFraction);
+    connect(m_window->loadingStatus(), &TaskStatus::cancelRequested, m_loader, &FileLoader::cancel);
+    m_window->watchTask(m_saveTask, QStringLiteral("task.savePreview"));
 }
 
 QString FileActions::imageFilter() {
@@ -142,7 +149,7 @@ void FileActions::updateRecentMenus() {
         for (const QString& p : list) {
             menu->addAction(
                 QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() + ')', this,
-                [this, p, lut] { lut ? (void)startOpenLut(p) : (void)startOpenImage(p); });
+                [this, p, lut] { lut ? (void)openLutAsking(p) : (void)startOpenImage(p); });
         }
         menu->setEnabled(!list.isEmpty());
     };
@@ -265,12 +272,15 @@ void FileActions::newNeutral(int size) {
 bool FileActions::confirmReplace(const QString& path, bool original) {
     if (!m_window->interactiveErrors())
         return false; // headless: an existing file is replaced only when told (overwrite)
-    QMessageBox box(QMessageBox::Warning, tr("Replace file?"),
-                    original
-                        ? tr("\"%1\" is the LUT you opened. Replace it? The original is lost.")
-                              .arg(QFileInfo(path).fileName())
-                        : tr("\"%1\" already exists. Replace it?").arg(QFileInfo(path).fileName()),
-                    QMessageBox::NoButton, m_window);
+    // The full path: one name (color_grading_lut.nutexb) is every stage's LUT, so the folder is
+    // what tells them apart.
+    const QString where = QDir::toNativeSeparators(QFileInfo(path).absoluteFilePath());
+    QMessageBox box(
+        QMessageBox::Warning, tr("Replace file?"),
+        original ? tr("%1 is the LUT you opened. Replace it? The original is lost.").arg(where)
+                 : tr("%1 already exists. Replace it?").arg(where),
+        QMessageBox::NoButton, m_window);
+    box.setInformativeText(tr("Keep the file to choose another name."));
     QPushButton* replace = box.addButton(tr("Replace"), QMessageBox::DestructiveRole);
     QPushButton* keep = box.addButton(tr("Keep the file"), QMessageBox::RejectRole);
     box.setDefaultButton(keep);
@@ -279,15 +289,18 @@ bool FileActions::confirmReplace(const QString& path, bool original) {
     return box.clickedButton() == replace;
 }
 
+bool FileActions::isOpenedLut(const QString& path) const {
+    const QString opened = m_window->document()->lutPath();
+    return !opened.isEmpty() &&
+           QFileInfo(path).absoluteFilePath() == QFileInfo(opened).absoluteFilePath();
+}
+
 bool FileActions::exportLut(const QString& path, const QString& format,
                             const FormatOptions& options, ExportTarget target, bool overwrite) {
-    const bool isOriginal = !m_window->document()->lutPath().isEmpty() &&
-                            QFileInfo(path).absoluteFilePath() ==
-                                QFileInfo(m_window->document()->lutPath()).absoluteFilePath();
-    if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, isOriginal)) {
+    if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, isOpenedLut(path))) {
         m_window->reportError(
-            tr("Export"),
-            tr("%1 exists and was not replaced.").arg(QDir::toNativeSeparators(path)));
+            tr("Export"), tr("%1 exists and was not replaced.")
+                              .arg(QDir::toNativeSeparators(QFileInfo(path).absoluteFilePath())));
         return false;
     }
     try {
@@ -296,7 +309,7 @@ bool FileActions::exportLut(const QString& path, const QString& format,
         QStringList lines;
         for (const auto& x : d)
             lines << QString::fromStdString(x.str());
-        showStatus(tr("Exported %1").arg(QFileInfo(path).fileName()));
+        showStatus(tr("Exported %1").arg(QDir::toNativeSeparators(path)));
         m_window->showNotes(lines);
     } catch (const std::exception& e) {
         m_window->reportError(tr("Export failed"), human(e));
@@ -338,31 +351,50 @@ bool FileActions::save() {
     return saveAs(path);
 }
 
-bool FileActions::savePreviewImage(const QString& path) {
+bool FileActions::startSavePreview(const QString& path) {
     Document* doc = m_window->document();
     if (!doc->hasImage()) {
         m_window->reportError(tr("Save preview image"), tr("No image is open."));
         return false;
     }
-    try {
-        // The current full-resolution frame, or a fresh render of it: the view may show a proxy.
-        const Image image = m_window->preview()->renderFullResolution();
-        const formats::ImageWriteOptions o =
-            formats::renderedImageWriteOptions(doc->imageInfo(), path.toStdString());
-        formats::writeImage(path.toStdString(), image, o);
-    } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot save the preview"), human(e));
-        return false;
-    }
-    showStatus(tr("Saved preview %1").arg(QFileInfo(path).fileName()));
+    // Rendered (unless the current frame is the full-resolution preview) and written on a
+    // worker: a 4K picture takes seconds to encode and check. The window stays live, the status
+    // bar shows the progress with Cancel; a cancelled write leaves any old file as it was.
+    const PreviewController* preview = m_window->preview();
+    const double renderShare = preview->hasFullResolutionFrame() ? 0.0 : 0.4;
+    m_saveTask->start(
+        tr("Saving %1…").arg(QFileInfo(path).fileName()),
+        [this, path, renderShare, render = preview->fullResolutionRenderer(),
+         options = formats::renderedImageWriteOptions(doc->imageInfo(), path.toStdString())](
+            const Progress& progress) mutable {
+            const Progress renderPart(progress, 0.0, renderShare);
+            const Progress writePart(progress, renderShare, 1.0);
+            const Image image = render(renderPart);
+            options.progress = &writePart;
+            formats::writeImage(path.toStdString(), image, options);
+            return BackgroundTask::Delivery([this, path] {
+                showStatus(tr("Saved preview %1").arg(QDir::toNativeSeparators(path)));
+            });
+        },
+        [this](const QString& message) {
+            m_window->reportError(tr("Cannot save the preview"),
+                                  QString::fromStdString(humanErrorText(message.toStdString())));
+        });
     return true;
+}
+
+bool FileActions::savePreviewImage(const QString& path) {
+    if (!startSavePreview(path))
+        return false;
+    m_saveTask->waitForIdle();
+    return m_saveTask->lastOutcome() == BackgroundTask::Outcome::Done;
 }
 
 bool FileActions::savePicture(const QString& path, const Image& image, bool overwrite) {
     if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, false)) {
-        m_window->reportError(
-            tr("Save picture"),
-            tr("%1 exists and was not replaced.").arg(QDir::toNativeSeparators(path)));
+        m_window->reportError(tr("Save picture"), tr("%1 exists and was not replaced.")
+                                                      .arg(QDir::toNativeSeparators(
+                                                          QFileInfo(path).absoluteFilePath())));
         return false;
     }
     try {
@@ -443,26 +475,35 @@ void FileActions::openImageDialog() {
 void FileActions::openLutDialog() {
     const QString path =
         QFileDialog::getOpenFileName(m_window, tr("Open LUT"), QString(), lutFilter());
-    if (path.isEmpty())
-        return;
+    if (!path.isEmpty())
+        openLutAsking(path);
+}
+
+bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
+    if (!m_window->interactiveErrors() || !stripLayoutIsAmbiguous(path))
+        return true;
+    // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
+    // agree (a heavy grade can fool it).
+    QStringList items = {tr("Detect automatically")};
+    for (LutLayout l : allLayouts())
+        if (l != LutLayout::Hald)
+            items << QString::fromLatin1(toString(l));
+    bool ok = false;
+    const QString item = QInputDialog::getItem(
+        m_window, tr("Strip layout"),
+        tr("%1 fits several strip layouts. Read it as:").arg(QFileInfo(path).fileName()), items, 0,
+        false, &ok);
+    if (!ok)
+        return false;
+    options.layout = parseOptionalLayout(item == items[0] ? std::string() : item.toStdString());
+    return true;
+}
+
+bool FileActions::openLutAsking(const QString& path) {
     FormatOptions options;
-    if (stripLayoutIsAmbiguous(path)) {
-        // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
-        // agree (a heavy grade can fool it).
-        QStringList items = {tr("Detect automatically")};
-        for (LutLayout l : allLayouts())
-            if (l != LutLayout::Hald)
-                items << QString::fromLatin1(toString(l));
-        bool ok = false;
-        const QString item = QInputDialog::getItem(
-            m_window, tr("Strip layout"),
-            tr("%1 fits several strip layouts. Read it as:").arg(QFileInfo(path).fileName()), items,
-            0, false, &ok);
-        if (!ok)
-            return;
-        options.layout = parseOptionalLayout(item == items[0] ? std::string() : item.toStdString());
-    }
-    startOpenLut(path, options);
+    if (!askStripLayout(path, options))
+        return false;
+    return startOpenLut(path, options);
 }
 
 void FileActions::openScreenshotDialog() {
@@ -493,9 +534,15 @@ void FileActions::exportDialog() {
     naming.imagePath = doc->imagePath();
     naming.fallbackFolder = QDir::homePath();
     ExportDialog dlg(m_window->preview()->options().target, naming, m_window);
-    if (dlg.exec() != QDialog::Accepted || dlg.path().isEmpty())
+    // "Keep the file" in the replace question returns here, with every setting as it was, to
+    // choose another name or folder.
+    while (dlg.exec() == QDialog::Accepted && !dlg.path().isEmpty()) {
+        const QString path = dlg.path();
+        if (QFileInfo::exists(path) && !confirmReplace(path, isOpenedLut(path)))
+            continue;
+        exportLut(path, dlg.choice().format, dlg.options(), dlg.target(), true);
         return;
-    exportLut(dlg.path(), dlg.choice().format, dlg.options(), dlg.target());
+    }
 }
 
 void FileActions::savePreviewDialog() {

@@ -24,6 +24,7 @@ class QMenu;
 
 namespace lut::gui {
 
+class BackgroundTask;
 class FileLoader;
 class MainWindow;
 
@@ -36,6 +37,9 @@ public:
     // Reading on the worker; false when nothing started (the user kept unsaved changes).
     bool startOpenImage(const QString& path);
     bool startOpenLut(const QString& path, const FormatOptions& options = {});
+    // As File > Open LUT does (and a drop): a picture that fits several strip layouts (256x16)
+    // is asked its layout first (interactive only; headless: detected). false: the user cancelled.
+    bool openLutAsking(const QString& path);
     // The same, waiting for the file: true when the document took it.
     bool openImage(const QString& path);
     bool openLut(const QString& path, const FormatOptions& options = {});
@@ -50,8 +54,12 @@ public:
     bool exportLut(const QString& path, const QString& format, const FormatOptions& options,
                    ExportTarget target, bool overwrite = false);
     // The full-resolution preview with the current settings, written the way `lutkit preview`
-    // does (lut::formats::renderedImageWriteOptions: 8-bit unless the extension is float).
+    // does (lut::formats::renderedImageWriteOptions: 8-bit unless the extension is float), on a
+    // worker (saveTask: progress and Cancel in the status bar). start* returns at once; the
+    // other form waits and says whether the file was written.
+    bool startSavePreview(const QString& path);
     bool savePreviewImage(const QString& path);
+    BackgroundTask* saveTask() const { return m_saveTask; }
     // A picture made by the tools (the LUT plot, a heat map), written the way lutkit plot and
     // lutkit diff write theirs (8-bit RGB; the format by extension). An existing file is
     // replaced only when `overwrite` is true or the user says so (headless: refused).
@@ -88,14 +96,18 @@ public:
     static void rememberPurpose(const QString& path, LutPurpose purpose);
 
 private:
-    // Asks whether to replace `path`; `original` says it is the opened LUT.
+    // Asks whether to replace `path` (named in full); `original` says it is the opened LUT.
     bool confirmReplace(const QString& path, bool original);
+    bool isOpenedLut(const QString& path) const;
+    // The layout question of Open LUT; false when the user cancelled it.
+    bool askStripLayout(const QString& path, FormatOptions& options);
     void addRecent(const char* key, const QString& path);
     void updateRecentMenus();
     void showStatus(const QString& message);
 
     MainWindow* m_window;
     FileLoader* m_loader;
+    BackgroundTask* m_saveTask;
     QMenu* m_recentImages = nullptr;
     QMenu* m_recentLuts = nullptr;
     // The result of the last read that finished, for the waiting forms.

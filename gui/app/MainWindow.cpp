@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "AdjustmentsPanel.h"
+#include "BackgroundTask.h"
 #include "CurvesPanel.h"
 #include "Document.h"
 #include "FileActions.h"
@@ -9,6 +10,7 @@
 #include "PreviewView.h"
 #include "ScopesView.h"
 #include "ShortcutGuard.h"
+#include "TaskStatus.h"
 #include "WheelsPanel.h"
 #include "WindowActions.h"
 
@@ -52,6 +54,7 @@ MainWindow::MainWindow(QWidget* parent)
     setAcceptDrops(true);
     buildCentre();
     buildDocks();
+    m_loading = new TaskStatus(QStringLiteral("loading"), this); // FileActions connects to it
     m_files = new FileActions(this);
     m_actions = new WindowActions(this); // after the docks: the View menu lists them
     buildStatusBar();
@@ -179,19 +182,11 @@ void MainWindow::buildDocks() {
     tabifyDockWidget(scopesDock, historyDock);
     scopesDock->raise();
     resizeDocks({lutDock, adjustDock}, {330, 340}, Qt::Horizontal);
-    resizeDocks({lutDock, scopesDock}, {420, 300}, Qt::Vertical);
+    resizeDocks({lutDock, scopesDock}, {340, 420}, Qt::Vertical); // room for the vectorscope
     resizeDocks({adjustDock, curvesDock}, {520, 300}, Qt::Vertical);
 }
 
 void MainWindow::buildStatusBar() {
-    m_loadingBar = new QProgressBar(this);
-    m_loadingBar->setObjectName("loading");
-    m_loadingBar->setRange(0, 0); // busy: a read has no progress to report
-    m_loadingBar->setMaximumWidth(120);
-    m_loadingBar->setTextVisible(false);
-    m_loadingBar->hide();
-    m_loadingLabel = new QLabel(this);
-    m_loadingLabel->hide();
     m_pixelLabel = new QLabel(this);
     m_pixelLabel->setObjectName("pixelReadout");
     m_pixelLabel->setMinimumWidth(420);
@@ -202,8 +197,7 @@ void MainWindow::buildStatusBar() {
     m_clipLabel->setObjectName("clipCount");
     m_timeLabel = new QLabel(tr("No image"), this);
     m_zoomLabel = new QLabel(this);
-    statusBar()->addWidget(m_loadingBar);
-    statusBar()->addWidget(m_loadingLabel);
+    statusBar()->addWidget(m_loading);
     statusBar()->addWidget(m_pixelLabel, 1);
     statusBar()->addPermanentWidget(m_exportLabel);
     statusBar()->addPermanentWidget(m_clipLabel);
@@ -259,12 +253,23 @@ QString MainWindow::notesText() const {
 }
 
 void MainWindow::setLoading(bool busy) {
-    m_loadingBar->setVisible(busy);
-    m_loadingLabel->setVisible(busy);
+    m_loading->setBusy(busy);
 }
 
 void MainWindow::setLoadingText(const QString& text) {
-    m_loadingLabel->setText(text);
+    m_loading->setText(text);
+}
+
+TaskStatus* MainWindow::watchTask(BackgroundTask* task, const QString& name) {
+    auto* status = new TaskStatus(name, this);
+    statusBar()->addWidget(status);
+    connect(task, &BackgroundTask::busyChanged, status, [status, task](bool busy) {
+        status->setText(task->label());
+        status->setBusy(busy);
+    });
+    connect(task, &BackgroundTask::progressChanged, status, &TaskStatus::setFraction);
+    connect(status, &TaskStatus::cancelRequested, task, &BackgroundTask::cancel);
+    return status;
 }
 
 bool MainWindow::isLoading() const {
@@ -272,6 +277,7 @@ bool MainWindow::isLoading() const {
 }
 
 void MainWindow::waitForLoads() {
+    QApplication::processEvents(); // a dropped LUT starts loading once the drop has returned
     m_files->loader()->waitForIdle();
 }
 
@@ -436,13 +442,16 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
 }
 
 void MainWindow::dropEvent(QDropEvent* e) {
-    // Read on the worker: the drop returns at once, the files arrive when read.
+    // Read on the worker: the drop returns at once, the files arrive when read. A LUT is opened
+    // as File > Open LUT opens it (a 256x16 strip is asked its layout), after the drop has
+    // returned, so the question never holds up the drag source.
     for (const QUrl& url : e->mimeData()->urls()) {
         if (!url.isLocalFile())
             continue;
         const QString path = url.toLocalFile();
         if (looksLikeLutFile(path))
-            m_files->startOpenLut(path);
+            QMetaObject::invokeMethod(
+                m_files, [this, path] { m_files->openLutAsking(path); }, Qt::QueuedConnection);
         else
             m_files->startOpenImage(path);
     }

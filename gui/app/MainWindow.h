@@ -23,6 +23,8 @@ class QUndoView;
 namespace lut::gui {
 
 class AdjustmentsPanel;
+class BackgroundTask;
+class TaskStatus;
 class CurvesPanel;
 class Document;
 class FileActions;
@@ -65,10 +67,13 @@ public:
     void showNotes(const QStringList& notes);
     QString notesText() const;
     void setVerbose(bool on) { m_verbose = on; }
-    // The status bar's progress indicator while files load on the worker.
+    // The status bar's progress indicator while files load on the worker (with Cancel).
     void setLoading(bool busy);
     void setLoadingText(const QString& text);
     bool isLoading() const;
+    // Shows a long task in the status bar while it runs: its label, progress and Cancel.
+    TaskStatus* watchTask(BackgroundTask* task, const QString& name);
+    TaskStatus* loadingStatus() const { return m_loading; }
     // Processes events until the file reads in flight are done and adopted.
     void waitForLoads();
 
@@ -130,8 +135,7 @@ private:
     WindowActions* m_actions = nullptr;
 
     QLabel* m_pixelLabel = nullptr;
-    QLabel* m_loadingLabel = nullptr;
-    QProgressBar* m_loadingBar = nullptr;
+    TaskStatus* m_loading = nullptr;
     QLabel* m_exportLabel = nullptr;
     QLabel* m_clipLabel = nullptr;
     QLabel* m_timeLabel = nullptr;

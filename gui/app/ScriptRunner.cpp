@@ -1,13 +1,21 @@
 #include "ScriptRunner.h"
 
 #include "AdjustmentsPanel.h"
+#include "BackgroundTask.h"
 #include "CompareDialog.h"
+#include "CurveEditor.h"
+#include "CurvesPanel.h"
 #include "Document.h"
 #include "ExportDialog.h"
 #include "FileActions.h"
+#include "FileLoader.h"
+#include "HueRanges.h"
 #include "MainWindow.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
+#include "PreviewView.h"
+#include "RepaintProbe.h"
+#include "TaskStatus.h"
 #include "WindowActions.h"
 
 #include "lut/io/Layout.h"
@@ -15,18 +23,22 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
+#include <QPushButton>
 #include <QSaveFile>
 #include <QSlider>
+#include <QStatusBar>
 #include <QStyle>
 #include <QStyleOptionSlider>
 #include <QThread>
 #include <QTimer>
+#include <QToolButton>
 #include <QUndoStack>
 
 #include <cstdio>
@@ -73,6 +85,7 @@ private:
 };
 
 DialogResponder* g_responder = nullptr;
+RepaintProbe* g_probe = nullptr;
 
 struct Failure : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -93,8 +106,38 @@ bool onOff(const QString& v) {
 
 void settle(MainWindow& w) {
     w.waitForLoads();
+    w.windowActions()->compareTask()->waitForIdle();
+    w.fileActions()->saveTask()->waitForIdle();
     w.waitForPreview();
     QApplication::processEvents();
+}
+
+// The long tasks by the names scripts use: load, compare, save-preview.
+QString taskState(MainWindow& w, const QString& name) {
+    auto state = [](bool busy, double fraction, const QString& idle) {
+        return busy ? QStringLiteral("busy %1 %").arg(static_cast<int>(fraction * 100)) : idle;
+    };
+    auto outcome = [](BackgroundTask* t) {
+        switch (t->lastOutcome()) {
+        case BackgroundTask::Outcome::Done:
+            return QStringLiteral("idle done");
+        case BackgroundTask::Outcome::Cancelled:
+            return QStringLiteral("idle cancelled");
+        case BackgroundTask::Outcome::Failed:
+            return QStringLiteral("idle failed");
+        case BackgroundTask::Outcome::None:
+            break;
+        }
+        return QStringLiteral("idle");
+    };
+    if (name == "load")
+        return state(w.fileActions()->loader()->isBusy(), w.fileActions()->loader()->fraction(),
+                     QStringLiteral("idle"));
+    BackgroundTask* t = name == "compare"        ? w.windowActions()->compareTask()
+                        : name == "save-preview" ? w.fileActions()->saveTask()
+                                                 : nullptr;
+    need(t != nullptr, QStringLiteral("unknown task '%1' (load, compare, save-preview)").arg(name));
+    return state(t->isBusy(), t->fraction(), outcome(t));
 }
 
 const AdjustParamInfo& paramByKey(const QString& key) {
@@ -224,6 +267,7 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         need(enter.isAccepted(), QStringLiteral("the window refused the drag"));
         QDropEvent drop(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
         QApplication::sendEvent(&w, &drop);
+        QApplication::processEvents(); // a LUT opens once the drop has returned
         w.waitForLoads();
         noNewError(drop.isAccepted());
     } else if (cmd == "lut-target") { // what LUTs that do not say are for (raw, smash, ask)
@@ -284,6 +328,68 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
             id == CurveId::HueVsHue || id == CurveId::HueVsSat || id == CurveId::HueVsLum;
         doc->editCurve(id, Curve(hue ? CurveKind::Hue : CurveKind::Tone, pts));
         doc->endGesture();
+    } else if (cmd == "hue-range") {
+        // As a user does: the curve's button, the range's button, a value typed in Amount.
+        const CurveId id = curveByName(arg(0));
+        need(id == CurveId::HueVsHue || id == CurveId::HueVsSat || id == CurveId::HueVsLum,
+             QStringLiteral("hue-range takes hue.hue, hue.sat or hue.lum"));
+        const HueRange* range = hueRangeByKey(arg(1).toLatin1().constData());
+        need(range != nullptr, QStringLiteral("unknown hue range '%1' (reds yellows greens cyans "
+                                              "blues magentas)")
+                                   .arg(arg(1)));
+        bool ok = false;
+        const double amount = arg(2).toDouble(&ok);
+        need(ok, QStringLiteral("expected an amount, got '%1'").arg(arg(2)));
+        CurvesPanel* panel = w.curvesPanel();
+        panel->curveButton(id)->click();
+        panel->rangeButton(range->key)->click();
+        need(panel->amountBox()->isEnabled(), QStringLiteral("no point selected"));
+        panel->amountBox()->setValue(amount);
+    } else if (cmd == "start-open-image") {
+        need(w.fileActions()->startOpenImage(arg(0)), QStringLiteral("nothing started"));
+    } else if (cmd == "start-compare") {
+        settle(w);
+        w.windowActions()->startCompare(arg(0));
+    } else if (cmd == "start-save-preview") {
+        settle(w);
+        noNewError(w.fileActions()->startSavePreview(arg(0)));
+    } else if (cmd == "cancel") {
+        // The status bar's Cancel button of that task, clicked.
+        const QString name =
+            arg(0) == "load"
+                ? QStringLiteral("loading")
+                : QStringLiteral("task.") +
+                      (arg(0) == "save-preview" ? QStringLiteral("savePreview") : arg(0));
+        auto* status = w.statusBar()->findChild<TaskStatus*>(name);
+        need(status != nullptr, QStringLiteral("unknown task '%1'").arg(arg(0)));
+        need(status->isVisible(), QStringLiteral("%1 is not running").arg(arg(0)));
+        status->cancelButton()->click();
+        QApplication::processEvents();
+    } else if (cmd == "wait-task") {
+        // Processes events until the task is done (the window stays live meanwhile).
+        const QString name = arg(0);
+        if (name == "load")
+            w.waitForLoads();
+        else if (name == "compare")
+            w.windowActions()->compareTask()->waitForIdle();
+        else if (name == "save-preview")
+            w.fileActions()->saveTask()->waitForIdle();
+        else
+            throw Failure("unknown task '" + name.toStdString() + "'");
+    } else if (cmd == "probe") {
+        if (onOff(arg(0))) {
+            if (!g_probe) {
+                g_probe = new RepaintProbe(w.statusBar());
+                w.statusBar()->addPermanentWidget(g_probe);
+            }
+            g_probe->start();
+        } else {
+            need(g_probe != nullptr, QStringLiteral("probe on first"));
+            g_probe->stop();
+            out << "probe longest-gap " << QString::number(g_probe->longestGapMs(), 'f', 1)
+                << " ms own " << QString::number(g_probe->longestOwnGapMs(), 'f', 1) << " ms over "
+                << g_probe->paints() << " paints\n";
+        }
     } else if (cmd == "focus") {
         QWidget* target = widgetByName(w, arg(0));
         // As a click does: the window becomes the active one (there may be no window manager to
@@ -338,8 +444,14 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         const Image plot = plotExportedLut(*doc, preview->options().target);
         noNewError(w.fileActions()->savePicture(arg(0), plot));
     } else if (cmd == "compare") {
+        // Through Tools > Compare's worker, as the menu runs it; the report also opens.
         settle(w);
-        const Comparison c = compareWithFile(*doc, preview->options().target, arg(0));
+        w.windowActions()->startCompare(arg(0));
+        w.windowActions()->compareTask()->waitForIdle();
+        need(w.windowActions()->compareTask()->lastOutcome() == BackgroundTask::Outcome::Done &&
+                 w.windowActions()->lastComparison(),
+             w.lastError().isEmpty() ? QStringLiteral("the comparison failed") : w.lastError());
+        const Comparison& c = *w.windowActions()->lastComparison();
         char exact[40];
         std::snprintf(exact, sizeof exact, "%.9g", c.report.maxDeltaE);
         const QString text =
@@ -404,6 +516,16 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
             out << (g_responder->seen.isEmpty() ? QStringLiteral("(none)")
                                                 : g_responder->seen.join(QStringLiteral(" | ")));
             g_responder->seen.clear();
+        } else if (what == "zoom") {
+            out << QString::number(w.previewView()->zoom() * 100, 'f', 1) << " %";
+        } else if (what.startsWith("task:")) {
+            out << taskState(w, what.mid(5));
+        } else if (what.startsWith("curve:")) {
+            const Curve& c = curveOf(doc->adjustments(), curveByName(what.mid(6)));
+            QStringList pts;
+            for (const auto& p : c.points())
+                pts << QStringLiteral("%1,%2").arg(p.x).arg(p.y);
+            out << (pts.isEmpty() ? QStringLiteral("(neutral)") : pts.join(' '));
         } else if (what == "focus")
             out << (QApplication::focusWidget() ? QApplication::focusWidget()->objectName()
                                                 : QStringLiteral("(none)"));
@@ -442,10 +564,12 @@ int runScript(MainWindow& w, const QString& path, QTextStream& out) {
             out << "script:" << (i + 1) << ": " << cmd << ": " << e.what() << "\n";
             out.flush();
             g_responder = nullptr;
+            g_probe = nullptr;
             return 1;
         }
     }
     g_responder = nullptr;
+    g_probe = nullptr; // a child of the window: it goes with it
     return 0;
 }
 

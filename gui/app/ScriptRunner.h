@@ -13,11 +13,17 @@
 //   focus OBJECTNAME           type TEXT        key SEQUENCE (e.g. ctrl+z, Return)
 //   undo  redo  save  save-as PATH  adjustments-save PATH  adjustments-load PATH
 //   export [PATH [FORMAT [LAYOUT]]] [overwrite]   (no PATH: the export dialog's suggestion)
+//   hue-range hue.hue|hue.sat|hue.lum RANGE AMOUNT   (the curve's button, the range's button
+//                              reds..magentas, AMOUNT typed in Amount: one undo step)
 //   save-preview PATH   screenshot PATH   wait   sleep MS   close
+//   start-open-image PATH   start-compare FILE   start-save-preview PATH   (return at once)
+//   cancel load|compare|save-preview   (the status bar's Cancel)   wait-task NAME
+//   probe on|off               (the repaint probe, RepaintProbe.h; off prints the longest gap)
 //   dialogs accept|reject      (how modal dialogs a command opens are answered: Return or Escape;
 //                               default reject)
 //   print WHAT                 (state on stdout: target input chain bloom param:KEY undo-count
-//                               modified notes error clip title export-path focus dialogs)
+//                               modified notes error clip title export-path focus dialogs
+//                               task:NAME curve:NAME zoom)
 // '#' starts a comment. A failing command prints "script:LINE: reason" and ends the run with 1.
 #include <QString>
 #include <QTextStream>

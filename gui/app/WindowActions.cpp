@@ -1,10 +1,12 @@
 #include "WindowActions.h"
 
+#include "BackgroundTask.h"
 #include "CompareDialog.h"
 #include "Document.h"
 #include "ErrorText.h"
 #include "FileActions.h"
 #include "MainWindow.h"
+#include "MatchDialog.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
 #include "PreviewView.h"
@@ -63,7 +65,9 @@ void setItemEnabled(QComboBox* box, int index, bool on) {
 
 } // namespace
 
-WindowActions::WindowActions(MainWindow* window) : QObject(window), m_window(window) {
+WindowActions::WindowActions(MainWindow* window)
+    : QObject(window), m_window(window), m_compareTask(new BackgroundTask(this)) {
+    m_window->watchTask(m_compareTask, QStringLiteral("task.compare"));
     buildFileMenu();
     buildEditMenu();
     buildViewMenu();
@@ -148,8 +152,13 @@ void WindowActions::buildViewMenu() {
                             &PreviewView::zoomToFit);
     m_actualSize = menu->addAction(tr("&100 %"), QKeySequence(tr("Ctrl+1")), view,
                                    [view] { view->zoomTo(1.0); });
-    menu->addAction(tr("Zoom &In"), QKeySequence::ZoomIn, view, [view] { view->zoomBy(1.25); });
-    menu->addAction(tr("Zoom &Out"), QKeySequence::ZoomOut, view, [view] { view->zoomBy(0.8); });
+    // Ctrl++ needs Shift on most keyboards: Ctrl+= (the same key unshifted) zooms in too.
+    QAction* zoomIn = menu->addAction(tr("Zoom &In"), view, [view] { view->zoomBy(1.25); });
+    zoomIn->setObjectName("action.zoomIn");
+    zoomIn->setShortcuts({QKeySequence(QKeySequence::ZoomIn), QKeySequence(tr("Ctrl+="))});
+    QAction* zoomOut = menu->addAction(tr("Zoom &Out"), view, [view] { view->zoomBy(0.8); });
+    zoomOut->setObjectName("action.zoomOut");
+    zoomOut->setShortcut(QKeySequence::ZoomOut);
     menu->addSeparator();
     auto* group = new QActionGroup(this);
     const std::pair<QString, PreviewView::Mode> modes[] = {
@@ -240,6 +249,37 @@ void WindowActions::buildToolsMenu() {
     compare->setObjectName("compareLut");
     compare->setToolTip(tr("How the export differs from a LUT file (ΔE2000, 8-bit steps, where), "
                            "over the open image's colours or the lattice, as lutkit diff does"));
+    menu->addSeparator();
+    QAction* match =
+        menu->addAction(tr("&Match to Reference…"), this, &WindowActions::matchToReference);
+    match->setObjectName("matchReference");
+    match->setToolTip(tr("A LUT that gives the open picture the look of another picture, as "
+                         "lutkit match makes it, with its strength shown live"));
+}
+
+void WindowActions::matchToReference() {
+    Document* doc = m_window->document();
+    if (!doc->hasImage()) {
+        m_window->reportError(tr("Cannot match"),
+                              tr("Open a picture first: its look is matched to the reference."));
+        return;
+    }
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Match to Reference"),
+                                                      QFileInfo(doc->imagePath()).absolutePath(),
+                                                      FileActions::imageFilter());
+    if (path.isEmpty())
+        return;
+    try {
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        auto session =
+            std::make_unique<MatchSession>(doc->storedImage(), doc->imageInfo().isFloat, path);
+        QApplication::restoreOverrideCursor();
+        MatchDialog dlg(m_window, std::move(session));
+        dlg.exec();
+    } catch (const std::exception& e) {
+        QApplication::restoreOverrideCursor();
+        m_window->reportError(tr("Cannot match"), QString::fromStdString(humanErrorText(e.what())));
+    }
 }
 
 void WindowActions::showPlot() {
@@ -258,19 +298,35 @@ void WindowActions::compareWithFile() {
     const QString path = QFileDialog::getOpenFileName(
         m_window, tr("Compare with LUT File"),
         from.isEmpty() ? QString() : QFileInfo(from).absolutePath(), FileActions::lutFilter());
-    if (path.isEmpty())
-        return;
-    try {
-        QApplication::setOverrideCursor(Qt::WaitCursor);
-        Comparison c = lut::gui::compareWithFile(*doc, m_window->preview()->options().target, path);
-        QApplication::restoreOverrideCursor();
-        CompareDialog dlg(m_window, std::move(c));
-        dlg.exec();
-    } catch (const std::exception& e) {
-        QApplication::restoreOverrideCursor();
-        m_window->reportError(tr("Cannot compare the LUTs"),
-                              QString::fromStdString(humanErrorText(e.what())));
-    }
+    if (!path.isEmpty())
+        startCompare(path);
+}
+
+CompareDialog* WindowActions::compareDialog() const {
+    return m_compareDialog;
+}
+
+void WindowActions::startCompare(const QString& path) {
+    // The comparison runs on a worker (over a 4K picture it takes seconds): the window stays
+    // live, the status bar shows its progress with Cancel, and the report opens when it is done.
+    const CompareInput input =
+        compareInput(*m_window->document(), m_window->preview()->options().target, path);
+    m_compareTask->start(
+        tr("Comparing %1…").arg(QFileInfo(path).fileName()),
+        [this, input](const Progress& progress) -> BackgroundTask::Delivery {
+            auto c = std::make_shared<const Comparison>(compareLuts(input, &progress));
+            return [this, c] {
+                m_lastComparison = c;
+                auto* dlg = new CompareDialog(m_window, *c);
+                dlg->setAttribute(Qt::WA_DeleteOnClose);
+                dlg->show(); // not modal: the window stays usable beside the report
+                m_compareDialog = dlg;
+            };
+        },
+        [this](const QString& message) {
+            m_window->reportError(tr("Cannot compare the LUTs"),
+                                  QString::fromStdString(humanErrorText(message.toStdString())));
+        });
 }
 
 void WindowActions::buildHelpMenu() {

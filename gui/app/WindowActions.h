@@ -10,6 +10,9 @@
 #include "PreviewRenderer.h"
 
 #include <QObject>
+#include <QPointer>
+
+#include <memory>
 
 class QAction;
 class QComboBox;
@@ -18,6 +21,9 @@ class QToolBar;
 
 namespace lut::gui {
 
+class BackgroundTask;
+class CompareDialog;
+struct Comparison;
 class MainWindow;
 
 class WindowActions : public QObject {
@@ -38,6 +44,12 @@ public:
     QComboBox* inputBox() const { return m_input; }
     QComboBox* chainBox() const { return m_chain; }
     QComboBox* interpolationBox() const { return m_interp; }
+    // Tools > Compare with LUT File on a worker (progress and Cancel in the status bar); the
+    // report opens beside the window when it is done.
+    void startCompare(const QString& path);
+    BackgroundTask* compareTask() const { return m_compareTask; }
+    std::shared_ptr<const Comparison> lastComparison() const { return m_lastComparison; }
+    CompareDialog* compareDialog() const; // the last report, while it is open
 
 private:
     void buildFileMenu();
@@ -48,6 +60,7 @@ private:
     void buildHelpMenu();
     void showPlot();
     void compareWithFile();
+    void matchToReference();
     void buildToolbars();
     // The options as the widgets show them, and the widgets from the options.
     PreviewOptions optionsFromWidgets() const;
@@ -55,6 +68,9 @@ private:
     void applyWidgets();
 
     MainWindow* m_window;
+    BackgroundTask* m_compareTask;
+    std::shared_ptr<const Comparison> m_lastComparison;
+    QPointer<CompareDialog> m_compareDialog;
     // For the toolbars.
     QAction* m_openImage = nullptr;
     QAction* m_openLut = nullptr;

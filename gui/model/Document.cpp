@@ -10,6 +10,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
 #include "lut/ops/AdjustmentList.h"
+#include "lut/ops/Lattice.h"
 #include "lut/roundtrip/Extract.h"
 
 #include <QFile>
@@ -171,10 +172,25 @@ QStringList Document::openLut(const QString& path, const FormatOptions& options)
 
 QStringList Document::adoptLut(const LutFile& file, const QString& path,
                                std::optional<LutPurpose> answer) {
-    Lut3D lut = file.toLut3D();
     QStringList notes;
     for (const Diagnostic& d : file.diagnostics)
         notes << QString::fromStdString(d.str());
+    Lut3D lut;
+    if (file.shaper) {
+        // The editor works on one table: the shaper then the table sampled at its lattice over
+        // the shaper's range, with what that costs between lattice points (never silently).
+        LatticeResult r = sampleOnLattice(file);
+        r.error.seconds = 0.0;
+        notes << tr("%1: its 1D shaper and table taken as one %2^3 table over the shaper's range: "
+                    "%3 on %4 inputs between lattice points")
+                     .arg(path)
+                     .arg(r.lut.size())
+                     .arg(QString::fromStdString(r.error.str()))
+                     .arg(r.heldOut);
+        lut = std::move(r.lut);
+    } else {
+        lut = file.toLut3D();
+    }
     // What the file says first; the user's answer only where it says nothing.
     const PurposeDecision purpose =
         decidePurpose(file, file.purpose ? std::nullopt : answer, LutPurpose::Raw);

@@ -31,12 +31,14 @@ QString suggestedExportPath(const ExportNameInput& in) {
     };
 
     if (in.format == QLatin1String("nutexb")) {
+        // Every stage's LUT has this one name, so the folder is what matters: beside the opened
+        // LUT (its stage), never in the screenshot's folder while a LUT is open; when that file is
+        // the opened LUT, the documented "edited" folder beside it. A file there already (an
+        // earlier export) is replaced only after the question that names its full path.
         const QString name = QStringLiteral("color_grading_lut") + in.extension;
-        for (const QString& folder : folders) {
-            const QString path = QDir(folder).filePath(name);
-            if (!isOpened(path))
-                return path;
-        }
+        const QString beside = QDir(folders.front()).filePath(name);
+        if (!isOpened(beside))
+            return beside;
         return QDir(folders.front()).filePath(QStringLiteral("edited/") + name);
     }
     QString base = !in.lutPath.isEmpty()     ? QFileInfo(in.lutPath).completeBaseName()

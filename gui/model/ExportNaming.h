@@ -1,8 +1,10 @@
 #pragma once
 // The file the export dialog suggests, so an export never lands on a file the user has by
 // surprise: a new name in the LUT's folder (else the picture's), never the opened LUT or picture.
-//   Smash (.nutexb)   color_grading_lut.nutexb, the name the game loads; when that is the opened
-//                     LUT itself, the same name in an "edited" folder beside it;
+//   Smash (.nutexb)   color_grading_lut.nutexb, the name the game loads, beside the opened LUT
+//                     (else the picture), never in the picture's folder while a LUT is open;
+//                     when that is the opened LUT itself, the same name in an "edited" folder
+//                     beside it;
 //   any other format  <name>_<format>[_<layout>]<extension>, <name> the LUT's file name (else the
 //                     picture's, else "grade"): one name per format and layout, so flame and
 //                     lustre .3dl, or two strip layouts, never share a file.

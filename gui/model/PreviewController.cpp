@@ -13,6 +13,11 @@ PreviewController::PreviewController(QObject* parent)
 
 PreviewController::~PreviewController() = default;
 
+template <class T> void PreviewController::retire(std::shared_ptr<T>& p) {
+    m_worker->retire(std::move(p));
+    p.reset();
+}
+
 int PreviewController::proxyFactorFor(int width) {
     // At most ~1000 pixels wide: what a drag needs to feel live on a 1080p frame.
     return std::max(1, (width + 999) / 1000);
@@ -40,16 +45,18 @@ LutSource PreviewController::jobSource() const {
 void PreviewController::setImage(std::shared_ptr<const Image> stored, bool storedIsFloat) {
     if (stored == m_stored)
         return;
+    retire(m_stored);
     m_stored = std::move(stored);
     m_storedIsFloat = storedIsFloat;
-    m_scene.reset();
-    m_proxy.reset();
+    retire(m_scene);
+    retire(m_proxy);
     m_sceneKey = -1;
     m_before = QImage();
-    m_frame.reset();
-    m_beforeLutSource[0].reset();
-    m_beforeLutSource[1].reset();
+    retire(m_frame);
+    retire(m_beforeLutSource[0]);
+    retire(m_beforeLutSource[1]);
     m_sceneReady = false;
+    m_proxyReady = false;
     m_proxyFactor = m_stored ? proxyFactorFor(m_stored->width()) : 1;
     emit imageChanged();
     if (m_stored)
@@ -61,45 +68,79 @@ void PreviewController::setImage(std::shared_ptr<const Image> stored, bool store
 void PreviewController::requestScene() {
     m_sceneReady = false;
     const int key = scenePreparationKey(m_options);
-    if (m_options.input == SceneKind::Screenshot && m_before.isNull()) {
-        // A screenshot's before picture is the file itself: show it first, while the worker
-        // prepares the scene (a 4K frame takes a second on two cores). If the worker is busy,
-        // the scene request below replaces this one, and makes the picture itself.
-        m_worker->request([this, stored = m_stored]() -> PreviewWorker::Delivery {
-            QImage before = toDisplayImage(*stored);
-            return [this, stored, before] {
-                if (stored == m_stored && m_before.isNull()) {
-                    m_before = before;
-                    emit beforeReady(m_before);
-                }
-            };
-        });
-    }
     // The same preparation with other before options keeps the scene and its proxy.
     std::shared_ptr<const Image> reuse = key == m_sceneKey ? m_scene : nullptr;
     std::shared_ptr<const Image> reuseProxy = key == m_sceneKey ? m_proxy : nullptr;
+    const bool firstLook = !reuse && m_proxyFactor > 1;
+    if (!reuse) {
+        m_proxyReady = false;
+        if (firstLook)
+            requestFirstLook(key);
+    }
+    m_worker->request(
+        [this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options, key, reuse,
+         reuseProxy, firstLook, factor = m_proxyFactor]() -> PreviewWorker::Delivery {
+            std::shared_ptr<const Image> scene = reuse, proxy = reuseProxy;
+            QImage before;
+            try {
+                if (!scene)
+                    scene = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
+                // After a first look its proxy stays the proxy (onSceneReady).
+                if (!proxy && !firstLook)
+                    proxy = factor > 1 ? std::make_shared<const Image>(downscale(*scene, factor))
+                                       : scene;
+                if (options.input == SceneKind::Screenshot) {
+                    before = toDisplayImage(*stored); // a screenshot's before is the file
+                } else {
+                    const TargetLut neutral = makeTargetLut(LutSource{}, options.target);
+                    before = toDisplayImage(renderBefore(*stored, *scene, options, neutral.shown));
+                }
+            } catch (const std::exception&) {
+                // Out of memory: what can be shown is shown; the frames say what failed.
+                if (!scene)
+                    scene = stored;
+                if (!proxy && !firstLook)
+                    proxy = scene;
+            }
+            const PreviewOptions bo = beforeOptions(options);
+            return [this, stored, key, bo, scene, proxy, before] {
+                onSceneReady(stored, key, bo, scene, proxy, before);
+            };
+        },
+        PreviewWorker::Lane::Scene);
+}
+
+void PreviewController::requestFirstLook(int key) {
+    // A large picture's first look, before its full-resolution scene exists (a 4K screenshot's
+    // scene takes ~0.4 s of CPU): the proxy scene made from the picture reduced first, and a
+    // proxy-sized before picture, so the first graded frame is a proxy render away. The proxy
+    // stays; the full scene brings the full-resolution before picture.
     m_worker->request([this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options, key,
-                       reuse, reuseProxy, factor = m_proxyFactor]() -> PreviewWorker::Delivery {
-        std::shared_ptr<const Image> scene = reuse, proxy = reuseProxy;
+                       factor = m_proxyFactor]() -> PreviewWorker::Delivery {
+        std::shared_ptr<const Image> proxy;
         QImage before;
         try {
-            if (!scene)
-                scene = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
-            if (!proxy)
-                proxy =
-                    factor > 1 ? std::make_shared<const Image>(downscale(*scene, factor)) : scene;
-            const TargetLut neutral = makeTargetLut(LutSource{}, options.target);
-            before = toDisplayImage(renderBefore(*stored, *scene, options, neutral.shown));
+            const Image small = downscale(*stored, factor);
+            proxy = std::make_shared<const Image>(prepareScene(small, isFloat, options));
+            if (options.input == SceneKind::Screenshot) {
+                before = toDisplayImage(small);
+            } else {
+                const TargetLut neutral = makeTargetLut(LutSource{}, options.target);
+                before = toDisplayImage(renderBefore(small, *proxy, options, neutral.shown));
+            }
         } catch (const std::exception&) {
-            // Out of memory: what can be shown is shown; the frames say what failed.
-            if (!scene)
-                scene = stored;
-            if (!proxy)
-                proxy = scene;
+            return {}; // the full scene still comes, or says what failed
         }
-        const PreviewOptions bo = beforeOptions(options);
-        return [this, stored, key, bo, scene, proxy, before] {
-            onSceneReady(stored, key, bo, scene, proxy, before);
+        return [this, stored, key, proxy, before] {
+            if (stored != m_stored || key != scenePreparationKey(m_options) || m_sceneReady)
+                return; // replaced meanwhile, or the full scene came first
+            m_proxy = proxy;
+            m_proxyReady = true;
+            if (m_before.isNull() || m_before.size() == before.size()) {
+                m_before = before;
+                emit beforeReady(m_before);
+            }
+            requestPreview();
         };
     });
 }
@@ -113,17 +154,25 @@ void PreviewController::onSceneReady(const std::shared_ptr<const Image>& stored,
         !(before == beforeOptions(m_options)))
         return; // replaced meanwhile: a newer request is on its way
     if (scene != m_scene) {
-        m_beforeLutSource[0].reset();
-        m_beforeLutSource[1].reset();
+        retire(m_beforeLutSource[0]);
+        retire(m_beforeLutSource[1]);
     }
+    // A first look's proxy stays the proxy: its frame on screen stays current (no second proxy
+    // frame before the full one). Without one (it failed), the scene is its own proxy.
+    const std::shared_ptr<const Image> keptProxy =
+        proxy ? proxy : (m_proxyReady && m_proxy ? m_proxy : scene);
+    if (keptProxy != m_proxy)
+        retire(m_beforeLutSource[1]);
+    retire(m_scene);
     m_scene = scene;
-    m_proxy = proxy;
+    m_proxy = keptProxy;
     m_sceneKey = key;
     m_sceneBeforeOptions = before;
-    if (proxy == scene)
+    if (m_proxy == scene)
         m_proxyFactor = 1;
     m_before = beforeImage;
     m_sceneReady = true;
+    m_proxyReady = true;
     emit beforeReady(m_before);
     requestPreview();
 }
@@ -156,7 +205,7 @@ void PreviewController::setInteractive(bool on) {
 }
 
 bool PreviewController::isCurrent(const PreviewFrame& frame) const {
-    if (!m_sceneReady)
+    if (frame.proxyFactor > 1 ? !m_proxyReady : !m_sceneReady)
         return false;
     const auto& scene = frame.proxyFactor > 1 ? m_proxy : m_scene;
     return frame.scene && frame.scene == scene && frame.source == jobSource() &&
@@ -182,7 +231,7 @@ PreviewController::cachedBeforeLut(const std::shared_ptr<const Image>& scene,
 
 PreviewJob PreviewController::makeJob(bool proxy) const {
     PreviewJob j;
-    if (m_stored && m_sceneReady) {
+    if (m_stored && (proxy ? m_proxyReady : m_sceneReady)) {
         j.scene = proxy ? m_proxy : m_scene;
         j.proxyFactor = proxy ? m_proxyFactor : 1;
         j.beforeLut = cachedBeforeLut(j.scene, m_options);
@@ -207,8 +256,13 @@ void PreviewController::requestPreview() {
             submit(makeJob(false)); // no picture: the export alone (clipping count, LUT dock)
         return;
     }
-    if (!m_sceneReady)
-        return; // the scene's delivery asks for the first frames
+    if (!m_sceneReady) {
+        // Only the first look of a large picture: its proxy frame (the scene's delivery asks for
+        // the full frame).
+        if (m_proxyReady && !(m_frame && m_frame->proxyFactor > 1 && isCurrent(*m_frame)))
+            submit(makeJob(true));
+        return;
+    }
     // The proxy first, so a change shows within a proxy render (unless the proxy of this very
     // state is on screen: a slider released where the last drag frame was); then, unless a
     // slider is still held, the full frame, which a newer request may replace before it starts.
@@ -227,12 +281,16 @@ void PreviewController::onFrame(const std::shared_ptr<const PreviewFrame>& frame
         m_targetKind = frame->options.target;
         emit targetLutChanged(m_target);
     }
-    if (!frame->scene || !m_sceneReady || (frame->scene != m_scene && frame->scene != m_proxy))
+    if (!frame->scene || !(m_sceneReady || m_proxyReady) ||
+        (frame->scene != m_scene && frame->scene != m_proxy))
         return; // no picture, or made for an image or scene that was replaced meanwhile
     if (frame->error.isEmpty()) {
+        retire(m_frame);
         m_frame = frame;
-        if (frame->beforeLut && !frame->reusedBeforeLut)
+        if (frame->beforeLut && !frame->reusedBeforeLut) {
+            retire(m_beforeLutSource[frame->proxyFactor > 1 ? 1 : 0]);
             m_beforeLutSource[frame->proxyFactor > 1 ? 1 : 0] = frame;
+        }
         if (frame->proxyFactor == 1) {
             m_times.append(frame->totalMilliseconds);
             if (m_times.size() > 1000)
@@ -269,21 +327,35 @@ void PreviewController::waitForFullResolution() {
     }
 }
 
-Image PreviewController::renderFullResolution() const {
+bool PreviewController::hasFullResolutionFrame() const {
+    return m_frame && m_frame->proxyFactor == 1 && isCurrent(*m_frame);
+}
+
+std::function<Image(const Progress&)> PreviewController::fullResolutionRenderer() const {
     if (!m_stored)
-        return {};
-    if (m_frame && m_frame->proxyFactor == 1 && isCurrent(*m_frame))
-        return m_frame->image;
+        return [](const Progress&) { return Image(); };
+    if (hasFullResolutionFrame())
+        return [frame = m_frame](const Progress&) { return frame->image; };
     std::shared_ptr<const Image> scene = m_sceneReady ? m_scene : nullptr;
-    if (!scene)
-        scene = std::make_shared<const Image>(prepareScene(*m_stored, m_storedIsFloat, m_options));
-    auto beforeLut = scene == m_scene ? cachedBeforeLut(scene, m_options) : nullptr;
-    if (!beforeLut)
-        beforeLut = std::make_shared<const Image>(renderBeforeLut(*scene, m_options));
-    auto target = targetLut();
-    if (!target)
-        target = std::make_shared<const TargetLut>(makeTargetLut(jobSource(), m_options.target));
-    return renderFromLut(*beforeLut, m_options, target->shown).image;
+    std::shared_ptr<const Image> beforeLut = scene ? cachedBeforeLut(scene, m_options) : nullptr;
+    return [stored = m_stored, isFloat = m_storedIsFloat, options = m_options, scene, beforeLut,
+            target = targetLut(), source = jobSource()](const Progress& progress) {
+        std::shared_ptr<const Image> s = scene, b = beforeLut;
+        if (!s)
+            s = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
+        progress.check("preview");
+        if (!b)
+            b = std::make_shared<const Image>(renderBeforeLut(*s, options));
+        progress.check("preview");
+        auto t = target ? target
+                        : std::make_shared<const TargetLut>(makeTargetLut(source, options.target));
+        progress.check("preview");
+        return renderFromLut(*b, options, t->shown).image;
+    };
+}
+
+Image PreviewController::renderFullResolution() const {
+    return fullResolutionRenderer()(Progress());
 }
 
 } // namespace lut::gui

@@ -8,6 +8,12 @@
 // prepares the scene (PreviewRenderer.h: ungrade, decode...), its proxy (lut::downscale, at most
 // ~1000 px wide) and the "before" picture; then each change renders on the worker, the proxy
 // first unless the worker is busy, then (unless a slider is held) the full-resolution frame. A
+// picture larger than its proxy gets a first look before that: the picture reduced, then
+// prepared, gives a proxy scene and a proxy-sized before picture within a few tens of ms (a 4K
+// screenshot's full scene takes ~0.4 s of CPU), so the first graded frame is a proxy render
+// away. That proxy stays the proxy (for a linear scene it is the full scene reduced, bit for bit;
+// for a screenshot the reduction comes before the ungrading); the full scene and before picture
+// follow. A
 // render first makes the target's export of the document (ExportTarget.h, cached while the
 // document and target stay), then the pipeline; the stages before the LUT are cached per scene
 // (full and proxy) and reused while lut::Pipeline::sameBeforeLut says they still apply, so a LUT
@@ -15,11 +21,14 @@
 #include "PreviewFrame.h"
 #include "PreviewRenderer.h"
 
+#include "lut/Progress.h"
+
 #include <QImage>
 #include <QList>
 #include <QObject>
 #include <QSize>
 
+#include <functional>
 #include <memory>
 
 namespace lut::gui {
@@ -77,6 +86,12 @@ public:
     // current frame's image when it is that, else rendered on the calling thread (with the
     // caches when they apply). Empty without an image.
     Image renderFullResolution() const;
+    // The same as a function that may run on any thread (it holds what it needs, so the
+    // controller may change meanwhile): the current frame's image when it is that, else a render
+    // that checks `progress` between its steps (lut::CancelledError). Empty without an image.
+    std::function<Image(const Progress& progress)> fullResolutionRenderer() const;
+    // Whether the current frame already is the full-resolution preview (nothing to render).
+    bool hasFullResolutionFrame() const;
 
 signals:
     void imageChanged(); // a new image (imageSize(); empty: no image)
@@ -89,7 +104,10 @@ signals:
 
 private:
     LutSource jobSource() const; // the document's source, or neutral when the LUT is off
+    // Lets go of a large frame, scene or picture: freed on the worker (PreviewWorker::retire).
+    template <class T> void retire(std::shared_ptr<T>& p);
     void requestScene();
+    void requestFirstLook(int key);
     void onSceneReady(const std::shared_ptr<const Image>& stored, int key,
                       const PreviewOptions& beforeOptions,
                       const std::shared_ptr<const Image>& scene,
@@ -114,6 +132,7 @@ private:
     PreviewOptions m_sceneBeforeOptions;
     int m_proxyFactor = 1;
     bool m_sceneReady = false; // the worker delivered the scene for the current options
+    bool m_proxyReady = false; // ... or at least its proxy (a large picture's first look)
     bool m_interactive = false;
     QImage m_before;
     std::shared_ptr<const PreviewFrame> m_frame;

@@ -16,7 +16,31 @@ inline int luma8(int r, int g, int b) {
     return (54 * r + 183 * g + 19 * b + 128) >> 8;
 }
 
+// Brightness of a count relative to `norm` (log scale, so sparse levels show), 0 for none.
+inline int countBrightness(std::uint32_t n, double norm, int floor) {
+    return n ? std::clamp(static_cast<int>(255 * std::log1p(double(n)) / norm), floor, 255) : 0;
+}
+
 } // namespace
+
+int waveformLevel(int r, int g, int b) {
+    return (13933 * r + 46871 * g + 4732 * b + 32768) >> 16;
+}
+
+int vectorscopeCell(int r, int g, int b) {
+    const int u = -7509 * r - 25259 * g + 32768 * b; // 255 * 65536 * Cb
+    const int v = 32768 * r - 29763 * g - 3005 * b;  // 255 * 65536 * Cr
+    const int col = std::min(kVectorscopeSize - 1, (u + 8355840) / 65280);
+    const int row = kVectorscopeSize - 1 - std::min(kVectorscopeSize - 1, (v + 8355840) / 65280);
+    return row * kVectorscopeSize + col;
+}
+
+void vectorscopeCbCr(int r, int g, int b, double* cb, double* cr) {
+    const double rp = r / 255.0, gp = g / 255.0, bp = b / 255.0;
+    const double y = 0.2126 * rp + 0.7152 * gp + 0.0722 * bp;
+    *cb = (bp - y) / 1.8556;
+    *cr = (rp - y) / 1.5748;
+}
 
 Scopes computeScopes(const QImage& display, int columns) {
     Scopes s;
@@ -29,15 +53,21 @@ Scopes computeScopes(const QImage& display, int columns) {
         columnOf[static_cast<std::size_t>(x)] =
             static_cast<int>(static_cast<long long>(x) * columns / w);
     const std::size_t countSize = static_cast<std::size_t>(3) * columns * 256;
-    // counts[channel][column][level]. The threads split the picture into bands of whole parade
-    // columns, so each count has one writer; the histograms are summed at the end.
+    // counts[channel][column][level], and the waveform's [column][level]. The threads split the
+    // picture into bands of whole parade columns, so each count has one writer; the histograms
+    // and the vectorscope are summed at the end.
     std::vector<std::uint32_t> counts(countSize, 0);
+    s.columns = columns;
+    s.waveform.assign(static_cast<std::size_t>(columns) * 256, 0);
+    constexpr std::size_t kCells = std::size_t(kVectorscopeSize) * kVectorscopeSize;
+    s.vectorscope.assign(kCells, 0);
     std::vector<int> firstX(static_cast<std::size_t>(columns) + 1, w);
     for (int x = w - 1; x >= 0; --x)
         firstX[static_cast<std::size_t>(columnOf[static_cast<std::size_t>(x)])] = x;
     std::mutex merge;
     parallelFor(columns, 0, [&](int c0, int c1) {
         std::array<std::array<std::uint32_t, 256>, 4> hist{};
+        std::vector<std::uint32_t> vector(kCells, 0);
         std::uint64_t high = 0, low = 0;
         const int x0 = firstX[static_cast<std::size_t>(c0)];
         const int x1 = firstX[static_cast<std::size_t>(c1)];
@@ -52,6 +82,8 @@ Scopes computeScopes(const QImage& display, int columns) {
                 ++counts[col * 256 + p[0]];
                 ++counts[(columns + col) * 256 + p[1]];
                 ++counts[(2 * static_cast<std::size_t>(columns) + col) * 256 + p[2]];
+                ++s.waveform[col * 256 + static_cast<std::size_t>(waveformLevel(p[0], p[1], p[2]))];
+                ++vector[static_cast<std::size_t>(vectorscopeCell(p[0], p[1], p[2]))];
                 high += p[0] == 255 || p[1] == 255 || p[2] == 255;
                 low += p[0] == 0 || p[1] == 0 || p[2] == 0;
             }
@@ -62,6 +94,8 @@ Scopes computeScopes(const QImage& display, int columns) {
                 s.histogram[c][i] += hist[c][i];
         s.clippedHigh += high;
         s.clippedLow += low;
+        for (std::size_t i = 0; i < kCells; ++i)
+            s.vectorscope[i] += vector[i];
     });
     s.pixels = static_cast<std::uint64_t>(w) * h;
     // Brightness ~ log of the count relative to a column's full height, so sparse levels show.
@@ -83,6 +117,43 @@ Scopes computeScopes(const QImage& display, int columns) {
                                          : c == 1 ? qRgb(v / 5, v, v / 5)
                                                   : qRgb(v / 4, v / 4, v);
             }
+    }
+    // The waveform in the colour of a waveform monitor's trace.
+    s.waveformImage = QImage(columns, 256, QImage::Format_RGB32);
+    s.waveformImage.fill(Qt::black);
+    for (int level = 0; level < 256; ++level) {
+        auto* row = reinterpret_cast<QRgb*>(s.waveformImage.scanLine(255 - level));
+        for (int col = 0; col < columns; ++col) {
+            const int v = countBrightness(
+                s.waveform[static_cast<std::size_t>(col) * 256 + static_cast<std::size_t>(level)],
+                norm, 40);
+            if (v)
+                row[col] = qRgb(v * 3 / 4, v, v * 3 / 4);
+        }
+    }
+    // The vectorscope: each occupied cell in its own hue (the hue of its Cb, Cr direction).
+    const int n = kVectorscopeSize;
+    const double perCell = std::max(1.0, double(h) * w / (n * n / 8.0));
+    const double vnorm = std::log1p(perCell);
+    s.vectorscopeImage = QImage(n, n, QImage::Format_RGB32);
+    s.vectorscopeImage.fill(Qt::black);
+    for (int row = 0; row < n; ++row) {
+        auto* line = reinterpret_cast<QRgb*>(s.vectorscopeImage.scanLine(row));
+        for (int col = 0; col < n; ++col) {
+            const std::uint32_t count = s.vectorscope[static_cast<std::size_t>(row) * n + col];
+            if (!count)
+                continue;
+            const int v = countBrightness(count, vnorm, 70);
+            // The colour of this direction: Y' 0.5 with the cell's Cb and Cr, back to R'G'B'.
+            const double cb = (col + 0.5) / n - 0.5, cr = (n - 1 - row + 0.5) / n - 0.5;
+            const double r = 0.5 + 1.5748 * cr, b = 0.5 + 1.8556 * cb;
+            const double g = (0.5 - 0.2126 * r - 0.0722 * b) / 0.7152;
+            auto ch = [v](double c) {
+                return std::clamp(static_cast<int>(v * (0.35 + 0.65 * std::clamp(c, 0.0, 1.0))), 0,
+                                  255);
+            };
+            line[col] = qRgb(ch(r), ch(g), ch(b));
+        }
     }
     return s;
 }

@@ -23,6 +23,7 @@ inline cli::RunHooks stubHooks() {
     h.embed = [](const cli::EmbedOptions&) { return 0; };
     h.extract = [](const cli::ExtractOptions&) { return 0; };
     h.fit = [](const cli::FitOptions&) { return 0; };
+    h.match = [](const cli::MatchCommandOptions&) { return 0; };
     h.bench = [](const cli::BenchOptions&) { return 0; };
     h.bake = [](const cli::BakeCommandOptions&) { return 0; };
     h.diff = [](const cli::DiffCommandOptions&) { return 0; };

@@ -76,8 +76,8 @@ TEST(Bake, SameAsOciobakelutOnChainsAtTheCubeSizeAskedFor) {
         GTEST_SKIP() << "ociobakelut is not installed";
     const std::string dir = workDir();
     // The files: convert --size 33 differed from ociobakelut --cubesize 33 by up to 1.0.
-    for (const char* name :
-         {"multiple_ops.clf", "nuke_3d.vf", "lut1d_lut3d_lut1d.clf", "unknown_elements.clf"}) {
+    for (const char* name : {"clf/multiple_ops.clf", "nuke_3d.vf", "clf/lut1d_lut3d_lut1d.clf",
+                             "clf/illegal/unknown_elements.clf"}) {
         SCOPED_TRACE(name);
         const std::string src = corpusPath(name);
         const std::string theirs = dir + "/ocio.cube", converted = dir + "/conv.cube",
@@ -121,7 +121,7 @@ TEST(Bake, ReportedErrorIsTheFileAgainstTheProcessorBetweenLatticePoints) {
     // The bake's probes: 2N - 1 per axis over the table's domain, i.e. every lattice point and
     // every cell centre. The same grid measured here with OCIO reading the written file.
     const std::string dir = workDir();
-    const std::string src = corpusPath("multiple_ops.clf"), out = dir + "/m.cube";
+    const std::string src = corpusPath("clf/multiple_ops.clf"), out = dir + "/m.cube";
     const auto r = runCli("bake --lut " + q(src) + " --cubesize 9 --json " + q(out));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto e = r.out.find("\"error\": ");

@@ -109,9 +109,9 @@ TEST(Vocabulary, EveryCommandIsInTheTable) {
     for (const auto& c : p.commands)
         names.push_back(c.name);
     EXPECT_EQ(names, (std::vector<std::string>{
-                         "neutral", "convert", "info",  "validate", "apply",  "preview", "embed",
-                         "extract", "fit",     "bench", "bake",     "diff",   "compose", "invert",
-                         "resize",  "smooth",  "mix",   "plot",     "adjust", "help"}));
+                         "neutral", "convert", "info",   "validate", "apply", "preview", "embed",
+                         "extract", "fit",     "match",  "bench",    "bake",  "diff",    "compose",
+                         "invert",  "resize",  "smooth", "mix",      "plot",  "adjust",  "help"}));
 }
 
 TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {

@@ -102,7 +102,8 @@ INSTANTIATE_TEST_SUITE_P(Files, OcioCorpus, ::testing::ValuesIn(ocioCorpus()),
 TEST(OcioCorpusRead, ChainsAreSampledThroughTheWholeProcessor) {
     // Each of these holds a small table inside a chain: reading used to sample on that table's
     // 2^3 or 3^3 lattice ("size 2^3") and resampling to 33 differed from OCIO by up to 1.0.
-    for (const char* name : {"multiple_ops.clf", "lut1d_lut3d_lut1d.clf", "unknown_elements.clf"}) {
+    for (const char* name : {"clf/multiple_ops.clf", "clf/lut1d_lut3d_lut1d.clf",
+                             "clf/illegal/unknown_elements.clf"}) {
         SCOPED_TRACE(name);
         const std::string path = corpusPath(name);
         const auto source = ocioFileProcessor(path);
@@ -134,7 +135,7 @@ TEST(OcioCorpusRead, ChainsAreSampledThroughTheWholeProcessor) {
 
 TEST(OcioCorpusRead, FilesOfOneShapeAreReadExactly) {
     // A 17^3 table: read at its own size, no sampling note.
-    const lut::LutFile t = lut::formats::readLut(corpusPath("lut3d_17x17x17_10i_12i.clf"));
+    const lut::LutFile t = lut::formats::readLut(corpusPath("clf/lut3d_17x17x17_10i_12i.clf"));
     ASSERT_TRUE(t.cube);
     EXPECT_EQ(t.cube->size(), 17);
     for (const auto& d : t.diagnostics)
@@ -188,7 +189,7 @@ TEST(OcioCorpusBake, PerChannelConversionsBecomeOneDimensionalTables) {
     // A 1D table holds a conversion without crosstalk exactly at its entries: each coordinate of
     // the grid below is an entry of the 4096-entry table (4095 = 5 * 819).
     const std::string dir = workDir();
-    for (const char* name : {"lut1d_1.spi1d", "log_all_styles.clf", "cdl_test_ASC_SAT.cc"}) {
+    for (const char* name : {"lut1d_1.spi1d", "clf/log_all_styles.clf", "cdl_test_ASC_SAT.cc"}) {
         SCOPED_TRACE(name);
         const std::string src = corpusPath(name), out = dir + "/curves.cube";
         lut::formats::BakeOptions o;

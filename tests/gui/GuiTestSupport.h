@@ -1,10 +1,16 @@
 #pragma once
-// Shared bits of the editor tests: sample paths and the float64 reference for an exposure edit.
+// Shared bits of the editor tests: sample paths, the float64 reference for an exposure edit, a
+// tiny PNG that holds a huge picture.
 #include "lut/Lut3D.h"
 
+#include <QByteArray>
+#include <QFile>
 #include <QString>
 
+#include <zlib.h>
+
 #include <cmath>
+#include <vector>
 
 namespace lut::gui::test {
 
@@ -17,6 +23,50 @@ inline QString samplePath(const char* name) {
 inline double exposureRef(double e, double stops) {
     const double lin = (e < 0 ? -std::pow(-e, 2.2) : std::pow(e, 2.2)) * std::pow(2.0, stops);
     return lin < 0 ? -std::pow(-lin, 1 / 2.2) : std::pow(lin, 1 / 2.2);
+}
+
+// An RGB PNG of w x h black pixels (tests that use it link ZLIB::ZLIB): every row is a filter byte
+// and zeros, so deflate packs it ~1000:1 (8192x8192 is ~200 KB holding 201 MB of samples, a 1 GB
+// float frame when read).
+inline bool writeBlackPng(const QString& path, int w, int h) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        return false;
+    auto be32 = [](quint32 v) {
+        const char b[4] = {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+        return QByteArray(b, 4);
+    };
+    auto chunk = [&](const char* type, const QByteArray& data) {
+        QByteArray body = QByteArray(type, 4) + data;
+        f.write(be32(quint32(data.size())));
+        f.write(body);
+        f.write(be32(quint32(
+            crc32(0, reinterpret_cast<const Bytef*>(body.constData()), uInt(body.size())))));
+    };
+    f.write("\x89PNG\r\n\x1a\n", 8);
+    chunk("IHDR", be32(quint32(w)) + be32(quint32(h)) + QByteArray("\x08\x02\x00\x00\x00", 5));
+    z_stream z{};
+    if (deflateInit(&z, 9) != Z_OK)
+        return false;
+    const std::vector<unsigned char> row(static_cast<std::size_t>(w) * 3 + 1, 0);
+    QByteArray idat;
+    std::vector<unsigned char> out(1 << 16);
+    for (int y = 0; y <= h; ++y) {
+        z.next_in = const_cast<Bytef*>(row.data());
+        z.avail_in = y < h ? uInt(row.size()) : 0;
+        const int flush = y < h ? Z_NO_FLUSH : Z_FINISH;
+        do {
+            z.next_out = out.data();
+            z.avail_out = uInt(out.size());
+            deflate(&z, flush);
+            idat.append(reinterpret_cast<const char*>(out.data()),
+                        qsizetype(out.size() - z.avail_out));
+        } while (z.avail_out == 0);
+    }
+    deflateEnd(&z);
+    chunk("IDAT", idat);
+    chunk("IEND", {});
+    return f.error() == QFile::NoError;
 }
 
 // Largest |a - b| over every channel of two LUTs of the same size (infinity if sizes differ).

@@ -8,6 +8,7 @@
 //     screenshot are written.
 #include "GuiTestSupport.h"
 
+#include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 
@@ -240,6 +241,118 @@ private slots:
         QVERIFY2(version.out.startsWith(QStringLiteral("lutkit-editor ")), qPrintable(version.out));
         const Run bad = run(QStringLiteral(LUTKIT_EDITOR), {"--no-such-option"}, env);
         QCOMPARE(bad.code, 2);
+    }
+
+    void helpAllAndBadOptionValuesExitTwoWithoutADisplay() {
+        // Issue 28: --help-all and a bad option value aborted (exit 134) looking for a display.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+        const Run all = run(QStringLiteral(LUTKIT_EDITOR), {"--help-all"}, env);
+        QCOMPARE(all.code, 0);
+        QVERIFY2(all.out.contains(QStringLiteral("Usage: lutkit-editor")), qPrintable(all.err));
+        const QList<QStringList> bad = {
+            {"--preset", "sepia"},    {"--target", "xbox"},      {"--interp", "cubic"},
+            {"--input", "photo"},     {"--view", "sideways"},    {"--zoom", "big"},
+            {"--zoom", "-5"},         {"--window-size", "huge"}, {"--window-size", "0x0"},
+            {"--adjust", "exposure"}, {"--adjust", "warmth=1"},  {"a.png", "b.cube", "c.png"}};
+        for (const QStringList& args : bad) {
+            const Run r = run(QStringLiteral(LUTKIT_EDITOR), args, env);
+            QVERIFY2(r.code == 2, qPrintable(args.join(' ') + ": exit " + QString::number(r.code) +
+                                             " " + r.err));
+            // One line saying what is wrong, naming the value, then where to look.
+            const QStringList lines = r.err.trimmed().split('\n');
+            QCOMPARE(lines.size(), 2);
+            QVERIFY2(lines[0].startsWith(QStringLiteral("lutkit-editor: ")) &&
+                         lines[0].contains(args.size() == 3 ? QStringLiteral("3 files")
+                                                            : args.last().section('=', 0, 0)),
+                     qPrintable(lines[0]));
+            QCOMPARE(lines[1], QStringLiteral("Run 'lutkit-editor --help' for usage."));
+        }
+    }
+
+    void theSecondPassInARealWindowUnderXvfb() {
+        // Issue 28 under a real X server, scripted: the long tasks run with progress and Cancel
+        // while a repaint probe in the window sees no stall, a huge picture's decoding is
+        // cancelled, the hue ranges and Ctrl+= work.
+        const QString xvfb = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
+        if (xvfb.isEmpty())
+            QSKIP("xvfb-run is not installed");
+        QTemporaryDir dir;
+        const QString grade = dir.filePath("grade.cube");
+        QVERIFY(QFile::copy(samplePath("sample_grade.cube"), grade));
+        const QString shot = dir.filePath("shot.png");
+        {
+            Image img(1920, 1080);
+            for (int y = 0; y < 1080; ++y)
+                for (int x = 0; x < 1920; ++x) {
+                    float* p = img.pixel(x, y);
+                    p[0] = float((x * 255) / 1919) / 255.0f;
+                    p[1] = float((y * 255) / 1079) / 255.0f;
+                    p[2] = float(((x ^ y) * 7) & 255) / 255.0f;
+                    p[3] = 1.0f;
+                }
+            formats::writeImage(shot.toStdString(), img,
+                                formats::ImageWriteOptions(8, false, false));
+        }
+        const QString huge = dir.filePath("huge.png");
+        QVERIFY(lut::gui::test::writeBlackPng(huge, 8192, 8192));
+        const QString preview = dir.filePath("preview.png");
+        const QString script =
+            writeScript(dir, "pass2.txt",
+                        {"open-image " + shot, "open-lut " + grade, "wait",
+                         // Tools > Compare: on a worker, the window painting all along.
+                         "probe on", "start-compare " + grade, "print task:compare",
+                         "wait-task compare", "probe off", "print task:compare",
+                         // File > Save Preview Image: the same.
+                         "probe on", "start-save-preview " + preview, "wait-task save-preview",
+                         "probe off", "print task:save-preview",
+                         // A 200 KB file holding 8192x8192 pixels: decoding, then cancelled.
+                         "probe on", "start-open-image " + huge, "sleep 150", "print task:load",
+                         "cancel load", "print task:load", "sleep 100", "probe off", "print title",
+                         // Hue vs Sat, the yellows down: one point and its range.
+                         "hue-range hue.sat yellows -0.5", "print curve:hue.sat",
+                         // Ctrl+= zooms in.
+                         "focus curveEditor", "print zoom", "key ctrl+=", "print zoom"});
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+        const Run r = run(xvfb,
+                          {"-a", "-s", "-screen 0 1600x1000x24", QStringLiteral(LUTKIT_EDITOR),
+                           "--script", script},
+                          env);
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        qInfo("%s", qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("task:compare busy")), qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("task:compare idle done")));
+        QVERIFY(r.out.contains(QStringLiteral("task:save-preview idle done")));
+        QVERIFY(QFileInfo::exists(preview));
+        QVERIFY2(r.out.contains(QStringLiteral("task:load busy")), qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("task:load idle")));
+        QVERIFY2(r.out.contains(QStringLiteral("title grade.cube[*] — shot.png")),
+                 qPrintable(r.out));
+        // Every probe: the window's own longest gap under 100 ms.
+        const auto probes =
+            QRegularExpression(QStringLiteral("probe longest-gap ([0-9.]+) ms own ([0-9.]+) ms"))
+                .globalMatch(r.out);
+        int count = 0;
+        for (auto it = probes; it.hasNext();) {
+            const auto m = it.next();
+            ++count;
+            QVERIFY2(m.captured(2).toDouble() < 100.0 && m.captured(1).toDouble() < 1000.0,
+                     qPrintable(m.captured(0)));
+        }
+        QCOMPARE(count, 3);
+        // Yellows down, with neutral anchors at red and green.
+        QVERIFY2(r.out.contains(QStringLiteral("curve:hue.sat 0,0 60,-0.5 120,0")),
+                 qPrintable(r.out));
+        const auto zooms =
+            QRegularExpression(QStringLiteral("zoom ([0-9.]+) %")).globalMatch(r.out);
+        QList<double> z;
+        for (auto it = zooms; it.hasNext();)
+            z << it.next().captured(1).toDouble();
+        QCOMPARE(z.size(), 2);
+        QVERIFY2(std::abs(z[1] / z[0] - 1.25) < 0.01, qPrintable(r.out));
     }
 
     void aRealWindowUnderXvfb() {

@@ -123,8 +123,8 @@ private slots:
             onNextDialog<QMessageBox>([&](QMessageBox* box) {
                 question = box->text();
                 QTest::keyClick(box, Qt::Key_Return);
-                // The export then reports that nothing was replaced.
-                onNextDialog<QMessageBox>([](QMessageBox* err) { err->accept(); });
+                // Keeping the file returns to the export dialog (issue 28): cancel it there.
+                onNextDialog<ExportDialog>([](ExportDialog* again) { again->reject(); });
             });
             QTest::keyClick(d, Qt::Key_Return);
         });
@@ -141,7 +141,7 @@ private slots:
             onNextDialog<QMessageBox>([&](QMessageBox* box) {
                 question = box->text();
                 QTest::keyClick(box, Qt::Key_Escape);
-                onNextDialog<QMessageBox>([](QMessageBox* err) { err->accept(); });
+                onNextDialog<ExportDialog>([](ExportDialog* again) { again->reject(); });
             });
             QTest::keyClick(d, Qt::Key_Return);
         });
@@ -284,10 +284,10 @@ private slots:
         // Returned before the file was read: the window goes on, the indicator shows.
         QVERIFY(!w.document()->hasImage());
         QVERIFY(w.isLoading());
-        QVERIFY(w.findChild<QProgressBar*>(QStringLiteral("loading"))->isVisible());
+        QVERIFY(w.findChild<QProgressBar*>(QStringLiteral("loading.bar"))->isVisibleTo(&w));
         w.waitForLoads();
         QVERIFY(w.document()->hasImage());
-        QVERIFY(!w.findChild<QProgressBar*>(QStringLiteral("loading"))->isVisible());
+        QVERIFY(!w.findChild<QProgressBar*>(QStringLiteral("loading.bar"))->isVisibleTo(&w));
         QCOMPARE(w.previewOptions().input, SceneKind::Scene);
     }
 

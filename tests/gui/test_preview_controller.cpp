@@ -98,7 +98,9 @@ private slots:
         QVERIFY(c.beforeImage().isNull());
         QVERIFY(c.isBusy());
         c.waitForIdle();
-        QCOMPARE(before.count(), 1);
+        // A first look's proxy-sized before picture may come first (PreviewController.h), then
+        // the full one.
+        QVERIFY(before.count() >= 1 && before.count() <= 2);
         QCOMPARE(c.proxyFactor(), 3);
 
         // Before: the scene through the same chain with the neutral LUT, 8-bit.
@@ -225,7 +227,8 @@ private slots:
         c.setImage(a, true);
         c.setImage(b, true); // before the worker delivered anything for a
         c.waitForIdle();
-        QCOMPARE(before.count(), 1);
+        QVERIFY(before.count() >= 1 && before.count() <= 2); // b's first look, b's picture
+        QCOMPARE(c.beforeImage().size(), QSize(1500, 80));
         QCOMPARE(c.storedImage(), b);
         for (const auto& f : log.frames)
             QVERIFY(f->scene == c.scene() || f->scene == c.proxyScene());

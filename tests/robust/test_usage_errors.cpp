@@ -49,6 +49,7 @@ TEST(UsageErrors, AnUnknownValueExitsTwoInEveryCommand) {
         {"embed", "embed -y " + d + "img.png' " + d + "e2.png'"},
         {"extract", "extract -y " + d + "e.png' " + d + "x.cube'"},
         {"fit", "fit -y " + d + "img.png' " + d + "img.png' " + d + "f.cube' --size 3"},
+        {"match", "match -y " + d + "img.png' " + d + "img.png' " + d + "m.cube' --size 3"},
         {"bench", "bench --width 8 --height 1 --reps 1 --sizes 2 --no-ocio"},
         {"bake", "bake -y --inputspace ACEScg --outputspace sRGB --cubesize 5 " + d + "b.cube'"},
         {"diff", "diff " + d + "a.cube' " + d + "a.cube'"},

@@ -39,7 +39,7 @@ struct CorpusFile {
 
 inline std::vector<CorpusFile> ocioCorpus() {
     return {{"camera_to_aces.spimtx", ""},
-            {"cdl_all_styles.clf", ""},
+            {"clf/cdl_all_styles.clf", ""},
             {"cdl_test1.cc", ""},
             {"cdl_test1.ccc", "cc0003"},
             {"cdl_test1.cdl", "cc0002"},
@@ -47,7 +47,7 @@ inline std::vector<CorpusFile> ocioCorpus() {
             {"crosstalk.3dl", ""},
             {"difficult_test1_v1.ctf", ""},
             {"discreet-3d-lut.3dl", ""},
-            {"exponent_all_styles.clf", ""},
+            {"clf/exponent_all_styles.clf", ""},
             {"exposure_contrast_log.ctf", ""},
             {"fixed_function.ctf", ""},
             {"gamma_test1.ctf", ""},
@@ -55,25 +55,25 @@ inline std::vector<CorpusFile> ocioCorpus() {
             {"icc-test-1.icc", ""},
             {"icc-test-3.icm", ""},
             {"iridas_3d.itx", ""},
-            {"log_all_styles.clf", ""},
+            {"clf/log_all_styles.clf", ""},
             {"logtolin_8to8.lut", ""},
             {"lut1d_1.spi1d", ""},
-            {"lut1d_example.clf", ""},
+            {"clf/lut1d_example.clf", ""},
             {"lut1d_inv.ctf", ""},
-            {"lut1d_lut3d_lut1d.clf", ""},
-            {"lut3d_17x17x17_10i_12i.clf", ""},
+            {"clf/lut1d_lut3d_lut1d.clf", ""},
+            {"clf/lut3d_17x17x17_10i_12i.clf", ""},
             {"lut3d_arbitrary.csp", ""},
-            {"lut3d_bizarre.clf", ""},
+            {"clf/lut3d_bizarre.clf", ""},
             {"lut3d_bizarre.spi3d", ""},
             {"lut3d_example_Inv.ctf", ""},
-            {"matrix_3x4_example.clf", ""},
-            {"multiple_ops.clf", ""},
+            {"clf/matrix_3x4_example.clf", ""},
+            {"clf/multiple_ops.clf", ""},
             {"nuke_3d.vf", ""},
             {"pandora_3d.m3d", ""},
-            {"range_test1_noclamp.clf", ""},
+            {"clf/range_test1_noclamp.clf", ""},
             {"resolve_1d3d.cube", ""},
-            {"unknown_elements.clf", ""},
-            {"xyz_to_rgb.clf", ""}};
+            {"clf/illegal/unknown_elements.clf", ""},
+            {"clf/xyz_to_rgb.clf", ""}};
 }
 
 inline std::string corpusPath(const std::string& name) {

@@ -203,6 +203,22 @@ void CubeParser::setDomains(LutFile& file) {
     file.purpose = m_purpose;
 }
 
+void CubeParser::checkHeader() {
+    checkEncoding(m_reader.rest(), path());
+    TextLine line;
+    while (m_reader.next(line)) {
+        const char* e = line.text.data() + line.text.size();
+        const char* s = skipSpace(line.text.data(), e);
+        if (s == e || *s == '#')
+            continue;
+        if (!isKeywordLine(s, e)) {
+            finishHeader(&line, s);
+            return;
+        }
+        keyword(line, s, e);
+    }
+}
+
 LutFile CubeParser::parse() {
     checkEncoding(m_reader.rest(), path());
     if (m_reader.hasBom())

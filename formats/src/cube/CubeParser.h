@@ -63,6 +63,12 @@ namespace lut::formats::cube {
 // only, at most lut::limits::kMaxLutFileBytes, refused if the file changes while it is read).
 FileBytes readCubeFile(const std::string& path);
 
+// The header of a regular file larger than its first kHeaderPrefixBytes, checked from those
+// bytes alone (CubeParser::checkHeader): a declaration over the limits (LUT_3D_SIZE 257) is
+// refused at its line before the rest of a file of any size is read. Other files: nothing.
+constexpr std::size_t kHeaderPrefixBytes = 1 << 16;
+void checkCubeFileHeader(const std::string& path, const CubeReadOptions& options);
+
 // Where and how a keyword was first given.
 struct KeySeen {
     int line = 0;
@@ -81,6 +87,11 @@ public:
     // Throws lut::ParseError (file:line:col) on any error; diagnostics go to the constructor's
     // list as they are found and are copied into the result.
     LutFile parse();
+    // Only the header: every keyword line up to the first data line, with the checks parse()
+    // makes there (sizes over the limits, bad keywords, the header as a whole), for the first
+    // bytes of a big file read before the rest. Returns without a word when the text ends before
+    // the first data line (parse() of the whole file then decides).
+    void checkHeader();
     // Departures found (strict mode), including those only counted in an "and N more" line.
     int departures() const;
 

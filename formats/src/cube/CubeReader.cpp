@@ -5,6 +5,11 @@
 #include "lut/Limits.h"
 #include "lut/io/InputFile.h"
 
+#include <sys/stat.h>
+
+#include <cstdint>
+#include <fstream>
+
 namespace lut::formats {
 
 namespace cube {
@@ -12,6 +17,23 @@ namespace cube {
 FileBytes readCubeFile(const std::string& path) {
     return readFileBytes(path, static_cast<std::size_t>(limits::kMaxLutFileBytes),
                          "lut::limits::kMaxLutFileBytes");
+}
+
+void checkCubeFileHeader(const std::string& path, const CubeReadOptions& options) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) ||
+        static_cast<std::uint64_t>(st.st_size) <= kHeaderPrefixBytes)
+        return; // readFileBytes says what is wrong with it, or reads it whole anyway
+    std::ifstream in(path, std::ios::binary);
+    std::string prefix(kHeaderPrefixBytes, '\0');
+    in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
+    prefix.resize(static_cast<std::size_t>(in.gcount()));
+    const std::size_t lastEnd = prefix.find_last_of("\r\n");
+    if (lastEnd == std::string::npos)
+        return;
+    prefix.resize(lastEnd + 1); // whole lines only
+    Diagnostics ignored;        // the whole parse reports them
+    CubeParser(prefix, path, options, ignored).checkHeader();
 }
 
 } // namespace cube
@@ -23,6 +45,7 @@ LutFile parseCube(std::string_view text, const std::string& path, const CubeRead
 }
 
 LutFile readCube(const std::string& path, const CubeReadOptions& options) {
+    cube::checkCubeFileHeader(path, options); // LUT_3D_SIZE 257 refused before reading the rest
     const FileBytes bytes = cube::readCubeFile(path);
     return parseCube(bytes.view(), path, options);
 }

@@ -13,6 +13,7 @@
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/ops/Lattice.h"
 
 #include <algorithm>
 #include <array>
@@ -168,19 +169,27 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
         const bool canResolve = uniform(shaper->domainMin()) && uniform(shaper->domainMax()) &&
                                 uniform(cube->domainMin()) && uniform(cube->domainMax());
         if (options.dialect == Dialect::Adobe || !canResolve) {
-            baked = lut.toLut3D(cube->size());
+            // The shaper, then the table, at the lattice over the shaper's domain, with what
+            // one lattice costs between its points.
+            LatticeRequest q;
+            q.size = cube->size();
+            LatticeResult r = sampleOnLattice(lut, q);
+            r.error.seconds = 0.0;
+            baked = std::move(r.lut);
             cube = &*baked;
             shaper = nullptr;
             diags.push_back({Diagnostic::Severity::Warning,
                              {},
                              0,
                              0,
-                             options.dialect == Dialect::Adobe
-                                 ? "1D shaper baked into the 3D table: the Adobe dialect has no "
-                                   "shaper"
-                                 : "1D shaper baked into the 3D table: its domain differs per "
-                                   "channel, and the Resolve dialect has one input range for all "
-                                   "channels"});
+                             std::string(options.dialect == Dialect::Adobe
+                                             ? "1D shaper baked into the 3D table: the Adobe "
+                                               "dialect has no shaper"
+                                             : "1D shaper baked into the 3D table: its domain "
+                                               "differs per channel, and the Resolve dialect has "
+                                               "one input range for all channels") +
+                                 " (" + r.error.str() + " on " + std::to_string(r.heldOut) +
+                                 " inputs between lattice points)"});
         } else {
             resolve = true;
         }

@@ -38,8 +38,22 @@ struct Plan {
     bool unchanged = false;                  // stored values copied, the chain skipped
 };
 
+// What the chain saw outside the LUT's domain, and the values outside [0,1] an integer output
+// type clamps.
+struct ChunkStats {
+    DomainStats domain, clamped;
+    void merge(const ChunkStats& o) {
+        domain.merge(o.domain);
+        clamped.merge(o.clamped);
+    }
+};
+
 void computeChunk(const Plan& p, const PixelChain& chain, const unsigned char* src,
-                  unsigned char* dst, std::size_t pixels, DomainStats& stats) {
+                  unsigned char* dst, std::size_t pixels, ChunkStats& stats) {
+    const bool integerOut = p.out.type == PixelType::UInt8 || p.out.type == PixelType::UInt16;
+    // Half a step of the output type beyond [0,1]: what rounding alone maps to 0 or the top code,
+    // so only values the clamp changes are counted.
+    const float half = p.out.type == PixelType::UInt8 ? 0.5f / 255.0f : 0.5f / 65535.0f;
     const std::size_t inPix = static_cast<std::size_t>(p.in.channels * bytesPerSample(p.in.type));
     const std::size_t outPix =
         static_cast<std::size_t>(p.out.channels * bytesPerSample(p.out.type));
@@ -50,7 +64,10 @@ void computeChunk(const Plan& p, const PixelChain& chain, const unsigned char* s
         const unsigned char* s = src + at * inPix;
         unsigned char* d = dst + at * outPix;
         toRgba(s, p.in.type, p.in.channels, p.inMap, n, rgba.data());
-        chain.run(rgba.data(), n, &stats);
+        chain.run(rgba.data(), n, &stats.domain);
+        if (integerOut)
+            countOutsideDomain(rgba.data(), n, glm::vec3(-half), glm::vec3(1.0f + half),
+                               stats.clamped);
         for (const auto& [ci, co] : p.extras)
             copyChannel(s, p.in.type, p.in.channels, ci, d, p.out.type, p.out.channels, co, n);
         fromRgba(rgba.data(), n, d, p.out.type, p.out.channels, p.outMap);
@@ -128,7 +145,7 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
     const std::size_t inRow = rowBytes(p.in), outRow = rowBytes(p.out);
 
     std::mutex m;
-    DomainStats total;
+    ChunkStats total;
     auto rowsOf = [&](int c) { return std::min(rows, p.in.height - c * rows); };
     const bool threaded = o.overlap && chunks > 1;
     if (!threaded) {
@@ -195,7 +212,7 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
         std::vector<std::thread> workers;
         for (int w = 0; w < computeThreads; ++w)
             workers.emplace_back([&] {
-                DomainStats local;
+                ChunkStats local;
                 try {
                     for (;;) {
                         Slot* s = nullptr;
@@ -262,7 +279,8 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
     if (!threaded)
         src->finish();
     sink->finish();
-    report.domain = total;
+    report.domain = total.domain;
+    report.clamped = total.clamped;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return report;
 }

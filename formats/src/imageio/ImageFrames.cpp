@@ -29,7 +29,9 @@ ImageInfo readImageInfo(const std::string& path, const std::string& format) {
     return openImageSource(path, format)->info();
 }
 
-LoadedImage readImage(const std::string& path, const std::string& format) {
+LoadedImage readImage(const std::string& path, const std::string& format,
+                      const Progress* progress) {
+    checkCancelled(progress, path);
     auto src = openImageSource(path, format);
     LoadedImage out;
     out.info = src->info();
@@ -46,11 +48,13 @@ LoadedImage readImage(const std::string& path, const std::string& format) {
     const std::size_t rb = rowBytes(info);
     std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
     for (int y0 = 0; y0 < info.height; y0 += rows) {
+        checkCancelled(progress, path);
         const int y1 = std::min(info.height, y0 + rows);
         src->readRows(y0, y1, chunk.data());
         toRgba(chunk.data(), info.type, info.channels, map,
                static_cast<std::size_t>(info.width) * static_cast<std::size_t>(y1 - y0),
                out.image.pixel(0, y0));
+        reportProgress(progress, static_cast<double>(y1) / info.height);
     }
     src->finish();
     return out;
@@ -95,6 +99,7 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
     const std::size_t rb = rowBytes(out);
     std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
     for (int y0 = 0; y0 < spec.height; y0 += rows) {
+        checkCancelled(options.progress, path);
         const int y1 = std::min(spec.height, y0 + rows);
         DitherPos dp;
         dp.on = options.dither && spec.type != PixelType::Float && spec.type != PixelType::Half;
@@ -104,7 +109,9 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
                  static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(y1 - y0),
                  chunk.data(), spec.type, out.channels, map, dp);
         sink->writeRows(y0, y1, chunk.data());
+        reportProgress(options.progress, static_cast<double>(y1) / spec.height);
     }
+    checkCancelled(options.progress, path);
     sink->finish();
 }
 

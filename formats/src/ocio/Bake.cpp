@@ -12,6 +12,7 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
+#include "lut/io/StdStreams.h"
 
 #include <algorithm>
 #include <chrono>
@@ -136,7 +137,9 @@ void finishBake(const std::string& output, const BakeOptions& o, const Format& w
     if (!o.format.empty())
         FormatRegistry::instance().applyAlias(o.format, w);
     const auto t0 = Clock::now();
-    const Diagnostics wd = writer.write(output, file, w);
+    // "-" and special files in place (the bytes kept to read back), regular files atomically.
+    std::string inPlaceBytes;
+    const Diagnostics wd = writeLutFile(writer, output, file, w, &inPlaceBytes);
     report.writeSeconds = since(t0);
     report.diagnostics.insert(report.diagnostics.end(), wd.begin(), wd.end());
 
@@ -157,7 +160,8 @@ void finishBake(const std::string& output, const BakeOptions& o, const Format& w
     try {
         FormatOptions back;
         back.layout = o.write.layout;
-        measured = readLut(output, back);
+        measured = inPlaceBytes.empty() ? readLut(output, back)
+                                        : writer.readMemory(inPlaceBytes, output, back);
         report.measuredFile = true;
     } catch (const Error& e) {
         report.readBackError = e.what();

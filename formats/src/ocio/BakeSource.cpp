@@ -1,6 +1,7 @@
 #include "ocio/BakeSource.h"
 
 #include "ocio/ColorConfigImpl.h"
+#include "ocio/OcioFacts.h"
 #include "ocio/OcioStructure.h"
 
 #include "lut/formats/Registry.h"
@@ -69,10 +70,9 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
         }
         const auto processor = config->getProcessor(group);
         doing = "building the CPU processor";
-        // Lossless: OCIO's default optimisation approximates (inverse tables, 1D tables merged
-        // and resampled: 1.4e-3 on unknown_elements.clf, 0.26 on lut3d_example_Inv.ctf).
-        const auto cpu = processor->getOptimizedCPUProcessor(
-            OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
+        // Unoptimised, as convert reads the same file (faithfulCpu, OcioFacts.h): even OCIO's
+        // lossless optimisation changes some chains (opposite Gamma styles, CDL in a CTF).
+        const auto cpu = faithfulCpu(processor);
         s.truth = [cpu](float* rgb, std::size_t n) {
             OCIO::PackedImageDesc desc(rgb, static_cast<long>(n), 1, 3);
             cpu->apply(desc);

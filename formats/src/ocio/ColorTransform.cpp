@@ -2,6 +2,7 @@
 #include "lut/formats/ColorTransform.h"
 
 #include "ocio/ColorConfigImpl.h"
+#include "ocio/OcioFacts.h"
 #include "ocio/OcioStructure.h"
 
 #include "lut/interp/Sampler.h"
@@ -28,8 +29,7 @@ std::shared_ptr<ColorTransform::Impl> build(const ColorConfig& config,
         const auto processor = cfg->getProcessor(transform);
         impl->rgba = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
                                                          OCIO::OPTIMIZATION_DEFAULT);
-        impl->rgb = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                        OCIO::OPTIMIZATION_LOSSLESS);
+        impl->rgb = faithfulCpu(processor); // what bake samples: unoptimised (OcioFacts.h)
         impl->noOp = impl->rgba->isNoOp() && impl->rgb->isNoOp();
         impl->crosstalk = impl->rgba->hasChannelCrosstalk();
     } catch (const std::exception& e) {
@@ -202,12 +202,18 @@ ColorPlan planPreviewColor(const ColorSpec& spec) {
 }
 
 PixelChain lutPixelChain(const ColorPlan& plan, const Lut3D& lut, Interpolation interp) {
+    LutFile file;
+    file.cube = lut;
+    return lutPixelChain(plan, file, interp);
+}
+
+PixelChain lutPixelChain(const ColorPlan& plan, const LutFile& file, Interpolation interp) {
     PixelChain chain;
     if (plan.before)
         chain.addBefore(
             "colour: " + plan.lutInputSpace,
             [t = plan.before](float* rgba, std::size_t n) { t->processPixels(rgba, n); });
-    chain.setLut(lut, interp);
+    chain.setLut(file, interp);
     if (plan.after)
         chain.addAfter("colour: out of " + plan.lutOutputSpace,
                        [t = plan.after](float* rgba, std::size_t n) { t->processPixels(rgba, n); });

@@ -68,4 +68,9 @@ std::string ProcessorFacts::opsText() const {
            std::to_string(otherCount) + " other op" + (otherCount == 1 ? "" : "s");
 }
 
+OCIO::ConstCPUProcessorRcPtr faithfulCpu(const OCIO::ConstProcessorRcPtr& processor) {
+    return processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                               OCIO::OPTIMIZATION_NONE);
+}
+
 } // namespace lut::formats

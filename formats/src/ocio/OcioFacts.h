@@ -25,4 +25,12 @@ struct ProcessorFacts {
 
 ProcessorFacts inspectProcessor(const OCIO::ConstProcessorRcPtr& processor);
 
+// The one CPU processor lutkit samples and measures OpenColorIO's files, chains and conversions
+// with (convert's reader, bake, the colour conversions baked around a LUT): the processor as it
+// stands, unoptimised (OPTIMIZATION_NONE, what OCIO_OPTIMIZATION_FLAGS=0 gives OCIO's own
+// tools). OCIO 2.1's optimiser simplifies some chains wrongly -- a Gamma pair of opposite styles,
+// CDL nodes in a CTF, inverse LUT pairs, up to 0.34 apart -- so convert and bake never differ by
+// it. (The per-pixel conversions of apply and preview keep OCIO's default optimisation: speed.)
+OCIO::ConstCPUProcessorRcPtr faithfulCpu(const OCIO::ConstProcessorRcPtr& processor);
+
 } // namespace lut::formats

@@ -14,8 +14,7 @@ namespace lut::formats {
 namespace {
 
 OCIO::ConstCPUProcessorRcPtr cpuOf(const OCIO::ConstProcessorRcPtr& p) {
-    return p->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                       OCIO::OPTIMIZATION_NONE);
+    return faithfulCpu(p);
 }
 
 RgbFunction functionOf(const OCIO::ConstCPUProcessorRcPtr& cpu) {

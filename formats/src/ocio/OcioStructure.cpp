@@ -1,5 +1,7 @@
 #include "ocio/OcioStructure.h"
 
+#include "ocio/OcioFacts.h"
+
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -57,8 +59,7 @@ bool affineDomain(const OCIO::ConstConfigRcPtr& config, const OCIO::ConstGroupTr
     const auto p = processorOf(config, g, begin, end);
     if (p->hasChannelCrosstalk())
         return false;
-    const auto cpu = p->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                 OCIO::OPTIMIZATION_NONE);
+    const auto cpu = faithfulCpu(p);
     const glm::vec3 a0 = eval(cpu, glm::vec3(0.0f)), a1 = eval(cpu, glm::vec3(1.0f));
     for (int c = 0; c < 3; ++c) {
         const double s = double(a1[c]) - a0[c];

@@ -25,8 +25,16 @@ struct LutFile {
     // write it (a .cube comment, an image's description).
     std::optional<LutPurpose> purpose;
 
-    // The whole file as one 3D table of edge `size` (0 = the cube's own size, else 33):
-    // the shaper is baked in by sampling. Throws lut::Error if the file is empty.
+    // The inputs the file takes: the shaper's domain when it has one, else the table's. Inputs
+    // outside it take the edge value.
+    glm::vec3 inputDomainMin() const;
+    glm::vec3 inputDomainMax() const;
+
+    // The whole file as one 3D table of edge `size` (0 = the cube's own size, else 33) over the
+    // input domain: the shaper is baked in by sampling, with no word of what that costs. Pixels
+    // are processed with makeSampler(LutFile) (lut/interp/Sampler.h), which runs the shaper then
+    // the table exactly; where one lattice is needed, sampleOnLattice (lut/ops/Lattice.h) says
+    // the error. Throws lut::Error if the file is empty.
     Lut3D toLut3D(int size = 0) const;
 };
 

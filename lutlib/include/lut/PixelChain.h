@@ -19,6 +19,7 @@
 // clamps them to its edge, and the caller reports how many there were instead of clamping
 // silently.
 #include "lut/Lut3D.h"
+#include "lut/LutFile.h"
 #include "lut/interp/Interpolation.h"
 
 #include <glm/vec3.hpp>
@@ -61,6 +62,9 @@ public:
 
     // The LUT stage: lut sampled with `method` (the sampler keeps its own copy of the table).
     void setLut(const Lut3D& lut, Interpolation method = Interpolation::Tetrahedral);
+    // A LUT file as it is meant to be applied: its 1D shaper, then its table, each exactly
+    // (makeSampler(LutFile)); the domain watched is the file's input domain (the shaper's).
+    void setLut(const LutFile& file, Interpolation method = Interpolation::Tetrahedral);
     // Steps before and after the LUT, run in the order added. `name` is for reports (-v).
     void addBefore(std::string name, PixelStep step);
     void addAfter(std::string name, PixelStep step);

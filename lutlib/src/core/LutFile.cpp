@@ -6,6 +6,14 @@
 
 namespace lut {
 
+glm::vec3 LutFile::inputDomainMin() const {
+    return shaper ? shaper->domainMin() : cube ? cube->domainMin() : glm::vec3(0.0f);
+}
+
+glm::vec3 LutFile::inputDomainMax() const {
+    return shaper ? shaper->domainMax() : cube ? cube->domainMax() : glm::vec3(1.0f);
+}
+
 Lut3D LutFile::toLut3D(int size) const {
     if (!cube && !shaper)
         throw Error("the LUT file holds no table");

@@ -100,6 +100,18 @@ void PixelChain::setLut(const Lut3D& lut, Interpolation method) {
     m_identityLut = coversUnit && lut.isIdentity(1e-6f);
 }
 
+void PixelChain::setLut(const LutFile& file, Interpolation method) {
+    if (!file.shaper && file.cube) {
+        setLut(*file.cube, method);
+        return;
+    }
+    m_sampler = makeSampler(file, method);
+    m_domainMin = file.inputDomainMin();
+    m_domainMax = file.inputDomainMax();
+    // A shaper is taken as changing values (no identity shortcut): the chain runs.
+    m_identityLut = false;
+}
+
 void PixelChain::addBefore(std::string name, PixelStep step) {
     m_before.push_back({std::move(name), std::move(step)});
 }

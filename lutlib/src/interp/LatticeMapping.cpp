@@ -9,10 +9,16 @@
 namespace lut::detail {
 
 LatticeMapping makeLatticeMapping(const Lut3D& lut) {
+    const float lo[3] = {lut.domainMin().x, lut.domainMin().y, lut.domainMin().z};
+    const float hi[3] = {lut.domainMax().x, lut.domainMax().y, lut.domainMax().z};
+    return makeLatticeMapping(lut.size(), lo, hi);
+}
+
+LatticeMapping makeLatticeMapping(int size, const float min[3], const float max[3]) {
     LatticeMapping m;
-    m.size = lut.size();
+    m.size = size;
     for (int c = 0; c < 3; ++c) {
-        const double lo = lut.domainMin()[c], hi = lut.domainMax()[c];
+        const double lo = min[c], hi = max[c];
         double s = (m.size - 1) / (hi - lo);
         // Degenerate domain: keep the scale (and the snapping bias) finite in float.
         if (!(s <= FLT_MAX))

@@ -32,6 +32,8 @@ struct LatticeMapping {
     float snapBias[3] = {}; // |min| * scale: the domain's share of the snapping tolerance
 };
 LatticeMapping makeLatticeMapping(const Lut3D& lut);
+// The same for N points over [min, max] per channel (a 1D shaper's axis).
+LatticeMapping makeLatticeMapping(int size, const float min[3], const float max[3]);
 
 // One channel of the mapping, written once for any vector width. `Ops` supplies the lane types
 // (Float, Int) and the operations: ScalarOps in interp/ScalarLattice.h, the AVX2 ones in

@@ -9,6 +9,7 @@
 #include "interp/ScalarLattice.h"
 #include "interp/simd/SimdKernels.h"
 #include "lut/Error.h"
+#include "lut/LutFile.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -176,7 +177,85 @@ public:
     }
 };
 
+// A LUT file's 1D shaper, then its 3D table (when it has one), both exact: the shaper's kernel
+// (ShaperTable, SIMD when the CPU has AVX2) on runs of kRun pixels that stay in L1, then the
+// table's own sampler on the same run.
+class ShapedSampler final : public Sampler {
+public:
+    ShapedSampler(const Lut1D& shaper, const Lut3D* cube, Interpolation method)
+        : m_method(method), m_kernel(chosenIsa() == Isa::Avx2 ? &detail::shaperAvx2 : nullptr) {
+        const int n = shaper.size();
+        if (n < 2)
+            throw Error("cannot sample a shaper of fewer than 2 entries");
+        m_planes.resize(3 * static_cast<std::size_t>(n));
+        for (int c = 0; c < 3; ++c)
+            for (int i = 0; i < n; ++i)
+                m_planes[static_cast<std::size_t>(c * n + i)] = shaper[i][c];
+        const glm::vec3 lo = shaper.domainMin(), hi = shaper.domainMax();
+        const float mn[3] = {lo.x, lo.y, lo.z}, mx[3] = {hi.x, hi.y, hi.z};
+        m_view.planes = m_planes.data();
+        m_view.map = detail::makeLatticeMapping(n, mn, mx);
+        if (cube)
+            m_cube = makeSampler(*cube, method);
+    }
+    Interpolation method() const override { return m_method; }
+    glm::vec3 sample(glm::vec3 in) const override {
+        const glm::vec3 v = shape(in);
+        return m_cube ? m_cube->sample(v) : v;
+    }
+    void applyPixels(float* rgba, std::size_t count) const override {
+        constexpr std::size_t kRun = 1024;
+        for (std::size_t i = 0; i < count; i += kRun) {
+            const std::size_t n = std::min(kRun, count - i);
+            float* p = rgba + 4 * i;
+            if (m_kernel) {
+                m_kernel(m_view, p, n);
+            } else {
+                for (std::size_t k = 0; k < n; ++k) {
+                    const glm::vec3 o = shape(glm::vec3(p[4 * k], p[4 * k + 1], p[4 * k + 2]));
+                    p[4 * k] = o.x;
+                    p[4 * k + 1] = o.y;
+                    p[4 * k + 2] = o.z;
+                }
+            }
+            if (m_cube)
+                m_cube->applyPixels(p, n);
+        }
+    }
+
+private:
+    glm::vec3 shape(glm::vec3 in) const {
+        const detail::LatticeMapping& m = m_view.map;
+        const float top = static_cast<float>(m.size - 1);
+        glm::vec3 out;
+        for (int c = 0; c < 3; ++c) {
+            int cell;
+            float f;
+            detail::locateAxis<detail::ScalarOps>(in[c], m.offset[c], m.scale[c], m.snapBias[c],
+                                                  top, m.size - 2, cell, f);
+            const float* plane = m_planes.data() + static_cast<std::size_t>(c) * m.size;
+            out[c] = (1.0f - f) * plane[cell] + f * plane[cell + 1];
+        }
+        return out;
+    }
+
+    Interpolation m_method;
+    std::vector<float> m_planes;
+    detail::ShaperTable m_view;
+    detail::ShaperFn m_kernel;
+    std::unique_ptr<Sampler> m_cube;
+};
+
 } // namespace
+
+std::unique_ptr<Sampler> makeSampler(const LutFile& file, Interpolation method) {
+    if (file.shaper)
+        return std::make_unique<ShapedSampler>(*file.shaper, file.cube ? &*file.cube : nullptr,
+                                               method);
+    if (!file.cube)
+        throw Error("the LUT file holds no table");
+    return makeSampler(*file.cube, method);
+}
 
 std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method) {
     if (lut.empty())

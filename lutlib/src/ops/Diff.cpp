@@ -7,6 +7,7 @@
 #include "ops/OpsDetail.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <mutex>
@@ -75,20 +76,29 @@ struct Acc {
 // fn(i, input, a, b) fills in colour i of `count`; the rest is the same for every kind of diff.
 using PointFn = std::function<void(std::size_t i, glm::vec3& in, glm::vec3& a, glm::vec3& b)>;
 
-DiffReport runDiff(std::size_t count, int nthreads, const PointFn& fn) {
+DiffReport runDiff(std::size_t count, int nthreads, const Progress* progress, const PointFn& fn) {
     if (count > static_cast<std::size_t>(INT32_MAX))
         throw Error("diff: too many colours to compare");
     std::vector<float> deltaEs(count);
     std::mutex mutex;
     Acc total;
+    std::atomic<std::size_t> done{0};
+    constexpr int kBlock = 4096; // colours between two progress reports and cancel checks
     parallelFor(static_cast<int>(count), count < 4096 ? 1 : nthreads, [&](int begin, int end) {
         Acc acc;
-        for (int i = begin; i < end; ++i) {
-            glm::vec3 in, a, b;
-            fn(static_cast<std::size_t>(i), in, a, b);
-            const double de = (a == b) ? 0.0 : deltaE2000(srgbToLab(a), srgbToLab(b));
-            deltaEs[static_cast<std::size_t>(i)] = static_cast<float>(de);
-            acc.add(in, a, b, de);
+        for (int b0 = begin; b0 < end; b0 += kBlock) {
+            checkCancelled(progress, "diff");
+            const int b1 = std::min(end, b0 + kBlock);
+            for (int i = b0; i < b1; ++i) {
+                glm::vec3 in, a, b;
+                fn(static_cast<std::size_t>(i), in, a, b);
+                const double de = (a == b) ? 0.0 : deltaE2000(srgbToLab(a), srgbToLab(b));
+                deltaEs[static_cast<std::size_t>(i)] = static_cast<float>(de);
+                acc.add(in, a, b, de);
+            }
+            if (progress)
+                progress->report(static_cast<double>(done += static_cast<std::size_t>(b1 - b0)) /
+                                 static_cast<double>(count));
         }
         std::lock_guard lock(mutex);
         total.merge(acc);
@@ -169,7 +179,7 @@ DiffReport diffLuts(const Lut3D& a, const Lut3D& b, const DiffOptions& options) 
                         a.domainMax() == b.domainMax();
     const auto count = lattice.entryCount();
     if (direct) {
-        return finish(runDiff(count, options.nthreads,
+        return finish(runDiff(count, options.nthreads, options.progress,
                               [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
                                   const int n = size, r = static_cast<int>(i % n),
                                             g = static_cast<int>((i / n) % n),
@@ -184,7 +194,7 @@ DiffReport diffLuts(const Lut3D& a, const Lut3D& b, const DiffOptions& options) 
     grid.setDomain(a.domainMin(), a.domainMax());
     const auto sa = makeSampler(p.a, options.method);
     const auto sb = makeSampler(p.b, options.method);
-    return finish(runDiff(count, options.nthreads,
+    return finish(runDiff(count, options.nthreads, options.progress,
                           [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
                               const int n = size, r = static_cast<int>(i % n),
                                         g = static_cast<int>((i / n) % n),
@@ -202,7 +212,7 @@ DiffReport diffLutsOnColors(const Lut3D& a, const Lut3D& b, std::span<const glm:
     const Prepared p = prepare(a, b);
     const auto sa = makeSampler(p.a, options.method);
     const auto sb = makeSampler(p.b, options.method);
-    return finish(runDiff(colors.size(), options.nthreads,
+    return finish(runDiff(colors.size(), options.nthreads, options.progress,
                           [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
                               in = colors[i];
                               va = sa->sample(in);
@@ -221,7 +231,7 @@ DiffReport diffLutsOnImage(const Lut3D& a, const Lut3D& b, const ImageView& imag
     const auto sb = makeSampler(p.b, options.method);
     const std::size_t w = static_cast<std::size_t>(image.width);
     const std::size_t count = w * static_cast<std::size_t>(image.height);
-    return finish(runDiff(count, options.nthreads,
+    return finish(runDiff(count, options.nthreads, options.progress,
                           [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
                               const float* px =
                                   image.pixel(static_cast<int>(i % w), static_cast<int>(i / w));

@@ -8,6 +8,7 @@
 #include "ops/OpsDetail.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -28,14 +29,19 @@ std::vector<float> deltaEGrid(const Lut3D& a, const Lut3D& b, int width, int hei
     const auto sa = makeSampler(detail::sanitizedCopy(a, ra), o.method);
     const auto sb = makeSampler(detail::sanitizedCopy(b, rb), o.method);
     std::vector<float> de(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    std::atomic<int> rowsDone{0};
     parallelFor(height, o.nthreads, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
+        for (int y = y0; y < y1; ++y) {
+            checkCancelled(o.progress, "heat map");
             for (int x = 0; x < width; ++x) {
                 const glm::vec3 in = input(x, y);
                 de[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                    static_cast<std::size_t>(x)] =
                     static_cast<float>(deltaE(sa->sample(in), sb->sample(in)));
             }
+            if (o.progress)
+                o.progress->report(static_cast<double>(++rowsDone) / height);
+        }
     });
     return de;
 }

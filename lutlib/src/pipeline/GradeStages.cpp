@@ -2,6 +2,7 @@
 // LUT stage.
 #include "ArrayKernels.h"
 #include "StageDetail.h"
+#include "lut/LutFile.h"
 #include "lut/pipeline/SmashGrading.h"
 
 #include <algorithm>
@@ -15,6 +16,21 @@ std::shared_ptr<const Lut3D> neutralSmashLut() {
     return l;
 }
 
+} // namespace
+
+std::unique_ptr<Sampler> makeStageSampler(const Lut3D* lut, const Lut1D* shaper,
+                                          Interpolation method) {
+    if (!shaper)
+        return makeSampler(*lut, method);
+    LutFile file;
+    file.shaper = *shaper;
+    if (lut)
+        file.cube = *lut;
+    return makeSampler(file, method);
+}
+
+namespace {
+
 // docs/specs/smash-pipeline.md section 2: per pixel, s = x^0.454545; L = trilinear(lut, s);
 // r = ((L - s) * 0.99961 + s) * 1.3703; g = r^2.2; out = mix(x, g, clamp(alpha, 0, 1)).
 // The pow()s are FastMath.h's polynomial pows (< 4e-7 relative), run 8 pixels at a time by
@@ -24,21 +40,25 @@ std::shared_ptr<const Lut3D> neutralSmashLut() {
 // fused == unfused for them.
 class SmashGradeStage final : public LutStage {
 public:
-    SmashGradeStage() { setLut(nullptr, Interpolation::Trilinear); }
+    SmashGradeStage() { setLut(nullptr, Interpolation::Trilinear, nullptr); }
     const char* name() const override { return "smash-grade"; }
     const char* description() const override {
         return "Smash grading: gamma 2.2 encode, LUT, brighten (0.99961, 1.3703), decode, alpha "
                "mix";
     }
-    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) override {
+    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method,
+                std::shared_ptr<const Lut1D> shaper) override {
+        m_given = lut;
         m_lut = lut ? std::move(lut) : neutralSmashLut();
         m_method = method;
-        m_sampler = makeSampler(*m_lut, method);
+        m_shaper = std::move(shaper);
+        m_sampler =
+            makeStageSampler(m_shaper && !m_given ? nullptr : m_lut.get(), m_shaper.get(), method);
     }
     void copySettingsFrom(const Stage& other) override {
         Stage::copySettingsFrom(other);
         if (const auto* o = dynamic_cast<const SmashGradeStage*>(&other))
-            setLut(o->m_lut, o->m_method);
+            setLut(o->m_given, o->m_method, o->m_shaper);
     }
     // Grading changes every pixel with alpha > 0 (the brighten step alone does, even for a
     // neutral LUT); alpha 0 is left as is.
@@ -72,7 +92,9 @@ public:
     }
 
 private:
+    std::shared_ptr<const Lut3D> m_given; // as set (null: neutral)
     std::shared_ptr<const Lut3D> m_lut;
+    std::shared_ptr<const Lut1D> m_shaper;
     Interpolation m_method = Interpolation::Trilinear;
     std::unique_ptr<Sampler> m_sampler;
     bool m_fusedDisplay = false;
@@ -83,21 +105,26 @@ private:
 // for it the stage clamps exactly instead of sampling, so skipping it is exact.
 class GenericLutStage final : public LutStage {
 public:
-    GenericLutStage() { setLut(nullptr, Interpolation::Trilinear); }
+    GenericLutStage() { setLut(nullptr, Interpolation::Trilinear, nullptr); }
     const char* name() const override { return "lut"; }
     const char* description() const override { return "a 3D LUT (any size, any interpolation)"; }
-    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) override {
+    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method,
+                std::shared_ptr<const Lut1D> shaper) override {
+        m_given = lut;
         m_lut = lut ? std::move(lut) : neutralSmashLut();
         m_method = method;
-        m_sampler = makeSampler(*m_lut, method);
-        m_identity = m_lut->isIdentity(1e-6f); // within 1e-6: treated as exact
-        m_min = m_lut->domainMin();
-        m_max = m_lut->domainMax();
+        m_shaper = std::move(shaper);
+        m_sampler =
+            makeStageSampler(m_shaper && !m_given ? nullptr : m_lut.get(), m_shaper.get(), method);
+        // within 1e-6: treated as exact; a shaper always runs
+        m_identity = !m_shaper && m_lut->isIdentity(1e-6f);
+        m_min = m_shaper ? m_shaper->domainMin() : m_lut->domainMin();
+        m_max = m_shaper ? m_shaper->domainMax() : m_lut->domainMax();
     }
     void copySettingsFrom(const Stage& other) override {
         Stage::copySettingsFrom(other);
         if (const auto* o = dynamic_cast<const GenericLutStage*>(&other))
-            setLut(o->m_lut, o->m_method);
+            setLut(o->m_given, o->m_method, o->m_shaper);
     }
     bool inspectsColor() const override { return m_identity; }
     bool canChange(const ImageView& f, int nthreads) const override {
@@ -125,7 +152,9 @@ public:
     }
 
 private:
+    std::shared_ptr<const Lut3D> m_given; // as set (null: neutral)
     std::shared_ptr<const Lut3D> m_lut;
+    std::shared_ptr<const Lut1D> m_shaper;
     Interpolation m_method = Interpolation::Trilinear;
     std::unique_ptr<Sampler> m_sampler;
     bool m_identity = true;

@@ -175,7 +175,7 @@ Pipeline::Pipeline(Preset preset) : m_preset(preset) {
 }
 
 Pipeline::Pipeline(const PipelineSettings& s) : Pipeline(s.preset) {
-    setLut(s.lut, s.interpolation);
+    setLut(s.lut, s.interpolation, s.shaper);
     if (!s.bloom)
         setBloom(false);
     for (const auto& n : s.enable)
@@ -233,10 +233,11 @@ void Pipeline::assign(std::string_view a) {
     stage(a.substr(0, dot)).setParam(a.substr(dot + 1, eq - dot - 1), a.substr(eq + 1));
 }
 
-void Pipeline::setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) {
+void Pipeline::setLut(std::shared_ptr<const Lut3D> lut, Interpolation method,
+                      std::shared_ptr<const Lut1D> shaper) {
     for (auto& s : m_stages)
         if (auto* l = dynamic_cast<detail::LutStage*>(s.get()))
-            l->setLut(lut, method);
+            l->setLut(lut, method, shaper);
 }
 
 void Pipeline::setBloom(bool on) {

@@ -57,6 +57,31 @@ private:
     std::unique_ptr<Sampler> m_sampler;
 };
 
+// The authoring options of a raw -> smash conversion.
+SmashAuthoringOptions authoringOptions(const PurposeOptions& o) {
+    SmashAuthoringOptions a;
+    a.gameLut = o.stageLut;
+    a.aboveWhite = o.aboveWhite;
+    // Measured: the refinement too, so the report says what --refine would give.
+    a.refine = o.measure || o.refine;
+    a.measure = a.refine;
+    a.screenshot = o.screenshot;
+    a.nthreads = o.nthreads;
+    return a;
+}
+
+// The game's LUT to use: the refinement, or the exact composition clamped to what the file holds.
+void finishGameLut(PurposeConversion& c, const PurposeOptions& o) {
+    if (o.refine) {
+        c.lut = c.authoring.lut;
+    } else {
+        c.lut = c.authoring.exact;
+        for (auto& e : c.lut.entries())
+            e = glm::clamp(e, glm::vec3(0.0f), glm::vec3(1.0f));
+    }
+    c.measuredOver = c.authoring.measuredOver;
+}
+
 } // namespace
 
 Lut3D editOfGameLut(const Lut3D& game, int size, GameError* error, int nthreads,
@@ -190,23 +215,31 @@ PurposeConversion convertPurpose(const Lut3D& lut, LutPurpose from, LutPurpose t
         c.lut = editOfGameLut(lut, o.rawSize, &c.sampling, o.nthreads, &c.measuredOver);
         return c;
     }
-    SmashAuthoringOptions a;
-    a.gameLut = o.stageLut;
-    a.aboveWhite = o.aboveWhite;
-    // Measured: the refinement too, so the report says what --refine would give.
-    a.refine = o.measure || o.refine;
-    a.measure = a.refine;
-    a.screenshot = o.screenshot;
-    a.nthreads = o.nthreads;
-    c.authoring = authorSmashLutForEdit(lut, o.editInterpolation, a);
-    if (o.refine) {
-        c.lut = c.authoring.lut;
-    } else { // the exact composition, clamped to what the file holds
-        c.lut = c.authoring.exact;
-        for (auto& e : c.lut.entries())
-            e = glm::clamp(e, glm::vec3(0.0f), glm::vec3(1.0f));
-    }
-    c.measuredOver = c.authoring.measuredOver;
+    c.authoring = authorSmashLutForEdit(lut, o.editInterpolation, authoringOptions(o));
+    finishGameLut(c, o);
+    return c;
+}
+
+PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpose to,
+                                 const PurposeOptions& o) {
+    if (!file.cube && !file.shaper)
+        throw Error("the LUT file holds no table");
+    if (!file.shaper || from == to || to == LutPurpose::Raw)
+        return convertPurpose(file.toLut3D(), from, to, o);
+    // The shaper, then the table, at every colour the authoring evaluates.
+    // Its title, else the stage's (as authorSmashLutForEdit names a table).
+    std::string title = file.cube ? file.cube->title() : file.shaper->title();
+    if (title.empty() && o.stageLut)
+        title = o.stageLut->title();
+    const std::shared_ptr<const Sampler> exact = makeSampler(file, o.editInterpolation);
+    PurposeConversion c;
+    c.from = from;
+    c.to = to;
+    c.authoring = authorSmashLutForEdit([exact](glm::vec3 v) { return exact->sample(v); },
+                                        authoringOptions(o));
+    c.authoring.exact.setTitle(title);
+    c.authoring.lut.setTitle(title);
+    finishGameLut(c, o);
     return c;
 }
 

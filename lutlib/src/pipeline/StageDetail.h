@@ -2,6 +2,7 @@
 // Private helpers shared by the stage implementations.
 #include "FastMath.h"
 #include "lut/Image.h"
+#include "lut/Lut1D.h"
 #include "lut/Lut3D.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Interpolation.h"
@@ -19,8 +20,14 @@ namespace lut::detail {
 // Stages that sample a grading LUT (smash-grade, lut).
 class LutStage : public Stage {
 public:
-    virtual void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method) = 0;
+    // shaper: run before lut's table, exactly (lut null: the shaper alone); null = none.
+    virtual void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method,
+                        std::shared_ptr<const Lut1D> shaper = nullptr) = 0;
 };
+
+// The sampler of a LUT stage: lut with `method`, after the shaper when there is one.
+std::unique_ptr<Sampler> makeStageSampler(const Lut3D* lut, const Lut1D* shaper,
+                                          Interpolation method);
 
 // An RGB float image, 3 interleaved channels, used for bloom intermediates.
 struct RgbBuffer {

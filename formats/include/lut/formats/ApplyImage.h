@@ -29,7 +29,11 @@ struct ApplyImageOptions {
 struct ApplyImageReport {
     ImageInfo input;
     ImageInfo output;
-    DomainStats domain;      // what the LUT saw outside its domain
+    DomainStats domain; // what the LUT saw outside its domain
+    // Output values (R, G, B after the whole chain) that an integer output type (8/16-bit)
+    // clamps: outside [0,1] by more than half a step of that type, or NaN; counted only for such
+    // outputs (the domain it names is [0,1] widened by that half step).
+    DomainStats clamped;
     Diagnostics diagnostics; // what was not kept, and why (warnings, notes)
     bool unchanged = false;  // the chain cannot change these pixels: stored values copied
     double seconds = 0.0;

@@ -86,5 +86,7 @@ ColorPlan planPreviewColor(const ColorSpec& spec);
 // the LUT's space (a step before the LUT), the LUT (whose domain the chain watches: values outside
 // it are counted, since the sampler clamps them), the conversion out (a step after it).
 PixelChain lutPixelChain(const ColorPlan& plan, const Lut3D& lut, Interpolation interp);
+// The same for a LUT file as it is meant to be applied: its 1D shaper, then its table, exactly.
+PixelChain lutPixelChain(const ColorPlan& plan, const LutFile& file, Interpolation interp);
 
 } // namespace lut::formats

@@ -5,6 +5,7 @@
 // in a module loaded on first use (formats/src/imageio/ImageIOModuleApi.h says why). Streaming a
 // LUT through an image without a float frame: lut/formats/ApplyImage.h.
 #include "lut/Image.h"
+#include "lut/Progress.h"
 
 #include <memory>
 #include <string>
@@ -54,8 +55,11 @@ struct LoadedImage {
 // from its first bytes). Throws lut::Error naming the file (truncated and corrupt files too:
 // never grey pixels), LimitError for images larger than lut::limits::kMaxImagePixels or
 // declaring more pixels than their bytes can hold, refused before any pixel buffer is allocated.
-// FIFOs, devices and folders are refused before they are opened.
-LoadedImage readImage(const std::string& path, const std::string& format = {});
+// FIFOs, devices and folders are refused before they are opened. With `progress`, the rows
+// decoded so far are reported and a cancel stops the read at the next chunk of rows
+// (CancelledError naming the file).
+LoadedImage readImage(const std::string& path, const std::string& format = {},
+                      const Progress* progress = nullptr);
 ImageInfo readImageInfo(const std::string& path, const std::string& format = {});
 
 struct ImageWriteOptions {
@@ -67,6 +71,9 @@ struct ImageWriteOptions {
     std::shared_ptr<const ImageMetadata> metadata; // copied into the file where it fits
     std::string compression;                       // "" = the format's default
     std::string format; // the format for "-" and devices ("png"; "" = from the extension)
+    // Rows written so far; a cancel stops the write at the next chunk of rows (CancelledError
+    // naming the file), the old file left as it was.
+    const Progress* progress = nullptr;
 };
 
 // Writes through lut::OutputFile (lut/io/OutputFile.h): a regular file via a temporary file

@@ -10,6 +10,8 @@
 
 namespace lut {
 
+struct LutFile;
+
 // Evaluates a Lut3D at arbitrary inputs. One class per interpolation method, chosen once per LUT
 // by makeSampler(); the sampler keeps its own copy of the table in whatever layout its kernel
 // wants, so the Lut3D may change or die afterwards.
@@ -42,6 +44,15 @@ public:
 };
 
 std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method);
+
+// A LUT file as it is meant to be applied: its 1D shaper (when it has one), then its 3D table
+// (when it has one) with `method`, each exactly -- never merged into one lattice. The shaper
+// follows the policy above on its own axis (N = its entry count, linear between entries, clamped
+// to the end entries outside its domain, NaN as its domain minimum, an entry returned exactly at
+// its input); its SIMD kernel agrees with sample() bit for bit. Inputs outside the file's input
+// domain (LutFile::inputDomainMin/Max) take the edge value. Throws lut::Error if the file holds
+// no table.
+std::unique_ptr<Sampler> makeSampler(const LutFile& file, Interpolation method);
 
 // Name of the SIMD path new samplers use on this CPU: "avx2" or "scalar".
 const char* samplerIsa();

@@ -8,6 +8,7 @@
 // finite. diff(A, A) is exactly 0.
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/Progress.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/ops/Regions.h"
 
@@ -27,6 +28,9 @@ struct DiffOptions {
     // directly (no interpolation).
     int size = 0;
     int nthreads = 0; // 0 = all cores
+    // Colours compared so far; a cancel stops the diff (CancelledError) within a few thousand
+    // colours.
+    const Progress* progress = nullptr;
 };
 
 struct DiffPoint {

@@ -4,6 +4,7 @@
 // -> orange -> pale yellow at `maxDeltaE` and above), so larger differences are brighter.
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/Progress.h"
 #include "lut/interp/Interpolation.h"
 
 #include <glm/vec3.hpp>
@@ -16,6 +17,8 @@ struct HeatMapOptions {
     double maxDeltaE = 10.0; // ΔE2000 at the top of the ramp; <= 0 = the largest difference found
     Interpolation method = Interpolation::Tetrahedral;
     int nthreads = 0;
+    // Rows done so far; a cancel stops the map (CancelledError) within a row.
+    const Progress* progress = nullptr;
 };
 
 // The ramp colour for t in [0, 1] (clamped; NaN = 0): display-encoded RGB.

@@ -30,6 +30,7 @@
 // does not have (see docs/pipeline.md).
 #include "lut/Error.h"
 #include "lut/Image.h"
+#include "lut/Lut1D.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Stage.h"
@@ -64,6 +65,9 @@ std::unique_ptr<Stage> makeStage(std::string_view name);
 struct PipelineSettings {
     Preset preset = Preset::Smash;
     std::shared_ptr<const Lut3D> lut; // grading LUT (smash-grade and lut); null = neutral
+    // A 1D shaper run before lut's table, exactly (a Resolve .cube's; lut null: the shaper
+    // alone); null = none.
+    std::shared_ptr<const Lut1D> shaper;
     Interpolation interpolation = Interpolation::Trilinear;
     bool bloom = true;                // false disables every bloom stage
     std::vector<std::string> enable;  // stage names to switch on
@@ -121,7 +125,9 @@ public:
     // "stage.param=value"; throws lut::Error naming what is wrong.
     void assign(std::string_view assignment);
     // The grading LUT for smash-grade and lut (copied; sampled with `method`). Null = neutral.
-    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method = Interpolation::Trilinear);
+    // With a shaper: the shaper, then lut's table, each exactly (lut null: the shaper alone).
+    void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method = Interpolation::Trilinear,
+                std::shared_ptr<const Lut1D> shaper = nullptr);
     void setBloom(bool on); // every *bloom stage
 
     // Index in stages() of the first LUT stage (smash-grade, lut), where PipelinePart::FromLut

@@ -10,6 +10,7 @@
 //   same purpose  the table as it is.
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/GameError.h"
@@ -56,6 +57,12 @@ struct PurposeConversion {
 };
 
 PurposeConversion convertPurpose(const Lut3D& lut, LutPurpose from, LutPurpose to,
+                                 const PurposeOptions& options = {});
+// The same for a LUT file: a file with a 1D shaper is evaluated exactly (the shaper, then its
+// table) wherever the game's LUT is computed and measured, never merged into one table first
+// (raw -> smash); the game's LUT of a file with a shaper is its table as LutFile::toLut3D bakes
+// it (smash -> raw, same purpose). Throws lut::Error if the file holds no table.
+PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpose to,
                                  const PurposeOptions& options = {});
 
 // The edit a game LUT makes of the neutral game's picture: for a display colour d (what the

@@ -20,9 +20,21 @@ struct KernelTable {
 
 using KernelFn = void (*)(const KernelTable&, float* rgba, std::size_t count);
 
+// A 1D shaper (lut::Lut1D) as its kernel reads it: per channel, t from the same lattice mapping
+// as a 3D table's axis (LatticeMapping with N = the shaper's entry count), then
+// (1 - f) * entry[cell] + f * entry[cell + 1] -- exact at the entries, clamped to the end
+// entries outside the domain, NaN taken as the domain's minimum.
+struct ShaperTable {
+    const float* planes = nullptr; // 3 planes of N floats: the R entries, then G, then B
+    LatticeMapping map;
+};
+
+using ShaperFn = void (*)(const ShaperTable&, float* rgba, std::size_t count);
+
 // AVX2 + FMA kernels (simd/SamplerKernels_avx2.cpp). Only call when the CPU has AVX2 and FMA.
 void nearestAvx2(const KernelTable& table, float* rgba, std::size_t count);
 void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count);
 void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count);
+void shaperAvx2(const ShaperTable& table, float* rgba, std::size_t count);
 
 } // namespace lut::detail

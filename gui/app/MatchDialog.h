@@ -1,0 +1,43 @@
+#pragma once
+// Tools > Match to Reference…: the match of the open picture to a reference picture
+// (MatchSession), shown live in the window while its sliders move: strength, lightness and
+// colour amounts, what to keep. OK keeps the matched LUT as the document's LUT (exported through
+// the same target choice as every other edit); Cancel puts the LUT back as it was.
+#include "MatchSession.h"
+
+#include <QDialog>
+
+#include <memory>
+
+class QCheckBox;
+class QPlainTextEdit;
+class QSlider;
+
+namespace lut::gui {
+
+class MainWindow;
+
+class MatchDialog : public QDialog {
+    Q_OBJECT
+public:
+    // Takes the fitted session; shows its result in the window at once.
+    MatchDialog(MainWindow* window, std::unique_ptr<MatchSession> session);
+
+    const MatchSession& session() const { return *m_session; }
+
+public slots:
+    void reject() override;
+
+private:
+    void apply(); // the sliders' options, baked into the document's LUT
+
+    MainWindow* m_window;
+    std::unique_ptr<MatchSession> m_session;
+    QSlider* m_strength = nullptr;
+    QSlider* m_luma = nullptr;
+    QSlider* m_chroma = nullptr;
+    QCheckBox* m_preserve[3] = {nullptr, nullptr, nullptr};
+    QPlainTextEdit* m_report = nullptr;
+};
+
+} // namespace lut::gui

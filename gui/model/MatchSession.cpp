@@ -1,0 +1,65 @@
+#include "MatchSession.h"
+
+#include "lut/formats/ImageIO.h"
+#include "lut/pipeline/SceneKind.h"
+
+#include <QFileInfo>
+
+namespace lut::gui {
+
+MatchSession::MatchSession(std::shared_ptr<const Image> source, bool sourceIsFloat,
+                           const QString& referencePath, const MatchOptions& options)
+    : m_source(std::move(source)), m_referencePath(referencePath), m_options(options) {
+    if (!m_source || m_source->empty())
+        throw Error("match: open a picture first: it is the source the look is matched on");
+    const formats::LoadedImage ref = formats::readImage(referencePath.toStdString());
+    const auto& i = ref.info;
+    const SceneDecision refKind =
+        decideSceneKind(SceneEvidence{i.isFloat, i.bitDepth, i.colorSpace, i.format});
+    m_reference = std::make_shared<const Image>(ref.image);
+    MatchPicture src;
+    src.pixels = m_source->view();
+    src.linear = decideSceneKind(SceneEvidence{sourceIsFloat, sourceIsFloat ? 32 : 8, {}, {}})
+                     .storedIsLinear;
+    src.bitDepth = sourceIsFloat ? 0 : 8;
+    src.name = "the picture";
+    MatchPicture r;
+    r.pixels = m_reference->view();
+    r.linear = refKind.storedIsLinear;
+    r.bitDepth = i.isFloat ? 0 : i.bitDepth;
+    r.name = QFileInfo(referencePath).fileName().toStdString();
+    m_fit = fitMatch(src, {r}, m_options);
+}
+
+LutFile MatchSession::lutFile() const {
+    return bakeMatch(m_fit.transfer, m_options);
+}
+
+Lut3D MatchSession::table() const {
+    Lut3D t = lutFile().toLut3D(m_options.size);
+    t.setTitle("match to " + QFileInfo(m_referencePath).fileName().toStdString());
+    return t;
+}
+
+QString MatchSession::reportText() const {
+    const MatchReport& r = m_fit.report;
+    QString s = QStringLiteral("method   %1 (%2)\n")
+                    .arg(QString::fromLatin1(toString(r.method)), QString::fromStdString(r.choice));
+    auto distance = [](const DistributionDistance& d) {
+        return QStringLiteral("sliced Wasserstein %1 (CIELAB), quantile ΔE2000 %2")
+            .arg(d.slicedWasserstein, 0, 'g', 3)
+            .arg(d.quantileDeltaE, 0, 'g', 3);
+    };
+    for (const auto& c : r.candidates)
+        s += QStringLiteral("         %1: %2\n")
+                 .arg(QString::fromLatin1(toString(c.method)), distance(c.after));
+    s += QStringLiteral("before   %1\n").arg(distance(r.before));
+    for (const auto& c : r.candidates)
+        if (c.method == r.method)
+            s += QStringLiteral("after    %1 (full strength)\n").arg(distance(c.after));
+    for (const auto& d : m_fit.diagnostics)
+        s += QString::fromStdString(d.str()) + "\n";
+    return s;
+}
+
+} // namespace lut::gui

@@ -1,0 +1,59 @@
+#pragma once
+// What `lutkit match` says about the LUT it made (text here; --json in the CLI), and what the
+// editor shows: the distance to the reference's colours before and after, how the LUT
+// interpolates, what it clips, what the fit had to limit, and the time it took.
+#include "lut/match/DistributionDistance.h"
+#include "lut/match/LutQuality.h"
+#include "lut/match/MatchOptions.h"
+#include "lut/pipeline/GameError.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace lut {
+
+struct MatchCandidate {
+    MatchMethod method = MatchMethod::HmMklHm;
+    DistributionDistance after; // the method's transfer applied to SOURCE vs REFERENCE
+    double seconds = 0.0;       // its fit
+};
+
+struct MatchReport {
+    MatchMethod asked = MatchMethod::Auto;
+    MatchMethod method = MatchMethod::HmMklHm; // the one used
+    std::string choice;                        // why: "asked for", or auto's reason
+    std::vector<MatchCandidate> candidates;    // auto: every method tried, in the order tried
+    bool linear = false;                       // SOURCE is scene-linear (working encoding ACEScct)
+
+    // SOURCE vs REFERENCE, and the LUT (as baked: shaper, table, tetrahedral) applied to SOURCE
+    // vs REFERENCE, over a regular subsample of up to 32768 pixels of each.
+    DistributionDistance before, after;
+    // The LUT against the transfer it tabulates (strength and preserve included), over every
+    // distinct colour of SOURCE's counted pixels: 8-bit steps of the working encoding.
+    GameError interpolation;
+    std::size_t interpolationColours = 0;
+    LutQuality quality;
+
+    // What the LUT does to SOURCE's counted pixels: channel values more than half an 8-bit step
+    // outside [0, 1] (display encoded; below 0 for scene-linear), which an 8-bit output clips.
+    std::size_t clippedValues = 0;
+    std::size_t values = 0;
+    double clippedMaxSteps = 0.0;       // the farthest, 8-bit steps beyond the range
+    std::size_t tableValuesOutside = 0; // table entries' channel values outside the range
+    std::size_t tableValues = 0;
+
+    std::size_t sourcePixels = 0, sourceUsed = 0;       // counted: not masked, not NaN
+    std::size_t referencePixels = 0, referenceUsed = 0; // all references together
+    int references = 0;
+
+    double secondsFit = 0.0;     // statistics and the transfer (every candidate for auto)
+    double secondsBake = 0.0;    // the LUT
+    double secondsMeasure = 0.0; // this report's figures
+    double secondsTotal() const { return secondsFit + secondsBake + secondsMeasure; }
+
+    // Several lines, each "label   text".
+    std::string str() const;
+};
+
+} // namespace lut

@@ -1,0 +1,46 @@
+#pragma once
+// A LUT file (a 1D shaper, then a 3D table) as one 3D table, where one lattice is truly needed:
+// the game's 16^3 LUT, a format that stores no shaper, a lattice to invert. Each entry is the
+// file evaluated exactly (makeSampler(LutFile): the shaper, then the table) at its lattice input,
+// and the cost of reading the lattice instead of the file is measured on inputs the lattice did
+// not use (never at its own points, where it is exact by construction):
+//   - inside every cell, at the fractions (j + 0.5) / m per axis (m chosen so the grid holds
+//     about 300,000 points, at least one per cell: cell centres; on lattices above 67 points,
+//     67 cells per axis evenly spread);
+//   - 100,000 pseudo-random inputs (a fixed sequence) spread over the whole lattice domain.
+// Both are read with the lattice's interpolation and compared with the exact evaluation; the
+// error is an estimate of the largest difference between lattice points, never a figure taken
+// at the lattice itself.
+#include "lut/ErrorStats.h"
+#include "lut/Lut3D.h"
+#include "lut/LutFile.h"
+#include "lut/interp/Interpolation.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <optional>
+
+namespace lut {
+
+struct LatticeRequest {
+    int size = 0; // edge of the lattice; 0 = the file's table's size (33 for a 1D-only file)
+    // The lattice's domain; unset = the file's input domain (LutFile::inputDomainMin/Max).
+    std::optional<glm::vec3> domainMin, domainMax;
+    Interpolation fileMethod = Interpolation::Tetrahedral; // how the file's table is evaluated
+    // How the lattice will be read (the game: trilinear).
+    Interpolation readWith = Interpolation::Tetrahedral;
+    int nthreads = 0; // 0 = all cores
+};
+
+struct LatticeResult {
+    Lut3D lut;
+    // The lattice read with readWith against the exact file, on held-out inputs (above).
+    ErrorStats error;
+    std::size_t heldOut = 0; // inputs the error was measured on
+};
+
+// Throws lut::Error if the file is empty or the domain is not finite with min < max.
+LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& request = {});
+
+} // namespace lut

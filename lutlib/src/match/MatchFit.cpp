@@ -1,0 +1,389 @@
+// Fitting the transfer by each method, and auto's choice: see lut/match/Match.h.
+#include "lut/Error.h"
+#include "lut/match/LutQuality.h"
+#include "lut/match/Match.h"
+#include "lut/match/MatchFinish.h"
+#include "lut/match/WorkingSpace.h"
+#include "match/MatchColours.h"
+#include "match/MatchContext.h"
+#include "match/MatchSamples.h"
+#include "match/TransportFit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace lut {
+
+namespace {
+
+using detail::SampleSet;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string fmt(const char* f, ...) {
+    char buf[768];
+    va_list args;
+    va_start(args, f);
+    std::vsnprintf(buf, sizeof buf, f, args);
+    va_end(args);
+    return buf;
+}
+
+void warn(Diagnostics& d, const std::string& path, const std::string& message) {
+    Diagnostic w;
+    w.severity = Diagnostic::Severity::Warning;
+    w.path = path;
+    w.message = message;
+    d.push_back(std::move(w));
+}
+
+const char* channelName(int c) {
+    return c == 0 ? "red" : c == 1 ? "green" : "blue";
+}
+
+// What the pictures are like, said before anything is fitted.
+void pictureWarnings(const std::vector<detail::PictureFacts>& facts, bool isSource,
+                     bool sourceLinear, Diagnostics& d) {
+    for (const auto& f : facts) {
+        const double share = static_cast<double>(f.outsideUnit) / (3.0 * f.used);
+        if (!isSource && f.converted)
+            warn(d, f.name,
+                 std::string(sourceLinear ? "a display-encoded picture, decoded (sRGB) to match "
+                                            "the source's scene-linear values"
+                                          : "a scene-linear picture, sRGB-encoded to match the "
+                                            "source's display values") +
+                     (f.maxStored > 1.0 && !sourceLinear
+                          ? fmt("; it holds values up to %.3g (HDR): %.3g%% of its values are "
+                                "above 1, which the look takes as brighter than white and an "
+                                "8-bit output clips",
+                                f.maxStored, 100.0 * share)
+                          : std::string()));
+        else if (!isSource && !sourceLinear && share > 0.001)
+            warn(d, f.name,
+                 fmt("%.3g%% of its values are outside [0, 1] (colours beyond sRGB or brighter "
+                     "than white, from %.3g to %.3g): the look asks for colours an 8-bit "
+                     "output clips",
+                     100.0 * share, f.minStored, f.maxStored));
+        const double black = sourceLinear ? 1e-4 : 1.5 / 255.0;
+        if (!isSource && f.maxStored < black)
+            warn(d, f.name,
+                 "the picture is black (every value below " +
+                     std::string(sourceLinear ? "1e-4" : "1.5/255") +
+                     "): the match makes everything nearly black");
+        else if (f.distinct <= 16)
+            warn(d, f.name,
+                 fmt("the picture has only %.0f distinct colours: the match asks for steps, "
+                     "which the LUT makes into ramps (slopes limited)",
+                     static_cast<double>(f.distinct)));
+        if (f.masked > 0 && f.used < 1000)
+            warn(d, f.name,
+                 fmt("only %.0f pixels are left after the mask: the statistics are thin",
+                     static_cast<double>(f.used)));
+    }
+}
+
+std::array<ChannelCurve, 3> matchChannels(const detail::ChannelStats& src,
+                                          const detail::ChannelStats& ref, const MatchOptions& o,
+                                          const char* stage, Diagnostics& d) {
+    std::array<ChannelCurve, 3> curves;
+    for (int c = 0; c < 3; ++c) {
+        CurveLimits limits;
+        limits.minSlope = o.minSlope;
+        limits.maxSlope = o.maxSlope;
+        limits.smoothing = src.smoothing[static_cast<std::size_t>(c)];
+        CurveNotes notes;
+        curves[static_cast<std::size_t>(c)] =
+            matchHistograms(src.histograms[static_cast<std::size_t>(c)],
+                            ref.histograms[static_cast<std::size_t>(c)], limits, &notes);
+        // Limits that bite on a visible share of the picture are worth a word; a few levels
+        // next to a spike in a histogram are not.
+        if (notes.slopeLimited && notes.limitedShare > 0.01)
+            warn(d, "",
+                 std::string(stage) + ", " + channelName(c) +
+                     fmt(": the histogram match asks for slopes from %.3g to %.3g; limited to "
+                         "[%.3g, %.3g] so the LUT stays smooth (%.3g%% of the source's pixels "
+                         "are where it bites)",
+                         notes.flattestAsked, notes.steepestAsked, o.minSlope, o.maxSlope,
+                         100.0 * notes.limitedShare));
+    }
+    return curves;
+}
+
+// Whether the transfer tabulates (the size asked for, full strength) into a LUT that does not
+// fold colours over and never goes down along a channel's own axis or along grey, as the report
+// will measure it.
+bool cleanShape(const MatchTransfer& t, const MatchOptions& o) {
+    MatchOptions q;
+    q.size = o.size;
+    q.nthreads = o.nthreads;
+    const LutQuality shape = measureLutQuality(bakeMatch(t, q), t.linear, t.domainMin, t.domainMax,
+                                               Interpolation::Tetrahedral);
+    // Along grey, a drop of a quarter of an 8-bit step is invisible; more is a reversal.
+    return shape.foldedCells == 0 && shape.decreasingSteps == 0 && shape.largestGreyDrop <= 0.25;
+}
+
+struct Fitted {
+    MatchTransfer transfer;
+    double seconds = 0.0;
+};
+
+} // namespace
+
+MatchFitResult fitMatch(const MatchPicture& source, const std::vector<MatchPicture>& references,
+                        const MatchOptions& o) {
+    return detail::fitMatch(source, references, o, nullptr);
+}
+
+MatchFitResult detail::fitMatch(const MatchPicture& source,
+                                const std::vector<MatchPicture>& references, const MatchOptions& o,
+                                MatchContext* context) {
+    const auto start = Clock::now();
+    if (references.empty())
+        throw Error("match: no reference picture");
+    if (o.size < 2 || o.size > 129)
+        throw Error("match: the LUT size must be 2..129, not " + std::to_string(o.size));
+    MatchFinish::fromOptions(o, source.linear).check();
+    if (!(o.minSlope > 0.0) || !(o.maxSlope >= 1.0) || !(o.maxGain >= 1.0))
+        throw Error("match: the slope and gain limits must be positive (max >= 1)");
+
+    MatchFitResult res;
+    MatchReport& rep = res.report;
+    rep.asked = o.method;
+    rep.linear = source.linear;
+    rep.references = static_cast<int>(references.size());
+    const bool linear = source.linear;
+    constexpr std::size_t kMaxPerPicture = std::size_t(1) << 22;
+
+    std::vector<detail::PictureFacts> srcFacts, refFacts;
+    SampleSet src = detail::collectSamples({&source}, linear, kMaxPerPicture, srcFacts, o.nthreads);
+    std::vector<const MatchPicture*> refPtrs;
+    for (const auto& r : references)
+        refPtrs.push_back(&r);
+    const SampleSet ref = detail::collectSamples(
+        refPtrs, linear, std::max<std::size_t>(kMaxPerPicture / references.size(), 1 << 16),
+        refFacts, o.nthreads);
+    rep.sourcePixels = srcFacts[0].pixels;
+    rep.sourceUsed = srcFacts[0].used;
+    for (const auto& f : refFacts) {
+        rep.referencePixels += f.pixels;
+        rep.referenceUsed += f.used;
+    }
+    pictureWarnings(srcFacts, true, linear, res.diagnostics);
+    pictureWarnings(refFacts, false, linear, res.diagnostics);
+
+    // The domain: the source's range and at least [0, 1]; a scene-linear source gets a stop of
+    // headroom above its brightest value.
+    MatchTransfer shape;
+    shape.linear = linear;
+    for (int c = 0; c < 3; ++c) {
+        double lo = 0.0, hi = 1.0;
+        for (const auto& v : src.values) {
+            lo = std::min(lo, decodeWorking(v[c], linear));
+            hi = std::max(hi, decodeWorking(v[c], linear));
+        }
+        shape.domainMin[c] = lo;
+        shape.domainMax[c] = linear && hi > 1.0 ? 2.0 * hi : hi;
+    }
+
+    const detail::ChannelStats srcStats =
+        detail::channelStats(src.values, src.weights, src.codeAligned, o.nthreads);
+    const detail::ChannelStats refStats =
+        detail::channelStats(ref.values, ref.weights, ref.codeAligned, o.nthreads);
+    const ColourMoments refMoments = detail::colourMoments(ref.values, ref.weights, o.nthreads);
+
+    const bool all = o.method == MatchMethod::Auto;
+    auto wants = [&](MatchMethod m) {
+        return all || o.method == m ||
+               (o.method == MatchMethod::Regularised && m == MatchMethod::HmMklHm);
+    };
+    std::vector<Fitted> fitted;
+    Diagnostics hmNotes, mklNotes, hmmklNotes, regNotes;
+    std::array<ChannelCurve, 3> h1;
+    if (wants(MatchMethod::Hm) || wants(MatchMethod::HmMklHm)) {
+        const auto t = Clock::now();
+        h1 = matchChannels(srcStats, refStats, o, "HM", hmNotes);
+        if (wants(MatchMethod::Hm)) {
+            Fitted f{shape, 0.0};
+            f.transfer.method = MatchMethod::Hm;
+            f.transfer.pre = h1;
+            f.seconds = secondsSince(t);
+            fitted.push_back(std::move(f));
+        }
+    }
+    auto mklWarning = [&](const MklNotes& n, Diagnostics& d) {
+        if (n.gainLimited)
+            warn(d, n.sourceSpread * 255.0 < 2.0 ? source.name : "",
+                 fmt("the MKL map asks for colour gains from %.3g to %.3g; limited to [1/%.3g, "
+                     "%.3g]",
+                     n.smallestGain, n.largestGain, o.maxGain) +
+                     (n.sourceSpread * 255.0 < 2.0
+                          ? fmt(" (the source is almost flat in some colour direction: spread "
+                                "%.2g 8-bit steps; its noise would become colour)",
+                                n.sourceSpread * 255.0)
+                          : std::string()));
+    };
+    if (wants(MatchMethod::Mkl)) {
+        const auto t = Clock::now();
+        MklNotes notes;
+        Fitted f{shape, 0.0};
+        f.transfer.method = MatchMethod::Mkl;
+        f.transfer.affine =
+            mongeKantorovich(detail::colourMoments(src.values, src.weights, o.nthreads), refMoments,
+                             o.maxGain, 1e-10, &notes);
+        mklWarning(notes, mklNotes);
+        f.seconds = secondsSince(t);
+        fitted.push_back(std::move(f));
+    }
+    std::vector<glm::vec3> lattice; // u = h1(w) of the source samples
+    if (wants(MatchMethod::HmMklHm)) {
+        const auto t = Clock::now();
+        Fitted f{shape, 0.0};
+        f.transfer.method = MatchMethod::HmMklHm;
+        f.transfer.pre = h1;
+        lattice = detail::mapValues(
+            src.values,
+            [&h1](const glm::dvec3& w) { return glm::dvec3(h1[0](w.x), h1[1](w.y), h1[2](w.z)); },
+            o.nthreads);
+        MklNotes notes;
+        f.transfer.affine =
+            mongeKantorovich(detail::colourMoments(lattice, src.weights, o.nthreads), refMoments,
+                             o.maxGain, 1e-10, &notes);
+        mklWarning(notes, hmmklNotes);
+        const AffineColourMap a = f.transfer.affine;
+        const std::vector<glm::vec3> mixed = detail::mapValues(
+            lattice, [&a](const glm::dvec3& u) { return a(u); }, o.nthreads);
+        const detail::ChannelStats mixedStats =
+            detail::channelStats(mixed, src.weights, false, o.nthreads);
+        f.transfer.post = matchChannels(mixedStats, refStats, o, "HM after MKL", hmmklNotes);
+        f.seconds = secondsSince(t) + (fitted.empty() ? 0.0 : fitted.front().seconds);
+        fitted.push_back(std::move(f));
+    }
+    if (wants(MatchMethod::Regularised)) {
+        const auto t = Clock::now();
+        const MatchTransfer& baseTransfer = fitted.back().transfer; // HM-MKL-HM
+        Fitted f{baseTransfer, 0.0};
+        f.transfer.method = MatchMethod::Regularised;
+        detail::TransportFitOptions to;
+        to.size = std::min(o.size, 17);
+        to.minSlope = o.minSlope;
+        to.nthreads = o.nthreads;
+        SampleSet thin;
+        thin.values = lattice;
+        thin.weights = src.weights;
+        thin = detail::thinSamples(thin, 1 << 16);
+        const SampleSet refThin = detail::thinSamples(ref, 1 << 16);
+        const std::vector<glm::vec3> startValues = detail::mapValues(
+            thin.values, [&](const glm::dvec3& u) { return baseTransfer.workingOutput(u); },
+            o.nthreads);
+        f.transfer.residualMin = baseTransfer.toLattice(shape.domainMin);
+        f.transfer.residualMax = baseTransfer.toLattice(shape.domainMax);
+        const auto r = detail::fitTransport(
+            thin.values, thin.weights, startValues, refThin, f.transfer.residualMin,
+            f.transfer.residualMax,
+            [&](const glm::dvec3& u) { return baseTransfer.workingOutput(u); }, to);
+        f.transfer.residualSize = r.size;
+        f.transfer.residual = r.residual;
+        // The correction may bend the table where the base map is steep; it is scaled down until
+        // the LUT neither folds nor goes down along a channel's axis or grey (0 = HM-MKL-HM).
+        double scale = 1.0;
+        while (scale > 0.0 && !cleanShape(f.transfer, o)) {
+            scale = scale > 0.1 ? scale * 0.5 : 0.0;
+            for (std::size_t i = 0; i < r.residual.size(); ++i)
+                f.transfer.residual[i] = r.residual[i] * static_cast<float>(scale);
+        }
+        if (scale < 1.0)
+            warn(regNotes, "",
+                 fmt("the regularised correction is scaled to %.3g%% so the LUT does not fold "
+                     "colours over",
+                     100.0 * scale));
+        f.seconds = secondsSince(t) + fitted.back().seconds;
+        fitted.push_back(std::move(f));
+    }
+
+    // Every candidate against the reference (auto chooses by it; otherwise it is the report's).
+    const SampleSet srcThin = detail::thinSamples(src, 1 << 15);
+    const SampleSet refThin = detail::thinSamples(ref, 1 << 15);
+    const ColourDistribution refDist(detail::labOfWorking(refThin.values, linear, o.nthreads),
+                                     refThin.weights, o.nthreads);
+    const ColourDistribution srcDist(detail::labOfWorking(srcThin.values, linear, o.nthreads),
+                                     srcThin.weights, o.nthreads);
+    rep.before = distributionDistance(srcDist, refDist);
+    for (const Fitted& f : fitted) {
+        MatchCandidate c;
+        c.method = f.transfer.method;
+        c.seconds = f.seconds;
+        if (all || f.transfer.method == o.method) {
+            const auto out = detail::mapValues(
+                srcThin.values,
+                [&](const glm::dvec3& w) {
+                    return f.transfer.workingOutput(f.transfer.toLattice(
+                        glm::dvec3(decodeWorking(w.x, linear), decodeWorking(w.y, linear),
+                                   decodeWorking(w.z, linear))));
+                },
+                o.nthreads);
+            c.after = distributionDistance(
+                ColourDistribution(detail::labOfWorking(out, linear, o.nthreads), srcThin.weights,
+                                   o.nthreads),
+                refDist);
+            rep.candidates.push_back(c);
+        }
+    }
+    // The choice: the closest among the candidates whose LUT does not fold and never goes down
+    // along a channel's axis or grey (all of them when none is clean); a simpler method
+    // (earlier in the list) within kSimpler of it wins.
+    constexpr double kSimpler = 1.05;
+    std::size_t chosen = 0;
+    if (all) {
+        std::vector<bool> clean(rep.candidates.size());
+        bool anyClean = false;
+        for (std::size_t i = 0; i < rep.candidates.size(); ++i) {
+            clean[i] = cleanShape(fitted[i].transfer, o);
+            anyClean = anyClean || clean[i];
+        }
+        double best = INFINITY;
+        for (std::size_t i = 0; i < rep.candidates.size(); ++i)
+            if (clean[i] || !anyClean)
+                best = std::min(best, rep.candidates[i].after.slicedWasserstein);
+        for (std::size_t i = 0; i < rep.candidates.size(); ++i)
+            if ((clean[i] || !anyClean) &&
+                rep.candidates[i].after.slicedWasserstein <= kSimpler * best + 1e-9) {
+                chosen = i;
+                break;
+            }
+        rep.choice = fmt("auto: the closest to the reference (sliced Wasserstein %.3g) of the "
+                         "methods whose LUT does not fold, or a simpler one within 5%% of it",
+                         best);
+    } else {
+        for (std::size_t i = 0; i < fitted.size(); ++i)
+            if (fitted[i].transfer.method == o.method)
+                chosen = i;
+        rep.choice = "asked for";
+    }
+    const MatchMethod m = all ? rep.candidates[chosen].method : fitted[chosen].transfer.method;
+    for (std::size_t i = 0; i < fitted.size(); ++i)
+        if (fitted[i].transfer.method == m)
+            res.transfer = fitted[i].transfer;
+    rep.method = m;
+    // The warnings of the parts the chosen method uses.
+    const Diagnostics* parts[3] = {&hmNotes, &mklNotes, &hmmklNotes};
+    const bool use[3] = {
+        m == MatchMethod::Hm || m == MatchMethod::HmMklHm || m == MatchMethod::Regularised,
+        m == MatchMethod::Mkl, m == MatchMethod::HmMklHm || m == MatchMethod::Regularised};
+    for (int i = 0; i < 3; ++i)
+        if (use[i])
+            res.diagnostics.insert(res.diagnostics.end(), parts[i]->begin(), parts[i]->end());
+    rep.secondsFit = secondsSince(start);
+    if (context) {
+        context->reference = refDist;
+        context->source = std::move(src);
+    }
+    return res;
+}
+
+} // namespace lut

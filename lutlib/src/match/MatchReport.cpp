@@ -1,0 +1,59 @@
+// The text of a match report: see lut/match/MatchReport.h.
+#include "lut/match/MatchReport.h"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+
+namespace lut {
+
+namespace {
+
+std::string fmt(const char* f, ...) {
+    char buf[768];
+    va_list args;
+    va_start(args, f);
+    std::vsnprintf(buf, sizeof buf, f, args);
+    va_end(args);
+    return buf;
+}
+
+std::string distance(const DistributionDistance& d) {
+    return fmt("sliced Wasserstein %.3g (CIELAB), quantile ΔE2000 %.3g", d.slicedWasserstein,
+               d.quantileDeltaE);
+}
+
+double share(std::size_t part, std::size_t whole) {
+    return 100.0 * static_cast<double>(part) / static_cast<double>(std::max<std::size_t>(whole, 1));
+}
+
+} // namespace
+
+std::string MatchReport::str() const {
+    std::string s;
+    s += fmt("method   %s (%s)\n", toString(method), choice.c_str());
+    if (candidates.size() > 1)
+        for (const auto& c : candidates)
+            s += fmt("         %-11s %s; fitted in %.3g s\n", toString(c.method),
+                     distance(c.after).c_str(), c.seconds);
+    s += fmt("pixels   source: %zu of %zu counted; reference%s: %zu of %zu\n", sourceUsed,
+             sourcePixels, references == 1 ? "" : "s", referenceUsed, referencePixels);
+    s += fmt("before   %s\n", distance(before).c_str());
+    s += fmt("after    %s\n", distance(after).c_str());
+    s += fmt("LUT      against the transfer it tabulates, over the source's %zu colours: %s%s\n",
+             interpolationColours, interpolation.str().c_str(), linear ? " (ACEScct steps)" : "");
+    s += fmt("shape    %s\n", quality.str().c_str());
+    if (clippedValues > 0 || tableValuesOutside > 0)
+        s += fmt("clipped  %.3g%% of the source's channel values land %s (up to %.3g 8-bit steps "
+                 "beyond); %.3g%% of the table's values are there\n",
+                 share(clippedValues, values), linear ? "below 0" : "outside [0, 1]",
+                 clippedMaxSteps, share(tableValuesOutside, tableValues));
+    else
+        s += fmt("clipped  nothing: the result stays %s\n",
+                 linear ? "at or above 0" : "inside [0, 1]");
+    s += fmt("time     %.3g s (fit %.3g, LUT %.3g, measures %.3g)\n", secondsTotal(), secondsFit,
+             secondsBake, secondsMeasure);
+    return s;
+}
+
+} // namespace lut

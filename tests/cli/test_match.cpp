@@ -1,0 +1,175 @@
+// lutkit match end to end: the sample scene graded by a formula written here (channel mix,
+// curves, saturation), the graded pixels flipped and shuffled, matched; the written .cube is
+// evaluated by OpenColorIO's processor (the oracle), never by lutkit, and must land near the
+// truly graded scene (issue 23: mean 1.0, p99 8 8-bit steps). Then the command's rules: -y, bad
+// usage, masks, the report picture, the game's LUT.
+#include "OcioTestUtil.h"
+#include "TestSupport.h"
+
+#include "lut/formats/ImageIO.h"
+#include "lut/formats/Registry.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+#include <random>
+
+namespace fs = std::filesystem;
+using namespace lut::test;
+using ::testing::HasSubstr;
+
+namespace {
+
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
+
+double q8(double v) {
+    return std::round(std::clamp(v, 0.0, 1.0) * 255.0) / 255.0;
+}
+
+// The look: channel mix, a lift and gamma on red, an S-curve on green, a gain on blue, then
+// saturation 1.25 about Rec.709 luma.
+glm::dvec3 grade(glm::dvec3 in) {
+    const double m[3][3] = {{0.86, 0.10, 0.04}, {0.06, 0.84, 0.10}, {0.02, 0.14, 0.84}};
+    double x[3], c[3];
+    for (int i = 0; i < 3; ++i)
+        x[i] = m[i][0] * in.x + m[i][1] * in.y + m[i][2] * in.z;
+    c[0] = 0.04 + 0.96 * std::pow(std::max(x[0], 0.0), 0.85);
+    c[1] = 0.5 + 0.5 * std::tanh(2.4 * (x[1] - 0.5)) / std::tanh(1.2);
+    c[2] = 0.92 * x[2] + 0.02;
+    const double luma = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    return {luma + 1.25 * (c[0] - luma), luma + 1.25 * (c[1] - luma), luma + 1.25 * (c[2] - luma)};
+}
+
+struct Scene {
+    std::string dir, source, reference;
+    lut::Image scene, truth;
+};
+
+const Scene& scene() {
+    static const Scene s = [] {
+        Scene out;
+        out.dir = tempDir() + "-match";
+        fs::remove_all(out.dir);
+        fs::create_directories(out.dir);
+        out.source = samplePath("sample_scene.png");
+        out.scene = lut::formats::readImage(out.source).image;
+        const int w = out.scene.width(), h = out.scene.height();
+        out.truth = lut::Image(w, h, 1.0f);
+        for (int i = 0; i < w * h; ++i) {
+            const float* p = out.scene.data() + 4 * i;
+            const glm::dvec3 g = grade(glm::dvec3(p[0], p[1], p[2]));
+            for (int c = 0; c < 3; ++c)
+                out.truth.data()[4 * i + c] = static_cast<float>(q8(g[c]));
+        }
+        std::vector<int> order(static_cast<std::size_t>(w * h));
+        std::iota(order.begin(), order.end(), 0);
+        std::shuffle(order.begin(), order.end(), std::mt19937(7));
+        lut::Image ref(w, h, 1.0f);
+        for (int i = 0; i < w * h; ++i)
+            for (int c = 0; c < 3; ++c) // flipped (w*h-1-k) and shuffled
+                ref.data()[4 * i + c] = out.truth.data()[4 * (w * h - 1 - order[i]) + c];
+        out.reference = out.dir + "/reference.png";
+        lut::formats::writeImage(out.reference, ref,
+                                 lut::formats::ImageWriteOptions(8, false, false));
+        return out;
+    }();
+    return s;
+}
+
+} // namespace
+
+TEST(CliMatch, TheLutOpenColorIOReadsLandsOnTheTrueGrade) {
+    const Scene& s = scene();
+    const std::string out = s.dir + "/look.cube";
+    const auto r =
+        runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " -y --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+    EXPECT_THAT(r.out, HasSubstr("\"method\": "));
+    const auto p = ocioFileProcessor(out);
+    std::vector<double> steps;
+    for (int i = 0; i < s.scene.width() * s.scene.height(); ++i) {
+        const float* in = s.scene.data() + 4 * i;
+        const glm::vec3 v = ocioEval(p, glm::vec3(in[0], in[1], in[2]));
+        for (int c = 0; c < 3; ++c)
+            steps.push_back(std::fabs(q8(v[c]) - s.truth.data()[4 * i + c]) * 255.0);
+    }
+    const double mean = std::accumulate(steps.begin(), steps.end(), 0.0) / steps.size();
+    std::sort(steps.begin(), steps.end());
+    const double p99 = steps[static_cast<std::size_t>(0.99 * (steps.size() - 1))];
+    EXPECT_LE(mean, 1.0);
+    EXPECT_LE(p99, 8.0);
+    RecordProperty("mean_steps", std::to_string(mean));
+    RecordProperty("p99_steps", std::to_string(p99));
+}
+
+TEST(CliMatch, OutputRulesAndBadUsage) {
+    const Scene& s = scene();
+    const std::string out = s.dir + "/rules.cube";
+    ASSERT_EQ(
+        runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " --method hm -q")
+            .exitCode,
+        0);
+    const auto before = fs::last_write_time(out);
+    auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.err, HasSubstr("-y"));
+    EXPECT_EQ(fs::last_write_time(out), before);
+    r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " -y --method hmm");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_THAT(r.err, HasSubstr("did you mean 'hm'"));
+    r = runCli("match " + q(s.source) + " " + q(out));
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_THAT(r.err, HasSubstr("REFERENCE"));
+    r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " -y --strength 3");
+    EXPECT_EQ(r.exitCode, 2);
+    // the output may not be an input
+    r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(s.reference) + " -y");
+    EXPECT_EQ(r.exitCode, 1);
+}
+
+TEST(CliMatch, AMaskOfAnotherSizeIsNamed) {
+    const Scene& s = scene();
+    const std::string mask = s.dir + "/small-mask.png";
+    lut::formats::writeImage(mask, lut::Image(10, 10, 1.0f), lut::formats::ImageWriteOptions(8));
+    const auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " +
+                          q(s.dir + "/masked.cube") + " -y --mask-source " + q(mask));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.err, HasSubstr("sample_scene.png: the mask is 10x10"));
+}
+
+TEST(CliMatch, AMaskLeavesPixelsOut) {
+    // Every pixel masked but the top rows (the sky): the match only sees sky, so the report
+    // counts those rows only.
+    const Scene& s = scene();
+    const int w = s.scene.width(), h = s.scene.height();
+    lut::Image mask(w, h, 0.0f);
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < w; ++x)
+            std::fill(mask.pixel(x, y), mask.pixel(x, y) + 4, 1.0f);
+    const std::string path = s.dir + "/sky-mask.png";
+    lut::formats::writeImage(path, mask, lut::formats::ImageWriteOptions(8));
+    const auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " +
+                          q(s.dir + "/sky.cube") + " -y --json --mask-source " + q(path));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("\"source_counted\": " + std::to_string(20 * w)));
+}
+
+TEST(CliMatch, ReportPictureAndTheGamesLut) {
+    const Scene& s = scene();
+    const std::string png = s.dir + "/report.png", game = s.dir + "/color_grading_lut.nutexb";
+    const auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(game) +
+                          " -y --method hm-mkl-hm --report-image " + q(png));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("in game"));
+    const auto pic = lut::formats::readImage(png);
+    EXPECT_EQ(pic.image.width(), 3 * 480 + 4 * 16);
+    const lut::LutFile f = lut::formats::readLut(game);
+    ASSERT_TRUE(f.cube.has_value());
+    EXPECT_EQ(f.cube->size(), 16);
+}

@@ -1,0 +1,180 @@
+// `-` as the output of every command that writes (issue 22): the data alone on standard output,
+// every note, report, JSON and "wrote" line on standard error. Each row pipes the command into a
+// reader that takes standard input -- `lutkit info -` for LUTs (`lutkit convert a.cube - --format
+// cube | lutkit info -`), OpenImageIO for pictures -- and checks that the report went to stderr.
+#include "TestSupport.h"
+
+#include "lut/Image.h"
+#include "lut/formats/ImageIO.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace lut;
+using namespace lut::test;
+using ::testing::HasSubstr;
+
+namespace {
+
+std::string workDir() {
+    const std::string d = tempDir() + "-stdout";
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+// A small curved .cube of edge n.
+std::string writeCube(const std::string& path, int n, float gamma) {
+    std::ofstream f(path);
+    f << "LUT_3D_SIZE " << n << "\n";
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r)
+                f << std::pow(r / float(n - 1), gamma) << " " << std::pow(g / float(n - 1), gamma)
+                  << " " << std::pow(b / float(n - 1), gamma) << "\n";
+    return path;
+}
+
+struct Inputs {
+    std::string dir, a, b, shot, strip, adjustments;
+};
+
+Inputs makeInputs() {
+    Inputs in;
+    in.dir = workDir();
+    in.a = writeCube(in.dir + "/a.cube", 9, 0.8f);
+    in.b = writeCube(in.dir + "/b.cube", 5, 1.2f);
+    Image shot(320, 200);
+    for (int y = 0; y < shot.height(); ++y)
+        for (int x = 0; x < shot.width(); ++x) {
+            float* p = shot.pixel(x, y);
+            p[0] = x / 319.0f;
+            p[1] = y / 199.0f;
+            p[2] = 0.3f;
+            p[3] = 1.0f;
+        }
+    in.shot = in.dir + "/shot.png";
+    formats::writeImage(in.shot, shot, formats::ImageWriteOptions(8, false, false));
+    in.strip = in.dir + "/neutral.png";
+    EXPECT_EQ(runCli("neutral " + q(in.strip)).exitCode, 0);
+    in.adjustments = in.dir + "/adj.txt";
+    std::ofstream(in.adjustments) << "# lutkit adjustment list 1\ncontrast 0.2\n";
+    return in;
+}
+
+struct Row {
+    std::string name;
+    std::string args;   // the command, writing to -
+    bool image;         // a picture on stdout (else a LUT: lutkit info - --in-format cube)
+    std::string report; // a word of the report, expected on stderr
+};
+
+std::vector<Row> rows(const Inputs& in) {
+    const std::string a = q(in.a), b = q(in.b);
+    return {
+        {"neutral", "neutral - --format cube --size 5", false, "wrote"},
+        {"convert", "convert " + a + " - --format cube", false, "wrote"},
+        {"convert-json", "convert " + a + " - --format cube --json", false, "\"output\""},
+        {"compose", "compose " + a + " " + b + " - --format cube", false, "wrote"},
+        {"invert", "invert " + a + " - --format cube", false, "wrote"},
+        {"resize", "resize " + a + " - --size 5 --format cube", false, "wrote"},
+        {"smooth", "smooth " + a + " - --format cube", false, "wrote"},
+        {"mix", "mix " + a + " " + b + " - --strength 0.5 --format cube", false, "wrote"},
+        {"adjust", "adjust " + a + " --adjustments " + q(in.adjustments) + " - --format cube",
+         false, "wrote"},
+        {"extract", "extract " + q(in.strip) + " - --format cube --target raw", false, "wrote"},
+        {"fit", "fit " + q(in.shot) + " " + q(in.shot) + " - --format cube", false, "wrote"},
+        {"bake", "bake - --lut " + a + " --format resolve_cube --cubesize 9", false, "error"},
+        {"bake-json", "bake - --lut " + a + " --format resolve_cube --cubesize 9 --json", false,
+         "\"error\""},
+        {"plot", "plot " + a + " - --format png", true, "wrote"},
+        {"embed", "embed " + q(in.shot) + " - --format png", true, "embedded"},
+        {"diff-heatmap", "diff " + a + " " + b + " --heatmap - --format png", true, "ΔE"},
+        {"apply", "apply --lut " + a + " " + q(in.shot) + " -o - --format png -v", true, "->"},
+        {"preview", "preview " + q(in.shot) + " -o - --format png --lut " + a + " -v", true,
+         "screenshot"},
+    };
+}
+
+} // namespace
+
+TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
+    const Inputs in = makeInputs();
+    for (const Row& row : rows(in)) {
+        SCOPED_TRACE(row.name + ": lutkit " + row.args);
+        const std::string data = in.dir + "/" + row.name + (row.image ? ".png" : ".cube");
+        const std::string err = in.dir + "/" + row.name + ".err";
+        const std::string reader = in.dir + "/" + row.name + ".read";
+        // The command's stdout piped into the reader, as a user would.
+        const std::string cli = std::string("'") + LUTKIT_CLI + "'";
+        const std::string cmd =
+            "set -o pipefail; " + cli + " " + row.args + " 2>" + q(err) + " </dev/null | tee " +
+            q(data) +
+            (row.image ? " >/dev/null"
+                       : " | " + cli + " info - --in-format cube >" + q(reader) + " 2>&1");
+        const int status = std::system(("bash -c " + q(cmd)).c_str());
+        EXPECT_EQ(status, 0) << slurp(err) << slurp(reader);
+        EXPECT_THAT(slurp(err), HasSubstr(row.report)) << "the report on stderr";
+        const std::string bytes = slurp(data);
+        ASSERT_FALSE(bytes.empty());
+        if (row.image) {
+            ASSERT_GE(bytes.size(), 8u);
+            EXPECT_EQ(bytes.substr(1, 3), "PNG") << "PNG bytes first";
+            // The whole of stdout is one picture: it ends with PNG's IEND chunk and its CRC.
+            EXPECT_EQ(bytes.substr(bytes.size() - 8, 4), "IEND") << "nothing after the picture";
+            auto img = OIIO::ImageInput::open(data);
+            ASSERT_TRUE(img) << OIIO::geterror();
+            std::vector<unsigned char> px(img->spec().image_bytes());
+            EXPECT_TRUE(
+                img->read_image(0, 0, 0, img->spec().nchannels, OIIO::TypeDesc::UINT8, px.data()));
+            EXPECT_EQ(bytes.find("wrote"), std::string::npos);
+        } else {
+            EXPECT_THAT(slurp(reader), HasSubstr("cube")) << "lutkit info - read it";
+            EXPECT_EQ(bytes.rfind("LUT_", 0) == 0 || bytes.rfind("TITLE", 0) == 0 ||
+                          bytes.rfind("#", 0) == 0,
+                      true)
+                << bytes.substr(0, 80);
+            EXPECT_EQ(bytes.find("wrote"), std::string::npos) << "no report in the data";
+            EXPECT_EQ(bytes.find("{"), std::string::npos) << "no JSON in the data";
+        }
+    }
+}
+
+TEST(StdoutOutputs, DevStdoutIsStandardOutputToo) {
+    const Inputs in = makeInputs();
+    const RunResult r = runCli("convert " + q(in.a) + " /dev/stdout --format cube");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out.substr(0, 200);
+    EXPECT_THAT(r.err, HasSubstr("wrote"));
+    EXPECT_EQ(r.out.rfind("LUT_3D_SIZE", 0) == 0 || r.out.rfind("TITLE", 0) == 0 ||
+                  r.out.rfind("#", 0) == 0,
+              true)
+        << r.out.substr(0, 80);
+}
+
+TEST(StdoutOutputs, AFileOutputKeepsItsReportOnStdout) {
+    const Inputs in = makeInputs();
+    const RunResult r = runCli("convert " + q(in.a) + " " + q(in.dir + "/x.cube"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("wrote"));
+    EXPECT_EQ(r.err.find("wrote"), std::string::npos);
+}
