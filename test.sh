@@ -19,7 +19,9 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHA
 
 stage="release"
 echo "== Release build and tests"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DLUTKIT_WARNINGS_AS_ERRORS=ON >/dev/null
+# Tests and benchmarks on (./run.sh builds the same tree without them).
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DLUTKIT_WARNINGS_AS_ERRORS=ON \
+  -DLUTKIT_BUILD_TESTS=ON -DLUTKIT_BUILD_BENCH=ON >/dev/null
 cmake --build "$root/build" -j"$jobs"
 (cd "$root/build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs")
 

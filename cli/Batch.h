@@ -21,6 +21,13 @@ struct BatchJob {
     std::string refused; // planned as a failure: this job's error (e.g. a missing frame)
 };
 
+// Which files of an input folder are inputs: image files unless `accepts` is set (convert takes
+// every LUT file); `what` names them in the message for a folder without one ("LUT files").
+struct FolderFiles {
+    std::function<bool(const std::string&)> accepts;
+    std::string what;
+};
+
 struct BatchPlan {
     std::vector<BatchJob> jobs;
     std::vector<std::string> notes; // e.g. "frames 4, 6-8 of f.%04d.png are missing"
@@ -39,7 +46,7 @@ struct BatchPlan {
 // (the --lut file ...). Throws UsageError or lut::Error.
 BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions& output,
                     const std::vector<std::string>& protect, const std::string& frames = {},
-                    const std::string& outExtension = {});
+                    const std::string& outExtension = {}, const FolderFiles& folderFiles = {});
 
 // What a job may ask of the runner.
 class JobContext {

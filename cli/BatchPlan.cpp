@@ -31,7 +31,7 @@ bool isDir(const std::string& p) {
 }
 
 std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const std::string& frames,
-                                 std::vector<std::string>& notes) {
+                                 std::vector<std::string>& notes, const FolderFiles& folderFiles) {
     std::vector<Source> out;
     bool patternSeen = false;
     for (const auto& in : inputs) {
@@ -43,10 +43,15 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
             std::vector<fs::path> files;
             std::error_code ec;
             for (const auto& e : fs::directory_iterator(in, ec))
-                if (e.is_regular_file(ec) && formats::isImageExtension(e.path().string()))
+                if (e.is_regular_file(ec) &&
+                    (folderFiles.accepts ? folderFiles.accepts(e.path().string())
+                                         : formats::isImageExtension(e.path().string())))
                     files.push_back(e.path());
             if (files.empty())
-                throw Error(in + ": folder holds no image files (.png .jpg .tif .exr .dpx ...)");
+                throw Error(in + ": folder holds no " +
+                            (folderFiles.what.empty()
+                                 ? std::string("image files (.png .jpg .tif .exr .dpx ...)")
+                                 : folderFiles.what));
             std::sort(files.begin(), files.end());
             for (const auto& f : files)
                 out.push_back({f.string(), std::nullopt, {}});
@@ -93,7 +98,7 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
 
 BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions& output,
                     const std::vector<std::string>& protect, const std::string& frames,
-                    const std::string& outExtension) {
+                    const std::string& outExtension, const FolderFiles& folderFiles) {
     if (inputs.empty())
         throw UsageError("no input files");
     if (output.output.empty())
@@ -105,7 +110,7 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
     BatchPlan plan;
     std::vector<Source> sources;
     try {
-        sources = expandInputs(inputs, frames, plan.notes);
+        sources = expandInputs(inputs, frames, plan.notes, folderFiles);
     } catch (const UsageError&) {
         throw;
     }

@@ -14,6 +14,9 @@
 #include "lut/formats/LibraryMessages.h"
 #include "lut/io/TempFiles.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <new>
 
@@ -78,6 +81,11 @@ CommandLine::CommandLine(const RunHooks& hooks)
     setupMix(m_app, runner(hooks.mix, runMix, m_exitCode));
     setupPlot(m_app, runner(hooks.plot, runPlot, m_exitCode));
     setupAdjust(m_app, runner(hooks.adjust, runAdjust, m_exitCode));
+    setupCheck(m_app, runner(hooks.check, runCheck, m_exitCode));
+    setupChart(m_app, runner(hooks.chart, runChart, m_exitCode));
+    setupAtlas(m_app, runner(hooks.atlas, runAtlas, m_exitCode));
+
+    refuseNonFiniteNumbers(m_app);
 
     const std::vector<std::string> commands = commandNames(m_app);
     auto* help = m_app.add_subcommand("help", "Show the help of lutkit or of one command");
@@ -103,7 +111,19 @@ CommandLine::CommandLine(const RunHooks& hooks)
 int CommandLine::run(int argc, const char* const* argv) {
     installInterruptHandlers();        // the program's own run: Ctrl-C removes what is half-written
     formats::captureLibraryMessages(); // OpenColorIO logs nothing to the terminal
-    return run(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+    const int code = run(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+    // What went to standard output (reports, --json, lists) is output the user asked for: a
+    // full disk or a closed pipe is a failed write like any other (`info --json > /dev/full`).
+    errno = 0;
+    std::cout.flush();
+    const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (failed) {
+        const int err = errno;
+        std::cerr << "lutkit: error: -: cannot write standard output"
+                  << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+        return code == kExitOk ? kExitFailure : code;
+    }
+    return code;
 }
 
 std::optional<std::string>

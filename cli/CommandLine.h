@@ -8,8 +8,11 @@
 // validators and conversions users get.
 #include "commands/Adjust.h"
 #include "commands/Apply.h"
+#include "commands/Atlas.h"
 #include "commands/Bake.h"
 #include "commands/Bench.h"
+#include "commands/Chart.h"
+#include "commands/Check.h"
 #include "commands/Compose.h"
 #include "commands/Convert.h"
 #include "commands/Diff.h"
@@ -61,6 +64,9 @@ struct RunHooks {
     RunFn<PlotCommandOptions> plot;
     RunFn<AdjustCommandOptions> adjust;
     RunFn<MatchCommandOptions> match;
+    RunFn<CheckCommandOptions> check;
+    RunFn<ChartCommandOptions> chart;
+    RunFn<AtlasCommandOptions> atlas;
 };
 
 class CommandLine {

@@ -67,9 +67,15 @@ inline std::string vec3(const glm::dvec3& v) {
 }
 
 inline std::string stats(const ErrorStats& s) {
+    // max_is_bound: max bounds the difference over every input (max_seen: the largest at the
+    // held_out_points between the lattice points; 0 points: max is exact)
+    std::string bound;
+    if (s.bounded)
+        bound = ", \"max_is_bound\": true, \"max_seen\": " + number(s.sampledMax) +
+                ", \"held_out_points\": " + std::to_string(s.heldOutPoints);
     return "{\"max\": " + number(s.maxAbs) + ", \"mean\": " + number(s.meanAbs) +
            ", \"max_8bit_steps\": " + number(s.maxSteps8()) +
-           ", \"mean_8bit_steps\": " + number(s.meanSteps8()) +
+           ", \"mean_8bit_steps\": " + number(s.meanSteps8()) + bound +
            ", \"seconds\": " + number(s.seconds) + "}";
 }
 

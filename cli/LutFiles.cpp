@@ -85,6 +85,8 @@ std::string costText(const ErrorStats& error, std::size_t sanitizedEntries) {
     if (sanitizedEntries)
         s += " (" + std::to_string(sanitizedEntries) +
              " NaN/Inf entries of the input counted as 0 or +-65504)";
+    if (error.bounded)
+        s += "\n         max: " + error.coverage();
     return s;
 }
 

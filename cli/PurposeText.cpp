@@ -45,17 +45,23 @@ void printConversion(std::ostream& os, const PurposeConversion& c, const Convers
     if (r.exactError.count > 0) {
         os << "in game  what the game shows with the 8-bit LUT vs the edited colours, over "
            << r.measuredOver << ":\n";
-        os << "         exact composition:       " << r.exactError.str()
-           << (w.refine ? "" : "  (written)") << "\n";
-        os << "         least-squares refinement: " << r.refinedError.str()
-           << (w.refine ? "  (written)" : "  (--refine writes it)") << "\n";
+        os << "         exact composition:        " << r.exactError.str()
+           << (r.refined ? "" : "  (written)") << "\n";
+        if (r.refinementComputed) {
+            os << "         least-squares refinement: " << r.refinedError.str()
+               << (r.refined ? "  (written)" : "") << "\n";
+            os << "refine   fitted on " << r.fittedOn << "; written: " << r.decision << "\n";
+        } else {
+            os << "         least-squares refinement: not computed (--refine fits it on part of "
+                  "the colours and writes it if it beats the exact composition on the rest)\n";
+        }
     }
     if (r.clampedEntries > 0)
         os << "clamped  " << r.clampedEntries << " values the game cannot reach (up to "
            << r.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
 }
 
-std::string conversionJson(const std::optional<PurposeConversion>& c, bool refine) {
+std::string conversionJson(const std::optional<PurposeConversion>& c) {
     if (!c || !c->converted())
         return "null";
     auto err = [](const GameError& e) {
@@ -72,8 +78,18 @@ std::string conversionJson(const std::optional<PurposeConversion>& c, bool refin
         return js.str();
     }
     const SmashAuthoringResult& r = c->authoring;
-    js << ", \"exact\": " << err(r.exactError) << ", \"refined\": " << err(r.refinedError)
-       << ", \"written\": " << json::quote(refine ? "refined" : "exact")
+    js << ", \"exact\": " << err(r.exactError) << ", \"refined\": ";
+    if (r.refinementComputed) {
+        const std::string e = err(r.refinedError);
+        js << e.substr(0, e.size() - 1)
+           << ", \"held_out_mean\": " << json::number(r.heldOutRefined.meanSteps)
+           << ", \"exact_held_out_mean\": " << json::number(r.heldOutExact.meanSteps)
+           << ", \"fitted_on\": " << json::quote(r.fittedOn)
+           << ", \"decision\": " << json::quote(r.decision) << "}";
+    } else {
+        js << "null";
+    }
+    js << ", \"written\": " << json::quote(r.refined ? "refined" : "exact")
        << ", \"clamped\": " << r.clampedEntries << "}";
     return js.str();
 }
@@ -103,7 +119,6 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
             std::ostringstream os;
             ConversionWords w;
             w.interp = options.editInterpolation;
-            w.refine = options.refine;
             printConversion(os, *out.conversion, w);
             std::istringstream lines(os.str());
             for (std::string line; std::getline(lines, line);)
@@ -162,7 +177,7 @@ std::optional<LutPurpose> printPurposeOp(std::ostream& os, const PurposedPair& p
         // B made into the game's LUT on A's picture: A is the stage
         const bool staged = what.find("A's picture") != std::string::npos;
         printConversion(os, conversion,
-                        ConversionWords{staged ? p.aPath : std::string("neutral"), interp, false});
+                        ConversionWords{staged ? p.aPath : std::string("neutral"), interp});
     }
     if (p.out.known || !result.conversions.empty())
         return p.out.to;

@@ -30,16 +30,16 @@ std::optional<LutPurpose> purposeOption(const std::string& value);
 struct ConversionWords {
     std::string stage = "neutral";                     // the stage LUT the edit was made on
     Interpolation interp = Interpolation::Tetrahedral; // how the edit is evaluated
-    bool refine = false;                               // the refinement is shipped
 };
 
 // The report of a conversion, one line per fact:
 //   raw -> smash  "game     the LUT that makes Smash Ultimate show this edit ...",
-//                 "in game  ... exact composition ... refinement ...", "clamped ..."
+//                 "in game  ... exact composition ... refinement ...", "refine   ..."
+//                 (with --refine: what it was fitted on and which LUT is written), "clamped ..."
 //   smash -> raw  "edit     the edit this game LUT makes of the neutral game's picture ..."
 void printConversion(std::ostream& os, const PurposeConversion& c, const ConversionWords& words);
 // The same as a JSON object ("null" for no conversion).
-std::string conversionJson(const std::optional<PurposeConversion>& c, bool refine);
+std::string conversionJson(const std::optional<PurposeConversion>& c);
 
 // The LUT a command reads, turned into `wanted`. A note on stderr says what the file was taken
 // for when that changed the table (and what the conversion cost), or when the file does not say

@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 
 namespace lut::cli {
 
@@ -144,6 +146,15 @@ Choices preserveChoices() {
     return c;
 }
 
+Choices atlasActionChoices() {
+    Choices c{"atlas-action", "atlas action", {"build", "split", "info"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "build" && s != "split" && s != "info")
+            throw Error("unknown atlas action '" + s + "'");
+    };
+    return c;
+}
+
 Choices cornerChoices() {
     Choices c{"corner",
               "corner",
@@ -214,7 +225,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
           imageFormatChoices, compressionChoices, shaperChoices, matchMethodChoices,
-          preserveChoices}) {
+          preserveChoices, atlasActionChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;
@@ -398,6 +409,28 @@ CLI::Option* addMaxMemory(CLI::App& sub, std::string& target) {
                 return {};
             },
             "SIZE", "memory-size"));
+}
+
+CLI::Option* addSubimage(CLI::App& sub, int& target, const std::string& help) {
+    return sub.add_option("--subimage", target, help)->check(CLI::Range(0, 1023));
+}
+
+void refuseNonFiniteNumbers(CLI::App& app) {
+    const CLI::Validator finite(
+        [](std::string& v) -> std::string {
+            const char* s = v.c_str();
+            char* end = nullptr;
+            const double x = std::strtod(s, &end);
+            if (end != s && !std::isfinite(x))
+                return "value " + v + " is not a finite number";
+            return {};
+        },
+        "", "finite");
+    for (CLI::Option* o : app.get_options())
+        if (o->get_type_name().rfind("FLOAT", 0) == 0)
+            o->check(finite);
+    for (CLI::App* sub : app.get_subcommands({}))
+        refuseNonFiniteNumbers(*sub);
 }
 
 CLI::Option* addConfig(CLI::App& sub, std::string& target) {

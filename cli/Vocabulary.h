@@ -46,14 +46,15 @@ Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip,
 Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
 Choices matchMethodChoices(); // lutkit match --method: auto, hm, mkl, hm-mkl-hm, regularised
 Choices preserveChoices();    // lutkit match --preserve: luma, neutrals, skin
+Choices atlasActionChoices(); // lutkit atlas ACTION: build, split, info
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 
 constexpr const char* kChoicesValidatorPrefix = "choices:";
 constexpr const char* kMovedValidatorName = "moved";
 
-// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush or hald; also
-// pilot, godot, lattice)"
+// "unknown layout 'unrel'; did you mean 'unreal'? (expected unreal, unity, smush, hald, reshade or
+// unity-32; also pilot, godot, lattice, unreal-32)"
 std::string unknownNameMessage(const Choices& choices, const std::string& value);
 // Validator named "choices:<kind>": accepts what choices.accept accepts.
 CLI::Validator choicesValidator(const Choices& choices);
@@ -83,6 +84,12 @@ CLI::Option* addImageOutputFormat(CLI::App& sub, std::string& target, const std:
 CLI::Option* addCompression(CLI::App& sub, std::string& target);
 // --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together.
 CLI::Option* addMaxMemory(CLI::App& sub, std::string& target);
+// --subimage INT: which image of a file holding several (an OpenEXR part, a TIFF page, a GIF
+// frame; from 0). Unset: -1.
+CLI::Option* addSubimage(CLI::App& sub, int& target, const std::string& help);
+// Every FLOAT option of app and its subcommands refuses NaN and infinities as bad usage (CLI11
+// reads "nan" and "inf" as numbers, and its range checks let NaN through).
+void refuseNonFiniteNumbers(CLI::App& app);
 
 // Colour management (lut/formats/ColorTransform.h), named as ocioconvert and ociobakelut name
 // them: --config FILE, --from SPACE, --to SPACE, --look LOOKS and, for All, --lut-space SPACE,

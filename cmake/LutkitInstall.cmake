@@ -9,6 +9,7 @@
 #                                    lutkit::imageio (the module, for $<TARGET_FILE:...>)
 #   P/share/lutkit/ocio/config.ocio  lutkit's own OpenColorIO config (found relative to the
 #                                    executable, formats/src/ocio/ColorConfig.cpp)
+#   P/share/doc/lutkit/              README.md, CONTRIBUTING.md and docs/
 # tests/install checks the installed tree: the installed lutkit runs, and a one-file project
 # builds against it with find_package.
 include(CMakePackageConfigHelpers)
@@ -19,17 +20,20 @@ set(LUTKIT_INSTALL_MODULEDIR lib/lutkit)
 
 set_target_properties(lutkit_formats PROPERTIES EXPORT_NAME formats)
 set_target_properties(lutkit_imageio PROPERTIES EXPORT_NAME imageio)
+# Component `dev` (headers, static libraries, the CMake package): what a project building against
+# lutkit needs, left out of the .deb (cmake/LutkitPackage.cmake); everything else is the default
+# component, what users run.
 install(TARGETS lutlib lutkit_formats lutkit_imageio EXPORT lutkitTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
         LIBRARY DESTINATION ${LUTKIT_INSTALL_MODULEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lutlib/include/ ${PROJECT_SOURCE_DIR}/formats/include/
                   ${PROJECT_BINARY_DIR}/lutlib/generated/
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev FILES_MATCHING PATTERN "*.h")
 
 # Not CMAKE_INSTALL_DATADIR: found relative to the executable (bin/../share/lutkit).
 install(FILES ${PROJECT_SOURCE_DIR}/share/ocio/config.ocio DESTINATION share/lutkit/ocio)
 
-install(EXPORT lutkitTargets NAMESPACE lutkit:: DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})
+install(EXPORT lutkitTargets NAMESPACE lutkit:: DESTINATION ${LUTKIT_INSTALL_CMAKEDIR} COMPONENT dev)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/lutkitConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/lutkitConfig.cmake
                               INSTALL_DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})
@@ -38,4 +42,10 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/lutkitConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/lutkitConfig.cmake ${PROJECT_BINARY_DIR}/lutkitConfigVersion.cmake
               ${PROJECT_SOURCE_DIR}/cmake/LutkitLibraryDependencies.cmake
-        DESTINATION ${LUTKIT_INSTALL_CMAKEDIR})
+        DESTINATION ${LUTKIT_INSTALL_CMAKEDIR} COMPONENT dev)
+
+# The docs, where Debian puts a package's: share/doc/lutkit.
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CONTRIBUTING.md
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lutkit)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lutkit/docs
+        FILES_MATCHING PATTERN "*.md")

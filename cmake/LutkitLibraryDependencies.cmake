@@ -1,7 +1,8 @@
 # What lutkit's two libraries need wherever they are linked: lutkit::lutlib needs GLM and
-# Threads, lutkit::formats OpenColorIO and the native image codecs' libpng, zlib and OpenEXR. Included by LutkitDependencies.cmake when lutkit itself
-# is built and, installed next to lutkitConfig.cmake, by that config when another project links
-# the installed libraries, so both find these the same way (with the same Debian 12 quirks).
+# Threads, lutkit::formats OpenColorIO and the native image codecs' libpng, zlib, libdeflate and
+# OpenEXR. Included by LutkitDependencies.cmake when lutkit itself is built and, installed next
+# to lutkitConfig.cmake, by that config when another project links the installed libraries, so
+# both find these the same way (with the same Debian 12 quirks).
 find_package(Threads REQUIRED)
 
 # GLM: header-only; Debian ships a config package, fall back to the header.
@@ -23,7 +24,13 @@ if(NOT TARGET OpenColorIO::OpenColorIO)
   add_library(OpenColorIO::OpenColorIO ALIAS PkgConfig::OCIO)
 endif()
 
-# The native image codecs (formats/src/imageio): PNG, OpenEXR scanline files.
+# The native image codecs (formats/src/imageio): PNG, OpenEXR scanline files. libdeflate
+# inflates the PNG reader's common files at once (about twice zlib's speed); Debian ships only a
+# pkg-config file for it.
 find_package(PNG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(OpenEXR CONFIG REQUIRED)
+if(NOT TARGET PkgConfig::LIBDEFLATE)
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
+endif()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses (tests/fuzz) with clang and runs each for a bounded time.
 # Usage: scripts/fuzz.sh [BUILD_DIR] [SECONDS] [FUZZER...]
-#   BUILD_DIR defaults to build-fuzz, SECONDS (per fuzzer) to 60, FUZZER to all that were built.
+#   BUILD_DIR defaults to build-fuzz, SECONDS (per fuzzer) to 60 (0: build only), FUZZER to all
+#   that were built. Longer per-format runs of image_oiio: scripts/fuzz-nightly.sh.
 # Each fuzzer starts from a COPY of its seed corpus (tests/fuzz/corpus/<name> plus matching files
 # in tests/data), so the checked-in seeds never change. Crashes, leaks, timeouts and OOMs land in
 # BUILD_DIR/findings/<name>/ and make this script exit non-zero; add each one (after fixing it) to
@@ -23,19 +24,23 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags -Wno-unknown-warning-option" \
   -DLUTKIT_FUZZ=ON -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
 
-all=(cube strip hald nutexb cli_numbers ocio image_apply patch)
+# The harnesses run when none is named (CI). image_oiio runs only when named (fuzz-nightly.sh):
+# within seconds it finds a heap corruption inside OpenImageIO/libtiff, which ASan does not
+# instrument, that no single input reproduces (docs/robustness.md, "Open findings").
+all=(cube strip hald nutexb cli_numbers ocio image_apply patch check)
 targets=()
-for f in "${all[@]}"; do
-  [ -f "$root/tests/fuzz/fuzz_$f.cpp" ] && targets+=("fuzz_$f")
+for f in "${all[@]}" "$@"; do
+  [ -f "$root/tests/fuzz/fuzz_$f.cpp" ] && [[ " ${targets[*]} " != *" fuzz_$f "* ]] && targets+=("fuzz_$f")
 done
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 echo "fuzz: build took $(( $(date +%s) - start )) s"
+[ "$seconds" = 0 ] && exit 0
 
 # Seed files from tests/data for each fuzzer, by extension (the image fuzzers take encoded
 # descriptions, not raw images, so their seeds are only the checked-in ones).
 seed_globs() {
   case "$1" in
-    cube) echo "*.cube" ;;
+    cube | check) echo "*.cube" ;;
     nutexb) echo "*.nutexb" ;;
     *) echo "" ;;
   esac

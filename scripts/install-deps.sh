@@ -1,16 +1,33 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lutkit needs, only those missing. Idempotent; run as root (or with
 # sudo available). Extra packages may be named as arguments.
+#   scripts/install-deps.sh           everything: the build, the editor, the tests, benchmarks,
+#                                     sanitizers, fuzzing and the checks (./test.sh, CI)
+#   scripts/install-deps.sh --cli     only what building the CLI needs (./run.sh)
+#   scripts/install-deps.sh --editor  the CLI's and Qt 6 for the editor (./run.sh editor)
 set -euo pipefail
+# The CLI and its image module: compiler, CMake, OpenImageIO, OpenColorIO, the native codecs,
+# GLM, CLI11, ccache.
+CLI_PACKAGES=(cmake make g++ pkg-config libopenimageio-dev libopenexr-dev libpng-dev zlib1g-dev
+  libopencolorio-dev libglm-dev libcli11-dev ccache)
+EDITOR_PACKAGES=(qt6-base-dev libqt6opengl6-dev)
+case "${1:-}" in
+  --cli) shift; set -- "${CLI_PACKAGES[@]}" "$@"; ONLY=1 ;;
+  --editor) shift; set -- "${CLI_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" "$@"; ONLY=1 ;;
+  *) ONLY=0 ;;
+esac
 # desktop-file-utils, libxml2-utils, shared-mime-info: tests/desktop checks the editor's desktop files.
-# libopenexr-dev, libpng-dev, zlib1g-dev: the native image codecs (formats/src/imageio).
+# libopenexr-dev, libpng-dev, zlib1g-dev, libdeflate-dev: the native image codecs (formats/src/imageio).
 # ccache: rebuilds (the four builds of ./test.sh, a fresh clone in CI) reuse unchanged objects.
 # ffmpeg: an outside reader in the tests (its lut3d filter reads the .cube files lutkit writes).
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
-  zlib1g-dev libopencolorio-dev
+  zlib1g-dev libdeflate-dev libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
   desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg "$@")
+if [ "$ONLY" = 1 ]; then
+  PACKAGES=("$@")
+fi
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -4,13 +4,14 @@
 #
 # What runs on several threads, and the test executable that drives it:
 #   lut::parallelFor/parallelForDynamic: samplers, resampling, adjustments   lutlib_tests
-#   the LUT maths (compose, smooth, invert, diff, heat maps)                 ops_tests
+#   the LUT maths (compose, smooth, invert, diff, heat maps), lutkit check   ops_tests
 #   the preview pipeline's stages (bloom, grading, display)                  pipeline_tests
 #   the parallel .cube row reader; image files (OIIO's own threads)          formats_tests
 #   the round trip's fit                                                     roundtrip_tests (Fit.*)
 #   lutkit match: samples, histograms, transport, table, measures            match_tests (the
 #                                                                            smaller cases)
-#   lutkit apply's batch and preview (a ThreadSanitizer-built lutkit)        cli_tests (CliApply.*,
+#   lutkit apply's batch, preview and convert of a folder (a ThreadSanitizer  cli_tests (CliApply.*,
+#   -built lutkit)                                                           CliConvertBatch.*,
 #                                                                            CliPreview.*)
 #   the editor's document model and preview rendering                       gui_model_tests
 #   lut::Progress (cancelled from another thread), diffs, heat maps and     lutlib_tests, ops_tests,
@@ -40,15 +41,16 @@ jobs="$(nproc)"
 
 # executable:gtest filter ("" = every test in it). Left out: tests that only cost time under
 # ThreadSanitizer (the exhaustive lattice and float-parsing sweeps, the fit's 50 s coverage case,
-# the 256^3 LUT maths: the same loops run on smaller LUTs in the tests that stay).
+# the 256^3 LUT maths, the check of every neutral size and every fixture: the same loops run on
+# smaller LUTs in the tests that stay).
 runs=(
   "lutlib_tests:-AllMethods/Policy.LatticePointsReturnEntriesExactly/*:Lut3D.IdentityIsExactForEverySize"
-  "ops_tests:-LargeLuts.Size256"
+  "ops_tests:-LargeLuts.Size256:CheckDefects.NeutralOfEverySizeHasNoFinding:CheckFiles.EveryFixtureAndOcioTestFileWithoutACrash"
   "pipeline_tests:"
   "formats_tests:-CubeRead.FloatParsingMatchesFromChars"
   "roundtrip_tests:Fit.*-Fit.NaturalImageWarnsAboutCoverage"
   "match_tests:MatchStiff.*:MatchReport.*:HistogramMatch.*"
-  "cli_tests:CliApply.*:CliPreview.*"
+  "cli_tests:CliApply.*:CliPreview.*:CliConvertBatch.*"
 )
 
 start=$(date +%s)

@@ -4,6 +4,7 @@
 #include "Batch.h"
 #include "LutFiles.h"
 #include "PurposeText.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -50,15 +51,20 @@ int runApply(const ApplyOptions& o) {
         std::cerr << "lutkit: " << colour.describe() << "\n";
     // An edit goes on the pixels as it is (a shaper then its table, exactly); the game's LUT as
     // the edit it makes of the game's picture (lut/pipeline/PurposeConversion.h), with a note
-    // saying so and what it cost.
+    // saying so and what it cost. At another strength, that edit blended with neutral (one
+    // table).
     // (65^3: half the 33^3 lattice's mean error for ~1 s more, measured on a warm stage LUT)
     PurposeOptions po;
     po.rawSize = 65;
     PurposedLut used = lutFor(file, o.lut, LutPurpose::Raw, purposeOption(o.lutTarget),
                               "--lut-target", po, o.verbosity);
-    const PixelChain chain = used.conversion
-                                 ? formats::lutPixelChain(colour, std::move(used.lut), o.interp)
-                                 : formats::lutPixelChain(colour, file, o.interp);
+    const PixelChain chain =
+        !isFullStrength(o.strength)
+            ? formats::lutPixelChain(
+                  colour, strengthLut(std::move(used.lut), o.lut, o.strength, o.verbosity),
+                  o.interp)
+        : used.conversion ? formats::lutPixelChain(colour, std::move(used.lut), o.interp)
+                          : formats::lutPixelChain(colour, file, o.interp);
     std::mutex noteMutex;
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         formats::ApplyImageOptions ao;
@@ -67,7 +73,21 @@ int runApply(const ApplyOptions& o) {
         ao.inFormat = o.inFormat;
         ao.outFormat = o.format;
         ao.threads = ctx.innerThreads();
-        const formats::ApplyImageReport r = formats::applyToImage(j.input, j.target, chain, ao);
+        ao.subimage = o.subimage;
+        // Held before anything is decoded: files in parallel stay within --max-memory.
+        ao.reserveMemory = [&ctx](std::uint64_t bytes, const std::string& what) {
+            ctx.reserveMemory(bytes, what);
+        };
+        formats::ApplyImageReport r;
+        try {
+            r = formats::applyToImage(j.input, j.target, chain, ao);
+        } catch (const formats::MultiImageError& e) {
+            throw Error(j.input + ": holds " + std::to_string(e.count()) + " images (" + e.kind() +
+                        ") and " + j.output +
+                        "'s format holds one: write .exr or .tif to keep every one, or pick "
+                        "one with --subimage N (0 to " +
+                        std::to_string(e.count() - 1) + ")");
+        }
         {
             std::lock_guard<std::mutex> lock(noteMutex);
             const std::string outside = r.domain.str(chain.domainMin(), chain.domainMax());
@@ -97,7 +117,9 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
     auto* sub = app.add_subcommand(
         "apply", "Apply a LUT to the stored pixel values of images (data type, alpha, compression "
                  "and metadata kept), or in its own colour space (--from)");
-    sub->add_option("--lut", o->lut, "LUT file (any supported format)")
+    sub->add_option("--lut", o->lut,
+                    "LUT file (any supported format), or a built-in: builtin:neutral, "
+                    "builtin:smash-default")
         ->required()
         ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
@@ -118,8 +140,12 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
                 "output data type: 8, 16 (half for EXR) or 32 (float) (default: the input's)");
     addCompression(*sub, o->compression);
     addMaxMemory(*sub, o->maxMemory);
+    addSubimage(*sub, o->subimage,
+                "only this image of files holding several (OpenEXR part, TIFF page, GIF frame; "
+                "from 0) (default: every one, where the output format holds them)");
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
     addThreads(*sub, o->threads);
+    addStrengthOptions(*sub, o->strength);
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     addVerbosity(*sub, o->verbosity, "print IN -> OUT for every file written");
     sub->footer(
@@ -129,6 +155,7 @@ CLI::App* setupApply(CLI::App& app, std::function<void(const ApplyOptions&)> onP
         "  lutkit apply --lut grade.cube f.%04d.exr --frames 1-100 -o out.%04d.exr\n"
         "  lutkit apply --lut grade.cube - --in-format png -o - --format png < in.png > out.png\n"
         "  lutkit apply --lut edited_strip.png --lut-layout unity in.tif -o out.tif -y\n"
+        "  lutkit apply --lut grade.cube --strength 0.5 shot.png -o half.png\n"
         "  lutkit apply --lut log_look.cube --from ACEScg --lut-space ACEScct --to sRGB "
         "render.exr -o out.png\n"
         "An existing output is replaced only with -y; -n skips existing outputs.");

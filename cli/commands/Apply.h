@@ -7,6 +7,7 @@
 #include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 
 #include <functional>
 #include <optional>
@@ -31,9 +32,11 @@ struct ApplyOptions {
     int bitDepth = 0;                   // 0 = the input's type
     std::string compression;            // "" = the input's (EXR, TIFF)
     std::string maxMemory;              // --max-memory (default half the RAM)
+    int subimage = -1;                  // --subimage: one image of a file holding several
     Interpolation interp = Interpolation::Tetrahedral;
     int threads = 0;          // 0 = all cores
     formats::ColorSpec color; // --config, --from, --to ...: the LUT runs in its own space
+    StrengthOptions strength; // the LUT blended with neutral first
     Verbosity verbosity;
 };
 

@@ -68,6 +68,8 @@ void printText(const std::string& output, const formats::BakeReport& r,
                       ? "OpenColorIO's processor"
                       : "the conversion")
               << ": " << r.error.str() << "\n";
+    if (r.error.bounded)
+        std::cout << "         max: " << r.error.coverage() << "\n";
     std::cout << "total    " << milliseconds(r.totalSeconds) << "\n";
 }
 

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI {
@@ -22,13 +23,15 @@ struct BenchOptions {
                                        Interpolation::Tetrahedral};
     bool ocio = true;    // also time OpenColorIO's CPU processor
     bool scalar = false; // add rows for the scalar reference loop
+    bool json = false;   // the figures as JSON on standard output instead of the table
 };
 
 // One row another subsystem adds below the kernel table (see Bench.cpp, "EXTRA ROWS").
 struct BenchExtraRow {
-    std::string label;     // e.g. "smash chain 1080p"
-    double nsPerPixel = 0; // wall time per pixel
-    std::string note;      // free text (error, ratio, ...)
+    std::string label;                                  // e.g. "smash chain 1080p"
+    double nsPerPixel = 0;                              // wall time per pixel
+    std::string note;                                   // free text (error, ratio, ...)
+    std::vector<std::pair<std::string, double>> values; // the same figures for --json
 };
 
 // Prints, for each interpolation and size: ns/pixel on the frame, max and mean error against the

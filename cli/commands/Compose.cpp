@@ -5,6 +5,7 @@
 #include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/ops/Compose.h"
 #include "lut/pipeline/PurposeOps.h"
@@ -40,6 +41,7 @@ int runCompose(const ComposeCommandOptions& o) {
         std::cout << "composed " << o.b << "'s edit on the picture the game shows with " << o.a
                   << ": the game's LUT that shows it (exact at its 16^3 lattice)\n";
     writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity, says);
+    checkWrittenLut(o.output, r.lut, o.verbosity, p.out.to == LutPurpose::Smash);
     return kExitOk;
 }
 

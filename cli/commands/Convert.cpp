@@ -4,8 +4,10 @@
 #include "Json.h"
 #include "Numbers.h"
 #include "PurposeText.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 #include "commands/Bake.h"
 
 #include "lut/LutPurpose.h"
@@ -65,8 +67,11 @@ std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r)
        << ", \"input_said\": "
        << (r.purpose.input.said ? json::quote(toString(*r.purpose.input.said)) : "null")
        << ", \"output\": " << json::quote(toString(r.purpose.output))
-       << ", \"conversion\": " << conversionJson(r.purpose.conversion, o.refine)
-       << "},\n \"resample\": ";
+       << ", \"conversion\": " << conversionJson(r.purpose.conversion) << "},\n \"strength\": "
+       << (r.strength ? "{\"luma\": " + json::number(r.strength->luma) +
+                            ", \"chroma\": " + json::number(r.strength->chroma) + "}"
+                      : std::string("null"))
+       << ",\n \"resample\": ";
     if (r.resample)
         js << "{\"from\": " << r.resample->from << ", \"to\": " << r.resample->to
            << ", \"interp\": " << json::quote(toString(r.resample->interp))
@@ -90,6 +95,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
             !d.empty())
             std::cout << "  " << d << "\n";
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
+    if (r.strength)
+        std::cout << "strength " << strengthText(o.strength) << "\n";
     const formats::PurposeStep& p = r.purpose;
     std::cout << "purpose  in:  " << p.input.text("--in-target") << "\n"
               << "         out: " << toString(p.output)
@@ -106,12 +113,12 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
         ConversionWords w;
         w.stage = o.originalLut.empty() ? "neutral" : o.originalLut;
         w.interp = o.interp;
-        w.refine = o.refine;
         printConversion(std::cout, *p.conversion, w);
     }
     if (r.resample)
         std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
-                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n";
+                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n"
+                  << "         max: " << r.resample->error.coverage() << "\n";
     else
         std::cout << "resample none (same size)\n";
     std::cout << "wrote    " << o.output << ": " << r.outputFormat;
@@ -121,7 +128,7 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     printDiagnostics(std::cout, r.writeDiagnostics, o.verbosity);
     if (r.storage)
         std::cout << "storage  (quantisation, written file read back): " << r.storage->str()
-                  << "\n";
+                  << (r.storage->bounded ? "\n         max: " + r.storage->coverage() : "") << "\n";
     else
         std::cout << "storage  not measured: cannot read the output back: " << r.readBackError
                   << "\n";
@@ -140,6 +147,8 @@ int runConvert(const ConvertOptions& o) {
                              " is not a .ccc, .cdl or .cc file (it picks one of their "
                              "corrections)");
     }
+    if (isConvertBatch(o))
+        return runConvertBatch(o);
     if (o.color.any())
         (void)formats::planColor(o.color); // a misspelt colour name is bad usage, before files
     const OutputTarget target = resolveOutput(
@@ -159,10 +168,16 @@ int runConvert(const ConvertOptions& o) {
         outPurpose ? *outPurpose == LutPurpose::Smash : writer && writer->name() == "nutexb";
     if (!smashOut && (!o.originalLut.empty() || !o.screenshot.empty() || o.refine))
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
+    if (o.layout)
+        if (const std::string problem = layoutSizeProblem(*o.layout, o.size); !problem.empty())
+            throw UsageError(problem);
     if (o.color.any()) {
         if (outPurpose || inPurpose)
             throw UsageError("--target and --in-target do not apply with --from/--to (the LUT "
                              "is baked with colour conversions, as it is)");
+        if (!isFullStrength(o.strength))
+            throw UsageError("--strength does not combine with --from/--to yet: convert at the "
+                             "strength first, then bake the result");
         // The LUT in its own colour space, OpenColorIO's conversions around it, baked.
         formats::BakeOptions b;
         b.config = o.color.config;
@@ -211,6 +226,7 @@ int runConvert(const ConvertOptions& o) {
     co.interp = o.interp;
     co.inPurpose = inPurpose;
     co.outPurpose = outPurpose;
+    co.strength = o.strength;
     // An edit made into the game's LUT: on the stage's picture, measured over the screenshot's
     // colours (else a grid), the refinement reported and written when asked.
     Lut3D stage;
@@ -246,6 +262,8 @@ int runConvert(const ConvertOptions& o) {
         std::cerr << "lutkit: warning: " << o.input
                   << " is already the game's LUT: --original-lut, --screenshot and --refine "
                      "were not used\n";
+    checkWrittenLut(o.output, report.readBack ? *report.readBack : report.input, o.verbosity,
+                    report.purpose.output == LutPurpose::Smash);
     return kExitOk;
 }
 
@@ -253,13 +271,15 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     auto o = std::make_shared<ConvertOptions>();
     auto* sub = app.add_subcommand(
         "convert", "Convert a LUT to another format, reporting the error introduced");
-    sub->add_option("IN", o->input, "input LUT file")->required()->type_name("FILE");
-    sub->add_option("OUT", o->output, "output LUT file (format from the extension)")
+    sub->add_option("IN", o->input, "input LUT file, or a folder of them (with -o DIR/)")
         ->required()
+        ->type_name("FILE");
+    sub->add_option("OUT", o->output, "output LUT file (format from the extension), or -o OUT")
         ->type_name("FILE");
     addOutputFormat(*sub, o->format);
     addInputFormat(*sub, o->inFormat);
-    addLayout(*sub, "--layout", o->layout, "output LUT image layout (default unreal)");
+    addLayout(*sub, "--layout", o->layout,
+              "output LUT image layout (default unreal; reshade and unity-32 are 32^3, 1024x32)");
     addLayout(*sub, "--in-layout", o->inLayout, "input LUT image layout (default: detected)");
     sub->add_option("--cccid", o->cccid,
                     "the correction of a .ccc/.cdl input: its id or index (as ociobakelut "
@@ -278,7 +298,9 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     sub->add_flag("--dither", o->dither, "8-bit image output: ordered dither");
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_flag("--json", o->json, "print the report as JSON");
-    addOverwriteOptions(*sub, o->overwrite);
+    addOutputOptions(*sub, o->overwrite,
+                     "the output, as OUT; a folder (existing, or ending in /) for a folder IN: "
+                     "each LUT under its own name, as --format (default nutexb)");
     addPurpose(*sub, "--target", o->target,
                std::string("what OUT is for (default: ") + toString(LutPurpose::Smash) +
                    " for a .nutexb, else what IN is for): " + toString(LutPurpose::Raw) +
@@ -289,15 +311,18 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                "what IN is for (default: what the file says, LUTKIT_PURPOSE, or a .nutexb; "
                "else raw)");
     sub->add_option("--original-lut", o->originalLut,
-                    "smash: the stage's LUT the edited picture was taken with (default neutral)")
+                    "smash: the stage's LUT the edited picture was taken with (default neutral; "
+                    "a stage without its own LUT: builtin:smash-default)")
         ->type_name("FILE");
     sub->add_option("--screenshot", o->screenshot,
-                    "smash: a screenshot whose colours the error is measured and refined over "
-                    "(default: every input on a 61^3 grid)")
+                    "smash: a screenshot whose pixels the error is measured over and refined "
+                    "on (default: every input)")
         ->type_name("FILE");
     sub->add_flag("--refine", o->refine,
-                  "smash: write the least-squares refinement (best between the game's 16^3 "
-                  "points) instead of the exact composition; both are reported");
+                  "smash: also compute the least-squares refinement (best between the game's "
+                  "16^3 points) and write it if it beats the exact composition on colours it was "
+                  "not fitted on; both are reported, and which was written");
+    addStrengthOptions(*sub, o->strength);
     addColorOptions(*sub, o->color, ColorOptionSet::All);
     sub->add_option("--shaper-size,--shapersize", o->shaperSize,
                     "with --from: shaper entries when the input is HDR (default 4096)")
@@ -316,11 +341,23 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"
+                "  lutkit convert grade.cube lut.png --layout reshade       # ReShade's LUT.fx\n"
+                "  lutkit convert grade.cube subtle.cube --strength 0.6 --chroma-strength 0.3\n"
                 "  lutkit convert grade.3dl grade.cube --size 33 --json\n"
                 "  lutkit convert grades.ccc shot042.cube --cccid shot042\n"
                 "  lutkit convert srgb_look.cube acescg_look.cube --from ACEScg --lut-space sRGB "
-                "--to sRGB");
-    sub->callback([o, onParsed] { onParsed(*o); });
+                "--to sRGB\n"
+                "  lutkit convert edited_strips/ -o stage_luts/   # every strip: a .nutexb, "
+                "each with its in-game error");
+    sub->callback([o, onParsed] {
+        if (!o->output.empty() && !o->overwrite.output.empty())
+            throw UsageError("OUT and -o both name the output: give one");
+        if (o->output.empty())
+            o->output = o->overwrite.output;
+        if (o->output.empty())
+            throw UsageError("OUT is required (or -o OUT; -o DIR/ for a folder of LUTs)");
+        onParsed(*o);
+    });
     return sub;
 }
 

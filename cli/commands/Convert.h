@@ -7,6 +7,7 @@
 #include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 
 #include <functional>
 #include <optional>
@@ -33,7 +34,7 @@ struct ConvertOptions {
     bool dither = false;
     std::string name; // nutexb name field
     bool json = false;
-    OutputOptions overwrite; // -y / -n (the output is the positional OUT)
+    OutputOptions overwrite; // -o (or the positional OUT), -y, -n
     // What the output is for (raw | smash); "" = smash for a .nutexb output, else what IN is
     // for. An edit (raw) to smash: OUT is the game's LUT that shows it; the game's LUT to raw:
     // OUT is the edit it makes of the game's picture (lut/formats/Convert.h).
@@ -46,10 +47,16 @@ struct ConvertOptions {
     // (lut/formats/Bake.h), e.g. a display LUT made for sRGB turned into one for ACEScg input.
     formats::ColorSpec color;
     int shaperSize = 0;
+    StrengthOptions strength; // --strength, --luma-strength, --chroma-strength
     Verbosity verbosity;
 };
 
 int runConvert(const ConvertOptions& options);
+// A folder IN (or a folder output): every LUT file in it, files in parallel as apply does
+// images, each converted under its own name into the output folder as --format (default
+// nutexb: the game's LUT, each with its in-game error) (ConvertBatch.cpp).
+bool isConvertBatch(const ConvertOptions& options);
+int runConvertBatch(const ConvertOptions& options);
 
 // Adds the subcommand to app; onParsed is called with the options once they are parsed.
 CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)> onParsed);

@@ -3,8 +3,10 @@
 
 #include "LutFiles.h"
 #include "PurposeText.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/formats/ExtractFile.h"
 #include "lut/formats/Registry.h"
@@ -41,6 +43,7 @@ void writeOut(const ExtractOptions& o, Lut3D lut, LutPurpose purpose) {
                             "the game's LUT)"
                       : std::string())
               << "\n";
+    checkWrittenLut(o.output, file, o.verbosity, purpose == LutPurpose::Smash);
 }
 
 } // namespace
@@ -70,6 +73,7 @@ int runExtract(const ExtractOptions& o) {
         throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
     eo.outputSize = o.size;
     eo.refine = o.refine;
+    eo.strength = o.strength;
     Lut3D original;
     if (!o.originalLut.empty()) {
         original = readStageLut(o.originalLut, o.verbosity);
@@ -97,10 +101,11 @@ int runExtract(const ExtractOptions& o) {
                                           : " (the edit this game LUT makes)"
                                     : " (as it is; a .nutexb output or --target chooses)")
                       << "\n";
+        if (!o.verbosity.quiet && !isFullStrength(o.strength))
+            std::cout << "strength: " << strengthText(o.strength) << ", of the edit\n";
         if (converted) {
             ConversionWords w;
             w.stage = o.originalLut.empty() ? "neutral" : o.originalLut;
-            w.refine = o.refine;
             printConversion(std::cout, *r.conversion, w);
         }
         writeOut(o, std::move(r.lut), r.purpose);
@@ -157,8 +162,9 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
                     "patch embedded with --original-lut already holds it)")
         ->type_name("FILE");
     sub->add_flag("--refine", o->refine,
-                  "smash: write the least-squares refinement (best between the game's 16^3 "
-                  "points) instead of the exact composition; both are reported");
+                  "smash: also compute the least-squares refinement (best between the game's "
+                  "16^3 points) and write it if it beats the exact composition on colours it was "
+                  "not fitted on; both are reported, and which was written");
     sub->add_option("--size", o->size,
                     "output LUT size (default: the patch's for raw, 16 for smash and .nutexb)")
         ->check(CLI::Range(2, 256));
@@ -170,12 +176,14 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
     addPurpose(*sub, "--in-target", o->inTarget,
                "EDITED is a graded LUT image: what it is for (default: what the file says, "
                "else raw, the edit)");
+    addStrengthOptions(*sub, o->strength);
     addVerbosity(*sub, o->verbosity, "also say where the patch was found and how it was made");
     sub->footer("Examples:\n"
                 "  lutkit extract graded.png color_grading_lut.nutexb   # for Smash Ultimate\n"
                 "  lutkit extract graded.png grade.cube                 # what embed set up\n"
                 "  lutkit extract graded.png grade.cube --target raw    # the edit itself\n"
                 "  lutkit extract graded.png color_grading_lut.nutexb --refine\n"
+                "  lutkit extract graded.png grade.cube --chroma-strength 0.5  # half the colour\n"
                 "  lutkit extract neutral_graded.png color_grading_lut.nutexb  # Smush-LUT's "
                 "neutral.png");
     sub->callback([o, onParsed] { onParsed(*o); });

@@ -6,6 +6,7 @@
 #include "Outputs.h"
 
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 
 #include <functional>
 #include <optional>
@@ -31,6 +32,7 @@ struct ExtractOptions {
     std::string inTarget;              // EDITED is a graded LUT image: what it is ("" = its tag,
                                        // else raw)
     OutputOptions overwrite;           // -y / -n (the output is the positional OUT)
+    StrengthOptions strength;          // the edit blended with what was there before it
     Verbosity verbosity;
 };
 

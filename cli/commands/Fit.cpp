@@ -3,7 +3,9 @@
 
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
+#include "lut/ErrorStats.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
@@ -35,11 +37,20 @@ int runFit(const FitOptions& o) {
     char buf[400];
     std::snprintf(
         buf, sizeof buf,
-        "fit %d^3 to %zu pixels (%zu distinct colours): error rms %.3g, max %.3g 8-bit steps; "
-        "%.3g%% of the cube extrapolated; %zu outlier pixels\n",
-        o.size, res.pixels, res.distinctColours, res.rmsSteps8, res.maxSteps8,
+        "fit %d^3 to %zu pixels (%zu distinct colours): error over those pixels rms %.3g, max "
+        "%.3g 8-bit steps; %.3g%% of the cube extrapolated; %zu outlier pixels\n",
+        o.size, res.pixels, res.distinctColours, res.rmsSteps8, roundUpSignificant(res.maxSteps8),
         100.0 * res.extrapolatedShare, res.outlierPixels);
     std::cout << buf;
+    if (res.heldOutColours > 0) {
+        std::snprintf(buf, sizeof buf,
+                      "held out on colours it was not fitted to: rms %.3g, max %.3g 8-bit steps "
+                      "(a fit on 7/8 of the colours measured on the %zu pixels of the other %zu; "
+                      "the max with half a step of margin)\n",
+                      res.heldOutRmsSteps8, roundUpSignificant(res.heldOutMaxSteps8),
+                      res.heldOutPixels, res.heldOutColours);
+        std::cout << buf;
+    }
     LutFile file;
     file.cube = std::move(res.lut);
     FormatOptions wo;
@@ -47,6 +58,7 @@ int runFit(const FitOptions& o) {
     const Diagnostics wd = formats::writeLut(o.output, file, wo, o.format);
     printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
     std::cout << "wrote " << o.output << "\n";
+    checkWrittenLut(o.output, file, o.verbosity);
     return kExitOk;
 }
 

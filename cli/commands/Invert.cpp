@@ -6,6 +6,7 @@
 #include "Numbers.h"
 #include "Usage.h"
 #include "Vocabulary.h"
+#include "WrittenCheck.h"
 
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
@@ -32,6 +33,7 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
                   << ", \"invertible\": " << (r.invertible() ? "true" : "false")
                   << ", \"max_residual\": " << json::number(r.maxResidual)
                   << ", \"mean_residual\": " << json::number(r.meanResidual)
+                  << ", \"residual\": " << json::stats(r.residual)
                   << ", \"round_trip\": " << json::stats(r.roundTrip)
                   << ", \"unreachable_by_region\": {";
         bool first = true;
@@ -52,9 +54,13 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
         std::cout << "         " << r.unreachable << " points have no exact preimage "
                   << "(least-squares answer); " << r.foldedCells
                   << (oneD ? " segments not strictly monotone" : " cells flat or folded");
-    std::cout << "\nresidual |A(inverse(y)) - y|: max " << significant(r.maxResidual) << ", mean "
+    std::cout << "\nresidual |A(inverse(y)) - y| at the inverse's lattice points: max "
+              << significant(roundUpSignificant(r.maxResidual)) << ", mean "
               << significant(r.meanResidual) << "\n"
-              << "round trip |inverse(A(x)) - x|: " << r.roundTrip.str() << "\n";
+              << "         over every y, between them too: " << r.residual.str() << "\n"
+              << "         max: " << r.residual.coverage() << "\n"
+              << "round trip |inverse(A(x)) - x| over every x: " << r.roundTrip.str() << "\n"
+              << "         max: " << r.roundTrip.coverage() << "\n";
     if (r.unreachable) {
         std::cout << "where    no inverse:";
         for (int i = 0; i < kRegionCount; ++i)
@@ -92,6 +98,7 @@ int runInvert(const InvertCommandOptions& o) {
                       << " entries\n";
             printDiagnostics(std::cout, w.diagnostics, o.verbosity);
         }
+        checkWrittenLut(o.output, out, o.verbosity);
         return kExitOk;
     }
     if (file.shaper) {
@@ -116,6 +123,7 @@ int runInvert(const InvertCommandOptions& o) {
     printReport(o, r.report, false);
     if (!o.json)
         std::cout << written.str();
+    checkWrittenLut(o.output, r.lut, o.verbosity);
     return kExitOk;
 }
 

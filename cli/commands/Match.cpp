@@ -172,9 +172,9 @@ int runMatch(const MatchCommandOptions& o) {
     MatchOptions mo;
     mo.method = o.method;
     mo.size = o.size;
-    mo.strength = o.strength;
-    mo.lumaStrength = o.lumaStrength;
-    mo.chromaStrength = o.chromaStrength;
+    mo.strength = o.strength.strength;
+    mo.lumaStrength = o.strength.luma;
+    mo.chromaStrength = o.strength.chroma;
     mo.preserve = o.preserve;
     MatchResult res = matchLook(src, references, mo);
     Diagnostics diags = res.diagnostics;
@@ -260,15 +260,7 @@ CLI::App* setupMatch(CLI::App& app, std::function<void(const MatchCommandOptions
            "regularised (smooth monotone lattice for looks the others miss)")
         ->check(choicesValidator(matchMethodChoices()))
         ->type_name("NAME");
-    sub->add_option("--strength", o->strength,
-                    "0 = neutral, 1 = the match (default), up to 2 exaggerates; blended in Oklab")
-        ->check(CLI::Range(0.0, 2.0));
-    sub->add_option("--luma-strength", o->lumaStrength,
-                    "the lightness share of the match, 0..2 (default: --strength)")
-        ->check(CLI::Range(0.0, 2.0));
-    sub->add_option("--chroma-strength", o->chromaStrength,
-                    "the colour share of the match, 0..2 (default: --strength)")
-        ->check(CLI::Range(0.0, 2.0));
+    addStrengthOptions(*sub, o->strength); // as convert, apply, preview and extract
     sub->add_option_function<std::vector<std::string>>(
            "--preserve",
            [o](const std::vector<std::string>& v) {

@@ -3,6 +3,7 @@
 // (lut/match/Match.h, docs/match.md).
 #include "Notes.h"
 #include "Outputs.h"
+#include "StrengthOptions.h"
 
 #include "lut/io/Layout.h"
 #include "lut/match/MatchOptions.h"
@@ -24,8 +25,7 @@ struct MatchCommandOptions {
     std::string output;
     int size = 33;
     MatchMethod method = MatchMethod::Auto;
-    double strength = 1.0;
-    std::optional<double> lumaStrength, chromaStrength;
+    StrengthOptions strength; // --strength, --luma-strength, --chroma-strength (StrengthOptions.h)
     std::vector<MatchPreserve> preserve;
     std::string maskSource;
     std::vector<std::string> maskReferences; // the n-th masks the n-th reference

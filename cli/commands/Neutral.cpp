@@ -50,9 +50,15 @@ int runNeutral(const NeutralOptions& o) {
         layout = LutLayout::Hald;
     }
     const bool hald = writer->name() == "hald" || layout == LutLayout::Hald;
+    FormatOptions sized;
+    sized.layout = layout;
+    const int fixed = writer->fixedSizeFor(sized);
+    if (layout)
+        if (const std::string problem = layoutSizeProblem(*layout, o.size); !problem.empty())
+            throw UsageError(problem);
     const int asked = o.level  ? o.level * o.level
                       : o.size ? o.size
-                               : defaultNeutralSize(o.output, writer->fixedSize());
+                               : defaultNeutralSize(o.output, fixed);
     // A Hald image holds N = L^2 only: say so rather than write another size than the one named.
     const int size = hald ? formats::haldSizeFor(asked) : asked;
     LutFile file;
@@ -98,7 +104,8 @@ CLI::App* setupNeutral(CLI::App& app, std::function<void(const NeutralOptions&)>
         ->check(CLI::Range(formats::kMinHaldLevel, formats::kMaxHaldLevel))
         ->excludes(size);
     addOutputFormat(*sub, o->format);
-    addLayout(*sub, "--layout", o->layout, "LUT images: the layout (default unreal, 256x16)");
+    addLayout(*sub, "--layout", o->layout,
+              "LUT images: the layout (default unreal, 256x16; reshade and unity-32 are 1024x32)");
     addBitDepth(*sub, o->bitDepth, "LUT images: 8, 16 or 32 (float)");
     sub->add_option("--name", o->name, "nutexb name field (default color_grading_lut)");
     sub->add_option("--title", o->title, "title stored where the format has one");
@@ -112,7 +119,8 @@ CLI::App* setupNeutral(CLI::App& app, std::function<void(const NeutralOptions&)>
                 "  lutkit neutral --size 65 identity.cube\n"
                 "  lutkit neutral --level 8 hald8.png                # ImageMagick's hald:8, "
                 "64^3\n"
-                "  lutkit neutral --layout unity --bit-depth 16 unity_neutral.png");
+                "  lutkit neutral --layout unity --bit-depth 16 unity_neutral.png\n"
+                "  lutkit neutral --layout reshade lut.png           # ReShade's LUT.fx, 1024x32");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

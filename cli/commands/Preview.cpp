@@ -9,6 +9,7 @@
 #include "Batch.h"
 #include "LutFiles.h"
 #include "PurposeText.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -111,6 +112,9 @@ std::string previewFooter() {
           "  lutkit preview shot.png -o seen.png --lut grade.cube   # as Smash Ultimate shows "
           "it\n"
           "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut old.nutexb\n"
+          "  lutkit preview shot.png -o seen.png --lut new.nutexb --original-lut "
+          "builtin:smash-default\n"
+          "  lutkit preview shot.png -o seen.png --lut grade.cube --strength 0.7\n"
           "  lutkit preview photo.png -o seen.png --scene --lut grade.cube  # an 8-bit scene\n"
           "  lutkit preview render.exr -o out.png --preset filmic --lut grade.cube\n"
           "  lutkit preview acescg_render.exr -o out.png --from ACEScg --lut grade.cube\n"
@@ -171,6 +175,9 @@ int runPreview(const PreviewOptions& o) {
     bo.threads = o.threads;
     bo.quiet = o.verbosity.quiet;
     bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
+    if (o.lut.empty() && !isFullStrength(o.strength))
+        throw UsageError("--strength, --luma-strength and --chroma-strength blend --lut with "
+                         "neutral: give --lut");
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
         original = std::make_shared<const Lut3D>(readStageLut(o.originalLut, o.verbosity));
@@ -180,15 +187,26 @@ int runPreview(const PreviewOptions& o) {
     std::shared_ptr<const Lut3D> lut;
     std::shared_ptr<const Lut1D> shaper;
     if (!o.lut.empty()) {
-        const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
+        LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
         PurposeOptions po;
         po.stageLut = original.get();
         po.rawSize = 65; // the game's LUT as an edit for another chain, as apply makes it
         const LutPurpose wanted = previewLutPurpose(o.preset);
-        PurposedLut used = lutFor(file, o.lut, wanted, purposeOption(o.lutTarget), "--lut-target",
-                                  po, o.verbosity);
-        if (used.conversion) {
-            if (wanted == LutPurpose::Smash)
+        const std::optional<LutPurpose> given = purposeOption(o.lutTarget);
+        // --strength blends the edit (one table): before it is made into the game's LUT, after
+        // a game LUT is made into its edit; a LUT used for its purpose as it is.
+        const bool full = isFullStrength(o.strength);
+        const bool blendAfter =
+            decidePurpose(file, given).purpose == LutPurpose::Smash && wanted == LutPurpose::Raw;
+        if (!full && !blendAfter) {
+            file.cube = strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity);
+            file.shaper.reset();
+        }
+        PurposedLut used = lutFor(file, o.lut, wanted, given, "--lut-target", po, o.verbosity);
+        if (!full && blendAfter)
+            used.lut = strengthLut(std::move(used.lut), o.lut, o.strength, o.verbosity);
+        if (used.conversion || !full) {
+            if (used.conversion && wanted == LutPurpose::Smash)
                 (void)quantize8(used.lut);
             lut = std::make_shared<const Lut3D>(std::move(used.lut));
         } else {
@@ -205,14 +223,24 @@ int runPreview(const PreviewOptions& o) {
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         const int inner = ctx.innerThreads();
         if (j.input != "-") {
-            // The frame, and the blur pyramids of the bloom stages (about one more frame).
-            const formats::ImageInfo info = formats::readImageInfo(j.input);
+            // Before anything is decoded (the header checked against the file first): the
+            // frame, the blur pyramids of the bloom stages (about one more frame) and what the
+            // format's decoder holds.
+            const formats::ImageInfo info = formats::readImageInfo(j.input, o.inFormat, o.subimage);
             ctx.reserveMemory(static_cast<std::uint64_t>(info.width) *
-                                  static_cast<std::uint64_t>(info.height) * 16u * 2u,
+                                      static_cast<std::uint64_t>(info.height) * 16u * 2u +
+                                  info.decoderBytes,
                               "the preview of a " + std::to_string(info.width) + "x" +
                                   std::to_string(info.height) + " image");
         }
-        formats::LoadedImage img = formats::readImage(j.input, o.inFormat);
+        formats::LoadedImage img;
+        try {
+            img = formats::readImage(j.input, o.inFormat, nullptr, o.subimage);
+        } catch (const formats::MultiImageError& e) {
+            throw Error(j.input + ": holds " + std::to_string(e.count()) + " images (" + e.kind() +
+                        "): pick one with --subimage N (0 to " + std::to_string(e.count() - 1) +
+                        ")");
+        }
         // The recipe (lut/pipeline/PreviewPlan.h): screenshot or scene by the library's rule or
         // what the user said, what is undone, which stages run.
         PreviewRequest q = request;
@@ -291,16 +319,19 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     addFrames(*sub, o->frames);
     addImageFormats(*sub, o->inFormat, o->format);
     addMaxMemory(*sub, o->maxMemory);
+    addSubimage(*sub, o->subimage,
+                "the image of files holding several (OpenEXR part, TIFF page, GIF frame; from 0)");
     sub->add_option("--lut", o->lut,
-                    "grading LUT (default: neutral): with preset smash the game's LUT (an edit "
-                    "is made into the game's LUT first, as convert makes the .nutexb), else an "
-                    "edit")
+                    "grading LUT (default: neutral; also builtin:neutral, builtin:smash-default): "
+                    "with preset smash the game's LUT (an edit is made into the game's LUT first, "
+                    "as convert makes the .nutexb), else an edit")
         ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");
     addPurpose(*sub, "--lut-target", o->lutTarget,
                "what --lut is for (default: what the file says, LUTKIT_PURPOSE, or a .nutexb; "
                "else raw, an edit)");
+    addStrengthOptions(*sub, o->strength);
     sub->add_option_function<std::string>(
            "--preset", [o](const std::string& v) { o->preset = parsePreset(v); },
            "the post-processing chain (default smash; also pilot, lecture)")
@@ -316,7 +347,10 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
                   "sRGB-decoded)")
         ->excludes(shot);
     sub->add_option("--original-lut", o->originalLut,
-                    "the LUT the screenshots were taken with (default neutral)")
+                    "the LUT the screenshots were taken with (default neutral); a file or a "
+                    "built-in: a stage without its own LUT was most likely shot with "
+                    "builtin:smash-default, the game's default stage LUT as the reference "
+                    "renderer (ssbh_wgpu) has it")
         ->type_name("FILE");
     sub->add_option("--stage", o->stageSettings, "set a stage parameter (repeatable)")
         ->allow_extra_args(false)

@@ -7,6 +7,7 @@
 #include "lut/formats/ColorTransform.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
+#include "lut/ops/Strength.h"
 #include "lut/pipeline/Pipeline.h"
 
 #include <functional>
@@ -27,9 +28,11 @@ struct PreviewOptions {
     std::string inFormat;               // --in-format: the image format of standard input
     std::string format;                 // --format: the image format written to standard output
     std::string maxMemory;              // --max-memory (default half the RAM)
+    int subimage = -1;                  // --subimage: one image of a file holding several
     std::string lut;                    // grading LUT (default neutral)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
     std::string lutTarget;              // what the LUT is for ("" = its tag, else raw)
+    StrengthOptions strength;           // --lut blended with neutral first
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none
     bool noBloom = false;
     Interpolation interp = Interpolation::Trilinear; // the game samples with hardware trilinear

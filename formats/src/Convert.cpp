@@ -12,10 +12,14 @@
 #include "lut/io/StdStreams.h"
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
+#include "lut/ops/Strength.h"
 #include "lut/pipeline/SmashConstants.h"
+
+#include <glm/mat3x3.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace lut::formats {
 
@@ -28,6 +32,28 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// The steepest slope of a table's interpolant: [axis][channel] = the largest |change| of the
+// channel along an edge of a cell parallel to the axis, per unit of input. Tetrahedral and
+// trilinear interpolation step along such edges, so no slope of either is steeper.
+glm::dmat3 cubeSlopes(const Lut3D& cube) {
+    glm::dmat3 out(0.0);
+    const int n = cube.size();
+    for (int axis = 0; axis < 3; ++axis) {
+        const double h = (double(cube.domainMax()[axis]) - cube.domainMin()[axis]) / (n - 1);
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    int q[3] = {r, g, b};
+                    if (++q[axis] >= n)
+                        continue;
+                    const glm::vec3 d = cube.at(q[0], q[1], q[2]) - cube.at(r, g, b);
+                    for (int c = 0; c < 3; ++c)
+                        out[axis][c] = std::max(out[axis][c], std::fabs(double(d[c])) / h);
+                }
+    }
+    return out;
 }
 
 // Compares the table handed to the writer with what the file reads back as. When both have the
@@ -44,17 +70,34 @@ ErrorStats storageError(const LutFile& written, const LutFile& back) {
                              written.shaper->domainMax() == back.shaper->domainMax()));
     if (!sameShape)
         return compareLuts(written.toLut3D(), back.toLut3D(), Interpolation::Tetrahedral);
+    // One lattice: the cubes' interpolants differ by at most their largest entry difference, and
+    // a shaper stored differently moves each lookup in the cube by at most its largest entry
+    // difference per channel, which changes the output by at most the cube's slope times that.
     ErrorAccumulator acc;
     const auto& a = written.cube->entries();
     const auto& b = back.cube->entries();
     for (std::size_t i = 0; i < a.size(); ++i)
         for (int c = 0; c < 3; ++c)
             acc.add(a[i][c], b[i][c]);
-    if (written.shaper)
+    ErrorStats s = acc.result();
+    if (written.shaper) {
+        glm::dvec3 moved(0.0);
         for (int i = 0; i < written.shaper->size(); ++i)
             for (int c = 0; c < 3; ++c)
-                acc.add((*written.shaper)[i][c], (*back.shaper)[i][c]);
-    return acc.result();
+                moved[c] = std::max(moved[c], std::fabs(double((*written.shaper)[i][c]) -
+                                                        double((*back.shaper)[i][c])));
+        if (moved != glm::dvec3(0.0)) {
+            const glm::dmat3 slope = cubeSlopes(*written.cube);
+            double worst = 0.0;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, slope[0][c] * moved[0] + slope[1][c] * moved[1] +
+                                            slope[2][c] * moved[2]);
+            s.maxAbs += worst;
+        }
+    }
+    s.bounded = true;
+    s.sampledMax = s.maxAbs;
+    return s;
 }
 
 const Format* formatNamed(const std::string& name) {
@@ -107,32 +150,58 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     const bool mayConvert = options.outPurpose || options.inPurpose || writer->name() == "nutexb";
     FormatOptions readOptions = options.read;
     if (readOptions.size == 0 && !mayConvert)
-        readOptions.size = wantSize ? wantSize : writer->fixedSize();
+        readOptions.size = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     auto t0 = Clock::now();
     report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
     if (!report.input.cube && !report.input.shaper)
         throw Error(input + ": holds no table");
+    Diagnostics sizeNotes;
 
-    // What the input is for and what the output is for; the table for the output's purpose.
+    // What the input is for and what the output is for.
     PurposeStep& step = report.purpose;
     step.input = decidePurpose(report.input, options.inPurpose);
     step.output = outputPurpose(step.input.purpose, options.outPurpose, writer->name());
     step.outputGiven = options.outPurpose.has_value();
+
+    // The strength blends the edit (lut/ops/Strength.h): a raw input before it is made into the
+    // game's LUT (the game shows the blend), the edit a game LUT makes after it is made; a LUT
+    // written for the purpose it has is blended as it is.
+    auto blend = [&](LutFile& f) {
+        if (f.shaper) {
+            f.cube = f.toLut3D(0);
+            sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
+                                 "the 1D shaper was baked into a " +
+                                     std::to_string(f.cube->size()) +
+                                     "^3 table to blend it with neutral (--strength)"});
+            f.shaper.reset();
+        }
+        f.cube = applyStrength(*f.cube, options.strength);
+        report.strength = strengthAmounts(options.strength);
+    };
+    const bool blendAfter =
+        step.input.purpose == LutPurpose::Smash && step.output == LutPurpose::Raw;
     LutFile converted = report.input;
+    if (!isFullStrength(options.strength) && !blendAfter)
+        blend(converted);
+
+    // The table for the output's purpose.
     if (step.output != step.input.purpose) {
         if (step.output == LutPurpose::Smash && wantSize != 0 && wantSize != kSmashLutSize)
             throw Error("the game's LUT is " + std::to_string(kSmashLutSize) +
                         "^3: another size does not apply to it");
         PurposeOptions po = options.purpose;
+        const int fixed = writer->fixedSizeFor(options.write);
         if (step.output == LutPurpose::Raw)
-            po.rawSize = wantSize              ? wantSize
-                         : writer->fixedSize() ? writer->fixedSize()
-                         : report.input.cube   ? std::max(report.input.cube->size(), 33)
-                                               : 33;
-        step.conversion = convertPurpose(report.input, step.input.purpose, step.output, po);
+            po.rawSize = wantSize            ? wantSize
+                         : fixed             ? fixed
+                         : report.input.cube ? std::max(report.input.cube->size(), 33)
+                                             : 33;
+        step.conversion = convertPurpose(converted, step.input.purpose, step.output, po);
         converted.shaper.reset();
         converted.cube = step.conversion->lut;
+        if (!isFullStrength(options.strength) && blendAfter)
+            blend(converted);
     }
     // The output says what it is for when that is known: the file or the user said it, or the
     // table was made for it (an assumption is not turned into a statement).
@@ -143,13 +212,12 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
 
     // Resample when the output stores another lattice size.
     const int sourceSize = in.cube ? in.cube->size() : 0;
-    int targetSize = wantSize ? wantSize : writer->fixedSize();
+    int targetSize = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     if (targetSize == 0)
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
     // A Hald image holds N = L^2 only: resample once, to the size it will hold.
     const bool hald = writer->name() == "hald" ||
                       (options.write.layout == LutLayout::Hald && writer->name() == "strip");
-    Diagnostics sizeNotes;
     if (hald && targetSize != 0 && haldSizeFor(targetSize) != targetSize) {
         const int held = haldSizeFor(targetSize);
         sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,

@@ -5,6 +5,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/ops/Resample.h"
+#include "lut/ops/Strength.h"
 #include "lut/roundtrip/PatchFinder.h"
 #include "lut/roundtrip/PatchReader.h"
 #include "lut/roundtrip/SmushStrip.h"
@@ -30,7 +31,15 @@ ExtractFileResult extractLutFromFile(const std::string& path, const ExtractFileO
         out.image = readLut(path, ro);
         out.decision = decidePurpose(*out.image, o.inPurpose);
         out.purpose = o.extract.target.value_or(out.decision.purpose);
-        const Lut3D table = out.image->toLut3D();
+        // The strength blends the edit (lut/ops/Strength.h): an edit before it is made into the
+        // game's LUT, the edit a game LUT makes after it is made, a LUT kept for its purpose as
+        // it is.
+        const bool full = isFullStrength(o.extract.strength);
+        const bool blendAfter =
+            out.decision.purpose == LutPurpose::Smash && out.purpose == LutPurpose::Raw;
+        Lut3D table = out.image->toLut3D();
+        if (!full && !blendAfter)
+            table = applyStrength(table, o.extract.strength);
         if (out.purpose == out.decision.purpose) {
             const int size = o.extract.outputSize;
             out.lut = size > 0 && size != table.size()
@@ -46,6 +55,8 @@ ExtractFileResult extractLutFromFile(const std::string& path, const ExtractFileO
         po.nthreads = o.extract.nthreads;
         out.conversion = convertPurpose(table, out.decision.purpose, out.purpose, po);
         out.lut = out.conversion->lut;
+        if (!full && blendAfter)
+            out.lut = applyStrength(out.lut, o.extract.strength);
         return out;
     } else if (found.status == FindStatus::NotFound && isSmushStripName(path) &&
                loaded.image.width() >= 256 && loaded.image.height() >= 16) {

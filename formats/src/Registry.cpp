@@ -1,6 +1,8 @@
 // The one list of built-in formats. Each format file exposes a factory declared in Formats.h.
 #include "lut/formats/Registry.h"
 
+#include "lut/io/BuiltinLut.h"
+
 #include "Formats.h"
 
 #include <mutex>
@@ -25,6 +27,16 @@ void registerBuiltinFormats() {
 
 LutFile readLut(const std::string& path, const FormatOptions& options,
                 const std::string& formatName) {
+    if (isBuiltinLutName(path)) {
+        // A LUT known by name (lut/io/BuiltinLut.h), never a file.
+        LutFile f;
+        f.cube = builtinLut(path);
+        f.format = "builtin";
+        f.dialect = path.substr(kBuiltinLutPrefix.size());
+        // It says what it is for: a LUT the game applies (as a .nutexb is), else an edit.
+        f.purpose = isBuiltinGameLut(path) ? LutPurpose::Smash : LutPurpose::Raw;
+        return f;
+    }
     registerBuiltinFormats();
     return FormatRegistry::instance().read(path, options, formatName);
 }

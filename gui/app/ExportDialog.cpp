@@ -6,6 +6,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -83,6 +84,32 @@ ExportDialog::ExportDialog(ExportTarget target, const ExportNameInput& naming, Q
     form->addRow(tr("Bit depth"), m_bitDepth);
     m_dither = new QCheckBox(tr("Ordered dither for 8-bit images"), this);
     form->addRow(QString(), m_dither);
+    auto amount = [this](const char* name, const QString& tip) {
+        auto* s = new QDoubleSpinBox(this);
+        s->setObjectName(QString::fromLatin1(name));
+        s->setRange(0.0, 2.0);
+        s->setDecimals(2);
+        s->setSingleStep(0.05);
+        s->setValue(1.0);
+        s->setToolTip(tip);
+        return s;
+    };
+    m_strength = amount("strength", tr("How much of the edit: 0 = neutral, 1 = the edit, up to 2 "
+                                       "exaggerates it (blended with neutral in Oklab)"));
+    form->addRow(tr("Strength"), m_strength);
+    m_separate = new QCheckBox(tr("Lightness and colour apart"), this);
+    m_separate->setObjectName("separate");
+    m_luma = amount("luma", tr("How much of the edit's lightness change (Oklab L)"));
+    m_chroma = amount("chroma", tr("How much of the edit's colour change (Oklab a, b)"));
+    auto* apart = new QHBoxLayout;
+    apart->addWidget(m_separate);
+    apart->addWidget(new QLabel(tr("Lightness"), this));
+    apart->addWidget(m_luma);
+    apart->addWidget(new QLabel(tr("Colour"), this));
+    apart->addWidget(m_chroma);
+    form->addRow(QString(), apart);
+    m_luma->setEnabled(false);
+    m_chroma->setEnabled(false);
     m_note = new QLabel(this);
     m_note->setObjectName("note");
     m_note->setWordWrap(true);
@@ -98,6 +125,14 @@ ExportDialog::ExportDialog(ExportTarget target, const ExportNameInput& naming, Q
     connect(m_size, &QSpinBox::valueChanged, this, &ExportDialog::updateNote);
     connect(m_bitDepth, &QComboBox::currentIndexChanged, this, &ExportDialog::updateNote);
     connect(m_dither, &QCheckBox::toggled, this, &ExportDialog::updateNote);
+    connect(m_separate, &QCheckBox::toggled, this, [this](bool apart) {
+        m_strength->setEnabled(!apart);
+        m_luma->setEnabled(apart);
+        m_chroma->setEnabled(apart);
+        updateNote();
+    });
+    for (QDoubleSpinBox* s : {m_strength, m_luma, m_chroma})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &ExportDialog::updateNote);
 
     // The target's own export first.
     const ExportTargetInfo& t = exportTargetInfo(target);
@@ -125,10 +160,16 @@ void ExportDialog::choiceChanged() {
     n.layout = c.layout;
     n.extension = c.extension;
     m_path->setText(suggestedExportPath(n));
-    // Strips at their natural size (16^3 = 256x16), the game's at its own; else as edited.
+    // Strips at their natural size (16^3 = 256x16; reshade and unity-32 are 32^3 only), the
+    // game's at its own; else as edited.
     const ExportTargetInfo& t = exportTargetInfo(m_target);
     const bool strip = !c.layout.isEmpty();
-    m_size->setValue(c.format == QString::fromStdString(t.format) ? t.size : strip ? 16 : 0);
+    const int fixed = strip ? layoutFixedSize(parseLayout(c.layout.toStdString())) : 0;
+    m_size->setValue(fixed                                          ? fixed
+                     : c.format == QString::fromStdString(t.format) ? t.size
+                     : strip                                        ? 16
+                                                                    : 0);
+    m_size->setEnabled(fixed == 0);
     m_bitDepth->setCurrentIndex(0);
     m_dither->setChecked(false);
     updateNote();
@@ -142,14 +183,19 @@ bool ExportDialog::matchesPreview() const {
     // Another layout of the same strip holds the same entries.
     const bool sameFormat = c.format == QString::fromStdString(t.format);
     return sameFormat && o.size == want.size && (o.bitDepth == 0 || o.bitDepth == want.bitDepth) &&
-           !o.dither;
+           !o.dither && isFullStrength(strength());
 }
 
 void ExportDialog::updateNote() {
-    const QString what = exportTargetInfo(m_target).purpose == LutPurpose::Smash
-                             ? tr("the Smash Ultimate game LUT that shows your edit (16³), "
-                                  "marked as the game's (LUTKIT_PURPOSE smash)")
-                             : tr("the LUT as edited, marked as an edit (LUTKIT_PURPOSE raw)");
+    QString what = exportTargetInfo(m_target).purpose == LutPurpose::Smash
+                       ? tr("the Smash Ultimate game LUT that shows your edit (16³), "
+                            "marked as the game's (LUTKIT_PURPOSE smash)")
+                       : tr("the LUT as edited, marked as an edit (LUTKIT_PURPOSE raw)");
+    const StrengthAmounts a = strengthAmounts(strength());
+    if (a.luma != 1.0 || a.chroma != 1.0)
+        what += a.luma == a.chroma
+                    ? tr(", at strength %1").arg(a.luma)
+                    : tr(", at lightness %1 and colour %2").arg(a.luma).arg(a.chroma);
     const QString target = QString::fromStdString(exportTargetInfo(m_target).label);
     m_note->setText(matchesPreview()
                         ? tr("%1; exactly what the preview shows (target: %2).").arg(what, target)
@@ -174,6 +220,24 @@ QString ExportDialog::path() const {
 ExportChoice ExportDialog::choice() const {
     const int i = m_format->currentIndex();
     return i >= 0 && i < m_choices.size() ? m_choices[i] : ExportChoice{};
+}
+
+StrengthOptions ExportDialog::strength() const {
+    StrengthOptions s;
+    s.strength = m_strength->value();
+    if (m_separate->isChecked()) {
+        s.luma = m_luma->value();
+        s.chroma = m_chroma->value();
+    }
+    return s;
+}
+
+void ExportDialog::setStrength(const StrengthOptions& s) {
+    const StrengthAmounts a = strengthAmounts(s);
+    m_strength->setValue(s.strength);
+    m_luma->setValue(a.luma);
+    m_chroma->setValue(a.chroma);
+    m_separate->setChecked(a.luma != a.chroma);
 }
 
 FormatOptions ExportDialog::options() const {

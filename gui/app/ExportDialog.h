@@ -4,7 +4,9 @@
 // target (the toolbar): for Smash the game LUT that shows the edit, else the LUT as edited; the
 // dialog says which, and whether the file is exactly what the preview shows (the target's
 // default format and settings). The suggested file is never one the user opened
-// (ExportNaming.h); each format choice suggests its own name.
+// (ExportNaming.h); each format choice suggests its own name. Strength blends the edit with
+// neutral before it is written (lut/ops/Strength.h, as lutkit's --strength), in lightness and
+// chroma together or apart.
 #include "ExportNaming.h"
 #include "ExportTarget.h"
 
@@ -14,6 +16,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -39,6 +42,10 @@ public:
     QString path() const;
     ExportChoice choice() const;
     FormatOptions options() const;
+    // The strength asked for (full unless the user changed it).
+    StrengthOptions strength() const;
+    // Sets the strength controls (both amounts, or lightness and chroma apart when they differ).
+    void setStrength(const StrengthOptions& strength);
     ExportTarget target() const { return m_target; }
     // Selects a format (and layout) by registry name; false if there is no such choice.
     bool selectChoice(const QString& format, const QString& layout = {});
@@ -58,6 +65,10 @@ private:
     QSpinBox* m_size;
     QComboBox* m_bitDepth;
     QCheckBox* m_dither;
+    QDoubleSpinBox* m_strength;
+    QCheckBox* m_separate;
+    QDoubleSpinBox* m_luma;
+    QDoubleSpinBox* m_chroma;
     QLabel* m_note;
 };
 

@@ -296,7 +296,8 @@ bool FileActions::isOpenedLut(const QString& path) const {
 }
 
 bool FileActions::exportLut(const QString& path, const QString& format,
-                            const FormatOptions& options, ExportTarget target, bool overwrite) {
+                            const FormatOptions& options, ExportTarget target, bool overwrite,
+                            const StrengthOptions& strength) {
     if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, isOpenedLut(path))) {
         m_window->reportError(
             tr("Export"), tr("%1 exists and was not replaced.")
@@ -305,10 +306,12 @@ bool FileActions::exportLut(const QString& path, const QString& format,
     }
     try {
         QDir().mkpath(QFileInfo(path).absolutePath()); // the "edited" folder beside an original
-        const Diagnostics d = m_window->document()->exportLut(path, format, options, target);
+        const Diagnostics d =
+            m_window->document()->exportLut(path, format, options, target, strength);
         QStringList lines;
         for (const auto& x : d)
             lines << QString::fromStdString(x.str());
+        lines << m_window->checkWarnings(target); // lutkit check's failing checks, if any
         showStatus(tr("Exported %1").arg(QDir::toNativeSeparators(path)));
         m_window->showNotes(lines);
     } catch (const std::exception& e) {
@@ -485,9 +488,9 @@ bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
     // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
     // agree (a heavy grade can fool it).
     QStringList items = {tr("Detect automatically")};
-    for (LutLayout l : allLayouts())
-        if (l != LutLayout::Hald)
-            items << QString::fromLatin1(toString(l));
+    const formats::ImageInfo info = formats::readImageInfo(path.toStdString());
+    for (const LayoutFit& f : layoutsForImageSize(info.width, info.height))
+        items << QString::fromLatin1(toString(f.layout));
     bool ok = false;
     const QString item = QInputDialog::getItem(
         m_window, tr("Strip layout"),
@@ -541,6 +544,8 @@ void FileActions::exportDialog() {
         if (QFileInfo::exists(path) && !confirmReplace(path, isOpenedLut(path)))
             continue;
         exportLut(path, dlg.choice().format, dlg.options(), dlg.target(), true);
+        return;
+        exportLut(path, dlg.choice().format, dlg.options(), dlg.target(), true, dlg.strength());
         return;
     }
 }

@@ -50,9 +50,11 @@ public:
     bool save();
     bool saveAs(const QString& path);
     // Writes the table `target` exports in `format`. An existing file is replaced only when
-    // `overwrite` is true or the user says so (headless: refused).
+    // `overwrite` is true or the user says so (headless: refused). `strength`: the edit blended
+    // with neutral first (lut/ops/Strength.h).
     bool exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                   ExportTarget target, bool overwrite = false);
+                   ExportTarget target, bool overwrite = false,
+                   const StrengthOptions& strength = {});
     // The full-resolution preview with the current settings, written the way `lutkit preview`
     // does (lut::formats::renderedImageWriteOptions: 8-bit unless the extension is float), on a
     // worker (saveTask: progress and Cancel in the status bar). start* returns at once; the

@@ -58,7 +58,8 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     auto* form = new QFormLayout;
     m_layout = new QComboBox(this);
     for (LutLayout l : allLayouts())
-        m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
+        if (layoutFixedSize(l) == 0) // reshade, unity-32: unreal's and unity's pixels at 32^3
+            m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
     m_layout->setToolTip(tr("Layout of the slices (see docs/specs/strip-layouts.md)"));
     form->addRow(tr("Layout"), m_layout);
     m_wrap = new QCheckBox(tr("Show slices as a grid"), this);

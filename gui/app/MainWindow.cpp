@@ -2,6 +2,8 @@
 
 #include "AdjustmentsPanel.h"
 #include "BackgroundTask.h"
+#include "CheckModel.h"
+#include "CheckPanel.h"
 #include "CurvesPanel.h"
 #include "Document.h"
 #include "FileActions.h"
@@ -163,6 +165,9 @@ void MainWindow::buildDocks() {
     m_lutView = new LutView(this);
     m_scopes = new ScopesView(this);
     m_undoView = new QUndoView(m_doc->undoStack(), this);
+    m_checkModel = new CheckModel(this);
+    m_check = new CheckPanel(m_checkModel, this);
+    connect(m_check, &CheckPanel::highlightChanged, m_view, &PreviewView::setHighlight);
     m_undoView->setEmptyLabel(tr("<original>"));
 
     QDockWidget* adjustDock = makeDock(m_adjust, tr("Adjustments"), "dock.adjustments", true);
@@ -171,6 +176,7 @@ void MainWindow::buildDocks() {
     QDockWidget* lutDock = makeDock(m_lutView, tr("LUT"), "dock.lut", true);
     QDockWidget* scopesDock = makeDock(m_scopes, tr("Scopes"), "dock.scopes", false);
     QDockWidget* historyDock = makeDock(m_undoView, tr("History"), "dock.history", false);
+    QDockWidget* checkDock = makeDock(m_check, tr("Check"), "dock.check", false);
     addDockWidget(Qt::RightDockWidgetArea, adjustDock);
     addDockWidget(Qt::RightDockWidgetArea, wheelsDock);
     addDockWidget(Qt::RightDockWidgetArea, curvesDock);
@@ -180,6 +186,7 @@ void MainWindow::buildDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, scopesDock);
     addDockWidget(Qt::LeftDockWidgetArea, historyDock);
     tabifyDockWidget(scopesDock, historyDock);
+    tabifyDockWidget(scopesDock, checkDock);
     scopesDock->raise();
     resizeDocks({lutDock, adjustDock}, {330, 340}, Qt::Horizontal);
     resizeDocks({lutDock, scopesDock}, {340, 420}, Qt::Vertical); // room for the vectorscope
@@ -296,8 +303,8 @@ bool MainWindow::openScreenshotLut(const QString& path) {
 }
 
 bool MainWindow::exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                           ExportTarget target, bool overwrite) {
-    return m_files->exportLut(path, format, options, target, overwrite);
+                           ExportTarget target, bool overwrite, const StrengthOptions& strength) {
+    return m_files->exportLut(path, format, options, target, overwrite, strength);
 }
 
 bool MainWindow::savePreviewImage(const QString& path) {
@@ -345,6 +352,7 @@ void MainWindow::onImageChanged() {
     o.input = detectSceneKind(m_doc->imageInfo().isFloat);
     m_preview->setOptions(o);
     m_preview->setImage(m_doc->storedImage(), m_doc->imageInfo().isFloat);
+    m_checkModel->setPicture(m_doc->storedImage());
     updateTitle();
 }
 
@@ -394,6 +402,11 @@ void MainWindow::onTargetLut(const std::shared_ptr<const TargetLut>& target) {
     if (!m_doc->lutNotes().isEmpty())
         extra += QStringLiteral("<br><b>Notes</b> ") + m_doc->lutNotes().join(' ').toHtmlEscaped();
     m_lutView->setLut(*target->shown, m_doc->lutOrigin(), extra);
+    m_checkModel->setLut(target->shown, m_preview->options().target == ExportTarget::Smash);
+}
+
+QStringList MainWindow::checkWarnings(ExportTarget target) const {
+    return target == m_preview->options().target ? m_checkModel->failingChecks() : QStringList();
 }
 
 void MainWindow::onHover(int x, int y) {

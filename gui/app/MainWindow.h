@@ -8,6 +8,7 @@
 
 #include "lut/LutPurpose.h"
 #include "lut/io/Format.h"
+#include "lut/ops/Strength.h"
 
 #include <QMainWindow>
 #include <QStringList>
@@ -25,6 +26,8 @@ namespace lut::gui {
 class AdjustmentsPanel;
 class BackgroundTask;
 class TaskStatus;
+class CheckModel;
+class CheckPanel;
 class CurvesPanel;
 class Document;
 class FileActions;
@@ -50,6 +53,10 @@ public:
     PreviewView* previewView() const { return m_view; }
     LutView* lutView() const { return m_lutView; }
     ScopesView* scopesView() const { return m_scopes; }
+    CheckPanel* checkPanel() const { return m_check; }
+    // The failing checks of the LUT the preview's target exports (lutkit check), one line each:
+    // what an export of that target warns about.
+    QStringList checkWarnings(ExportTarget target) const;
 
     // false: errors go to stderr and lastError() instead of a dialog, no question is asked and
     // no setting is written (tests, --screenshot, --save-preview, scripts).
@@ -83,7 +90,8 @@ public:
     bool openLutFile(const QString& path, const FormatOptions& options = {});
     bool openScreenshotLut(const QString& path);
     bool exportLut(const QString& path, const QString& format, const FormatOptions& options,
-                   ExportTarget target, bool overwrite = false);
+                   ExportTarget target, bool overwrite = false,
+                   const StrengthOptions& strength = {});
     bool savePreviewImage(const QString& path);
     bool saveDocument();
     bool saveDocumentAs(const QString& path);
@@ -131,6 +139,8 @@ private:
     WheelsPanel* m_wheels = nullptr;
     ScopesView* m_scopes = nullptr;
     QUndoView* m_undoView = nullptr;
+    CheckModel* m_checkModel = nullptr;
+    CheckPanel* m_check = nullptr;
     FileActions* m_files = nullptr;
     WindowActions* m_actions = nullptr;
 

@@ -36,6 +36,11 @@ void PreviewView::setAfter(const QImage& image, const QImage& clipOverlay) {
     update();
 }
 
+void PreviewView::setHighlight(const QImage& overlay) {
+    m_highlight = overlay;
+    update();
+}
+
 void PreviewView::setShowClipping(bool on) {
     m_showClipping = on;
     update();
@@ -45,6 +50,7 @@ void PreviewView::clear() {
     m_before = {};
     m_after = {};
     m_clip = {};
+    m_highlight = {};
     m_imageSize = {};
     update();
 }
@@ -162,15 +168,18 @@ void PreviewView::paintEvent(QPaintEvent*) {
     case Mode::After:
         drawClipped(after, r);
         drawClipped(clip, r);
+        drawClipped(m_highlight, r);
         break;
     case Mode::Before:
         drawClipped(m_before, r);
+        drawClipped(m_highlight, r);
         break;
     case Mode::Split: {
         const double dx = dividerX();
         drawClipped(m_before, QRectF(r.topLeft(), QPointF(dx, r.bottom())));
         drawClipped(after, QRectF(QPointF(dx, r.top()), r.bottomRight()));
         drawClipped(clip, QRectF(QPointF(dx, r.top()), r.bottomRight()));
+        drawClipped(m_highlight, r);
         p.setRenderHint(QPainter::Antialiasing);
         const double top = std::max(0.0, r.top()), bottom = std::min<double>(height(), r.bottom());
         p.setPen(QPen(QColor(255, 255, 255, 220), 1.5));

@@ -23,6 +23,10 @@ public:
     // Marks the clipped pixels of the after picture (red: a channel at 255, blue: at 0).
     void setShowClipping(bool on);
     bool showsClipping() const { return m_showClipping; }
+    // An overlay drawn over the whole picture, both sides (the Check panel's highlighted
+    // colours); null: none.
+    void setHighlight(const QImage& overlay);
+    const QImage& highlight() const { return m_highlight; }
     void clear();
 
     void setMode(Mode mode);
@@ -62,6 +66,7 @@ private:
     QImage m_before;
     QImage m_after;
     QImage m_clip;
+    QImage m_highlight;
     bool m_showClipping = false;
     Mode m_mode = Mode::Split;
     double m_split = 0.5;

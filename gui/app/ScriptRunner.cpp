@@ -2,6 +2,8 @@
 
 #include "AdjustmentsPanel.h"
 #include "BackgroundTask.h"
+#include "CheckModel.h"
+#include "CheckPanel.h"
 #include "CompareDialog.h"
 #include "CurveEditor.h"
 #include "CurvesPanel.h"
@@ -24,9 +26,11 @@
 #include <QApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QDockWidget>
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
@@ -420,6 +424,24 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         noNewError(w.fileActions()->loadAdjustments(arg(0)));
     } else if (cmd == "export") {
         const bool overwrite = args.removeAll(QStringLiteral("overwrite")) > 0;
+        // strength=T, luma=T, chroma=T: the export dialog's strength (lutkit --strength ...).
+        StrengthOptions strength;
+        for (int i = args.size() - 1; i >= 0; --i) {
+            const QString key = args[i].section(QLatin1Char('='), 0, 0);
+            if (!args[i].contains(QLatin1Char('=')) ||
+                (key != "strength" && key != "luma" && key != "chroma"))
+                continue;
+            bool ok = false;
+            const double v = args[i].section(QLatin1Char('='), 1).toDouble(&ok);
+            need(ok, QStringLiteral("%1 needs a number").arg(key));
+            if (key == "strength")
+                strength.strength = v;
+            else if (key == "luma")
+                strength.luma = v;
+            else
+                strength.chroma = v;
+            args.removeAt(i);
+        }
         ExportChoice choice;
         QString path = suggestedExport(w, &choice);
         FormatOptions o = targetFormatOptions(preview->options().target);
@@ -435,7 +457,8 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
                 o = targetFormatOptions(preview->options().target);
         }
         out << "exported " << path << "\n";
-        noNewError(w.exportLut(path, choice.format, o, preview->options().target, overwrite));
+        noNewError(
+            w.exportLut(path, choice.format, o, preview->options().target, overwrite, strength));
     } else if (cmd == "save-preview") {
         settle(w);
         noNewError(w.savePreviewImage(arg(0)));
@@ -460,6 +483,29 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         need(f.open(QIODevice::WriteOnly) && f.write(text.toUtf8() + '\n') >= 0 && f.commit(),
              QStringLiteral("cannot write %1").arg(arg(1)));
         out << "compared " << arg(0) << ": max ΔE2000 " << exact << "\n";
+    } else if (cmd == "check") {
+        // The Check panel raised and current; with N, finding N clicked (highlighted).
+        settle(w);
+        auto* dock = w.findChild<QDockWidget*>(QStringLiteral("dock.check"));
+        dock->show();
+        dock->raise();
+        CheckPanel* panel = w.checkPanel();
+        panel->model()->waitForIdle();
+        QApplication::processEvents();
+        if (!args.isEmpty()) {
+            QListWidget* list = panel->findingsList();
+            const int n = arg(0).toInt();
+            const int findings = panel->model()->report()
+                                     ? static_cast<int>(panel->model()->report()->findings.size())
+                                     : 0;
+            need(n >= 1 && n <= findings,
+                 QStringLiteral("check: no finding %1 (%2 listed)").arg(arg(0)).arg(findings));
+            list->setCurrentRow(n - 1);
+            emit list->itemClicked(list->item(n - 1));
+            panel->model()->waitForIdle();
+            QApplication::processEvents();
+        }
+        out << "check " << panel->verdictText() << "\n";
     } else if (cmd == "screenshot") {
         settle(w);
         const QImage shot = w.grab().toImage();

@@ -19,6 +19,8 @@
 //   start-open-image PATH   start-compare FILE   start-save-preview PATH   (return at once)
 //   cancel load|compare|save-preview   (the status bar's Cancel)   wait-task NAME
 //   probe on|off               (the repaint probe, RepaintProbe.h; off prints the longest gap)
+//   check [N]                  (the Check panel raised and current, its verdict printed; with N,
+//                               finding N clicked: its colours highlighted on the picture)
 //   dialogs accept|reject      (how modal dialogs a command opens are answered: Return or Escape;
 //                               default reject)
 //   print WHAT                 (state on stdout: target input chain bloom param:KEY undo-count

@@ -12,6 +12,7 @@
 #include "PreviewView.h"
 
 #include "lut/interp/Sampler.h"
+#include "lut/io/BuiltinLut.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -100,6 +101,16 @@ void WindowActions::buildFileMenu() {
     m_openLut =
         file->addAction(st->standardIcon(QStyle::SP_FileDialogDetailedView), tr("Open &LUT…"),
                         QKeySequence(tr("Ctrl+L")), files, &FileActions::openLutDialog);
+    QMenu* builtins = file->addMenu(tr("Open &Built-in LUT"));
+    for (const BuiltinLutInfo& b : builtinLuts()) {
+        const QString name = QString::fromLatin1(kBuiltinLutPrefix.data(),
+                                                 static_cast<int>(kBuiltinLutPrefix.size())) +
+                             QString::fromStdString(b.name);
+        QAction* a = builtins->addAction(name);
+        a->setToolTip(QString::fromStdString(b.description));
+        a->setStatusTip(QString::fromStdString(b.description));
+        connect(a, &QAction::triggered, files, [files, name] { files->startOpenLut(name); });
+    }
     file->addAction(tr("LUT from &Edited Screenshot…"), files, &FileActions::openScreenshotDialog)
         ->setToolTip(tr("Extract the LUT from a screenshot with an embedded patch (lutkit embed)"));
     QMenu* recentImages = file->addMenu(tr("Recent Images"));

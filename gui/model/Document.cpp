@@ -7,6 +7,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/BuiltinLut.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
 #include "lut/ops/AdjustmentList.h"
@@ -56,6 +57,8 @@ constexpr int kCurveKeyBase = 100;
 bool looksLikeLutFile(const QString& path) {
     formats::registerBuiltinFormats();
     const std::string p = path.toStdString();
+    if (isBuiltinLutName(p)) // builtin:smash-default ...: a LUT known by name
+        return true;
     if (!hasPictureExtension(p))
         return !FormatRegistry::instance().forExtension(p).empty();
     try {
@@ -191,15 +194,18 @@ QStringList Document::adoptLut(const LutFile& file, const QString& path,
     } else {
         lut = file.toLut3D();
     }
-    // What the file says first; the user's answer only where it says nothing.
+    // What the file says first (a built-in game LUT says it is one, as a .nutexb does); the
+    // user's answer only where it says nothing.
     const PurposeDecision purpose =
         decidePurpose(file, file.purpose ? std::nullopt : answer, LutPurpose::Raw);
     if (purpose.source == PurposeSource::Assumed)
         notes << tr("%1 does not say what it is for: taken as an edit (raw); open it again and "
                     "answer, or lutkit-editor --lut-target smash, if it is the game's LUT")
                      .arg(QFileInfo(path).fileName());
-    replaceLut(std::move(lut), path, path, QString::fromStdString(file.format), false,
-               purpose.purpose, notes);
+    // A built-in LUT is no file: the document is untitled (Save asks where), named by its origin.
+    const bool builtin = file.format == "builtin";
+    replaceLut(std::move(lut), builtin ? QString() : path, path,
+               QString::fromStdString(file.format), false, purpose.purpose, notes);
     m_purposeKnown = purpose.source != PurposeSource::Assumed;
     return notes;
 }
@@ -290,9 +296,10 @@ void Document::loadAdjustmentList(const QString& path) {
 }
 
 Diagnostics Document::exportLut(const QString& path, const QString& formatName,
-                                const FormatOptions& options, ExportTarget target) const {
+                                const FormatOptions& options, ExportTarget target,
+                                const StrengthOptions& strength) const {
     LutFile file;
-    file.cube = exportTable(lutSource(), target);
+    file.cube = exportTable(lutSource(), target, strength);
     file.purpose = exportTargetInfo(target).purpose; // the file says what it is for
     return formats::writeLut(path.toStdString(), file, options, formatName.toStdString());
 }

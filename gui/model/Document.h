@@ -115,8 +115,10 @@ public:
     // ---- saving ---------------------------------------------------------------------------
     // Writes the table `target` exports (exportTable) with a registered format ("" = by
     // extension); throws lut::Error. Never changes the document's path or modified state.
+    // `strength`: the edit blended with neutral first (lut/ops/Strength.h, lutkit --strength).
     Diagnostics exportLut(const QString& path, const QString& formatName,
-                          const FormatOptions& options, ExportTarget target) const;
+                          const FormatOptions& options, ExportTarget target,
+                          const StrengthOptions& strength = {}) const;
     // Save: writes the document's LUT (the look, or for a game LUT the game LUT with the edit,
     // as the Smash export), then path becomes the document's file and the document is clean.
     // Throws lut::Error (document unchanged).

@@ -38,9 +38,14 @@ ExportTarget parseExportTarget(std::string_view key) {
     throw Error("unknown target '" + std::string(key) + "' (expected smash, engine or cube)");
 }
 
-Lut3D exportTable(const LutSource& source, ExportTarget target, ClipCount* clip) {
+Lut3D exportTable(const LutSource& source, ExportTarget target, const StrengthOptions& strength,
+                  ClipCount* clip) {
     static const Lut3D neutral = Lut3D::identity(33);
     const LutPurpose to = exportTargetInfo(target).purpose;
+    const bool full = isFullStrength(strength);
+    // At a partial strength the edit is blended with neutral (lut/ops/Strength.h): before it is
+    // made for the game, so the game shows that share of the edit.
+    auto blended = [&](const Lut3D& edit) { return full ? edit : applyStrength(edit, strength); };
     // The edit is a LUT on display colours, evaluated tetrahedrally (exact for affine edits, the
     // neutral one included), continued above white (a game LUT exported unchanged is itself).
     PurposeOptions o;
@@ -52,23 +57,23 @@ Lut3D exportTable(const LutSource& source, ExportTarget target, ClipCount* clip)
         // The adjustments edit the picture the game shows with its LUT: that LUT is the stage.
         o.stageLut = source.gameBase.get();
         const Lut3D edit = neutralEdit ? neutral : applyAdjustments(neutral, *source.adjustments);
-        const PurposeConversion c = convertPurpose(edit, LutPurpose::Raw, to, o);
+        const PurposeConversion c = convertPurpose(blended(edit), LutPurpose::Raw, to, o);
         if (clip)
             *clip = countOutOfRange(c.authoring.exact);
         return c.authoring.exact; // the file clamps it, as it clamps convert's
     }
     if (source.gameBase) { // the edit the game's LUT makes, then the adjustments on it
         const Lut3D edit = editOfGameLut(*source.gameBase, 33);
-        table = neutralEdit ? edit : applyAdjustments(edit, *source.adjustments);
+        table = blended(neutralEdit ? edit : applyAdjustments(edit, *source.adjustments));
     } else {
         const Lut3D& effective = source.effective ? *source.effective : neutral;
         if (to == LutPurpose::Smash) {
-            const PurposeConversion c = convertPurpose(effective, LutPurpose::Raw, to, o);
+            const PurposeConversion c = convertPurpose(blended(effective), LutPurpose::Raw, to, o);
             if (clip)
                 *clip = countOutOfRange(c.authoring.exact);
             return c.authoring.exact;
         }
-        table = effective;
+        table = blended(effective);
     }
     if (clip)
         *clip = countOutOfRange(table);
@@ -88,7 +93,7 @@ TargetLut makeTargetLut(const LutSource& source, ExportTarget target) {
     formats::registerBuiltinFormats();
     const ExportTargetInfo& info = exportTargetInfo(target);
     TargetLut out;
-    out.table = exportTable(source, target, &out.clip);
+    out.table = exportTable(source, target, {}, &out.clip);
     const Format* format = FormatRegistry::instance().byName(info.format);
     if (!format)
         throw Error("the " + info.format + " format is not available");

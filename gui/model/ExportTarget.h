@@ -17,6 +17,7 @@
 #include "lut/io/FormatOptions.h"
 #include "lut/ops/Adjust.h"
 #include "lut/ops/Clipping.h"
+#include "lut/ops/Strength.h"
 
 #include <memory>
 #include <optional>
@@ -71,9 +72,11 @@ struct TargetLut {
 // conversion (lut::convertPurpose with lut::kEditAboveWhite, as lutkit convert makes it), with
 // the adjustments as an edit of the picture. Smash: the 16^3 game LUT, its exact composition
 // before the file clamps it to [0, 1] (as convert's file clamps it: the same .nutexb bytes);
-// others: the edit (a game LUT as the edit it makes). `clip` (optional) counts the entries
-// outside [0, 1].
-Lut3D exportTable(const LutSource& source, ExportTarget target, ClipCount* clip = nullptr);
+// others: the edit (a game LUT as the edit it makes). At a partial strength (lut/ops/Strength.h)
+// the edit is blended with neutral first: for Smash before it is made for the game, so the game
+// shows that share of the edit. `clip` (optional) counts the entries outside [0, 1].
+Lut3D exportTable(const LutSource& source, ExportTarget target,
+                  const StrengthOptions& strength = {}, ClipCount* clip = nullptr);
 // The default format options of a target for writing `table`.
 FormatOptions targetFormatOptions(ExportTarget target);
 // Writes the target's default export to memory and reads it back; throws lut::Error.

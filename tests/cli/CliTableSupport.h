@@ -34,6 +34,9 @@ inline cli::RunHooks stubHooks() {
     h.mix = [](const cli::MixCommandOptions&) { return 0; };
     h.plot = [](const cli::PlotCommandOptions&) { return 0; };
     h.adjust = [](const cli::AdjustCommandOptions&) { return 0; };
+    h.check = [](const cli::CheckCommandOptions&) { return 0; };
+    h.chart = [](const cli::ChartCommandOptions&) { return 0; };
+    h.atlas = [](const cli::AtlasCommandOptions&) { return 0; };
     return h;
 }
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -117,9 +118,9 @@ TEST(Bake, SameAsOciobakelutWithAConfig) {
     }
 }
 
-TEST(Bake, ReportedErrorIsTheFileAgainstTheProcessorBetweenLatticePoints) {
-    // The bake's probes: 2N - 1 per axis over the table's domain, i.e. every lattice point and
-    // every cell centre. The same grid measured here with OCIO reading the written file.
+TEST(Bake, ReportedErrorBoundsTheFileAgainstTheProcessor) {
+    // The reported maximum bounds |file - processor| over every input of the table's domain:
+    // measured here on 100,000 random inputs with OCIO reading the written file and the source.
     const std::string dir = workDir();
     const std::string src = corpusPath("clf/multiple_ops.clf"), out = dir + "/m.cube";
     const auto r = runCli("bake --lut " + q(src) + " --cubesize 9 --json " + q(out));
@@ -128,22 +129,23 @@ TEST(Bake, ReportedErrorIsTheFileAgainstTheProcessorBetweenLatticePoints) {
     const double reportedMax = jsonNumber(r.out, "max", e);
     const double reportedMean = jsonNumber(r.out, "mean", e);
     const auto ps = ocioFileProcessor(src), pw = ocioFileProcessor(out);
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     double max = 0.0, sum = 0.0;
     int count = 0;
-    for (int b = 0; b < 17; ++b)
-        for (int g = 0; g < 17; ++g)
-            for (int rr = 0; rr < 17; ++rr) {
-                const glm::vec3 x = glm::vec3(rr, g, b) / 16.0f;
-                const glm::vec3 a = ocioEval(pw, x), want = ocioEval(ps, x);
-                for (int c = 0; c < 3; ++c) {
-                    max = std::max(max, std::fabs(double(a[c]) - want[c]));
-                    sum += std::fabs(double(a[c]) - want[c]);
-                    ++count;
-                }
-            }
+    for (int i = 0; i < 100000; ++i) {
+        const glm::vec3 x(u(rng), u(rng), u(rng));
+        const glm::vec3 a = ocioEval(pw, x), want = ocioEval(ps, x);
+        for (int c = 0; c < 3; ++c) {
+            max = std::max(max, std::fabs(double(a[c]) - want[c]));
+            sum += std::fabs(double(a[c]) - want[c]);
+            ++count;
+        }
+    }
     EXPECT_GT(max, 1e-3); // a 9^3 table cannot hold this chain: the check below can fail
-    EXPECT_NEAR(reportedMax, max, 1e-6 + 1e-4 * max);
-    EXPECT_NEAR(reportedMean, sum / count, 1e-6 + 1e-3 * sum / count);
+    EXPECT_GE(reportedMax, max);
+    EXPECT_LE(reportedMax, 1.5 * max);
+    EXPECT_NEAR(reportedMean, sum / count, 0.1 * sum / count);
 }
 
 TEST(Bake, UsesLutkitsOwnConfigWithoutOcio) {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -119,30 +120,30 @@ TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
                 for (int c = 0; c < 3; ++c)
                     ASSERT_NEAR(dst.at(rr, g, b)[c], want.v[c], 2e-6);
             }
-    // The reported error: both tables evaluated (trilinear) on a probe grid spanning the domain,
-    // 2 * 33 + 1 = 67 points per axis, so that probes fall between the lattice points of both.
-    const int probes = 67;
+    // The reported maximum bounds the error over every input: measured here on 100,000 random
+    // inputs, both tables evaluated (trilinear) in float64; the mean is close to theirs.
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
     double maxAbs = 0, sum = 0;
     std::size_t count = 0;
-    for (int z = 0; z < probes; ++z)
-        for (int y = 0; y < probes; ++y)
-            for (int x = 0; x < probes; ++x) {
-                const double in[3] = {double(x) / (probes - 1), double(y) / (probes - 1),
-                                      double(z) / (probes - 1)};
-                const Vec3d a = trilinear(src, in), b2 = trilinear(dst, in);
-                for (int c = 0; c < 3; ++c) {
-                    const double d = std::fabs(a.v[c] - b2.v[c]);
-                    maxAbs = std::max(maxAbs, d);
-                    sum += d;
-                    ++count;
-                }
-            }
+    for (int i = 0; i < 100000; ++i) {
+        const double in[3] = {u(rng), u(rng), u(rng)};
+        const Vec3d a = trilinear(src, in), b2 = trilinear(dst, in);
+        for (int c = 0; c < 3; ++c) {
+            const double d = std::fabs(a.v[c] - b2.v[c]);
+            maxAbs = std::max(maxAbs, d);
+            sum += d;
+            ++count;
+        }
+    }
     const double mean = sum / double(count);
     ASSERT_GT(maxAbs, 1e-4); // the grade is curved: resampling it to 17^3 must cost something
-    EXPECT_NEAR(js["resample"]["error"]["max"].number, maxAbs, 1e-5 + 1e-3 * maxAbs);
-    EXPECT_NEAR(js["resample"]["error"]["mean"].number, mean, 1e-6 + 1e-3 * mean);
-    EXPECT_NEAR(js["resample"]["error"]["max_8bit_steps"].number, maxAbs * 255,
-                255 * (1e-5 + 1e-3 * maxAbs));
+    EXPECT_GE(js["resample"]["error"]["max"].number, maxAbs);
+    EXPECT_LE(js["resample"]["error"]["max"].number, 1.3 * maxAbs);
+    EXPECT_NEAR(js["resample"]["error"]["mean"].number, mean, 0.05 * mean);
+    EXPECT_NEAR(js["resample"]["error"]["max_8bit_steps"].number,
+                255 * js["resample"]["error"]["max"].number, 1e-6);
+    EXPECT_TRUE(js["resample"]["error"]["max_is_bound"].boolean);
     // A float .cube stores the resampled floats: no storage loss.
     EXPECT_LE(js["storage"]["max"].number, 1e-7);
 }

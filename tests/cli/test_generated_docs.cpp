@@ -116,7 +116,7 @@ TEST(GeneratedDocs, ManPageNamesEveryCommandAndOptionAndRenders) {
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.out, "") << "warnings from man/groff";
     const Shell text = sh("MANWIDTH=100 man -l '" + path + "' 2>/dev/null");
-    EXPECT_THAT(text.out, HasSubstr("lutkit convert [OPTIONS] IN OUT"));
+    EXPECT_THAT(text.out, HasSubstr("lutkit convert [OPTIONS] IN [OUT]"));
 }
 
 TEST(GeneratedDocs, CompletionScriptsNameEveryCommandAndOption) {
@@ -141,7 +141,8 @@ TEST(GeneratedDocs, BashCompletesCommandsOptionsAndValues) {
     EXPECT_EQ(complete("lutkit conv", 1), "convert\n");
     EXPECT_EQ(complete("lutkit convert --lay", 2), "--layout\n");
     EXPECT_EQ(complete("lutkit convert a.cube --in-l", 3), "--in-layout\n");
-    EXPECT_EQ(complete("lutkit convert a.cube b.png --layout ''", 5), "unreal unity smush hald\n");
+    EXPECT_EQ(complete("lutkit convert a.cube b.png --layout ''", 5),
+              "unreal unity smush hald reshade unity-32\n");
     EXPECT_EQ(complete("lutkit preview a.png b.png --preset f", 5), "filmic\n");
     EXPECT_EQ(complete("lutkit help pre", 2), "preview\n");
     EXPECT_EQ(complete("lutkit -", 1), "-V --version -h --help\n");

@@ -1,6 +1,7 @@
 // lutkit preview: output pixels against the float64 reference of docs/specs/smash-pipeline.md
 // (shared with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
 #include "../pipeline/PipelineTestUtil.h"
+#include "OklabReference.h"
 #include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
@@ -265,4 +266,33 @@ TEST(CliPreview, BatchWritesEveryGoodFileAndFailsOnBadOnes) {
     const formats::LoadedImage one = formats::readImage(dir + "/out/one.exr");
     EXPECT_LT(maxDiff(one.image, expectedSmash(scene, Lut3D::identity(16), false)), 1e-5);
     EXPECT_EQ(formats::readImage(dir + "/out/two.png").info.bitDepth, 8);
+}
+
+TEST(CliPreview, StrengthBlendsTheLutWithNeutralFirst) {
+    // --strength: the preview grades with the LUT blended with neutral in Oklab; the oracle is
+    // the float64 reference chain with a LUT blended by the float64 Oklab of
+    // tests/support/OklabReference.h.
+    const std::string dir = workDir();
+    const Lut3D lut = makeWarmLut(16);
+    const std::string cube = writeCube(dir + "/warm.cube", lut);
+    const Image scene = makeScene(37, 23, 77);
+    formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
+    Lut3D blended(16);
+    for (int b = 0; b < 16; ++b)
+        for (int g = 0; g < 16; ++g)
+            for (int r = 0; r < 16; ++r)
+                blended.at(r, g, b) = glm::vec3(strengthBlend(
+                    glm::dvec3(lut.latticeInput(r, g, b)), glm::dvec3(lut.at(r, g, b)), 0.4, 0.8));
+    const std::string out = dir + "/out.exr";
+    const RunResult r = runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut '" + cube +
+                               "' --luma-strength 0.4 --chroma-strength 0.8");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image got = formats::readImage(out).image;
+    EXPECT_LT(maxDiff(got, expectedSmash(scene, blended, true)), 1e-5);
+    // ... and not the full LUT (the blend changes the picture).
+    EXPECT_GT(maxDiff(got, expectedSmash(scene, lut, true)), 1e-3);
+    // Without --lut there is nothing to blend: bad usage.
+    EXPECT_EQ(
+        runCli("preview '" + dir + "/scene.exr' -o '" + dir + "/x.exr' --strength 0.5").exitCode,
+        2);
 }

@@ -88,15 +88,19 @@ const OptionEntry* findOption(const CommandEntry& c, const std::string& name) {
     return nullptr;
 }
 
-// A command line that satisfies every required argument of c, with `extra` appended.
+// A command line that satisfies every required argument of c (a name from the fixed set where
+// it has one), with `extra` appended.
 std::string minimalLine(const CommandEntry& c, const std::string& extra) {
     std::string line = c.name;
     for (const auto& o : c.options)
         if (o.required) {
             const bool number =
                 o.valueName == "INT" || o.valueName == "UINT" || o.valueName == "FLOAT";
+            // a value from the fixed set where there is one (atlas ACTION)
             line += (o.positional.empty() ? " " + o.longNames.front() : std::string()) +
-                    (number ? " 2" : " x");
+                    (!o.values.empty() ? " " + o.values.front()
+                     : number          ? " 2"
+                                       : " x");
         }
     return line + " " + extra;
 }
@@ -111,7 +115,8 @@ TEST(Vocabulary, EveryCommandIsInTheTable) {
     EXPECT_EQ(names, (std::vector<std::string>{
                          "neutral", "convert", "info",   "validate", "apply", "preview", "embed",
                          "extract", "fit",     "match",  "bench",    "bake",  "diff",    "compose",
-                         "invert",  "resize",  "smooth", "mix",      "plot",  "adjust",  "help"}));
+                         "invert",  "resize",  "smooth", "mix",      "plot",  "adjust",  "check",
+                         "chart",   "atlas",   "help"}));
 }
 
 TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {
@@ -260,6 +265,35 @@ TEST(Vocabulary, AnyBadValueIsBadUsage) {
     EXPECT_EQ(runInProcess("preview a.png b.png --stage vignette.strengh=1").exitCode, 2);
     EXPECT_EQ(runInProcess("preview a.png b.png --disable nosuch").exitCode, 2);
     EXPECT_EQ(runInProcess("nosuch").exitCode, 2);
+}
+
+// CLI11 reads "nan" and "inf" as numbers and its range checks let NaN through: `lutkit mix A B
+// o.cube --strength nan` wrote a LUT of NaN, exit 0 (issue 29). Every FLOAT option of every
+// command refuses them as bad usage, the stage settings of preview too.
+TEST(Vocabulary, NotANumberAndInfinityAreBadUsageForEveryNumberOption) {
+    const auto p = programTable();
+    int checked = 0;
+    for (const auto& c : p.commands)
+        for (const auto& o : c.options) {
+            if (o.valueName != "FLOAT" || o.hidden || !o.positional.empty())
+                continue;
+            for (const char* value : {"nan", "NaN", "inf", "-inf", "infinity"}) {
+                const std::string line = minimalLine(c, o.longNames.front() + " " + value);
+                SCOPED_TRACE(line);
+                const auto r = runInProcess(line);
+                EXPECT_EQ(r.exitCode, 2) << r.err;
+                // A range check says so first for the infinities; NaN passes every range.
+                const bool nan = std::string(value) == "nan" || std::string(value) == "NaN";
+                if (nan || r.err.find("not in range") == std::string::npos) {
+                    EXPECT_THAT(r.err, HasSubstr("value " + std::string(value) +
+                                                 " is not a finite number"));
+                }
+            }
+            ++checked;
+        }
+    EXPECT_GE(checked, 4); // mix --strength, smooth --sigma, fit --smoothness, diff --max-delta-e
+    EXPECT_EQ(runInProcess("preview a.png b.png --stage vignette.strength=nan").exitCode, 2);
+    EXPECT_EQ(runInProcess("mix a.cube b.cube o.cube --strength 0.25").exitCode, 0);
 }
 
 TEST(Vocabulary, OldNamesAndSpellingsStillWork) {

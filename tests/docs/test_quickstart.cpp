@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,12 +65,19 @@ struct LineRun {
     std::string out, err;
 };
 
-// Runs one README line with /bin/sh in `dir`, the built lutkit's folder first on PATH.
+// The folder of the lutkit the quick starts run: the built one, or $LUTKIT_QUICKSTART_BIN (the
+// package test's extracted /usr/bin).
+std::string programFolder() {
+    const char* other = std::getenv("LUTKIT_QUICKSTART_BIN");
+    return other && *other ? std::string(other) : fs::path(LUTKIT_CLI).parent_path().string();
+}
+
+// Runs one README line with /bin/sh in `dir`, lutkit's folder first on PATH.
 LineRun runLine(const fs::path& dir, const std::string& line) {
     const fs::path script = dir.parent_path() / "line.sh";
     const fs::path out = dir.parent_path() / "line.out", err = dir.parent_path() / "line.err";
-    std::ofstream(script) << "cd '" << dir.string() << "' || exit 99\nPATH='"
-                          << fs::path(LUTKIT_CLI).parent_path().string() << "':\"$PATH\"\n"
+    std::ofstream(script) << "cd '" << dir.string() << "' || exit 99\nPATH='" << programFolder()
+                          << "':\"$PATH\"\n"
                           << line << "\n";
     const std::string cmd = "/bin/sh '" + script.string() + "' >'" + out.string() + "' 2>'" +
                             err.string() + "' </dev/null";

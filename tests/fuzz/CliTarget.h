@@ -46,6 +46,12 @@ inline void checkLayout(const std::optional<LutLayout>& l) {
     }
 }
 
+// --strength, --luma-strength, --chroma-strength: 0..2, never NaN (CLI::Range lets NaN through).
+inline void checkStrength(const lut::StrengthOptions& s) {
+    for (const double v : {s.strength, s.luma.value_or(1.0), s.chroma.value_or(1.0)})
+        check(v >= 0.0 && v <= 2.0, "a strength outside 0..2 or NaN");
+}
+
 inline lut::cli::RunHooks hooks() {
     using namespace lut::cli;
     RunHooks h;
@@ -61,6 +67,7 @@ inline lut::cli::RunHooks hooks() {
         checkInterp(o.interp);
         checkLayout(o.layout);
         checkLayout(o.inLayout);
+        checkStrength(o.strength);
         return 0;
     };
     h.info = [](const InfoOptions& o) {
@@ -75,11 +82,13 @@ inline lut::cli::RunHooks hooks() {
     h.apply = [](const ApplyOptions& o) {
         checkInterp(o.interp);
         checkLayout(o.lutLayout);
+        checkStrength(o.strength);
         check(o.threads >= 0 && o.threads <= 1024, "--threads outside 0..1024");
         return 0;
     };
     h.preview = [](const PreviewOptions& o) {
         checkInterp(o.interp);
+        checkStrength(o.strength);
         checkBitDepth(o.bitDepth);
         const auto presets = allPresets();
         check(std::find(presets.begin(), presets.end(), o.preset) != presets.end(),
@@ -107,6 +116,17 @@ inline lut::cli::RunHooks hooks() {
     h.extract = [](const ExtractOptions& o) {
         checkSize(o.size);
         checkLayout(o.layout);
+        checkStrength(o.strength);
+        return 0;
+    };
+    h.atlas = [](const AtlasCommandOptions& o) {
+        check(o.action == "build" || o.action == "split" || o.action == "info",
+              "an atlas action that is none");
+        if (o.size)
+            checkSize(o.size);
+        checkInterp(o.interp);
+        checkLayout(o.layout);
+        checkLayout(o.inLayout);
         return 0;
     };
     h.fit = [](const FitOptions& o) {
@@ -119,6 +139,16 @@ inline lut::cli::RunHooks hooks() {
             checkSize(s);
         for (const Interpolation m : o.methods)
             checkInterp(m);
+        return 0;
+    };
+    h.check = [](const CheckCommandOptions& o) {
+        checkLayout(o.inLayout);
+        return 0;
+    };
+    h.chart = [](const ChartCommandOptions& o) {
+        checkBitDepth(o.bitDepth);
+        checkSize(o.width, 16, 16384);
+        checkSize(o.height, 16, 16384);
         return 0;
     };
     return h;

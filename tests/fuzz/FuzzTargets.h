@@ -9,6 +9,7 @@
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/LutFile.h"
+#include "lut/formats/Atlas.h"
 #include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
@@ -91,6 +92,25 @@ inline Outcome readChecked(const std::string& path, const FormatOptions& options
     }
 }
 
+// The same picture read as an atlas (lut/formats/Atlas.h): whole rows of one size, or refused.
+inline Outcome readAtlasChecked(const std::string& path) {
+    try {
+        const formats::AtlasReading a = formats::readAtlas(path);
+        invariant(a.shape.size >= 2 && a.shape.size <= 256, "atlas row size out of range");
+        invariant(a.shape.rows >= 1 && a.height == a.shape.rows * a.shape.size &&
+                      a.width == a.shape.size * a.shape.size,
+                  "atlas shape differs from the picture");
+        invariant(a.rows.size() == static_cast<std::size_t>(a.shape.rows) &&
+                      a.neutral.size() == a.rows.size(),
+                  "atlas rows differ from its shape");
+        for (const auto& [later, earlier] : a.duplicates)
+            invariant(earlier < later && later < a.shape.rows, "atlas repeat out of range");
+        return Outcome::Accepted;
+    } catch (const lut::Error&) {
+        return Outcome::Refused;
+    }
+}
+
 inline Outcome checkedCall(const auto& read) {
     try {
         LutFile f = read();
@@ -160,8 +180,11 @@ inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
     if (data[0] & 0x80) {
         if (hald)
             options.layout = LutLayout::Hald;
-        return readChecked(
-            writeScratch(hald ? "raw-hald.png" : "raw-strip.png", data + 1, size - 1), options);
+        const std::string raw =
+            writeScratch(hald ? "raw-hald.png" : "raw-strip.png", data + 1, size - 1);
+        if (!hald)
+            (void)readAtlasChecked(raw); // the strip harness reads every picture as an atlas too
+        return readChecked(raw, options);
     }
     static const char* const kLayouts[] = {"pilot", "unity",   "smush", "unreal",
                                            "godot", "lattice", "",      "hald"};
@@ -221,6 +244,8 @@ inline Outcome runImage(const std::uint8_t* data, std::size_t size, bool hald) {
             return Outcome::Refused;
         out->close();
     }
+    if (!hald)
+        (void)readAtlasChecked(path);
     return readChecked(path, options);
 }
 

@@ -210,12 +210,15 @@ private slots:
             paths << path->text();
             if (!c.layout.isEmpty()) {
                 layouts << c.layout;
-                QCOMPARE(size->value(), 16); // strips at their natural size, 16^3 = 256x16
+                // strips at their natural size, 16^3 = 256x16; the 1024x32 names at 32^3 only
+                const bool named = c.layout == "reshade" || c.layout == "unity-32";
+                QCOMPARE(size->value(), named ? 32 : 16);
+                QCOMPARE(size->isEnabled(), !named);
             }
             const auto layout = dlg.options().layout;
             QCOMPARE(layout ? QString::fromLatin1(toString(*layout)) : QString(), c.layout);
         }
-        for (const char* l : {"unreal", "unity", "smush"})
+        for (const char* l : {"unreal", "unity", "smush", "reshade", "unity-32"})
             QVERIFY2(layouts.contains(QLatin1String(l)), l);
         // For Smash the dialog starts on the game's file.
         ExportDialog smash(ExportTarget::Smash, naming);

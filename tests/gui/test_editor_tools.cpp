@@ -3,7 +3,9 @@
 // through its points, hue curves leave greys alone, a colour wheel keeps luminance, strength
 // mixes with the identity, Shift makes a slider ten times finer, the scopes count the frame's
 // pixels, the clipping count and overlay mark what is out of range. Issue 16: the Tools menu's
-// plot and comparison dialogs show the library's results for the target's export.
+// plot and comparison dialogs show the library's results for the target's export. Issue 25: the
+// export dialog's Strength writes the float64 Oklab blend of tests/support/OklabReference.h.
+#include "../support/OklabReference.h"
 #include "GuiTestSupport.h"
 
 #include "AdjustmentsPanel.h"
@@ -12,6 +14,7 @@
 #include "CurveEditor.h"
 #include "CurvesPanel.h"
 #include "Document.h"
+#include "ExportDialog.h"
 #include "MainWindow.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
@@ -20,10 +23,14 @@
 #include "WheelsPanel.h"
 #include "WindowActions.h"
 
+#include "lut/formats/Registry.h"
+
 #include <QAbstractButton>
 #include <QAction>
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPlainTextEdit>
@@ -31,6 +38,7 @@
 #include <QStandardPaths>
 #include <QStyle>
 #include <QStyleOptionSlider>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
@@ -330,6 +338,66 @@ private slots:
         QCOMPARE(report->toPlainText(), comparisonText(c));
         QVERIFY2(report->toPlainText().contains(QStringLiteral("identical")),
                  qPrintable(report->toPlainText()));
+    }
+
+    void exportAtStrengthIsTheOklabBlend() {
+        // The export dialog's Strength (lutkit --luma-strength/--chroma-strength): the file holds
+        // the float64 Oklab blend of each entry with its input (tests/support/OklabReference.h).
+        QTemporaryDir dir;
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        StrengthOptions s;
+        s.luma = 0.25;
+        s.chroma = 0.75;
+        const QString out = dir.filePath("blend.cube");
+        QVERIFY(w.exportLut(out, QStringLiteral("cube"), {}, ExportTarget::Grading, false, s));
+        const Lut3D base =
+            formats::readLut(samplePath("sample_grade.cube").toStdString()).toLut3D();
+        const Lut3D back = formats::readLut(out.toStdString()).toLut3D();
+        QCOMPARE(back.size(), base.size());
+        double worst = 0;
+        const int n = base.size();
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    const glm::dvec3 want =
+                        lut::test::strengthBlend(glm::dvec3(base.latticeInput(r, g, b)),
+                                                 glm::dvec3(base.at(r, g, b)), 0.25, 0.75);
+                    for (int c = 0; c < 3; ++c)
+                        worst = std::max(worst, std::abs(back.at(r, g, b)[c] - want[c]));
+                }
+        QVERIFY2(worst < 2e-6, qPrintable(QString::number(worst)));
+
+        // The dialog: the amounts it returns, and it says the file is not what the preview shows.
+        ExportDialog dlg(ExportTarget::Grading, {});
+        QVERIFY(dlg.matchesPreview());
+        dlg.setStrength(s);
+        const StrengthAmounts a = strengthAmounts(dlg.strength());
+        QCOMPARE(a.luma, 0.25);
+        QCOMPARE(a.chroma, 0.75);
+        QVERIFY(!dlg.matchesPreview());
+        auto* note = dlg.findChild<QLabel*>(QStringLiteral("note"));
+        QVERIFY(note && note->text().contains(QLatin1String("lightness 0.25")));
+        auto* apart = dlg.findChild<QCheckBox*>(QStringLiteral("separate"));
+        QVERIFY(apart && apart->isChecked());
+        apart->setChecked(false);
+        dlg.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->setValue(0.5);
+        QCOMPARE(strengthAmounts(dlg.strength()).chroma, 0.5);
+
+        // Smash at strength 0: the game's LUT for no edit, the neutral document's export.
+        const QString zero = dir.filePath("zero.nutexb");
+        StrengthOptions none;
+        none.strength = 0;
+        QVERIFY(w.exportLut(zero, QStringLiteral("nutexb"), {}, ExportTarget::Smash, false, none));
+        MainWindow neutral;
+        neutral.setInteractiveErrors(false);
+        neutral.document()->newNeutral(33);
+        const QString plain = dir.filePath("neutral.nutexb");
+        QVERIFY(neutral.exportLut(plain, QStringLiteral("nutexb"), {}, ExportTarget::Smash));
+        QFile fa(zero), fb(plain);
+        QVERIFY(fa.open(QIODevice::ReadOnly) && fb.open(QIODevice::ReadOnly));
+        QVERIFY(fa.readAll() == fb.readAll());
     }
 };
 

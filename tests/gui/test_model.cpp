@@ -558,6 +558,23 @@ private slots:
         doc.undoStack()->undo();
         QVERIFY(doc.adjustments().isNeutral());
     }
+
+    void builtInLutsOpenUntitled() {
+        // builtin:smash-default is the game's default stage LUT: a game LUT, and no file, so the
+        // document stays untitled (Save asks where; nothing is written to "builtin:...").
+        Document doc;
+        doc.openLut(QStringLiteral("builtin:smash-default"));
+        QVERIFY(doc.lutPath().isEmpty());
+        QCOMPARE(doc.lutOrigin(), QStringLiteral("builtin:smash-default"));
+        QCOMPARE(doc.lutPurpose(), LutPurpose::Smash);
+        QCOMPARE(doc.baseLut().size(), 16);
+        QCOMPARE(doc.baseLut().at(7, 0, 15), glm::vec3(121.0f, 0.0f, 255.0f) / 255.0f);
+        QVERIFY(!doc.isModified());
+        doc.openLut(QStringLiteral("builtin:neutral"));
+        QCOMPARE(doc.lutPurpose(), LutPurpose::Raw);
+        QVERIFY(doc.baseLut().isIdentity(0.0f));
+        QVERIFY(looksLikeLutFile(QStringLiteral("builtin:smash-default")));
+    }
 };
 
 QTEST_GUILESS_MAIN(ModelTest)

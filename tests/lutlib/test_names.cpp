@@ -17,10 +17,14 @@ TEST(Names, LayoutsByTheEngineOrToolThatUsesThem) {
     EXPECT_STREQ(toString(LutLayout::Unity), "unity");
     EXPECT_STREQ(toString(LutLayout::Smush), "smush");
     EXPECT_STREQ(toString(LutLayout::Hald), "hald");
+    EXPECT_STREQ(toString(LutLayout::Reshade), "reshade");
+    EXPECT_STREQ(toString(LutLayout::Unity32), "unity-32");
     const std::vector<std::pair<const char*, LutLayout>> accepted = {
-        {"unreal", LutLayout::Pilot}, {"pilot", LutLayout::Pilot}, {"godot", LutLayout::Pilot},
-        {"unity", LutLayout::Unity},  {"smush", LutLayout::Smush}, {"lattice", LutLayout::Smush},
-        {"hald", LutLayout::Hald},
+        {"unreal", LutLayout::Pilot},      {"pilot", LutLayout::Pilot},
+        {"godot", LutLayout::Pilot},       {"unity", LutLayout::Unity},
+        {"smush", LutLayout::Smush},       {"lattice", LutLayout::Smush},
+        {"hald", LutLayout::Hald},         {"reshade", LutLayout::Reshade},
+        {"unreal-32", LutLayout::Reshade}, {"unity-32", LutLayout::Unity32},
     };
     for (const auto& [name, layout] : accepted)
         EXPECT_EQ(parseLayout(name), layout) << name;
@@ -31,8 +35,8 @@ TEST(Names, LayoutsByTheEngineOrToolThatUsesThem) {
         FAIL() << "names are case-sensitive";
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "unknown layout 'Unreal' (expected unreal, unity, smush, hald; also pilot, "
-                  "godot, lattice)");
+                  "unknown layout 'Unreal' (expected unreal, unity, smush, hald, reshade, "
+                  "unity-32; also pilot, godot, lattice, unreal-32)");
     }
 }
 

@@ -84,6 +84,43 @@ TEST(PixelChain, CountsValuesOutsideTheDomain) {
     EXPECT_EQ(st.outside, 3u);
 }
 
+// The first pass that decides whether a run has anything outside is vectorized (AVX2, 4 pixels
+// per step and a scalar tail): one value outside at every pixel position of runs of every
+// length up to 19, in each channel, must be found; a NaN or huge alpha alone never counts; the
+// domain's edges themselves are inside. The count is checked against the definition written
+// here in float64.
+TEST(PixelChain, FindsOneValueOutsideAtEveryPositionAndChannel) {
+    Lut3D lut = warmLut(5);
+    lut.setDomain(glm::vec3(-0.5f, 0.0f, 0.25f), glm::vec3(1.0f, 2.0f, 0.75f));
+    PixelChain chain;
+    chain.setLut(lut);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const double lo[3] = {-0.5, 0.0, 0.25}, hi[3] = {1.0, 2.0, 0.75};
+    const float bad[] = {nan,
+                         1.0000001f,
+                         -0.5000001f,
+                         2.0000002f,
+                         -1e30f,
+                         1e30f,
+                         std::numeric_limits<float>::infinity()};
+    for (std::size_t n = 1; n <= 19; ++n)
+        for (std::size_t at = 0; at < n; ++at)
+            for (int c = 0; c < 3; ++c)
+                for (const float v : bad) {
+                    std::vector<float> px;
+                    for (std::size_t i = 0; i < n; ++i) // on the edges and inside; odd alphas
+                        px.insert(px.end(), {i % 2 ? -0.5f : 1.0f, i % 3 ? 2.0f : 0.0f, 0.25f,
+                                             i % 2 ? nan : 1e30f});
+                    px[4 * at + static_cast<std::size_t>(c)] = v;
+                    const bool outside = std::isnan(v) || v < lo[c] || v > hi[c];
+                    DomainStats st;
+                    chain.run(px.data(), n, &st);
+                    ASSERT_EQ(st.outside, outside ? 1u : 0u)
+                        << "run of " << n << ", pixel " << at << ", channel " << c << ", " << v;
+                    ASSERT_EQ(st.pixels, n);
+                }
+}
+
 TEST(PixelChain, NeutralLutOverTheUnitRangeIsRecognised) {
     PixelChain chain;
     EXPECT_TRUE(chain.isIdentityOnUnitRange());

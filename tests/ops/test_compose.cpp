@@ -228,9 +228,10 @@ TEST(Resize, ReportsTheErrorAndStaysFiniteOnNaN) {
     EXPECT_EQ(affine.lut.size(), 33);
     EXPECT_LT(affine.error.maxAbs, 1e-6);
     const OpResult curved = resize(lutFrom(33, [](glm::vec3 x) { return x * x; }), 5);
-    // x^2 on a 5 lattice: the chord error at a cell centre is h^2 / 4 = 1/64 at most.
-    EXPECT_GT(curved.error.maxAbs, 0.01);
-    EXPECT_LE(curved.error.maxAbs, 1.0 / 64.0 + 1e-6);
+    // x^2 on a 5 lattice: the chord error at a cell centre is h^2 / 4 = 1/64 at most, reached
+    // there; the reported maximum bounds it, a little above (lut/ops/ErrorBound.h).
+    EXPECT_GE(curved.error.maxAbs, 1.0 / 64.0 - 1e-6);
+    EXPECT_LE(curved.error.maxAbs, 1.03 / 64.0);
     const OpResult bad = resize(withNonFinite(randomLut(9)), 17);
     EXPECT_EQ(bad.sanitizedEntries, 3u);
     EXPECT_TRUE(allFinite(bad.lut));

@@ -2,9 +2,11 @@
 // the libFuzzer harnesses use (tests/fuzz/FuzzTargets.h), in the normal build: every input that
 // once crashed a reader must now be read or refused with lut::Error, never crash. Files whose
 // name starts with "reject-" must be refused.
+#include "../fuzz/CheckFuzzTarget.h"
 #include "../fuzz/CliTarget.h"
 #include "../fuzz/FuzzTargets.h"
 #include "../fuzz/ImageFuzzTarget.h"
+#include "../fuzz/ImageOiioFuzzTarget.h"
 #include "../fuzz/OcioFuzzTarget.h"
 #include "../fuzz/PatchFuzzTarget.h"
 #include "TestSupport.h"
@@ -39,7 +41,9 @@ const std::map<std::string, Target>& targets() {
         {"cli_numbers", runCli},
         {"ocio", lut::fuzz::runOcio},
         {"image_apply", lut::fuzz::runImageApply},
+        {"image_oiio", lut::fuzz::runImageOiio},
         {"patch", lut::fuzz::runPatch},
+        {"check", lut::fuzz::runCheck},
     };
     return t;
 }
@@ -74,7 +78,7 @@ TEST_P(FuzzRegress, EveryInputIsReadOrRefusedWithLutError) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, FuzzRegress,
                          ::testing::Values("cube", "strip", "hald", "nutexb", "cli_numbers", "ocio",
-                                           "image_apply", "patch"),
+                                           "image_apply", "patch", "check", "image_oiio"),
                          [](const auto& info) { return info.param; });
 
 // The corpus is not allowed to rot silently: every fuzzer folder in it is one we replay.

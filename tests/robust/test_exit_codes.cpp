@@ -69,8 +69,8 @@ TEST(ExitCodes, EverySubcommand) {
         {"convert @/a.cube @/x.cube --interp cubic", 2, "--interp: unknown interpolation 'cubic'"},
         // an unknown layout is bad usage like an unknown format (it used to exit 1)
         {"info @/img.png --in-layout diagonal", 2,
-         "lutkit info: --in-layout: unknown layout 'diagonal' (expected unreal, unity, smush or "
-         "hald; also pilot, godot, lattice)"},
+         "lutkit info: --in-layout: unknown layout 'diagonal' (expected unreal, unity, smush, "
+         "hald, reshade or unity-32; also pilot, godot, lattice, unreal-32)"},
         {"convert @/a.cube @/x.png --layout unrel", 2,
          "lutkit convert: --layout: unknown layout 'unrel'; did you mean 'unreal'?"},
         {"preview @/img.png -o @/p.png --preset lectur", 2, "did you mean 'lecture'?"},

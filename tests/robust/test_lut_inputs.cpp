@@ -261,7 +261,8 @@ TEST(HostileSizes, TinyCubeDeclaring256CubedAllocatesNothingBig) {
 
 // A LUT image's picture size comes from its header; a size no layout has is refused before the
 // pixels are decoded. A 16384x16384 RGBA PNG (within the image pixel limit, 60 bytes) was decoded
-// into gigabytes of floats first.
+// into gigabytes of floats first. In 60 bytes it is refused by the image rule (its IDAT cannot
+// hold that many pixels: issue 29); with 1.1 MB of IDAT, which could, by the layouts' sizes.
 TEST(HostileSizes, LutImageHeaderClaimingAHugePictureIsRefusedBeforeDecoding) {
     const std::string dir = lut::test::tempDir();
     auto be = [](std::uint32_t v) {
@@ -278,13 +279,20 @@ TEST(HostileSizes, LutImageHeaderClaimingAHugePictureIsRefusedBeforeDecoding) {
     };
     const std::string ihdr =
         "IHDR" + be(16384) + be(16384) + std::string("\x08\x06\x00\x00\x00", 5);
-    const std::string idat = std::string("IDAT") + "\x78\x01";
-    writeBytes(dir + "/huge.png", std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr +
-                                      be(crc(ihdr)) + be(2) + idat + be(crc(idat)) + be(0) +
-                                      "IEND" + be(crc("IEND")));
+    auto png = [&](const std::string& data) {
+        const std::string idat = "IDAT" + data;
+        return std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr + be(crc(ihdr)) +
+               be(static_cast<std::uint32_t>(data.size())) + idat + be(crc(idat)) + be(0) + "IEND" +
+               be(crc("IEND"));
+    };
+    writeBytes(dir + "/huge.png", png("\x78\x01"));
+    writeBytes(dir + "/big.png", png("\x78\x01" + std::string(1100000, '\0')));
     AllocationProbe probe(256u << 20); // an allocation of gigabytes fails instead of swapping
     EXPECT_EQ(stripDir(readLutMessage(dir + "/huge.png"), dir),
-              "huge.png: image is 16384x16384, not a LUT image size: unreal, unity and smush need "
+              "huge.png: declares 16384x16384 pixels (1073758208 bytes as stored) in 2 bytes of "
+              "PNG data, more than deflate data can hold (at most 1032:1): truncated or corrupt");
+    EXPECT_EQ(stripDir(readLutMessage(dir + "/big.png"), dir),
+              "big.png: image is 16384x16384, not a LUT image size: unreal, unity and smush need "
               "N^2 x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)");
     EXPECT_LT(probe.largest(), 64u << 20);
 }

@@ -60,6 +60,9 @@ TEST(UsageErrors, AnUnknownValueExitsTwoInEveryCommand) {
         {"mix", "mix -y " + d + "a.cube' " + d + "a.cube' " + d + "mx.cube' --strength 0.5"},
         {"plot", "plot -y " + d + "a.cube' " + d + "pl.png'"},
         {"adjust", "adjust -y " + d + "a.cube' --adjustments " + d + "adj.txt' " + d + "ad.cube'"},
+        {"check", "check " + d + "a.cube'"},
+        {"chart", "chart -y grey " + d + "ch.png' --width 16 --height 16"},
+        {"atlas", "atlas build -y " + d + "a.cube' -o " + d + "at.png' --size 3 --layout unreal"},
     };
     // Values that are files, folders or free text are not words from a set.
     const std::set<std::string> notWords = {"FILE", "DIR", "TEXT", "PATH", "NAME"};

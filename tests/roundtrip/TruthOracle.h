@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace lut::rt {
@@ -53,6 +54,29 @@ inline glm::dvec3 trilinear(const Lut3D& lut, glm::dvec3 in) {
                 acc += w * glm::dvec3(lut.at(i[0] + dx, i[1] + dy, i[2] + dz));
             }
     return acc;
+}
+
+// A plain tetrahedral lookup of an N^3 LUT over [0,1], in double: the cell's diagonal path
+// steps along the axes in order of decreasing fraction (Kasson et al.).
+inline glm::dvec3 tetrahedral(const Lut3D& lut, glm::dvec3 in) {
+    const int n = lut.size();
+    int i[3];
+    double f[3];
+    for (int c = 0; c < 3; ++c) {
+        const double x = clamp01(in[c]) * (n - 1);
+        i[c] = std::min(static_cast<int>(x), n - 2);
+        f[c] = x - i[c];
+    }
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int a, int b) { return f[a] > f[b]; });
+    glm::dvec3 prev(lut.at(i[0], i[1], i[2])), value = prev;
+    for (int k = 0; k < 3; ++k) {
+        ++i[order[k]];
+        const glm::dvec3 next(lut.at(i[0], i[1], i[2]));
+        value += f[order[k]] * (next - prev);
+        prev = next;
+    }
+    return value;
 }
 
 inline Lut3D rounded8(const Lut3D& lut) {
@@ -108,6 +132,51 @@ inline Truth rawTruth(const Lut3D& lut, const Edit& edit) {
                 }
             }
     return {summarise(lattice), summarise(all)};
+}
+
+// The display the game shows (float64) for its input s when its LUT returned l.
+inline double gameShown(double l, double s) {
+    const double r = ((l - s) * 0.99961 + s) * 1.3703;
+    return srgbEnc(clamp01(std::pow(std::max(r, 0.0), 2.2)));
+}
+
+// The same truths over `count` random inputs (uniform in [0,1]^3, fixed seed), so between the
+// points of every grid: what a printed maximum must bound. Smash: what the game shows with the
+// 8-bit LUT vs the edit of what it showed with `stage` (null: neutral); raw: the LUT applied
+// trilinearly vs the edit.
+inline Summary smashTruthRandom(const Lut3D& lut, const Edit& edit, const Lut3D* stage = nullptr,
+                                int count = 200000, unsigned seed = 22) {
+    const Lut3D shipped = rounded8(lut);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> all;
+    all.reserve(3 * static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec3 s(u(rng), u(rng), u(rng));
+        const glm::dvec3 l0 = stage ? trilinear(*stage, s) : s, l = trilinear(shipped, s);
+        glm::dvec3 before;
+        for (int c = 0; c < 3; ++c)
+            before[c] = gameShown(l0[c], s[c]);
+        const glm::dvec3 want = edit(before);
+        for (int c = 0; c < 3; ++c)
+            all.push_back(std::fabs(gameShown(l[c], s[c]) - clamp01(want[c])) * 255.0);
+    }
+    return summarise(all);
+}
+
+inline Summary rawTruthRandom(const Lut3D& lut, const Edit& edit, int count = 200000,
+                              unsigned seed = 22) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> all;
+    all.reserve(3 * static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec3 y(u(rng), u(rng), u(rng));
+        const glm::dvec3 got = trilinear(lut, y), want = edit(y);
+        for (int c = 0; c < 3; ++c)
+            all.push_back(std::fabs(got[c] - want[c]) * 255.0);
+    }
+    return summarise(all);
 }
 
 } // namespace lut::rt

@@ -200,7 +200,8 @@ TEST(RoundtripCli, FitWritesTheLutAndReportsTheError) {
     const std::string out = dir + "/fit.cube";
     const auto r = runCli("fit " + q(before) + " " + q(after) + " " + q(out) + " --size 17");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("error rms"), std::string::npos);
+    EXPECT_NE(r.out.find("error over those pixels rms"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("held out on colours it was not fitted to"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("extrapolated"), std::string::npos);
     EXPECT_NE(r.err.find("cover only"),
               std::string::npos); // a screenshot covers little of the cube

@@ -1,6 +1,8 @@
 // Embed a patch, edit the image with known global functions, find and extract it again.
+#include "OklabReference.h"
 #include "RoundtripTestUtil.h"
 
+#include "lut/interp/Sampler.h"
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchFinder.h"
@@ -451,4 +453,41 @@ TEST(Find, NonFiniteAndExtremePixelsAreHarmless) {
                 bad.pixel(x, y)[0] = INFINITY;
     EXPECT_EQ(findPatch(bad.view()).status, FindStatus::NotFound);
     EXPECT_EQ(findPatch(Image().view()).status, FindStatus::NotFound);
+}
+
+TEST(Extract, StrengthBlendsTheEditWithWhatWasThereBefore) {
+    // --luma-strength 0.5 --chroma-strength 0.25 on a saturation edit: the LUT gives the float64
+    // Oklab blend (tests/support/OklabReference.h) of each input with its edited colour, at the
+    // lattice points and, within the printed expected error, between them.
+    auto e = embedded(16);
+    const auto edit = saturationEdit();
+    applyEdit(e.image, edit, 16);
+    ExtractOptions o;
+    o.strength.luma = 0.5;
+    o.strength.chroma = 0.25;
+    const ExtractResult r = extractLut(e.image.view(), o);
+    const auto want = [&](glm::dvec3 in) {
+        return lut::test::strengthBlend(in, edit(in), 0.5, 0.25);
+    };
+    EXPECT_LE(latticeErrorSteps(r.lut, want), 0.05);
+    EXPECT_GT(latticeErrorSteps(r.lut, edit), 5.0); // not the full edit
+    const auto sampler = makeSampler(r.lut, Interpolation::Tetrahedral);
+    double worst = 0.0;
+    for (int b = 0; b < 15; ++b)
+        for (int g = 0; g < 15; ++g)
+            for (int rr = 0; rr < 15; ++rr) {
+                const glm::dvec3 in = (glm::dvec3(rr, g, b) + 0.5) / 15.0;
+                const glm::vec3 got = sampler->sample(glm::vec3(in));
+                const glm::dvec3 w = want(in);
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::fabs(got[c] - w[c]) * 255.0);
+            }
+    EXPECT_LE(worst, r.expected.overall.maxSteps);
+    std::printf("[ measured ] half-strength saturation between lattice points: true max %.3f "
+                "steps, predicted %.3f\n",
+                worst, r.expected.overall.maxSteps);
+    bool noted = false;
+    for (const auto& d : r.diagnostics)
+        noted = noted || d.message.find("strength") != std::string::npos;
+    EXPECT_TRUE(noted);
 }

@@ -219,3 +219,35 @@ TEST(Fit, RejectsMismatchedAndDegenerateInput) {
     expectSane(r.lut);
     EXPECT_TRUE(std::isfinite(r.rmsSteps8));
 }
+
+TEST(Fit, HeldOutErrorBoundsWhatOtherPixelsOfThePictureShow) {
+    // The figure fit prints for colours it was not fitted to (a fit on 7/8 of the colours,
+    // measured on the other 1/8) against the truth: the written LUT (fitted on all of them) on
+    // another picture of the same kind (the synthetic screenshot at another size: other pixels,
+    // the same colours' neighbourhood), in float64 against the exact edit stored 8-bit, as the
+    // after image holds it. The residual over the fitted pixels is below that truth.
+    const Image before = syntheticScreenshot(400, 260, 8);
+    const Edit f = smoothEdit();
+    FitOptions o;
+    o.size = 17;
+    const FitResult r = fitLut(before.view(), edited(before, f, 8).view(), o);
+    ASSERT_GT(r.heldOutColours, 100u);
+    const Image other = syntheticScreenshot(397, 263, 8);
+    const auto sampler = makeSampler(r.lut, Interpolation::Trilinear);
+    double truth = 0.0;
+    for (int y = 0; y < other.height(); ++y)
+        for (int x = 0; x < other.width(); ++x) {
+            const float* p = other.pixel(x, y);
+            const glm::vec3 got = sampler->sample(glm::vec3(p[0], p[1], p[2]));
+            const glm::dvec3 want = f(glm::dvec3(p[0], p[1], p[2]));
+            for (int c = 0; c < 3; ++c)
+                truth = std::max(truth,
+                                 std::fabs(got[c] - fromUnorm8(toUnorm8(float(want[c])))) * 255.0);
+        }
+    std::printf("[ measured ] fit 17^3: fitted pixels max %.3f rms %.3f; held out max %.3f rms "
+                "%.3f (%zu colours); another picture's pixels max %.3f 8-bit steps\n",
+                r.maxSteps8, r.rmsSteps8, r.heldOutMaxSteps8, r.heldOutRmsSteps8, r.heldOutColours,
+                truth);
+    EXPECT_GE(r.heldOutMaxSteps8, truth);
+    EXPECT_GE(r.heldOutRmsSteps8, r.rmsSteps8);
+}

@@ -26,6 +26,22 @@ std::vector<std::pair<const char*, Edit>> testEdits() {
             {"hue shift", hueShiftEdit(40.0)}};
 }
 
+// Edits whose error between the patch's entries the sub-lattice check alone understated
+// (issue 22): a hard black point with a steep rise after it, a steep gamma near black.
+Edit hardLevels() {
+    return levelsEdit(0.2, 0.8, 1.6, 0.0, 1.0);
+}
+Edit steepGamma() {
+    return [](glm::dvec3 c) {
+        return glm::dvec3(std::pow(clamp01(c.x), 0.4), std::pow(clamp01(c.y), 0.4),
+                          std::pow(clamp01(c.z), 0.4));
+    };
+}
+
+std::vector<std::pair<const char*, Edit>> steepEdits() {
+    return {{"hard levels", hardLevels()}, {"gamma 0.4", steepGamma()}};
+}
+
 } // namespace
 
 // One test per target and file type (each runs the five edits), so each stays short.
@@ -35,7 +51,11 @@ TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
     const LutPurpose target = std::get<0>(GetParam());
     const Storage storage = std::get<1>(GetParam());
     const std::string dir = rtDir();
-    for (const auto& [name, edit] : testEdits()) {
+    auto edits = testEdits();
+    if (storage == Storage::Png8 || storage == Storage::Jpeg444)
+        for (auto& e : steepEdits())
+            edits.push_back(e);
+    for (const auto& [name, edit] : edits) {
         const int bits = storageBits(storage);
         Image shot = syntheticScreenshot(kShotWidth, kShotHeight, bits);
         EmbedOptions eo;
@@ -62,7 +82,48 @@ TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
         EXPECT_LE(t.overall.max, e.overall.maxSteps) << what << ": max";
         EXPECT_LE(t.overall.mean, e.overall.meanSteps) << what << ": mean";
         EXPECT_LE(t.overall.p99, e.overall.p99Steps) << what << ": p99";
+        // and between the grid's points: 200,000 random inputs
+        const Summary rnd = target == LutPurpose::Smash ? smashTruthRandom(r.lut, edit)
+                                                        : rawTruthRandom(r.lut, edit);
+        std::printf("[ measured ] %-5s %-12s %-12s random inputs: true %5.2f/%5.3f/%5.2f\n",
+                    toString(target), name, storageName(storage), rnd.max, rnd.mean, rnd.p99);
+        EXPECT_LE(rnd.max, e.overall.maxSteps) << what << ": max over random inputs";
+        EXPECT_LE(rnd.mean, e.overall.meanSteps) << what << ": mean over random inputs";
+        EXPECT_LE(rnd.p99, e.overall.p99Steps) << what << ": p99 over random inputs";
     }
+}
+
+// The default patch is made for the game (its lattice the colours the game displays); asked for
+// a raw LUT, extract interpolates the edit on that lattice at a uniform 16^3 one (issue 22:
+// printed 22.5 steps, truth 39.7; here a steep gamma printed 22.1, truth 28.3).
+TEST(HonestBoundsRaw, FromTheDefaultGamePatch) {
+    const std::string dir = rtDir();
+    std::vector<std::pair<const char*, Edit>> edits = {{"curves", curvesEdit()},
+                                                       {"saturation", saturationEdit(1.3)}};
+    for (auto& e : steepEdits())
+        edits.push_back(e);
+    for (Storage storage : {Storage::Png8, Storage::Jpeg444})
+        for (const auto& [name, edit] : edits) {
+            Image shot = syntheticScreenshot(kShotWidth, kShotHeight, 8);
+            embedPatch(shot.view(), EmbedOptions{});
+            applyEdit(shot, edit, 8);
+            const Image saved = savedAs(shot, storage, dir, "game");
+            ExtractOptions o;
+            o.target = LutPurpose::Raw;
+            const ExtractResult r = extractLut(saved.view(), o);
+            const Summary rnd = rawTruthRandom(r.lut, edit);
+            const Truth grid = rawTruth(r.lut, edit);
+            const ExpectedError& e = r.expected;
+            std::printf("[ measured ] raw from the game patch, %-12s %-12s true max %5.2f mean "
+                        "%5.3f p99 %5.2f (random), printed %s\n",
+                        name, storageName(storage), rnd.max, rnd.mean, rnd.p99,
+                        e.overall.str().c_str());
+            const std::string what = std::string(name) + " " + storageName(storage);
+            EXPECT_LE(rnd.max, e.overall.maxSteps) << what;
+            EXPECT_LE(rnd.mean, e.overall.meanSteps) << what;
+            EXPECT_LE(rnd.p99, e.overall.p99Steps) << what;
+            EXPECT_LE(grid.lattice.max, e.atLattice.maxSteps) << what;
+        }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEditFileAndTarget, HonestBounds,

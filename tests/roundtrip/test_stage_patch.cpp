@@ -118,5 +118,13 @@ TEST(StagePatch, ReadsTheEditWhereTheCompensationNeedsIt) {
         EXPECT_LE(all.max, stage.expected.overall.maxSteps) << name;
         EXPECT_LE(all.mean, stage.expected.overall.meanSteps) << name;
         EXPECT_LE(all.p99, stage.expected.overall.p99Steps) << name;
+        // between the grid's points too: 200,000 random inputs
+        const Summary rnd = smashTruthRandom(stage.lut, edit, &warm);
+        std::printf("[ measured ] stage LUT, %-12s random inputs: true max %.2f mean %.3f p99 "
+                    "%.2f\n",
+                    name, rnd.max, rnd.mean, rnd.p99);
+        EXPECT_LE(rnd.max, stage.expected.overall.maxSteps) << name;
+        EXPECT_LE(rnd.mean, stage.expected.overall.meanSteps) << name;
+        EXPECT_LE(rnd.p99, stage.expected.overall.p99Steps) << name;
     }
 }

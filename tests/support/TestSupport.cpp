@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,7 +27,11 @@ std::string tempDir() {
     for (auto& c : name)
         if (c == '/')
             c = '_';
-    fs::path dir = fs::path(LUTKIT_BINARY_DIR) / "test-tmp" / name;
+    // $LUTKIT_TEST_TMP: another root, for a second run of the same tests at the same time (the
+    // package test runs docs_tests from the extracted package while ctest may run them too).
+    const char* other = std::getenv("LUTKIT_TEST_TMP");
+    fs::path dir =
+        (other && *other ? fs::path(other) : fs::path(LUTKIT_BINARY_DIR) / "test-tmp") / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir.string();

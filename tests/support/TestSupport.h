@@ -6,7 +6,8 @@ namespace lut::test {
 
 std::string dataPath(const std::string& name);   // tests/data/<name>
 std::string samplePath(const std::string& name); // samples/<name>
-// A fresh empty folder under the build tree, unique per test (removed at start, kept after).
+// A fresh empty folder under the build tree (or $LUTKIT_TEST_TMP), unique per test (removed at
+// start, kept after).
 std::string tempDir();
 
 struct RunResult {

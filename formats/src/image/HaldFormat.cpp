@@ -8,6 +8,7 @@
 // has). Sizes that are not a square are written at the next larger square (33 -> 36).
 #include "Formats.h"
 #include "image/LutImage.h"
+#include "imageio/ImageHeaderChecks.h"
 
 #include "lut/Error.h"
 
@@ -52,6 +53,9 @@ public:
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         checkLayout(path, options);
         return readLutImage(path, options, LutLayout::Hald);
+    }
+    std::uint64_t maxStreamBytes(std::string_view head) const override {
+        return imageStreamBytes(head);
     }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {

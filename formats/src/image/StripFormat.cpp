@@ -4,6 +4,8 @@
 //   unity                  N^2 x N   x = r + N*b, y = N-1-g      (green 0 on the bottom row)
 //   smush (lattice)        N^2 x N   x = r + N*g, y = b          (Smush-LUT, ociolutimage)
 //   hald                   L^3 x L^3 i = r + N*g + N^2*b, x = i mod L^3, y = i div L^3, N = L^2
+//   reshade (unreal-32)    1024 x 32 as unreal, N = 32 only (ReShade's LUT.fx, Unreal's 1024x32)
+//   unity-32               1024 x 32 as unity, N = 32 only (Unity's NeutralLdrLut.png)
 //
 // Files go through OpenImageIO: 8/16-bit PNG and TIFF, float EXR (also float TIFF). Integer
 // samples are read exactly (v/255, v/65535) and written by rounding to nearest with clamping
@@ -13,7 +15,8 @@
 //
 // Which layout a file is in (nothing in the file says so):
 //  1. FormatOptions::layout when given (an image of the wrong size is refused, naming both).
-//  2. The picture size: L^3 x L^3 fits hald only, N^2 x N fits unreal, unity and smush
+//  2. The picture size: L^3 x L^3 fits hald only, N^2 x N fits unreal, unity and smush, and
+//     1024x32 reshade, unity-32 and smush, the 1024x32 names of the same placements
 //     (lut::layoutsForImageSize); other sizes are refused, naming the sizes the layouts need.
 //  3. Among several fitting layouts, read the table in each and ask whether it is "close to
 //     neutral" in the sense that matters for telling layouts apart: each output channel follows
@@ -24,8 +27,8 @@
 //     green runs backwards (unity vs unreal: -1). Ordinary grades (contrast, tint, curves) keep
 //     each channel increasing with its own input, so they pass in their own layout only. If
 //     exactly one layout passes, it is taken; an Info diagnostic says so only when it is not
-//     unreal, the default of an N^2 x N strip (a clean default read changes nothing the user
-//     expects, so it needs no note).
+//     unreal (reshade for 1024x32), the default of an N^2 x N strip (a clean default read
+//     changes nothing the user expects, so it needs no note).
 //  4. Otherwise (none or several pass), the layout that is "neutral-shaped" in brightness: the
 //     table's output luminance, fitted linearly to the input indices, weighs them like the
 //     neutral's (0.2126 r + 0.7152 g + 0.0722 b, all of one sign: a gradient map, a
@@ -39,8 +42,10 @@
 //     the layout (lutkit: --in-layout). Reading never swaps axes silently.
 #include "Formats.h"
 #include "LutPrep.h"
+#include "image/LayoutScore.h"
 #include "image/LutImage.h"
 #include "imageio/ImageCodec.h"
+#include "imageio/ImageHeaderChecks.h"
 
 #include "lut/Error.h"
 #include "lut/Quantize.h"
@@ -59,61 +64,8 @@ namespace {
 
 using S = Diagnostic::Severity;
 
-constexpr double kAxisCorrelationMin = 0.75;
-// The layout of an N^2 x N strip when nothing else decides: Unreal's 256x16.
-constexpr LutLayout kDefaultStripLayout = LutLayout::Pilot;
 // Sums of correlations closer than this count as a tie (unreal, the default, wins ties).
 constexpr double kScoreTie = 0.05;
-
-std::string fmt2(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f", v);
-    return buf;
-}
-
-// Pearson correlation of output channel c with input index c, c = 0..2 (NaN/Inf entries skipped;
-// a constant channel correlates 0).
-struct AxisScore {
-    double corr[3] = {0, 0, 0};
-    double sum() const { return corr[0] + corr[1] + corr[2]; }
-    bool followsAxes() const {
-        return corr[0] >= kAxisCorrelationMin && corr[1] >= kAxisCorrelationMin &&
-               corr[2] >= kAxisCorrelationMin;
-    }
-    std::string str() const {
-        return "r " + fmt2(corr[0]) + ", g " + fmt2(corr[1]) + ", b " + fmt2(corr[2]);
-    }
-};
-
-AxisScore axisScore(const Lut3D& lut) {
-    AxisScore s;
-    const int n = lut.size();
-    for (int c = 0; c < 3; ++c) {
-        double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, cnt = 0;
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const double v = lut.at(r, g, b)[c];
-                    if (!std::isfinite(v))
-                        continue;
-                    const double x = c == 0 ? r : c == 1 ? g : b;
-                    sx += x;
-                    sy += v;
-                    sxx += x * x;
-                    syy += v * v;
-                    sxy += x * v;
-                    cnt += 1;
-                }
-        if (cnt < 2)
-            continue;
-        const double vx = sxx - sx * sx / cnt, vy = syy - sy * sy / cnt, cxy = sxy - sx * sy / cnt;
-        if (vx <= 0 || vy <= 1e-20 * cnt)
-            continue;
-        const double r = cxy / std::sqrt(vx * vy);
-        s.corr[c] = std::isfinite(r) ? std::max(-1.0, std::min(1.0, r)) : 0.0;
-    }
-    return s;
-}
 
 // How much the table's luminance weighs the input axes like the neutral's: the cosine between
 // the least-squares weights (w_r, w_g, w_b) of luma(out) ~ c + w . (r, g, b) and (0.2126, 0.7152,
@@ -260,18 +212,19 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
     const int w = header.width, h = header.height;
     const std::vector<LayoutFit> fits = layoutsForImageSize(w, h);
 
-    LutLayout layout = kDefaultStripLayout;
+    LutLayout layout = LutLayout::Pilot;
     int n = 0;
     if (wanted) {
         layout = *wanted;
-        for (const auto& f : fits)
-            if (f.layout == layout)
-                n = f.size;
+        n = layoutSizeForImage(layout, w, h);
         if (n == 0) {
             const std::string need =
                 layout == LutLayout::Hald
                     ? "L^3 x L^3 pixels (e.g. 64x64 for 16^3, 512x512 for 64^3)"
-                    : "N^2 x N pixels with N 2..256 (e.g. 256x16, 1024x32)";
+                : layoutFixedSize(layout)
+                    ? "1024x32 pixels (32^3; " + std::string(toString(layoutPlacement(layout))) +
+                          " is the same placement at any N)"
+                    : std::string("N^2 x N pixels with N 2..256 (e.g. 256x16, 1024x32)");
             throw Error(path + ": image is " + sizeText(w, h) + ", the " + toString(layout) +
                         " layout needs " + need +
                         (fits.empty() ? "" : "; this size fits " + fitsText(fits)));
@@ -316,7 +269,7 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
         if (passing.size() == 1) {
             layout = fits[passing.front()].layout;
             n = fits[passing.front()].size;
-            if (layout != kDefaultStripLayout)
+            if (layout != defaultStripLayout(n))
                 file.diagnostics.push_back(makeDiagnostic(
                     S::Info, path,
                     std::string("layout detected: ") + toString(layout) + " (" + sizeText(w, h) +
@@ -340,17 +293,17 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                     best = i;
             std::size_t def = fits.size();
             for (std::size_t i = 0; i < fits.size(); ++i)
-                if (fits[i].layout == kDefaultStripLayout)
+                if (fits[i].layout == defaultStripLayout(fits[i].size))
                     def = i;
             if (passing.empty() && def < fits.size() &&
                 scores[def].sum() >= scores[best].sum() - kScoreTie) {
-                layout = kDefaultStripLayout;
+                layout = fits[def].layout;
                 n = fits[def].size;
                 file.diagnostics.push_back(makeDiagnostic(
                     S::Warning, path,
                     "layout not detectable (" + sizeText(w, h) + " fits " + fitsText(fits) +
                         " and the table is not close to neutral in any: correlations " + table +
-                        "); read as " + toString(kDefaultStripLayout) +
+                        "); read as " + toString(layout) +
                         ", the default for N^2 x N images; name the layout (--in-layout) if it "
                         "is another"));
             } else {
@@ -393,6 +346,11 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source,
         throw Error(path + ": EXR stores float values; use bit depth 32 or a .png/.tif file for " +
                     std::to_string(bits) + "-bit output");
     int size = options.size;
+    if (const int fixed = layoutFixedSize(layout)) {
+        if (const std::string problem = layoutSizeProblem(layout, size); !problem.empty())
+            throw Error(path + ": " + problem);
+        size = fixed;
+    }
     if (layout == LutLayout::Hald) {
         const int own = size > 0 ? size : source.toLut3D(0).size();
         size = haldSizeFor(own);
@@ -428,8 +386,11 @@ class StripFormat final : public Format {
 public:
     std::string name() const override { return "strip"; }
     std::string description() const override {
-        return "LUT image in a named layout (unreal/pilot/godot, unity, smush/lattice, hald): "
-               "PNG/TIFF 8/16-bit, float EXR";
+        return "LUT image in a named layout (unreal/pilot/godot, unity, smush/lattice, hald, "
+               "reshade/unreal-32, unity-32): PNG/TIFF 8/16-bit, float EXR";
+    }
+    int fixedSizeFor(const FormatOptions& options) const override {
+        return options.layout ? layoutFixedSize(*options.layout) : 0;
     }
     std::vector<std::string> extensions() const override {
         return {".png", ".tif", ".tiff", ".exr"};
@@ -437,6 +398,9 @@ public:
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         return readLutImage(path, options);
+    }
+    std::uint64_t maxStreamBytes(std::string_view head) const override {
+        return imageStreamBytes(head);
     }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {

@@ -14,6 +14,7 @@
 
 #include "lut/Parallel.h"
 #include "lut/formats/ImageFiles.h"
+#include "lut/io/OutputPolicy.h"
 
 #include <algorithm>
 #include <atomic>
@@ -21,6 +22,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <numeric>
 #include <thread>
 #include <vector>
 
@@ -83,24 +85,17 @@ int channelIndex(const std::vector<std::string>& names, const std::string& n) {
 
 } // namespace
 
-ApplyImageReport applyToImage(const std::string& input, const OutputTarget& target,
-                              const PixelChain& chain, const ApplyImageOptions& o) {
-    const auto t0 = std::chrono::steady_clock::now();
-    ApplyImageReport report;
-    auto src = openImageSource(input, o.inFormat);
-    Plan p;
-    p.in = src->info();
-    report.input = p.in;
-    p.inMap = rgbaMapOf(p.in);
+namespace {
 
-    const std::string outFormat =
-        target.inPlace() ? (o.outFormat.empty() ? p.in.format : o.outFormat) : target.path;
+// What one part (an image, a subimage, a MIP level) of the input becomes in the output.
+Plan planPart(const ImageInfo& in, const std::string& outFormat, const PixelChain& chain,
+              const ApplyImageOptions& o, SinkSpec& spec, Diagnostics& diagnostics) {
+    Plan p;
+    p.in = in;
+    p.inMap = rgbaMapOf(p.in);
     const RenderedLayout layout = appliedImageLayout(p.in, outFormat, o.bitDepth);
-    report.diagnostics = layout.diagnostics;
-    for (auto& d : report.diagnostics)
-        d.path = input;
-    SinkSpec spec;
-    spec.format = target.inPlace() ? canonicalImageFormat(outFormat) : std::string();
+    diagnostics = layout.diagnostics;
+    const std::string fmt = canonicalImageFormat(outFormat);
     spec.width = p.in.width;
     spec.height = p.in.height;
     spec.channelNames = layout.channelNames;
@@ -108,9 +103,12 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
     spec.type = layout.type;
     spec.bitsPerSample = layout.bitsPerSample;
     spec.compression = !o.compression.empty() ? o.compression : layout.keepCompression;
-    spec.metadata = src->metadata();
-    spec.threads = std::max(1, resolveThreads(o.threads));
-
+    spec.mipLevel = p.in.mipLevel;
+    // Tiles where the file had them and the output has tiles too (OpenEXR, TIFF).
+    if (p.in.tileWidth > 0 && (fmt == "openexr" || fmt == "tiff")) {
+        spec.tileWidth = p.in.tileWidth;
+        spec.tileHeight = p.in.tileHeight;
+    }
     p.out = p.in;
     p.out.channels = static_cast<int>(spec.channelNames.size());
     p.out.channelNames = spec.channelNames;
@@ -129,23 +127,29 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
     const bool integerIn = p.in.type == PixelType::UInt8 || p.in.type == PixelType::UInt16;
     p.unchanged = chain.isIdentityOnUnitRange() && integerIn && p.out.type == p.in.type &&
                   p.out.channelNames == p.in.channelNames && p.in.channelNames.size() > 0;
-    report.unchanged = p.unchanged;
+    return p;
+}
 
-    auto sink = createImageSink(target, spec);
-    report.output = p.out;
-    report.output.format = canonicalImageFormat(outFormat);
-
-    const int gran = std::max(src->rowGranularity(), sink->rowGranularity());
+// Rows per chunk for a part: a multiple of both codecs' blocks of rows.
+int chunkRowsFor(const Plan& p, int srcGranularity, int sinkGranularity,
+                 const ApplyImageOptions& o) {
+    const int gran =
+        std::min(1 << 16, std::lcm(std::max(1, srcGranularity), std::max(1, sinkGranularity)));
     const int byWidth = std::max(1, (1 << 17) / std::max(1, p.in.width));
     int rows = o.rowsPerChunk > 0 ? o.rowsPerChunk : std::max(gran, byWidth / gran * gran);
     if (o.rowsPerChunk > 0 && rows % gran != 0)
         rows = (rows / gran + 1) * gran;
-    rows = std::min(rows, p.in.height);
+    return std::min(rows, p.in.height);
+}
+
+// One part through the chain, read, computed and written overlapped when asked.
+void streamPart(ImageSource& src, ImageSink& sink, const Plan& p, const PixelChain& chain,
+                const ApplyImageOptions& o, ChunkStats& total) {
+    const int rows = chunkRowsFor(p, src.rowGranularity(), sink.rowGranularity(), o);
     const int chunks = (p.in.height + rows - 1) / rows;
     const std::size_t inRow = rowBytes(p.in), outRow = rowBytes(p.out);
 
     std::mutex m;
-    ChunkStats total;
     auto rowsOf = [&](int c) { return std::min(rows, p.in.height - c * rows); };
     const bool threaded = o.overlap && chunks > 1;
     if (!threaded) {
@@ -154,130 +158,214 @@ ApplyImageReport applyToImage(const std::string& input, const OutputTarget& targ
                                                       : outRow * static_cast<std::size_t>(rows));
         for (int c = 0; c < chunks; ++c) {
             const int y0 = c * rows, n = rowsOf(c);
-            src->readRows(y0, y0 + n, inBuf.data());
+            src.readRows(y0, y0 + n, inBuf.data());
             if (!p.unchanged)
                 computeChunk(p, chain, inBuf.data(), outBuf.data(),
                              static_cast<std::size_t>(p.in.width) * static_cast<std::size_t>(n),
                              total);
-            sink->writeRows(y0, y0 + n, p.unchanged ? inBuf.data() : outBuf.data());
+            sink.writeRows(y0, y0 + n, p.unchanged ? inBuf.data() : outBuf.data());
         }
-    } else {
-        struct Slot {
-            std::vector<unsigned char> in, out;
-            int chunk = -1;
-            int state = 0; // 0 free, 1 read, 2 computing, 3 computed
-        };
-        std::vector<Slot> slots(kSlots);
-        for (auto& s : slots) {
-            s.in.resize(inRow * static_cast<std::size_t>(rows));
-            if (!p.unchanged)
-                s.out.resize(outRow * static_cast<std::size_t>(rows));
-        }
-        std::condition_variable cv;
-        bool stop = false;
-        std::exception_ptr failure;
-        auto fail = [&](std::exception_ptr e) {
-            std::lock_guard<std::mutex> lock(m);
-            if (!failure)
-                failure = e;
-            stop = true;
-            cv.notify_all();
-        };
-        std::thread reader([&] {
-            try {
-                for (int c = 0; c < chunks; ++c) {
-                    Slot* s = nullptr;
-                    {
-                        std::unique_lock<std::mutex> lock(m);
-                        cv.wait(lock, [&] {
-                            return stop || slots[static_cast<std::size_t>(c % kSlots)].state == 0;
-                        });
-                        if (stop)
-                            return;
-                        s = &slots[static_cast<std::size_t>(c % kSlots)];
-                    }
-                    src->readRows(c * rows, c * rows + rowsOf(c), s->in.data());
-                    std::lock_guard<std::mutex> lock(m);
-                    s->chunk = c;
-                    s->state = p.unchanged ? 3 : 1;
-                    cv.notify_all();
-                }
-                src->finish();
-            } catch (...) {
-                fail(std::current_exception());
-            }
-        });
-        const int computeThreads =
-            p.unchanged ? 0 : std::max(1, std::min(2, resolveThreads(o.threads)));
-        std::vector<std::thread> workers;
-        for (int w = 0; w < computeThreads; ++w)
-            workers.emplace_back([&] {
-                ChunkStats local;
-                try {
-                    for (;;) {
-                        Slot* s = nullptr;
-                        {
-                            std::unique_lock<std::mutex> lock(m);
-                            cv.wait(lock, [&] {
-                                if (stop)
-                                    return true;
-                                for (auto& x : slots)
-                                    if (x.state == 1)
-                                        return true;
-                                return false;
-                            });
-                            if (stop)
-                                break;
-                            for (auto& x : slots)
-                                if (x.state == 1 && (!s || x.chunk < s->chunk))
-                                    s = &x;
-                            s->state = 2;
-                        }
-                        computeChunk(p, chain, s->in.data(), s->out.data(),
-                                     static_cast<std::size_t>(p.in.width) *
-                                         static_cast<std::size_t>(rowsOf(s->chunk)),
-                                     local);
-                        std::lock_guard<std::mutex> lock(m);
-                        s->state = 3;
-                        cv.notify_all();
-                    }
-                } catch (...) {
-                    fail(std::current_exception());
-                }
-                std::lock_guard<std::mutex> lock(m);
-                total.merge(local);
-            });
+        return;
+    }
+    struct Slot {
+        std::vector<unsigned char> in, out;
+        int chunk = -1;
+        int state = 0; // 0 free, 1 read, 2 computing, 3 computed
+    };
+    std::vector<Slot> slots(kSlots);
+    for (auto& s : slots) {
+        s.in.resize(inRow * static_cast<std::size_t>(rows));
+        if (!p.unchanged)
+            s.out.resize(outRow * static_cast<std::size_t>(rows));
+    }
+    std::condition_variable cv;
+    bool stop = false;
+    std::exception_ptr failure;
+    auto fail = [&](std::exception_ptr e) {
+        std::lock_guard<std::mutex> lock(m);
+        if (!failure)
+            failure = e;
+        stop = true;
+        cv.notify_all();
+    };
+    std::thread reader([&] {
         try {
             for (int c = 0; c < chunks; ++c) {
-                Slot* s = &slots[static_cast<std::size_t>(c % kSlots)];
+                Slot* s = nullptr;
                 {
                     std::unique_lock<std::mutex> lock(m);
-                    cv.wait(lock, [&] { return stop || (s->chunk == c && s->state == 3); });
+                    cv.wait(lock, [&] {
+                        return stop || slots[static_cast<std::size_t>(c % kSlots)].state == 0;
+                    });
                     if (stop)
-                        break;
+                        return;
+                    s = &slots[static_cast<std::size_t>(c % kSlots)];
                 }
-                sink->writeRows(c * rows, c * rows + rowsOf(c),
-                                p.unchanged ? s->in.data() : s->out.data());
+                src.readRows(c * rows, c * rows + rowsOf(c), s->in.data());
                 std::lock_guard<std::mutex> lock(m);
-                s->state = 0;
+                s->chunk = c;
+                s->state = p.unchanged ? 3 : 1;
                 cv.notify_all();
             }
         } catch (...) {
             fail(std::current_exception());
         }
-        {
+    });
+    const int computeThreads =
+        p.unchanged ? 0 : std::max(1, std::min(2, resolveThreads(o.threads)));
+    std::vector<std::thread> workers;
+    for (int w = 0; w < computeThreads; ++w)
+        workers.emplace_back([&] {
+            ChunkStats local;
+            try {
+                for (;;) {
+                    Slot* s = nullptr;
+                    {
+                        std::unique_lock<std::mutex> lock(m);
+                        cv.wait(lock, [&] {
+                            if (stop)
+                                return true;
+                            for (auto& x : slots)
+                                if (x.state == 1)
+                                    return true;
+                            return false;
+                        });
+                        if (stop)
+                            break;
+                        for (auto& x : slots)
+                            if (x.state == 1 && (!s || x.chunk < s->chunk))
+                                s = &x;
+                        s->state = 2;
+                    }
+                    computeChunk(p, chain, s->in.data(), s->out.data(),
+                                 static_cast<std::size_t>(p.in.width) *
+                                     static_cast<std::size_t>(rowsOf(s->chunk)),
+                                 local);
+                    std::lock_guard<std::mutex> lock(m);
+                    s->state = 3;
+                    cv.notify_all();
+                }
+            } catch (...) {
+                fail(std::current_exception());
+            }
             std::lock_guard<std::mutex> lock(m);
-            stop = true; // the workers wait for more chunks: let them go
+            total.merge(local);
+        });
+    try {
+        for (int c = 0; c < chunks; ++c) {
+            Slot* s = &slots[static_cast<std::size_t>(c % kSlots)];
+            {
+                std::unique_lock<std::mutex> lock(m);
+                cv.wait(lock, [&] { return stop || (s->chunk == c && s->state == 3); });
+                if (stop)
+                    break;
+            }
+            sink.writeRows(c * rows, c * rows + rowsOf(c),
+                           p.unchanged ? s->in.data() : s->out.data());
+            std::lock_guard<std::mutex> lock(m);
+            s->state = 0;
             cv.notify_all();
         }
-        reader.join();
-        for (auto& w : workers)
-            w.join();
-        if (failure)
-            std::rethrow_exception(failure);
+    } catch (...) {
+        fail(std::current_exception());
     }
-    if (!threaded)
-        src->finish();
+    {
+        std::lock_guard<std::mutex> lock(m);
+        stop = true; // the workers wait for more chunks: let them go
+        cv.notify_all();
+    }
+    reader.join();
+    for (auto& w : workers)
+        w.join();
+    if (failure)
+        std::rethrow_exception(failure);
+}
+
+// What streaming a part holds at once: its chunk buffers, and what the codec decodes whole.
+std::uint64_t partMemory(const Plan& p, int srcGranularity, int sinkGranularity,
+                         const ApplyImageOptions& o) {
+    const int rows = chunkRowsFor(p, srcGranularity, sinkGranularity, o);
+    const int chunks = (p.in.height + rows - 1) / rows;
+    const std::uint64_t slots = o.overlap && chunks > 1 ? kSlots : 1;
+    const std::uint64_t perSlot =
+        (rowBytes(p.in) + (p.unchanged ? 0 : rowBytes(p.out))) * static_cast<std::uint64_t>(rows);
+    return slots * perSlot + p.in.decoderBytes;
+}
+
+} // namespace
+
+ApplyImageReport applyToImage(const std::string& input, const OutputTarget& target,
+                              const PixelChain& chain, const ApplyImageOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ApplyImageReport report;
+    auto src = openImageSource(input, o.inFormat);
+    const std::string name = isStdStream(input) ? std::string("-") : input;
+    const ImageInfo first = src->info();
+    const std::string outFormat =
+        target.inPlace() ? (o.outFormat.empty() ? first.format : o.outFormat) : target.path;
+    const std::string fmt = canonicalImageFormat(outFormat);
+    // Every part of the file (subimages and their MIP levels), or the one subimage asked for.
+    std::vector<int> parts;
+    if (o.subimage >= 0) {
+        parts = selectSubimage(*src, input, o.subimage);
+    } else {
+        for (int i = 0; i < src->parts(); ++i)
+            parts.push_back(i);
+    }
+    if (first.subimages > 1 && o.subimage < 0 && !formatHoldsParts(fmt))
+        throw MultiImageError(name, first.subimages, subimageKind(first.format));
+    std::vector<Plan> plans;
+    std::vector<SinkSpec> specs;
+    std::uint64_t memory = 0;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        src->selectPart(parts[i]);
+        if (src->info().mipLevel > 0 && !formatHoldsParts(fmt)) {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Warning;
+            d.path = input;
+            d.message = "MIP levels below the first not written: " + fmt + " holds none (write " +
+                        ".exr or .tif to keep them)";
+            report.diagnostics.push_back(d);
+            break;
+        }
+        SinkSpec spec;
+        spec.format = target.inPlace() ? fmt : std::string();
+        spec.metadata = src->metadata();
+        spec.threads = std::max(1, resolveThreads(o.threads));
+        Diagnostics notes;
+        plans.push_back(planPart(src->info(), outFormat, chain, o, spec, notes));
+        if (i == 0)
+            for (auto& d : notes) {
+                d.path = input;
+                report.diagnostics.push_back(d);
+            }
+        specs.push_back(spec);
+        // The sink's granularity is known once it is open; a tiled output's is its tile height.
+        memory = std::max(memory, partMemory(plans.back(), src->rowGranularity(),
+                                             spec.tileWidth > 0 ? spec.tileHeight : 1, o));
+    }
+    // Before anything is decoded: the batch's memory budget (--max-memory) holds this file.
+    if (o.reserveMemory)
+        o.reserveMemory(
+            memory, "reading " + std::to_string(first.width) + "x" + std::to_string(first.height) +
+                        " " + first.format +
+                        (plans.size() > 1 ? " (" + std::to_string(plans.size()) + " parts)" : ""));
+    report.input = plans.front().in;
+    report.unchanged = plans.front().unchanged;
+    report.parts = static_cast<int>(plans.size());
+
+    auto sink = createImageSink(target, specs);
+    report.output = plans.front().out;
+    report.output.format = fmt;
+    ChunkStats total;
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        if (plans.size() > 1 || parts.size() > 1)
+            src->selectPart(parts[i]); // planning left the source at the last part
+        if (i > 0)
+            sink->nextPart();
+        streamPart(*src, *sink, plans[i], chain, o, total);
+    }
+    src->finish();
     sink->finish();
     report.domain = total.domain;
     report.clamped = total.clamped;

@@ -19,6 +19,7 @@
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVersion.h>
 
 #include <algorithm>
 #include <cstring>
@@ -126,7 +127,10 @@ public:
             throw Error(path + ": cannot read OpenEXR file: " + firstLine(e.what()));
         }
         const Imf::Header& h = m_file->header();
-        if (h.hasTileDescription() || (h.hasType() && h.type() != Imf::SCANLINEIMAGE))
+        // Tiled, deep and multi-part files go through OpenImageIO, which reads every part (this
+        // reader would see the first part only).
+        if (Imf::isMultiPart(m_file->version()) || h.hasTileDescription() ||
+            (h.hasType() && h.type() != Imf::SCANLINEIMAGE))
             throw NotNative{};
         const Imf::ChannelList& list = h.channels();
         Imf::PixelType type = Imf::NUM_PIXELTYPES;

@@ -33,6 +33,11 @@ public:
     std::string icc;                                       // ICC profile
     std::string exif;                                      // TIFF-structured EXIF block
     std::vector<std::pair<std::string, std::string>> text; // key, value
+    // OpenImageIO's files: the data window's origin and the display window, kept by writers of
+    // the same format.
+    bool hasWindows = false;
+    int x = 0, y = 0;
+    int fullX = 0, fullY = 0, fullWidth = 0, fullHeight = 0;
 };
 
 // Row bytes of a chunk of `rows` rows.
@@ -53,6 +58,11 @@ public:
     virtual void readRows(int y0, int y1, void* dst) = 0;
     // After the last row: checks the end of the file (a PNG's IEND: truncation is an error).
     virtual void finish() {}
+    // The images the file holds, in order (OpenEXR parts, TIFF pages, GIF frames, and each one's
+    // MIP levels): info().subimages and mipLevels say what they are. selectPart(i) makes part i
+    // the one info(), metadata() and readRows() (again from row 0) are about.
+    virtual int parts() const { return 1; }
+    virtual void selectPart(int index);
 
 protected:
     ImageInfo m_info;
@@ -70,6 +80,7 @@ struct SinkSpec {
     int bitsPerSample = 0;   // 0 = the type's; 10/12 for DPX
     std::string compression; // "" = the format's default
     int tileWidth = 0, tileHeight = 0;
+    int mipLevel = 0; // > 0: a MIP level of the part written before (createImageSink's list)
     std::shared_ptr<const ImageMetadata> metadata; // copied where it fits
     int threads = 1;                               // encoder threads (PNG deflate)
 };
@@ -83,15 +94,27 @@ public:
     // Ends the file, checks it and commits it (the rename); throws lut::Error naming the
     // output. Without finish() the output is left as it was.
     virtual void finish() = 0;
+    // Several parts (createImageSink with a list): ends the current one, starts the next; its
+    // rows again from 0.
+    virtual void nextPart();
 };
 
 // The codec for a file, told from its first bytes ("-" = standard input; `format` names its
 // format, else sniffed). Throws lut::Error naming the file; FIFOs and devices are refused first.
 std::unique_ptr<ImageSource> openImageSource(const std::string& path,
                                              const std::string& format = {});
+// Selects subimage `subimage` (its first MIP level) of src; kOnlyImage keeps part 0 and refuses
+// a file holding several subimages (MultiImageError). Throws lut::Error naming path when there
+// is no such subimage. Returns the parts (MIP levels) of that subimage, in order.
+std::vector<int> selectSubimage(ImageSource& src, const std::string& path, int subimage);
 // Whether a native codec writes this format (else OpenImageIO does).
 std::string canonicalImageFormat(const std::string& formatOrPath);
 std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target, const SinkSpec& spec);
+// A file of several parts (subimages, MIP levels), written one after the other: OpenEXR and TIFF
+// (formatHoldsParts), through OpenImageIO.
+std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target,
+                                           const std::vector<SinkSpec>& parts);
+bool formatHoldsParts(const std::string& canonicalFormat);
 
 // Native codecs (each in its own file).
 std::unique_ptr<ImageSource> openPngSource(const std::string& path, std::string memory);
@@ -104,7 +127,8 @@ std::unique_ptr<ImageSink> createPnmSink(const OutputTarget& target, const SinkS
 // OpenImageIO through the module.
 std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string memory,
                                             const std::string& format);
-std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target, const SinkSpec& spec);
+std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target,
+                                          const std::vector<SinkSpec>& parts);
 
 // The limit checks every codec makes before allocating for an image: no pixels, over
 // lut::limits::kMaxImagePixels, or more decoded bytes than `fileBytes` can hold at `maxRatio`

@@ -25,14 +25,18 @@ int chunkRows(int width, int channels, int granularity) {
 
 } // namespace
 
-ImageInfo readImageInfo(const std::string& path, const std::string& format) {
-    return openImageSource(path, format)->info();
+ImageInfo readImageInfo(const std::string& path, const std::string& format, int subimage) {
+    auto src = openImageSource(path, format);
+    if (subimage > 0)
+        selectSubimage(*src, path, subimage);
+    return src->info();
 }
 
-LoadedImage readImage(const std::string& path, const std::string& format,
-                      const Progress* progress) {
+LoadedImage readImage(const std::string& path, const std::string& format, const Progress* progress,
+                      int subimage) {
     checkCancelled(progress, path);
     auto src = openImageSource(path, format);
+    selectSubimage(*src, path, subimage);
     LoadedImage out;
     out.info = src->info();
     out.metadata = src->metadata();

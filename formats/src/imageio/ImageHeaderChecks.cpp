@@ -1,124 +1,421 @@
+// The pre-open plausibility rule (ImageHeaderChecks.h, ImageHeaderScan.h): the dispatch by first
+// bytes, the OpenEXR scanner, the rule itself and the public checkImageFile().
 #include "imageio/ImageHeaderChecks.h"
+#include "imageio/ImageHeaderScan.h"
 
 #include "lut/Error.h"
+#include "lut/Limits.h"
+#include "lut/formats/ImageIO.h"
+#include "lut/io/FileNames.h"
+#include "lut/io/InputFile.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
-#include <cstdint>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <vector>
 
 namespace lut::formats {
 
-namespace {
+HeaderBytes::HeaderBytes(Reader read, std::uint64_t size, bool whole)
+    : m_read(std::move(read)), m_size(size), m_whole(whole) {}
 
-constexpr std::size_t kHeaderWindow = std::size_t(1) << 20; // header bytes looked at
+std::string HeaderBytes::get(std::uint64_t offset, std::size_t n) const {
+    if (offset >= m_size)
+        return {};
+    n = static_cast<std::size_t>(std::min<std::uint64_t>(n, m_size - offset));
+    if (offset >= m_cacheAt && offset + n <= m_cacheAt + m_cache.size())
+        return m_cache.substr(static_cast<std::size_t>(offset - m_cacheAt), n);
+    if (n <= 4096) { // small reads go through a 64 KiB window
+        m_cacheAt = offset;
+        m_cache.resize(static_cast<std::size_t>(std::min<std::uint64_t>(65536, m_size - offset)));
+        m_cache.resize(m_read(offset, m_cache.data(), m_cache.size()));
+        return m_cache.substr(0, std::min(n, m_cache.size()));
+    }
+    std::string s(n, '\0');
+    s.resize(m_read(offset, s.data(), n));
+    return s;
+}
 
-std::uint32_t u32(const unsigned char* p) {
-    return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-           static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+std::uint64_t HeaderBytes::le(std::uint64_t offset, int bytes) const {
+    const std::string s = get(offset, static_cast<std::size_t>(bytes));
+    if (s.size() != static_cast<std::size_t>(bytes))
+        return 0;
+    std::uint64_t v = 0;
+    for (int i = bytes - 1; i >= 0; --i)
+        v = v << 8 | static_cast<unsigned char>(s[static_cast<std::size_t>(i)]);
+    return v;
+}
+
+std::uint64_t HeaderBytes::be(std::uint64_t offset, int bytes) const {
+    const std::string s = get(offset, static_cast<std::size_t>(bytes));
+    if (s.size() != static_cast<std::size_t>(bytes))
+        return 0;
+    std::uint64_t v = 0;
+    for (char c : s)
+        v = v << 8 | static_cast<unsigned char>(c);
+    return v;
+}
+
+int HeaderBytes::byte(std::uint64_t offset) const {
+    const std::string s = get(offset, 1);
+    return s.empty() ? -1 : static_cast<unsigned char>(s[0]);
 }
 
 // OpenEXR (openexr.com, "OpenEXR File Layout"): magic 76 2f 31 01, a version word (bit 12 =
 // multi-part), then headers of attributes "name\0type\0" + int32 size + value, each header ended
-// by an empty name (multi-part: the list of headers ended by one more).
-void checkExr(const std::string& path, const std::vector<unsigned char>& b,
-              std::uint64_t fileSize) {
-    const bool multiPart = (u32(b.data() + 4) & 0x1000u) != 0;
-    std::size_t at = 8;
-    auto cString = [&](std::size_t& pos) -> bool { // false when it runs past what was read
-        while (pos < b.size() && b[pos] != 0)
-            ++pos;
-        if (pos >= b.size())
+// by an empty name (multi-part: the list ended by one more). Every attribute's size must fit in
+// the bytes after it (a 330-byte file whose "Software" claimed 1.7 GB made OpenEXR take 1.8 GB
+// inside OpenImageIO's open; found by fuzz_image_apply). Each part's data window and channels
+// give what it stores; its compression how far its share of the chunks can expand (measured and
+// derived in docs/robustness.md; DWAA/DWAB: a DC value and an end-of-block code per 8x8 block,
+// deflated).
+DeclaredImage scanExr(const HeaderBytes& b, const std::string& path) {
+    DeclaredImage d;
+    d.format = "openexr";
+    d.sharedData = true;
+    const bool multiPart = (b.le(4, 4) & 0x1000u) != 0;
+    std::uint64_t at = 8;
+    const std::uint64_t size = b.size();
+    auto cString = [&](std::uint64_t& pos, std::string& out) {
+        out = b.get(pos, 256);
+        const auto nul = out.find('\0');
+        if (nul == std::string::npos)
             return false;
-        ++pos;
+        out.resize(nul);
+        pos += nul + 1;
         return true;
     };
     for (int header = 0; header < 1024; ++header) {
-        if (at >= b.size())
-            return;
-        if (b[at] == 0) // an empty header name: end of the headers
-            return;
+        if (at >= size || b.byte(at) == 0) // an empty header name: the end of the headers
+            break;
+        DeclaredPart p;
+        std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+        double bytesPerPixel = 0.0;
+        int channels = 0, compression = 0;
+        std::string type, name;
         for (;;) {
-            if (at >= b.size())
-                return;
-            if (b[at] == 0) { // end of this header
+            if (at >= size) {
+                d.complete = false;
+                return d;
+            }
+            if (b.byte(at) == 0) { // the end of this header
                 ++at;
                 break;
             }
-            const std::size_t nameAt = at;
-            if (!cString(at))
-                return;
-            const std::string name(reinterpret_cast<const char*>(b.data() + nameAt),
-                                   at - nameAt - 1);
-            if (!cString(at) || at + 4 > b.size())
-                return;
-            const auto size = static_cast<std::int32_t>(u32(b.data() + at));
+            std::string attr, kind;
+            if (!cString(at, attr) || !cString(at, kind) || at + 4 > size) {
+                d.complete = false;
+                return d; // the codec says what is wrong
+            }
+            const auto len = static_cast<std::int32_t>(b.le(at, 4));
             at += 4;
-            const std::uint64_t left = fileSize > at ? fileSize - at : 0;
-            if (size < 0 || static_cast<std::uint64_t>(size) > left)
-                throw Error(path + ": OpenEXR header attribute '" + name + "' declares " +
-                            std::to_string(size) + " bytes, but only " + std::to_string(left) +
+            const std::uint64_t left = size - at;
+            if (len < 0 || static_cast<std::uint64_t>(len) > left) {
+                if (!b.whole()) {
+                    d.complete = false;
+                    return d;
+                }
+                throw Error(path + ": OpenEXR header attribute '" + attr + "' declares " +
+                            std::to_string(len) + " bytes, but only " + std::to_string(left) +
                             " bytes follow in the file (truncated or corrupt)");
-            at += static_cast<std::size_t>(size);
+            }
+            const std::uint64_t value = at;
+            at += static_cast<std::uint64_t>(len);
+            if (kind == "box2i" && attr == "dataWindow" && len == 16) {
+                x0 = static_cast<std::int32_t>(b.le(value, 4));
+                y0 = static_cast<std::int32_t>(b.le(value + 4, 4));
+                x1 = static_cast<std::int32_t>(b.le(value + 8, 4));
+                y1 = static_cast<std::int32_t>(b.le(value + 12, 4));
+            } else if (kind == "compression" && len == 1) {
+                compression = b.byte(value);
+            } else if (kind == "string" && attr == "type") {
+                type = b.get(value, static_cast<std::size_t>(std::min(len, 64)));
+            } else if (kind == "string" && attr == "name") {
+                name = b.get(value, static_cast<std::size_t>(std::min(len, 255)));
+            } else if (kind == "chlist") {
+                std::uint64_t c = value;
+                std::string channel;
+                while (c < at && b.byte(c) != 0 && cString(c, channel) && c + 16 <= at) {
+                    const std::uint64_t pixelType = b.le(c, 4);
+                    const std::uint64_t xs = std::max<std::uint64_t>(1, b.le(c + 8, 4) & 0xffff);
+                    const std::uint64_t ys = std::max<std::uint64_t>(1, b.le(c + 12, 4) & 0xffff);
+                    bytesPerPixel += (pixelType == 1 ? 2.0 : 4.0) / static_cast<double>(xs * ys);
+                    ++channels;
+                    c += 16;
+                }
+            }
+        }
+        if (x1 >= x0 && y1 >= y0 && channels > 0 && type.rfind("deep", 0) != 0) {
+            p.what = multiPart ? "part " + std::to_string(header + 1) +
+                                     (name.empty() ? "" : " ('" + name + "')")
+                               : "";
+            p.width = static_cast<std::uint64_t>(x1 - x0 + 1);
+            p.height = static_cast<std::uint64_t>(y1 - y0 + 1);
+            p.channels = channels;
+            p.storedBytes = static_cast<std::uint64_t>(
+                static_cast<double>(p.width) * static_cast<double>(p.height) * bytesPerPixel);
+            // clang-format off
+            static const std::pair<double, const char*> kCodecs[] = {
+                {1.0, "uncompressed"}, {64.0, "RLE"}, {1032.0, "ZIPS"}, {1032.0, "ZIP"},
+                {512.0, "PIZ"}, {1376.0, "PXR24"}, {2.3, "B44"}, {10.7, "B44A"},
+                {66048.0, "DWAA"}, {66048.0, "DWAB"}};
+            // clang-format on
+            if (compression >= 0 && compression < 10) {
+                p.maxRatio = kCodecs[compression].first;
+                p.codec = kCodecs[compression].second;
+            } else {
+                p.codec = "this compression";
+            }
+            d.parts.push_back(p);
         }
         if (!multiPart)
-            return;
+            break;
     }
+    for (auto& p : d.parts)
+        p.dataBytes = size > at ? size - at : 0;
+    return d;
+}
+
+std::string sniffImageFormat(const HeaderBytes& b, const std::string& nameOrFormat) {
+    const std::string h = b.get(0, 16);
+    auto starts = [&](const char* magic, std::size_t n) {
+        return h.size() >= n && std::memcmp(h.data(), magic, n) == 0;
+    };
+    if (starts("\x89PNG\r\n\x1a\n", 8))
+        return "png";
+    if (starts("\xff\xd8\xff", 3))
+        return "jpeg";
+    if (starts("GIF", 3)) // giflib checks these three bytes only, not the version after them
+        return "gif";
+    if (starts("II*\0", 4) || starts("MM\0*", 4) || starts("II+\0", 4) || starts("MM\0+", 4))
+        return "tiff";
+    if (starts("\x76\x2f\x31\x01", 4))
+        return "openexr";
+    if (starts("8BPS", 4))
+        return "psd";
+    if (starts("SDPX", 4) || starts("XPDS", 4))
+        return "dpx";
+    if (starts("#?", 2))
+        return "hdr";
+    if (starts("RIFF", 4) && h.size() >= 12 && h.compare(8, 4, "WEBP") == 0)
+        return "webp";
+    if (starts("FOR4", 4) && h.size() >= 12 && h.compare(8, 4, "CIMG") == 0)
+        return "iff";
+    if (starts("BM", 2))
+        return "bmp";
+    if (h.size() >= 3 && h[0] == 'P' && h[1] >= '1' && h[1] <= '7' &&
+        std::isspace(static_cast<unsigned char>(h[2])))
+        return "pnm";
+    // Formats OpenImageIO reads that have no scanner here: known by their magic numbers (so
+    // standard input may be one), held to the pixel limit once OpenImageIO has read the header.
+    if (starts("\x01\xda", 2) || starts("\x80\x2a\x5f\xd7", 4) || starts("\xd7\x5f\x2a\x80", 4) ||
+        starts("DDS ", 4) || starts("\x53\x80\xf6\x34", 4) || starts("SIMPLE  =", 9) ||
+        starts("\xff\x4f\xff\x51", 4) || starts("\0\0\0\x0cjP  ", 8) ||
+        starts("\x2f\x08\x67\xab", 4) || starts("\xab\x67\x08\x2f", 4) ||
+        (h.size() >= 12 && h.compare(4, 4, "ftyp") == 0))
+        return "other";
+    // TGA has no magic number: its name, the named format, or the TGA 2.0 footer.
+    std::string ext = nameOrFormat.find('.') == std::string::npos ? "." + nameOrFormat
+                                                                  : extensionOf(nameOrFormat);
+    for (auto& c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".tga" || ext == ".targa" || ext == ".tpic" ||
+        (b.whole() && b.size() >= 26 && b.get(b.size() - 18, 16) == "TRUEVISION-XFILE"))
+        return "targa";
+    return {};
+}
+
+DeclaredImage scanImageHeader(const HeaderBytes& b, const std::string& format,
+                              const std::string& path) {
+    if (format == "png")
+        return scanPng(b, path);
+    if (format == "jpeg")
+        return scanJpeg(b, path);
+    if (format == "gif")
+        return scanGif(b, path);
+    if (format == "tiff")
+        return scanTiff(b, path);
+    if (format == "openexr")
+        return scanExr(b, path);
+    if (format == "psd")
+        return scanPsd(b, path);
+    if (format == "dpx")
+        return scanDpx(b, path);
+    if (format == "hdr")
+        return scanHdr(b, path);
+    if (format == "webp")
+        return scanWebp(b, path);
+    if (format == "iff")
+        return scanIff(b, path);
+    if (format == "bmp")
+        return scanBmp(b, path);
+    if (format == "pnm")
+        return scanPnm(b, path);
+    if (format == "other") {
+        DeclaredImage d;
+        d.format = format;
+        return d;
+    }
+    if (format == "targa")
+        return scanTga(b, path);
+    return {};
+}
+
+namespace {
+
+std::string formatName(const std::string& f) {
+    if (f == "openexr")
+        return "OpenEXR";
+    if (f == "targa")
+        return "TGA";
+    std::string s = f;
+    for (auto& c : s)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string ratioText(double r) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, r < 10 ? "%.3g" : "%.0f", r);
+    return buf;
 }
 
 } // namespace
 
-// DPX (SMPTE 268M): "SDPX" big-endian or "XPDS" little-endian; pixels per line at byte 772, lines
-// per element at 776. OpenImageIO allocates the frame from them when it opens the file (a 2 KB
-// file claiming 32704x32704 asked for 4.3 GB: found by fuzz_image_apply). No DPX stores less than
-// one bit per pixel.
-void checkDpx(const std::string& path, const std::vector<unsigned char>& b, std::uint64_t size) {
-    if (b.size() < 780)
-        return;
-    const bool big = b[0] == 'S';
-    auto u32 = [&](std::size_t at) {
-        return big ? (std::uint32_t(b[at]) << 24) | (std::uint32_t(b[at + 1]) << 16) |
-                         (std::uint32_t(b[at + 2]) << 8) | b[at + 3]
-                   : (std::uint32_t(b[at + 3]) << 24) | (std::uint32_t(b[at + 2]) << 16) |
-                         (std::uint32_t(b[at + 1]) << 8) | b[at];
-    };
-    const std::uint64_t w = u32(772), h = u32(776);
-    if (w * h > 8 * size)
-        throw Error(path + ": DPX header declares " + std::to_string(w) + "x" + std::to_string(h) +
-                    " pixels, more than the file's " + std::to_string(size) +
-                    " bytes can hold (truncated or corrupt)");
+void checkDeclaredImage(const std::string& path, const DeclaredImage& image) {
+    const std::string name = formatName(image.format);
+    double shared = 0.0;
+    std::uint64_t sharedData = 0;
+    for (const DeclaredPart& p : image.parts) {
+        const std::string who = path + (p.what.empty() ? "" : " (" + p.what + ")");
+        if (p.width == 0 || p.height == 0)
+            throw Error(who + ": the image has no pixels (" + std::to_string(p.width) + "x" +
+                        std::to_string(p.height) + ")");
+        if (p.width * p.height > limits::kMaxImagePixels || p.channels > 64 ||
+            p.width > (1u << 30) || p.height > (1u << 30))
+            throw LimitError(who + ": image is " + std::to_string(p.width) + "x" +
+                             std::to_string(p.height) + " with " + std::to_string(p.channels) +
+                             " channels, over the limit of " +
+                             std::to_string(limits::kMaxImagePixels) + " pixels and 64 channels");
+        if (p.maxRatio <= 0.0)
+            continue;
+        const double can = p.maxRatio * static_cast<double>(p.dataBytes);
+        if (image.sharedData) {
+            shared += static_cast<double>(p.storedBytes) / p.maxRatio;
+            sharedData = p.dataBytes;
+        }
+        if (static_cast<double>(p.storedBytes) > can)
+            throw LimitError(who + ": declares " + std::to_string(p.width) + "x" +
+                             std::to_string(p.height) + " pixels (" +
+                             std::to_string(p.storedBytes) + " bytes as stored) in " +
+                             std::to_string(p.dataBytes) + " bytes of " + name + " data, more " +
+                             "than " + p.codec + " data can hold (at most " +
+                             ratioText(p.maxRatio) + ":1): truncated or corrupt");
+    }
+    if (image.sharedData && image.parts.size() > 1 && shared > static_cast<double>(sharedData))
+        throw LimitError(path + ": declares " + std::to_string(image.parts.size()) +
+                         " parts whose pixels need more than the file's " +
+                         std::to_string(sharedData) + " bytes of " + name +
+                         " data can hold: truncated or corrupt");
 }
 
-void checkImageHeader(const std::string& path) {
+std::uint64_t plausibleFileBytes(const DeclaredImage& image) {
+    if (image.format.empty() || !image.complete || image.parts.empty())
+        return 0;
+    // Incompressible pixels grow a little (deflate: 5 bytes per 64 KiB block; a JPEG at quality
+    // 100 of noise: about 1.2 times); metadata (ICC profiles, EXIF, XMP) rarely passes 16 MiB.
+    std::uint64_t stored = 0;
+    for (const DeclaredPart& p : image.parts)
+        stored += p.storedBytes;
+    if (image.format == "psd" || image.format == "tiff")
+        return 0; // layers or pages the first header does not list
+    return 2 * stored + (std::uint64_t(64) << 20);
+}
+
+DeclaredImage checkImageHeader(const std::string& path, const std::string& nameOrFormat) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0)
-        return; // the reader says why it cannot open it
+        return {}; // the reader says why it cannot open it
     struct stat st {};
-    std::vector<unsigned char> b;
-    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
-        b.resize(static_cast<std::size_t>(
-            std::min<std::uint64_t>(static_cast<std::uint64_t>(st.st_size), kHeaderWindow)));
-        std::size_t got = 0;
-        while (got < b.size()) {
-            const ssize_t n = ::pread(fd, b.data() + got, b.size() - got, static_cast<off_t>(got));
-            if (n < 0 && errno == EINTR)
-                continue;
-            if (n <= 0)
-                break;
-            got += static_cast<std::size_t>(n);
-        }
-        b.resize(got);
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        return {};
+    }
+    const HeaderBytes bytes(
+        [fd](std::uint64_t offset, void* dst, std::size_t n) {
+            std::size_t got = 0;
+            while (got < n) {
+                const ssize_t r = ::pread(fd, static_cast<char*>(dst) + got, n - got,
+                                          static_cast<off_t>(offset + got));
+                if (r < 0 && errno == EINTR)
+                    continue;
+                if (r <= 0)
+                    break;
+                got += static_cast<std::size_t>(r);
+            }
+            return got;
+        },
+        static_cast<std::uint64_t>(st.st_size));
+    DeclaredImage d;
+    try {
+        d = scanImageHeader(bytes, sniffImageFormat(bytes, nameOrFormat), path);
+        checkDeclaredImage(path, d);
+    } catch (...) {
+        ::close(fd);
+        throw;
     }
     ::close(fd);
-    static const unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
-    if (b.size() >= 8 && std::memcmp(b.data(), kExrMagic, 4) == 0)
-        checkExr(path, b, static_cast<std::uint64_t>(st.st_size));
-    if (b.size() >= 4 &&
-        (std::memcmp(b.data(), "SDPX", 4) == 0 || std::memcmp(b.data(), "XPDS", 4) == 0))
-        checkDpx(path, b, static_cast<std::uint64_t>(st.st_size));
+    return d;
+}
+
+DeclaredImage checkImageBytes(const std::string& name, const std::string& bytes,
+                              const std::string& format, bool whole) {
+    const HeaderBytes b(
+        [&bytes](std::uint64_t offset, void* dst, std::size_t n) {
+            if (offset >= bytes.size())
+                return std::size_t(0);
+            const std::size_t got =
+                std::min<std::size_t>(n, bytes.size() - static_cast<std::size_t>(offset));
+            std::memcpy(dst, bytes.data() + offset, got);
+            return got;
+        },
+        bytes.size(), whole);
+    DeclaredImage d = scanImageHeader(b, sniffImageFormat(b, format), name);
+    if (whole)
+        checkDeclaredImage(name, d);
+    return d;
+}
+
+std::uint64_t imageStreamBytes(std::string_view head, const std::string& format) {
+    DeclaredImage d;
+    try {
+        d = checkImageBytes("-", std::string(head), format, false);
+    } catch (const Error&) {
+        return limits::kMaxLutFileBytes; // refused with its reason once it is whole
+    }
+    if (d.format.empty())
+        return 0;
+    const std::uint64_t most = plausibleFileBytes(d);
+    return most > 0 ? std::min<std::uint64_t>(most, limits::kMaxLutFileBytes)
+                    : limits::kMaxLutFileBytes;
+}
+
+ImageDeclaration checkImageFile(const std::string& path, const std::string& format) {
+    checkRegularInput(path);
+    const DeclaredImage d = checkImageHeader(path, format.empty() ? path : format);
+    ImageDeclaration out;
+    out.format = d.format;
+    out.decoderBytes = d.decoderBytes;
+    out.images = static_cast<int>(d.parts.size());
+    if (!d.parts.empty()) {
+        out.width = static_cast<int>(d.parts.front().width);
+        out.height = static_cast<int>(d.parts.front().height);
+        out.channels = d.parts.front().channels;
+    }
+    return out;
 }
 
 } // namespace lut::formats

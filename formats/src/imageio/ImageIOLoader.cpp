@@ -104,16 +104,22 @@ public:
         req.path = path;
         req.memory = path == "-" ? &m_memory : nullptr;
         req.format = format;
-        auto meta = std::make_shared<ImageMetadata>();
         std::string error;
-        rethrow(api().openSource(req, &m_handle, m_info, *meta, m_granularity, error), error);
-        m_metadata = meta;
+        rethrow(api().openSource(req, &m_handle, m_parts, error), error);
+        selectPart(0);
     }
     ~ModuleSource() override {
         if (m_handle)
             api().closeSource(m_handle);
     }
     int rowGranularity() const override { return m_granularity; }
+    int parts() const override { return m_parts; }
+    void selectPart(int index) override {
+        auto meta = std::make_shared<ImageMetadata>();
+        std::string error;
+        rethrow(api().selectPart(m_handle, index, m_info, *meta, m_granularity, error), error);
+        m_metadata = meta;
+    }
     void readRows(int y0, int y1, void* dst) override {
         std::string error;
         rethrow(api().readRows(m_handle, y0, y1, dst, error), error);
@@ -122,12 +128,13 @@ public:
 private:
     std::string m_memory;
     void* m_handle = nullptr;
+    int m_parts = 1;
     int m_granularity = 1;
 };
 
 class ModuleSink : public ImageSink {
 public:
-    ModuleSink(const OutputTarget& target, const SinkSpec& spec)
+    ModuleSink(const OutputTarget& target, const std::vector<SinkSpec>& parts)
         : m_out(target, true), m_path(target.path) {
         module::ByteCallbacks cb;
         cb.context = this;
@@ -147,31 +154,63 @@ public:
             }
         };
         // The writer is picked by the extension of the name it is given.
+        const SinkSpec& spec = parts.front();
         std::string name = target.path;
         if (!spec.format.empty() && spec.format.find('.') == std::string::npos &&
             (target.inPlace() || canonicalImageFormat(name) != canonicalImageFormat(spec.format)))
             name = "out." + spec.format;
+        if (parts.size() > 1) {
+            // OpenImageIO 2.4 writes a multi-part OpenEXR by name only (and libtiff reads back
+            // the pages it chains): the writer gets the temporary file itself, which commit()
+            // then checks and renames like any other.
+            if (target.inPlace())
+                throw Error(target.path + ": a file of " + std::to_string(parts.size()) +
+                            " images (parts, pages, frames or MIP levels) cannot be written to "
+                            "standard output or a device: name a file");
+            name = m_out.tempPath();
+            cb.pwrite = nullptr;
+            m_temp = name;
+        }
         std::string error;
-        rethrow(api().openSink(spec, name, cb, &m_handle, m_granularity, error), error);
+        // The call first, then the message: argument order is unspecified.
+        const int status = api().openSink(parts.data(), static_cast<int>(parts.size()), name, cb,
+                                          &m_handle, m_granularity, error);
+        rethrow(status, userFacing(error));
     }
     ~ModuleSink() override {
         if (m_handle)
             api().closeSink(m_handle);
     }
     int rowGranularity() const override { return m_granularity; }
+    void nextPart() override {
+        std::string error;
+        const int status = api().nextPart(m_handle, m_granularity, error);
+        rethrow(status, userFacing(error));
+    }
     void writeRows(int y0, int y1, const void* src) override {
         std::string error;
-        rethrow(api().writeRows(m_handle, y0, y1, src, error), error);
+        const int status = api().writeRows(m_handle, y0, y1, src, error);
+        rethrow(status, userFacing(error));
     }
     void finish() override {
         std::string error;
-        rethrow(api().finishSink(m_handle, error), error);
+        const int status = api().finishSink(m_handle, error);
+        rethrow(status, userFacing(error));
         m_out.commit();
     }
 
 private:
+    // Messages name the user's path, never the temporary file a multi-part writer was given.
+    std::string userFacing(std::string text) const {
+        if (!m_temp.empty())
+            for (std::size_t at; (at = text.find(m_temp)) != std::string::npos;)
+                text.replace(at, m_temp.size(), m_path);
+        return text;
+    }
+
     ByteWriter m_out;
     std::string m_path;
+    std::string m_temp; // the temporary file written by name ("" = through the callbacks)
     void* m_handle = nullptr;
     int m_granularity = 1;
 };
@@ -183,8 +222,11 @@ std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string
     return std::make_unique<ModuleSource>(path, std::move(memory), format);
 }
 
-std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target, const SinkSpec& spec) {
-    return std::make_unique<ModuleSink>(target, spec);
+std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target,
+                                          const std::vector<SinkSpec>& parts) {
+    if (parts.empty())
+        throw Error(target.path + ": cannot write an image of no parts");
+    return std::make_unique<ModuleSink>(target, parts);
 }
 
 } // namespace lut::formats

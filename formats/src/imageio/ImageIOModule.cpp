@@ -33,13 +33,17 @@ template <class Fn> int guarded(std::string& error, Fn&& fn) {
     }
 }
 
-int openSource(const SourceOpen& req, void** handle, ImageInfo& info, ImageMetadata& meta,
-               int& granularity, std::string& error) {
+int openSource(const SourceOpen& req, void** handle, int& parts, std::string& error) {
     return guarded(error, [&] {
         auto src = std::make_unique<OiioSource>(req);
-        src->describe(info, meta, granularity);
+        parts = src->parts();
         *handle = src.release();
     });
+}
+int selectPart(void* h, int index, ImageInfo& info, ImageMetadata& meta, int& granularity,
+               std::string& error) {
+    return guarded(error,
+                   [&] { static_cast<OiioSource*>(h)->select(index, info, meta, granularity); });
 }
 int readRows(void* h, int y0, int y1, void* dst, std::string& error) {
     return guarded(error, [&] { static_cast<OiioSource*>(h)->readRows(y0, y1, dst); });
@@ -47,12 +51,19 @@ int readRows(void* h, int y0, int y1, void* dst, std::string& error) {
 void closeSource(void* h) {
     delete static_cast<OiioSource*>(h);
 }
-int openSink(const SinkSpec& spec, const std::string& name, ByteCallbacks bytes, void** handle,
-             int& granularity, std::string& error) {
+int openSink(const SinkSpec* specs, int count, const std::string& name, ByteCallbacks bytes,
+             void** handle, int& granularity, std::string& error) {
     return guarded(error, [&] {
-        auto sink = std::make_unique<OiioSink>(spec, name, bytes);
+        auto sink = std::make_unique<OiioSink>(specs, count, name, bytes);
         granularity = sink->granularity();
         *handle = sink.release();
+    });
+}
+int nextPart(void* h, int& granularity, std::string& error) {
+    return guarded(error, [&] {
+        auto* sink = static_cast<OiioSink*>(h);
+        sink->nextPart();
+        granularity = sink->granularity();
     });
 }
 int writeRows(void* h, int y0, int y1, const void* src, std::string& error) {
@@ -65,8 +76,8 @@ void closeSink(void* h) {
     delete static_cast<OiioSink*>(h);
 }
 
-const ImageIOApi kApi = {kImageIOApiVersion, &openSource, &readRows,   &closeSource,
-                         &openSink,          &writeRows,  &finishSink, &closeSink};
+const ImageIOApi kApi = {kImageIOApiVersion, &openSource, &selectPart, &readRows,   &closeSource,
+                         &openSink,          &nextPart,   &writeRows,  &finishSink, &closeSink};
 
 } // namespace
 } // namespace lut::formats::module

@@ -17,7 +17,9 @@
 
 namespace lut::formats::module {
 
-constexpr int kImageIOApiVersion = 3; // 3: ImageInfo has colorSpace and chromaSubsampling
+// 3: ImageInfo has colorSpace and chromaSubsampling; 4: parts (subimages and MIP levels) read
+// and written one after the other, tiles, windows.
+constexpr int kImageIOApiVersion = 4;
 constexpr const char* kImageIOModuleName = "lutkit_imageio.so";
 constexpr const char* kImageIOEntryPoint = "lutkit_imageio_api";
 
@@ -39,13 +41,20 @@ struct SourceOpen {
 
 struct ImageIOApi {
     int version;
-    int (*openSource)(const SourceOpen& request, void** handle, ImageInfo& info,
-                      ImageMetadata& metadata, int& granularity, std::string& error);
+    // Opens the file and lists its parts (every subimage, and each one's MIP levels, in order);
+    // part 0 is selected.
+    int (*openSource)(const SourceOpen& request, void** handle, int& parts, std::string& error);
+    // Makes part `index` the one readRows reads (from row 0) and describes it.
+    int (*selectPart)(void* handle, int index, ImageInfo& info, ImageMetadata& metadata,
+                      int& granularity, std::string& error);
     int (*readRows)(void* handle, int y0, int y1, void* dst, std::string& error);
     void (*closeSource)(void* handle);
-    // `name` is a file name whose extension picks the writer ("x.tif").
-    int (*openSink)(const SinkSpec& spec, const std::string& name, ByteCallbacks bytes,
+    // `name` is a file name whose extension picks the writer ("x.tif"). specs[0..count) are the
+    // parts to write in order (SinkSpec::mipLevel > 0: a MIP level of the part before).
+    int (*openSink)(const SinkSpec* specs, int count, const std::string& name, ByteCallbacks bytes,
                     void** handle, int& granularity, std::string& error);
+    // Ends the current part and starts the next one.
+    int (*nextPart)(void* handle, int& granularity, std::string& error);
     int (*writeRows)(void* handle, int y0, int y1, const void* src, std::string& error);
     int (*finishSink)(void* handle, std::string& error);
     void (*closeSink)(void* handle);

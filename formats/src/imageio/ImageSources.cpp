@@ -9,6 +9,7 @@
 #include "lut/io/InputFile.h"
 #include "lut/io/StdStreams.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace lut::formats {
@@ -58,11 +59,39 @@ std::string canonicalImageFormat(const std::string& formatOrPath) {
 
 namespace {
 
-std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::string& format) {
+// Standard input, bounded by what its header declares: a stream that is no image stops after
+// its first MiB, one that is stops at what its pixels can take (plausibleFileBytes).
+std::string readImageStream(const std::string& named) {
+    return readStandardInput(
+        static_cast<std::size_t>(limits::kMaxLutFileBytes), [&](const std::string& head) {
+            DeclaredImage d;
+            try {
+                d = checkImageBytes("-", head, named, false);
+            } catch (const Error&) {
+                return StreamBound{}; // refused with its reason once it is whole
+            }
+            if (d.format.empty() && named.empty())
+                throw Error("-: standard input is not an image lutkit reads (no PNG, JPEG, TIFF, "
+                            "OpenEXR, DPX, PSD, GIF, BMP, HDR, WebP, IFF or PNM header; name the "
+                            "format of a TGA or another one with --in-format)");
+            const std::uint64_t most = plausibleFileBytes(d);
+            if (most == 0)
+                return StreamBound{};
+            return StreamBound{most, "that its " + d.format + " header's " +
+                                         std::to_string(d.parts.front().width) + "x" +
+                                         std::to_string(d.parts.front().height) +
+                                         " pixels can take"};
+        });
+}
+
+std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::string& format,
+                                           DeclaredImage& declared) {
     std::string memory;
     std::string head;
+    const std::string named = format.empty() ? "" : canonicalImageFormat(format);
     if (isStdStream(path)) {
-        memory = readStandardInput(static_cast<std::size_t>(limits::kMaxLutFileBytes));
+        memory = readImageStream(named);
+        declared = checkImageBytes("-", memory, named, true);
         head = memory.substr(0, 16);
     } else {
         checkRegularInput(path); // a FIFO or device is refused before it is opened
@@ -74,9 +103,9 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         std::fclose(f);
         if (head.empty())
             throw Error(path + ": is empty");
-        checkImageHeader(path); // declared sizes against the file, before a codec believes them
+        // Declared sizes against the file, before a codec believes them.
+        declared = checkImageHeader(path, named.empty() ? path : named);
     }
-    const std::string named = format.empty() ? "" : canonicalImageFormat(format);
     const auto starts = [&](const char* magic, std::size_t n) {
         return head.size() >= n && std::memcmp(head.data(), magic, n) == 0;
     };
@@ -110,19 +139,120 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
     return openOiioSource(path, std::move(memory), named.empty() ? format : named);
 }
 
+// Every part of a source within the pixel limit, whatever codec reads it; the header's
+// declaration bounds what the codec's own decoder holds.
+class CheckedSource : public ImageSource {
+public:
+    CheckedSource(std::string path, std::unique_ptr<ImageSource> inner, std::uint64_t decoder)
+        : m_path(std::move(path)), m_inner(std::move(inner)), m_decoder(decoder) {
+        describe();
+    }
+    int rowGranularity() const override { return m_inner->rowGranularity(); }
+    void readRows(int y0, int y1, void* dst) override { m_inner->readRows(y0, y1, dst); }
+    void finish() override { m_inner->finish(); }
+    int parts() const override { return m_inner->parts(); }
+    void selectPart(int index) override {
+        m_inner->selectPart(index);
+        describe();
+    }
+
+private:
+    void describe() {
+        m_info = m_inner->info();
+        m_metadata = m_inner->metadata();
+        const std::string name = isStdStream(m_path) ? std::string("-") : m_path;
+        // A header may declare no pixels at all (a DPX of width 0 was read without a word:
+        // found by fuzz_image_apply); nothing downstream can use that.
+        if (m_info.width <= 0 || m_info.height <= 0 || m_info.channels <= 0)
+            throw Error((isStdStream(m_path) ? std::string("standard input") : m_path) +
+                        ": the image has no pixels (" + std::to_string(m_info.width) + "x" +
+                        std::to_string(m_info.height) + ", " + std::to_string(m_info.channels) +
+                        " channels)");
+        checkImageSize(name, m_info.width, m_info.height, m_info.channels);
+        m_info.decoderBytes = std::max(m_info.decoderBytes, m_decoder);
+        if (m_info.tileWidth > 0) // a row of tiles, read and converted
+            m_info.decoderBytes +=
+                2 * rowBytes(m_info) * static_cast<std::uint64_t>(m_info.tileHeight);
+    }
+
+    std::string m_path;
+    std::unique_ptr<ImageSource> m_inner;
+    std::uint64_t m_decoder = 0;
+};
+
 } // namespace
 
+MultiImageError::MultiImageError(const std::string& path, int count, const std::string& kind)
+    : Error(path + ": holds " + std::to_string(count) + " images (" + kind +
+            ") and one is read here: extract the one you mean first (oiiotool " + path +
+            " --subimage N -o ONE" + extensionOf(path) + ")"),
+      m_count(count), m_kind(kind) {}
+
+std::string subimageKind(const std::string& format) {
+    if (format == "openexr")
+        return "OpenEXR parts";
+    if (format == "tiff")
+        return "TIFF pages";
+    if (format == "gif")
+        return "GIF frames";
+    return format + " subimages";
+}
+
+std::vector<int> selectSubimage(ImageSource& src, const std::string& path, int subimage) {
+    const ImageInfo first = src.info();
+    const std::string name = isStdStream(path) ? std::string("-") : path;
+    if (subimage == kOnlyImage && first.subimages > 1)
+        throw MultiImageError(name, first.subimages, subimageKind(first.format));
+    const int want = std::max(0, subimage);
+    if (want >= first.subimages)
+        throw Error(name + ": holds " + std::to_string(first.subimages) +
+                    (first.subimages == 1 ? " image" : " images") + ", no image " +
+                    std::to_string(want) + " (they count from 0)");
+    std::vector<int> parts;
+    for (int i = 0; i < src.parts(); ++i) {
+        if (i > 0 || src.info().subimage != 0)
+            src.selectPart(i);
+        if (src.info().subimage == want)
+            parts.push_back(i);
+        else if (src.info().subimage > want)
+            break;
+    }
+    src.selectPart(parts.front());
+    return parts;
+}
+
+void ImageSource::selectPart(int index) {
+    if (index != 0)
+        throw Error("image part " + std::to_string(index) + " does not exist");
+}
+
+void ImageSink::nextPart() {
+    throw Error("this image writer holds one image");
+}
+
 std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std::string& format) {
-    auto src = openAnySource(path, format);
-    // A header may declare no pixels at all (a DPX of width 0 was read without a word: found by
-    // fuzz_image_apply); nothing downstream can use that.
-    const ImageInfo& info = src->info();
-    if (info.width <= 0 || info.height <= 0 || info.channels <= 0)
-        throw Error((isStdStream(path) ? std::string("standard input") : path) +
-                    ": the image has no pixels (" + std::to_string(info.width) + "x" +
-                    std::to_string(info.height) + ", " + std::to_string(info.channels) +
-                    " channels)");
-    return src;
+    DeclaredImage declared;
+    auto src = openAnySource(path, format, declared);
+    return std::make_unique<CheckedSource>(path, std::move(src), declared.decoderBytes);
+}
+
+bool formatHoldsParts(const std::string& canonicalFormat) {
+    return canonicalFormat == "openexr" || canonicalFormat == "tiff" || canonicalFormat == "gif";
+}
+
+std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target,
+                                           const std::vector<SinkSpec>& parts) {
+    if (parts.size() == 1)
+        return createImageSink(target, parts.front());
+    std::vector<SinkSpec> specs = parts;
+    const SinkSpec& spec = parts.front();
+    const std::string fmt = canonicalImageFormat(
+        !spec.format.empty() && (target.inPlace() || extensionOf(target.path).empty())
+            ? spec.format
+            : target.path);
+    for (auto& s : specs)
+        s.format = fmt;
+    return createOiioSink(target, specs);
 }
 
 std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target, const SinkSpec& spec) {
@@ -139,7 +269,7 @@ std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target, const Sin
             return sink;
     SinkSpec s = spec;
     s.format = fmt;
-    return createOiioSink(target, s);
+    return createOiioSink(target, {s});
 }
 
 } // namespace lut::formats

@@ -16,6 +16,7 @@ OIIO_API bool decode_exif(string_view exif, ImageSpec& spec);
 OIIO_API void encode_exif(const ImageSpec& spec, std::vector<char>& blob);
 OIIO_NAMESPACE_END
 
+#include <algorithm>
 #include <cstring>
 
 namespace lut::formats::module {
@@ -29,6 +30,12 @@ std::string oneLine(std::string s) {
     while (!s.empty() && (s.back() == ' ' || s.back() == '\r'))
         s.pop_back();
     return s;
+}
+
+// A writer's error, never empty (OpenImageIO's IFF writer fails without a message).
+std::string writerError(const std::string& s) {
+    const std::string line = oneLine(s);
+    return line.empty() ? "OpenImageIO's writer failed without saying why" : line;
 }
 
 PixelType pixelTypeOf(OIIO::TypeDesc t) {
@@ -182,13 +189,63 @@ OiioSource::OiioSource(const SourceOpen& req) : m_path(req.path) {
         throw Error(req.path + ": cannot read image: " +
                     (err.empty() ? "not an image OpenImageIO can read" : err));
     }
-    m_spec = m_in->spec();
+    listParts();
 }
 
 OiioSource::~OiioSource() = default;
 
-void OiioSource::describe(ImageInfo& info, ImageMetadata& meta, int& granularity) const {
+// Every image the file holds: subimage by subimage, each one's MIP levels. A PSD's subimages
+// after the first are its layers, which the first (the merged image) already shows.
+void OiioSource::listParts() {
+    constexpr std::size_t kMaxParts = 1024;
+    const bool layers = std::strcmp(m_in->format_name(), "psd") == 0;
+    for (int s = 0;; ++s) {
+        if (s > 0 && (layers || !m_in->seek_subimage(s, 0)))
+            break;
+        for (int m = 0;; ++m) {
+            if (m > 0 && !m_in->seek_subimage(s, m))
+                break;
+            if (m_parts.size() == kMaxParts)
+                throw LimitError(m_path + ": holds more than " + std::to_string(kMaxParts) +
+                                 " images (subimages and MIP levels), over the limit");
+            m_parts.push_back({s, m});
+        }
+        m_subimages = s + 1;
+    }
+    (void)m_in->geterror(); // seeking one past the last is how the end was found
+}
+
+void OiioSource::fail(const std::string& what, bool ok) {
+    std::string err = oneLine(m_in->geterror());
+    if (err.empty())
+        err = ok ? "the codec reported an error" : "truncated or corrupt";
+    throw Error(m_path + ": " + what + ": " + err);
+}
+
+void OiioSource::select(int index, ImageInfo& info, ImageMetadata& meta, int& granularity) {
+    m_current = m_parts.at(static_cast<std::size_t>(index));
+    if (!m_in->seek_subimage(m_current.subimage, m_current.mipLevel) || m_in->has_error())
+        fail("cannot read image " + std::to_string(index + 1) + " of " +
+                 std::to_string(m_parts.size()),
+             false);
+    m_spec = m_in->spec();
     const OIIO::ImageSpec& s = m_spec;
+    if (s.deep)
+        throw Error(m_path + ": holds deep data (several samples per pixel), which lutkit does "
+                             "not grade (flatten it first: oiiotool --flatten)");
+    if (s.depth > 1 || s.tile_depth > 1)
+        throw Error(m_path + ": is a volume (" + std::to_string(s.depth) +
+                    " slices), not an image");
+    if (s.tile_width > 0) {
+        // A row of tiles is what one read covers: its size is bounded like an image's.
+        const std::uint64_t tile = static_cast<std::uint64_t>(s.tile_width) *
+                                   static_cast<std::uint64_t>(std::max(1, s.tile_height));
+        if (s.tile_width < 1 || s.tile_height < 1 || tile > (std::uint64_t(1) << 24))
+            throw LimitError(m_path + ": tiles of " + std::to_string(s.tile_width) + "x" +
+                             std::to_string(s.tile_height) +
+                             " pixels, over the limit of 16777216 pixels per tile");
+    }
+    info = ImageInfo();
     info.width = s.width;
     info.height = s.height;
     info.channels = s.nchannels;
@@ -202,7 +259,16 @@ void OiioSource::describe(ImageInfo& info, ImageMetadata& meta, int& granularity
     info.alphaChannel = s.alpha_channel;
     info.colorSpace = s.get_string_attribute("oiio:ColorSpace");
     info.chromaSubsampling = s.get_string_attribute("jpeg:subsampling");
-    granularity = s.tile_height > 0 ? s.tile_height : 1;
+    info.tileWidth = s.tile_width;
+    info.tileHeight = s.tile_width > 0 ? s.tile_height : 0;
+    info.subimages = m_subimages;
+    info.subimage = m_current.subimage;
+    info.mipLevel = m_current.mipLevel;
+    info.mipLevels = 0;
+    for (const Part& p : m_parts)
+        info.mipLevels += p.subimage == m_current.subimage ? 1 : 0;
+    granularity = s.tile_width > 0 ? s.tile_height : 1;
+    meta = ImageMetadata();
     meta.format = info.format;
     meta.oiioAttributes = serialize(s.extra_attribs);
     if (const OIIO::ParamValue* icc = s.find_attribute("ICCProfile"))
@@ -214,24 +280,35 @@ void OiioSource::describe(ImageInfo& info, ImageMetadata& meta, int& granularity
     for (const char* key : {"ImageDescription", "Copyright", "Artist", "DateTime", "Software"})
         if (const std::string v = s.get_string_attribute(key); !v.empty())
             meta.text.emplace_back(key, v);
+    meta.hasWindows = true;
+    meta.x = s.x;
+    meta.y = s.y;
+    meta.fullX = s.full_x;
+    meta.fullY = s.full_y;
+    meta.fullWidth = s.full_width;
+    meta.fullHeight = s.full_height;
 }
 
 void OiioSource::readRows(int y0, int y1, void* dst) {
     const OIIO::TypeDesc type = typeDescOf(pixelTypeOf(m_spec.format));
-    if (!m_in->read_scanlines(0, 0, m_spec.y + y0, m_spec.y + y1, 0, 0, m_spec.nchannels, type,
-                              dst)) {
-        const std::string err = oneLine(m_in->geterror());
-        throw Error(m_path +
-                    ": cannot read image data: " + (err.empty() ? "truncated or corrupt" : err));
-    }
+    const OIIO::ImageSpec& s = m_spec;
+    // Tiled files by rows of tiles: OpenImageIO 2.4's read_scanlines() divides by zero on them
+    // (SIGFPE). Chunks are whole tile rows (the granularity), the last one ending at the edge.
+    const bool ok =
+        s.tile_width > 0
+            ? m_in->read_tiles(m_current.subimage, m_current.mipLevel, s.x, s.x + s.width, s.y + y0,
+                               s.y + y1, s.z, s.z + 1, 0, s.nchannels, type, dst)
+            : m_in->read_scanlines(m_current.subimage, m_current.mipLevel, s.y + y0, s.y + y1, s.z,
+                                   0, s.nchannels, type, dst);
+    // A read can return true with pixels missing: libtiff's failed strips, libjpeg's "premature
+    // end of data" (the rest grey) are recorded as the reader's error, not its result.
+    if (!ok || m_in->has_error())
+        fail("cannot read image data", ok);
 }
 
-OiioSink::OiioSink(const SinkSpec& s, const std::string& name, ByteCallbacks bytes)
-    : m_path(name), m_spec(s) {
-    m_out = OIIO::ImageOutput::create(name);
-    if (!m_out)
-        throw Error(name + ": no image writer for this extension");
+OIIO::ImageSpec OiioSink::makeSpec(const SinkSpec& s) const {
     const std::string fmt = m_out->format_name();
+    const std::string& name = m_path;
     OIIO::ImageSpec spec(s.width, s.height, static_cast<int>(s.channelNames.size()),
                          typeDescOf(s.type));
     if (s.metadata && !s.metadata->oiioAttributes.empty()) {
@@ -255,6 +332,7 @@ OiioSink::OiioSink(const SinkSpec& s, const std::string& name, ByteCallbacks byt
         for (const auto& [k, v] : s.metadata->text)
             spec.attribute(k, v);
     }
+    spec.erase_attribute("oiio:subimages");
     spec.channelnames.assign(s.channelNames.begin(), s.channelNames.end());
     spec.alpha_channel = s.alphaChannel;
     spec.erase_attribute("oiio:BitsPerSample");
@@ -268,6 +346,17 @@ OiioSink::OiioSink(const SinkSpec& s, const std::string& name, ByteCallbacks byt
         spec.attribute("compression", s.compression);
     else if (!sameFormat)
         spec.erase_attribute("compression");
+    // The data window's place and the display window, where the file had them and the output is
+    // of the same format (an OpenEXR's overscan, a TIFF's position).
+    if (sameFormat && s.metadata->hasWindows && s.metadata->fullWidth > 0 &&
+        s.metadata->fullHeight > 0) {
+        spec.x = s.metadata->x;
+        spec.y = s.metadata->y;
+        spec.full_x = s.metadata->fullX;
+        spec.full_y = s.metadata->fullY;
+        spec.full_width = s.metadata->fullWidth;
+        spec.full_height = s.metadata->fullHeight;
+    }
     if (s.tileWidth > 0 && m_out->supports("tiles")) {
         spec.tile_width = s.tileWidth;
         spec.tile_height = s.tileHeight;
@@ -277,34 +366,94 @@ OiioSink::OiioSink(const SinkSpec& s, const std::string& name, ByteCallbacks byt
         throw Error(name + ": PNG stores 8 or 16 bits per channel, not float (use .exr or .tif)");
     if (s.type != PixelType::UInt8 && fmt == "jpeg")
         throw Error(name + ": JPEG stores 8 bits per channel only");
-    m_tiled = spec.tile_width > 0;
-    m_tileHeight = spec.tile_height;
-    m_proxy = std::make_unique<CallbackProxy>(name, bytes);
-    if (!m_out->supports("ioproxy"))
-        throw Error(name + ": the " + fmt + " writer cannot write through lutkit's checked output");
-    m_out->set_ioproxy(m_proxy.get());
-    if (!m_out->open(name, spec))
-        throw Error(name + ": cannot write: " + oneLine(m_out->geterror()));
+    return spec;
+}
+
+OiioSink::OiioSink(const SinkSpec* specs, int count, const std::string& name, ByteCallbacks bytes)
+    : m_path(name), m_parts(specs, specs + count) {
+    // Without a pwrite callback the writer writes the file `name` itself (the caller's temporary
+    // file), picked by the format's name.
+    const bool byName = bytes.pwrite == nullptr;
+    m_out = OIIO::ImageOutput::create(
+        byName && !m_parts.front().format.empty() ? m_parts.front().format : name);
+    if (!m_out)
+        throw Error(name + ": no image writer for this extension");
+    const std::string fmt = m_out->format_name();
+    std::vector<OIIO::ImageSpec> subimages;
+    bool mips = false;
+    for (const SinkSpec& s : m_parts) {
+        m_specs.push_back(makeSpec(s));
+        if (s.mipLevel == 0)
+            subimages.push_back(m_specs.back());
+        mips = mips || s.mipLevel > 0;
+    }
+    if (subimages.size() > 1 && !m_out->supports("multiimage"))
+        throw Error(name + ": the " + fmt + " writer holds one image, not " +
+                    std::to_string(subimages.size()));
+    if (mips && !m_out->supports("mipmap"))
+        throw Error(name + ": the " + fmt + " writer holds no MIP levels");
+    if (!byName) {
+        m_proxy = std::make_unique<CallbackProxy>(name, bytes);
+        if (!m_out->supports("ioproxy"))
+            throw Error(name + ": the " + fmt +
+                        " writer cannot write through lutkit's checked output");
+        m_out->set_ioproxy(m_proxy.get());
+    }
+    const bool ok = subimages.size() > 1
+                        ? m_out->open(name, static_cast<int>(subimages.size()), subimages.data())
+                        : m_out->open(name, m_specs.front());
+    if (!ok)
+        throw Error(name + ": cannot write: " + writerError(m_out->geterror()));
 }
 
 OiioSink::~OiioSink() = default;
 
+bool OiioSink::proxyFailed() const {
+    return m_proxy && !m_proxy->failure().empty();
+}
+
+int OiioSink::granularity() const {
+    const OIIO::ImageSpec& spec = m_specs[m_index];
+    return spec.tile_width > 0 ? spec.tile_height : 1;
+}
+
+void OiioSink::nextPart() {
+    if (m_index + 1 >= m_specs.size())
+        throw Error(m_path + ": cannot write: no part left to start");
+    ++m_index;
+    const auto mode = m_parts[m_index].mipLevel > 0 ? OIIO::ImageOutput::AppendMIPLevel
+                                                    : OIIO::ImageOutput::AppendSubimage;
+    if (!m_out->open(m_path, m_specs[m_index], mode) || proxyFailed())
+        throw Error(m_path + ": cannot write: " +
+                    (proxyFailed() ? m_proxy->failure() : writerError(m_out->geterror())));
+}
+
 void OiioSink::writeRows(int y0, int y1, const void* src) {
-    const OIIO::TypeDesc type = typeDescOf(m_spec.type);
-    const bool ok = m_tiled ? m_out->write_tiles(0, m_spec.width, y0, y1, 0, 1, type, src)
-                            : m_out->write_scanlines(y0, y1, 0, type, src);
-    if (!ok || !m_proxy->failure().empty())
-        throw Error(
-            m_path + ": cannot write: " +
-            (!m_proxy->failure().empty() ? m_proxy->failure() : oneLine(m_out->geterror())));
+    const SinkSpec& part = m_parts[m_index];
+    const OIIO::ImageSpec& spec = m_specs[m_index];
+    const OIIO::TypeDesc type = typeDescOf(part.type);
+    const bool ok = spec.tile_width > 0
+                        ? m_out->write_tiles(spec.x, spec.x + spec.width, spec.y + y0, spec.y + y1,
+                                             0, 1, type, src)
+                        : m_out->write_scanlines(spec.y + y0, spec.y + y1, 0, type, src);
+    if (!ok || proxyFailed())
+        throw Error(m_path + ": cannot write: " +
+                    (proxyFailed() ? m_proxy->failure() : writerError(m_out->geterror())));
 }
 
 void OiioSink::finish() {
+    if (m_index + 1 != m_specs.size())
+        throw Error(m_path + ": cannot write: " + std::to_string(m_specs.size() - m_index - 1) +
+                    " parts were not written");
     const bool ok = m_out->close();
-    if (!m_proxy->failure().empty())
+    const std::string error = ok ? std::string() : writerError(m_out->geterror());
+    // A writer that opened the file itself (by name) keeps it open, its last bytes buffered,
+    // until it is destroyed: before the caller checks and renames the file.
+    m_out.reset();
+    if (proxyFailed())
         throw Error(m_path + ": cannot write: " + m_proxy->failure());
     if (!ok)
-        throw Error(m_path + ": cannot write: " + oneLine(m_out->geterror()));
+        throw Error(m_path + ": cannot write: " + error);
 }
 
 } // namespace lut::formats::module

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lut::formats::module {
 
@@ -16,33 +17,49 @@ class OiioSource {
 public:
     explicit OiioSource(const SourceOpen& request);
     ~OiioSource();
-    void describe(ImageInfo& info, ImageMetadata& metadata, int& granularity) const;
+    int parts() const { return static_cast<int>(m_parts.size()); }
+    // Makes part `index` current (readRows reads it from row 0) and describes it.
+    void select(int index, ImageInfo& info, ImageMetadata& metadata, int& granularity);
     void readRows(int y0, int y1, void* dst);
 
 private:
+    struct Part {
+        int subimage = 0;
+        int mipLevel = 0;
+    };
+    void listParts();
+    [[noreturn]] void fail(const std::string& what, bool ok);
+
     std::string m_path;
     std::unique_ptr<OIIO_NAMESPACE::Filesystem::IOMemReader> m_memory;
     std::unique_ptr<OIIO_NAMESPACE::ImageInput> m_in;
     OIIO_NAMESPACE::ImageSpec m_spec;
+    std::vector<Part> m_parts;
+    int m_subimages = 1;
+    Part m_current;
 };
 
 class CallbackProxy;
 
 class OiioSink {
 public:
-    OiioSink(const SinkSpec& spec, const std::string& name, ByteCallbacks bytes);
+    OiioSink(const SinkSpec* specs, int count, const std::string& name, ByteCallbacks bytes);
     ~OiioSink();
-    int granularity() const { return m_tiled ? m_tileHeight : 1; }
+    int granularity() const;
+    void nextPart();
     void writeRows(int y0, int y1, const void* src);
     void finish();
 
 private:
+    OIIO_NAMESPACE::ImageSpec makeSpec(const SinkSpec& s) const;
+    bool proxyFailed() const;
+
     std::string m_path;
-    SinkSpec m_spec;
+    std::vector<SinkSpec> m_parts;
+    std::vector<OIIO_NAMESPACE::ImageSpec> m_specs;
+    std::size_t m_index = 0;
     std::unique_ptr<CallbackProxy> m_proxy;
     std::unique_ptr<OIIO_NAMESPACE::ImageOutput> m_out;
-    bool m_tiled = false;
-    int m_tileHeight = 0;
 };
 
 } // namespace lut::formats::module

@@ -3,8 +3,10 @@
 #include "lut/Quantize.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -16,6 +18,8 @@ namespace lut::formats {
 namespace detail {
 void halfToFloatF16c(const std::uint16_t* src, float* dst, std::size_t n);
 void floatToHalfF16c(const float* src, std::uint16_t* dst, std::size_t n);
+std::size_t rgbaToUnorm8Avx(const float* rgba, std::size_t n, std::uint8_t* dst, int nch);
+std::size_t rgbaToUnorm16Avx(const float* rgba, std::size_t n, std::uint16_t* dst, int nch);
 } // namespace detail
 
 namespace {
@@ -28,6 +32,18 @@ bool hasF16c() {
         unsigned a = 0, b = 0, c = 0, d = 0;
         return __builtin_cpu_supports("avx") && __get_cpuid(1, &a, &b, &c, &d) &&
                (c & bit_F16C) != 0;
+    }();
+    return yes;
+#else
+    return false;
+#endif
+}
+
+bool hasAvx() {
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool yes = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx") != 0;
     }();
     return yes;
 #else
@@ -55,6 +71,16 @@ float* scratch(std::size_t n) {
 }
 
 template <class T> float load(T v);
+// 8-bit samples by table: the same division, done once per value.
+const float* unorm8Table() {
+    static const auto table = [] {
+        std::array<float, 256> t{};
+        for (int v = 0; v < 256; ++v)
+            t[static_cast<std::size_t>(v)] = static_cast<float>(v) / 255.0f;
+        return t;
+    }();
+    return table.data();
+}
 template <> float load(std::uint8_t v) {
     return static_cast<float>(v) / 255.0f;
 }
@@ -78,6 +104,23 @@ template <> float store(float v) {
 
 template <class T>
 void gather(const T* s, int nch, const RgbaMap& m, std::size_t n, float* __restrict o) {
+    if constexpr (std::is_same_v<T, std::uint8_t>) {
+        const float* t = unorm8Table();
+        if (nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0) {
+            for (std::size_t i = 0; i < n; ++i) {
+                o[4 * i + 0] = t[s[3 * i + 0]];
+                o[4 * i + 1] = t[s[3 * i + 1]];
+                o[4 * i + 2] = t[s[3 * i + 2]];
+                o[4 * i + 3] = 1.0f;
+            }
+            return;
+        }
+        if (nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3) {
+            for (std::size_t i = 0; i < 4 * n; ++i)
+                o[i] = t[s[i]];
+            return;
+        }
+    }
     if (nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0) {
         for (std::size_t i = 0; i < n; ++i) {
             o[4 * i + 0] = load(s[3 * i + 0]);
@@ -111,7 +154,24 @@ template <class T>
 void scatter(const float* __restrict v, std::size_t n, T* d, int nch, const RgbaMap& m,
              const DitherPos& dp, float step) {
     const bool grey = m.r == m.g && m.g == m.b;
-    if (!dp.on && !grey && nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0) {
+    const bool plainRgb =
+        !dp.on && !grey && nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0;
+    const bool plainRgba = !dp.on && nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3;
+    if constexpr (!std::is_same_v<T, float>) {
+        if ((plainRgb || plainRgba) && hasAvx()) {
+            std::size_t done = 0;
+            if constexpr (std::is_same_v<T, std::uint8_t>)
+                done = detail::rgbaToUnorm8Avx(v, n, d, nch);
+            else
+                done = detail::rgbaToUnorm16Avx(v, n, d, nch);
+            for (std::size_t i = done; i < n; ++i)
+                for (int c = 0; c < nch; ++c)
+                    d[static_cast<std::size_t>(nch) * i + static_cast<std::size_t>(c)] =
+                        store<T>(v[4 * i + static_cast<std::size_t>(c)]);
+            return;
+        }
+    }
+    if (plainRgb) {
         for (std::size_t i = 0; i < n; ++i) {
             d[3 * i + 0] = store<T>(v[4 * i + 0]);
             d[3 * i + 1] = store<T>(v[4 * i + 1]);
@@ -119,7 +179,7 @@ void scatter(const float* __restrict v, std::size_t n, T* d, int nch, const Rgba
         }
         return;
     }
-    if (!dp.on && nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3) {
+    if (plainRgba) {
         for (std::size_t i = 0; i < 4 * n; ++i)
             d[i] = store<T>(v[i]);
         return;
@@ -250,6 +310,10 @@ void toRgba(const void* src, PixelType type, int nch, const RgbaMap& map, std::s
         gather(static_cast<const float*>(src), nch, map, n, rgba);
         return;
     case PixelType::Half: {
+        if (nch == 4 && map.r == 0 && map.g == 1 && map.b == 2 && map.a == 3) {
+            halfToFloatN(static_cast<const std::uint16_t*>(src), rgba, 4 * n); // already RGBA
+            return;
+        }
         const std::size_t count = n * static_cast<std::size_t>(nch);
         float* f = scratch(count);
         halfToFloatN(static_cast<const std::uint16_t*>(src), f, count);
@@ -272,10 +336,17 @@ void fromRgba(const float* rgba, std::size_t n, void* dst, PixelType type, int n
         scatter(rgba, n, static_cast<float*>(dst), nch, map, DitherPos{}, 0.0f);
         return;
     case PixelType::Half: {
-        // Through floats: the other channels are read, kept and written back unchanged.
+        const bool rgb = map.r == 0 && map.g == 1 && map.b == 2;
+        if (nch == 4 && rgb && map.a == 3) { // every channel written: straight from RGBA
+            floatToHalfN(rgba, static_cast<std::uint16_t*>(dst), 4 * n);
+            return;
+        }
+        // Through floats: the other channels are read, kept and written back unchanged (when
+        // R, G, B are all there is, nothing needs reading).
         const std::size_t count = n * static_cast<std::size_t>(nch);
         float* f = scratch(count);
-        halfToFloatN(static_cast<const std::uint16_t*>(dst), f, count);
+        if (!(nch == 3 && rgb && map.a < 0))
+            halfToFloatN(static_cast<const std::uint16_t*>(dst), f, count);
         scatter(rgba, n, f, nch, map, DitherPos{}, 0.0f);
         floatToHalfN(f, static_cast<std::uint16_t*>(dst), count);
         return;

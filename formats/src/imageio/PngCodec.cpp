@@ -1,20 +1,26 @@
-// PNG, natively. Reading is libpng's, row by row (transforms: palette and low-depth grey expanded
-// to 8 bits, tRNS to alpha, 16-bit samples in host order; no gamma). Writing is ours, because
-// libpng compresses on one core: rows are filtered as libpng's default heuristic does (the filter
-// with the smallest sum of absolute values, per row), strips of about a megabyte are deflated in
-// parallel (each primed with the previous strip's last 32 KiB, as pigz does, and ended with a sync
-// flush so the raw deflate streams concatenate into one zlib stream) and written as IDAT chunks.
-// Metadata: every ancillary chunk of a PNG input (iCCP, gAMA, cHRM, sRGB, tEXt/zTXt/iTXt, eXIf,
-// pHYs, tIME ...) is copied verbatim to a PNG output, at its place; chunks tied to the palette or
-// to the colour type (PLTE, tRNS, hIST, sPLT, and bKGD/sBIT when the colour type or depth
-// changes) and unknown unsafe-to-copy chunks are not. From other formats: the ICC profile, EXIF
-// and text.
-// PNG: https://www.w3.org/TR/png/ (chunk layout, filters, the zlib stream).
+// PNG, natively. Reading: the common files (8/16-bit grey, grey + alpha, RGB, RGBA, not
+// interlaced, no tRNS, up to 64 MiB of samples) are inflated in one call by libdeflate (about
+// twice zlib's speed) and unfiltered here (PngUnfilter.h); the others are libpng's, row by row
+// (transforms: palette and low-depth grey expanded to 8 bits, tRNS to alpha, 16-bit samples in
+// host order; no gamma), and so are the common files the fast path finds anything unusual in. Both
+// give the same samples (tests/formats/test_png_read.cpp). Writing is ours, because libpng
+// compresses on one core: rows are filtered as libpng's default heuristic does (the filter with the
+// smallest sum of absolute values, per row), strips of about a megabyte are deflated in parallel
+// (each primed with the previous strip's last 32 KiB, as pigz does, and ended with a sync flush so
+// the raw deflate streams concatenate into one zlib stream) and written as IDAT chunks. Metadata:
+// every ancillary chunk of a PNG input (iCCP, gAMA, cHRM, sRGB, tEXt/zTXt/iTXt, eXIf, pHYs, tIME
+// ...) is copied verbatim to a PNG output, at its place; chunks tied to the palette or to the
+// colour type (PLTE, tRNS, hIST, sPLT, and bKGD/sBIT when the colour type or depth changes) and
+// unknown unsafe-to-copy chunks are not. From other formats: the ICC profile, EXIF and text. PNG:
+// https://www.w3.org/TR/png/ (chunk layout, filters, the zlib stream).
 #include "imageio/ByteIO.h"
 #include "imageio/ImageCodec.h"
 
 #include "lut/Error.h"
 
+#include "imageio/PngUnfilter.h"
+
+#include <libdeflate.h>
 #include <png.h>
 #include <zlib.h>
 
@@ -30,6 +36,9 @@ namespace lut::formats {
 namespace {
 
 constexpr unsigned char kSignature[8] = {137, 'P', 'N', 'G', 13, 10, 26, 10};
+// Filtered rows up to this size are inflated at once (a 4K RGBA 16-bit frame is 66 MB: libpng
+// streams it instead).
+constexpr double kMaxWholeBytes = 64.0 * (1 << 20);
 
 std::uint32_t be32(const unsigned char* p) {
     return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
@@ -147,6 +156,93 @@ private:
         m_meta->pngColourType = colour;
         m_meta->pngBitDepth = depth;
         m_metadata = m_meta;
+        const bool plainLayout = colour == PNG_COLOR_TYPE_GRAY || colour == PNG_COLOR_TYPE_RGB ||
+                                 colour == PNG_COLOR_TYPE_GRAY_ALPHA ||
+                                 colour == PNG_COLOR_TYPE_RGB_ALPHA;
+        const double samples = static_cast<double>(rowBytes(m_info) + 1) * m_info.height;
+        m_whole = plainLayout && (depth == 8 || depth == 16) && interlace == PNG_INTERLACE_NONE &&
+                  !png_get_valid(m_png, m_pngInfo, PNG_INFO_tRNS) && samples <= kMaxWholeBytes;
+    }
+
+    // The fast path: every IDAT's bytes (each chunk's CRC checked), inflated at once, checked to
+    // be exactly the filtered rows the header declares, every filter byte known, IEND after the
+    // data. False on anything else (a damaged or unusual file): libpng's path then reads the file
+    // from the first IDAT (nothing was consumed: pread), so its messages and its tolerance of
+    // benign faults are unchanged.
+    bool inflateWhole() {
+        std::string z;
+        std::uint64_t at = 8;
+        bool sawData = false, sawEnd = false;
+        unsigned char hdr[8];
+        while (at + 8 <= m_in.size() && m_in.pread(hdr, 8, at) == 8) {
+            const std::uint32_t len = be32(hdr);
+            const char* type = reinterpret_cast<const char*>(hdr + 4);
+            if (len > 0x7fffffffu || at + 12 + static_cast<std::uint64_t>(len) > m_in.size())
+                return false; // the chunk runs past the end of the file
+            if (isType(type, "IDAT")) {
+                const std::size_t old = z.size();
+                z.resize(old + len + 4);
+                if (m_in.pread(z.data() + old, len + 4, at + 8) != len + 4)
+                    return false;
+                const auto* d = reinterpret_cast<const unsigned char*>(z.data() + old);
+                const std::uint32_t crc = static_cast<std::uint32_t>(
+                    libdeflate_crc32(libdeflate_crc32(0, hdr + 4, 4), d, len));
+                if (crc != be32(d + len))
+                    return false;
+                z.resize(old + len);
+                sawData = true;
+            } else if (isType(type, "IEND")) {
+                sawEnd = true;
+                break;
+            } else if (sawData && (type[0] & 0x20) == 0) {
+                return false; // a critical chunk after the data
+            }
+            at += 12 + static_cast<std::uint64_t>(len);
+        }
+        if (!sawData || !sawEnd)
+            return false;
+        const std::size_t rb = rowBytes(m_info);
+        m_raw.resize((rb + 1) * static_cast<std::size_t>(m_info.height));
+        libdeflate_decompressor* d = libdeflate_alloc_decompressor();
+        if (!d)
+            return false;
+        std::size_t got = 0;
+        const libdeflate_result rc =
+            libdeflate_zlib_decompress(d, z.data(), z.size(), m_raw.data(), m_raw.size(), &got);
+        libdeflate_free_decompressor(d);
+        bool ok = rc == LIBDEFLATE_SUCCESS && got == m_raw.size();
+        for (std::size_t y = 0; ok && y < static_cast<std::size_t>(m_info.height); ++y)
+            ok = m_raw[(rb + 1) * y] <= 4;
+        if (!ok) {
+            std::vector<unsigned char>().swap(m_raw);
+            return false;
+        }
+        m_prevRow.assign(rb, 0);
+        return true;
+    }
+
+    void unfilterRows(int y0, int y1, unsigned char* out) {
+        const std::size_t rb = rowBytes(m_info);
+        const std::size_t bpp =
+            static_cast<std::size_t>(m_info.channels * bytesPerSample(m_info.type));
+        const bool wide = m_info.type == PixelType::UInt16;
+        if (wide)
+            m_row.resize(rb);
+        for (int y = y0; y < y1; ++y) {
+            const unsigned char* f = m_raw.data() + (rb + 1) * static_cast<std::size_t>(y);
+            unsigned char* o = wide ? m_row.data() : out + rb * static_cast<std::size_t>(y - y0);
+            unfilterRow(f[0], f + 1, m_prevRow.data(), o, rb, bpp); // f[0] <= 4: inflateWhole
+            std::memcpy(m_prevRow.data(), o, rb);
+            if (wide) { // big-endian samples to host order, as png_set_swap does
+                unsigned char* w = out + rb * static_cast<std::size_t>(y - y0);
+                for (std::size_t i = 0; i < rb; i += 2) {
+                    w[i] = o[i + 1];
+                    w[i + 1] = o[i];
+                }
+            }
+        }
+        if (y1 == m_info.height)
+            std::vector<unsigned char>().swap(m_raw);
     }
 
 public:
@@ -155,6 +251,12 @@ public:
             checkImageSize(m_in.path(), m_info.width, m_info.height, m_info.channels, m_in.size(),
                            1032.0);
         const std::size_t rb = rowBytes(m_info);
+        if (m_whole && y0 == 0)
+            m_whole = inflateWhole(); // else libpng's path, from the start
+        if (m_whole) {
+            unfilterRows(y0, y1, static_cast<unsigned char*>(dst));
+            return;
+        }
         readRowsAt(y0, y1, static_cast<png_bytep>(dst), rb);
     }
 
@@ -183,6 +285,8 @@ public:
     }
 
     void finish() override {
+        if (m_whole) // the data and IEND were checked by inflateWhole
+            return;
         if (setjmp(png_jmpbuf(m_png)))
             fail();
         png_read_end(m_png, nullptr); // through IEND: a truncated file is an error here
@@ -265,7 +369,11 @@ private:
     png_infop m_pngInfo = nullptr;
     PngError m_error;
     int m_passes = 1;
-    png_bytep m_next = nullptr; // members, not locals: longjmp may clobber locals
+    bool m_whole = false;                 // inflated at once (inflateWhole)
+    std::vector<unsigned char> m_raw;     // the filtered rows, each with its filter byte
+    std::vector<unsigned char> m_prevRow; // the last row unfiltered (the next one's "up")
+    std::vector<unsigned char> m_row;     // a 16-bit row before its bytes are swapped
+    png_bytep m_next = nullptr;           // members, not locals: longjmp may clobber locals
     std::size_t m_rowBytes = 0;
     std::vector<unsigned char> m_frame;
     std::shared_ptr<ImageMetadata> m_meta;

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <deque>
 #include <future>
+#include <memory>
 #include <vector>
 
 namespace lut::formats {
@@ -66,6 +67,82 @@ Strip deflateStrip(const std::vector<unsigned char>& data, const std::vector<uns
     return s;
 }
 
+// Appends filter byte + filtered row to `out` (the filter with the smallest sum of |signed
+// bytes|, as libpng chooses by default; the image's first row tries neither Up nor Paeth). Each
+// filter is its own loop over the raw rows, so it vectorizes. `up` is the row above (nullptr for
+// the first row).
+void filterRow(const unsigned char* cur, const unsigned char* up, std::size_t n, std::size_t bpp,
+               std::vector<unsigned char>& out) {
+    const bool first = up == nullptr;
+    thread_local std::vector<unsigned char> zero, tryBuf;
+    if (zero.size() < n)
+        zero.assign(n, 0);
+    if (first)
+        up = zero.data();
+    tryBuf.resize(5 * n);
+    unsigned char* t[5];
+    for (int f = 0; f < 5; ++f)
+        t[f] = tryBuf.data() + static_cast<std::size_t>(f) * n;
+    auto cost = [](const unsigned char* o, std::size_t k) {
+        unsigned long sum = 0;
+        for (std::size_t i = 0; i < k; ++i)
+            sum += o[i] < 128 ? o[i] : 256u - o[i];
+        return sum;
+    };
+    for (std::size_t i = 0; i < bpp && i < n; ++i) { // no left neighbour
+        t[0][i] = cur[i];
+        t[1][i] = cur[i];
+        t[2][i] = static_cast<unsigned char>(cur[i] - up[i]);
+        t[3][i] = static_cast<unsigned char>(cur[i] - (up[i] >> 1));
+        t[4][i] = static_cast<unsigned char>(cur[i] - up[i]); // Paeth(0, b, 0) = b
+    }
+    for (std::size_t i = bpp; i < n; ++i) {
+        t[0][i] = cur[i];
+        t[1][i] = static_cast<unsigned char>(cur[i] - cur[i - bpp]);
+        t[2][i] = static_cast<unsigned char>(cur[i] - up[i]);
+        t[3][i] = static_cast<unsigned char>(cur[i] - ((cur[i - bpp] + up[i]) >> 1));
+    }
+    for (std::size_t i = bpp; i < n; ++i) {
+        const int a = cur[i - bpp], b = up[i], c = up[i - bpp];
+        const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+        const int pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+        t[4][i] = static_cast<unsigned char>(cur[i] - pred);
+    }
+    unsigned long best = ~0ul;
+    int bestFilter = 0;
+    for (int f = 0; f < 5; ++f) {
+        if (first && (f == 2 || f == 4))
+            continue;
+        const unsigned long c = cost(t[f], n);
+        if (c < best) {
+            best = c;
+            bestFilter = f;
+        }
+    }
+    out.push_back(static_cast<unsigned char>(bestFilter));
+    out.insert(out.end(), t[bestFilter], t[bestFilter] + n);
+}
+
+// Rows of raw samples (big-endian) as the writer collected them for one strip, with the row
+// above its first one (empty at the image's top).
+struct RawRows {
+    std::vector<unsigned char> bytes;
+    std::size_t rows = 0;
+    std::vector<unsigned char> above;
+};
+
+// The filtered bytes of rows [r0, r1) of `strip`.
+void filterRows(const RawRows& strip, std::size_t r0, std::size_t r1, std::size_t rowBytes,
+                std::size_t bpp, std::vector<unsigned char>& out) {
+    for (std::size_t r = r0; r < r1; ++r) {
+        const unsigned char* cur = strip.bytes.data() + r * rowBytes;
+        const unsigned char* up = r > 0                 ? cur - rowBytes
+                                  : strip.above.empty() ? nullptr
+                                                        : strip.above.data();
+        filterRow(cur, up, rowBytes, bpp, out);
+    }
+}
+
 class PngSink : public ImageSink {
 public:
     PngSink(const OutputTarget& target, const SinkSpec& spec) : m_out(target, false), m_spec(spec) {
@@ -79,7 +156,7 @@ public:
         m_bytesPerSample = spec.type == PixelType::UInt16 ? 2 : 1;
         m_rowBytes = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(ch) *
                      static_cast<std::size_t>(m_bytesPerSample);
-        m_prev.assign(m_rowBytes, 0);
+        m_raw = std::make_shared<RawRows>();
         // zlib level: "zip:N" (N 0..9) asks for one; 3 by default, which on image data costs a
         // third of level 6's time for files a few percent larger.
         m_level = kDefaultLevel;
@@ -101,23 +178,26 @@ public:
         writeMetadata(1);
     }
 
+    // Rows are collected raw; each strip of about kStripBytes filtered bytes is filtered and
+    // deflated by one job, so filtering runs on the encoder threads too (it was a tenth of a
+    // preview's CPU on the calling thread). The bytes are those of filtering row by row here.
     void writeRows(int y0, int y1, const void* src) override {
         const auto* s = static_cast<const unsigned char*>(src);
-        std::vector<unsigned char> row(m_rowBytes);
         for (int y = y0; y < y1; ++y) {
             const unsigned char* cur = s + m_rowBytes * static_cast<std::size_t>(y - y0);
+            const std::size_t at = m_raw->bytes.size();
+            m_raw->bytes.resize(at + m_rowBytes);
+            unsigned char* row = m_raw->bytes.data() + at;
             if (m_bytesPerSample == 2) { // host order to big-endian
                 for (std::size_t i = 0; i < m_rowBytes; i += 2) {
                     row[i] = cur[i + 1];
                     row[i + 1] = cur[i];
                 }
-                filterRow(row.data());
-                m_prev = row;
             } else {
-                filterRow(cur);
-                std::memcpy(m_prev.data(), cur, m_rowBytes);
+                std::memcpy(row, cur, m_rowBytes);
             }
-            if (m_strip.size() >= kStripBytes)
+            ++m_raw->rows;
+            if (m_raw->rows * (m_rowBytes + 1) >= kStripBytes)
                 submit(false);
         }
     }
@@ -203,73 +283,35 @@ private:
         return false;
     }
 
-    // Appends filter byte + filtered row (the filter with the smallest sum of |signed bytes|, as
-    // libpng chooses by default). Each filter is its own loop over the raw rows, so it vectorizes.
-    void filterRow(const unsigned char* cur) {
-        const std::size_t n = m_rowBytes;
-        const std::size_t bpp = static_cast<std::size_t>(m_channels * m_bytesPerSample);
-        const bool first = m_rowsDone++ == 0;
-        const unsigned char* up = first ? m_zero.data() : m_prev.data();
-        if (m_zero.size() < n)
-            m_zero.assign(n, 0), up = first ? m_zero.data() : up;
-        m_try.resize(5 * n);
-        unsigned char* t[5];
-        for (int f = 0; f < 5; ++f)
-            t[f] = m_try.data() + static_cast<std::size_t>(f) * n;
-        auto cost = [](const unsigned char* o, std::size_t k) {
-            unsigned long sum = 0;
-            for (std::size_t i = 0; i < k; ++i)
-                sum += o[i] < 128 ? o[i] : 256u - o[i];
-            return sum;
-        };
-        for (std::size_t i = 0; i < bpp && i < n; ++i) { // no left neighbour
-            t[0][i] = cur[i];
-            t[1][i] = cur[i];
-            t[2][i] = static_cast<unsigned char>(cur[i] - up[i]);
-            t[3][i] = static_cast<unsigned char>(cur[i] - (up[i] >> 1));
-            t[4][i] = static_cast<unsigned char>(cur[i] - up[i]); // Paeth(0, b, 0) = b
-        }
-        for (std::size_t i = bpp; i < n; ++i) {
-            t[0][i] = cur[i];
-            t[1][i] = static_cast<unsigned char>(cur[i] - cur[i - bpp]);
-            t[2][i] = static_cast<unsigned char>(cur[i] - up[i]);
-            t[3][i] = static_cast<unsigned char>(cur[i] - ((cur[i - bpp] + up[i]) >> 1));
-        }
-        for (std::size_t i = bpp; i < n; ++i) {
-            const int a = cur[i - bpp], b = up[i], c = up[i - bpp];
-            const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
-            const int pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-            t[4][i] = static_cast<unsigned char>(cur[i] - pred);
-        }
-        unsigned long best = ~0ul;
-        int bestFilter = 0;
-        for (int f = 0; f < 5; ++f) {
-            if (first && (f == 2 || f == 4))
-                continue;
-            const unsigned long c = cost(t[f], n);
-            if (c < best) {
-                best = c;
-                bestFilter = f;
-            }
-        }
-        m_strip.push_back(static_cast<unsigned char>(bestFilter));
-        m_strip.insert(m_strip.end(), t[bestFilter], t[bestFilter] + n);
-    }
-
     void submit(bool last) {
-        std::vector<unsigned char> dict = m_dict;
-        if (m_strip.size() >= kWindow)
-            m_dict.assign(m_strip.end() - static_cast<std::ptrdiff_t>(kWindow), m_strip.end());
-        else {
-            m_dict.insert(m_dict.end(), m_strip.begin(), m_strip.end());
-            if (m_dict.size() > kWindow)
-                m_dict.erase(m_dict.begin(), m_dict.end() - static_cast<std::ptrdiff_t>(kWindow));
-        }
+        std::shared_ptr<const RawRows> strip = std::move(m_raw);
+        std::shared_ptr<const RawRows> prev = std::move(m_last); // its dictionary's source
+        m_raw = std::make_shared<RawRows>();
+        m_raw->above = strip->rows > 0
+                           ? std::vector<unsigned char>(strip->bytes.end() -
+                                                            static_cast<std::ptrdiff_t>(m_rowBytes),
+                                                        strip->bytes.end())
+                           : strip->above;
+        m_last = strip;
         const int level = m_level;
-        m_jobs.push_back(std::async(std::launch::async,
-                                    [data = std::move(m_strip), dict = std::move(dict), last,
-                                     level] { return deflateStrip(data, dict, last, level); }));
-        m_strip.clear();
+        const std::size_t rowBytes = m_rowBytes;
+        const std::size_t bpp = static_cast<std::size_t>(m_channels * m_bytesPerSample);
+        m_jobs.push_back(std::async(std::launch::async, [strip, prev, last, level, rowBytes, bpp] {
+            // The dictionary: the last 32 KiB of the filtered stream so far, i.e. of the strip
+            // before (every strip but the last holds at least kStripBytes), refiltered here.
+            std::vector<unsigned char> dict;
+            if (prev && prev->rows > 0) {
+                const std::size_t need = (kWindow + rowBytes) / (rowBytes + 1) + 1;
+                const std::size_t r0 = prev->rows > need ? prev->rows - need : 0;
+                filterRows(*prev, r0, prev->rows, rowBytes, bpp, dict);
+                if (dict.size() > kWindow)
+                    dict.erase(dict.begin(), dict.end() - static_cast<std::ptrdiff_t>(kWindow));
+            }
+            std::vector<unsigned char> data;
+            data.reserve(strip->rows * (rowBytes + 1));
+            filterRows(*strip, 0, strip->rows, rowBytes, bpp, data);
+            return deflateStrip(data, dict, last, level);
+        }));
         const std::size_t inFlight = static_cast<std::size_t>(std::max(1, m_spec.threads)) + 1;
         while (m_jobs.size() > inFlight)
             emitOldest();
@@ -293,11 +335,11 @@ private:
     SinkSpec m_spec;
     int m_channels = 3, m_bytesPerSample = 1, m_colour = 2, m_level = 6;
     std::size_t m_rowBytes = 0;
-    std::vector<unsigned char> m_prev, m_zero, m_try, m_strip, m_dict;
+    std::shared_ptr<RawRows> m_raw;        // the strip being collected
+    std::shared_ptr<const RawRows> m_last; // the strip submitted last
     std::deque<std::future<Strip>> m_jobs;
     std::uint32_t m_adler = 1;
     bool m_headerDone = false;
-    long m_rowsDone = 0;
 };
 
 } // namespace

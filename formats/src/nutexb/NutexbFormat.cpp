@@ -44,6 +44,8 @@ public:
                        const FormatOptions&) const override {
         return nutexb::readBytes(bytes, name);
     }
+    // The header is a footer: any bytes may start a volume, up to a 256^3 one.
+    std::uint64_t maxStreamBytes(std::string_view) const override { return nutexb::maxFileSize(); }
 
     Diagnostics write(const std::string& path, const LutFile& file,
                       const FormatOptions& options) const override {

@@ -127,6 +127,10 @@ Diagnostic diag(const std::string& path, std::string message,
     return ocioDiagnostic(path, std::move(message), s);
 }
 
+// Points at which a bake's error is measured: about 1M, a few tenths of a second of
+// OpenColorIO's processor for a config's conversion.
+constexpr std::size_t kBakeBoundPoints = 1'100'000;
+
 // Writes the file, reads it back and measures it against the function, probes spread like the
 // lattice (through the shaper's inverse when there is one).
 void finishBake(const std::string& output, const BakeOptions& o, const Format& writer,
@@ -143,13 +147,16 @@ void finishBake(const std::string& output, const BakeOptions& o, const Format& w
     report.writeSeconds = since(t0);
     report.diagnostics.insert(report.diagnostics.end(), wd.begin(), wd.end());
 
+    // The bound: held-out points between the lattice points (in the coordinates the lattice is
+    // uniform in: through the shaper's inverse when there is one) plus the slope between them.
     ProbeGrid grid;
     if (!file.cube) {
         grid.greyOnly = true;
-        grid.perAxis = std::min(4 * (file.shaper->size() - 1) + 1, 16385);
+        grid.cells = file.shaper->size() - 1;
     } else {
-        grid.perAxis = probesFor(file.cube->size(), 65);
+        grid.cells = file.cube->size() - 1;
     }
+    grid.budget = kBakeBoundPoints;
     if (shaperInverse) {
         grid.toInput = *shaperInverse;
     } else {
@@ -232,8 +239,8 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
                      Diagnostic::Severity::Warning));
     }
     report.shaper = shaper.text;
-    const int n =
-        o.cubeSize ? o.cubeSize : (writer->fixedSize() ? writer->fixedSize() : kDefaultBakeSize);
+    const int fixed = writer->fixedSizeFor(o.write);
+    const int n = o.cubeSize ? o.cubeSize : (fixed ? fixed : kDefaultBakeSize);
     report.cubeSize = n;
 
     // A conversion that mixes no channels is per-channel curves: a 1D table holds it exactly at

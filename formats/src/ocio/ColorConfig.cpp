@@ -2,6 +2,7 @@
 #include "lut/formats/ColorConfig.h"
 
 #include "ocio/ColorConfigImpl.h"
+#include "ocio/OcioConfigChecks.h"
 
 #include "lut/io/FileNames.h"
 
@@ -93,11 +94,21 @@ ColorConfig ColorConfig::load(const ConfigLocation& location) {
             location.path + ": cannot open the OpenColorIO config: " +
             (std::filesystem::exists(location.path) ? "not a regular file" : "no such file") +
             (location.source == ConfigSource::Environment ? " (named by $OCIO)" : ""));
+    // OCIO reads the whole config into memory: no config is near this size.
+    constexpr std::uintmax_t kMaxConfigBytes = std::uintmax_t(64) << 20;
+    std::error_code ec;
+    if (const auto size = std::filesystem::file_size(location.path, ec);
+        !ec && size > kMaxConfigBytes)
+        throw LimitError(location.path + ": the OpenColorIO config is " + std::to_string(size) +
+                         " bytes, over the limit of " + std::to_string(kMaxConfigBytes) + " bytes");
     OcioSession session(location.path);
     try {
         auto config = OCIO::Config::CreateFromFile(location.path.c_str());
         config->validate();
+        checkOcioConfig(config, location.path); // the files it names, cycles
         impl->config = config;
+    } catch (const Error&) {
+        throw;
     } catch (const std::exception& e) {
         throw Error(location.path +
                     ": OpenColorIO cannot read the config: " + ocioMessage(e.what()));

@@ -1,11 +1,10 @@
 #include "ocio/OcioMeasure.h"
 
-#include "lut/Parallel.h"
+#include "lut/ops/ErrorBound.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <vector>
 
 namespace lut::formats {
@@ -41,54 +40,43 @@ int probesFor(int latticeSize, int cap) {
 ErrorStats measureAgainst(const RgbFunction& candidate, const RgbFunction& truth,
                           const ProbeGrid& grid, int nthreads) {
     const auto t0 = std::chrono::steady_clock::now();
-    const int p = std::max(2, grid.perAxis);
-    const std::size_t total =
-        grid.greyOnly ? static_cast<std::size_t>(p) : static_cast<std::size_t>(p) * p * p;
-    const float inv = 1.0f / static_cast<float>(p - 1);
-    constexpr std::size_t kChunk = 4096;
-    const int chunks = static_cast<int>((total + kChunk - 1) / kChunk);
-    std::mutex m;
-    ErrorAccumulator all;
-    parallelForDynamic(chunks, nthreads, 1, [&](int c0, int c1) {
-        ErrorAccumulator acc;
-        std::vector<float> in, a, b;
-        for (int c = c0; c < c1; ++c) {
-            const std::size_t begin = static_cast<std::size_t>(c) * kChunk;
-            const std::size_t n = std::min(kChunk, total - begin);
-            in.resize(3 * n);
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t k = begin + i;
-                glm::vec3 u;
-                if (grid.greyOnly) {
-                    u = glm::vec3(static_cast<float>(k) * inv);
-                } else {
-                    const std::size_t pp = static_cast<std::size_t>(p);
-                    u = glm::vec3(static_cast<float>(k % pp), static_cast<float>((k / pp) % pp),
-                                  static_cast<float>(k / (pp * pp))) *
-                        inv;
-                }
-                if (!grid.toInput)
-                    u = grid.domainMin + (grid.domainMax - grid.domainMin) * u;
-                in[3 * i] = u.x;
-                in[3 * i + 1] = u.y;
-                in[3 * i + 2] = u.z;
-            }
+    BoundOptions o;
+    o.greyOnly = grid.greyOnly;
+    o.cells = grid.cells > 0
+                  ? grid.cells
+                  : std::max(1, (std::max(2, grid.perAxis) - 1) / (grid.greyOnly ? 4 : 2));
+    o.budget = grid.budget;
+    o.nthreads = nthreads;
+    // The box is u in [0,1]^3, mapped to inputs as the probe grid says.
+    const ErrorStats e = boundError(
+        [&](const glm::dvec3* u, glm::dvec3* diff, std::size_t n) {
+            std::vector<float> in(3 * n), a, b;
+            for (std::size_t i = 0; i < n; ++i)
+                for (int c = 0; c < 3; ++c)
+                    in[3 * i + static_cast<std::size_t>(c)] =
+                        grid.toInput
+                            ? static_cast<float>(u[i][c])
+                            : static_cast<float>(grid.domainMin[c] +
+                                                 (double(grid.domainMax[c]) - grid.domainMin[c]) *
+                                                     u[i][c]);
             if (grid.toInput)
                 grid.toInput(in.data(), n);
             a = in;
             b = in;
             candidate(a.data(), n);
             truth(b.data(), n);
-            for (std::size_t i = 0; i < 3 * n; ++i)
-                if (std::isfinite(b[i]))
-                    acc.add(a[i], b[i]);
-        }
-        std::lock_guard lock(m);
-        all.merge(acc);
-    });
-    ErrorStats e = all.result();
-    e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return e;
+            for (std::size_t i = 0; i < n; ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const std::size_t k = 3 * i + static_cast<std::size_t>(c);
+                    diff[i][c] = !std::isfinite(b[k])   ? NAN // no truth there: skipped
+                                 : !std::isfinite(a[k]) ? INFINITY
+                                                        : double(b[k]) - double(a[k]);
+                }
+        },
+        o);
+    ErrorStats out = e;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
 }
 
 } // namespace lut::formats

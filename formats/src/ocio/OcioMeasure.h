@@ -1,7 +1,8 @@
 #pragma once
 // Measuring a table against the function it stands for (OpenColorIO's processor, or a chain of
-// conversions around a LUT): both evaluated on a grid of probe points that falls between the
-// lattice points, as every lossy step of lutkit reports its error.
+// conversions around a LUT): both evaluated at held-out points between the lattice points, the
+// maximum a bound over every input (lut/ops/ErrorBound.h), as every lossy step of lutkit reports
+// its error.
 #include "lut/ErrorStats.h"
 #include "lut/LutFile.h"
 #include "lut/interp/Sampler.h"
@@ -30,8 +31,13 @@ private:
 };
 
 struct ProbeGrid {
-    int perAxis = 33;      // points per axis (>= 2)
-    bool greyOnly = false; // perAxis points on the grey axis (per-channel tables)
+    // How finely the candidate's lattice divides the box: its cells per axis (entries - 1 for a
+    // 1D table). 0: from perAxis, read as 2 cells + 1 points (4 for greyOnly) per lattice cell.
+    int cells = 0;
+    int perAxis = 33;      // points per axis (>= 2), when cells is 0
+    bool greyOnly = false; // the grey axis only (per-channel tables)
+    // Points evaluated, about: more give a tighter bound, fewer a quicker one.
+    std::size_t budget = 300'000;
     // Probe coordinates u in [0,1]^3 to inputs; null = domainMin + (domainMax - domainMin) u.
     RgbFunction toInput;
     glm::vec3 domainMin{0.0f}, domainMax{1.0f};
@@ -41,8 +47,9 @@ struct ProbeGrid {
 // while there are at most `cap` per axis.
 int probesFor(int latticeSize, int cap = 97);
 
-// |candidate(x) - truth(x)| over the probe grid (points where truth is NaN or infinite are
-// skipped). error.seconds = the time it took.
+// |candidate(x) - truth(x)| over the box: maxAbs a bound over every input of it (held-out points
+// between the lattice points plus the slope between them; points where truth is NaN or infinite
+// are skipped), meanAbs the mean over those points. error.seconds = the time it took.
 ErrorStats measureAgainst(const RgbFunction& candidate, const RgbFunction& truth,
                           const ProbeGrid& grid, int nthreads = 0);
 

@@ -85,6 +85,17 @@ public:
     }
     std::vector<std::string> extensions() const override { return kOcioReadExtensions; }
     bool canWrite() const override { return false; }
+    // Text formats, and ICC profiles (binary: their header's size field, "acsp" at byte 36).
+    std::uint64_t maxStreamBytes(std::string_view head) const override {
+        if (head.find('\0') == std::string_view::npos)
+            return limits::kMaxLutFileBytes;
+        if (head.size() < 40 || head.substr(36, 4) != "acsp")
+            return 0;
+        std::uint64_t size = 0;
+        for (int i = 0; i < 4; ++i)
+            size = size << 8 | static_cast<unsigned char>(head[static_cast<std::size_t>(i)]);
+        return std::min<std::uint64_t>(size, limits::kMaxLutFileBytes);
+    }
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         // OCIO opens the file itself: a FIFO, a directory or a device is refused first.

@@ -5,16 +5,48 @@
 
 namespace lut {
 
+double roundUpSignificant(double v, int digits) {
+    if (!(v > 0.0) || !std::isfinite(v))
+        return v;
+    const double scale = std::pow(10.0, std::floor(std::log10(v)) - (digits - 1));
+    const double up = std::ceil(v / scale) * scale;
+    return up < v ? std::nextafter(up, INFINITY) : up;
+}
+
+double roundUpDecimals(double v, int decimals) {
+    if (!(v > 0.0) || !std::isfinite(v))
+        return v;
+    const double scale = std::pow(10.0, decimals);
+    const double up = std::ceil(v * scale) / scale;
+    return up < v ? std::nextafter(up, INFINITY) : up;
+}
+
 std::string ErrorStats::str() const {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "max %.3g (%.3g 8-bit steps), mean %.3g (%.3g steps)", maxAbs,
-                  maxSteps8(), meanAbs, meanSteps8());
+    // The maximum is printed rounded up: rounded to nearest, a bound could print below the truth.
+    std::snprintf(buf, sizeof buf, "max %.3g (%.3g 8-bit steps), mean %.3g (%.3g steps)",
+                  roundUpSignificant(maxAbs), roundUpSignificant(maxSteps8()), meanAbs,
+                  meanSteps8());
     std::string s = buf;
     if (seconds > 0) {
         std::snprintf(buf, sizeof buf, ", %.3g ms", seconds * 1e3);
         s += buf;
     }
     return s;
+}
+
+std::string ErrorStats::coverage() const {
+    if (!bounded)
+        return {};
+    if (heldOutPoints == 0)
+        return "the exact maximum over every input";
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "a bound over every input (%.3g steps seen at %zu points between the lattice "
+                  "points%s)",
+                  sampledMax * 255.0, heldOutPoints,
+                  maxAbs > sampledMax ? ", plus the slope between them" : "");
+    return buf;
 }
 
 void ErrorAccumulator::add(double a, double b) {

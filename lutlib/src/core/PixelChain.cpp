@@ -1,5 +1,6 @@
 #include "lut/PixelChain.h"
 
+#include "core/simd/DomainCheck.h"
 #include "lut/interp/Sampler.h"
 
 #include <cmath>
@@ -46,16 +47,24 @@ std::string DomainStats::str(glm::vec3 lo, glm::vec3 hi) const {
 void countOutsideDomain(const float* rgba, std::size_t count, glm::vec3 lo, glm::vec3 hi,
                         DomainStats& st) {
     st.pixels += count;
-    // A first pass without branches: most runs have nothing outside, and this loop vectorizes.
+    // A first pass without branches: most runs have nothing outside. With AVX2 where the CPU has
+    // it (the plain loop does not vectorize: ~3 ns per pixel, a third of the LUT kernel's time).
     const float l0 = lo.x, l1 = lo.y, l2 = lo.z, h0 = hi.x, h1 = hi.y, h2 = hi.z;
     unsigned any = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const float* p = rgba + 4 * i;
-        // !(a >= l && a <= h) is true for NaN too.
-        any |= static_cast<unsigned>(!(p[0] >= l0 && p[0] <= h0)) |
-               static_cast<unsigned>(!(p[1] >= l1 && p[1] <= h1)) |
-               static_cast<unsigned>(!(p[2] >= l2 && p[2] <= h2));
-    }
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (avx2) {
+        const float l[3] = {l0, l1, l2}, h[3] = {h0, h1, h2};
+        any = detail::anyOutsideDomainAvx2(rgba, count, l, h);
+    } else
+#endif
+        for (std::size_t i = 0; i < count; ++i) {
+            const float* p = rgba + 4 * i;
+            // !(a >= l && a <= h) is true for NaN too.
+            any |= static_cast<unsigned>(!(p[0] >= l0 && p[0] <= h0)) |
+                   static_cast<unsigned>(!(p[1] >= l1 && p[1] <= h1)) |
+                   static_cast<unsigned>(!(p[2] >= l2 && p[2] <= h2));
+        }
     if (!any)
         return;
     for (std::size_t i = 0; i < count; ++i) {

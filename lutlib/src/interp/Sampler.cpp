@@ -63,32 +63,53 @@ std::vector<float> packTable(const Lut3D& lut) {
     return t;
 }
 
-enum class Isa { Scalar, Avx2 };
+enum class Isa { Scalar, Avx2, Avx512 };
 
 Isa detectIsa() {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
-        return Isa::Avx2;
-#endif
+    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
+        return Isa::Scalar;
+    // libgcc checks the OS saves the ZMM state (XCR0) before it reports avx512f.
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq"))
+        return Isa::Avx512;
+    return Isa::Avx2;
+#else
     return Isa::Scalar;
+#endif
 }
 
-// The path new samplers use: the best this CPU has, unless LUTKIT_SIMD=scalar asks for the
-// reference loop (benchmarks and tests compare the two). Read on every makeSampler() call so a
-// benchmark can switch between samplers in one run.
+// The path new samplers use: the best this CPU has, unless LUTKIT_SIMD asks for a lesser one
+// ("scalar": the reference loop; "avx2": the AVX2 kernels on an AVX-512 CPU), so benchmarks and
+// tests can compare them. Read on every makeSampler() call so a benchmark can switch between
+// samplers in one run.
 Isa chosenIsa() {
     static const Isa best = detectIsa();
     const char* env = std::getenv("LUTKIT_SIMD");
     if (env && std::strcmp(env, "scalar") == 0)
         return Isa::Scalar;
+    if (env && std::strcmp(env, "avx2") == 0 && best == Isa::Avx512)
+        return Isa::Avx2;
     return best;
+}
+
+// The kernel for this CPU: the AVX-512 one where there is one and the CPU has it, else AVX2.
+KernelFn pickKernel(KernelFn avx2, KernelFn avx512) {
+    switch (chosenIsa()) {
+    case Isa::Avx512:
+        return avx512 ? avx512 : avx2;
+    case Isa::Avx2:
+        return avx2;
+    case Isa::Scalar:
+        break;
+    }
+    return nullptr;
 }
 
 class SamplerBase : public Sampler {
 public:
-    SamplerBase(const Lut3D& lut, KernelFn simd)
-        : m_table(packTable(lut)), m_kernel(chosenIsa() == Isa::Avx2 ? simd : nullptr) {
+    SamplerBase(const Lut3D& lut, KernelFn avx2, KernelFn avx512 = nullptr)
+        : m_table(packTable(lut)), m_kernel(pickKernel(avx2, avx512)) {
         m_view.rgb = m_table.data();
         m_view.map = detail::makeLatticeMapping(lut);
     }
@@ -163,7 +184,8 @@ public:
 
 class TetrahedralSampler final : public SamplerBase {
 public:
-    explicit TetrahedralSampler(const Lut3D& lut) : SamplerBase(lut, &detail::tetrahedralAvx2) {}
+    explicit TetrahedralSampler(const Lut3D& lut)
+        : SamplerBase(lut, &detail::tetrahedralAvx2, &detail::tetrahedralAvx512) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -183,7 +205,7 @@ public:
 class ShapedSampler final : public Sampler {
 public:
     ShapedSampler(const Lut1D& shaper, const Lut3D* cube, Interpolation method)
-        : m_method(method), m_kernel(chosenIsa() == Isa::Avx2 ? &detail::shaperAvx2 : nullptr) {
+        : m_method(method), m_kernel(chosenIsa() != Isa::Scalar ? &detail::shaperAvx2 : nullptr) {
         const int n = shaper.size();
         if (n < 2)
             throw Error("cannot sample a shaper of fewer than 2 entries");
@@ -272,7 +294,15 @@ std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method) {
 }
 
 const char* samplerIsa() {
-    return chosenIsa() == Isa::Avx2 ? "avx2" : "scalar";
+    switch (chosenIsa()) {
+    case Isa::Avx512:
+        return "avx512";
+    case Isa::Avx2:
+        return "avx2";
+    case Isa::Scalar:
+        break;
+    }
+    return "scalar";
 }
 
 } // namespace lut

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -63,10 +64,35 @@ std::string errnoText(int err) {
     return std::strerror(err);
 }
 
+// rename(), failing with EEXIST instead of replacing a file at `to`.
+int renameNoReplace(const char* from, const char* to) {
+#ifdef RENAME_NOREPLACE
+    if (::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_NOREPLACE) == 0)
+        return 0;
+    if (errno != EINVAL && errno != ENOSYS)
+        return -1;
+#endif
+    // File systems without it: link() fails when the name exists.
+    if (::link(from, to) == 0) {
+        ::unlink(from);
+        return 0;
+    }
+    if (errno == EEXIST)
+        return -1;
+    struct stat st {};
+    if (::lstat(to, &st) == 0) {
+        errno = EEXIST;
+        return -1;
+    }
+    return ::rename(from, to); // no hard links either (FAT): the check above is the best left
+}
+
 } // namespace
 
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
     throwIfInterrupted(m_path);
+    struct stat st {};
+    m_existed = ::lstat(m_path.c_str(), &st) == 0;
     for (int attempt = 0;; ++attempt) {
         m_tempPath = tempPathFor(m_path, randomTag());
         // Registered before it exists, so a signal between the two cannot leave it behind.
@@ -237,8 +263,20 @@ void AtomicFile::commit(const Checks& checks) {
     if (::stat(m_path.c_str(), &old) == 0 && S_ISREG(old.st_mode))
         ::chmod(m_tempPath.c_str(), old.st_mode & 07777);
     throwIfInterrupted(m_path);
-    if (::rename(m_tempPath.c_str(), m_path.c_str()) != 0)
-        failErrno(errno);
+    // A new output is created exclusively: if another program made a file there meanwhile, it
+    // stays, and this write fails naming it (lut::checkOutput's exclusive outputs).
+    const bool exclusive = !m_existed || isExclusiveOutput(m_path);
+    if ((exclusive ? renameNoReplace(m_tempPath.c_str(), m_path.c_str())
+                   : ::rename(m_tempPath.c_str(), m_path.c_str())) != 0) {
+        const int err = errno;
+        if (exclusive && err == EEXIST) {
+            removeTemp();
+            throw Error(m_path + ": already exists: another program created it while lutkit was "
+                                 "writing it; not replaced");
+        }
+        failErrno(err);
+    }
+    forgetExclusiveOutput(m_path);
     m_registration.release();
     m_done = true;
     // The rename itself durable: sync the folder (file systems that cannot are fine).

@@ -55,6 +55,10 @@ private:
 
 } // namespace
 
+std::uint64_t Format::maxStreamBytes(std::string_view head) const {
+    return head.find('\0') == std::string_view::npos ? limits::kMaxLutFileBytes : 0;
+}
+
 LutFile Format::readMemory(std::string_view bytes, const std::string& name,
                            const FormatOptions& options) const {
     TempDir dir;
@@ -207,7 +211,21 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
             for (const auto& f : m_formats)
                 if (f->canRead())
                     candidates.push_back(f.get());
-        const std::string bytes = readStandardInput(limits::kMaxLutFileBytes);
+        // Bounded by what the candidates can be: binary data no format starts with stops after
+        // its first MiB (`lutkit info - < /dev/zero` took 2 GB).
+        const std::string bytes =
+            readStandardInput(limits::kMaxLutFileBytes, [&](const std::string& head) {
+                std::uint64_t most = 0;
+                for (const Format* f : candidates)
+                    most = std::max(most, f->maxStreamBytes(head));
+                if (most == 0)
+                    throw Error("-: standard input is no LUT file lutkit reads (" +
+                                std::string(head.find('\0') != std::string::npos
+                                                ? "binary data that no LUT format starts with"
+                                                : "no format takes it") +
+                                "; name its format with --in-format)");
+                return StreamBound{most, "a LUT file of the formats tried can take"};
+            });
         std::string reasons;
         for (const Format* f : candidates) {
             try {

@@ -16,6 +16,10 @@ const char* toString(LutLayout l) {
         return "smush";
     case LutLayout::Hald:
         return "hald";
+    case LutLayout::Reshade:
+        return "reshade";
+    case LutLayout::Unity32:
+        return "unity-32";
     }
     return "?";
 }
@@ -26,8 +30,11 @@ std::vector<std::string> layoutAliases(LutLayout l) {
         return {"pilot", "godot"};
     case LutLayout::Smush:
         return {"lattice"};
+    case LutLayout::Reshade:
+        return {"unreal-32"};
     case LutLayout::Unity:
     case LutLayout::Hald:
+    case LutLayout::Unity32:
         break;
     }
     return {};
@@ -56,7 +63,18 @@ std::optional<LutLayout> parseOptionalLayout(std::string_view name) {
 }
 
 std::vector<LutLayout> allLayouts() {
-    return {LutLayout::Pilot, LutLayout::Unity, LutLayout::Smush, LutLayout::Hald};
+    return {LutLayout::Pilot, LutLayout::Unity,   LutLayout::Smush,
+            LutLayout::Hald,  LutLayout::Reshade, LutLayout::Unity32};
+}
+
+int layoutFixedSize(LutLayout l) {
+    return l == LutLayout::Reshade || l == LutLayout::Unity32 ? 32 : 0;
+}
+
+LutLayout layoutPlacement(LutLayout l) {
+    return l == LutLayout::Reshade   ? LutLayout::Pilot
+           : l == LutLayout::Unity32 ? LutLayout::Unity
+                                     : l;
 }
 
 static int haldLevel(int size) {
@@ -81,8 +99,9 @@ void layoutImageSize(LutLayout layout, int size, int& width, int& height) {
 std::vector<LayoutFit> layoutsForImageSize(int width, int height) {
     std::vector<LayoutFit> fits;
     if (height >= 2 && height <= 256 && static_cast<long long>(height) * height == width) {
-        fits.push_back({LutLayout::Pilot, height});
-        fits.push_back({LutLayout::Unity, height});
+        const bool named = height == layoutFixedSize(LutLayout::Reshade);
+        fits.push_back({named ? LutLayout::Reshade : LutLayout::Pilot, height});
+        fits.push_back({named ? LutLayout::Unity32 : LutLayout::Unity, height});
         fits.push_back({LutLayout::Smush, height});
     }
     if (width == height && width >= 8) {
@@ -93,8 +112,33 @@ std::vector<LayoutFit> layoutsForImageSize(int width, int height) {
     return fits;
 }
 
+std::string layoutSizeProblem(LutLayout layout, int size) {
+    const int fixed = layoutFixedSize(layout);
+    if (size == 0 || fixed == 0 || size == fixed)
+        return {};
+    return "the " + std::string(toString(layout)) + " layout is " + std::to_string(fixed * fixed) +
+           "x" + std::to_string(fixed) + " (" + std::to_string(fixed) + "^3), not " +
+           std::to_string(size) + "^3 (" + toString(layoutPlacement(layout)) +
+           " is the same placement at any N)";
+}
+
+int layoutSizeForImage(LutLayout layout, int width, int height) {
+    if (layout == LutLayout::Hald) {
+        for (const LayoutFit& f : layoutsForImageSize(width, height))
+            if (f.layout == LutLayout::Hald)
+                return f.size;
+        return 0;
+    }
+    const bool strip =
+        height >= 2 && height <= 256 && static_cast<long long>(height) * height == width;
+    if (!strip)
+        return 0;
+    const int fixed = layoutFixedSize(layout);
+    return fixed == 0 || fixed == height ? height : 0;
+}
+
 void layoutPixel(LutLayout layout, int n, int r, int g, int b, int& x, int& y) {
-    switch (layout) {
+    switch (layoutPlacement(layout)) {
     case LutLayout::Pilot:
         x = r + n * b;
         y = g;
@@ -115,6 +159,9 @@ void layoutPixel(LutLayout layout, int n, int r, int g, int b, int& x, int& y) {
         y = static_cast<int>(i / side);
         return;
     }
+    case LutLayout::Reshade: // placed as their base layouts (layoutPlacement)
+    case LutLayout::Unity32:
+        return;
     }
 }
 

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
+#include <set>
 #include <sys/stat.h>
 
 namespace fs = std::filesystem;
@@ -29,7 +31,32 @@ std::string folderOf(const std::string& path) {
     return parent.empty() ? std::string(".") : parent.string();
 }
 
+std::string keyOf(const std::string& path) {
+    std::error_code ec;
+    return fs::absolute(path, ec).lexically_normal().string();
+}
+
+std::mutex& exclusiveMutex() {
+    static std::mutex m;
+    return m;
+}
+
+std::set<std::string>& exclusiveOutputs() {
+    static std::set<std::string> s;
+    return s;
+}
+
 } // namespace
+
+bool isExclusiveOutput(const std::string& path) {
+    std::lock_guard<std::mutex> lock(exclusiveMutex());
+    return exclusiveOutputs().count(keyOf(path)) > 0;
+}
+
+void forgetExclusiveOutput(const std::string& path) {
+    std::lock_guard<std::mutex> lock(exclusiveMutex());
+    exclusiveOutputs().erase(keyOf(path));
+}
 
 OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
                          const std::vector<std::string>& inputs) {
@@ -62,6 +89,10 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
         if (::stat(dir.c_str(), &dst) != 0 || !S_ISDIR(dst.st_mode))
             throw Error(path + ": folder " + dir + " does not exist");
         t.kind = OutputKind::NewFile;
+        if (rule != ExistingOutput::Replace) {
+            std::lock_guard<std::mutex> lock(exclusiveMutex());
+            exclusiveOutputs().insert(keyOf(path));
+        }
         return t;
     }
     if (S_ISDIR(st.st_mode))

@@ -9,8 +9,30 @@
 namespace lut {
 
 std::string readStandardInput(std::size_t maxBytes) {
+    return readStandardInput(maxBytes, {});
+}
+
+std::string readStandardInput(std::size_t maxBytes,
+                              const std::function<StreamBound(const std::string& head)>& bound) {
     std::string bytes;
     char buf[1 << 16];
+    std::uint64_t limit = maxBytes;
+    std::string why;
+    bool judged = !bound;
+    auto over = [&] {
+        throw LimitError(
+            why.empty()
+                ? "-: standard input is over the limit of " + std::to_string(limit) + " bytes"
+                : "-: standard input is over the " + std::to_string(limit) + " bytes " + why);
+    };
+    auto judge = [&] {
+        judged = true;
+        const StreamBound b = bound(bytes);
+        if (b.bytes > 0 && b.bytes < limit) {
+            limit = b.bytes;
+            why = b.what;
+        }
+    };
     for (;;) {
         const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
         if (n < 0) {
@@ -20,13 +42,18 @@ std::string readStandardInput(std::size_t maxBytes) {
         }
         if (n == 0)
             break;
-        if (bytes.size() + static_cast<std::size_t>(n) > maxBytes)
-            throw LimitError("-: standard input is over the limit of " + std::to_string(maxBytes) +
-                             " bytes");
+        if (bytes.size() + static_cast<std::size_t>(n) > limit)
+            over();
         bytes.append(buf, static_cast<std::size_t>(n));
+        if (!judged && bytes.size() >= kStreamHeadBytes)
+            judge();
     }
     if (bytes.empty())
         throw Error("-: standard input is empty");
+    if (!judged)
+        judge();
+    if (bytes.size() > limit)
+        over();
     return bytes;
 }
 

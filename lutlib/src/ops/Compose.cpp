@@ -4,6 +4,7 @@
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/Adjust.h"
+#include "lut/ops/ErrorBound.h"
 #include "ops/OpsDetail.h"
 
 #include <algorithm>
@@ -50,13 +51,14 @@ OpResult compose(const Lut3D& a, const Lut3D& b, const ComposeOptions& options) 
     fillLattice(result.lut, options.nthreads,
                 [&](glm::vec3 in) { return pb->sample(pa->sample(in)); });
     const double seconds = detail::secondsSince(t0);
-    const auto pr = makeSampler(result.lut, options.method);
-    const int probes = options.probes > 0 ? options.probes : detail::probeCount(size);
-    result.error = detail::probeError(a.domainMin(), a.domainMax(), probes, options.nthreads,
-                                      [&](glm::vec3 in, glm::vec3& exact, glm::vec3& approx) {
-                                          exact = pb->sample(pa->sample(in));
-                                          approx = pr->sample(in);
-                                      });
+    // B(A(x)) kinks (or jumps) where A does; where B does, too, but those places depend on A.
+    result.error = boundLatticeError(
+        result.lut, options.method,
+        [&](const glm::vec3* in, glm::vec3* out, std::size_t n) {
+            for (std::size_t i = 0; i < n; ++i)
+                out[i] = pb->sample(pa->sample(in[i]));
+        },
+        latticeBreaks(sa, options.method), options.nthreads);
     result.error.seconds = seconds;
     return result;
 }
@@ -81,6 +83,7 @@ OpResult mix(const Lut3D& a, const Lut3D& b, double t, Interpolation method, int
         for (std::size_t i = 0; i < out.size(); ++i)
             out[i] = blend(sa.entries()[i], sb.entries()[i]);
         result.error.count = out.size() * 3;
+        result.error.bounded = true; // exact: the interpolant of mixed entries is the mix
         result.error.seconds = detail::secondsSince(t0);
         return result;
     }
@@ -89,13 +92,13 @@ OpResult mix(const Lut3D& a, const Lut3D& b, double t, Interpolation method, int
     fillLattice(result.lut, nthreads,
                 [&](glm::vec3 in) { return blend(pa->sample(in), pb->sample(in)); });
     const double seconds = detail::secondsSince(t0);
-    const auto pr = makeSampler(result.lut, method);
-    result.error =
-        detail::probeError(a.domainMin(), a.domainMax(), detail::probeCount(a.size()), nthreads,
-                           [&](glm::vec3 in, glm::vec3& exact, glm::vec3& approx) {
-                               exact = blend(pa->sample(in), pb->sample(in));
-                               approx = pr->sample(in);
-                           });
+    result.error = boundLatticeError(
+        result.lut, method,
+        [&](const glm::vec3* in, glm::vec3* out, std::size_t n) {
+            for (std::size_t i = 0; i < n; ++i)
+                out[i] = blend(pa->sample(in[i]), pb->sample(in[i]));
+        },
+        latticeBreaks(sb, method), nthreads);
     result.error.seconds = seconds;
     return result;
 }

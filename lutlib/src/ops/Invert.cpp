@@ -3,6 +3,7 @@
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/ErrorBound.h"
 #include "ops/OpsDetail.h"
 
 #include <glm/mat3x3.hpp>
@@ -317,12 +318,28 @@ InvertResult invert(const Lut3D& source, const InvertOptions& options) {
 
     const auto fa = makeSampler(a, Interpolation::Tetrahedral);
     const auto fi = makeSampler(result.lut, Interpolation::Tetrahedral);
-    rep.roundTrip =
-        detail::probeError(a.domainMin(), a.domainMax(), detail::probeCount(a.size()), o.nthreads,
-                           [&](glm::vec3 in, glm::vec3& exact, glm::vec3& approx) {
-                               exact = in;
-                               approx = fi->sample(fa->sample(in));
-                           });
+    // Both measured where nothing was solved: between the lattice points, with the slope term.
+    BoundOptions bo;
+    bo.lo = glm::dvec3(result.lut.domainMin());
+    bo.hi = glm::dvec3(result.lut.domainMax());
+    bo.cells = m - 1;
+    bo.nthreads = o.nthreads;
+    rep.residual = boundError(
+        [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t count) {
+            for (std::size_t i = 0; i < count; ++i)
+                diff[i] = glm::dvec3(fa->sample(fi->sample(glm::vec3(in[i])))) - in[i];
+        },
+        bo);
+    bo.lo = glm::dvec3(a.domainMin());
+    bo.hi = glm::dvec3(a.domainMax());
+    bo.cells = a.size() - 1;
+    bo.breaks = latticeBreaks(result.lut, Interpolation::Tetrahedral);
+    rep.roundTrip = boundError(
+        [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t count) {
+            for (std::size_t i = 0; i < count; ++i)
+                diff[i] = glm::dvec3(fi->sample(fa->sample(glm::vec3(in[i])))) - in[i];
+        },
+        bo);
     return result;
 }
 

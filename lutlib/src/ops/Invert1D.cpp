@@ -1,4 +1,5 @@
 #include "lut/Error.h"
+#include "lut/ops/ErrorBound.h"
 #include "lut/ops/Invert.h"
 #include "ops/OpsDetail.h"
 
@@ -80,19 +81,34 @@ InvertResult1D invert(const Lut1D& source, const InvertOptions& options) {
         rep.worst.resize(16);
     rep.meanResidual = rep.points ? sumResidual / static_cast<double>(rep.points) : 0.0;
     rep.seconds = detail::secondsSince(t0);
-    ErrorAccumulator acc;
-    const int probes = 4 * (n - 1) + 1;
-    for (int k = 0; k < probes; ++k) {
+    // Per channel along u in [0, 1] mapped onto each channel's domain, between the entries too.
+    auto along = [](glm::vec3 lo3, glm::vec3 hi3, double u) {
         glm::vec3 x;
         for (int c = 0; c < 3; ++c)
-            x[c] = static_cast<float>(a.domainMin()[c] +
-                                      (static_cast<double>(a.domainMax()[c]) - a.domainMin()[c]) *
-                                          k / (probes - 1));
-        const glm::vec3 back = result.lut.apply(a.apply(x));
-        for (int c = 0; c < 3; ++c)
-            acc.add(x[c], back[c]);
-    }
-    rep.roundTrip = acc.result();
+            x[c] = static_cast<float>(lo3[c] + (static_cast<double>(hi3[c]) - lo3[c]) * u);
+        return x;
+    };
+    BoundOptions bo;
+    bo.greyOnly = true;
+    bo.cells = m - 1;
+    const Lut1D& inv = result.lut;
+    rep.residual = boundError(
+        [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t count) {
+            for (std::size_t i = 0; i < count; ++i) {
+                const glm::vec3 y = along(lo, hi, in[i].x);
+                diff[i] = glm::dvec3(a.apply(inv.apply(y))) - glm::dvec3(y);
+            }
+        },
+        bo);
+    bo.cells = n - 1;
+    rep.roundTrip = boundError(
+        [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t count) {
+            for (std::size_t i = 0; i < count; ++i) {
+                const glm::vec3 x = along(a.domainMin(), a.domainMax(), in[i].x);
+                diff[i] = glm::dvec3(inv.apply(a.apply(x))) - glm::dvec3(x);
+            }
+        },
+        bo);
     return result;
 }
 

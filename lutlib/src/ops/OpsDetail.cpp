@@ -71,29 +71,6 @@ int probeCount(int latticeSize) {
     return 128;
 }
 
-ErrorStats probeError(glm::vec3 lo, glm::vec3 hi, int probes, int nthreads, const ProbeFn& fn) {
-    std::mutex mutex;
-    ErrorAccumulator total;
-    const float denom = static_cast<float>(probes - 1);
-    parallelFor(probes, nthreads, [&](int z0, int z1) {
-        ErrorAccumulator acc;
-        for (int z = z0; z < z1; ++z)
-            for (int y = 0; y < probes; ++y)
-                for (int x = 0; x < probes; ++x) {
-                    const glm::vec3 t(static_cast<float>(x), static_cast<float>(y),
-                                      static_cast<float>(z));
-                    glm::vec3 in = lo + (hi - lo) * (t / denom);
-                    glm::vec3 exact, approx;
-                    fn(in, exact, approx);
-                    for (int c = 0; c < 3; ++c)
-                        acc.add(exact[c], approx[c]);
-                }
-        std::lock_guard lock(mutex);
-        total.merge(acc);
-    });
-    return total.result();
-}
-
 PiecewiseLinearInverse::PiecewiseLinearInverse(std::vector<double> xs, std::vector<double> ys)
     : m_x(std::move(xs)) {
     const std::size_t n = ys.size();

@@ -44,16 +44,11 @@ private:
     glm::dvec3 m_lo, m_hi, m_scale;
 };
 
-// Probe points for measuring an operation's error: `probes` points per axis spanning [lo, hi]
+// Probe points for an operation's mean change: `probes` points per axis spanning [lo, hi]
 // (both ends included). A grid of 2(N-1)+1 points per axis hits every lattice point and every cell
 // centre of an N lattice, where interpolation errors peak; above 129 points per axis a grid of
 // about 128 whose spacing is coprime with the lattice's, so probes sample the cells' insides.
 int probeCount(int latticeSize);
-
-// Runs compare(input) -> (exact, approximate) over a probes^3 grid on up to nthreads threads and
-// accumulates |exact - approximate| per channel.
-using ProbeFn = std::function<void(glm::vec3 input, glm::vec3& exact, glm::vec3& approx)>;
-ErrorStats probeError(glm::vec3 lo, glm::vec3 hi, int probes, int nthreads, const ProbeFn& fn);
 
 // The inverse of the piecewise-linear curve through (xs[i], ys[i]) (xs increasing) at y. The
 // curve's direction is that of its end points; y is looked up on its running maximum (running

@@ -2,7 +2,7 @@
 
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
-#include "lut/ops/CompareLuts.h"
+#include "lut/ops/ErrorBound.h"
 
 #include <chrono>
 
@@ -32,7 +32,14 @@ ResampleResult resampleWithError(const Lut3D& source, int size, Interpolation me
     const auto t0 = std::chrono::steady_clock::now();
     ResampleResult result{resample(source, size, method, nthreads), {}};
     const auto t1 = std::chrono::steady_clock::now();
-    result.error = compareLuts(source, result.lut, method);
+    const auto exact = makeSampler(source, method);
+    result.error = boundLatticeError(
+        result.lut, method,
+        [&](const glm::vec3* in, glm::vec3* out, std::size_t n) {
+            for (std::size_t i = 0; i < n; ++i)
+                out[i] = exact->sample(in[i]);
+        },
+        latticeBreaks(source, method), nthreads);
     result.error.seconds = std::chrono::duration<double>(t1 - t0).count();
     return result;
 }

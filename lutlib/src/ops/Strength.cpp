@@ -124,9 +124,7 @@ Lut3D applyStrength(const Lut3D& lut, const StrengthOptions& options) {
                         continue;
                     }
                     const glm::vec3 y = lut.at(r, g, b);
-                    const glm::dvec3 e = blendStrength(
-                        glm::dvec3(x), glm::dvec3(sanitize(y.x), sanitize(y.y), sanitize(y.z)),
-                        amount);
+                    const glm::dvec3 e = blendStrength(glm::dvec3(x), glm::dvec3(y), amount);
                     out.at(r, g, b) = glm::vec3(toStored(e.x), toStored(e.y), toStored(e.z));
                 }
     });

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace lut::detail {
 
@@ -54,6 +55,41 @@ double clampUnit(double v) {
 double gameShown(double lutOut, double s) {
     const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
     return srgbEncodeUnit(clampUnit(std::pow(std::max(r, 0.0), kGammaDecode)));
+}
+
+namespace {
+// gameShown as a function of the brightened value r = ((lutOut - s) mix + s) scale, tabulated on
+// 2^16 intervals of [0, 1.4] (r >= 1 shows white) and interpolated linearly: within 1e-6 of the
+// display value (most intervals far closer; the clip at r = 1 costs one interval 5e-6).
+class ShownOfBrightened {
+public:
+    ShownOfBrightened() : m_v(kSize + 2) {
+        for (int i = 0; i <= kSize + 1; ++i) {
+            const double r = kMax * i / kSize;
+            m_v[static_cast<std::size_t>(i)] = srgbEncodeUnit(clampUnit(std::pow(r, kGammaDecode)));
+        }
+    }
+    double operator()(double r) const {
+        if (!(r > 0.0))
+            return 0.0;
+        const double x = r * (kSize / kMax);
+        if (x >= kSize)
+            return 1.0;
+        const std::size_t i = static_cast<std::size_t>(x);
+        const double f = x - static_cast<double>(i);
+        return m_v[i] + f * (m_v[i + 1] - m_v[i]);
+    }
+
+private:
+    static constexpr int kSize = 1 << 16;
+    static constexpr double kMax = 1.4;
+    std::vector<double> m_v;
+};
+} // namespace
+
+double gameShownTabulated(double lutOut, double s) {
+    static const ShownOfBrightened table;
+    return table(((lutOut - s) * kBrightenMix + s) * kBrightenScale);
 }
 
 double gameShownUnclipped(double lutOut, double s) {

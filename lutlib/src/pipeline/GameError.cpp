@@ -1,6 +1,8 @@
 // Display error summaries; see lut/pipeline/GameError.h.
 #include "lut/pipeline/GameError.h"
 
+#include "lut/ErrorStats.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,8 +12,9 @@ namespace lut {
 
 std::string GameError::str() const {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "max %.2f, mean %.3f, p99 %.2f 8-bit steps", maxSteps, meanSteps,
-                  p99Steps);
+    // max and p99 rounded up: rounded to nearest, a bound could print below the truth
+    std::snprintf(buf, sizeof buf, "max %.2f, mean %.3f, p99 %.2f 8-bit steps",
+                  roundUpDecimals(maxSteps, 2), meanSteps, roundUpDecimals(p99Steps, 2));
     return buf;
 }
 
@@ -42,6 +45,34 @@ GameError summariseSteps(std::vector<double>& steps) {
         std::min(steps.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * steps.size())) - 1);
     std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(k), steps.end());
     e.p99Steps = steps[k];
+    return e;
+}
+
+GameError summariseWeightedSteps(std::vector<std::pair<double, double>>& steps) {
+    GameError e;
+    e.count = steps.size();
+    if (steps.empty())
+        return e;
+    double sum = 0.0, weights = 0.0;
+    for (auto& [v, w] : steps) {
+        if (!(v == v))
+            v = std::numeric_limits<double>::infinity();
+        v = std::fabs(v);
+        sum += v * w;
+        weights += w;
+        e.maxSteps = std::max(e.maxSteps, v);
+    }
+    e.meanSteps = weights > 0.0 ? sum / weights : 0.0;
+    std::sort(steps.begin(), steps.end());
+    double below = 0.0;
+    e.p99Steps = steps.back().first;
+    for (const auto& [v, w] : steps) {
+        below += w;
+        if (below >= 0.99 * weights) {
+            e.p99Steps = v;
+            break;
+        }
+    }
     return e;
 }
 

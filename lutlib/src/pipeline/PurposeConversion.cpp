@@ -62,23 +62,20 @@ SmashAuthoringOptions authoringOptions(const PurposeOptions& o) {
     SmashAuthoringOptions a;
     a.gameLut = o.stageLut;
     a.aboveWhite = o.aboveWhite;
-    // Measured: the refinement too, so the report says what --refine would give.
-    a.refine = o.measure || o.refine;
-    a.measure = a.refine;
+    // Only what is written is computed: the refinement with refine (shipped when it beats the
+    // exact composition on colours it was not fitted on), the exact composition's error with
+    // measure.
+    a.refine = o.refine;
+    a.measure = o.measure || o.refine;
     a.screenshot = o.screenshot;
     a.nthreads = o.nthreads;
     return a;
 }
 
-// The game's LUT to use: the refinement, or the exact composition clamped to what the file holds.
-void finishGameLut(PurposeConversion& c, const PurposeOptions& o) {
-    if (o.refine) {
-        c.lut = c.authoring.lut;
-    } else {
-        c.lut = c.authoring.exact;
-        for (auto& e : c.lut.entries())
-            e = glm::clamp(e, glm::vec3(0.0f), glm::vec3(1.0f));
-    }
+// The game's LUT to use: the refinement when it won on the held-out colours, else the exact
+// composition clamped to what the file holds (SmashAuthoringResult::lut).
+void finishGameLut(PurposeConversion& c) {
+    c.lut = c.authoring.lut;
     c.measuredOver = c.authoring.measuredOver;
 }
 
@@ -216,7 +213,7 @@ PurposeConversion convertPurpose(const Lut3D& lut, LutPurpose from, LutPurpose t
         return c;
     }
     c.authoring = authorSmashLutForEdit(lut, o.editInterpolation, authoringOptions(o));
-    finishGameLut(c, o);
+    finishGameLut(c);
     return c;
 }
 
@@ -239,7 +236,7 @@ PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpos
                                         authoringOptions(o));
     c.authoring.exact.setTitle(title);
     c.authoring.lut.setTitle(title);
-    finishGameLut(c, o);
+    finishGameLut(c);
     return c;
 }
 

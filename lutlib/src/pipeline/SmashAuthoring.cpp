@@ -3,26 +3,26 @@
 #include "lut/pipeline/SmashAuthoring.h"
 
 #include "lut/Error.h"
+#include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "pipeline/GameDisplay.h"
+#include "pipeline/GameMeasure.h"
 #include "pipeline/GameSamples.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
-#include <optional>
 #include <string>
 
 namespace lut {
 
 namespace {
-
-using detail::GameSamples;
 
 // What the unedited game shows, with the stage LUT read directly at its own lattice points.
 class StageModel {
@@ -90,100 +90,26 @@ glm::dvec3 inputForShown(const glm::dvec3& d, const StageModel& stage, std::size
     return glm::dvec3(smashEncode(scene));
 }
 
-// The grid's cell centres (offset by half a sample): where the error is reported besides the grid
-// itself, so a refinement fitted to the grid is not measured only where it was fitted.
-GameSamples offsetGrid(const WantedDisplay& wanted, int k) {
-    GameSamples samples(kSmashLutSize);
-    const int m = (kSmashLutSize - 1) * k;
-    samples.reserve(static_cast<std::size_t>(m) * m * m);
-    for (int b = 0; b < m; ++b)
-        for (int g = 0; g < m; ++g)
-            for (int r = 0; r < m; ++r) {
-                const glm::dvec3 s = (glm::dvec3(r, g, b) + 0.5) / static_cast<double>(m);
-                samples.add(s, wanted(s));
-            }
-    return samples;
-}
-
-// The largest error between the samples of an m^3 grid (errors given per sample and channel,
-// red fastest): along each axis, between two neighbouring samples a, b the error can peak where
-// a kink sits (a clamp of the edit, the 8-bit steps of the LUT); its height is at most the two
-// samples' mean plus half the steeper of the slopes just outside them times the spacing.
-double peakBetween(const std::vector<double>& e, int m) {
-    auto at = [&](int r, int g, int b, int c) {
-        return e[3 * (static_cast<std::size_t>(r) +
-                      static_cast<std::size_t>(m) * (g + static_cast<std::size_t>(m) * b)) +
-                 static_cast<std::size_t>(c)];
-    };
-    double best = 0.0;
-    for (int b = 0; b < m; ++b)
-        for (int g = 0; g < m; ++g)
-            for (int r = 0; r < m; ++r)
-                for (int axis = 0; axis < 3; ++axis) {
-                    int q[3] = {r, g, b};
-                    if (q[axis] + 1 >= m)
-                        continue;
-                    for (int c = 0; c < 3; ++c) {
-                        auto v = [&](int offset) {
-                            int t[3] = {r, g, b};
-                            t[axis] = std::clamp(q[axis] + offset, 0, m - 1);
-                            return at(t[0], t[1], t[2], c);
-                        };
-                        const double ea = v(0), eb = v(1);
-                        const double slope = std::max(std::fabs(ea - v(-1)), std::fabs(v(2) - eb));
-                        best = std::max(best, 0.5 * (ea + eb) + 0.5 * slope);
-                    }
-                }
-    return best;
-}
-
-// The error over the samples and, when given, the offset grid: the larger of each statistic
-// (means over both together).
-GameError reportOver(const GameSamples& a, const GameSamples* b, const Lut3D& lut, int nthreads) {
-    const GameError ea = detail::gameErrorOver(a, lut, nthreads);
-    if (!b)
-        return ea;
-    const GameError eb = detail::gameErrorOver(*b, lut, nthreads);
-    GameError e = GameError::worst(ea, eb);
-    e.count = ea.count + eb.count;
-    e.meanSteps = (ea.meanSteps * double(ea.count) + eb.meanSteps * double(eb.count)) /
-                  double(std::max<std::size_t>(1, e.count));
-    return e;
-}
-
-GameSamples makeSamples(const WantedDisplay& wanted, const StageModel& stage,
-                        const SmashAuthoringOptions& o, std::string& over) {
-    GameSamples samples(kSmashLutSize);
-    if (o.screenshot && !o.screenshot->empty()) {
-        const ImageView& img = *o.screenshot;
-        const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
-        const std::size_t stride = std::max<std::size_t>(
-            1, (pixels + o.maxSamples - 1) / std::max<std::size_t>(1, o.maxSamples));
-        samples.reserve(pixels / stride + 1);
-        for (std::size_t p = 0; p < pixels; p += stride) {
-            const float* px =
-                img.pixel(static_cast<int>(p % img.width), static_cast<int>(p / img.width));
-            const glm::dvec3 d(detail::clampUnit(px[0]), detail::clampUnit(px[1]),
-                               detail::clampUnit(px[2]));
-            const glm::dvec3 s = inputForShown(d, stage, p);
-            samples.add(s, wanted(s));
-        }
-        over = "the screenshot's " + std::to_string(samples.size()) + " pixels" +
-               (stride > 1 ? " (every " + std::to_string(stride) + "th)" : std::string());
-        return samples;
-    }
-    const int k = std::max(1, o.gridSubdivision);
-    const int m = (kSmashLutSize - 1) * k + 1;
-    samples.reserve(static_cast<std::size_t>(m) * m * m);
-    for (int b = 0; b < m; ++b)
-        for (int g = 0; g < m; ++g)
-            for (int r = 0; r < m; ++r) {
-                const glm::dvec3 s = glm::dvec3(r, g, b) / static_cast<double>(m - 1);
-                samples.add(s, wanted(s));
-            }
-    over = "inputs on a " + std::to_string(m) + "^3 grid and its " + std::to_string(m - 1) +
-           "^3 cell centres (" + std::to_string(k) + " per LUT cell)";
-    return samples;
+// Whether the refinement beats the exact composition on colours it was not fitted on: a lower
+// mean (what it minimises), no higher 99th percentile and no worse maximum (half a step of slack:
+// both maxima are bounds). "" when it does, else why not (`where`: which colours).
+constexpr double kMaxSlackSteps = 0.5;
+std::string decide(const GameError& exact, const GameError& refined, const std::string& where) {
+    char buf[240];
+    if (!(refined.meanSteps < exact.meanSteps))
+        std::snprintf(buf, sizeof buf, "its %s mean is not lower: %.3f vs %.3f", where.c_str(),
+                      refined.meanSteps, exact.meanSteps);
+    else if (refined.p99Steps > exact.p99Steps)
+        std::snprintf(buf, sizeof buf, "its %s 99th percentile is higher: %.2f vs %.2f",
+                      where.c_str(), roundUpDecimals(refined.p99Steps, 2),
+                      roundUpDecimals(exact.p99Steps, 2));
+    else if (refined.maxSteps > exact.maxSteps + kMaxSlackSteps)
+        std::snprintf(buf, sizeof buf, "its %s maximum is higher: %.2f vs %.2f", where.c_str(),
+                      roundUpDecimals(refined.maxSteps, 2), roundUpDecimals(exact.maxSteps, 2));
+    else
+        return {};
+    return std::string("the exact composition: the refinement does not beat it (") + buf +
+           " 8-bit steps)";
 }
 
 } // namespace
@@ -220,34 +146,76 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
             }
     if (!o.measure && !o.refine)
         return res;
-    const StageModel stage(o.gameLut);
-    const GameSamples samples = makeSamples(wanted, stage, o, res.measuredOver);
-    std::optional<GameSamples> centres;
-    if (!o.screenshot || o.screenshot->empty())
-        centres = offsetGrid(wanted, std::max(1, o.gridSubdivision));
-    const GameSamples* extra = centres ? &*centres : nullptr;
-    const int m = (kSmashLutSize - 1) * std::max(1, o.gridSubdivision) + 1;
-    auto report = [&](const Lut3D& lut) {
-        GameError e = reportOver(samples, extra, lut, o.nthreads);
-        if (extra) { // on a grid: what it can reach between its samples too
-            std::vector<double> each;
-            (void)detail::gameErrorOver(samples, lut, o.nthreads, &each);
-            e.maxSteps = std::max(e.maxSteps, peakBetween(each, m));
+    const Lut3D exact8 = quantized8(res.lut);
+    const int k = std::max(1, o.gridSubdivision);
+    Lut3D refined;
+    if (o.screenshot && !o.screenshot->empty()) {
+        const StageModel stage(o.gameLut);
+        const double clipS = o.gameLut ? 0.0 : 1.0 / static_cast<double>(kSmashBrightenScale);
+        const detail::ShotColours colours(
+            *o.screenshot, wanted,
+            [&](const glm::dvec3& d, std::size_t p) { return inputForShown(d, stage, p); }, clipS);
+        res.measuredOver = "the screenshot's " + std::to_string(colours.pixels()) + " pixels (" +
+                           std::to_string(colours.distinct()) + " distinct colours" +
+                           (clipS > 0.0 ? "; a channel shown white at every input that shows "
+                                          "white"
+                                        : "") +
+                           ")";
+        res.exactError = colours.error(exact8, false, o.nthreads);
+        if (!o.refine)
+            return res;
+        res.refinementComputed = true;
+        const detail::GameSamples train = colours.training(o.maxSamples, false);
+        refined = detail::refineSmashLut(train, res.exact, o.nthreads);
+        res.heldOutExact = colours.error(exact8, true, o.nthreads);
+        res.heldOutRefined = colours.error(refined, true, o.nthreads);
+        res.fittedOn = std::to_string(train.size()) + " pixels of " +
+                       std::to_string(colours.distinct() - colours.heldOutColours()) +
+                       " colours, checked on the other " +
+                       std::to_string(colours.heldOutColours()) + " colours";
+        res.decision = decide(res.heldOutExact, res.heldOutRefined, "held-out");
+        if (res.decision.empty()) {
+            // the held-out colours occur too: the LUT written is fitted on every colour, and
+            // checked again over all of them
+            refined =
+                detail::refineSmashLut(colours.training(o.maxSamples, true), res.exact, o.nthreads);
+            res.fittedOn += ", then refitted on all of them";
+            res.refinedError = colours.error(refined, false, o.nthreads);
+            res.decision = decide(res.exactError, res.refinedError, "refitted (over every pixel)");
+        } else {
+            res.refinedError = colours.error(refined, false, o.nthreads);
         }
-        return e;
-    };
-    res.exactError = report(quantized8(res.lut));
-    if (o.refine) {
-        Lut3D refined = detail::refineSmashLut(samples, res.exact, o.nthreads);
-        GameError refinedError = report(refined);
-        // a refinement that does not lower the mean error is no refinement: ship the exact one
-        if (refinedError.meanSteps > res.exactError.meanSteps) {
-            refined = quantized8(res.lut);
-            refinedError = res.exactError;
-        }
+    } else {
+        res.exactError = detail::gameErrorEverywhere(wanted, exact8, k, o.nthreads);
+        const int m = (kSmashLutSize - 1) * k;
+        res.measuredOver = "every input (a bound from " + std::to_string(m * m * m) +
+                           " held-out inputs between the points of a " + std::to_string(m + 1) +
+                           "^3 grid, plus the slope between them; mean and p99 over those inputs)";
+        if (!o.refine)
+            return res;
+        res.refinementComputed = true;
+        refined = detail::refineSmashLut(detail::gridPoints(wanted, k), res.exact, o.nthreads);
+        // the grid's cell centres are held out: mean and p99 there, the maximum over every input
+        res.heldOutExact = res.exactError;
+        res.heldOutRefined = detail::gameErrorEverywhere(wanted, refined, k, o.nthreads);
+        res.refinedError = res.heldOutRefined;
+        res.fittedOn = "the " + std::to_string(m + 1) + "^3 grid's points, checked on the " +
+                       std::to_string(m * m * m) + " centres between them and every input";
+        res.decision = decide(res.heldOutExact, res.heldOutRefined, "held-out");
+    }
+    res.refined = res.decision.empty();
+    if (res.refined) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "mean %.3f -> %.3f, p99 %.2f -> %.2f, max %.2f -> %.2f",
+                      res.heldOutExact.meanSteps, res.heldOutRefined.meanSteps,
+                      roundUpDecimals(res.heldOutExact.p99Steps, 2),
+                      roundUpDecimals(res.heldOutRefined.p99Steps, 2),
+                      roundUpDecimals(res.heldOutExact.maxSteps, 2),
+                      roundUpDecimals(res.heldOutRefined.maxSteps, 2));
+        res.decision = std::string("the refinement: it beats the exact composition where it was "
+                                   "not fitted (held-out ") +
+                       buf + " 8-bit steps)";
         res.lut = std::move(refined);
-        res.refined = true;
-        res.refinedError = refinedError;
     }
     return res;
 }

@@ -140,6 +140,30 @@ void checkChromaSubsampling(const PatchReading& patch, const ExtractOptions& o,
                    "do not crop before saving");
 }
 
+// --strength: every entry of the edit moved back towards what it was before the edit (a stage
+// patch's colours before the edit, else its lattice inputs).
+void blendEdit(PatchReading& patch, bool stage, const StrengthOptions& strength,
+               ExtractResult& res) {
+    if (stage && !patch.inputs)
+        throw Error("a partial strength needs the colours this patch held before the edit: name "
+                    "the stage's LUT it was embedded with (--original-lut)");
+    const StrengthAmounts a = strengthAmounts(strength);
+    const int n = patch.values.size();
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 before = stage ? patch.inputs->at(r, g, b)
+                                               : glm::vec3(patch.axis[static_cast<std::size_t>(r)],
+                                                           patch.axis[static_cast<std::size_t>(g)],
+                                                           patch.axis[static_cast<std::size_t>(b)]);
+                patch.values.at(r, g, b) = glm::vec3(
+                    blendStrength(glm::dvec3(before), glm::dvec3(patch.values.at(r, g, b)), a));
+            }
+    addNote(res, formatMessage("strength: the edit blended with the picture before it, lightness "
+                               "%g, chroma %g (Oklab)",
+                               a.luma, a.chroma));
+}
+
 } // namespace
 
 ExtractResult extractLut(const ImageView& edited, const ExtractOptions& options) {
@@ -191,6 +215,8 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         }
     res.readNoiseMean = noiseSum / (3.0 * static_cast<double>(noise.max.entryCount()));
 
+    if (!isFullStrength(options.strength))
+        blendEdit(patch, stage, options.strength, res);
     const PatchFunction edit(patch.values, patch.axis);
     if (res.target == LutPurpose::Raw) {
         if (stage)
@@ -218,9 +244,11 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         at.maxSteps = res.readNoiseMax;
         at.meanSteps = res.readNoiseMean;
         at.p99Steps = res.readNoiseMax;
-        all.maxSteps = res.readNoiseMax + 0.5 * res.subLattice.maxSteps;
+        // between the strip's points: all of the sub-lattice residual for the largest values
+        // (as for every patch, ExtractBounds.cpp), half for the mean
+        all.maxSteps = res.readNoiseMax + res.subLattice.maxSteps;
         all.meanSteps = res.readNoiseMean + 0.5 * res.subLattice.meanSteps;
-        all.p99Steps = res.readNoiseMax + 0.5 * res.subLattice.p99Steps;
+        all.p99Steps = res.readNoiseMax + res.subLattice.p99Steps;
         res.expected.atLattice = at;
         res.expected.overall = all;
         res.expected.covers = "the LUT's values against Smush-LUT's model (the strip's edit is an "
@@ -244,6 +272,17 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                 shot[c] = static_cast<float>(detail::gameShown(l0[c], s[c]));
             return glm::dvec3(edit(shot));
         };
+        // The same from the display's table (within 0.0003 8-bit steps) for the expected error,
+        // which evaluates it at ~700k inputs: the authoring above keeps the exact display.
+        const std::function<glm::dvec3(const glm::dvec3&)> wantedFast = [&](const glm::dvec3& s) {
+            if (stage)
+                return glm::dvec3(edit(glm::vec3(s)));
+            const glm::vec3 l0 = original ? original->sample(glm::vec3(s)) : glm::vec3(s);
+            glm::vec3 shot;
+            for (int c = 0; c < 3; ++c)
+                shot[c] = static_cast<float>(detail::gameShownTabulated(l0[c], s[c]));
+            return glm::dvec3(edit(shot));
+        };
         SmashAuthoringOptions ao;
         ao.gameLut = stage ? nullptr : options.originalLut;
         ao.refine = options.refine;
@@ -254,6 +293,9 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         res.clampedMax = authored.clampedMax;
         res.refined = authored.refined;
         res.exactModelError = authored.exactError;
+        res.refineDecision = authored.refinementComputed ? "fitted on " + authored.fittedOn +
+                                                               "; written: " + authored.decision
+                                                         : std::string();
         res.lut = std::move(authored.lut);
         // Below half an 8-bit step the clamp cannot change a stored entry: no warning (the CLI
         // still says how many were clamped).
@@ -264,8 +306,8 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                                      "were clamped: the game cannot show those colours",
                                      double(res.clampedEntries), res.clampedMax,
                                      res.clampedMax * 255.0));
-        res.expected = detail::smashExpectedError(patch, sub, noise, quantized8(res.lut), wanted,
-                                                  stage ? nullptr : options.originalLut,
+        res.expected = detail::smashExpectedError(patch, sub, noise, quantized8(res.lut),
+                                                  wantedFast, stage ? nullptr : options.originalLut,
                                                   res.modelError, options.nthreads);
     }
     res.lut.setTitle(std::string("extracted from a ") + std::to_string(n) + "^3 patch (" +
@@ -283,13 +325,13 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
             "  over all inputs, between the lattice points too: " + res.expected.overall.str());
     addNote(res, formatMessage("  made of: read error of the entries up to %.2f steps (storage, "
                                "blocks, neighbouring entries, marker cells), interpolation "
-                               "between patch entries up to %.2f (sub-lattice check), the LUT "
-                               "itself up to %.2f",
-                               res.readNoiseMax, res.subLattice.maxSteps, res.modelError.maxSteps));
-    if (res.refined)
-        addNote(res, "least-squares refinement: the game vs the patch's edit " +
-                         res.exactModelError.str() + " with the exact composition, " +
-                         res.modelError.str() + " refined");
+                               "between patch entries up to %.2f (sub-lattice check and each "
+                               "entry against its neighbours), the LUT itself up to %.2f at "
+                               "the points measured",
+                               res.readNoiseMax, res.expected.interpolationSteps,
+                               res.modelError.maxSteps));
+    if (!res.refineDecision.empty())
+        addNote(res, "least-squares refinement: " + res.refineDecision);
     return res;
 }
 

@@ -4,13 +4,15 @@
 //     model(x) + interpolation(x) + noise(x)
 //   model          what the LUT does against the edit as the patch measured it (computed)
 //   interpolation  how far the patch's interpolant can be from the true edit between its entries:
-//                  the sub-lattice check's residuals around x (spacing 2h: an over-estimate for
-//                  smooth edits, about right at kinks)
+//                  the sub-lattice check's residuals around x, all of the largest nearby (an
+//                  entry predicted from neighbours a spacing away: four times the error for
+//                  smooth edits, about the error at kinks and steep powers near black)
 //   noise          the read error of the entries around x: half a storage step, the noise the
 //                  neighbouring entries show beyond that (a cubic through the neighbours along
 //                  each axis predicts every entry; the median misfit, robust to kinks, gives a
 //                  noise level), the pixel spread of their blocks and the marker cells' spread
-// summarised over a grid four times finer than the output LUT's lattice (docs/roundtrip.md).
+// summarised over a grid four times finer than the output LUT's lattice, the maximum bounded
+// between the grid's points too (lut/ops/ErrorBound.h; docs/roundtrip.md, docs/accuracy.md).
 #include "lut/Lut3D.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchReader.h"

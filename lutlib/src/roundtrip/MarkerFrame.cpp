@@ -35,7 +35,7 @@ int depthFromCode(int code) {
     return code == 0 ? 8 : code == 1 ? 16 : 32;
 }
 int layoutCode(LutLayout l) {
-    switch (l) {
+    switch (layoutPlacement(l)) { // the 1024x32 names place pixels as unreal and unity
     case LutLayout::Pilot:
         return 0;
     case LutLayout::Unity:
@@ -44,6 +44,9 @@ int layoutCode(LutLayout l) {
         return 2;
     case LutLayout::Hald:
         return 3;
+    case LutLayout::Reshade:
+    case LutLayout::Unity32:
+        break;
     }
     return 0;
 }

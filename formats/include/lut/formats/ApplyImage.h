@@ -12,6 +12,8 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/io/OutputPolicy.h"
 
+#include <cstdint>
+#include <functional>
 #include <string>
 
 namespace lut::formats {
@@ -24,6 +26,14 @@ struct ApplyImageOptions {
     int threads = 0;         // compute threads (0 = all cores)
     int rowsPerChunk = 0;    // 0 = automatic; the image height = one chunk (whole frame)
     bool overlap = true;     // read, compute and write on threads of their own
+    // Which subimage of a file holding several (OpenEXR parts, TIFF pages, GIF frames): -1 =
+    // every one (the output format must hold them: OpenEXR, TIFF, GIF; else MultiImageError).
+    // MIP levels are kept where the output format has them.
+    int subimage = -1;
+    // Called once the file's header is read and before any pixel is decoded, with the memory
+    // the read will hold at once (chunk buffers, a whole-image decoder's frame): a batch holds
+    // its budget here (lutkit's --max-memory). May block; throws to refuse the file.
+    std::function<void(std::uint64_t bytes, const std::string& what)> reserveMemory;
 };
 
 struct ApplyImageReport {
@@ -36,6 +46,7 @@ struct ApplyImageReport {
     DomainStats clamped;
     Diagnostics diagnostics; // what was not kept, and why (warnings, notes)
     bool unchanged = false;  // the chain cannot change these pixels: stored values copied
+    int parts = 1;           // images written (subimages and MIP levels)
     double seconds = 0.0;
 };
 

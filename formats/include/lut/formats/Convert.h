@@ -15,6 +15,7 @@
 #include "lut/LutPurpose.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/FormatOptions.h"
+#include "lut/ops/Strength.h"
 #include "lut/pipeline/PurposeConversion.h"
 
 #include <optional>
@@ -37,6 +38,9 @@ struct ConvertOptions {
     std::optional<LutPurpose> outPurpose;
     // raw <-> smash: the stage LUT, the screenshot, the refinement, the rule above white.
     PurposeOptions purpose;
+    // The LUT blended with neutral before it is resampled and written (lut/ops/Strength.h); a
+    // shaper is baked into the 3D table first (the neutral of the whole file).
+    StrengthOptions strength;
 };
 
 // What the input and the output are for, and the conversion between them.
@@ -63,8 +67,9 @@ struct ConvertReport {
     LutFile input; // as read (with its diagnostics)
     double readSeconds = 0.0;
     PurposeStep purpose;
-    std::string outputFormat;             // the writer's name
-    std::optional<ResampleStep> resample; // nullopt: written at the input's size
+    std::string outputFormat;                // the writer's name
+    std::optional<StrengthAmounts> strength; // nullopt: full strength, the LUT as read
+    std::optional<ResampleStep> resample;    // nullopt: written at the input's size
     Diagnostics writeDiagnostics;
     double writeSeconds = 0.0;
     std::optional<LutFile> readBack;   // the output read back (nullopt: it could not be read)
@@ -73,11 +78,12 @@ struct ConvertReport {
     double totalSeconds = 0.0;
 };
 
-// Reads `input`, turns it into the output's purpose (a game LUT is 16^3: a size other than 16
-// for it is an error), resamples when the output stores another size, writes `output`, reads it
-// back and measures. Throws lut::Error for an unknown format name, an output extension no format
-// writes, an unreadable input, a size outside lut/Limits.h, or a failed write (the old output,
-// if any, is left as it was).
+// Reads `input`, blends it with neutral when options.strength asks (the edit: before it is made
+// into the game's LUT, after a game LUT is made into its edit), turns it into the output's purpose
+// (a game LUT is 16^3: a size other than 16 for it is an error), resamples when the output stores
+// another size, writes `output`, reads it back and measures. Throws lut::Error for an unknown
+// format name, an output extension no format writes, an unreadable input, a size outside
+// lut/Limits.h, or a failed write (the old output, if any, is left as it was).
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options = {});
 

@@ -4,9 +4,11 @@
 // (PNG, OpenEXR scanline files, PNM) are linked in; every other format goes through OpenImageIO,
 // in a module loaded on first use (formats/src/imageio/ImageIOModuleApi.h says why). Streaming a
 // LUT through an image without a float frame: lut/formats/ApplyImage.h.
+#include "lut/Error.h"
 #include "lut/Image.h"
 #include "lut/Progress.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +40,20 @@ struct ImageInfo {
     // "4:2:2", "4:4:4": jpeg:subsampling).
     std::string colorSpace;
     std::string chromaSubsampling;
+    // Tiled files (OpenEXR, TIFF, IFF): the tile size, read tile row by tile row and kept when
+    // the output format has tiles; 0 = scanlines or strips.
+    int tileWidth = 0;
+    int tileHeight = 0;
+    // Images in the file: OpenEXR parts, TIFF pages, GIF frames, PSD layers OpenImageIO lists,
+    // and each one's MIP levels. 1 for a plain image; this describes the first level of the first.
+    int subimages = 1;
+    int mipLevels = 1; // of this subimage
+    int subimage = 0;  // which one this is (from 0), and which of its MIP levels
+    int mipLevel = 0;
+    // Memory the decoder itself holds while reading besides the caller's rows (formats whose
+    // reader decodes the whole image at once: TGA, BMP, GIF, PSD, WebP, IFF, DPX, an interlaced
+    // PNG), to reserve before decoding.
+    std::uint64_t decoderBytes = 0;
 };
 
 // What a file carries besides its pixels (PNG chunks, EXR header attributes, TIFF/EXIF tags, the
@@ -51,16 +67,56 @@ struct LoadedImage {
     std::shared_ptr<const ImageMetadata> metadata;
 };
 
-// Reads the first subimage ("-" = standard input; `format` names its format, else it is told
+// A file holding several images (OpenEXR parts, TIFF pages, GIF frames) where one is read:
+// "PATH: holds N images (OpenEXR parts); ..." naming how to pick one.
+class MultiImageError : public Error {
+public:
+    MultiImageError(const std::string& path, int count, const std::string& kind);
+    int count() const { return m_count; }
+    const std::string& kind() const { return m_kind; } // "OpenEXR parts", "TIFF pages", ...
+
+private:
+    int m_count;
+    std::string m_kind;
+};
+// readImage's `subimage` for "the file's only image": a file holding several is refused with
+// MultiImageError. MIP levels below the first (texture files) are not read.
+constexpr int kOnlyImage = -1;
+// What a file's subimages are called: "OpenEXR parts", "TIFF pages", "GIF frames", "subimages".
+std::string subimageKind(const std::string& format);
+
+// Reads one image ("-" = standard input; `format` names its format, else it is told
 // from its first bytes). Throws lut::Error naming the file (truncated and corrupt files too:
 // never grey pixels), LimitError for images larger than lut::limits::kMaxImagePixels or
 // declaring more pixels than their bytes can hold, refused before any pixel buffer is allocated.
 // FIFOs, devices and folders are refused before they are opened. With `progress`, the rows
 // decoded so far are reported and a cancel stops the read at the next chunk of rows
-// (CancelledError naming the file).
+// (CancelledError naming the file). `subimage`: which image of a file that holds several
+// (kOnlyImage: the file must hold one).
 LoadedImage readImage(const std::string& path, const std::string& format = {},
-                      const Progress* progress = nullptr);
-ImageInfo readImageInfo(const std::string& path, const std::string& format = {});
+                      const Progress* progress = nullptr, int subimage = kOnlyImage);
+// Describes subimage `subimage` (kOnlyImage: the first; info.subimages says how many there are).
+ImageInfo readImageInfo(const std::string& path, const std::string& format = {},
+                        int subimage = kOnlyImage);
+
+// The plausibility rule every image read applies before any codec opens the file, for callers
+// that hand an image file to another library (or want to refuse it early): what the header
+// declares (size, channels, bit depth, compression, every part, page or layer it lists) against
+// lut::limits::kMaxImagePixels and against what the file's bytes can hold for that codec at its
+// highest possible compression (the ratios are in docs/robustness.md). Throws lut::LimitError
+// "PATH: declares WxH pixels (N bytes as stored) in M bytes of FORMAT data, more than CODEC data
+// can hold (at most R:1): truncated or corrupt", or lut::Error for a FIFO, device or folder, or
+// a header field whose size runs past the file. Reads the header only (a few KiB). `format`
+// names a TGA's format when the path does not (TGA has no magic number).
+struct ImageDeclaration {
+    std::string format; // "png", "jpeg", "tiff", "openexr", ...; "" = not a format it knows
+    int width = 0;      // the first image's
+    int height = 0;
+    int channels = 0;
+    int images = 0;                 // images listed: EXR parts, TIFF pages, PSD merged + layers
+    std::uint64_t decoderBytes = 0; // what the format's reader holds at once (ImageInfo's)
+};
+ImageDeclaration checkImageFile(const std::string& path, const std::string& format = {});
 
 struct ImageWriteOptions {
     ImageWriteOptions(int bits = 8, bool ditherOn = false, bool withAlpha = true)

@@ -7,7 +7,8 @@ namespace lut::formats {
 // formats lives in formats/src/Registry.cpp.
 void registerBuiltinFormats();
 
-// Reads a LUT file with the built-in formats registered (convenience for callers).
+// Reads a LUT file with the built-in formats registered (convenience for callers). A path
+// "builtin:NAME" is a LUT known by name (lut/io/BuiltinLut.h: format "builtin", dialect NAME).
 LutFile readLut(const std::string& path, const FormatOptions& options = {},
                 const std::string& formatName = {});
 Diagnostics writeLut(const std::string& path, const LutFile& lut, const FormatOptions& options = {},

@@ -29,9 +29,11 @@ struct LutFile;
 //    within float rounding of a lattice point (|t - round(t)| <= (t + |min|*scale) * 2^-22) is
 //    moved onto it, so lattice inputs given as floats (Lut3D::latticeInput) hit their entries.
 //  - Degenerate domains (max - min tiny): the scale is computed in double and kept finite.
-//  - applyPixels() runs a SIMD kernel (AVX2 + FMA when the CPU has it, chosen at run time) that
+//  - applyPixels() runs a SIMD kernel (AVX2 + FMA when the CPU has it; tetrahedral on AVX-512
+//    F + DQ where the CPU has that, bit-identical to its AVX2 twin; chosen at run time) that
 //    follows this policy operation for operation and agrees with sample() to float rounding.
-//    LUTKIT_SIMD=scalar in the environment makes new samplers use the scalar loop instead.
+//    LUTKIT_SIMD=scalar in the environment makes new samplers use the scalar loop instead,
+//    LUTKIT_SIMD=avx2 the AVX2 kernels on an AVX-512 CPU.
 class Sampler {
 public:
     virtual ~Sampler();
@@ -54,7 +56,8 @@ std::unique_ptr<Sampler> makeSampler(const Lut3D& lut, Interpolation method);
 // no table.
 std::unique_ptr<Sampler> makeSampler(const LutFile& file, Interpolation method);
 
-// Name of the SIMD path new samplers use on this CPU: "avx2" or "scalar".
+// Name of the SIMD path new samplers use on this CPU: "avx512" (tetrahedral on AVX-512, the
+// other methods on AVX2), "avx2" or "scalar".
 const char* samplerIsa();
 
 } // namespace lut

@@ -5,13 +5,17 @@
 //  1. the writer's own status (the caller throws before commit() when its writer failed);
 //  2. the file: it exists, is not empty, has the expected size when one is given, and passes the
 //     caller's verifier (image writers read the file back; LUT writers compare the bytes);
-//  3. fsync of the temporary file, rename, fsync of the folder.
+//  3. fsync of the temporary file, rename, fsync of the folder. An output that did not exist
+//     when the write began (or that lut::checkOutput found absent under a rule that never
+//     replaces) is renamed into place only if it is still absent: a file another program
+//     created meanwhile is kept, and commit() throws "PATH: already exists: ...".
 // Any failure removes the temporary file, keeps the old output as it was, and throws lut::Error
 // "OUTPUT: cannot write: REASON" naming the path the caller gave (never the hidden temporary
 // name), REASON being the system's own words when a write to that folder fails now ("No space left
 // on device", "Disk quota exceeded"), else the writer's or verifier's message.
 // Temporary files are registered for removal on SIGINT/SIGTERM (lut/io/TempFiles.h); once the
 // program is interrupted, construction and commit() throw InterruptedError.
+#include "lut/io/OutputPolicy.h"
 #include "lut/io/ProtectInputs.h" // checkNotSameFile, declared here before
 #include "lut/io/TempFiles.h"
 
@@ -66,6 +70,7 @@ private:
 
     std::string m_path;
     std::string m_tempPath;
+    bool m_existed = false; // the output existed when the write began: it may be replaced
     int m_fd = -1;
     bool m_done = false;
     TempPathRegistration m_registration;

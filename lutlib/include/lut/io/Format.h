@@ -4,6 +4,7 @@
 #include "lut/LutFile.h"
 #include "lut/io/FormatOptions.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,10 +48,22 @@ public:
     // error before writing: the one lattice size the format stores (0 = any) and the integer bit
     // depth of its values (0 = float or varies with options).
     virtual int fixedSize() const { return 0; }
+    // The same for a write with these options (a LUT image's layout may fix the size: reshade and
+    // unity-32 are 32^3).
+    virtual int fixedSizeFor(const FormatOptions& options) const {
+        (void)options;
+        return fixedSize();
+    }
     virtual int storedBitDepth() const { return 0; }
     // Whether the written file keeps a 1D shaper and a 3D table's input range (domain) as they
     // are (.cube's Resolve dialect, .clf, .ctf, .csp), so an HDR or log input needs no resampling.
     virtual bool holdsShaper() const { return false; }
+
+    // Standard input is read whole before a reader sees it, so each format says how long a
+    // stream that starts with `head` (its first 1 MiB, or all of it) can be in this format: 0 when
+    // it cannot be one. The default, for text formats: no NUL byte in head, and up to
+    // lut::limits::kMaxLutFileBytes.
+    virtual std::uint64_t maxStreamBytes(std::string_view head) const;
 };
 
 } // namespace lut

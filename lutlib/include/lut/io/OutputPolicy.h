@@ -51,9 +51,17 @@ private:
 
 // Applies the rule to one output path; never creates, opens or changes anything. Throws
 // OutputExistsError, or lut::Error naming the path ("is a folder", "folder DIR does not exist",
-// "output is the same file as input IN").
+// "output is the same file as input IN"). A path found absent under a rule that never replaces
+// (Refuse, Skip) is remembered as an exclusive output: lut::AtomicFile renames into it only if
+// it is still absent, so a file another program created meanwhile (two `lutkit convert` runs
+// writing one new file) is kept and the second writer fails naming it.
 OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
                          const std::vector<std::string>& inputs = {});
+
+// Whether path was found absent by checkOutput under Refuse or Skip and not written since.
+bool isExclusiveOutput(const std::string& path);
+// Written (by AtomicFile): the path is an ordinary output again.
+void forgetExclusiveOutput(const std::string& path);
 
 // Whether path stands for standard input or output ("-").
 inline bool isStdStream(const std::string& path) {

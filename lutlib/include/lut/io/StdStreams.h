@@ -4,6 +4,8 @@
 #include "lut/io/Format.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <string>
 
 namespace lut {
@@ -11,6 +13,21 @@ namespace lut {
 // All of standard input. Throws lut::LimitError past maxBytes ("-: standard input is over the
 // limit of N bytes") and lut::Error when it cannot be read.
 std::string readStandardInput(std::size_t maxBytes);
+
+// What a stream may be, judged from its first bytes: at most `bytes` in all (0 = maxBytes), with
+// `what` saying why in the error past it ("its PNG header declares 64x64 pixels").
+struct StreamBound {
+    std::uint64_t bytes = 0;
+    std::string what;
+};
+// The same, bounded by its content: once the first kStreamHeadBytes (1 MiB) have arrived (or
+// all of it, when it is shorter), bound(head) says how long the whole may be, or throws to
+// refuse it at once (standard input that is no format the caller reads: `lutkit info - <
+// /dev/zero` stops after 1 MiB instead of taking 2 GB). Past the bound: lut::LimitError "-:
+// standard input is over the N bytes WHAT".
+constexpr std::size_t kStreamHeadBytes = std::size_t(1) << 20;
+std::string readStandardInput(std::size_t maxBytes,
+                              const std::function<StreamBound(const std::string& head)>& bound);
 
 // Writes lut with format to path under lut::checkOutput's rules with ExistingOutput::Replace
 // (callers that refuse existing outputs check first): "-" and special files in place through

@@ -55,11 +55,13 @@ struct InvertReport {
     // 3D: cells of A with a flat or folded tetrahedron; 1D: segments (over all channels) that
     // are not strictly monotone in the curve's direction.
     std::size_t foldedCells = 0;
-    double maxResidual = 0.0; // max |A(inverse entry) - target| over all points
+    double maxResidual = 0.0; // max |A(inverse entry) - target| over the lattice points
     double meanResidual = 0.0;
-    // |inverse(A(x)) - x| on a probe grid over A's domain (3D: the grid ComposeOptions::probes
-    // describes for A's size; 1D: 4 (N - 1) + 1 points per channel): how close
-    // compose(A, inverse) is to the identity.
+    // |A(inverse(y)) - y| over every y of the inverse's domain, between its lattice points too
+    // (the inverse interpolated as it will be applied): maxAbs a bound (lut/ops/ErrorBound.h).
+    ErrorStats residual;
+    // |inverse(A(x)) - x| over every x of A's domain: how close compose(A, inverse) is to the
+    // identity; maxAbs a bound as for residual.
     ErrorStats roundTrip;
     std::size_t sanitizedEntries = 0;
     double seconds = 0.0;

@@ -7,7 +7,7 @@
 
 namespace lut {
 
-// error: the source and the result compared on lut::compareLuts' probe grid (CompareLuts.h).
+// error: a bound of |source - result| over every input, as lut::resampleWithError reports it.
 OpResult resize(const Lut3D& lut, int size, Interpolation method = Interpolation::Tetrahedral,
                 int nthreads = 0);
 

@@ -3,6 +3,7 @@
 // the Smash authoring functions (lut/pipeline/SmashAuthoring.h) and the round trip report.
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lut {
@@ -21,5 +22,8 @@ struct GameError {
 // Summarises absolute errors given in 8-bit steps (the vector is reordered). NaN counts as
 // infinite.
 GameError summariseSteps(std::vector<double>& steps);
+// The same for values with weights ({steps, weight}; reordered): the weighted mean and 99th
+// percentile, the largest value; count = the number of values.
+GameError summariseWeightedSteps(std::vector<std::pair<double, double>>& steps);
 
 } // namespace lut

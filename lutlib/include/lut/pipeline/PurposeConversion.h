@@ -31,8 +31,9 @@ struct PurposeOptions {
     AboveWhite aboveWhite = kEditAboveWhite;
     Interpolation editInterpolation = Interpolation::Tetrahedral; // how the edit is evaluated
     const Lut3D* stageLut = nullptr; // the stage the edit was made on (null: the neutral game)
-    // Report what the game shows (SmashAuthoringResult) with the exact composition and with the
-    // least-squares refinement; `refine` ships the refinement (and implies measure).
+    // Report what the game shows (SmashAuthoringResult) with the exact composition; `refine` also
+    // computes the least-squares refinement and ships it when it beats the exact composition on
+    // colours it was not fitted on (and implies measure). Only what is asked for is computed.
     bool measure = false;
     bool refine = false;
     const ImageView* screenshot = nullptr; // the colours measured and refined over
@@ -46,7 +47,7 @@ struct PurposeConversion {
     LutPurpose to = LutPurpose::Raw;
     bool converted() const { return from != to; }
     // What to use or write: the input as it is (same purpose); smash: 16^3 in [0,1] (the exact
-    // composition clamped, or the refinement); raw: rawSize^3.
+    // composition clamped, or the refinement when it won); raw: rawSize^3.
     Lut3D lut;
     // raw -> smash: the exact composition (unclamped), what the game shows when measured, the
     // entries it cannot reach.

@@ -11,9 +11,14 @@
 //     L(s)      = (srgb^-1(wanted)^(1/2.2) / 1.3703 - s) / 0.99961 + s      the exact entry
 // so the game shows wanted(s) at every lattice point. Between lattice points the game interpolates
 // L trilinearly, which is not the composition evaluated there: the refinement chooses the entries
-// that minimise the squared error of what the game shows over the colours that occur (a
-// screenshot's pixels, else inputs on a grid four times finer than the LUT's), and rounds them
-// to the 8-bit values the nutexb stores by a search on the true error.
+// that minimise the squared error of what the game shows over colours that occur (three quarters
+// of a screenshot's distinct colours, else the inputs on a grid four times finer than the LUT's),
+// rounds them to the 8-bit values the nutexb stores by a search on the true error, and is shipped
+// only when it beats the exact composition on the colours it was not fitted on (the other
+// quarter, or the centres between the grid's points; a screenshot's refinement that wins is then
+// fitted again on all its colours). What the game shows is reported where
+// nothing was fitted: over every input (a bound, lut/ops/ErrorBound.h) or every pixel of the
+// screenshot (pipeline/GameMeasure.h).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
@@ -43,26 +48,36 @@ using DisplayEdit = std::function<glm::vec3(glm::vec3)>;
 struct SmashAuthoringOptions {
     const Lut3D* gameLut = nullptr; // the stage's LUT the picture was made with (null: neutral)
     AboveWhite aboveWhite = AboveWhite::Clip;
-    bool refine = false; // also compute the least-squares refinement and ship it
+    // Also compute the least-squares refinement, and ship it when it beats the exact composition
+    // on the held-out colours. Off: only the exact composition is computed (and measured).
+    bool refine = false;
     // The colours that occur: a screenshot the game showed (display-encoded, unedited). Null: the
     // inputs s on a grid gridSubdivision times finer than the LUT's (61^3 for 4).
     const ImageView* screenshot = nullptr;
-    std::size_t maxSamples = 250000; // a screenshot's pixels are subsampled regularly beyond this
+    std::size_t maxSamples = 250000; // the refinement's pixels are subsampled regularly beyond this
     int gridSubdivision = 4;
     bool measure = true; // false: only the exact composition (no error report, no refinement)
     int nthreads = 0;
 };
 
 struct SmashAuthoringResult {
-    Lut3D exact;          // the composition at the lattice points, unclamped (16^3)
-    Lut3D lut;            // what to ship: the refinement when asked for, else exact in [0,1]
-    bool refined = false; // lut is the refinement
-    // What the game shows with the 8-bit LUT vs wanted, over the colours (display steps):
-    GameError exactError;           // with exact rounded to nearest
-    GameError refinedError;         // with the refinement (count 0 unless refined)
+    Lut3D exact; // the composition at the lattice points, unclamped (16^3)
+    // What to ship: the refinement when it won on the held-out colours, else exact in [0,1].
+    Lut3D lut;
+    bool refined = false;            // lut is the refinement
+    bool refinementComputed = false; // options.refine: the refinement was computed and checked
+    // What the game shows with the 8-bit LUT vs wanted, over measuredOver (display steps; the
+    // max an upper bound over it):
+    GameError exactError;   // with exact rounded to nearest
+    GameError refinedError; // with the refinement (count 0 unless computed)
+    // The same over the held-out colours only (the refinement never saw them): what decided.
+    GameError heldOutExact, heldOutRefined;
+    std::string fittedOn; // "the 61^3 grid's points, checked on the 216000 centres between them"
+    std::string decision; // which LUT is shipped and why ("" unless the refinement was computed)
     std::size_t clampedEntries = 0; // channel values of exact outside [0,1]
     double clampedMax = 0.0;        // ... the farthest (in [0,1] units)
-    std::string measuredOver;       // "the screenshot's 921600 pixels" / "inputs on a 61^3 grid"
+    std::string
+        measuredOver; // "every input (a bound ...)" / "the screenshot's 921600 pixels (...)"
 };
 
 // The general form: any wanted colour per input (the round trip uses it with the patch).

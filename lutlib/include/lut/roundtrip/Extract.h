@@ -6,6 +6,7 @@
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/LutPurpose.h"
+#include "lut/ops/Strength.h"
 #include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
@@ -34,6 +35,10 @@ struct ExtractOptions {
     // What the file's metadata says about chroma subsampling ("4:2:0", "4:2:2", "4:4:4"; ""
     // unknown: lut::formats::ImageInfo::chromaSubsampling); the patch's pixels are checked too.
     std::string fileChromaSubsampling;
+    // The edit at a strength (lut/ops/Strength.h): each patch entry blended with the colour it
+    // held before the edit, so the LUT (raw, or the game's) gives that share of the edit. The
+    // checks of the patch look at the edit as it was made.
+    StrengthOptions strength;
     int nthreads = 0;
 };
 
@@ -48,6 +53,9 @@ struct ExpectedError {
     GameError atLattice; // at the output LUT's lattice points
     GameError overall;   // at every input: the lattice points and between them
     std::string covers;  // what is compared with what, in which units
+    // The largest interpolation term between the patch's entries (8-bit steps): the sub-lattice
+    // check and each entry's prediction from its neighbours.
+    double interpolationSteps = 0.0;
 };
 
 struct ExtractResult {
@@ -72,6 +80,7 @@ struct ExtractResult {
     GameError modelError;
     bool refined = false;           // smash: the LUT is the least-squares refinement
     GameError exactModelError;      // smash with refine: the exact composition's model error
+    std::string refineDecision;     // smash with refine: what it was fitted on, which was written
     std::size_t clampedEntries = 0; // smash: channel values that needed L outside [0,1]
     double clampedMax = 0.0;        // ... and the farthest one (in [0,1] units)
     std::size_t clippedValues = 0;  // channel values at 0 or 1 that were not 0 or 1 in the neutral

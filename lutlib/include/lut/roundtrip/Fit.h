@@ -29,6 +29,9 @@ struct FitOptions {
     int robustRounds = 4;
     int maxIterations = 4000; // per CG solve
     double tolerance = 1e-6;  // relative residual of the preconditioned CG
+    // Also measure the error on colours a fit never saw: a second fit on seven eighths of the
+    // distinct colours, measured on the other eighth (FitResult::heldOut*).
+    bool heldOut = true;
     int nthreads = 0;
 };
 
@@ -36,8 +39,17 @@ struct FitResult {
     Lut3D lut;
     std::size_t pixels = 0;          // pixel pairs used (a regular subsample beyond 8 megapixels)
     std::size_t distinctColours = 0; // distinct input colours (8-bit)
-    double rmsSteps8 = 0.0;          // fit error over the pixels, 8-bit steps (trilinear)
+    // The fit's error over the pixels it was fitted to, 8-bit steps (trilinear): a residual,
+    // smaller than what the LUT does on other pixels.
+    double rmsSteps8 = 0.0;
     double maxSteps8 = 0.0;
+    // With FitOptions::heldOut (and 16 colours or more): the error of a fit on seven eighths of
+    // the colours on the pixels of the other eighth: what to expect on colours not fitted. The
+    // max is the larger of that and maxSteps8, plus half a step (a margin: a sample's largest
+    // value is a low estimate of the largest elsewhere).
+    std::size_t heldOutColours = 0, heldOutPixels = 0;
+    double heldOutRmsSteps8 = 0.0;
+    double heldOutMaxSteps8 = 0.0;
     double extrapolatedShare = 0.0; // share of lattice cells no pixel falls in
     std::size_t outlierPixels = 0;  // pixels off the fit by more than 4x the Huber threshold
     int iterations = 0; // CG iterations, summed over the robust rounds (largest channel)

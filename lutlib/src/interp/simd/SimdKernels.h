@@ -37,4 +37,8 @@ void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count);
 void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count);
 void shaperAvx2(const ShaperTable& table, float* rgba, std::size_t count);
 
+// AVX-512 F + DQ (simd/SamplerKernels_avx512.cpp): bit-identical to its AVX2 twin, 16 pixels per
+// iteration. Only call when the CPU has AVX-512 F and DQ (and AVX2 + FMA).
+void tetrahedralAvx512(const KernelTable& table, float* rgba, std::size_t count);
+
 } // namespace lut::detail

@@ -1,0 +1,70 @@
+#pragma once
+// LUT atlases as files (lutkit atlas build / split / info): several LUTs as the rows of one 8-bit
+// picture in a strip layout (lut/io/Atlas.h), ReShade's MultiLUT.fx atlas by default, and back.
+// Every row is the LUT resampled to the atlas's N with the error said, stored in 8 bits with the
+// error said; two rows that store the same LUT are refused, naming both.
+#include "lut/Error.h"
+#include "lut/ErrorStats.h"
+#include "lut/Lut3D.h"
+#include "lut/interp/Interpolation.h"
+#include "lut/io/Atlas.h"
+#include "lut/io/FormatOptions.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lut::formats {
+
+struct AtlasBuildOptions {
+    LutLayout layout = LutLayout::Reshade; // the rows' layout
+    // N of every row; 0 = the layout's own (32 for reshade and unity-32), else the first LUT's:
+    // then a LUT of another size is refused (resampling happens only when the size is asked for).
+    int size = 0;
+    bool neutralFirst = false; // row 0 the neutral LUT (MultiLUT's "Neutral" entry)
+    Interpolation interp = Interpolation::Tetrahedral; // resampling
+    FormatOptions read;                                // reading the inputs (--in-layout)
+};
+
+struct AtlasRowReport {
+    std::string source;                 // the file; "" for the neutral row
+    int sourceSize = 0;                 // as read (after a shaper or domain was baked in)
+    std::optional<ErrorStats> resample; // when resampled to the atlas's N
+    ErrorStats storage;                 // 8-bit storage (rounding to nearest), clamped included
+    std::size_t clamped = 0;            // channel values outside 0..1
+    bool neutral = false;               // stores the neutral LUT exactly
+    Diagnostics diagnostics;            // reading the file, baking a shaper or domain
+};
+
+struct AtlasBuildReport {
+    AtlasShape shape;
+    std::vector<AtlasRowReport> rows;
+};
+
+// Reads every input, makes each an N^3 row, refuses two rows that store the same 8-bit values
+// (naming both rows and files) and writes the atlas picture to `output` (8-bit RGBA; through
+// lut::formats::writeImage: atomic, verified; the caller applies the overwrite rule first).
+// Throws lut::Error naming the row and file for a LUT of another size, an unreadable input, an
+// output that is one of the inputs.
+AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::string& output,
+                            const AtlasBuildOptions& options);
+
+struct AtlasReading {
+    AtlasShape shape;
+    int width = 0, height = 0;
+    std::vector<Lut3D> rows;
+    std::vector<bool> neutral; // the row is a neutral LUT (within half an 8-bit step)
+    // (later row, earlier row) pairs that store the same values
+    std::vector<std::pair<int, int>> duplicates;
+    std::string layoutReason; // how the layout was chosen ("given", or what detection saw)
+    Diagnostics diagnostics;
+};
+
+// Reads an atlas picture: its rows in `layout`, else the strip layout in which most rows have
+// each output channel following its own input (the rule of lut::formats' strip reader, row by
+// row; a tie or no such row reads the default, reshade for 32^3 rows and unreal for others, with
+// a warning). Throws lut::Error naming the file for a picture that is no atlas (width not N^2,
+// height not whole rows).
+AtlasReading readAtlas(const std::string& path, std::optional<LutLayout> layout = std::nullopt);
+
+} // namespace lut::formats

@@ -1,0 +1,235 @@
+// lutkit atlas build / split / info: a 3-row MultiLUT atlas of three different LUTs and its split
+// rows are byte for byte the ReShade strips of those LUTs; sampled with MultiLUT.fx's formula
+// (tests/support/ShaderSamplers.h) each row gives its LUT within half an 8-bit step; repeated
+// rows, rows of another size and pictures that are no atlas are refused naming the row.
+#include "ShaderSamplers.h"
+#include "TestSupport.h"
+
+#include "lut/formats/ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <random>
+
+using namespace lut;
+using namespace lut::test;
+
+namespace {
+
+std::string workDir() {
+    const std::string d = tempDir() + ".work";
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
+
+std::string bytes(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// An n^3 .cube of f, written with 9 digits (read back as the same floats); the table it holds.
+Lut3D writeCube(const std::string& path, int n, const std::function<glm::dvec3(glm::dvec3)>& f) {
+    Lut3D l(n);
+    std::ofstream out(path);
+    out.precision(9);
+    out << "LUT_3D_SIZE " << n << "\n";
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                l.at(r, g, b) = glm::vec3(f(glm::dvec3(l.latticeInput(r, g, b))));
+                const glm::vec3 e = l.at(r, g, b);
+                out << e.r << " " << e.g << " " << e.b << "\n";
+            }
+    return l;
+}
+
+glm::dvec3 warm(glm::dvec3 c) {
+    return {std::pow(c.x, 0.8), c.y * c.y * (3 - 2 * c.y), 0.9 * std::pow(c.z, 1.2)};
+}
+glm::dvec3 cool(glm::dvec3 c) {
+    return {0.8 * c.y, 0.9 * c.z, 0.1 + 0.9 * c.x};
+}
+glm::dvec3 sepia(glm::dvec3 c) {
+    const double y = 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+    return {std::min(1.0, 1.07 * y), 0.74 * y + 0.1, 0.43 * y + 0.05};
+}
+
+std::string q(const std::string& s) {
+    return "'" + s + "'";
+}
+
+} // namespace
+
+TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
+    const std::string dir = workDir();
+    const std::vector<Lut3D> luts = {writeCube(dir + "/warm.cube", 32, warm),
+                                     writeCube(dir + "/cool.cube", 32, cool),
+                                     writeCube(dir + "/sepia.cube", 32, sepia)};
+    const char* names[] = {"warm", "cool", "sepia"};
+    for (const char* n : names)
+        ASSERT_EQ(runCli("convert " + q(dir + "/" + n + ".cube") + " " + q(dir + "/" + n + ".png") +
+                         " --layout reshade")
+                      .exitCode,
+                  0);
+    RunResult r = runCli("atlas build " + q(dir + "/warm.cube") + " " + q(dir + "/cool.cube") +
+                         " " + q(dir + "/sepia.cube") + " -o " + q(dir + "/atlas.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("3 rows of 32^3 in the reshade layout"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("fLUT_LutAmount 3"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("ui_items=\"warm\\0cool\\0sepia\\0\""), std::string::npos) << r.out;
+
+    // MultiLUT.fx's formula on the atlas, row by row: each LUT within half an 8-bit step (plus
+    // float rounding of v * 255 at a tie).
+    const Texture atlas = load(dir + "/atlas.png");
+    ASSERT_EQ(atlas.w, 1024);
+    ASSERT_EQ(atlas.h, 96);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int k = 0; k < 3; ++k) {
+        double worst = 0;
+        for (int i = 0; i < 4000; ++i) {
+            const glm::dvec3 c = i < 1000 ? glm::dvec3(i % 32, (i / 32) % 32, (i * 7) % 32) / 31.0
+                                          : glm::dvec3(u(rng), u(rng), u(rng));
+            const auto got = reshadeSample(atlas, c, k, 3);
+            const auto want = trilinear(luts[static_cast<std::size_t>(k)], c);
+            for (int ch = 0; ch < 3; ++ch)
+                worst = std::max(worst, std::fabs(got[ch] - want[ch]) * 255.0);
+        }
+        EXPECT_LE(worst, 0.5 + 1e-4) << names[k];
+    }
+
+    // Split again: one strip per row, byte for byte the strips convert wrote.
+    std::filesystem::create_directories(dir + "/rows");
+    r = runCli("atlas split " + q(dir + "/atlas.png") + " -o " + q(dir + "/rows/"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (int k = 0; k < 3; ++k) {
+        const std::string row = dir + "/rows/atlas-0" + std::to_string(k) + ".png";
+        ASSERT_TRUE(std::filesystem::exists(row)) << r.out;
+        EXPECT_EQ(bytes(row), bytes(dir + "/" + names[k] + ".png")) << row;
+        EXPECT_EQ(formats::readImage(row).image.pixels(),
+                  formats::readImage(dir + "/" + names[k] + ".png").image.pixels());
+    }
+    // The rows exist now: a second split refuses them without -y, replaces them with it.
+    EXPECT_EQ(runCli("atlas split " + q(dir + "/atlas.png") + " -o " + q(dir + "/rows/")).exitCode,
+              1);
+    EXPECT_EQ(runCli("atlas split " + q(dir + "/atlas.png") + " -o " + q(dir + "/rows/") + " -y")
+                  .exitCode,
+              0);
+
+    r = runCli("atlas info " + q(dir + "/atlas.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("rows     3 (32^3 each)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("layout   reshade (detected"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("repeats  none"), std::string::npos) << r.out;
+}
+
+TEST(CliAtlas, NeutralFirstResamplesToTheLayoutsSizeAndSaysTheError) {
+    const std::string dir = workDir();
+    writeCube(dir + "/warm.cube", 33, warm);
+    writeCube(dir + "/cool.cube", 17, cool);
+    RunResult r = runCli("atlas build " + q(dir + "/warm.cube") + " " + q(dir + "/cool.cube") +
+                         " -o " + q(dir + "/a.png") + " --neutral-first");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("row 0  (neutral)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("33^3 resampled to 32^3 (tetrahedral): max"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("17^3 resampled to 32^3"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("ui_items=\"Neutral\\0warm\\0cool\\0\""), std::string::npos) << r.out;
+    r = runCli("atlas info " + q(dir + "/a.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("rows     3"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("neutral  row 0"), std::string::npos) << r.out;
+    // The neutral row samples as the identity.
+    const Texture tex = load(dir + "/a.png");
+    double worst = 0;
+    for (int i = 0; i <= 30; ++i) {
+        const glm::dvec3 c(i / 30.0, 1 - i / 30.0, (i * 11 % 31) / 30.0);
+        const auto got = reshadeSample(tex, c, 0, 3);
+        for (int ch = 0; ch < 3; ++ch)
+            worst = std::max(worst, std::fabs(got[ch] - c[ch]) * 255.0);
+    }
+    EXPECT_LE(worst, 0.5 + 1e-4);
+}
+
+TEST(CliAtlas, RepeatedRowsAndOtherSizesAreRefusedNamingTheRow) {
+    const std::string dir = workDir();
+    writeCube(dir + "/a.cube", 16, warm);
+    writeCube(dir + "/b.cube", 16, cool);
+    writeCube(dir + "/c.cube", 17, sepia);
+    writeCube(dir + "/n.cube", 16, [](glm::dvec3 c) { return c; });
+    const std::string out = q(dir + "/x.png");
+    RunResult r = runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/b.cube") + " " +
+                         q(dir + "/a.cube") + " -o " + out + " --layout unreal");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(
+        r.err.find("row 2 (" + dir + "/a.cube) stores the same LUT as row 0 (" + dir + "/a.cube)"),
+        std::string::npos)
+        << r.err;
+    // A neutral file after --neutral-first is the neutral row again.
+    r = runCli("atlas build " + q(dir + "/n.cube") + " -o " + out +
+               " --layout unreal --neutral-first");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("row 1 (" + dir + "/n.cube) stores the same LUT as row 0 (neutral)"),
+              std::string::npos)
+        << r.err;
+    // 16^3 and 17^3 rows: refused unless --size asks for resampling.
+    r = runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/c.cube") + " -o " + out +
+               " --layout unreal");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("row 1 (" + dir + "/c.cube) is 17^3, the atlas's rows are 16^3"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+    r = runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/c.cube") + " -o " + out +
+               " --layout unreal --size 16");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("17^3 resampled to 16^3"), std::string::npos) << r.out;
+    EXPECT_EQ(formats::readImageInfo(dir + "/x.png").height, 32);
+    // The output is never an input.
+    r = runCli("atlas build " + q(dir + "/x.png") + " -o " + out + " -y");
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+}
+
+TEST(CliAtlas, InfoSaysHowManyRowsAndRefusesPartialRows) {
+    const std::string dir = workDir();
+    // A 1024x100 picture: 3 rows of 32 and 4 pixels.
+    formats::writeImage(dir + "/cut.png", Image(1024, 100, 0.5f), {8, false, true});
+    RunResult r = runCli("atlas info " + q(dir + "/cut.png"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("3 rows and 4 pixels: row 3 is cut short"), std::string::npos) << r.err;
+    formats::writeImage(dir + "/wide.png", Image(1000, 32, 0.5f), {8, false, true});
+    r = runCli("atlas info " + q(dir + "/wide.png"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("its width must be N^2"), std::string::npos) << r.err;
+    // A Unity atlas of two rows is read as unity-32, found from its rows.
+    writeCube(dir + "/a.cube", 32, warm);
+    writeCube(dir + "/b.cube", 32, sepia);
+    ASSERT_EQ(runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/b.cube") + " -o " +
+                     q(dir + "/u.png") + " --layout unity-32")
+                  .exitCode,
+              0);
+    r = runCli("atlas info " + q(dir + "/u.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("rows     2"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("layout   unity-32 (detected"), std::string::npos) << r.out;
+}
+
+TEST(CliAtlas, BadUsageExitsTwo) {
+    const std::string dir = workDir();
+    writeCube(dir + "/a.cube", 4, warm);
+    for (const std::string& line : std::vector<std::string>{
+             "atlas stack a.cube -o x.png", "atlas build -o " + q(dir + "/x.png"),
+             "atlas build " + q(dir + "/a.cube"), "atlas split a.png b.png -o " + q(dir + "/"),
+             "atlas info a.png --size 16",
+             "atlas build " + q(dir + "/a.cube") + " -o " + q(dir + "/x.png") +
+                 " --layout reshade --size 16",
+             "atlas build " + q(dir + "/a.cube") + " -o " + q(dir + "/x.png") + " --layout hald"}) {
+        const RunResult r = runCli(line);
+        EXPECT_EQ(r.exitCode, 2) << line << ": " << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+}

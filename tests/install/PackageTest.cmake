@@ -1,0 +1,85 @@
+# The Debian package (cmake/LutkitPackage.cmake), made from this build tree with cpack and
+# extracted with dpkg-deb -x into a fresh root (no dpkg database, no root needed):
+#   - its control fields: name, version, the runtime dependencies dpkg-shlibdeps found
+#     (OpenImageIO, OpenColorIO; Qt 6 and its platform plugins with the editor);
+#   - what it holds: the programs, the image module, the man page, the completions, the editor's
+#     desktop entry, MIME types and icon, the OCIO config and the docs, and no headers, static
+#     libraries or CMake package (the `dev` component);
+#   - the extracted lutkit and lutkit-editor run (--version), and the README's quick starts run
+#     as written with that lutkit first on PATH (docs_tests with LUTKIT_QUICKSTART_BIN).
+# Variables: BUILD_DIR, WORK_DIR, VERSION, DOCS_TESTS, EDITOR (ON/OFF).
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+  set(RUN_OUT "${out}" PARENT_SCOPE)
+endfunction()
+
+run(cpack -G DEB --config "${BUILD_DIR}/CPackConfig.cmake" -B "${WORK_DIR}/pkg")
+file(GLOB debs "${WORK_DIR}/pkg/lutkit_${VERSION}_*.deb")
+list(LENGTH debs n)
+if(NOT n EQUAL 1)
+  message(FATAL_ERROR "expected one lutkit_${VERSION}_*.deb in ${WORK_DIR}/pkg, found: ${debs}")
+endif()
+set(deb "${debs}")
+
+run(dpkg-deb -f "${deb}" Package Version Depends Section)
+set(control "${RUN_OUT}")
+foreach(want "Package: lutkit" "Version: ${VERSION}" "libopenimageio" "libopencolorio"
+             "Section: graphics")
+  string(FIND "${control}" "${want}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the control fields lack '${want}':\n${control}")
+  endif()
+endforeach()
+if(EDITOR)
+  foreach(want "libqt6widgets6" "qt6-qpa-plugins")
+    string(FIND "${control}" "${want}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "the control fields lack '${want}' (the editor):\n${control}")
+    endif()
+  endforeach()
+endif()
+
+set(root "${WORK_DIR}/root")
+run(dpkg-deb -x "${deb}" "${root}")
+set(files usr/bin/lutkit usr/lib/lutkit/lutkit_imageio.so usr/share/man/man1/lutkit.1
+          usr/share/bash-completion/completions/lutkit usr/share/zsh/site-functions/_lutkit
+          usr/share/fish/vendor_completions.d/lutkit.fish usr/share/lutkit/ocio/config.ocio
+          usr/share/doc/lutkit/README.md usr/share/doc/lutkit/docs/specs/strip-layouts.md)
+if(EDITOR)
+  list(APPEND files usr/bin/lutkit-editor usr/share/applications/lutkit-editor.desktop
+       usr/share/mime/packages/lutkit.xml usr/share/icons/hicolor/scalable/apps/lutkit-editor.svg)
+endif()
+foreach(f ${files})
+  if(NOT EXISTS "${root}/${f}")
+    message(FATAL_ERROR "the package lacks /${f}")
+  endif()
+endforeach()
+foreach(dev usr/include usr/lib/cmake usr/lib/liblutlib.a usr/lib/liblutkit_formats.a)
+  if(EXISTS "${root}/${dev}")
+    message(FATAL_ERROR "the package holds /${dev}: that is the dev component")
+  endif()
+endforeach()
+
+run("${root}/usr/bin/lutkit" --version)
+if(NOT RUN_OUT STREQUAL "lutkit ${VERSION}\n")
+  message(FATAL_ERROR "the packaged lutkit says '${RUN_OUT}'")
+endif()
+if(EDITOR)
+  run(${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen "${root}/usr/bin/lutkit-editor" --version)
+  if(NOT RUN_OUT STREQUAL "lutkit-editor ${VERSION}\n")
+    message(FATAL_ERROR "the packaged lutkit-editor says '${RUN_OUT}'")
+  endif()
+endif()
+# The packaged lutkit finds its image module and OCIO config from where it is (bin/..): an image
+# read and a conversion through OpenColorIO from the extracted tree.
+run("${root}/usr/bin/lutkit" neutral "${WORK_DIR}/n.png")
+run("${root}/usr/bin/lutkit" convert "${WORK_DIR}/n.png" "${WORK_DIR}/n.3dl")
+run(${CMAKE_COMMAND} -E env "LUTKIT_QUICKSTART_BIN=${root}/usr/bin"
+    "LUTKIT_TEST_TMP=${WORK_DIR}/test-tmp" "${DOCS_TESTS}")
+message(STATUS "package ${deb}: control, files, --version and the quick starts checked")
