@@ -6,6 +6,7 @@
 #include "ExportDialog.h"
 #include "FileLoader.h"
 #include "MainWindow.h"
+#include "OpenLutQuestion.h"
 #include "PreviewController.h"
 #include "RecentFiles.h"
 #include "TaskStatus.h"
@@ -20,7 +21,6 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
@@ -486,19 +486,26 @@ bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
     if (!m_window->interactiveErrors() || !stripLayoutIsAmbiguous(path))
         return true;
     // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
-    // agree (a heavy grade can fool it).
+    // agree (a heavy grade can fool it). What it is for, when nothing says, is asked in the same
+    // dialog (and remembered, so the read does not ask again).
     QStringList items = {tr("Detect automatically")};
     const formats::ImageInfo info = formats::readImageInfo(path.toStdString());
     for (const LayoutFit& f : layoutsForImageSize(info.width, info.height))
         items << QString::fromLatin1(toString(f.layout));
-    bool ok = false;
-    const QString item = QInputDialog::getItem(
-        m_window, tr("Strip layout"),
-        tr("%1 fits several strip layouts. Read it as:").arg(QFileInfo(path).fileName()), items, 0,
-        false, &ok);
-    if (!ok)
+    bool says = false;
+    try {
+        says = formats::readLut(path.toStdString()).purpose.has_value(); // a strip is small
+    } catch (const std::exception&) {
+        // unreadable: the read that follows says why
+    }
+    const bool askPurpose = !says && !m_window->lutPurposeAnswer() && !rememberedPurpose(path);
+    const auto answer = askOpenLut(m_window, QFileInfo(path).fileName(), items, askPurpose);
+    if (!answer)
         return false;
-    options.layout = parseOptionalLayout(item == items[0] ? std::string() : item.toStdString());
+    options.layout = parseOptionalLayout(answer->layout == items[0] ? std::string()
+                                                                    : answer->layout.toStdString());
+    if (answer->purpose)
+        rememberPurpose(path, *answer->purpose);
     return true;
 }
 
