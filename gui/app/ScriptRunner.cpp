@@ -25,8 +25,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFile>

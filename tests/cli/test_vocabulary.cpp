@@ -113,10 +113,10 @@ TEST(Vocabulary, EveryCommandIsInTheTable) {
     for (const auto& c : p.commands)
         names.push_back(c.name);
     EXPECT_EQ(names, (std::vector<std::string>{
-                         "neutral", "convert", "info",   "validate", "apply", "preview", "embed",
-                         "extract", "fit",     "match",  "bench",    "bake",  "diff",    "compose",
-                         "invert",  "resize",  "smooth", "mix",      "plot",  "adjust",  "check",
-                         "chart",   "atlas",   "help"}));
+                         "neutral", "convert", "info",   "validate", "apply",  "preview",
+                         "embed",   "extract", "fit",    "match",    "bench",  "bake",
+                         "diff",    "compose", "invert", "resize",   "smooth", "mix",
+                         "plot",    "adjust",  "check",  "chart",    "atlas",  "help"}));
 }
 
 TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {
