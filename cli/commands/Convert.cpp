@@ -95,8 +95,9 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
             !d.empty())
             std::cout << "  " << d << "\n";
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
-    if (r.strength)
-        std::cout << "strength " << strengthText(o.strength) << "\n";
+    if (r.strength) // of the edit, when it is made into another purpose (Convert.h)
+        std::cout << "strength " << strengthText(o.strength)
+                  << (r.purpose.conversion ? ", of the edit" : "") << "\n";
     const formats::PurposeStep& p = r.purpose;
     std::cout << "purpose  in:  " << p.input.text("--in-target") << "\n"
               << "         out: " << toString(p.output)
