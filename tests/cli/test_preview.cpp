@@ -269,7 +269,8 @@ TEST(CliPreview, BatchWritesEveryGoodFileAndFailsOnBadOnes) {
 }
 
 TEST(CliPreview, StrengthBlendsTheLutWithNeutralFirst) {
-    // --strength: the preview grades with the LUT blended with neutral in Oklab; the oracle is
+    // --strength: the preview grades with the LUT blended with neutral in Oklab (a game LUT,
+    // --lut-target smash: used by the game's chain as it is, blended as it is); the oracle is
     // the float64 reference chain with a LUT blended by the float64 Oklab of
     // tests/support/OklabReference.h.
     const std::string dir = workDir();
@@ -285,7 +286,7 @@ TEST(CliPreview, StrengthBlendsTheLutWithNeutralFirst) {
                     glm::dvec3(lut.latticeInput(r, g, b)), glm::dvec3(lut.at(r, g, b)), 0.4, 0.8));
     const std::string out = dir + "/out.exr";
     const RunResult r = runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut '" + cube +
-                               "' --luma-strength 0.4 --chroma-strength 0.8");
+                               "' --lut-target smash --luma-strength 0.4 --chroma-strength 0.8");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const Image got = formats::readImage(out).image;
     EXPECT_LT(maxDiff(got, expectedSmash(scene, blended, true)), 1e-5);
