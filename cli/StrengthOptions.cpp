@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -14,7 +15,10 @@ CLI::Validator amountRange() {
     return CLI::Validator(
         [](std::string& value) -> std::string {
             double v = 0;
-            if (!CLI::detail::lexical_cast(value, v) || !(v >= 0.0 && v <= 2.0))
+            const bool number = CLI::detail::lexical_cast(value, v);
+            if (number && !std::isfinite(v)) // as every FLOAT option says it (Vocabulary.h)
+                return "value " + value + " is not a finite number";
+            if (!number || !(v >= 0.0 && v <= 2.0))
                 return "Value " + value + " not in range 0 to 2";
             return {};
         },
