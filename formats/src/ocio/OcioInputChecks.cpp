@@ -89,7 +89,11 @@ void checkText(const std::string& path, std::vector<std::string>& chain) {
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     for (const std::string& ref : referencedPaths(text)) {
         const std::filesystem::path p(ref);
-        checkFileOnce((p.is_absolute() ? p : folder / p).lexically_normal().string(), chain);
+        const std::string target = (p.is_absolute() ? p : folder / p).lexically_normal().string();
+        std::error_code ec;
+        if (!std::filesystem::exists(target, ec)) // named by the file that references it
+            throw Error(path + ": references " + ref + ", which does not exist (" + target + ")");
+        checkFileOnce(target, chain);
     }
 }
 
