@@ -4,7 +4,10 @@
 //     prints is not below the truth measured at 200,000 random colours it did not use;
 //   - an edit made into the game's LUT (raw -> smash) shows the edit at the game's lattice; the
 //     neutral edit gives the neutral game LUT; a game LUT taken to an edit and back is itself
-//     where the display does not clip.
+//     where the display does not clip;
+//   - only what is written is computed (the refinement with refine only), the refinement is
+//     written only where it won on held-out colours, and the printed maximum of what is written
+//     is not below what the game shows at random inputs.
 // And the preview recipe (lut/pipeline/PreviewPlan.h): which chain, what is undone, the bloom
 // rule, for each kind of picture and preset.
 #include "PipelineTestUtil.h"
@@ -15,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 using namespace lut;
@@ -205,6 +209,66 @@ TEST(PurposeConversion, AGameLutToAnEditAndBackIsItselfBelowWhite) {
                     worst = std::max(
                         worst, std::fabs(double(back.lut.at(r, g, b)[c]) - game.at(r, g, b)[c]));
     EXPECT_LT(worst * 255.0, 1.0); // the 65^3 edit's interpolation, under an 8-bit step
+}
+
+TEST(PurposeConversion, OnlyWhatIsWrittenIsComputedAndTheRefinementShipsOnlyWhereItWins) {
+    // bounds' rule kept in the one conversion: without refine the refinement is not computed and
+    // the exact composition (clamped) is written; with refine it is written only when it beat
+    // the exact composition on colours it was not fitted on. Either way the printed maximum of
+    // what is written bounds what the game shows (the float64 model above) at 20,000 random
+    // inputs, the 8-bit LUT as the file holds it.
+    const double a[3] = {1.2, 0.9, 1.1}, o[3] = {-0.04, 0.03, -0.02};
+    Lut3D edit(33);
+    for (int b = 0; b < 33; ++b)
+        for (int g = 0; g < 33; ++g)
+            for (int r = 0; r < 33; ++r) {
+                const double in[3] = {r / 32.0, g / 32.0, b / 32.0};
+                for (int c = 0; c < 3; ++c)
+                    edit.at(r, g, b)[c] = static_cast<float>(a[c] * in[c] + o[c]);
+            }
+    for (const bool refine : {false, true}) {
+        SCOPED_TRACE(refine ? "refine" : "exact");
+        PurposeOptions po;
+        po.measure = true;
+        po.refine = refine;
+        const PurposeConversion c = convertPurpose(edit, LutPurpose::Raw, LutPurpose::Smash, po);
+        const SmashAuthoringResult& r = c.authoring;
+        EXPECT_EQ(r.refinementComputed, refine);
+        EXPECT_EQ(r.decision.empty(), !refine);
+        if (r.refined) {
+            EXPECT_LT(r.heldOutRefined.meanSteps, r.heldOutExact.meanSteps);
+        } else {
+            for (std::size_t i = 0; i < c.lut.entryCount(); ++i)
+                for (int ch = 0; ch < 3; ++ch)
+                    ASSERT_EQ(c.lut.entries()[i][ch],
+                              std::clamp(r.exact.entries()[i][ch], 0.0f, 1.0f));
+        }
+        Lut3D file = c.lut; // the 8-bit entries the .nutexb holds
+        for (auto& e : file.entries())
+            for (int ch = 0; ch < 3; ++ch)
+                e[ch] = static_cast<float>(std::round(double(e[ch]) * 255.0) / 255.0);
+        const Lut3D neutral = Lut3D::identity(16);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        double worst = 0.0;
+        for (int i = 0; i < 20000; ++i) {
+            const double in[3] = {u(rng), u(rng), u(rng)};
+            double before[3], after[3];
+            gameShows(neutral, in, before);
+            gameShows(file, in, after);
+            for (int ch = 0; ch < 3; ++ch) {
+                const double want = a[ch] * before[ch] + o[ch];
+                if (before[ch] >= 1.0 - 1e-9 || want <= 0.0 || want >= 1.0)
+                    continue; // the display clips
+                worst = std::max(worst, std::fabs(after[ch] - want) * 255.0);
+            }
+        }
+        const GameError& printed = r.refined ? r.refinedError : r.exactError;
+        std::printf("[ measured ] %s: written %s, true max %.3f, printed max %.3f 8-bit steps\n",
+                    refine ? "--refine" : "exact", r.refined ? "refined" : "exact", worst,
+                    printed.maxSteps);
+        EXPECT_LE(worst, printed.maxSteps);
+    }
 }
 
 TEST(PurposeConversion, ComposeOnTheStagesPictureIsTheStagedCompensation) {
