@@ -6,6 +6,8 @@
 #include "lut/ErrorStats.h"
 
 #include <cmath>
+#include <glm/vec3.hpp>
+
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -57,6 +59,11 @@ inline std::string number(double v) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.9g", v);
     return buf;
+}
+
+// [r, g, b]
+inline std::string vec3(const glm::dvec3& v) {
+    return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
 }
 
 inline std::string stats(const ErrorStats& s) {

@@ -6,7 +6,6 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
 #include "lut/ops/Lattice.h"
-#include "lut/pipeline/StageLut.h"
 
 #include <iostream>
 
@@ -25,17 +24,12 @@ LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& 
     return file;
 }
 
-Lut3D readStageLut(const std::string& path, const Verbosity& verbosity) {
+Lut3D readLutTable(const std::string& path, const Verbosity& verbosity, PurposeDecision* purpose,
+                   std::optional<LutPurpose> given) {
     const LutFile file = formats::readLut(path, {});
     printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
-    StageLutFile stage = stageLutFromFile(file, path);
-    printDiagnostics(std::cerr, stage.diagnostics, verbosity, "lutkit: ");
-    return std::move(stage.lut);
-}
-
-Lut3D readLutTable(const std::string& path, const Verbosity& verbosity) {
-    const LutFile file = formats::readLut(path, {});
-    printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
+    if (purpose)
+        *purpose = decidePurpose(file, given);
     if (!file.shaper)
         return file.toLut3D();
     // One lattice over the file's input domain, never silently: what it costs between its points.
@@ -51,6 +45,12 @@ Lut3D readLutTable(const std::string& path, const Verbosity& verbosity) {
         " on " + std::to_string(r.heldOut) + " inputs between lattice points";
     printDiagnostics(std::cerr, {d}, verbosity, "lutkit: ");
     return std::move(r.lut);
+}
+
+std::optional<LutPurpose> knownPurpose(const PurposeDecision& d) {
+    if (d.source == PurposeSource::Assumed)
+        return std::nullopt;
+    return d.purpose;
 }
 
 WrittenLut writeLutFile(const std::string& path, const LutFile& file, const std::string& format,
@@ -71,9 +71,10 @@ WrittenLut writeLutFile(const std::string& path, const LutFile& file, const std:
 
 void writeLutTable(std::ostream& os, const std::string& path, const Lut3D& lut,
                    const std::string& format, const std::vector<std::string>& inputs,
-                   const Verbosity& verbosity) {
+                   const Verbosity& verbosity, std::optional<LutPurpose> purpose) {
     LutFile file;
     file.cube = lut;
+    file.purpose = purpose;
     const WrittenLut w = writeLutFile(path, file, format, inputs);
     os << "wrote    " << path << ": " << w.format << ", " << lut.size() << "^3\n";
     printDiagnostics(os, w.diagnostics, verbosity);

@@ -22,14 +22,16 @@ namespace lut::cli {
 LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& layout,
                        const Verbosity& verbosity);
 
-// The game's stage LUT named by --original-lut (lut/pipeline/StageLut.h: a file with a shaper is
-// sampled at the game's 16^3 lattice, the error said), its diagnostics printed to stderr.
-Lut3D readStageLut(const std::string& path, const Verbosity& verbosity);
-
 // The file as one 3D table, its diagnostics printed to stderr; a file with a shaper is sampled at
 // the table's size over the shaper's range (lut::sampleOnLattice) and the error that costs between
-// lattice points is said.
-Lut3D readLutTable(const std::string& path, const Verbosity& verbosity);
+// lattice points is said. `purpose` (optional) receives what the file is for (lut/LutPurpose.h;
+// `given`: a flag's value).
+Lut3D readLutTable(const std::string& path, const Verbosity& verbosity,
+                   PurposeDecision* purpose = nullptr,
+                   std::optional<LutPurpose> given = std::nullopt);
+// The purpose a result carries on: what the input said or was told, nullopt when it was only
+// assumed (an assumption is not turned into a statement in the output).
+std::optional<LutPurpose> knownPurpose(const PurposeDecision& decision);
 
 struct WrittenLut {
     std::string format; // the writer's name
@@ -44,7 +46,7 @@ WrittenLut writeLutFile(const std::string& path, const LutFile& file, const std:
 // writeLutFile for one table, then "wrote PATH: FORMAT, N^3" and the writer's diagnostics on os.
 void writeLutTable(std::ostream& os, const std::string& path, const Lut3D& lut,
                    const std::string& format, const std::vector<std::string>& inputs,
-                   const Verbosity& verbosity);
+                   const Verbosity& verbosity, std::optional<LutPurpose> purpose = std::nullopt);
 
 // "max 1.2e-03 (0.31 8-bit steps), mean ..., 12.3 ms" with the sanitized-entry note.
 std::string costText(const ErrorStats& error, std::size_t sanitizedEntries);

@@ -124,10 +124,10 @@ Choices latticeChoices() {
 Choices targetChoices() {
     Choices c{"target",
               "target",
-              namesOf(std::vector<ExtractTarget>{ExtractTarget::Raw, ExtractTarget::Smash}),
+              namesOf(std::vector<LutPurpose>{LutPurpose::Raw, LutPurpose::Smash}),
               {},
               {}};
-    c.accept = [](const std::string& s) { (void)parseTarget(s); };
+    c.accept = [](const std::string& s) { (void)parseLutPurpose(s); };
     return c;
 }
 

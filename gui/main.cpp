@@ -12,6 +12,7 @@
 #include "ScriptRunner.h"
 
 #include "lut/Error.h"
+#include "lut/LutPurpose.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/interp/Interpolation.h"
@@ -145,6 +146,13 @@ int main(int argc, char** argv) {
         QStringLiteral("What the LUT is for: smash (Smash Ultimate, color_grading_lut.nutexb; "
                        "default), engine (a 16^3 strip PNG) or cube (a grading app)."),
         QStringLiteral("TARGET"));
+    QCommandLineOption lutTargetOpt(
+        QStringLiteral("lut-target"),
+        QStringLiteral("What LUT is for when the file does not say (as lutkit's --lut-target): "
+                       "raw (an edit, the look itself) or smash (the game's LUT, already made for "
+                       "Smash Ultimate). Default: ask once per file (taken as raw without a "
+                       "window)."),
+        QStringLiteral("NAME"));
     QCommandLineOption inputOpt(
         QStringLiteral("input"),
         QStringLiteral("What IMAGE holds: screenshot or scene (default: 8/16-bit files are "
@@ -157,7 +165,7 @@ int main(int argc, char** argv) {
         QStringLiteral("FILE"));
     parser.addOptions({versionOpt, shotOpt, saveOpt, presetOpt, interpOpt, noBloomOpt, noLutOpt,
                        noBrightenOpt, sizeOpt, fromShotOpt, adjustOpt, viewOpt, zoomOpt, verboseOpt,
-                       targetOpt, inputOpt, scriptOpt});
+                       targetOpt, lutTargetOpt, inputOpt, scriptOpt});
     if (!parser.parse(arguments)) {
         std::fprintf(stderr, "lutkit-editor: %s\nRun 'lutkit-editor --help' for usage.\n",
                      qPrintable(parser.errorText()));
@@ -185,6 +193,7 @@ int main(int argc, char** argv) {
     };
     lut::gui::PreviewOptions options;
     std::optional<lut::SceneKind> input;
+    std::optional<lut::LutPurpose> lutAnswer; // --lut-target
     // The value of `option` through `parse`; a refusal names the option.
     const auto value = [&parser](const QCommandLineOption& option, auto parse) {
         try {
@@ -202,6 +211,8 @@ int main(int argc, char** argv) {
         if (preset != lut::Preset::Smash)
             options.preset = preset;
         options.interpolation = value(interpOpt, lut::parseInterpolation);
+        if (parser.isSet(lutTargetOpt))
+            lutAnswer = value(lutTargetOpt, lut::parseLutPurpose);
         if (parser.isSet(inputOpt))
             input = value(inputOpt, lut::parseSceneKind);
         else if (parser.isSet(fromShotOpt))
@@ -283,6 +294,8 @@ int main(int argc, char** argv) {
     window.setInteractiveErrors(!headless && !scripted);
     if (!headless && !scripted)
         window.restoreWindowState();
+    if (lutAnswer)
+        window.setLutPurposeAnswer(*lutAnswer);
     window.setPreviewOptions(options);
     if (windowSize.isValid())
         window.resize(windowSize);

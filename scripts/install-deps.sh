@@ -19,11 +19,12 @@ esac
 # desktop-file-utils, libxml2-utils, shared-mime-info: tests/desktop checks the editor's desktop files.
 # libopenexr-dev, libpng-dev, zlib1g-dev, libdeflate-dev: the native image codecs (formats/src/imageio).
 # ccache: rebuilds (the four builds of ./test.sh, a fresh clone in CI) reuse unchanged objects.
+# ffmpeg: an outside reader in the tests (its lut3d filter reads the .cube files lutkit writes).
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   zlib1g-dev libdeflate-dev libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
-  desktop-file-utils libxml2-utils shared-mime-info ccache "$@")
+  desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg "$@")
 if [ "$ONLY" = 1 ]; then
   PACKAGES=("$@")
 fi

@@ -23,6 +23,7 @@ namespace lut::cli {
 struct ApplyOptions {
     std::string lut;                    // LUT file (any readable format; - = standard input)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image (default: detected)
+    std::string lutTarget;              // what the LUT is for ("" = its tag, else raw)
     std::vector<std::string> inputs;    // files, folders, frame patterns, or -
     OutputOptions output;               // -o FILE | DIR/ | PATTERN | -, -y, -n
     std::string frames;                 // --frames 1-100 (with a frame pattern)

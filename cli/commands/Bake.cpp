@@ -2,6 +2,7 @@
 #include "commands/Bake.h"
 
 #include "Json.h"
+#include "Numbers.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -16,22 +17,6 @@ namespace lut::cli {
 
 namespace {
 
-std::string ms(double seconds) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g ms", seconds * 1e3);
-    return buf;
-}
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
-
-std::string vec(glm::vec3 v) {
-    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
-}
-
 void printJson(const std::string& output, const formats::BakeReport& r) {
     std::cout << "{\"output\": " << json::quote(output)
               << ", \"format\": " << json::quote(r.outputFormat)
@@ -39,8 +24,8 @@ void printJson(const std::string& output, const formats::BakeReport& r) {
               << ", \"config\": " << json::quote(r.configUsed)
               << ",\n \"cube_size\": " << r.cubeSize << ", \"shaper_size\": " << r.shaperSize
               << ", \"shaper\": " << json::quote(r.shaper)
-              << ", \"domain_min\": " << vec(r.domainMin)
-              << ", \"domain_max\": " << vec(r.domainMax)
+              << ", \"domain_min\": " << json::vec3(r.domainMin)
+              << ", \"domain_max\": " << json::vec3(r.domainMax)
               << ",\n \"error\": " << json::stats(r.error)
               << ", \"measured_file\": " << (r.measuredFile ? "true" : "false")
               << ", \"read_back_error\": "
@@ -58,19 +43,20 @@ void printText(const std::string& output, const formats::BakeReport& r,
         std::cout << "config   " << r.configUsed << "\n";
     if (r.cubeSize == 0) {
         std::cout << "table    " << r.shaper << ", " << r.shaperSize << " entries over "
-                  << num(r.domainMin.x) << ".." << num(r.domainMax.x) << ", " << ms(r.sampleSeconds)
-                  << "\n";
+                  << significant(r.domainMin.x, 6) << ".." << significant(r.domainMax.x, 6) << ", "
+                  << milliseconds(r.sampleSeconds) << "\n";
     } else {
         if (r.shaperSize)
             std::cout << "shaper   " << r.shaper << ", " << r.shaperSize << " entries\n";
         else
             std::cout << "shaper   " << r.shaper << "\n";
-        std::cout << "table    " << r.cubeSize << "^3 over " << num(r.domainMin.x) << ".."
-                  << num(r.domainMax.x) << (r.shaperSize ? " (through the shaper)" : "") << ", "
-                  << ms(r.sampleSeconds) << "\n";
+        std::cout << "table    " << r.cubeSize << "^3 over " << significant(r.domainMin.x, 6)
+                  << ".." << significant(r.domainMax.x, 6)
+                  << (r.shaperSize ? " (through the shaper)" : "") << ", "
+                  << milliseconds(r.sampleSeconds) << "\n";
     }
-    std::cout << "wrote    " << output << ": " << r.outputFormat << ", " << ms(r.writeSeconds)
-              << "\n";
+    std::cout << "wrote    " << output << ": " << r.outputFormat << ", "
+              << milliseconds(r.writeSeconds) << "\n";
     printDiagnostics(std::cout, r.diagnostics, verbosity);
     std::cout << "error    "
               << (r.measuredFile ? "the file read back"
@@ -84,7 +70,7 @@ void printText(const std::string& output, const formats::BakeReport& r,
               << ": " << r.error.str() << "\n";
     if (r.error.bounded)
         std::cout << "         max: " << r.error.coverage() << "\n";
-    std::cout << "total    " << ms(r.totalSeconds) << "\n";
+    std::cout << "total    " << milliseconds(r.totalSeconds) << "\n";
 }
 
 } // namespace

@@ -2,10 +2,12 @@
 #include "commands/Check.h"
 
 #include "Json.h"
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
+#include "lut/LutPurpose.h"
 #include "lut/check/CheckLut.h"
 #include "lut/check/CheckPicture.h"
 #include "lut/formats/ImageIO.h"
@@ -13,7 +15,6 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
 #include "lut/pipeline/SmashShownEdit.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <CLI/CLI.hpp>
 
@@ -169,9 +170,10 @@ int runCheck(const CheckCommandOptions& o) {
             read.layout = o.inLayout;
             LutFile file = formats::readLut(path, read, o.inFormat);
             printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
-            // A game LUT is judged by the look the game shows with it.
-            const bool game = !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash
-                                                : file.format == "nutexb";
+            // A game LUT (--target smash, else what the file says: a .nutexb, its
+            // LUTKIT_PURPOSE tag) is judged by the look the game shows with it.
+            const bool game =
+                decidePurpose(file, purposeOption(o.target)).purpose == LutPurpose::Smash;
             std::string description;
             if (game) {
                 description = "Smash Ultimate game LUT " + std::to_string(file.toLut3D().size()) +
@@ -242,13 +244,11 @@ CLI::App* setupCheck(CLI::App& app, std::function<void(const CheckCommandOptions
                     "thresholds file: lines 'NAME = WARN FAIL' (docs/check.md)")
         ->type_name("FILE");
     sub->add_flag("--json", o->json, "print the report as JSON");
-    sub->add_option("--target", o->target,
-                    std::string("what the LUT is for: ") + toString(ExtractTarget::Smash) +
-                        " = Smash Ultimate's LUT, checked as the look the game shows with it "
-                        "(default for a .nutexb); " +
-                        toString(ExtractTarget::Raw) + " = the table as it is")
-        ->type_name("NAME")
-        ->check(choicesValidator(targetChoices()));
+    addPurpose(*sub, "--target", o->target,
+               std::string("what the LUT is for: ") + toString(LutPurpose::Smash) +
+                   " = Smash Ultimate's LUT, checked as the look the game shows with it "
+                   "(default: what the file says, LUTKIT_PURPOSE, or a .nutexb); " +
+                   toString(LutPurpose::Raw) + " = the table as it is");
     addInputFormat(*sub, o->inFormat);
     addLayout(*sub, "--in-layout", o->inLayout, "LUT images: the layout (default: detected)");
     addOverwriteOptions(*sub, o->overwrite);

@@ -2,11 +2,13 @@
 #include "commands/Compose.h"
 
 #include "LutFiles.h"
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
 
 #include "lut/ops/Compose.h"
+#include "lut/pipeline/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,18 +20,28 @@ namespace lut::cli {
 int runCompose(const ComposeCommandOptions& o) {
     if (!beginOutput(o.output, o.overwrite, {o.a, o.b}, o.verbosity.quiet))
         return kExitOk;
-    const Lut3D a = readLutTable(o.a, o.verbosity);
-    const Lut3D b = readLutTable(o.b, o.verbosity);
+    const PurposedPair p =
+        readPurposedPair(o.a, o.b, o.inTarget, o.target, o.output, o.format, o.verbosity);
     ComposeOptions c;
     c.size = o.size;
     c.method = o.interp;
-    const OpResult r = compose(a, b, c);
-    std::cout << "composed " << o.b << " after " << o.a << " on a " << r.lut.size()
-              << "^3 lattice (" << toString(o.interp) << ")\n"
-              << "error    between lattice points, against B(A(x)): "
-              << costText(r.error, r.sanitizedEntries) << "\n";
-    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity);
-    checkWrittenLut(o.output, r.lut, o.verbosity);
+    // B's edit of the picture A gives, for what OUT is for (lut/pipeline/PurposeOps.h).
+    PurposeOptions po;
+    po.editInterpolation = o.interp;
+    const PurposeOpResult pr =
+        composeForPurpose({&p.a, p.pa.purpose}, {&p.b, p.pb.purpose}, p.out.to, c, po);
+    const OpResult& r = pr.result;
+    const std::optional<LutPurpose> says = printPurposeOp(std::cout, p, pr, o.interp);
+    if (pr.tableOp)
+        std::cout << "composed " << o.b << " after " << o.a << " on a " << r.lut.size()
+                  << "^3 lattice (" << toString(o.interp) << ")\n"
+                  << "error    between lattice points, against B(A(x)): "
+                  << costText(r.error, r.sanitizedEntries) << "\n";
+    else
+        std::cout << "composed " << o.b << "'s edit on the picture the game shows with " << o.a
+                  << ": the game's LUT that shows it (exact at its 16^3 lattice)\n";
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity, says);
+    checkWrittenLut(o.output, r.lut, o.verbosity, p.out.to == LutPurpose::Smash);
     return kExitOk;
 }
 
@@ -46,11 +58,19 @@ CLI::App* setupCompose(CLI::App& app, std::function<void(const ComposeCommandOpt
         ->check(CLI::Range(2, 256));
     addOutputFormat(*sub, o->format);
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
+    addPurpose(*sub, "--target", o->target,
+               "what OUT is for (default: smash for a .nutexb, else what A is for): B's edit of "
+               "the picture A gives, as an edit (raw) or as the game's LUT (smash)");
+    addPurpose(*sub, "--in-target", o->inTarget,
+               "what A and B are for (default: what each file says, LUTKIT_PURPOSE or a "
+               ".nutexb; else raw)");
     addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
     sub->footer("Examples:\n"
                 "  lutkit compose look.cube display.cube look_display.cube\n"
-                "  lutkit compose grade.cube calibration.3dl out.cube --size 65");
+                "  lutkit compose grade.cube calibration.3dl out.cube --size 65\n"
+                "  lutkit compose stage.nutexb look.cube new.nutexb   # look on the stage's "
+                "picture");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

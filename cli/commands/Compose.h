@@ -20,6 +20,8 @@ struct ComposeCommandOptions {
     std::string format; // output format ("" = by extension)
     int size = 0;       // 0 = the larger of the two
     Interpolation interp = Interpolation::Tetrahedral;
+    std::string target;      // what OUT is for ("" = smash for a .nutexb, else A's)
+    std::string inTarget;    // what A and B are for ("" = what each file says, else raw)
     OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };

@@ -2,21 +2,25 @@
 #include "commands/Convert.h"
 
 #include "Json.h"
+#include "Numbers.h"
+#include "PurposeText.h"
 #include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
 #include "commands/Bake.h"
 
+#include "lut/LutPurpose.h"
 #include "lut/formats/Bake.h"
 #include "lut/formats/Convert.h"
 #include "lut/formats/Hald.h"
 #include "lut/formats/ImageFiles.h"
+#include "lut/formats/ImageIO.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/OcioFiles.h"
-#include "lut/io/BuiltinLut.h"
+#include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
-#include "lut/roundtrip/RoundtripTarget.h"
+#include "lut/io/FormatRegistry.h"
 
 #include <CLI/CLI.hpp>
 
@@ -28,12 +32,6 @@
 namespace lut::cli {
 
 namespace {
-
-std::string ms(double seconds) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g ms", seconds * 1e3);
-    return buf;
-}
 
 std::string describe(const LutFile& f) {
     std::string s = f.format;
@@ -64,7 +62,12 @@ std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r)
                       : "{\"path\": " + json::quote(o.output) +
                             ", \"format\": " + json::quote(r.outputFormat) +
                             ", \"seconds\": " + json::number(r.writeSeconds) + "}")
-       << ",\n \"output_format\": " << json::quote(r.outputFormat) << ",\n \"strength\": "
+       << ",\n \"output_format\": " << json::quote(r.outputFormat)
+       << ",\n \"purpose\": {\"input\": " << json::quote(toString(r.purpose.input.purpose))
+       << ", \"input_said\": "
+       << (r.purpose.input.said ? json::quote(toString(*r.purpose.input.said)) : "null")
+       << ", \"output\": " << json::quote(toString(r.purpose.output))
+       << ", \"conversion\": " << conversionJson(r.purpose.conversion) << "},\n \"strength\": "
        << (r.strength ? "{\"luma\": " + json::number(r.strength->luma) +
                             ", \"chroma\": " + json::number(r.strength->chroma) + "}"
                       : std::string("null"))
@@ -85,15 +88,34 @@ std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r)
 }
 
 void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
-    std::cout << "read     " << o.input << ": " << describe(r.input) << ", " << ms(r.readSeconds)
-              << "\n";
+    std::cout << "read     " << o.input << ": " << describe(r.input) << ", "
+              << milliseconds(r.readSeconds) << "\n";
     if (o.verbosity.verbose)
         if (const std::string d = layoutDetail(r.input, o.inLayout.has_value(), "--in-layout");
             !d.empty())
             std::cout << "  " << d << "\n";
     printDiagnostics(std::cout, r.input.diagnostics, o.verbosity);
-    if (r.strength)
-        std::cout << "strength " << strengthText(o.strength) << "\n";
+    if (r.strength) // of the edit, when it is made into another purpose (Convert.h)
+        std::cout << "strength " << strengthText(o.strength)
+                  << (r.purpose.conversion ? ", of the edit" : "") << "\n";
+    const formats::PurposeStep& p = r.purpose;
+    std::cout << "purpose  in:  " << p.input.text("--in-target") << "\n"
+              << "         out: " << toString(p.output)
+              << (p.outputGiven ? " (--target)"
+                  : r.outputFormat == "nutexb"
+                      ? p.input.purpose == LutPurpose::Raw
+                            ? " (the output is a .nutexb, the game's LUT; --target raw writes IN "
+                              "as it is)"
+                            : " (the output is a .nutexb, the game's LUT)"
+                  : p.output == p.input.purpose ? " (as IN; --target chooses)"
+                                                : "")
+              << "\n";
+    if (p.conversion) {
+        ConversionWords w;
+        w.stage = o.originalLut.empty() ? "neutral" : o.originalLut;
+        w.interp = o.interp;
+        printConversion(std::cout, *p.conversion, w);
+    }
     if (r.resample)
         std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
                   << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n"
@@ -103,7 +125,7 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     std::cout << "wrote    " << o.output << ": " << r.outputFormat;
     if (r.readBack)
         std::cout << ", reads back as " << describe(*r.readBack);
-    std::cout << ", " << ms(r.writeSeconds) << "\n";
+    std::cout << ", " << milliseconds(r.writeSeconds) << "\n";
     printDiagnostics(std::cout, r.writeDiagnostics, o.verbosity);
     if (r.storage)
         std::cout << "storage  (quantisation, written file read back): " << r.storage->str()
@@ -111,7 +133,7 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     else
         std::cout << "storage  not measured: cannot read the output back: " << r.readBackError
                   << "\n";
-    std::cout << "total    " << ms(r.totalSeconds) << "\n";
+    std::cout << "total    " << milliseconds(r.totalSeconds) << "\n";
 }
 
 } // namespace
@@ -137,24 +159,23 @@ int runConvert(const ConvertOptions& o) {
             std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
         return kExitOk;
     }
-    // A .nutexb is the game's LUT: written for the game unless asked otherwise (or copied from
-    // another .nutexb).
-    const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
-    const bool gameIn = extensionOf(o.input) == ".nutexb" || o.inFormat == "nutexb" ||
-                        isBuiltinGameLut(o.input); // builtin:smash-default is the game's LUT
-    const bool smash =
-        !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash : gameOut && !gameIn;
-    if (smash)
-        return runConvertGame(o, !o.target.empty()
-                                     ? "asked for"
-                                     : "the output is a .nutexb, the game's LUT; --target raw "
-                                       "writes the LUT as it is");
-    if (!o.originalLut.empty() || !o.screenshot.empty() || o.refine)
+    const std::optional<LutPurpose> outPurpose = purposeOption(o.target);
+    const std::optional<LutPurpose> inPurpose = purposeOption(o.inTarget);
+    // The options that make a game LUT from an edit need a smash output: asked for, or a .nutexb.
+    formats::registerBuiltinFormats();
+    const Format* writer = o.format.empty() ? FormatRegistry::instance().writerForPath(o.output)
+                                            : FormatRegistry::instance().byName(o.format);
+    const bool smashOut =
+        outPurpose ? *outPurpose == LutPurpose::Smash : writer && writer->name() == "nutexb";
+    if (!smashOut && (!o.originalLut.empty() || !o.screenshot.empty() || o.refine))
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
     if (o.layout)
         if (const std::string problem = layoutSizeProblem(*o.layout, o.size); !problem.empty())
             throw UsageError(problem);
     if (o.color.any()) {
+        if (outPurpose || inPurpose)
+            throw UsageError("--target and --in-target do not apply with --from/--to (the LUT "
+                             "is baked with colour conversions, as it is)");
         if (!isFullStrength(o.strength))
             throw UsageError("--strength does not combine with --from/--to yet: convert at the "
                              "strength first, then bake the result");
@@ -204,13 +225,46 @@ int runConvert(const ConvertOptions& o) {
     if (!o.name.empty())
         co.write.setAttribute(formats::nutexb::kNameAttribute, o.name);
     co.interp = o.interp;
+    co.inPurpose = inPurpose;
+    co.outPurpose = outPurpose;
     co.strength = o.strength;
-    const formats::ConvertReport report = formats::convertLut(o.input, o.output, co);
+    // An edit made into the game's LUT: on the stage's picture, measured over the screenshot's
+    // colours (else a grid), the refinement reported and written when asked.
+    Lut3D stage;
+    if (!o.originalLut.empty()) {
+        stage = readStageLut(o.originalLut, o.verbosity);
+        co.purpose.stageLut = &stage;
+    }
+    Image shot;
+    ImageView shotView;
+    if (!o.screenshot.empty()) {
+        shot = formats::readImage(o.screenshot).image;
+        shotView = shot.view();
+        co.purpose.screenshot = &shotView;
+    }
+    co.purpose.measure = true;
+    co.purpose.refine = o.refine;
+    co.purpose.editInterpolation = o.interp;
+    formats::ConvertReport report;
+    try {
+        report = formats::convertLut(o.input, o.output, co);
+    } catch (const Error& e) {
+        if (std::string(e.what()).rfind("the game's LUT is ", 0) == 0)
+            throw UsageError(std::string(e.what()) + ": --size does not apply to --target smash");
+        throw;
+    }
     if (o.json)
         std::cout << reportJson(o, report);
     else
         printReport(o, report);
-    checkWrittenLut(o.output, report.readBack ? *report.readBack : report.input, o.verbosity);
+    const bool madeGame =
+        report.purpose.conversion && report.purpose.conversion->to == LutPurpose::Smash;
+    if (!madeGame && (!o.originalLut.empty() || !o.screenshot.empty() || o.refine))
+        std::cerr << "lutkit: warning: " << o.input
+                  << " is already the game's LUT: --original-lut, --screenshot and --refine "
+                     "were not used\n";
+    checkWrittenLut(o.output, report.readBack ? *report.readBack : report.input, o.verbosity,
+                    report.purpose.output == LutPurpose::Smash);
     return kExitOk;
 }
 
@@ -248,15 +302,15 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
     addOutputOptions(*sub, o->overwrite,
                      "the output, as OUT; a folder (existing, or ending in /) for a folder IN: "
                      "each LUT under its own name, as --format (default nutexb)");
-    sub->add_option("--target", o->target,
-                    std::string("what OUT is for (default: ") + toString(ExtractTarget::Smash) +
-                        " for a .nutexb, else " + toString(ExtractTarget::Raw) +
-                        "): " + toString(ExtractTarget::Raw) + " = the LUT as it is; " +
-                        toString(ExtractTarget::Smash) +
-                        " = IN is an edit of the game's picture (a graded strip such as "
-                        "Smush-LUT's neutral.png), OUT the game's LUT that shows it")
-        ->type_name("NAME")
-        ->check(choicesValidator(targetChoices()));
+    addPurpose(*sub, "--target", o->target,
+               std::string("what OUT is for (default: ") + toString(LutPurpose::Smash) +
+                   " for a .nutexb, else what IN is for): " + toString(LutPurpose::Raw) +
+                   " = an edit, the look itself; " + toString(LutPurpose::Smash) +
+                   " = the game's LUT (an edit IN, e.g. Smush-LUT's graded neutral.png, becomes "
+                   "the LUT that makes the game show it)");
+    addPurpose(*sub, "--in-target", o->inTarget,
+               "what IN is for (default: what the file says, LUTKIT_PURPOSE, or a .nutexb; "
+               "else raw)");
     sub->add_option("--original-lut", o->originalLut,
                     "smash: the stage's LUT the edited picture was taken with (default neutral; "
                     "a stage without its own LUT: builtin:smash-default)")
@@ -281,7 +335,10 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
                 "(compensated)\n"
                 "  lutkit convert neutral_graded.png color_grading_lut.nutexb --original-lut "
                 "stage.nutexb --refine\n"
-                "  lutkit convert game.cube color_grading_lut.nutexb --target raw  # as it is\n"
+                "  lutkit convert smush_out.png color_grading_lut.nutexb --in-target smash  # "
+                "already the game's\n"
+                "  lutkit convert color_grading_lut.nutexb look.cube --target raw  # the edit it "
+                "makes\n"
                 "  lutkit convert edited_strip.png grade.cube           # a graded 256x16 strip "
                 "to .cube\n"
                 "  lutkit convert grade.cube strip.png --layout unity --bit-depth 16\n"

@@ -35,10 +35,11 @@ struct ConvertOptions {
     std::string name; // nutexb name field
     bool json = false;
     OutputOptions overwrite; // -o (or the positional OUT), -y, -n
-    // What the output is for (raw | smash); "" = smash for a .nutexb output (unless the input is
-    // a .nutexb too), else raw. smash: IN is an edit of the game's picture (a graded strip,
-    // Smush-LUT's neutral.png, a .cube) and OUT the game's LUT that shows it.
+    // What the output is for (raw | smash); "" = smash for a .nutexb output, else what IN is
+    // for. An edit (raw) to smash: OUT is the game's LUT that shows it; the game's LUT to raw:
+    // OUT is the edit it makes of the game's picture (lut/formats/Convert.h).
     std::string target;
+    std::string inTarget;    // what IN is for ("" = what the file says, else raw)
     std::string originalLut; // smash: the stage's LUT (default neutral)
     std::string screenshot;  // smash: the colours that occur (default: an input grid)
     bool refine = false;     // smash: write the least-squares refinement
@@ -51,8 +52,6 @@ struct ConvertOptions {
 };
 
 int runConvert(const ConvertOptions& options);
-// The smash target: the game's LUT for the edit IN (ConvertGame.cpp).
-int runConvertGame(const ConvertOptions& options, const std::string& reason);
 // A folder IN (or a folder output): every LUT file in it, files in parallel as apply does
 // images, each converted under its own name into the output folder as --format (default
 // nutexb: the game's LUT, each with its in-game error) (ConvertBatch.cpp).

@@ -5,17 +5,16 @@
 #include "commands/Convert.h"
 
 #include "Batch.h"
-#include "GameLut.h"
-#include "StrengthOptions.h"
+#include "LutFiles.h"
+#include "PurposeText.h"
 #include "Usage.h"
 
 #include "lut/formats/Convert.h"
+#include "lut/formats/ImageIO.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
-#include "lut/io/BuiltinLut.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <filesystem>
 #include <iostream>
@@ -42,45 +41,25 @@ FormatOptions writeOptions(const ConvertOptions& o) {
     return wo;
 }
 
-// One LUT made for the game: read, strength, authored, written; the line that says it.
-std::string convertForGame(const ConvertOptions& o, const BatchJob& j, Diagnostics& notes) {
-    FormatOptions ro;
-    ro.layout = o.inLayout;
-    const LutFile in = formats::readLut(j.input, ro, o.inFormat);
-    notes = in.diagnostics;
-    const Lut3D edit = applyStrength(in.toLut3D(), o.strength);
-    GameLutRequest q;
-    q.stageLut = o.originalLut;
-    q.screenshot = o.screenshot;
-    q.refine = o.refine;
-    q.interp = o.interp;
-    SmashAuthoringResult authored;
-    std::ostringstream unused; // the one-file report; a batch says one line per file
-    LutFile out;
-    out.cube = makeGameLut(edit, q, o.verbosity, unused, &authored);
-    FormatOptions wo = writeOptions(o);
-    wo.size = 0;
-    const Diagnostics wd = formats::writeLut(j.output, out, wo, "nutexb");
-    notes.insert(notes.end(), wd.begin(), wd.end());
-    return j.input + " -> " + j.output + ": in game " +
-           (o.refine ? authored.refinedError : authored.exactError).str() + " against the edit" +
-           (o.refine ? " (refined)" : "") + "\n";
-}
-
-// One LUT written as it is, in another format: the resampling and storage errors.
-std::string convertAsItIs(const ConvertOptions& o, const std::string& format, const BatchJob& j,
-                          Diagnostics& notes) {
-    formats::ConvertOptions co;
-    co.inFormat = o.inFormat;
+// One LUT converted by the library's convertLut (lut/formats/Convert.h): made for what OUT is
+// for (the game's LUT from an edit, the edit a game LUT makes, or as it is), at the strength
+// asked for; the line that says what it cost.
+std::string convertOne(const std::string& format, const BatchJob& j,
+                       const formats::ConvertOptions& base, Diagnostics& notes) {
+    formats::ConvertOptions co = base;
     co.outFormat = format;
-    co.read.layout = o.inLayout;
-    co.write = writeOptions(o);
-    co.interp = o.interp;
-    co.strength = o.strength;
     const formats::ConvertReport r = formats::convertLut(j.input, j.output, co);
     notes = r.input.diagnostics;
     notes.insert(notes.end(), r.writeDiagnostics.begin(), r.writeDiagnostics.end());
     std::string line = j.input + " -> " + j.output + ": ";
+    const auto& c = r.purpose.conversion;
+    if (c && c->to == LutPurpose::Smash) {
+        const SmashAuthoringResult& a = c->authoring;
+        return line + "in game " + (a.refined ? a.refinedError : a.exactError).str() +
+               " against the edit" + (a.refined ? " (refined)" : "") + "\n";
+    }
+    if (c)
+        line += "the edit this game LUT makes " + c->sampling.str() + "; ";
     if (r.resample)
         line += "resampled " + std::to_string(r.resample->from) + "^3 -> " +
                 std::to_string(r.resample->to) + "^3 " + r.resample->error.str() + "; ";
@@ -121,14 +100,35 @@ int runConvertBatch(const ConvertOptions& o) {
     const std::string ext =
         writer->extensions().empty() ? std::string(".png") : writer->extensions().front();
     const bool gameOut = writer->name() == "nutexb";
-    std::optional<ExtractTarget> asked;
-    if (!o.target.empty())
-        asked = parseTarget(o.target);
-    if (asked == ExtractTarget::Smash && !gameOut)
-        throw UsageError("--target smash makes the game's LUT: a .nutexb (--format nutexb)");
+    const std::optional<LutPurpose> asked = purposeOption(o.target);
     if ((!o.originalLut.empty() || !o.screenshot.empty() || o.refine) &&
-        (!gameOut || asked == ExtractTarget::Raw))
+        (asked ? *asked == LutPurpose::Raw : !gameOut))
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
+    // What every file is converted with: what each is for (its tag, a .nutexb, --in-target),
+    // what OUT is for (--target, else the game's for a .nutexb), the stage and screenshot.
+    formats::ConvertOptions base;
+    base.inFormat = o.inFormat;
+    base.read.layout = o.inLayout;
+    base.write = writeOptions(o);
+    base.interp = o.interp;
+    base.strength = o.strength;
+    base.inPurpose = purposeOption(o.inTarget);
+    base.outPurpose = asked;
+    Lut3D stage;
+    if (!o.originalLut.empty()) {
+        stage = readStageLut(o.originalLut, o.verbosity);
+        base.purpose.stageLut = &stage;
+    }
+    Image shot;
+    ImageView shotView;
+    if (!o.screenshot.empty()) {
+        shot = formats::readImage(o.screenshot).image;
+        shotView = shot.view();
+        base.purpose.screenshot = &shotView;
+    }
+    base.purpose.measure = true;
+    base.purpose.refine = o.refine;
+    base.purpose.editInterpolation = o.interp;
 
     OutputOptions out = o.overwrite;
     out.output = o.output;
@@ -149,14 +149,8 @@ int runConvertBatch(const ConvertOptions& o) {
     bo.unit = "LUTs";
     std::mutex noteMutex;
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext&) {
-        // What each file is for: the game's LUT from an edit, or the LUT as it is (a .nutexb
-        // read is the game's LUT already, as for one file).
-        const bool gameIn = extensionOf(j.input) == ".nutexb" || o.inFormat == "nutexb" ||
-                            isBuiltinGameLut(j.input);
-        const bool smash = asked ? *asked == ExtractTarget::Smash : gameOut && !gameIn;
         Diagnostics notes;
-        const std::string line =
-            smash ? convertForGame(o, j, notes) : convertAsItIs(o, writer->name(), j, notes);
+        const std::string line = convertOne(writer->name(), j, base, notes);
         std::lock_guard<std::mutex> lock(noteMutex);
         printDiagnostics(std::cerr, notes, o.verbosity, "lutkit: ");
         return line;

@@ -3,6 +3,7 @@
 
 #include "Json.h"
 #include "LutFiles.h"
+#include "Numbers.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -21,22 +22,8 @@ namespace lut::cli {
 
 namespace {
 
-std::string f2(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
-std::string triple(glm::vec3 v) {
-    return f2(v.x) + " " + f2(v.y) + " " + f2(v.z);
-}
-
 std::string steps(glm::dvec3 v) {
-    return "R " + f2(v.x) + "  G " + f2(v.y) + "  B " + f2(v.z);
-}
-
-std::string jvec(glm::dvec3 v) {
-    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
+    return "R " + significant(v.x) + "  G " + significant(v.y) + "  B " + significant(v.z);
 }
 
 void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScale) {
@@ -47,10 +34,10 @@ void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScal
               << ",\n \"delta_e2000\": {\"max\": " << json::number(r.maxDeltaE)
               << ", \"mean\": " << json::number(r.meanDeltaE)
               << ", \"p95\": " << json::number(r.p95DeltaE) << "}"
-              << ",\n \"max_8bit_steps\": " << jvec(r.maxSteps8)
-              << ", \"mean_8bit_steps\": " << jvec(r.meanSteps8)
-              << ",\n \"worst\": {\"input\": " << jvec(r.worst.input)
-              << ", \"a\": " << jvec(r.worst.a) << ", \"b\": " << jvec(r.worst.b)
+              << ",\n \"max_8bit_steps\": " << json::vec3(r.maxSteps8)
+              << ", \"mean_8bit_steps\": " << json::vec3(r.meanSteps8)
+              << ",\n \"worst\": {\"input\": " << json::vec3(r.worst.input)
+              << ", \"a\": " << json::vec3(r.worst.a) << ", \"b\": " << json::vec3(r.worst.b)
               << ", \"delta_e2000\": " << json::number(r.worst.deltaE) << "},\n \"regions\": [";
     const auto ranked = r.rankedRegions();
     for (std::size_t i = 0; i < ranked.size(); ++i) {
@@ -59,8 +46,8 @@ void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScal
                   << ", \"colors\": " << g.count
                   << ", \"mean_delta_e2000\": " << json::number(g.meanDeltaE)
                   << ", \"max_delta_e2000\": " << json::number(g.maxDeltaE)
-                  << ", \"max_8bit_steps\": " << jvec(g.maxSteps8)
-                  << ", \"worst_input\": " << jvec(g.worstInput) << "}";
+                  << ", \"max_8bit_steps\": " << json::vec3(g.maxSteps8)
+                  << ", \"worst_input\": " << json::vec3(g.worstInput) << "}";
     }
     std::cout << "],\n \"heatmap\": "
               << (o.heatmap.empty() ? "null"
@@ -76,17 +63,18 @@ void printText(const DiffCommandOptions& o, const DiffReport& r) {
         std::cout << "identical: ΔE2000 0, 0 8-bit steps\n";
         return;
     }
-    std::cout << "ΔE2000   max " << f2(r.maxDeltaE) << ", mean " << f2(r.meanDeltaE)
-              << ", 95th percentile " << f2(r.p95DeltaE) << " (entries taken as sRGB-encoded)\n"
+    std::cout << "ΔE2000   max " << significant(r.maxDeltaE) << ", mean "
+              << significant(r.meanDeltaE) << ", 95th percentile " << significant(r.p95DeltaE)
+              << " (entries taken as sRGB-encoded)\n"
               << "8-bit    max   " << steps(r.maxSteps8) << "\n"
               << "         mean  " << steps(r.meanSteps8) << "\n"
               << "worst    input " << triple(r.worst.input) << ": A " << triple(r.worst.a) << ", B "
-              << triple(r.worst.b) << " (ΔE " << f2(r.worst.deltaE) << ")\n"
+              << triple(r.worst.b) << " (ΔE " << significant(r.worst.deltaE) << ")\n"
               << "where    (largest mean ΔE first)\n";
     for (const auto& g : r.rankedRegions())
         std::cout << "  " << toString(g.region)
                   << std::string(12 - std::string(toString(g.region)).size(), ' ') << "mean ΔE "
-                  << f2(g.meanDeltaE) << ", max " << f2(g.maxDeltaE) << " at "
+                  << significant(g.meanDeltaE) << ", max " << significant(g.maxDeltaE) << " at "
                   << triple(g.worstInput) << " (" << g.count << " colours)\n";
     if (r.sanitizedEntriesA || r.sanitizedEntriesB)
         std::cout << "note     NaN/Inf entries counted as 0 or +-65504: A " << r.sanitizedEntriesA
@@ -134,7 +122,7 @@ int runDiff(const DiffCommandOptions& o) {
     printText(o, report);
     if (writeHeatmap)
         std::cout << "wrote    " << o.heatmap << ": heat map, black = ΔE 0 to pale yellow = ΔE "
-                  << f2(heat.maxDeltaE) << " and above\n";
+                  << significant(heat.maxDeltaE) << " and above\n";
     return kExitOk;
 }
 

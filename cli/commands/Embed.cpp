@@ -3,6 +3,7 @@
 #include "commands/Embed.h"
 
 #include "LutFiles.h"
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -29,10 +30,10 @@ int runEmbed(const EmbedOptions& o) {
         return kExitOk;
     }
     lut::EmbedOptions eo;
-    eo.target = parseTarget(o.target);
+    eo.target = parseLutPurpose(o.target);
     if (!o.lattice.empty())
         eo.lattice = parseLattice(o.lattice);
-    if (!o.originalLut.empty() && eo.target == ExtractTarget::Raw)
+    if (!o.originalLut.empty() && eo.target == LutPurpose::Raw)
         throw UsageError("--original-lut is for --target smash: a raw LUT does not depend on the "
                          "stage's LUT");
     eo.size = o.size;
@@ -81,7 +82,7 @@ int runEmbed(const EmbedOptions& o) {
     if (!o.verbosity.quiet)
         std::cout << "grade the whole image with global adjustments only, then run: lutkit "
                      "extract EDITED "
-                  << (*p.target == ExtractTarget::Smash ? "color_grading_lut.nutexb" : "grade.cube")
+                  << (*p.target == LutPurpose::Smash ? "color_grading_lut.nutexb" : "grade.cube")
                   << "  (the patch records what it is for: no options needed)\n";
     return kExitOk;
 }
@@ -102,8 +103,8 @@ CLI::App* setupEmbed(CLI::App& app, std::function<void(const EmbedOptions&)> onP
     sub->add_option("--target", o->target,
                     std::string("what you are making, recorded in the patch so extract needs no "
                                 "options: ") +
-                        toString(ExtractTarget::Smash) + " (default) = the game's LUT; " +
-                        toString(ExtractTarget::Raw) +
+                        toString(LutPurpose::Smash) + " (default) = the game's LUT; " +
+                        toString(LutPurpose::Raw) +
                         " = the edit itself (engines that apply the LUT to the shown image)")
         ->type_name("NAME")
         ->check(choicesValidator(targetChoices()));

@@ -1,23 +1,19 @@
 // lutkit extract: the LUT an edited screenshot's patch shows (docs/roundtrip.md).
 #include "commands/Extract.h"
 
-#include "GameLut.h"
 #include "LutFiles.h"
+#include "PurposeText.h"
 #include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
 
-#include "lut/formats/ImageIO.h"
+#include "lut/formats/ExtractFile.h"
 #include "lut/formats/Registry.h"
-#include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
-#include "lut/ops/Resample.h"
+#include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/Extract.h"
-#include "lut/roundtrip/PatchFinder.h"
-#include "lut/roundtrip/PatchReader.h"
-#include "lut/roundtrip/SmushStrip.h"
 
 #include <CLI/CLI.hpp>
 
@@ -32,52 +28,22 @@ bool isGameOutput(const ExtractOptions& o) {
     return extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
 }
 
-void writeOut(const ExtractOptions& o, Lut3D lut, const std::string& what) {
+void writeOut(const ExtractOptions& o, Lut3D lut, LutPurpose purpose) {
     LutFile file;
     file.cube = std::move(lut);
+    file.purpose = purpose; // the output says what it is for (lut/LutPurpose.h)
     FormatOptions fo;
     fo.layout = o.layout;
     const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
     printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
-    std::cout << "wrote " << file.cube->size() << "^3 " << what << " LUT: " << o.output << "\n";
-    checkWrittenLut(o.output, file, o.verbosity, what == toString(ExtractTarget::Smash));
-}
-
-// No marker frame, but EDITED is a LUT image: a graded neutral (Smush-LUT's neutral.png).
-int extractFromLutImage(const ExtractOptions& o, bool smash) {
-    FormatOptions ro;
-    ro.layout = o.inLayout;
-    const LutFile file = formats::readLut(o.input, ro);
-    printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
-    const Lut3D edit = applyStrength(file.toLut3D(), o.strength);
-    if (!o.verbosity.quiet)
-        std::cout << "no patch: " << o.input << " is a " << edit.size() << "^3 LUT image ("
-                  << file.dialect
-                  << " layout), read as a graded neutral (Smush-LUT's neutral.png, or lutkit "
-                     "neutral): the edit itself\n"
-                  << "target: "
-                  << (smash ? "smash (the game's LUT that shows this edit)"
-                            : "raw (the edit as it is; a .nutexb output or "
-                              "--target smash makes the game's LUT)")
-                  << "\n";
-    if (!o.verbosity.quiet && !isFullStrength(o.strength))
-        std::cout << "strength: " << strengthText(o.strength) << ", of the edit\n";
-    if (!smash && (!o.originalLut.empty() || o.refine))
-        throw UsageError("--original-lut and --refine are for the game's LUT (--target smash)");
-    if (!smash) {
-        Lut3D out = o.size > 0 && o.size != edit.size()
-                        ? resample(edit, o.size, Interpolation::Tetrahedral)
-                        : edit;
-        writeOut(o, std::move(out), "raw");
-        return kExitOk;
-    }
-    if (o.size > 0 && o.size != 16)
-        throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
-    GameLutRequest q;
-    q.stageLut = o.originalLut;
-    q.refine = o.refine;
-    writeOut(o, makeGameLut(edit, q, o.verbosity, std::cout), toString(ExtractTarget::Smash));
-    return kExitOk;
+    std::cout << "wrote " << file.cube->size() << "^3 " << toString(purpose) << " LUT: " << o.output
+              << (purpose == LutPurpose::Smash && !isGameOutput(o)
+                      ? " (it says " + purposeTag(purpose) +
+                            ": convert and preview take it as "
+                            "the game's LUT)"
+                      : std::string())
+              << "\n";
+    checkWrittenLut(o.output, file, o.verbosity, purpose == LutPurpose::Smash);
 }
 
 } // namespace
@@ -89,19 +55,22 @@ int runExtract(const ExtractOptions& o) {
             std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
         return kExitOk;
     }
-    lut::ExtractOptions eo;
+    formats::ExtractFileOptions fo;
+    lut::ExtractOptions& eo = fo.extract;
     if (!o.target.empty()) {
-        eo.target = parseTarget(o.target);
+        eo.target = parseLutPurpose(o.target);
     } else if (isGameOutput(o)) {
-        eo.target = ExtractTarget::Smash;
+        eo.target = LutPurpose::Smash;
         eo.targetReason = "the output is a .nutexb, the game's LUT; --target raw writes the edit";
     }
-    if (!o.originalLut.empty() && eo.target && *eo.target == ExtractTarget::Raw)
+    if (!o.originalLut.empty() && eo.target && *eo.target == LutPurpose::Raw)
         throw UsageError("--original-lut is for --target smash: a raw LUT does not depend on the "
                          "stage's LUT");
-    if (o.refine && eo.target && *eo.target == ExtractTarget::Raw)
+    if (o.refine && eo.target && *eo.target == LutPurpose::Raw)
         throw UsageError("--refine is for --target smash (the game's interpolation between its "
                          "16^3 entries)");
+    if (o.size > 0 && o.size != kSmashLutSize && eo.target && *eo.target == LutPurpose::Smash)
+        throw UsageError("the game's LUT is 16^3: --size does not apply to --target smash");
     eo.outputSize = o.size;
     eo.refine = o.refine;
     eo.strength = o.strength;
@@ -110,37 +79,50 @@ int runExtract(const ExtractOptions& o) {
         original = readStageLut(o.originalLut, o.verbosity);
         eo.originalLut = &original;
     }
-    auto loaded = formats::readImage(o.input);
-    eo.fileChromaSubsampling = loaded.info.chromaSubsampling;
-    const FindResult found = findPatch(loaded.image.view());
-    PatchReading patch;
-    if (found.status == FindStatus::Found) {
-        patch = readPatch(loaded.image.view(), found.placement);
-    } else if (found.status != FindStatus::Found &&
-               loaded.image.width() == loaded.image.height() * loaded.image.height()) {
-        // an N^2 x N picture is a LUT strip, not a screenshot
-        // No patch records a target: the game for a .nutexb output or --target smash, else the
-        // edit itself (as convert does with the same file).
-        return extractFromLutImage(o, eo.target && *eo.target == ExtractTarget::Smash);
-    } else if (found.status == FindStatus::NotFound && isSmushStripName(o.input) &&
-               loaded.image.width() >= 256 && loaded.image.height() >= 16) {
+    fo.inLayout = o.inLayout;
+    fo.inPurpose = purposeOption(o.inTarget);
+    formats::ExtractFileResult r = formats::extractLutFromFile(o.input, fo);
+
+    if (r.source == formats::ExtractSource::LutImage) {
+        printDiagnostics(std::cerr, r.image->diagnostics, o.verbosity, "lutkit: ");
+        const bool converted = r.conversion.has_value();
+        if (!converted && (!o.originalLut.empty() || o.refine))
+            throw UsageError("--original-lut and --refine are for the game's LUT made from an "
+                             "edit (--target smash)");
         if (!o.verbosity.quiet)
-            std::cout << "no patch: " << o.input
-                      << " is named like a Smush-LUT strip (.lut.): its top-left 256x16 pixels "
-                         "read as Smush-LUT's strip (the default stage LUT's values, graded)\n";
-        patch = readSmushStrip(loaded.image.view());
-    } else {
-        std::cerr << "lutkit: error: " << o.input << ": " << found.message << "\n";
-        return kExitFailure;
+            std::cout << "no patch: " << o.input << " is a " << r.image->toLut3D().size()
+                      << "^3 LUT image (" << r.image->dialect
+                      << " layout), read as a graded neutral (Smush-LUT's neutral.png, or lutkit "
+                         "neutral): "
+                      << r.decision.text("--in-target") << "\n"
+                      << "target: " << toString(r.purpose)
+                      << (converted ? r.purpose == LutPurpose::Smash
+                                          ? " (the game's LUT that shows this edit)"
+                                          : " (the edit this game LUT makes)"
+                                    : " (as it is; a .nutexb output or --target chooses)")
+                      << "\n";
+        if (!o.verbosity.quiet && !isFullStrength(o.strength))
+            std::cout << "strength: " << strengthText(o.strength) << ", of the edit\n";
+        if (converted) {
+            ConversionWords w;
+            w.stage = o.originalLut.empty() ? "neutral" : o.originalLut;
+            printConversion(std::cout, *r.conversion, w);
+        }
+        writeOut(o, std::move(r.lut), r.purpose);
+        return kExitOk;
     }
+    if (r.source == formats::ExtractSource::SmushStrip && !o.verbosity.quiet)
+        std::cout << "no patch: " << o.input
+                  << " is named like a Smush-LUT strip (.lut.): its top-left 256x16 pixels "
+                     "read as Smush-LUT's strip (the default stage LUT's values, graded)\n";
+    const ExtractResult& res = *r.extract;
     if (o.verbosity.verbose) {
-        const PatchPlacement& p = patch.placement;
+        const PatchPlacement& p = res.placement;
         std::cout << "found a " << p.size << "^3 " << toString(p.lattice) << " patch, "
                   << toString(p.layout) << " layout, " << p.bitDepth << "-bit, scale " << p.scale
                   << " (" << p.cell << " pixels per entry as found), frame at (" << p.frameX << ", "
                   << p.frameY << ")\n";
     }
-    ExtractResult res = extractLut(patch, eo);
     for (const auto& d : res.diagnostics) {
         if (!isShown(d, o.verbosity))
             continue;
@@ -149,10 +131,10 @@ int runExtract(const ExtractOptions& o) {
         else
             std::cerr << "lutkit: " << o.input << ": " << d.str() << "\n";
     }
-    if (res.target == ExtractTarget::Smash && res.clampedEntries > 0)
+    if (res.target == LutPurpose::Smash && res.clampedEntries > 0)
         std::cout << "clamped " << res.clampedEntries << " values (farthest "
                   << res.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
-    writeOut(o, std::move(res.lut), toString(res.target));
+    writeOut(o, std::move(r.lut), r.purpose);
     return kExitOk;
 }
 
@@ -170,9 +152,9 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
         ->type_name("FILE");
     sub->add_option("--target", o->target,
                     std::string("default: what the patch records (embed --target), ") +
-                        toString(ExtractTarget::Smash) + " for a .nutexb output; " +
-                        toString(ExtractTarget::Raw) + " = the edit itself, " +
-                        toString(ExtractTarget::Smash) + " = compensated for the game")
+                        toString(LutPurpose::Smash) + " for a .nutexb output; " +
+                        toString(LutPurpose::Raw) + " = the edit itself, " +
+                        toString(LutPurpose::Smash) + " = compensated for the game")
         ->type_name("NAME")
         ->check(choicesValidator(targetChoices()));
     sub->add_option("--original-lut", o->originalLut,
@@ -191,6 +173,9 @@ CLI::App* setupExtract(CLI::App& app, std::function<void(const ExtractOptions&)>
     addOverwriteOptions(*sub, o->overwrite);
     addLayout(*sub, "--in-layout", o->inLayout,
               "EDITED is a graded LUT image: its layout (default: detected)");
+    addPurpose(*sub, "--in-target", o->inTarget,
+               "EDITED is a graded LUT image: what it is for (default: what the file says, "
+               "else raw, the edit)");
     addStrengthOptions(*sub, o->strength);
     addVerbosity(*sub, o->verbosity, "also say where the patch was found and how it was made");
     sub->footer("Examples:\n"

@@ -29,6 +29,8 @@ struct ExtractOptions {
     std::string format;                // output format name ("" = by extension)
     std::optional<LutLayout> layout;   // output layout for LUT images
     std::optional<LutLayout> inLayout; // EDITED is a graded LUT image: its layout
+    std::string inTarget;              // EDITED is a graded LUT image: what it is ("" = its tag,
+                                       // else raw)
     OutputOptions overwrite;           // -y / -n (the output is the positional OUT)
     StrengthOptions strength;          // the edit blended with what was there before it
     Verbosity verbosity;

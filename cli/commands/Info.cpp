@@ -29,10 +29,6 @@ std::string vec(glm::vec3 v) {
     return buf;
 }
 
-std::string vecJson(glm::vec3 v) {
-    return "[" + json::number(v.x) + ", " + json::number(v.y) + ", " + json::number(v.z) + "]";
-}
-
 } // namespace
 
 int runInfo(const InfoOptions& o) {
@@ -77,18 +73,24 @@ int runInfo(const InfoOptions& o) {
         js << "{\"path\": " << json::quote(o.input) << ", \"format\": " << json::quote(file.format)
            << ", \"dialect\": " << json::quote(file.dialect)
            << ", \"size\": " << (file.cube ? file.cube->size() : 0)
-           << ", \"title\": " << json::quote(title) << ", \"domain_min\": " << vecJson(dmin)
-           << ", \"domain_max\": " << vecJson(dmax) << ", \"shaper\": ";
+           << ", \"title\": " << json::quote(title) << ", \"domain_min\": " << json::vec3(dmin)
+           << ", \"domain_max\": " << json::vec3(dmax) << ", \"shaper\": ";
         if (file.shaper)
             js << "{\"size\": " << file.shaper->size()
-               << ", \"domain_min\": " << vecJson(file.shaper->domainMin())
-               << ", \"domain_max\": " << vecJson(file.shaper->domainMax()) << "}";
+               << ", \"domain_min\": " << json::vec3(file.shaper->domainMin())
+               << ", \"domain_max\": " << json::vec3(file.shaper->domainMax()) << "}";
         else
             js << "null";
         js << ", \"neutral\": " << json::quote(neutral)
            << ", \"max_deviation_from_identity\": " << json::number(deviation)
            << ", \"value_min\": " << json::number(lo) << ", \"value_max\": " << json::number(hi)
-           << ", \"comments\": " << comments << ", \"source_bit_depth\": " << bitDepth
+           << ", \"comments\": " << comments
+           << ", \"purpose\": " << (file.purpose ? json::quote(toString(*file.purpose)) : "null")
+           << ", \"purpose_source\": "
+           << json::quote(!file.purpose             ? "none"
+                          : file.format == "nutexb" ? "format"
+                                                    : "file")
+           << ", \"source_bit_depth\": " << bitDepth
            << ", \"float\": " << (isFloat ? "true" : "false")
            << ", \"diagnostics\": " << json::diagnostics(file.diagnostics) << "}\n";
         std::cout << js.str();
@@ -116,7 +118,13 @@ int runInfo(const InfoOptions& o) {
                   neutral, deviation, deviation * 255.0);
     std::cout << "neutral     " << buf << "\n";
     std::snprintf(buf, sizeof buf, "%.9g .. %.9g", lo, hi);
+    // What the LUT is for (lut/LutPurpose.h), or what the commands take it for.
+    const std::string purpose =
+        file.purpose ? decidePurpose(file).text("")
+                     : "not said (taken as raw, an edit: --in-target or --lut-target smash say "
+                       "it is the game's LUT)";
     std::cout << "values      " << buf << "\n"
+              << "purpose     " << purpose << "\n"
               << "comments    " << comments << "\n"
               << "bit depth   " << bitDepth << (isFloat ? "-bit float" : "-bit integer") << "\n";
     if (o.verbosity.verbose)

@@ -3,6 +3,7 @@
 
 #include "Json.h"
 #include "LutFiles.h"
+#include "Numbers.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
@@ -22,16 +23,6 @@
 namespace lut::cli {
 
 namespace {
-
-std::string g(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
-std::string triple(glm::vec3 v) {
-    return g(v.x) + " " + g(v.y) + " " + g(v.z);
-}
 
 void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD) {
     if (o.json) {
@@ -56,7 +47,7 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
         return;
     }
     std::cout << "inverted " << o.input << (oneD ? " (1D, per channel)" : "") << ": " << r.points
-              << " points, " << g(r.seconds * 1e3) << " ms\n";
+              << " points, " << significant(r.seconds * 1e3) << " ms\n";
     if (r.invertible())
         std::cout << "         invertible everywhere";
     else
@@ -64,7 +55,8 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
                   << "(least-squares answer); " << r.foldedCells
                   << (oneD ? " segments not strictly monotone" : " cells flat or folded");
     std::cout << "\nresidual |A(inverse(y)) - y| at the inverse's lattice points: max "
-              << g(roundUpSignificant(r.maxResidual)) << ", mean " << g(r.meanResidual) << "\n"
+              << significant(roundUpSignificant(r.maxResidual)) << ", mean "
+              << significant(r.meanResidual) << "\n"
               << "         over every y, between them too: " << r.residual.str() << "\n"
               << "         max: " << r.residual.coverage() << "\n"
               << "round trip |inverse(A(x)) - x| over every x: " << r.roundTrip.str() << "\n"
@@ -78,8 +70,8 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
         for (const auto& w : r.worst)
             if (o.verbosity.verbose)
                 std::cout << "  target " << triple(w.target) << " -> " << triple(w.solution)
-                          << " reaches " << triple(w.reached) << " (off by " << g(w.residual)
-                          << ")\n";
+                          << " reaches " << triple(w.reached) << " (off by "
+                          << significant(w.residual) << ")\n";
     }
 }
 

@@ -1,19 +1,20 @@
 // lutkit match: a LUT that gives a picture the look of reference pictures (lut/match/Match.h).
 #include "commands/Match.h"
 
-#include "GameLut.h"
 #include "Json.h"
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
+#include "lut/LutPurpose.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/match/Match.h"
 #include "lut/match/MatchReportImage.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/PurposeConversion.h"
 #include "lut/pipeline/SceneKind.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <CLI/CLI.hpp>
 
@@ -117,7 +118,7 @@ int runMatch(const MatchCommandOptions& o) {
                          " times for " + std::to_string(o.references.size()) +
                          " reference(s): the n-th masks the n-th REFERENCE");
     const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
-    const bool smash = !o.target.empty() ? parseTarget(o.target) == ExtractTarget::Smash : gameOut;
+    const bool smash = !o.target.empty() ? parseLutPurpose(o.target) == LutPurpose::Smash : gameOut;
     if (!smash && !o.originalLut.empty())
         throw UsageError("--original-lut is for --target smash");
     if (!beginOutput(o.output, o.overwrite, inputs, o.verbosity.quiet))
@@ -140,7 +141,7 @@ int runMatch(const MatchCommandOptions& o) {
     Lut3D stage;
     if (smash) {
         if (!o.originalLut.empty())
-            stage = formats::readLut(o.originalLut).toLut3D();
+            stage = readStageLut(o.originalLut, o.verbosity);
         if (source.scene.kind == SceneKind::Scene) {
             // A scene: what the game shows of it, through its own post-processing.
             PipelineSettings ps;
@@ -181,15 +182,30 @@ int runMatch(const MatchCommandOptions& o) {
     LutFile out;
     SmashAuthoringResult game;
     if (smash) {
-        GameLutRequest q;
-        q.stageLut = o.originalLut;
-        if (source.scene.kind == SceneKind::Screenshot)
-            q.screenshot = o.source;
+        // The match made into the game's LUT as lutkit convert makes one
+        // (lut/pipeline/PurposeConversion.h), measured over the screenshot's colours.
+        PurposeOptions po;
+        po.stageLut = o.originalLut.empty() ? nullptr : &stage;
+        Image shot;
+        ImageView shotView;
+        if (source.scene.kind == SceneKind::Screenshot) {
+            shot = formats::readImage(o.source).image;
+            shotView = shot.view();
+            po.screenshot = &shotView;
+        }
+        po.measure = true;
         Lut3D edit = res.lut.toLut3D(33);
         edit.setTitle(res.lut.cube->title());
-        out.cube = makeGameLut(edit, q, o.verbosity, text, &game);
+        PurposeConversion c = convertPurpose(edit, LutPurpose::Raw, LutPurpose::Smash, po);
+        ConversionWords w;
+        w.stage = o.originalLut.empty() ? "neutral" : o.originalLut;
+        printConversion(text, c, w);
+        out.cube = std::move(c.lut);
+        out.purpose = LutPurpose::Smash;
+        game = std::move(c.authoring);
     } else {
         out = res.lut;
+        out.purpose = LutPurpose::Raw; // a match is an edit
     }
     FormatOptions wo;
     wo.layout = o.layout;

@@ -2,10 +2,12 @@
 #include "commands/Mix.h"
 
 #include "LutFiles.h"
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
 #include "lut/ops/Compose.h"
+#include "lut/pipeline/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 
@@ -17,9 +19,15 @@ namespace lut::cli {
 int runMix(const MixCommandOptions& o) {
     if (!beginOutput(o.output, o.overwrite, {o.a, o.b}, o.verbosity.quiet))
         return kExitOk;
-    const Lut3D a = readLutTable(o.a, o.verbosity);
-    const Lut3D b = readLutTable(o.b, o.verbosity);
-    const OpResult r = mix(a, b, o.strength, o.interp);
+    const PurposedPair p =
+        readPurposedPair(o.a, o.b, o.inTarget, o.target, o.output, o.format, o.verbosity);
+    // Both made for what OUT is for, then mixed (lut/pipeline/PurposeOps.h).
+    PurposeOptions po;
+    po.editInterpolation = o.interp;
+    const PurposeOpResult pr = mixForPurpose({&p.a, p.pa.purpose}, {&p.b, p.pb.purpose}, o.strength,
+                                             p.out.to, o.interp, po);
+    const OpResult& r = pr.result;
+    const std::optional<LutPurpose> says = printPurposeOp(std::cout, p, pr, o.interp);
     std::cout << "mixed    " << o.a << " and " << o.b << " at strength " << o.strength << " on A's "
               << r.lut.size() << "^3 lattice\n"
               << "error    "
@@ -27,7 +35,7 @@ int runMix(const MixCommandOptions& o) {
                       ? std::string("none: B has A's lattice, the mix is exact")
                       : "B resampled onto A's lattice: " + costText(r.error, r.sanitizedEntries))
               << "\n";
-    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity);
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.a, o.b}, o.verbosity, says);
     return kExitOk;
 }
 
@@ -44,6 +52,12 @@ CLI::App* setupMix(CLI::App& app, std::function<void(const MixCommandOptions&)> 
         ->check(CLI::Range(-1.0, 2.0));
     addOutputFormat(*sub, o->format);
     addInterp(*sub, o->interp, "interpolation when B has another lattice (default tetrahedral)");
+    addPurpose(*sub, "--target", o->target,
+               "what OUT is for (default: smash for a .nutexb, else what A is for): A and B are "
+               "made for it, then mixed");
+    addPurpose(*sub, "--in-target", o->inTarget,
+               "what A and B are for (default: what each file says, LUTKIT_PURPOSE or a "
+               ".nutexb; else raw)");
     addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
     sub->footer("Examples:\n"

@@ -19,6 +19,8 @@ struct MixCommandOptions {
     std::string format;
     double strength = 0.5; // t: 0 = A, 1 = B
     Interpolation interp = Interpolation::Tetrahedral;
+    std::string target;      // what OUT is for ("" = smash for a .nutexb, else A's)
+    std::string inTarget;    // what A and B are for ("" = what each file says, else raw)
     OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };

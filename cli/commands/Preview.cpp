@@ -8,6 +8,7 @@
 
 #include "Batch.h"
 #include "LutFiles.h"
+#include "PurposeText.h"
 #include "StrengthOptions.h"
 #include "Usage.h"
 #include "Vocabulary.h"
@@ -17,8 +18,9 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
+#include "lut/ops/QuantizeLut.h"
+#include "lut/pipeline/PreviewPlan.h"
 #include "lut/pipeline/SceneKind.h"
-#include "lut/pipeline/Transfer.h"
 
 #include <CLI/CLI.hpp>
 
@@ -63,12 +65,16 @@ std::string paramText(const StageParam& p, bool current) {
 // The --help footer, generated from the stage registry and the presets.
 std::string previewFooter() {
     std::ostringstream os;
-    os << "Input: 8/16-bit images are in-game screenshots: the game's display encode and "
-          "grading (with\n  --original-lut, default neutral) are undone before --lut; bloom "
-          "already in a screenshot\n  cannot be undone, and none is added (--enable bloom adds "
-          "it). Float images (EXR) and files tagged "
-          "linear are linear scenes. The\n  choice is said for every input; --from-screenshot "
-          "and --scene override it.\n\nPresets (--preset):\n";
+    os << "Input: 8/16-bit images are in-game screenshots: with preset smash the game's "
+          "display encode and\n  grading (with --original-lut, default neutral) are undone "
+          "before --lut; bloom already in a\n  screenshot cannot be undone, and none is added "
+          "(--enable bloom adds it); with another preset\n  the LUT goes on the stored values "
+          "(the screenshot has its engine's post-processing). Float\n  images (EXR) and files "
+          "tagged linear are linear scenes. The choice is said for every input;\n  "
+          "--from-screenshot and --scene override it.\nLUT: with preset smash the game's LUT: "
+          "an edit (a file that says raw or does not say, unless\n  --lut-target smash) is made "
+          "into the game's LUT first, as convert writes the .nutexb; with\n  another preset an "
+          "edit: the game's LUT is turned into the edit it makes.\n\nPresets (--preset):\n";
     for (const Preset preset : allPresets()) {
         const Pipeline p(preset);
         std::string aliases;
@@ -117,25 +123,6 @@ std::string previewFooter() {
     return os.str();
 }
 
-// lut::srgbDecode of every R, G, B of a frame read from an 8-bit file, by table: the values are
-// exactly k / 255 (lut/formats/ImageIO.h), so the table gives the same floats as the per-value
-// call, at a fraction of the cost (the power function ran 6 million times for a 1080p frame).
-void decodeSrgbCodes8(const ImageView& frame) {
-    float table[256];
-    for (int k = 0; k < 256; ++k)
-        table[k] = srgbDecode(static_cast<float>(k) / 255.0f);
-    for (int y = 0; y < frame.height; ++y) {
-        float* p = frame.row(y);
-        for (int x = 0; x < frame.width; ++x, p += 4)
-            for (int c = 0; c < 3; ++c) {
-                const float v = p[c];
-                const int k = static_cast<int>(v * 255.0f + 0.5f);
-                p[c] = k >= 0 && k < 256 && static_cast<float>(k) / 255.0f == v ? table[k]
-                                                                                : srgbDecode(v);
-            }
-    }
-}
-
 } // namespace
 
 std::string stageList(const Pipeline& p) {
@@ -153,22 +140,31 @@ std::string stageList(const Pipeline& p) {
 }
 
 int runPreview(const PreviewOptions& o) {
-    PipelineSettings settings;
-    settings.preset = o.preset;
-    settings.interpolation = o.interp;
-    settings.bloom = !o.noBloom;
-    settings.enable = o.enable;
-    settings.disable = o.disable;
-    settings.assignments = o.stageSettings;
-    std::unique_ptr<Pipeline> configured;
-    try {
-        configured = std::make_unique<Pipeline>(settings); // validates every setting first
-    } catch (const Error& e) {
-        throw UsageError(e.what()); // e.g. --disable sanitize
-    }
-    if (o.listStages) {
-        std::cout << stageList(*configured);
-        return kExitOk;
+    PreviewRequest request;
+    request.preset = o.preset;
+    request.interpolation = o.interp;
+    request.bloom = !o.noBloom;
+    request.enable = o.enable;
+    request.disable = o.disable;
+    request.assignments = o.stageSettings;
+    {
+        PipelineSettings settings;
+        settings.preset = o.preset;
+        settings.interpolation = o.interp;
+        settings.bloom = request.bloom;
+        settings.enable = o.enable;
+        settings.disable = o.disable;
+        settings.assignments = o.stageSettings;
+        std::unique_ptr<Pipeline> configured;
+        try {
+            configured = std::make_unique<Pipeline>(settings); // validates every setting first
+        } catch (const Error& e) {
+            throw UsageError(e.what()); // e.g. --disable sanitize
+        }
+        if (o.listStages) {
+            std::cout << stageList(*configured);
+            return kExitOk;
+        }
     }
     if (o.fromScreenshot && !o.color.from.empty())
         throw UsageError("--from-screenshot and --from both say what the input is: give one");
@@ -179,26 +175,47 @@ int runPreview(const PreviewOptions& o) {
     bo.threads = o.threads;
     bo.quiet = o.verbosity.quiet;
     bo.maxMemory = o.maxMemory.empty() ? 0 : parseMemorySize(o.maxMemory);
-    if (!o.lut.empty()) {
-        // Its shaper (a Resolve .cube's) and table, each run exactly by the LUT stage.
-        const LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
-        if (!isFullStrength(o.strength)) {
-            // A blend with neutral needs one table: the shaper and table baked, then blended.
-            settings.lut = std::make_shared<const Lut3D>(
-                strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity));
-        } else {
-            if (file.cube)
-                settings.lut = std::make_shared<const Lut3D>(*file.cube);
-            if (file.shaper)
-                settings.shaper = std::make_shared<const Lut1D>(*file.shaper);
-        }
-    } else if (!isFullStrength(o.strength)) {
+    if (o.lut.empty() && !isFullStrength(o.strength))
         throw UsageError("--strength, --luma-strength and --chroma-strength blend --lut with "
                          "neutral: give --lut");
-    }
     std::shared_ptr<const Lut3D> original;
     if (!o.originalLut.empty())
         original = std::make_shared<const Lut3D>(readStageLut(o.originalLut, o.verbosity));
+    // The chain's LUT, made for what the chain is (the game's LUT for the game's chain, as the
+    // .nutexb convert writes holds it; an edit for the others). A LUT used as it is keeps its
+    // shaper (a Resolve .cube's) and table, each run exactly by the LUT stage.
+    std::shared_ptr<const Lut3D> lut;
+    std::shared_ptr<const Lut1D> shaper;
+    if (!o.lut.empty()) {
+        LutFile file = readCommandLut(o.lut, o.lutLayout, o.verbosity);
+        PurposeOptions po;
+        po.stageLut = original.get();
+        po.rawSize = 65; // the game's LUT as an edit for another chain, as apply makes it
+        const LutPurpose wanted = previewLutPurpose(o.preset);
+        const std::optional<LutPurpose> given = purposeOption(o.lutTarget);
+        // --strength blends the edit (one table): before it is made into the game's LUT, after
+        // a game LUT is made into its edit; a LUT used for its purpose as it is.
+        const bool full = isFullStrength(o.strength);
+        const bool blendAfter =
+            decidePurpose(file, given).purpose == LutPurpose::Smash && wanted == LutPurpose::Raw;
+        if (!full && !blendAfter) {
+            file.cube = strengthLut(file.toLut3D(), o.lut, o.strength, o.verbosity);
+            file.shaper.reset();
+        }
+        PurposedLut used = lutFor(file, o.lut, wanted, given, "--lut-target", po, o.verbosity);
+        if (!full && blendAfter)
+            used.lut = strengthLut(std::move(used.lut), o.lut, o.strength, o.verbosity);
+        if (used.conversion || !full) {
+            if (used.conversion && wanted == LutPurpose::Smash)
+                (void)quantize8(used.lut);
+            lut = std::make_shared<const Lut3D>(std::move(used.lut));
+        } else {
+            if (file.cube)
+                lut = std::make_shared<const Lut3D>(*file.cube);
+            if (file.shaper)
+                shaper = std::make_shared<const Lut1D>(*file.shaper);
+        }
+    }
     printDiagnostics(std::cerr, color.diagnostics, o.verbosity, "lutkit: ");
     bool noted = false;
     std::mutex noteMutex;
@@ -224,54 +241,31 @@ int runPreview(const PreviewOptions& o) {
                         "): pick one with --subimage N (0 to " + std::to_string(e.count() - 1) +
                         ")");
         }
-        // Screenshot or scene: the library's rule, or what the user said.
-        const SceneDecision scene =
-            decideSceneKind(SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
-                                          img.info.format},
-                            o.fromScreenshot ? std::optional<SceneKind>(SceneKind::Screenshot)
-                            : o.scene || color.before ? std::optional<SceneKind>(SceneKind::Scene)
-                                                      : std::nullopt);
-        bool linear = scene.storedIsLinear;
+        // The recipe (lut/pipeline/PreviewPlan.h): screenshot or scene by the library's rule or
+        // what the user said, what is undone, which stages run.
+        PreviewRequest q = request;
+        q.evidence = SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
+                                   img.info.format};
+        q.forced = o.fromScreenshot          ? std::optional<SceneKind>(SceneKind::Screenshot)
+                   : o.scene || color.before ? std::optional<SceneKind>(SceneKind::Scene)
+                                             : std::nullopt;
         if (color.before) {
             // --from: OpenColorIO converts the input to sRGB-encoded values first.
             ProcessorChain toSrgb;
             toSrgb.append(color.before);
             toSrgb.apply(img.image.view(), inner);
-            linear = false;
-        } else if (!linear && img.info.type == formats::PixelType::UInt8) {
-            decodeSrgbCodes8(img.image.view()); // exact: 8-bit values are k/255
-            linear = true; // decoded: prepareSceneFrame only undoes the grading
+            q.storedEncoded = true;
         }
-        Diagnostics notes = prepareSceneFrame(img.image.view(), linear, scene.undoGrading,
-                                              original.get(), settings.interpolation, inner);
-        // A screenshot has the game's bloom in it already: none is added again unless asked for
-        // (--enable bloom), as the editor shows it.
-        PipelineSettings jobSettings = settings;
-        const bool bloomAsked =
-            std::any_of(o.enable.begin(), o.enable.end(), [](const std::string& n) {
-                return n.size() >= 5 && n.compare(n.size() - 5, 5, "bloom") == 0;
-            });
-        if (scene.undoGrading && settings.bloom && !bloomAsked) {
-            jobSettings.bloom = false;
-            notes.erase(std::remove_if(notes.begin(), notes.end(),
-                                       [](const Diagnostic& d) {
-                                           return d.message.rfind("bloom cannot be undone", 0) == 0;
-                                       }),
-                        notes.end());
-        }
-        Diagnostic said;
-        said.severity = Diagnostic::Severity::Info;
-        said.message = scene.reason;
-        if (scene.undoGrading && settings.bloom && !bloomAsked)
-            said.message += "; no bloom added (the screenshot has the game's; --enable bloom adds "
-                            "it again)";
-        notes.insert(notes.begin(), said);
-        if (original && !scene.undoGrading) {
-            Diagnostic ignored;
-            ignored.message = "--original-lut is ignored: a scene went through no grading";
-            notes.push_back(ignored);
-        }
-        Pipeline pipeline(jobSettings); // one per job: stages keep per-run buffers
+        const PreviewPlan recipe = planPreview(q, original != nullptr);
+        Diagnostics notes = recipe.notes;
+        const Diagnostics undo =
+            preparePreviewFrame(recipe, img.image.view(), original.get(),
+                                !color.before && img.info.type == formats::PixelType::UInt8, inner);
+        notes.insert(notes.end(), undo.begin(), undo.end());
+        PipelineSettings settings = recipe.settings;
+        settings.lut = lut;
+        settings.shaper = shaper;
+        Pipeline pipeline(settings); // one per job: stages keep per-run buffers
         RunOptions run;
         run.nthreads = inner;
         run.frameIndex = o.frame;
@@ -328,11 +322,15 @@ CLI::App* setupPreview(CLI::App& app, std::function<void(const PreviewOptions&)>
     addSubimage(*sub, o->subimage,
                 "the image of files holding several (OpenEXR part, TIFF page, GIF frame; from 0)");
     sub->add_option("--lut", o->lut,
-                    "grading LUT (default: neutral); a file or builtin:neutral, "
-                    "builtin:smash-default")
+                    "grading LUT (default: neutral; also builtin:neutral, builtin:smash-default): "
+                    "with preset smash the game's LUT (an edit is made into the game's LUT first, "
+                    "as convert makes the .nutexb), else an edit")
         ->type_name("FILE");
     addLayout(*sub, "--lut-layout", o->lutLayout,
               "the LUT's layout when it is an image (default: detected)");
+    addPurpose(*sub, "--lut-target", o->lutTarget,
+               "what --lut is for (default: what the file says, LUTKIT_PURPOSE, or a .nutexb; "
+               "else raw, an edit)");
     addStrengthOptions(*sub, o->strength);
     sub->add_option_function<std::string>(
            "--preset", [o](const std::string& v) { o->preset = parsePreset(v); },

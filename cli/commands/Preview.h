@@ -31,6 +31,7 @@ struct PreviewOptions {
     int subimage = -1;                  // --subimage: one image of a file holding several
     std::string lut;                    // grading LUT (default neutral)
     std::optional<LutLayout> lutLayout; // the LUT's layout when it is an image
+    std::string lutTarget;              // what the LUT is for ("" = its tag, else raw)
     StrengthOptions strength;           // --lut blended with neutral first
     Preset preset = Preset::Smash;      // smash | filmic | cinematic | none
     bool noBloom = false;

@@ -17,13 +17,16 @@ namespace lut::cli {
 int runResize(const ResizeCommandOptions& o) {
     if (!beginOutput(o.output, o.overwrite, {o.input}, o.verbosity.quiet))
         return kExitOk;
-    const Lut3D a = readLutTable(o.input, o.verbosity);
+    PurposeDecision purpose;
+    const Lut3D a = readLutTable(o.input, o.verbosity, &purpose);
     const OpResult r = resize(a, o.size, o.interp);
     std::cout << "resized  " << o.input << ": " << a.size() << "^3 -> " << r.lut.size() << "^3 ("
               << toString(o.interp) << ")\n"
               << "error    against the original between lattice points: "
               << costText(r.error, r.sanitizedEntries) << "\n";
-    writeLutTable(std::cout, o.output, r.lut, o.format, {o.input}, o.verbosity);
+    // The result is for what the input was for (a game LUT resampled is still the game's).
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.input}, o.verbosity,
+                  knownPurpose(purpose));
     return kExitOk;
 }
 

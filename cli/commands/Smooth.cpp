@@ -17,11 +17,14 @@ namespace lut::cli {
 int runSmooth(const SmoothCommandOptions& o) {
     if (!beginOutput(o.output, o.overwrite, {o.input}, o.verbosity.quiet))
         return kExitOk;
-    const Lut3D a = readLutTable(o.input, o.verbosity);
+    PurposeDecision purpose;
+    const Lut3D a = readLutTable(o.input, o.verbosity, &purpose);
     const OpResult r = smooth(a, o.sigma);
     std::cout << "smoothed " << o.input << " (sigma " << o.sigma << " lattice steps)\n"
               << "change   against the original: " << costText(r.error, r.sanitizedEntries) << "\n";
-    writeLutTable(std::cout, o.output, r.lut, o.format, {o.input}, o.verbosity);
+    // The result is for what the input was for (a game LUT resampled is still the game's).
+    writeLutTable(std::cout, o.output, r.lut, o.format, {o.input}, o.verbosity,
+                  knownPurpose(purpose));
     return kExitOk;
 }
 

@@ -13,6 +13,7 @@
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
 #include "lut/ops/Strength.h"
+#include "lut/pipeline/SmashConstants.h"
 
 #include <glm/mat3x3.hpp>
 
@@ -112,6 +113,13 @@ const Format* formatNamed(const std::string& name) {
 
 } // namespace
 
+LutPurpose outputPurpose(LutPurpose input, std::optional<LutPurpose> given,
+                         const std::string& writerName) {
+    if (given)
+        return *given;
+    return writerName == "nutexb" ? LutPurpose::Smash : input;
+}
+
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options) {
     const auto tStart = Clock::now();
@@ -137,31 +145,70 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
 
     // Readers that sample (OpenColorIO's chains) sample at the size the output stores, through
     // the whole processor, instead of being resampled afterwards.
+    // (Not when the table is to change purpose: the edit is then evaluated at the game's
+    // colours, from the file's own lattice.)
+    const bool mayConvert = options.outPurpose || options.inPurpose || writer->name() == "nutexb";
     FormatOptions readOptions = options.read;
-    if (readOptions.size == 0)
+    if (readOptions.size == 0 && !mayConvert)
         readOptions.size = wantSize ? wantSize : writer->fixedSizeFor(options.write);
     auto t0 = Clock::now();
     report.input = readLut(input, readOptions, options.inFormat);
     report.readSeconds = since(t0);
     if (!report.input.cube && !report.input.shaper)
         throw Error(input + ": holds no table");
-    // The LUT at the strength asked for: what is then resampled and written.
     Diagnostics sizeNotes;
-    LutFile blended;
-    if (!isFullStrength(options.strength)) {
-        blended = report.input;
-        if (blended.shaper) {
-            blended.cube = blended.toLut3D(0);
+
+    // What the input is for and what the output is for.
+    PurposeStep& step = report.purpose;
+    step.input = decidePurpose(report.input, options.inPurpose);
+    step.output = outputPurpose(step.input.purpose, options.outPurpose, writer->name());
+    step.outputGiven = options.outPurpose.has_value();
+
+    // The strength blends the edit (lut/ops/Strength.h): a raw input before it is made into the
+    // game's LUT (the game shows the blend), the edit a game LUT makes after it is made; a LUT
+    // written for the purpose it has is blended as it is.
+    auto blend = [&](LutFile& f) {
+        if (f.shaper) {
+            f.cube = f.toLut3D(0);
             sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
                                  "the 1D shaper was baked into a " +
-                                     std::to_string(blended.cube->size()) +
+                                     std::to_string(f.cube->size()) +
                                      "^3 table to blend it with neutral (--strength)"});
-            blended.shaper.reset();
+            f.shaper.reset();
         }
-        blended.cube = applyStrength(*blended.cube, options.strength);
+        f.cube = applyStrength(*f.cube, options.strength);
         report.strength = strengthAmounts(options.strength);
+    };
+    const bool blendAfter =
+        step.input.purpose == LutPurpose::Smash && step.output == LutPurpose::Raw;
+    LutFile converted = report.input;
+    if (!isFullStrength(options.strength) && !blendAfter)
+        blend(converted);
+
+    // The table for the output's purpose.
+    if (step.output != step.input.purpose) {
+        if (step.output == LutPurpose::Smash && wantSize != 0 && wantSize != kSmashLutSize)
+            throw Error("the game's LUT is " + std::to_string(kSmashLutSize) +
+                        "^3: another size does not apply to it");
+        PurposeOptions po = options.purpose;
+        const int fixed = writer->fixedSizeFor(options.write);
+        if (step.output == LutPurpose::Raw)
+            po.rawSize = wantSize            ? wantSize
+                         : fixed             ? fixed
+                         : report.input.cube ? std::max(report.input.cube->size(), 33)
+                                             : 33;
+        step.conversion = convertPurpose(converted, step.input.purpose, step.output, po);
+        converted.shaper.reset();
+        converted.cube = step.conversion->lut;
+        if (!isFullStrength(options.strength) && blendAfter)
+            blend(converted);
     }
-    const LutFile& in = report.strength ? blended : report.input;
+    // The output says what it is for when that is known: the file or the user said it, or the
+    // table was made for it (an assumption is not turned into a statement).
+    const bool known = step.input.source != PurposeSource::Assumed || step.conversion ||
+                       step.outputGiven || step.output == LutPurpose::Smash;
+    converted.purpose = known ? std::optional<LutPurpose>(step.output) : std::nullopt;
+    const LutFile& in = converted;
 
     // Resample when the output stores another lattice size.
     const int sourceSize = in.cube ? in.cube->size() : 0;

@@ -33,6 +33,8 @@ LutFile readLut(const std::string& path, const FormatOptions& options,
         f.cube = builtinLut(path);
         f.format = "builtin";
         f.dialect = path.substr(kBuiltinLutPrefix.size());
+        // It says what it is for: a LUT the game applies (as a .nutexb is), else an edit.
+        f.purpose = isBuiltinGameLut(path) ? LutPurpose::Smash : LutPurpose::Raw;
         return f;
     }
     registerBuiltinFormats();

@@ -187,9 +187,10 @@ bool ExportDialog::matchesPreview() const {
 }
 
 void ExportDialog::updateNote() {
-    QString what = m_target == ExportTarget::Smash
-                       ? tr("the Smash Ultimate game LUT that shows your edit (16³)")
-                       : tr("the LUT as edited");
+    QString what = exportTargetInfo(m_target).purpose == LutPurpose::Smash
+                       ? tr("the Smash Ultimate game LUT that shows your edit (16³), "
+                            "marked as the game's (LUTKIT_PURPOSE smash)")
+                       : tr("the LUT as edited, marked as an edit (LUTKIT_PURPOSE raw)");
     const StrengthAmounts a = strengthAmounts(strength());
     if (a.luma != 1.0 || a.chroma != 1.0)
         what += a.luma == a.chroma

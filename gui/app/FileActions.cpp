@@ -6,6 +6,7 @@
 #include "ExportDialog.h"
 #include "FileLoader.h"
 #include "MainWindow.h"
+#include "OpenLutQuestion.h"
 #include "PreviewController.h"
 #include "RecentFiles.h"
 #include "TaskStatus.h"
@@ -20,7 +21,6 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
@@ -62,9 +62,19 @@ FileActions::FileActions(MainWindow* window)
             [this](const QString& path, std::shared_ptr<LutFile> file) {
                 m_lastDone = path;
                 m_lastOk = false;
+                // A file that does not say what it is for: remembered, told or asked (once).
+                std::optional<LutPurpose> answer;
+                if (!file->purpose) {
+                    bool cancelled = false;
+                    answer = purposeFor(path, &cancelled);
+                    if (cancelled) {
+                        showStatus(tr("Not opened: %1").arg(QFileInfo(path).fileName()));
+                        return;
+                    }
+                }
                 QStringList notes;
                 try {
-                    notes = m_window->document()->adoptLut(*file, path);
+                    notes = m_window->document()->adoptLut(*file, path, answer);
                 } catch (const std::exception& e) {
                     m_window->reportError(tr("Cannot open LUT"), human(e));
                     return;
@@ -145,6 +155,66 @@ void FileActions::updateRecentMenus() {
     };
     fill(m_recentImages, kRecentImagesKey, false);
     fill(m_recentLuts, kRecentLutsKey, true);
+}
+
+// ---- what a LUT is for ----------------------------------------------------------------------
+
+namespace {
+const char* kPurposesKey = "lutPurposes"; // absolute path -> "raw" / "smash"
+}
+
+std::optional<LutPurpose> FileActions::rememberedPurpose(const QString& path) {
+    const QVariantMap map = QSettings().value(kPurposesKey).toMap();
+    const auto it = map.find(QFileInfo(path).absoluteFilePath());
+    if (it == map.end())
+        return std::nullopt;
+    try {
+        return parseLutPurpose(it->toString().toStdString());
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+void FileActions::rememberPurpose(const QString& path, LutPurpose purpose) {
+    QSettings settings;
+    QVariantMap map = settings.value(kPurposesKey).toMap();
+    map.insert(QFileInfo(path).absoluteFilePath(), QString::fromLatin1(toString(purpose)));
+    settings.setValue(kPurposesKey, map);
+}
+
+std::optional<LutPurpose> FileActions::purposeFor(const QString& path, bool* cancelled) {
+    *cancelled = false;
+    if (const auto p = m_window->lutPurposeAnswer()) // said on the command line, by a script
+        return p;
+    if (m_window->interactiveErrors())
+        if (const auto p = rememberedPurpose(path))
+            return p;
+    if (!m_window->interactiveErrors())
+        return std::nullopt; // headless: taken as an edit, with a note
+    // As Open LUT asks a strip's layout: once, and the answer is kept for this file.
+    QMessageBox box(QMessageBox::Question, tr("What is this LUT for?"),
+                    tr("\"%1\" does not say what it is for. Is it an edit, the look itself (a "
+                       "graded neutral strip, a .cube from a grading app), or the game's LUT, "
+                       "already made for Smash Ultimate (what goes into "
+                       "color_grading_lut.nutexb: Smush-LUT's output, a .nutexb converted to a "
+                       "strip)?\n\nThe game's LUT is not compensated again when exported.")
+                        .arg(QFileInfo(path).fileName()),
+                    QMessageBox::NoButton, m_window);
+    QPushButton* edit = box.addButton(tr("An Edit (the Look)"), QMessageBox::AcceptRole);
+    QPushButton* game = box.addButton(tr("The Game's LUT"), QMessageBox::AcceptRole);
+    QPushButton* cancel = box.addButton(QMessageBox::Cancel);
+    edit->setObjectName(QStringLiteral("purpose.raw"));
+    game->setObjectName(QStringLiteral("purpose.smash"));
+    box.setDefaultButton(edit);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() != edit && box.clickedButton() != game) {
+        *cancelled = true;
+        return std::nullopt;
+    }
+    const LutPurpose answer = box.clickedButton() == game ? LutPurpose::Smash : LutPurpose::Raw;
+    rememberPurpose(path, answer);
+    return answer;
 }
 
 // ---- opening --------------------------------------------------------------------------------
@@ -416,19 +486,26 @@ bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
     if (!m_window->interactiveErrors() || !stripLayoutIsAmbiguous(path))
         return true;
     // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
-    // agree (a heavy grade can fool it).
+    // agree (a heavy grade can fool it). What it is for, when nothing says, is asked in the same
+    // dialog (and remembered, so the read does not ask again).
     QStringList items = {tr("Detect automatically")};
     const formats::ImageInfo info = formats::readImageInfo(path.toStdString());
     for (const LayoutFit& f : layoutsForImageSize(info.width, info.height))
         items << QString::fromLatin1(toString(f.layout));
-    bool ok = false;
-    const QString item = QInputDialog::getItem(
-        m_window, tr("Strip layout"),
-        tr("%1 fits several strip layouts. Read it as:").arg(QFileInfo(path).fileName()), items, 0,
-        false, &ok);
-    if (!ok)
+    bool says = false;
+    try {
+        says = formats::readLut(path.toStdString()).purpose.has_value(); // a strip is small
+    } catch (const std::exception&) {
+        // unreadable: the read that follows says why
+    }
+    const bool askPurpose = !says && !m_window->lutPurposeAnswer() && !rememberedPurpose(path);
+    const auto answer = askOpenLut(m_window, QFileInfo(path).fileName(), items, askPurpose);
+    if (!answer)
         return false;
-    options.layout = parseOptionalLayout(item == items[0] ? std::string() : item.toStdString());
+    options.layout = parseOptionalLayout(answer->layout == items[0] ? std::string()
+                                                                    : answer->layout.toStdString());
+    if (answer->purpose)
+        rememberPurpose(path, *answer->purpose);
     return true;
 }
 

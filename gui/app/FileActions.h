@@ -11,12 +11,14 @@
 #include "ExportTarget.h"
 
 #include "lut/Image.h"
+#include "lut/LutPurpose.h"
 #include "lut/io/Format.h"
 
 #include <QObject>
 #include <QString>
 
 #include <memory>
+#include <optional>
 
 class QMenu;
 
@@ -85,6 +87,15 @@ public:
     // File dialog filters: the picture formats, and every extension a LUT format reads.
     static QString imageFilter();
     static QString lutFilter();
+
+    // What a LUT file that does not say what it is for (lut/LutPurpose.h) is taken for: the
+    // window's answer (--lut-target, scripts), else the answer remembered for that file, else
+    // the user's, asked once (interactive only) and remembered per file; nullopt: taken as an
+    // edit with a note. *cancelled: the user cancelled the question (the file is not opened).
+    std::optional<LutPurpose> purposeFor(const QString& path, bool* cancelled);
+    // The answers remembered, by absolute path (none when headless: settings are left alone).
+    static std::optional<LutPurpose> rememberedPurpose(const QString& path);
+    static void rememberPurpose(const QString& path, LutPurpose purpose);
 
 private:
     // Asks whether to replace `path` (named in full); `original` says it is the opened LUT.

@@ -6,6 +6,7 @@
 // files is FileActions.
 #include "PreviewController.h"
 
+#include "lut/LutPurpose.h"
 #include "lut/io/Format.h"
 #include "lut/ops/Strength.h"
 
@@ -13,6 +14,7 @@
 #include <QStringList>
 
 #include <memory>
+#include <optional>
 
 class QLabel;
 class QProgressBar;
@@ -61,6 +63,11 @@ public:
     void setInteractiveErrors(bool on) { m_interactiveErrors = on; }
     bool interactiveErrors() const { return m_interactiveErrors; }
     QString lastError() const { return m_lastError; }
+    // What a LUT file that does not say what it is for is taken for, without asking
+    // (lutkit-editor --lut-target, the script command lut-target); nullopt: ask (interactive),
+    // else take it as an edit.
+    void setLutPurposeAnswer(std::optional<LutPurpose> answer) { m_purposeAnswer = answer; }
+    std::optional<LutPurpose> lutPurposeAnswer() const { return m_purposeAnswer; }
     // Shows (dialog or stderr) and remembers an error.
     void reportError(const QString& title, const QString& message);
     // Shows what a reader or writer noted (the notes bar; stderr when headless).
@@ -145,6 +152,7 @@ private:
     QLabel* m_zoomLabel = nullptr;
 
     bool m_interactiveErrors = true;
+    std::optional<LutPurpose> m_purposeAnswer;
     bool m_verbose = false;
     QString m_lastError;
 };

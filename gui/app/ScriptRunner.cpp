@@ -274,6 +274,11 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         QApplication::processEvents(); // a LUT opens once the drop has returned
         w.waitForLoads();
         noNewError(drop.isAccepted());
+    } else if (cmd == "lut-target") { // what LUTs that do not say are for (raw, smash, ask)
+        const QString v = arg(0);
+        w.setLutPurposeAnswer(v == "ask"
+                                  ? std::nullopt
+                                  : std::optional<LutPurpose>(parseLutPurpose(v.toStdString())));
     } else if (cmd == "new-neutral") {
         w.fileActions()->newNeutral(arg(0).toInt());
     } else if (cmd == "target") {
@@ -528,6 +533,8 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         out << what << " ";
         if (what == "target")
             out << QString::fromStdString(exportTargetInfo(o.target).key);
+        else if (what == "purpose")
+            out << toString(doc->lutPurpose());
         else if (what == "input")
             out << toString(o.input);
         else if (what == "chain")

@@ -412,7 +412,8 @@ void WindowActions::showOptions(const PreviewOptions& o) {
     m_target->setCurrentIndex(m_target->findData(int(o.target)));
     m_input->setCurrentIndex(m_input->findData(int(o.input)));
     // The chain is a choice for engine and grading targets on a linear scene only.
-    const bool chooseChain = o.target != ExportTarget::Smash && o.input == SceneKind::Scene;
+    const bool chooseChain =
+        exportTargetInfo(o.target).purpose == LutPurpose::Raw && o.input == SceneKind::Scene;
     m_chain->setEnabled(chooseChain);
     setItemEnabled(m_chain, m_chain->findData(int(Preset::Smash)), !chooseChain);
     m_chain->setCurrentIndex(m_chain->findData(int(effectivePreset(o))));

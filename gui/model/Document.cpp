@@ -3,6 +3,7 @@
 #include "SetAdjustmentsCommand.h"
 
 #include "lut/Error.h"
+#include "lut/formats/ExtractFile.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
@@ -106,7 +107,7 @@ const Curve& curveOf(const Adjustments& a, CurveId id) {
 
 Document::Document(QObject* parent) : QObject(parent), m_undo(new QUndoStack(this)) {
     connect(m_undo, &QUndoStack::cleanChanged, this, [this] { emitModifiedIfChanged(); });
-    replaceLut(Lut3D::identity(33), {}, tr("neutral 33^3"), {}, false, LutRole::Look, {});
+    replaceLut(Lut3D::identity(33), {}, tr("neutral 33^3"), {}, false, LutPurpose::Raw, {});
 }
 
 Document::~Document() = default;
@@ -130,7 +131,7 @@ void Document::emitModifiedIfChanged() {
 LutSource Document::lutSource() const {
     LutSource s;
     s.effective = m_effective;
-    if (m_role == LutRole::GameLut) {
+    if (m_purpose == LutPurpose::Smash) {
         s.gameBase = m_base;
         s.adjustments = m_adjustmentsShared;
     }
@@ -138,13 +139,14 @@ LutSource Document::lutSource() const {
 }
 
 void Document::replaceLut(Lut3D base, const QString& path, const QString& origin,
-                          const QString& format, bool modified, LutRole role, QStringList notes) {
+                          const QString& format, bool modified, LutPurpose purpose,
+                          QStringList notes) {
     auto baseShared = std::make_shared<const Lut3D>(std::move(base));
     m_base = baseShared;
     m_effective = baseShared; // neutral adjustments: the effective LUT is the base itself
     m_adjustments = Adjustments{};
     m_adjustmentsShared = std::make_shared<const Adjustments>();
-    m_role = role;
+    m_purpose = purpose;
     m_lutPath = path;
     m_origin = origin;
     m_format = format;
@@ -163,14 +165,16 @@ void Document::replaceLut(Lut3D base, const QString& path, const QString& origin
 
 void Document::newNeutral(int size) {
     Lut3D lut = Lut3D::identity(size); // throws for a bad size before anything changes
-    replaceLut(std::move(lut), {}, tr("neutral %1^3").arg(size), {}, false, LutRole::Look, {});
+    replaceLut(std::move(lut), {}, tr("neutral %1^3").arg(size), {}, false, LutPurpose::Raw, {});
+    m_purposeKnown = false;
 }
 
 QStringList Document::openLut(const QString& path, const FormatOptions& options) {
     return adoptLut(formats::readLut(path.toStdString(), options), path);
 }
 
-QStringList Document::adoptLut(const LutFile& file, const QString& path) {
+QStringList Document::adoptLut(const LutFile& file, const QString& path,
+                               std::optional<LutPurpose> answer) {
     QStringList notes;
     for (const Diagnostic& d : file.diagnostics)
         notes << QString::fromStdString(d.str());
@@ -190,32 +194,42 @@ QStringList Document::adoptLut(const LutFile& file, const QString& path) {
     } else {
         lut = file.toLut3D();
     }
+    // What the file says first (a built-in game LUT says it is one, as a .nutexb does); the
+    // user's answer only where it says nothing.
+    const PurposeDecision purpose =
+        decidePurpose(file, file.purpose ? std::nullopt : answer, LutPurpose::Raw);
+    if (purpose.source == PurposeSource::Assumed)
+        notes << tr("%1 does not say what it is for: taken as an edit (raw); open it again and "
+                    "answer, or lutkit-editor --lut-target smash, if it is the game's LUT")
+                     .arg(QFileInfo(path).fileName());
     // A built-in LUT is no file: the document is untitled (Save asks where), named by its origin.
-    // The game's own default stage LUT is a game LUT, as a .nutexb is.
     const bool builtin = file.format == "builtin";
-    const LutRole role =
-        file.format == "nutexb" || (builtin && isBuiltinGameLut(path.toStdString()))
-            ? LutRole::GameLut
-            : LutRole::Look;
     replaceLut(std::move(lut), builtin ? QString() : path, path,
-               QString::fromStdString(file.format), false, role, notes);
+               QString::fromStdString(file.format), false, purpose.purpose, notes);
+    m_purposeKnown = purpose.source != PurposeSource::Assumed;
     return notes;
 }
 
 void Document::startFrom(Lut3D base, const QString& origin) {
     if (base.empty())
         throw Error("the LUT is empty");
-    replaceLut(std::move(base), {}, origin, {}, true, LutRole::Look, {});
+    replaceLut(std::move(base), {}, origin, {}, true, LutPurpose::Raw, {});
+    m_purposeKnown = true; // made here as an edit
 }
 
 QStringList Document::startFromScreenshot(const QString& path) {
-    formats::LoadedImage loaded = formats::readImage(path.toStdString());
-    ExtractOptions options;
-    options.target = ExtractTarget::Raw;
-    ExtractResult result = extractLut(loaded.image.view(), options);
+    // The library reads it as lutkit extract does (a patch, a graded strip, a Smush-LUT strip),
+    // and makes the edit of it.
+    formats::ExtractFileOptions options;
+    options.extract.target = LutPurpose::Raw;
+    formats::ExtractFileResult result = formats::extractLutFromFile(path.toStdString(), options);
     QStringList notes;
-    for (const Diagnostic& d : result.diagnostics)
-        notes << QString::fromStdString(d.str());
+    if (result.extract)
+        for (const Diagnostic& d : result.extract->diagnostics)
+            notes << QString::fromStdString(d.str());
+    if (result.image)
+        for (const Diagnostic& d : result.image->diagnostics)
+            notes << QString::fromStdString(d.str());
     startFrom(std::move(result.lut), tr("extracted from %1").arg(QFileInfo(path).fileName()));
     return notes;
 }
@@ -286,16 +300,20 @@ Diagnostics Document::exportLut(const QString& path, const QString& formatName,
                                 const StrengthOptions& strength) const {
     LutFile file;
     file.cube = exportTable(lutSource(), target, strength);
+    file.purpose = exportTargetInfo(target).purpose; // the file says what it is for
     return formats::writeLut(path.toStdString(), file, options, formatName.toStdString());
 }
 
 Diagnostics Document::saveAs(const QString& path) {
     Diagnostics d;
-    if (m_role == LutRole::GameLut) {
+    if (m_purpose == LutPurpose::Smash) {
         d = exportLut(path, {}, {}, ExportTarget::Smash);
     } else {
         LutFile file;
         file.cube = *m_effective;
+        // An edit saved says so when that is known (an assumption is not turned into a tag).
+        if (m_purposeKnown)
+            file.purpose = LutPurpose::Raw;
         d = formats::writeLut(path.toStdString(), file, {}, {});
     }
     m_lutPath = path;

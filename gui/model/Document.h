@@ -4,10 +4,12 @@
 // widget code: QtCore for signals and QUndoStack (which Qt 6 keeps in QtGui, but it needs no
 // windowing), so it is unit-tested without a display.
 //
-// The base is a look (a LUT on display colours: .cube, strips, neutral...) or a game LUT (read
-// from a .nutexb: what Smash Ultimate applies in its grading pass, brighten included). The Smash
-// export of a look is the game LUT that shows it; of a game LUT with adjustments, the game LUT
-// whose picture is the adjusted picture of the base (lutSource(), ExportTarget.h).
+// The base is for a purpose (lut/LutPurpose.h): an edit (raw: a LUT on display colours, .cube,
+// strips, neutral...) or the game's LUT (smash: what Smash Ultimate applies in its grading pass,
+// brighten included: a .nutexb, a file that says so, or one the user said is). The Smash export
+// of an edit is the game LUT that shows it; of a game LUT with adjustments, the game LUT whose
+// picture is the adjusted picture of the base; the other exports of a game LUT, the edit it makes
+// with the adjustments on it (lutSource(), ExportTarget.h).
 //
 // Files are read elsewhere (FileLoader, on a worker): the read results are adopted here. Every
 // adopt builds the new state completely first and only then swaps it in, so a failure throws
@@ -18,6 +20,7 @@
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/LutFile.h"
+#include "lut/LutPurpose.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/io/Format.h"
 #include "lut/ops/Adjust.h"
@@ -27,6 +30,7 @@
 #include <QStringList>
 
 #include <memory>
+#include <optional>
 
 class QUndoStack;
 
@@ -37,8 +41,6 @@ namespace lut::gui {
 bool looksLikeLutFile(const QString& path);
 // Whether a LUT picture's size fits more than one strip layout (a layout choice is worth asking).
 bool stripLayoutIsAmbiguous(const QString& path);
-
-enum class LutRole { Look, GameLut };
 
 // Which curve of lut::Adjustments a curve editor edits.
 enum class CurveId { Master, Red, Green, Blue, HueVsHue, HueVsSat, HueVsLum };
@@ -59,7 +61,11 @@ public:
     // unchanged.
     QStringList openLut(const QString& path, const FormatOptions& options = {});
     // Takes a LUT file read elsewhere as the new document; returns the reader's notes to show.
-    QStringList adoptLut(const LutFile& file, const QString& path);
+    // `answer` is what the user said the file is for (it counts only when the file does not say:
+    // lut::decidePurpose); without one, a file that does not say is taken as an edit and a note
+    // says so.
+    QStringList adoptLut(const LutFile& file, const QString& path,
+                         std::optional<LutPurpose> answer = std::nullopt);
     // Starts from a LUT obtained elsewhere (e.g. extracted from a screenshot). The document is
     // untitled and modified (it exists only in memory). `origin` names where it came from.
     void startFrom(Lut3D base, const QString& origin);
@@ -71,7 +77,8 @@ public:
     const Lut3D& baseLut() const { return *m_base; }
     const Lut3D& effectiveLut() const { return *m_effective; }
     std::shared_ptr<const Lut3D> effectiveLutShared() const { return m_effective; }
-    LutRole lutRole() const { return m_role; }
+    // What the base is for, and how that was decided (the file, its format, the user).
+    LutPurpose lutPurpose() const { return m_purpose; }
     // What exports and the preview are made from (ExportTarget.h).
     LutSource lutSource() const;
     QString lutPath() const { return m_lutPath; }    // "" = untitled
@@ -138,7 +145,7 @@ signals:
 
 private:
     void replaceLut(Lut3D base, const QString& path, const QString& origin, const QString& format,
-                    bool modified, LutRole role, QStringList notes);
+                    bool modified, LutPurpose purpose, QStringList notes);
     void rebuildEffective();
     void emitModifiedIfChanged();
 
@@ -146,7 +153,8 @@ private:
     std::shared_ptr<const Lut3D> m_effective;
     std::shared_ptr<const Adjustments> m_adjustmentsShared;
     Adjustments m_adjustments;
-    LutRole m_role = LutRole::Look;
+    LutPurpose m_purpose = LutPurpose::Raw;
+    bool m_purposeKnown = false; // said by the file or the user (else assumed: not written)
     QString m_lutPath;
     QString m_origin;
     QString m_format;

@@ -3,18 +3,19 @@
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FormatRegistry.h"
-#include "lut/pipeline/SmashDisplayEdit.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/pipeline/PurposeConversion.h"
+#include "lut/pipeline/SmashConstants.h"
 
 namespace lut::gui {
 
 const std::vector<ExportTargetInfo>& exportTargets() {
     static const std::vector<ExportTargetInfo> targets = {
         {ExportTarget::Smash, "smash", "Smash Ultimate (.nutexb)", "nutexb", std::nullopt,
-         ".nutexb", kSmashLutSize, 0},
+         ".nutexb", kSmashLutSize, 0, LutPurpose::Smash},
         {ExportTarget::Engine, "engine", "Game engine strip (.png)", "strip", LutLayout::Pilot,
-         ".png", 16, 8},
-        {ExportTarget::Grading, "cube", "Grading app (.cube)", "cube", std::nullopt, ".cube", 0, 0},
+         ".png", 16, 8, LutPurpose::Raw},
+        {ExportTarget::Grading, "cube", "Grading app (.cube)", "cube", std::nullopt, ".cube", 0, 0,
+         LutPurpose::Raw},
     };
     return targets;
 }
@@ -37,22 +38,46 @@ ExportTarget parseExportTarget(std::string_view key) {
     throw Error("unknown target '" + std::string(key) + "' (expected smash, engine or cube)");
 }
 
-Lut3D exportTable(const LutSource& source, ExportTarget target, const StrengthOptions& strength) {
+Lut3D exportTable(const LutSource& source, ExportTarget target, const StrengthOptions& strength,
+                  ClipCount* clip) {
     static const Lut3D neutral = Lut3D::identity(33);
+    const LutPurpose to = exportTargetInfo(target).purpose;
     const bool full = isFullStrength(strength);
-    const Lut3D& effective = source.effective ? *source.effective : neutral;
-    if (target != ExportTarget::Smash)
-        return full ? effective : applyStrength(effective, strength);
-    // The edit is a LUT on display colours, sampled tetrahedrally (exact for affine edits, the
-    // neutral one included).
-    if (source.gameBase) {
-        const bool neutralEdit = !source.adjustments || source.adjustments->isNeutral();
+    // At a partial strength the edit is blended with neutral (lut/ops/Strength.h): before it is
+    // made for the game, so the game shows that share of the edit.
+    auto blended = [&](const Lut3D& edit) { return full ? edit : applyStrength(edit, strength); };
+    // The edit is a LUT on display colours, evaluated tetrahedrally (exact for affine edits, the
+    // neutral one included), continued above white (a game LUT exported unchanged is itself).
+    PurposeOptions o;
+    o.aboveWhite = kEditAboveWhite;
+    o.editInterpolation = Interpolation::Tetrahedral;
+    const bool neutralEdit = !source.adjustments || source.adjustments->isNeutral();
+    Lut3D table;
+    if (source.gameBase && to == LutPurpose::Smash) {
+        // The adjustments edit the picture the game shows with its LUT: that LUT is the stage.
+        o.stageLut = source.gameBase.get();
         const Lut3D edit = neutralEdit ? neutral : applyAdjustments(neutral, *source.adjustments);
-        return smashLutForDisplayEdit(full ? edit : applyStrength(edit, strength),
-                                      source.gameBase.get(), Interpolation::Tetrahedral);
+        const PurposeConversion c = convertPurpose(blended(edit), LutPurpose::Raw, to, o);
+        if (clip)
+            *clip = countOutOfRange(c.authoring.exact);
+        return c.authoring.exact; // the file clamps it, as it clamps convert's
     }
-    return smashLutForDisplayEdit(full ? effective : applyStrength(effective, strength), nullptr,
-                                  Interpolation::Tetrahedral);
+    if (source.gameBase) { // the edit the game's LUT makes, then the adjustments on it
+        const Lut3D edit = editOfGameLut(*source.gameBase, 33);
+        table = blended(neutralEdit ? edit : applyAdjustments(edit, *source.adjustments));
+    } else {
+        const Lut3D& effective = source.effective ? *source.effective : neutral;
+        if (to == LutPurpose::Smash) {
+            const PurposeConversion c = convertPurpose(blended(effective), LutPurpose::Raw, to, o);
+            if (clip)
+                *clip = countOutOfRange(c.authoring.exact);
+            return c.authoring.exact;
+        }
+        table = blended(effective);
+    }
+    if (clip)
+        *clip = countOutOfRange(table);
+    return table;
 }
 
 FormatOptions targetFormatOptions(ExportTarget target) {
@@ -68,14 +93,14 @@ TargetLut makeTargetLut(const LutSource& source, ExportTarget target) {
     formats::registerBuiltinFormats();
     const ExportTargetInfo& info = exportTargetInfo(target);
     TargetLut out;
-    out.table = exportTable(source, target);
-    out.clip = countOutOfRange(out.table);
+    out.table = exportTable(source, target, {}, &out.clip);
     const Format* format = FormatRegistry::instance().byName(info.format);
     if (!format)
         throw Error("the " + info.format + " format is not available");
     const FormatOptions options = targetFormatOptions(target);
     LutFile file;
     file.cube = out.table;
+    file.purpose = info.purpose;
     const std::string name = "export" + info.extension;
     if (info.format == "cube") {
         // The .cube writer writes every float as the shortest text that reads back as the same

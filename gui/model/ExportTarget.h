@@ -1,16 +1,19 @@
 #pragma once
-// What the LUT is for: the one choice that drives both the preview chain and the export.
-//   Smash    Smash Ultimate: color_grading_lut.nutexb, the 16^3 LUT that makes the game show the
-//            edit (lut::smashLutForDisplayEdit); the preview runs the game's chain with it.
-//   Engine   a game engine's raw LUT strip (16^3 as a 256x16 PNG in the unreal layout, 8-bit),
-//            the LUT as edited; the preview applies it to the encoded picture (or runs the
-//            chosen engine chain on a linear scene).
-//   Grading  a .cube for a grading application, the LUT as edited at the document's size, float.
+// Where the LUT goes: the export destinations, each a file type made for one purpose
+// (lut/LutPurpose.h, the one vocabulary of what a LUT is for):
+//   Smash    Smash Ultimate: color_grading_lut.nutexb, the game's 16^3 LUT (purpose smash): an edit
+//            made into the LUT that makes the game show it (lut::convertPurpose, as lutkit
+//            convert does); the preview runs the game's chain with it.
+//   Engine   a game engine's strip (16^3 as a 256x16 PNG in the unreal layout, 8-bit), an edit
+//            (purpose raw); the preview applies it to the encoded picture (or runs the chosen
+//            engine chain on a linear scene).
+//   Grading  a .cube for a grading application, the edit at the document's size, float (raw).
 // The preview grades with the LUT the default export writes, read back from its bytes
 // (makeTargetLut), so the window shows what the file gives, quantisation and resampling included.
 // Plain C++ over lutlib and the formats (no Qt).
 #include "lut/Error.h"
 #include "lut/Lut3D.h"
+#include "lut/LutPurpose.h"
 #include "lut/io/FormatOptions.h"
 #include "lut/ops/Adjust.h"
 #include "lut/ops/Clipping.h"
@@ -35,6 +38,7 @@ struct ExportTargetInfo {
     std::string extension;           // of the default export, with the dot
     int size;                        // lattice size written (0 = the document's)
     int bitDepth;                    // 0 = the format's default
+    LutPurpose purpose;              // what the file is for (its LUTKIT_PURPOSE tag)
 };
 
 const std::vector<ExportTargetInfo>& exportTargets();
@@ -47,10 +51,12 @@ ExportTarget parseExportTarget(std::string_view key);
 struct LutSource {
     // Base LUT with the adjustments applied (null = neutral 33^3).
     std::shared_ptr<const Lut3D> effective;
-    // The base, when it is a game LUT read from a .nutexb: then the Smash export applies the
-    // adjustments to the picture the game shows with it; null when the base is a look.
+    // The base, when it is the game's LUT (purpose smash: a .nutexb, a file that says so, or one
+    // the user said is): then the adjustments edit the picture the game shows with it; null when
+    // the base is an edit (purpose raw).
     std::shared_ptr<const Lut3D> gameBase;
     std::shared_ptr<const Adjustments> adjustments; // with gameBase (null = neutral)
+    LutPurpose purpose() const { return gameBase ? LutPurpose::Smash : LutPurpose::Raw; }
     bool operator==(const LutSource&) const = default;
 };
 
@@ -62,11 +68,15 @@ struct TargetLut {
     Diagnostics notes;                  // what the writer reported (rounding, resampling...)
 };
 
-// The table a target exports (Smash: the compensated 16^3 LUT; others: the effective LUT). At a
-// partial strength (lut/ops/Strength.h) the edit is blended with neutral first: for Smash before
-// it is made for the game, so the game shows that share of the edit.
+// The table a target exports: the source made for the target's purpose by the library's one
+// conversion (lut::convertPurpose with lut::kEditAboveWhite, as lutkit convert makes it), with
+// the adjustments as an edit of the picture. Smash: the 16^3 game LUT, its exact composition
+// before the file clamps it to [0, 1] (as convert's file clamps it: the same .nutexb bytes);
+// others: the edit (a game LUT as the edit it makes). At a partial strength (lut/ops/Strength.h)
+// the edit is blended with neutral first: for Smash before it is made for the game, so the game
+// shows that share of the edit. `clip` (optional) counts the entries outside [0, 1].
 Lut3D exportTable(const LutSource& source, ExportTarget target,
-                  const StrengthOptions& strength = {});
+                  const StrengthOptions& strength = {}, ClipCount* clip = nullptr);
 // The default format options of a target for writing `table`.
 FormatOptions targetFormatOptions(ExportTarget target);
 // Writes the target's default export to memory and reads it back; throws lut::Error.

@@ -8,24 +8,26 @@
 
 namespace lut::gui {
 
+PreviewPlan previewPlan(const PreviewOptions& o, bool storedIsFloat) {
+    PreviewRequest q;
+    q.evidence.storedIsFloat = storedIsFloat;
+    q.evidence.bitDepth = storedIsFloat ? 32 : 8;
+    q.forced = o.input;
+    // The target's purpose picks the chain: the game's for its LUT, else the engine chain.
+    q.preset = exportTargetInfo(o.target).purpose == LutPurpose::Smash ? Preset::Smash
+               : o.preset == Preset::Smash                             ? Preset::None
+                                                                       : o.preset;
+    q.bloom = o.bloom;
+    q.interpolation = o.interpolation;
+    return planPreview(q);
+}
+
 PreviewChain previewChain(const PreviewOptions& o) {
-    if (o.target == ExportTarget::Smash)
-        return PreviewChain::Game;
-    if (o.input == SceneKind::Screenshot || o.preset == Preset::None || o.preset == Preset::Smash)
-        return PreviewChain::EncodedLut;
-    return PreviewChain::EngineScene;
+    return previewPlan(o).chain;
 }
 
 Preset effectivePreset(const PreviewOptions& o) {
-    switch (previewChain(o)) {
-    case PreviewChain::Game:
-        return Preset::Smash;
-    case PreviewChain::EncodedLut:
-        return Preset::None;
-    case PreviewChain::EngineScene:
-        return o.preset;
-    }
-    return Preset::None;
+    return previewPlan(o).settings.preset;
 }
 
 bool bloomSwitchable(const PreviewOptions& o) {
@@ -49,69 +51,27 @@ bool showsTheExport(const PreviewOptions& o) {
 }
 
 int scenePreparationKey(const PreviewOptions& o) {
-    const bool screenshot = o.input == SceneKind::Screenshot;
-    switch (previewChain(o)) {
-    case PreviewChain::Game:
-        return screenshot ? 1 : 2; // ungraded screenshot / linear scene
-    case PreviewChain::EncodedLut:
-        return screenshot ? 3 : 4; // stored values / display-encoded scene
-    case PreviewChain::EngineScene:
-        return 2;
-    }
-    return 0;
+    // The stored values' type does not change between option changes of one picture; the key
+    // compares preparations of the same picture.
+    return preparationKey(previewPlan(o, o.input == SceneKind::Scene));
 }
 
 Image prepareScene(const Image& stored, bool storedIsFloat, const PreviewOptions& o, int nthreads) {
     Image scene = stored;
     if (scene.empty())
         return scene;
-    const bool screenshot = o.input == SceneKind::Screenshot;
-    // A screenshot holds display-encoded values whatever its pixel type (as lutkit preview).
-    const bool storedIsLinear = storedIsFloat && !screenshot;
-    switch (scenePreparationKey(o)) {
-    case 1: // the game's picture: undo the display encoding and the neutral grading
-        prepareSceneFrame(scene.view(), storedIsLinear, true, nullptr, Interpolation::Trilinear,
-                          nthreads);
-        break;
-    case 2: // linear scene values
-        prepareSceneFrame(scene.view(), storedIsLinear, false, nullptr, Interpolation::Trilinear,
-                          nthreads);
-        break;
-    case 3: // the encoded values as stored: the LUT applies to them
-        break;
-    case 4: { // a linear scene as the none preset shows it, then the LUT on that
-        prepareSceneFrame(scene.view(), storedIsLinear, false, nullptr, Interpolation::Trilinear,
-                          nthreads);
-        Pipeline none(Preset::None);
-        RunOptions run;
-        run.nthreads = nthreads;
-        none.run(scene.view(), run);
-        break;
-    }
-    }
+    (void)preparePreviewFrame(previewPlan(o, storedIsFloat), scene.view(), nullptr, false,
+                              nthreads);
     return scene;
 }
 
 PipelineSettings pipelineSettings(const PreviewOptions& o, std::shared_ptr<const Lut3D> lut) {
-    PipelineSettings s;
-    s.preset = effectivePreset(o);
+    PipelineSettings s = previewPlan(o).settings;
     s.lut = std::move(lut);
-    s.interpolation = o.interpolation;
-    s.bloom = bloomApplied(o);
-    switch (previewChain(o)) {
-    case PreviewChain::Game:
-        if (!o.brighten) // smash-grade always brightens: grade with the LUT that cancels it
-            s.lut = std::make_shared<const Lut3D>(
-                smashWithoutBrighten(s.lut ? *s.lut : Lut3D::identity(kSmashLutSize)));
-        break;
-    case PreviewChain::EncodedLut:
-        // The LUT on the frame as it is (encoded values), nothing after it: lutkit apply.
-        s.enable = {"lut"};
-        s.disable = {"display"};
-        break;
-    case PreviewChain::EngineScene:
-        break;
-    }
+    if (previewChain(o) == PreviewChain::Game && !o.brighten)
+        // smash-grade always brightens: grade with the LUT that cancels it (an inspection view)
+        s.lut = std::make_shared<const Lut3D>(
+            smashWithoutBrighten(s.lut ? *s.lut : Lut3D::identity(kSmashLutSize)));
     return s;
 }
 

@@ -3,23 +3,25 @@
 // as plain C++ so the document model and tests can use it without widgets. The preview worker
 // (PreviewController) calls these; everything here is re-entrant (no shared mutable state).
 //
-// Which chain runs follows from the export target and what the picture holds (lut::SceneKind):
-//   Game        target Smash: the game's chain (preset smash). A screenshot is first ungraded
-//               (sRGB decode, the game's neutral grading undone: lutkit preview
-//               --from-screenshot) and gets no bloom (it has the game's already); a linear scene
-//               runs the whole chain, bloom switchable.
-//   EncodedLut  targets Engine and Grading on a screenshot: the LUT on the stored, encoded values
-//               (lutkit apply): what an engine's or a grading app's LUT does to that picture. On
-//               a linear scene with the chain "none": the scene display-encoded first (lutkit
-//               preview --preset none), then the LUT.
-//   EngineScene targets Engine and Grading on a linear scene with the filmic or cinematic chain:
-//               that preset with the LUT (lutkit preview --preset pilot|lecture).
+// Which chain runs, what is undone and which stages run is the library's one recipe
+// (lut/pipeline/PreviewPlan.h, shared with `lutkit preview`): the export target's purpose picks
+// the preset (smash: the game's chain; engine and cube: the engine chain chosen for a linear
+// scene, else none), the picture's kind (lut::SceneKind) the rest:
+//   Game        target Smash: the game's chain. A screenshot is first ungraded and gets no bloom
+//               (it has the game's already); a linear scene runs the whole chain, bloom
+//               switchable.
+//   EncodedLut  targets Engine and Grading on a screenshot, or on a linear scene with the chain
+//               "none" (display-encoded first): the LUT on the encoded values (lutkit apply).
+//   EngineScene targets Engine and Grading on a linear scene with the filmic or cinematic chain.
+// What the editor adds: the LUT switch (neutral export) and the brighten switch (an inspection
+// view of the game's chain).
 #include "ExportTarget.h"
 
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/PreviewPlan.h"
 #include "lut/pipeline/SceneKind.h"
 
 #include <memory>
@@ -38,7 +40,8 @@ struct PreviewOptions {
     bool operator==(const PreviewOptions&) const = default;
 };
 
-enum class PreviewChain { Game, EncodedLut, EngineScene };
+// The library's recipe for these options and a picture whose stored values are float or not.
+PreviewPlan previewPlan(const PreviewOptions& options, bool storedIsFloat = false);
 PreviewChain previewChain(const PreviewOptions& options);
 // The pipeline preset the chain runs (smash, none or the engine chain).
 Preset effectivePreset(const PreviewOptions& options);

@@ -115,7 +115,9 @@ TEST(CliBuiltin, AScreenshotOfAStageWithoutItsOwnLutPreviewsCloserWithTheDefault
         for (const auto& e : mine.entries())
             f << e.r << " " << e.g << " " << e.b << "\n";
     }
-    const std::string base = "preview '" + dir + "/shot.png' --lut '" + dir + "/mine.cube' -o '";
+    // mine.cube is a game LUT (--lut-target smash): the game's chain uses it as it is.
+    const std::string base =
+        "preview '" + dir + "/shot.png' --lut-target smash --lut '" + dir + "/mine.cube' -o '";
     ASSERT_EQ(runCli(base + dir + "/neutral.png'").exitCode, 0);
     const RunResult r = runCli(base + dir + "/default.png' --original-lut builtin:smash-default");
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -69,8 +69,10 @@ TEST(CliPreview, ExrSceneThroughTheSmashChainMatchesReference) {
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
     for (bool bloom : {true, false}) {
         const std::string out = dir + (bloom ? "/bloom.exr" : "/nobloom.exr");
-        const RunResult r = runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut '" +
-                                   cube + "'" + (bloom ? "" : " --no-bloom"));
+        // (the table is the game's LUT: a .cube that does not say is taken as an edit)
+        const RunResult r =
+            runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut-target smash --lut '" +
+                   cube + "'" + (bloom ? "" : " --no-bloom"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const formats::LoadedImage got = formats::readImage(out);
         EXPECT_EQ(got.info.bitDepth, 32);
@@ -194,16 +196,16 @@ TEST(CliPreview, RegradingAScreenshotMatchesGradingTheScene) {
         scene.pixels()[i] = 1.0f;
     formats::writeImage(dir + "/scene.exr", scene, {32, false, true});
     ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' -o '" + dir +
-                     "/shot.exr' --no-bloom --lut '" + l0 + "'")
+                     "/shot.exr' --no-bloom --lut-target smash --lut '" + l0 + "'")
                   .exitCode,
               0);
-    const RunResult r =
-        runCli("preview '" + dir + "/shot.exr' -o '" + dir + "/regraded.exr' --no-bloom --lut '" +
-               l1 + "' --from-screenshot --original-lut '" + l0 + "'");
+    const RunResult r = runCli("preview '" + dir + "/shot.exr' -o '" + dir +
+                               "/regraded.exr' --no-bloom --lut-target smash --lut '" + l1 +
+                               "' --from-screenshot --original-lut '" + l0 + "'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("bloom cannot be undone"), std::string::npos);
     ASSERT_EQ(runCli("preview '" + dir + "/scene.exr' -o '" + dir +
-                     "/direct.exr' --no-bloom --lut '" + l1 + "'")
+                     "/direct.exr' --no-bloom --lut-target smash --lut '" + l1 + "'")
                   .exitCode,
               0);
     const Image a = formats::readImage(dir + "/regraded.exr").image;
@@ -267,7 +269,8 @@ TEST(CliPreview, BatchWritesEveryGoodFileAndFailsOnBadOnes) {
 }
 
 TEST(CliPreview, StrengthBlendsTheLutWithNeutralFirst) {
-    // --strength: the preview grades with the LUT blended with neutral in Oklab; the oracle is
+    // --strength: the preview grades with the LUT blended with neutral in Oklab (a game LUT,
+    // --lut-target smash: used by the game's chain as it is, blended as it is); the oracle is
     // the float64 reference chain with a LUT blended by the float64 Oklab of
     // tests/support/OklabReference.h.
     const std::string dir = workDir();
@@ -283,7 +286,7 @@ TEST(CliPreview, StrengthBlendsTheLutWithNeutralFirst) {
                     glm::dvec3(lut.latticeInput(r, g, b)), glm::dvec3(lut.at(r, g, b)), 0.4, 0.8));
     const std::string out = dir + "/out.exr";
     const RunResult r = runCli("preview '" + dir + "/scene.exr' -o '" + out + "' --lut '" + cube +
-                               "' --luma-strength 0.4 --chroma-strength 0.8");
+                               "' --lut-target smash --luma-strength 0.4 --chroma-strength 0.8");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const Image got = formats::readImage(out).image;
     EXPECT_LT(maxDiff(got, expectedSmash(scene, blended, true)), 1e-5);

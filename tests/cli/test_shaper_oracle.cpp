@@ -155,7 +155,9 @@ TEST(ShaperOracle, ApplyEqualsOcioOnFloatImages) {
 }
 
 TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
-    // preview's LUT stage alone (preset none, lut on, display off) on a linear float scene.
+    // preview's LUT stage alone (preset none, lut on, display off) on a linear float scene: the
+    // none preset's recipe (lut::planPreview, docs/pipeline.md) display-encodes a scene (the
+    // piecewise sRGB curve), then runs the LUT.
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
     Image img(32, 32);
@@ -180,7 +182,7 @@ TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
     double worst = 0;
     for (int i = 0; i < 32 * 32; ++i) {
         const float* p = img.pixel(i % 32, i / 32);
-        glm::vec3 want(p[0], p[1], p[2]);
+        glm::vec3 want(srgbEncode(glm::dvec3(p[0], p[1], p[2])));
         ocio->applyRGB(&want.x);
         for (int c = 0; c < 3; ++c)
             worst = std::max(worst, std::fabs(double(got[3 * i + c]) - want[c]));
@@ -190,9 +192,10 @@ TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
 
 TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
     // convert shaped.cube game.nutexb (the default target: the game shows the edit): every entry
-    // is L(s) = (srgb^-1(edit(shown(s)))^(1/2.2) / 1.3703 - s) / 0.99961 + s with shown(s) =
-    // srgb(min(1, (s * 1.3703)^2.2)) (neutral stage LUT) and the edit evaluated by OCIO,
-    // clamped to [0,1] and rounded to 8 bits.
+    // is L(s) = (srgb^-1(wanted(s))^(1/2.2) / 1.3703 - s) / 0.99961 + s with shown(s) =
+    // srgb(min(1, (s * 1.3703)^2.2)) (neutral stage LUT) and the edit evaluated by OCIO, continued
+    // above white with slope 1 (lut::kEditAboveWhite, AboveWhite::Continue: wanted = edit(shown)
+    // + (unclipped - shown), at least 0), clamped to [0,1] and rounded to 8 bits.
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
     const RunResult r = runCli("convert " + q(cube) + " " + q(dir + "/game.nutexb"));
@@ -206,15 +209,18 @@ TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
         for (int g = 0; g < 16; ++g)
             for (int rr = 0; rr < 16; ++rr) {
                 const glm::dvec3 s = glm::dvec3(rr, g, b) / 15.0;
-                glm::dvec3 shown;
-                for (int c = 0; c < 3; ++c)
-                    shown[c] = std::min(1.0, std::pow(s[c] * 1.3703, 2.2));
+                glm::dvec3 shown, unclipped;
+                for (int c = 0; c < 3; ++c) {
+                    unclipped[c] = std::pow(s[c] * 1.3703, 2.2);
+                    shown[c] = std::min(1.0, unclipped[c]);
+                }
                 shown = srgbEncode(shown);
+                unclipped = srgbEncode(unclipped);
                 glm::vec3 e(shown);
                 ocio->applyRGB(&e.x);
                 glm::dvec3 wanted;
                 for (int c = 0; c < 3; ++c)
-                    wanted[c] = std::clamp(double(e[c]), 0.0, 1.0);
+                    wanted[c] = std::max(0.0, double(e[c]) + (unclipped[c] - shown[c]));
                 const glm::dvec3 lin = srgbDecode(wanted);
                 for (int c = 0; c < 3; ++c) {
                     const double l = (std::pow(lin[c], 1.0 / 2.2) / 1.3703 - s[c]) / 0.99961 + s[c];

@@ -29,8 +29,8 @@ inline void extractChecked(const Image& image, std::uint8_t flags) {
                   "a found patch's frame lies outside the image");
         try {
             const PatchReading reading = readPatch(image.view(), p);
-            for (ExtractTarget t : {ExtractTarget::Raw, ExtractTarget::Smash}) {
-                if (t == ExtractTarget::Smash && !(flags & 2))
+            for (LutPurpose t : {LutPurpose::Raw, LutPurpose::Smash}) {
+                if (t == LutPurpose::Smash && !(flags & 2))
                     continue;
                 lut::ExtractOptions o;
                 o.target = t;

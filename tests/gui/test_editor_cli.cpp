@@ -10,6 +10,7 @@
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/formats/Registry.h"
 
 #include <QFile>
 #include <QProcess>
@@ -73,22 +74,42 @@ private slots:
         QTest::addColumn<QString>("extension");   // of the default export
         QTest::addColumn<QStringList>("cli");     // how the CLI renders it (--lut LUT IN -o OUT)
         QTest::addColumn<bool>("viaDisplayOnly"); // the scene is first display-encoded (2 steps)
+        // One recipe (lut/pipeline/PreviewPlan.h): lutkit preview with the preset the target
+        // means renders every case, screenshots and scenes alike, in one command.
         const QStringList preview = {QStringLiteral("preview"), QStringLiteral("-q")};
+        const QStringList none = preview + QStringList{"--preset", "none"};
         const QStringList apply = {QStringLiteral("apply"), QStringLiteral("-q"),
                                    QStringLiteral("--interp"), QStringLiteral("trilinear")};
         QTest::newRow("smash, in-game screenshot")
+            << "sample_scene.png" << QStringList{"target smash"} << ".nutexb" << preview << false;
+        QTest::newRow("smash, in-game screenshot, said")
             << "sample_scene.png" << QStringList{"target smash"} << ".nutexb"
             << preview + QStringList{"--from-screenshot", "--no-bloom"} << false;
         QTest::newRow("engine strip, screenshot")
+            << "sample_scene.png" << QStringList{"target engine"} << ".png" << none << false;
+        QTest::newRow("engine strip, screenshot, apply")
             << "sample_scene.png" << QStringList{"target engine"} << ".png" << apply << false;
         QTest::newRow("grading cube, screenshot")
-            << "sample_scene.png" << QStringList{"target cube"} << ".cube" << apply << false;
+            << "sample_scene.png" << QStringList{"target cube"} << ".cube" << none << false;
+        QTest::newRow("smash, 16-bit screenshot")
+            << "scene16.png" << QStringList{"target smash"} << ".nutexb" << preview << false;
+        QTest::newRow("engine strip, 16-bit screenshot")
+            << "scene16.png" << QStringList{"target engine"} << ".png" << none << false;
         QTest::newRow("smash, linear scene")
             << "sample_scene.exr" << QStringList{"target smash"} << ".nutexb" << preview << false;
+        QTest::newRow("smash, linear scene, no bloom")
+            << "sample_scene.exr" << QStringList{"target smash", "bloom off"} << ".nutexb"
+            << preview + QStringList{"--no-bloom"} << false;
         QTest::newRow("engine strip, scene, filmic chain")
             << "sample_scene.exr" << QStringList{"target engine", "chain filmic"} << ".png"
             << preview + QStringList{"--preset", "pilot"} << false;
+        QTest::newRow("grading cube, scene, cinematic chain")
+            << "sample_scene.exr" << QStringList{"target cube", "chain cinematic"} << ".cube"
+            << preview + QStringList{"--preset", "lecture"} << false;
         QTest::newRow("grading cube, scene, display only")
+            << "sample_scene.exr" << QStringList{"target cube", "chain none"} << ".cube" << none
+            << false;
+        QTest::newRow("grading cube, scene, display only, two steps")
             << "sample_scene.exr" << QStringList{"target cube", "chain none"} << ".cube" << apply
             << true;
     }
@@ -103,10 +124,27 @@ private slots:
         QTemporaryDir dir;
         const QString in = dir.filePath(image);
         const QString grade = dir.filePath("sample_grade.cube");
-        QVERIFY(QFile::copy(samplePath(qPrintable(image)), in));
+        if (image == "scene16.png") { // a 16-bit screenshot: values no 8-bit file holds
+            formats::LoadedImage shot =
+                formats::readImage(samplePath("sample_scene.png").toStdString());
+            for (int y = 0; y < shot.image.height(); ++y)
+                for (int x = 0; x < shot.image.width(); ++x)
+                    for (int c = 0; c < 3; ++c) {
+                        float& v = shot.image.pixel(x, y)[c];
+                        v = std::min(1.0f, v * 0.97f + 0.03f * float(x) / shot.image.width());
+                    }
+            formats::ImageWriteOptions o;
+            o.bitDepth = 16;
+            o.alpha = false;
+            formats::writeImage(in.toStdString(), shot.image, o);
+        } else {
+            QVERIFY(QFile::copy(samplePath(qPrintable(image)), in));
+        }
         QVERIFY(QFile::copy(samplePath("sample_grade.cube"), grade));
         const QString ext =
             image.endsWith(".exr") ? QStringLiteral(".exr") : QStringLiteral(".png");
+        // (the sample grade says nothing about its purpose: the editor, told, takes it as an
+        // edit, as the CLI does)
         const QString mine = dir.filePath("editor" + ext);
         const QString theirs = dir.filePath("cli" + ext);
         const QString script =
@@ -139,6 +177,54 @@ private slots:
         for (std::size_t i = 0; i < a.image.pixels().size(); ++i)
             differ += i % 4 != 3 && a.image.pixels()[i] != b.image.pixels()[i];
         QCOMPARE(differ, std::size_t(0));
+    }
+
+    void theEditorsGameExportIsWhatConvertWrites_data() {
+        QTest::addColumn<QString>("lut");
+        QTest::newRow("sample grade") << "sample";
+        QTest::newRow("values above white, white darkened") << "above";
+    }
+
+    // Issue 26: `convert x.cube y.nutexb` and the editor's default export of x.cube are the same
+    // bytes: one conversion (lut::convertPurpose) with one rule above white, passed by both.
+    void theEditorsGameExportIsWhatConvertWrites() {
+        QFETCH(QString, lut);
+        QTemporaryDir dir;
+        const QString cube = dir.filePath("x.cube");
+        if (lut == "sample") {
+            QVERIFY(QFile::copy(samplePath("sample_grade.cube"), cube));
+        } else {
+            // An edit whose outputs leave [0,1] (up to 1.35) and that darkens white to 0.85:
+            // where the rule above white decides the entries.
+            Lut3D e(9);
+            for (int b = 0; b < 9; ++b)
+                for (int g = 0; g < 9; ++g)
+                    for (int r = 0; r < 9; ++r) {
+                        const glm::vec3 in(r / 8.0f, g / 8.0f, b / 8.0f);
+                        e.at(r, g, b) = glm::vec3(1.35f * in.x, 0.85f * in.y + 0.02f,
+                                                  0.6f * in.z + 0.5f * in.x * in.x);
+                    }
+            LutFile f;
+            f.cube = e;
+            formats::writeLut(cube.toStdString(), f);
+        }
+        const QString script = writeScript(dir, "s.txt", {"target smash", "wait", "export"});
+        const Run e = run(QStringLiteral(LUTKIT_EDITOR), {"--script", script, cube});
+        QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
+        const QString exported = exportedPath(e.out);
+        QVERIFY2(exported.endsWith(".nutexb"), qPrintable(e.out));
+        const QString converted = dir.filePath("convert.nutexb");
+        const Run c = run(QStringLiteral(LUTKIT_CLI), {"convert", "-q", cube, converted});
+        QVERIFY2(c.code == 0, qPrintable(c.err));
+        QFile a(exported), b(converted);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        const QByteArray ab = a.readAll(), bb = b.readAll();
+        QVERIFY(!ab.isEmpty());
+        QVERIFY2(ab == bb, "the editor's .nutexb differs from lutkit convert's");
+        if (lut == "above") { // the case the rule decides: the entries near white differ
+            const Lut3D game = formats::readLut(converted.toStdString()).toLut3D();
+            QVERIFY(game.at(15, 15, 15).x > 0.99f); // bright inputs stay white (continued)
+        }
     }
 
     void helpAndVersionNeedNoDisplay() {

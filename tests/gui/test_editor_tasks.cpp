@@ -29,12 +29,13 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
-#include <QInputDialog>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
@@ -430,12 +431,22 @@ private slots:
         MainWindow w;
         w.setInteractiveErrors(true);
         w.show();
+        // One dialog asks the layout and, since the strip does not say, what it is for.
         QString asked;
-        onNextDialog<QInputDialog>([&](QInputDialog* d) {
-            asked = d->labelText();
-            d->setTextValue(QStringLiteral("unity"));
+        bool purposeAsked = false;
+        onNextDialog<QDialog>([&](QDialog* d) {
+            if (d->objectName() != QStringLiteral("openLut"))
+                return;
+            asked = d->findChild<QLabel*>(QStringLiteral("openLut.question"))->text();
+            d->findChild<QComboBox*>(QStringLiteral("openLut.layout"))
+                ->setCurrentText(QStringLiteral("unity"));
+            if (auto* game = d->findChild<QAbstractButton*>(QStringLiteral("purpose.smash"))) {
+                purposeAsked = true;
+                game->click();
+            }
             d->accept();
         });
+        bool askedTwice = false;
         QMimeData mime;
         mime.setUrls({QUrl::fromLocalFile(strip)});
         QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &mime, Qt::LeftButton,
@@ -445,9 +456,22 @@ private slots:
         QApplication::sendEvent(&w, &drop);
         QVERIFY(drop.isAccepted());
         QVERIFY(waitFor([&] { return !asked.isEmpty(); }, 8000));
+        QTimer secondQuestion; // lives as long as this test: no second question while it loads
+        connect(&secondQuestion, &QTimer::timeout, this, [&] {
+            for (QWidget* top : QApplication::topLevelWidgets())
+                if (auto* box = qobject_cast<QMessageBox*>(top); box && box->isVisible()) {
+                    askedTwice = true;
+                    box->reject();
+                }
+        });
+        secondQuestion.start(20);
         w.waitForLoads();
+        secondQuestion.stop();
         QVERIFY2(asked.contains(QStringLiteral("graded.png")), qPrintable(asked));
+        QVERIFY(purposeAsked);
         QCOMPARE(w.document()->lutPath(), strip);
+        QCOMPARE(w.document()->lutPurpose(), LutPurpose::Smash); // the answer given
+        QVERIFY(!askedTwice);
         // Read as the unity layout it was told (a neutral unreal strip read as unity is not
         // neutral: the layouts order the slices differently).
         const Lut3D asUnity = [&] {

@@ -21,6 +21,8 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 
+#include <glm/common.hpp>
+
 #include <QAbstractButton>
 #include <QAction>
 #include <QComboBox>
@@ -39,6 +41,7 @@
 
 using namespace lut;
 using namespace lut::gui;
+using lut::gui::test::maxDiff;
 using lut::gui::test::samplePath;
 
 namespace {
@@ -93,7 +96,8 @@ private slots:
         const QString lut = dir.filePath("sample_grade.cube");
         QVERIFY(QFile::copy(samplePath("sample_grade.cube"), lut));
         const QByteArray original = fileBytes(lut);
-        MainWindow w; // interactive: the real dialogs
+        MainWindow w;                           // interactive: the real dialogs
+        w.setLutPurposeAnswer(LutPurpose::Raw); // the sample grade is an edit (it does not say)
         w.show();
         QVERIFY(w.openLutFile(lut));
         w.document()->editParam(AdjustParam::Saturation, 1.4);
@@ -153,6 +157,7 @@ private slots:
         QVERIFY(QFile::copy(samplePath("sample_grade.cube"), lut));
         const QByteArray original = fileBytes(lut);
         MainWindow w;
+        w.setLutPurposeAnswer(LutPurpose::Raw); // the sample grade is an edit (it does not say)
         w.show();
         QVERIFY(w.openLutFile(lut));
         w.document()->editParam(AdjustParam::Exposure, 0.5);
@@ -337,6 +342,81 @@ private slots:
     // Never freeze: the longest time the UI thread does not get to its event loop while a 4K
     // PNG opens, until the full-resolution frame is on screen. Logged, not asserted (timing
     // depends on the machine); docs/editor.md has the figures.
+    // Issue 28: a strip already made for the game (Smush-LUT's output, a .nutexb converted to a
+    // strip) opens as the game's LUT when it says so, or when the user says so: asked once, the
+    // answer kept for the file; Ctrl+E then writes that LUT, not a second compensation of it.
+    void aGameStripIsNeverCompensatedTwice() {
+        QTemporaryDir dir;
+        // The game's LUT, 8-bit as the game holds it: a warm stage.
+        Lut3D game(16);
+        for (int b = 0; b < 16; ++b)
+            for (int g = 0; g < 16; ++g)
+                for (int r = 0; r < 16; ++r)
+                    game.at(r, g, b) = glm::round(glm::vec3(std::min(1.0f, r / 15.0f * 1.1f),
+                                                            g / 15.0f, 0.1f + 0.8f * b / 15.0f) *
+                                                  255.0f) /
+                                       255.0f;
+        LutFile f;
+        f.cube = game;
+        const QString untagged = dir.filePath("final.png");
+        formats::writeLut(untagged.toStdString(), f); // says nothing
+        f.purpose = LutPurpose::Smash;
+        const QString tagged = dir.filePath("tagged.png");
+        formats::writeLut(tagged.toStdString(), f); // LUTKIT_PURPOSE smash in its description
+
+        MainWindow w; // interactive: the real question
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QString asked;
+        onNextDialog<QMessageBox>([&](QMessageBox* box) {
+            asked = box->text();
+            box->findChild<QAbstractButton*>(QStringLiteral("purpose.smash"))->click();
+        });
+        QVERIFY(w.openLutFile(untagged));
+        QVERIFY2(asked.contains(QStringLiteral("does not say what it is for")), qPrintable(asked));
+        QCOMPARE(w.document()->lutPurpose(), LutPurpose::Smash);
+        // The default export (what Ctrl+E writes) is that LUT: every entry as the strip holds it.
+        const QString out = dir.filePath("color_grading_lut.nutexb");
+        QVERIFY(w.exportLut(out, QStringLiteral("nutexb"), targetFormatOptions(ExportTarget::Smash),
+                            ExportTarget::Smash, true));
+        const Lut3D written = formats::readLut(out.toStdString()).toLut3D();
+        QCOMPARE(maxDiff(written, game), 0.0);
+        // ... and the preview grades with it.
+        QCOMPARE(
+            maxDiff(*makeTargetLut(w.document()->lutSource(), ExportTarget::Smash).shown, game),
+            0.0);
+        activate(w);
+
+        // Opened again: not asked again, still the game's LUT.
+        bool askedAgain = false;
+        onNextDialog<QMessageBox>([&](QMessageBox* box) {
+            askedAgain = true;
+            box->findChild<QAbstractButton*>(QStringLiteral("purpose.raw"))->click();
+        });
+        QVERIFY(w.openLutFile(untagged));
+        QVERIFY(!askedAgain);
+        QCOMPARE(w.document()->lutPurpose(), LutPurpose::Smash);
+        // A file that says so is not asked at all.
+        QVERIFY(w.openLutFile(tagged));
+        QVERIFY(!askedAgain);
+        QCOMPARE(w.document()->lutPurpose(), LutPurpose::Smash);
+        QApplication::processEvents();
+        QTest::qWait(100); // let the pending answerer expire unused
+
+        // The other answer, for another copy: an edit, made into the game's LUT that shows it
+        // (what the double compensation was: far from the strip's own entries).
+        const QString other = dir.filePath("edit.png");
+        QVERIFY(QFile::copy(untagged, other));
+        onNextDialog<QMessageBox>([&](QMessageBox* box) {
+            box->findChild<QAbstractButton*>(QStringLiteral("purpose.raw"))->click();
+        });
+        QVERIFY(w.openLutFile(other));
+        QCOMPARE(w.document()->lutPurpose(), LutPurpose::Raw);
+        QVERIFY(w.exportLut(out, QStringLiteral("nutexb"), targetFormatOptions(ExportTarget::Smash),
+                            ExportTarget::Smash, true));
+        QVERIFY(maxDiff(formats::readLut(out.toStdString()).toLut3D(), game) > 20.0 / 255.0);
+    }
+
     void openA4kPngLogsTheLongestStall() {
         QTemporaryDir dir;
         Image img(3840, 2160);

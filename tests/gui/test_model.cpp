@@ -294,7 +294,7 @@ private slots:
         formats::writeLut(path.toStdString(), f);
         Document doc;
         doc.openLut(path);
-        QCOMPARE(doc.lutRole(), LutRole::GameLut);
+        QCOMPARE(doc.lutPurpose(), LutPurpose::Smash); // a .nutexb is the game's LUT
         const TargetLut same = makeTargetLut(doc.lutSource(), ExportTarget::Smash);
         QCOMPARE(maxDiff(*same.shown, game), 0.0);
         doc.editParam(AdjustParam::Exposure, 0.3);
@@ -566,12 +566,12 @@ private slots:
         doc.openLut(QStringLiteral("builtin:smash-default"));
         QVERIFY(doc.lutPath().isEmpty());
         QCOMPARE(doc.lutOrigin(), QStringLiteral("builtin:smash-default"));
-        QCOMPARE(doc.lutRole(), LutRole::GameLut);
+        QCOMPARE(doc.lutPurpose(), LutPurpose::Smash);
         QCOMPARE(doc.baseLut().size(), 16);
         QCOMPARE(doc.baseLut().at(7, 0, 15), glm::vec3(121.0f, 0.0f, 255.0f) / 255.0f);
         QVERIFY(!doc.isModified());
         doc.openLut(QStringLiteral("builtin:neutral"));
-        QCOMPARE(doc.lutRole(), LutRole::Look);
+        QCOMPARE(doc.lutPurpose(), LutPurpose::Raw);
         QVERIFY(doc.baseLut().isIdentity(0.0f));
         QVERIFY(looksLikeLutFile(QStringLiteral("builtin:smash-default")));
     }

@@ -157,7 +157,7 @@ TEST(RoundtripDefaults, ConvertMakesTheGamesLutFromAGradedStrip) {
     const auto c =
         runCli("convert " + q(dir + "/neutral_graded.png") + " " + q(dir + "/cgl.nutexb"));
     ASSERT_EQ(c.exitCode, 0) << c.err;
-    EXPECT_TRUE(has(c.out, "target   smash (the output is a .nutexb")) << c.out;
+    EXPECT_TRUE(has(c.out, "out: smash (the output is a .nutexb")) << c.out;
     EXPECT_TRUE(has(c.out, "exact composition:")) << c.out;
     EXPECT_TRUE(has(c.out, "least-squares refinement:")) << c.out;
     EXPECT_TRUE(has(c.err + c.out, "layout detected: smush")) << c.err << c.out;

@@ -150,7 +150,7 @@ TEST(RoundtripCli, ExtractSmashWritesTheCompensatedNutexb) {
     ASSERT_EQ(shipped.size(), 16);
     // the same as the library's answer, rounded to the nutexb's 8 bits
     ExtractOptions o;
-    o.target = ExtractTarget::Smash;
+    o.target = LutPurpose::Smash;
     const ExtractResult lib = extractLut(formats::readImage(edited).image.view(), o);
     for (std::size_t i = 0; i < shipped.entryCount(); ++i)
         for (int c = 0; c < 3; ++c)

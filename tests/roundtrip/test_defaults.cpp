@@ -33,7 +33,7 @@ struct PatchChoice {
 };
 
 // The truth for a patch choice and an edit, the image stored losslessly at 8 bits.
-Truth measure(ExtractTarget target, const PatchChoice& c, const Edit& edit) {
+Truth measure(LutPurpose target, const PatchChoice& c, const Edit& edit) {
     Image shot = syntheticScreenshot(kShotWidth, kShotHeight, 8);
     EmbedOptions eo;
     eo.target = target;
@@ -43,20 +43,20 @@ Truth measure(ExtractTarget target, const PatchChoice& c, const Edit& edit) {
     applyEdit(shot, edit, 8);
     ExtractOptions o;
     o.target = target;
-    o.outputSize = target == ExtractTarget::Raw ? 16 : 0; // compared at the same LUT size
+    o.outputSize = target == LutPurpose::Raw ? 16 : 0; // compared at the same LUT size
     const ExtractResult r = extractLut(shot.view(), o);
-    return target == ExtractTarget::Smash ? smashTruth(r.lut, edit) : rawTruth(r.lut, edit);
+    return target == LutPurpose::Smash ? smashTruth(r.lut, edit) : rawTruth(r.lut, edit);
 }
 
 } // namespace
 
-void defaultPatchIsTheMostAccurate(ExtractTarget target) {
+void defaultPatchIsTheMostAccurate(LutPurpose target) {
     const PatchChoice choices[] = {{"game-display 12^3", PatchLattice::Smash, 12},
                                    {"uniform 16^3", PatchLattice::Uniform, 16},
                                    {"uniform 25^3", PatchLattice::Uniform, 25}};
     {
         const PatchLattice wanted =
-            target == ExtractTarget::Smash ? PatchLattice::Smash : PatchLattice::Uniform;
+            target == LutPurpose::Smash ? PatchLattice::Smash : PatchLattice::Uniform;
         EmbedOptions defaults;
         defaults.target = target;
         ASSERT_EQ(effectiveLattice(defaults), wanted);
@@ -81,11 +81,11 @@ void defaultPatchIsTheMostAccurate(ExtractTarget target) {
 }
 
 TEST(Defaults, TheGameDisplayPatchIsTheMostAccurateForSmash) {
-    defaultPatchIsTheMostAccurate(ExtractTarget::Smash);
+    defaultPatchIsTheMostAccurate(LutPurpose::Smash);
 }
 
 TEST(Defaults, TheUniform16PatchIsTheMostAccurateForRaw) {
-    defaultPatchIsTheMostAccurate(ExtractTarget::Raw);
+    defaultPatchIsTheMostAccurate(LutPurpose::Raw);
 }
 
 void jpegScales(Storage storage) {

@@ -38,7 +38,7 @@ struct Embedded {
 };
 EmbedOptions uniform16() {
     EmbedOptions o;
-    o.target = ExtractTarget::Raw; // implies the uniform 16^3 lattice
+    o.target = LutPurpose::Raw; // implies the uniform 16^3 lattice
     o.scale = 2;
     return o;
 }
@@ -108,7 +108,7 @@ TEST(Embed, SmashLatticeIsTheDefault) {
     EXPECT_EQ(f.placement.lattice, PatchLattice::Smash);
     // raw from a non-uniform lattice: interpolated, and a neutral stays neutral
     ExtractOptions o;
-    o.target = ExtractTarget::Raw;
+    o.target = LutPurpose::Raw;
     o.outputSize = 16;
     const ExtractResult r = extractLut(e.image.view(), o);
     EXPECT_LT(r.lut.maxDeviationFromIdentity(), 1e-5f);

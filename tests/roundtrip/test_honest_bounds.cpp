@@ -45,10 +45,10 @@ std::vector<std::pair<const char*, Edit>> steepEdits() {
 } // namespace
 
 // One test per target and file type (each runs the five edits), so each stays short.
-class HonestBounds : public ::testing::TestWithParam<std::tuple<ExtractTarget, Storage>> {};
+class HonestBounds : public ::testing::TestWithParam<std::tuple<LutPurpose, Storage>> {};
 
 TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
-    const ExtractTarget target = std::get<0>(GetParam());
+    const LutPurpose target = std::get<0>(GetParam());
     const Storage storage = std::get<1>(GetParam());
     const std::string dir = rtDir();
     auto edits = testEdits();
@@ -67,7 +67,7 @@ TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
         const ExtractResult r = extractLut(saved.view(), {});
         ASSERT_EQ(r.target, target);
         const Truth t =
-            target == ExtractTarget::Smash ? smashTruth(r.lut, edit) : rawTruth(r.lut, edit);
+            target == LutPurpose::Smash ? smashTruth(r.lut, edit) : rawTruth(r.lut, edit);
         const ExpectedError& e = r.expected;
         std::printf("[ measured ] %-5s %-12s %-12s lattice true %5.2f/%5.3f printed "
                     "%5.2f/%5.3f | all true %5.2f/%5.3f/%5.2f printed %5.2f/%5.3f/%5.2f "
@@ -83,8 +83,8 @@ TEST_P(HonestBounds, PrintedExpectedErrorHolds) {
         EXPECT_LE(t.overall.mean, e.overall.meanSteps) << what << ": mean";
         EXPECT_LE(t.overall.p99, e.overall.p99Steps) << what << ": p99";
         // and between the grid's points: 200,000 random inputs
-        const Summary rnd = target == ExtractTarget::Smash ? smashTruthRandom(r.lut, edit)
-                                                           : rawTruthRandom(r.lut, edit);
+        const Summary rnd = target == LutPurpose::Smash ? smashTruthRandom(r.lut, edit)
+                                                        : rawTruthRandom(r.lut, edit);
         std::printf("[ measured ] %-5s %-12s %-12s random inputs: true %5.2f/%5.3f/%5.2f\n",
                     toString(target), name, storageName(storage), rnd.max, rnd.mean, rnd.p99);
         EXPECT_LE(rnd.max, e.overall.maxSteps) << what << ": max over random inputs";
@@ -109,7 +109,7 @@ TEST(HonestBoundsRaw, FromTheDefaultGamePatch) {
             applyEdit(shot, edit, 8);
             const Image saved = savedAs(shot, storage, dir, "game");
             ExtractOptions o;
-            o.target = ExtractTarget::Raw;
+            o.target = LutPurpose::Raw;
             const ExtractResult r = extractLut(saved.view(), o);
             const Summary rnd = rawTruthRandom(r.lut, edit);
             const Truth grid = rawTruth(r.lut, edit);
@@ -126,16 +126,15 @@ TEST(HonestBoundsRaw, FromTheDefaultGamePatch) {
         }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    EveryEditFileAndTarget, HonestBounds,
-    ::testing::Combine(::testing::Values(ExtractTarget::Smash, ExtractTarget::Raw),
-                       ::testing::Values(Storage::Png8, Storage::Tiff16, Storage::Jpeg420,
-                                         Storage::Jpeg444)),
-    [](const ::testing::TestParamInfo<std::tuple<ExtractTarget, Storage>>& info) {
-        std::string name = std::string(toString(std::get<0>(info.param))) + "_" +
-                           storageName(std::get<1>(info.param));
-        for (char& ch : name)
-            if (ch == '-')
-                ch = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(EveryEditFileAndTarget, HonestBounds,
+                         ::testing::Combine(::testing::Values(LutPurpose::Smash, LutPurpose::Raw),
+                                            ::testing::Values(Storage::Png8, Storage::Tiff16,
+                                                              Storage::Jpeg420, Storage::Jpeg444)),
+                         [](const ::testing::TestParamInfo<std::tuple<LutPurpose, Storage>>& info) {
+                             std::string name = std::string(toString(std::get<0>(info.param))) +
+                                                "_" + storageName(std::get<1>(info.param));
+                             for (char& ch : name)
+                                 if (ch == '-')
+                                     ch = '_';
+                             return name;
+                         });

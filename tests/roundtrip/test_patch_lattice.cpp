@@ -32,7 +32,7 @@ TEST(PatchLatticeNames, UnknownNameIsRefusedWithTheAcceptedNames) {
 
 TEST(PatchLatticeNames, ExtractTargetsKeepTheirNames) {
     // The target is the game ("smash"), not the lattice: it keeps its name.
-    EXPECT_EQ(parseTarget("smash"), ExtractTarget::Smash);
-    EXPECT_EQ(parseTarget("raw"), ExtractTarget::Raw);
-    EXPECT_STREQ(toString(ExtractTarget::Smash), "smash");
+    EXPECT_EQ(parseLutPurpose("smash"), LutPurpose::Smash);
+    EXPECT_EQ(parseLutPurpose("raw"), LutPurpose::Raw);
+    EXPECT_STREQ(toString(LutPurpose::Smash), "smash");
 }

@@ -46,14 +46,14 @@ TEST(SelfDescribing, OldPatchesStillRead) {
         EXPECT_FALSE(f.placement.stageDigest.has_value());
         // no target recorded: the game-display lattice is made for the game
         const ExtractResult r = extractLut(img.view(), {});
-        EXPECT_EQ(r.target, ExtractTarget::Smash);
+        EXPECT_EQ(r.target, LutPurpose::Smash);
         EXPECT_EQ(r.targetSource, TargetSource::Lattice);
     }
     {
         // edited with oiiotool --powc 0.8 (rounded to 8 bits): the raw LUT is x^0.8
         const Image img = fixture("v1-game-display-12-scale2-pow0.8.png");
         ExtractOptions o;
-        o.target = ExtractTarget::Raw;
+        o.target = LutPurpose::Raw;
         const ExtractResult r = extractLut(img.view(), o);
         ASSERT_EQ(r.lut.size(), 16);
         for (int i = 0; i < 16; ++i) {
@@ -71,7 +71,7 @@ TEST(SelfDescribing, OldPatchesStillRead) {
         EXPECT_EQ(f.placement.layout, LutLayout::Hald);
         EXPECT_EQ(f.placement.bitDepth, 16);
         const ExtractResult r = extractLut(img.view(), {});
-        EXPECT_EQ(r.target, ExtractTarget::Raw);
+        EXPECT_EQ(r.target, LutPurpose::Raw);
         EXPECT_LT(r.lut.maxDeviationFromIdentity(), 1e-4f);
     }
 }
@@ -79,16 +79,16 @@ TEST(SelfDescribing, OldPatchesStillRead) {
 TEST(SelfDescribing, TheHeaderRecordsWhatEmbedWasAskedFor) {
     const Lut3D warm = warmStageLut();
     struct Case {
-        ExtractTarget target;
+        LutPurpose target;
         const Lut3D* original;
         PatchLattice lattice;
         int size;
         LutLayout layout;
     };
     const Case cases[] = {
-        {ExtractTarget::Smash, nullptr, PatchLattice::Smash, 12, LutLayout::Pilot},
-        {ExtractTarget::Raw, nullptr, PatchLattice::Uniform, 16, LutLayout::Hald},
-        {ExtractTarget::Smash, &warm, PatchLattice::SmashStage, 16, LutLayout::Hald},
+        {LutPurpose::Smash, nullptr, PatchLattice::Smash, 12, LutLayout::Pilot},
+        {LutPurpose::Raw, nullptr, PatchLattice::Uniform, 16, LutLayout::Hald},
+        {LutPurpose::Smash, &warm, PatchLattice::SmashStage, 16, LutLayout::Hald},
     };
     for (const auto& c : cases) {
         Image shot = syntheticScreenshot(kShotWidth, kShotHeight, 8);
@@ -119,7 +119,7 @@ TEST(SelfDescribing, TheHeaderRecordsWhatEmbedWasAskedFor) {
         EXPECT_EQ(r.targetSource, TargetSource::Patch);
         if (!c.original) {
             ExtractOptions o;
-            o.target = c.target == ExtractTarget::Raw ? ExtractTarget::Smash : ExtractTarget::Raw;
+            o.target = c.target == LutPurpose::Raw ? LutPurpose::Smash : LutPurpose::Raw;
             const ExtractResult other = extractLut(shot.view(), o);
             EXPECT_EQ(other.target, *o.target);
             EXPECT_EQ(other.targetSource, TargetSource::Option);
@@ -147,10 +147,10 @@ TEST(SelfDescribing, TheDigestTellsStageLutsApart) {
     EXPECT_FALSE(extractLut(shot.view(), o).has(RoundtripWarning::StageMismatch));
     // a stage patch cannot give a raw LUT, and an original LUT is refused for a raw patch
     ExtractOptions raw;
-    raw.target = ExtractTarget::Raw;
+    raw.target = LutPurpose::Raw;
     EXPECT_THROW(extractLut(shot.view(), raw), Error);
     EmbedOptions bad;
-    bad.target = ExtractTarget::Raw;
+    bad.target = LutPurpose::Raw;
     bad.originalLut = &warm;
     Image again = syntheticScreenshot(kShotWidth, kShotHeight, 8);
     EXPECT_THROW(embedPatch(again.view(), bad), Error);

@@ -147,7 +147,7 @@ TEST(SmashTarget, NoEditGivesTheNeutralLut) {
     Image shot = screenshot(scene, nullptr);
     embedPatch(shot.view(), EmbedOptions{});
     ExtractOptions o;
-    o.target = ExtractTarget::Smash;
+    o.target = LutPurpose::Smash;
     const ExtractResult r = extractLut(shot.view(), o);
     ASSERT_EQ(r.lut.size(), 16);
     // Below the brighten step's clip point (s < 1/1.3703) the neutral LUT is the answer; above it
@@ -174,7 +174,7 @@ TEST(SmashTarget, GameShowsTheEditedScreenshot) {
         const PatchPlacement p = embedPatch(shot.view(), EmbedOptions{});
         applyEdit(shot, edit, 8);
         ExtractOptions o;
-        o.target = ExtractTarget::Smash;
+        o.target = LutPurpose::Smash;
         const ExtractResult r = extractLut(shot.view(), o);
         const Lut3D best = oracleLut(edit);
         const Compare c = compareWithGame(scene, shot, r.lut, p, &best);
@@ -210,7 +210,7 @@ TEST(SmashTarget, ThePreviewPipelineShowsTheEditedScreenshotToo) {
     const Edit edit = curvesEdit();
     applyEdit(shot, edit, 8);
     ExtractOptions o;
-    o.target = ExtractTarget::Smash;
+    o.target = LutPurpose::Smash;
     Lut3D shipped = extractLut(shot.view(), o).lut;
     quantize8(shipped);
     const auto sampler = makeSampler(shipped, Interpolation::Trilinear);
@@ -250,7 +250,7 @@ TEST(SmashTarget, OriginalLutIsCompensated) {
     const Edit lift = levelsEdit(0.0, 1.0, 1.15, 0.0, 1.0);
     applyEdit(shot, lift, 8);
     ExtractOptions o;
-    o.target = ExtractTarget::Smash;
+    o.target = LutPurpose::Smash;
     o.originalLut = &warm;
     const ExtractResult r = extractLut(shot.view(), o);
     const Compare c = compareWithGame(scene, shot, r.lut, p);
@@ -270,7 +270,7 @@ TEST(SmashTarget, UnreachableColoursAreClampedAndReported) {
     embedPatch(shot.view(), EmbedOptions{});
     applyEdit(shot, invertingGradientMap(), 8);
     ExtractOptions o;
-    o.target = ExtractTarget::Smash;
+    o.target = LutPurpose::Smash;
     const ExtractResult r = extractLut(shot.view(), o);
     EXPECT_FALSE(r.has(RoundtripWarning::OutOfRange));
     EXPECT_GT(r.clampedEntries, 0u);
@@ -314,7 +314,7 @@ TEST(SmashTarget, DefaultPatchIsTheMostAccurate) {
             embedPatch(shot.view(), eo);
             applyEdit(shot, edit, 8);
             ExtractOptions o;
-            o.target = ExtractTarget::Smash;
+            o.target = LutPurpose::Smash;
             const ExtractResult r = extractLut(shot.view(), o);
             // compared where it matters: what the game displays at each lattice input (a LUT
             // step near black is worth far less than a display step there)

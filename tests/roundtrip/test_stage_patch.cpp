@@ -87,7 +87,7 @@ TEST(StagePatch, ReadsTheEditWhereTheCompensationNeedsIt) {
         embedPatch(shot.view(), eo);
         applyEdit(shot, edit, 8);
         const ExtractResult stage = extractLut(shot.view(), {});
-        ASSERT_EQ(stage.target, ExtractTarget::Smash);
+        ASSERT_EQ(stage.target, LutPurpose::Smash);
         double stageMean = 0.0;
         const double stageMax = worstAtLattice(stage.lut, warm, edit, &stageMean);
         // the neutral patch interpolated at the stage's colours (the way without --original-lut)

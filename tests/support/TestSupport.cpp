@@ -45,14 +45,21 @@ static std::string slurp(const fs::path& p) {
 }
 
 RunResult runCli(const std::string& args) {
+    return runCommand(std::string("'") + LUTKIT_CLI + "' " + args);
+}
+
+bool haveProgram(const std::string& name) {
+    return std::system(("command -v '" + name + "' >/dev/null 2>&1").c_str()) == 0;
+}
+
+RunResult runCommand(const std::string& command) {
     // Not via tempDir(): that empties the calling test's folder, deleting its input files.
     fs::path dir = fs::path(LUTKIT_BINARY_DIR) / "test-tmp" / "cli-capture";
     fs::create_directories(dir);
     static int counter = 0;
     std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
     fs::path out = dir / ("out_" + tag), err = dir / ("err_" + tag);
-    std::string cmd = std::string("'") + LUTKIT_CLI + "' " + args + " >'" + out.string() + "' 2>'" +
-                      err.string() + "' </dev/null";
+    std::string cmd = command + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
     int status = std::system(cmd.c_str());
     RunResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -17,5 +17,9 @@ struct RunResult {
 };
 // Runs the lutkit CLI with the given shell-quoted argument string.
 RunResult runCli(const std::string& args);
+// Runs a shell command line (another program as an oracle: ffmpeg, oiiotool...).
+RunResult runCommand(const std::string& command);
+// Whether a program is on PATH.
+bool haveProgram(const std::string& name);
 
 } // namespace lut::test

@@ -84,7 +84,24 @@ void CubeParser::comment(const TextLine& line, const char* hash, const char* e) 
     const char* c = hash + 1;
     if (c < e && *c == ' ')
         ++c;
-    m_comments.emplace_back(c, static_cast<std::size_t>(trimRight(c, e) - c));
+    const std::string_view text(c, static_cast<std::size_t>(trimRight(c, e) - c));
+    // "# LUTKIT_PURPOSE smash": what the LUT is for (lut/LutPurpose.h), not kept as a comment.
+    std::optional<LutPurpose> purpose;
+    try {
+        purpose = purposeInText(text);
+    } catch (const Error& err) {
+        fail(line, columnOf(line, c), err.what(), std::string(text));
+    }
+    if (!purpose) {
+        m_comments.emplace_back(text);
+        return;
+    }
+    if (m_purpose && *m_purpose != *purpose)
+        fail(line, columnOf(line, c),
+             std::string("a second LUTKIT_PURPOSE says ") + toString(*purpose) + ", the first " +
+                 toString(*m_purpose),
+             std::string(text));
+    m_purpose = purpose;
 }
 
 bool CubeParser::nextContentLine(TextLine& line, const char*& s, const char*& e) {
@@ -183,6 +200,7 @@ void CubeParser::setDomains(LutFile& file) {
         if (m_seen[static_cast<int>(k)].line)
             resolve = true;
     file.dialect = resolve ? "resolve" : "adobe";
+    file.purpose = m_purpose;
 }
 
 void CubeParser::checkHeader() {

@@ -52,6 +52,7 @@
 #include "lut/io/InputFile.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -107,6 +108,7 @@ private:
     int m_size1D = 0, m_size3D = 0;
     float m_range1D[2] = {0.0f, 1.0f}, m_range3D[2] = {0.0f, 1.0f};
     std::vector<std::string> m_comments;
+    std::optional<LutPurpose> m_purpose; // the LUTKIT_PURPOSE comment
     int m_firstDataLine = 0;
 
     const std::string& path() const { return m_reader.path(); }

@@ -212,6 +212,9 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
     std::string out;
     out.reserve(rows * (options.decimals < 0 ? 30 : 3 * (options.decimals + 4)) + 4096);
 
+    // What the LUT is for, first: a comment every other reader skips (lut/LutPurpose.h).
+    if (lut.purpose)
+        out += "# " + purposeTag(*lut.purpose) + "\n";
     static const std::vector<std::string> kNoComments;
     const std::vector<std::string>& comments = cube ? cube->comments() : kNoComments;
     for (const std::string& c : comments) {

@@ -44,6 +44,7 @@
 #include "LutPrep.h"
 #include "image/LayoutScore.h"
 #include "image/LutImage.h"
+#include "imageio/ImageCodec.h"
 #include "imageio/ImageHeaderChecks.h"
 
 #include "lut/Error.h"
@@ -182,6 +183,21 @@ std::optional<Shaped> neutralShaped(const ImageView& img, const std::vector<Layo
     return found;
 }
 
+// What the image's description says the LUT is for (a PNG tEXt "Description", a TIFF
+// ImageDescription, an OpenEXR comments attribute holding "LUTKIT_PURPOSE smash").
+std::optional<LutPurpose> purposeOf(const ImageMetadata* meta, const std::string& path) {
+    std::optional<LutPurpose> found;
+    if (!meta)
+        return found;
+    for (const auto& [key, value] : meta->text)
+        if (const auto p = purposeInText(value, path + ": " + key)) {
+            if (found && *found != *p)
+                throw Error(path + ": two LUTKIT_PURPOSE tags that disagree (raw and smash)");
+            found = p;
+        }
+    return found;
+}
+
 } // namespace
 
 LutFile readLutImage(const std::string& path, const FormatOptions& options,
@@ -230,6 +246,7 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                     " when opened, " + sizeText(img.image.width(), img.image.height()) + " now)");
     LutFile file;
     file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
+    file.purpose = purposeOf(img.metadata.get(), path);
 
     // Without --layout, the layout from the size, or (several fit) from the pixels.
     if (!wanted && fits.size() == 1) {
@@ -354,6 +371,11 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source,
     wo.bitDepth = bits;
     wo.dither = options.dither;
     wo.alpha = true;
+    if (source.purpose) { // what the LUT is for, in the image's description
+        auto meta = std::make_shared<ImageMetadata>();
+        meta->text.emplace_back("ImageDescription", purposeTag(*source.purpose));
+        wo.metadata = std::move(meta);
+    }
     writeImage(path, image, wo);
     return diags;
 }

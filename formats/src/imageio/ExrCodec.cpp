@@ -169,6 +169,10 @@ public:
         auto meta = std::make_shared<ImageMetadata>();
         meta->format = "openexr";
         meta->exrHeader = std::make_shared<Imf::Header>(h);
+        // The header's description, for readers that look for text (a LUT image's
+        // LUTKIT_PURPOSE tag); written back from exrHeader, not from here.
+        if (Imf::hasComments(h))
+            meta->text.emplace_back("ImageDescription", Imf::commentsAttribute(h).value());
         m_metadata = meta;
         m_granularity = std::max(1, static_cast<int>(linesPerBlock(h.compression())));
         if (const int t = threadsFor(h.compression()); t > 0) {

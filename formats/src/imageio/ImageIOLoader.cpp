@@ -8,6 +8,7 @@
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/TempFiles.h"
 
 #include <dlfcn.h>
@@ -22,16 +23,6 @@
 namespace lut::formats {
 
 namespace {
-
-std::string executableDir() {
-    std::vector<char> buf(4096);
-    const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-    if (n <= 0)
-        return {};
-    std::string p(buf.data(), static_cast<std::size_t>(n));
-    const auto slash = p.find_last_of('/');
-    return slash == std::string::npos ? std::string() : p.substr(0, slash);
-}
 
 const module::ImageIOApi& api() {
     static const module::ImageIOApi* loaded = nullptr;

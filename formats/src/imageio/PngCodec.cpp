@@ -354,8 +354,13 @@ private:
             m_meta->exif = d;
         } else if (isType(c.type, "tEXt")) {
             const std::size_t nul = d.find('\0');
-            if (nul != std::string::npos)
-                m_meta->text.emplace_back(d.substr(0, nul), d.substr(nul + 1));
+            if (nul != std::string::npos) {
+                // PNG's "Description" is what TIFF and OpenImageIO call ImageDescription.
+                std::string key = d.substr(0, nul);
+                if (key == "Description")
+                    key = "ImageDescription";
+                m_meta->text.emplace_back(std::move(key), d.substr(nul + 1));
+            }
         }
     }
 

@@ -266,7 +266,10 @@ private:
             chunk("eXIf", meta->exif.data(), meta->exif.size());
         for (const auto& [key, value] : meta->text)
             if (!key.empty() && key.size() < 80) {
-                const std::string data = key + '\0' + value;
+                // ImageDescription (TIFF, OpenImageIO, a LUT image's LUTKIT_PURPOSE tag) is
+                // PNG's registered keyword "Description".
+                const std::string data =
+                    (key == "ImageDescription" ? std::string("Description") : key) + '\0' + value;
                 chunk("tEXt", data.data(), data.size());
             }
     }

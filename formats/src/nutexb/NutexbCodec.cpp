@@ -228,6 +228,7 @@ LutFile readBytes(std::string_view b, const std::string& path) {
     const std::size_t untiledBytes = static_cast<std::size_t>(n) * n * n * kBytesPerTexel;
     LutFile file;
     file.format = "nutexb";
+    file.purpose = LutPurpose::Smash; // the game applies it: the game's LUT by its format
     file.dialect = h.tiling == kTilingBlockLinear ? "tiled" : "linear";
     file.sourceBitDepth = 8;
 

@@ -4,7 +4,7 @@
 #include "ocio/ColorConfigImpl.h"
 #include "ocio/OcioConfigChecks.h"
 
-#include <unistd.h>
+#include "lut/io/FileNames.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -16,16 +16,6 @@ namespace lut::formats {
 namespace {
 
 constexpr const char* kShippedRelative = "share/lutkit/ocio/config.ocio";
-
-std::string executableDir() {
-    std::vector<char> buf(4096);
-    const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-    if (n <= 0)
-        return {};
-    std::string p(buf.data(), static_cast<std::size_t>(n));
-    const auto slash = p.find_last_of('/');
-    return slash == std::string::npos ? std::string() : p.substr(0, slash);
-}
 
 bool isFile(const std::string& p) {
     std::error_code ec;

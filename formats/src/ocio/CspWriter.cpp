@@ -56,6 +56,8 @@ Diagnostics writeCspWithShaper(const std::string& path, const LutFile& file, int
     text += "BEGIN METADATA\n";
     if (!title.empty())
         text += title + "\n";
+    if (file.purpose)
+        text += purposeTag(*file.purpose) + "\n";
     text += "END METADATA\n\n";
     for (int c = 0; c < 3; ++c) {
         if (file.shaper && cube) {

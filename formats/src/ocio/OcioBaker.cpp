@@ -15,6 +15,7 @@
 // format also answers to OCIO's own name for it (ociobakelut --format cinespace, truelight ...).
 #include "Formats.h"
 #include "ocio/CspWriter.h"
+#include "ocio/OcioLut3D.h"
 #include "ocio/OcioSession.h"
 
 #include "lut/Error.h"
@@ -99,15 +100,7 @@ public:
         std::ostringstream os;
         try {
             const int n = lut.size();
-            auto l3 = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
-            for (int b = 0; b < n; ++b)
-                for (int g = 0; g < n; ++g)
-                    for (int r = 0; r < n; ++r) {
-                        const glm::vec3 v = lut.at(r, g, b);
-                        l3->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
-                                     static_cast<unsigned long>(b), v.x, v.y, v.z);
-                    }
-            l3->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
+            auto l3 = makeLut3DTransform(lut, OCIO::INTERP_TETRAHEDRAL);
             auto group = OCIO::GroupTransform::Create();
             if (!lut.hasDefaultDomain()) {
                 // Map [0,1] inputs to the table's own lattice coordinates.
@@ -143,6 +136,8 @@ public:
                 md.addAttribute(OCIO::METADATA_NAME, lut.title().c_str());
                 md.addChildElement(OCIO::METADATA_DESCRIPTION, lut.title().c_str());
             }
+            if (file.purpose)
+                md.addChildElement(OCIO::METADATA_DESCRIPTION, purposeTag(*file.purpose).c_str());
             for (const auto& c : lut.comments())
                 if (!c.empty())
                     md.addChildElement(OCIO::METADATA_DESCRIPTION, c.c_str());
@@ -211,6 +206,8 @@ Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFi
             md.addAttribute(OCIO::METADATA_NAME, title.c_str());
             md.addChildElement(OCIO::METADATA_DESCRIPTION, title.c_str());
         }
+        if (file.purpose)
+            md.addChildElement(OCIO::METADATA_DESCRIPTION, purposeTag(*file.purpose).c_str());
         if (cube)
             for (const auto& c : cube->comments())
                 if (!c.empty())
@@ -228,17 +225,7 @@ Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFi
         if (cube) {
             if (!cube->hasDefaultDomain())
                 group->appendTransform(rangeMatrix(cube->domainMin(), cube->domainMax()));
-            const int n = cube->size();
-            auto l3 = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
-            for (int b = 0; b < n; ++b)
-                for (int g = 0; g < n; ++g)
-                    for (int r = 0; r < n; ++r) {
-                        const glm::vec3 v = cube->at(r, g, b);
-                        l3->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
-                                     static_cast<unsigned long>(b), v.x, v.y, v.z);
-                    }
-            l3->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-            group->appendTransform(l3);
+            group->appendTransform(makeLut3DTransform(*cube, OCIO::INTERP_TETRAHEDRAL));
         }
         group->write(OCIO::Config::CreateRaw(), m_ocioName.c_str(), os);
     } catch (const Error&) {

@@ -30,10 +30,25 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 namespace lut::formats {
 
 namespace {
+
+// A Cinespace file's METADATA block (OpenColorIO reads no metadata from it): the tag lutkit
+// writes there (CspWriter.cpp), if any. Only the file's head is read: the block comes first.
+std::optional<LutPurpose> cspMetadataPurpose(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(16384, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    const std::size_t begin = head.find("BEGIN METADATA");
+    const std::size_t end = head.find("END METADATA");
+    if (begin == std::string::npos || end == std::string::npos || end < begin)
+        return std::nullopt;
+    return purposeInText(std::string_view(head).substr(begin, end - begin), path);
+}
 
 std::string lowered(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
@@ -121,6 +136,13 @@ public:
             const OcioStructure structure = analyseProcessor(config, processor);
             doing = "sampling the processor";
             sampleProcessor(path, processor, structure, facts, options.size, out);
+            // What the LUT is for: a LUTKIT_PURPOSE description (.clf, .ctf: lut/LutPurpose.h).
+            std::vector<std::string> described = facts.comments;
+            out.purpose = takePurposeTag(described, path);
+            if (!out.purpose && extensionOf(path) == ".csp")
+                out.purpose = cspMetadataPurpose(path);
+            if (out.cube)
+                (void)takePurposeTag(out.cube->comments(), path);
         } catch (const Error&) {
             throw;
         } catch (const std::exception& e) {

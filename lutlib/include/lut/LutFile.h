@@ -2,6 +2,7 @@
 #include "lut/Error.h"
 #include "lut/Lut1D.h"
 #include "lut/Lut3D.h"
+#include "lut/LutPurpose.h"
 
 #include <optional>
 #include <string>
@@ -19,6 +20,10 @@ struct LutFile {
     Diagnostics diagnostics;
     // Bit depth of the stored values when the source was integer (8, 16), 0 = float.
     int sourceBitDepth = 0;
+    // What the file says it is for (lut/LutPurpose.h): its LUTKIT_PURPOSE tag, or its format (a
+    // .nutexb is the game's LUT); nullopt when it says nothing. Writers that have a place for it
+    // write it (a .cube comment, an image's description).
+    std::optional<LutPurpose> purpose;
 
     // The inputs the file takes: the shaper's domain when it has one, else the table's. Inputs
     // outside it take the edge value.
@@ -32,5 +37,10 @@ struct LutFile {
     // the error. Throws lut::Error if the file is empty.
     Lut3D toLut3D(int size = 0) const;
 };
+
+// What a command takes the file to be for (lut/LutPurpose.h): `given` (a flag, an answer), else
+// what the file says (its tag; a .nutexb by its format), else `assumed`.
+PurposeDecision decidePurpose(const LutFile& file, std::optional<LutPurpose> given = std::nullopt,
+                              LutPurpose assumed = LutPurpose::Raw);
 
 } // namespace lut

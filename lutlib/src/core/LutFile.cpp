@@ -47,4 +47,9 @@ Lut3D LutFile::toLut3D(int size) const {
     return out;
 }
 
+PurposeDecision decidePurpose(const LutFile& file, std::optional<LutPurpose> given,
+                              LutPurpose assumed) {
+    return decidePurpose(file.purpose, file.format == "nutexb", given, assumed);
+}
+
 } // namespace lut

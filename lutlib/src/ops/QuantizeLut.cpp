@@ -20,4 +20,11 @@ ErrorStats quantize8(Lut3D& lut) {
     return s;
 }
 
+Lut3D quantized8(Lut3D lut) {
+    for (auto& v : lut.entries())
+        for (int c = 0; c < 3; ++c)
+            v[c] = fromUnorm8(toUnorm8(v[c]));
+    return lut;
+}
+
 } // namespace lut

@@ -6,6 +6,7 @@
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/pipeline/SmashGrading.h"
 #include "pipeline/GameDisplay.h"
@@ -111,14 +112,6 @@ std::string decide(const GameError& exact, const GameError& refined, const std::
            " 8-bit steps)";
 }
 
-Lut3D rounded8(const Lut3D& lut) {
-    Lut3D out = lut;
-    for (auto& e : out.entries())
-        for (int c = 0; c < 3; ++c)
-            e[c] = fromUnorm8(toUnorm8(e[c]));
-    return out;
-}
-
 } // namespace
 
 glm::dvec3 smashShownColour(const glm::dvec3& s, const Lut3D* gameLut, bool clip) {
@@ -153,7 +146,7 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
             }
     if (!o.measure && !o.refine)
         return res;
-    const Lut3D exact8 = rounded8(res.lut);
+    const Lut3D exact8 = quantized8(res.lut);
     const int k = std::max(1, o.gridSubdivision);
     Lut3D refined;
     if (o.screenshot && !o.screenshot->empty()) {

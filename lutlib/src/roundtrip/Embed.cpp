@@ -47,7 +47,7 @@ LutLayout defaultPatchLayout(int size) {
 PatchLattice effectiveLattice(const EmbedOptions& o) {
     const PatchLattice chosen =
         o.lattice ? *o.lattice
-                  : (o.target == ExtractTarget::Raw ? PatchLattice::Uniform : PatchLattice::Smash);
+                  : (o.target == LutPurpose::Raw ? PatchLattice::Uniform : PatchLattice::Smash);
     if (chosen == PatchLattice::Smash && o.originalLut)
         return PatchLattice::SmashStage;
     if (chosen == PatchLattice::SmashStage && !o.originalLut)
@@ -80,7 +80,7 @@ PatchPlacement embedPatch(const ImageView& image, const EmbedOptions& o) {
         throw Error("embed: bit depth must be 8, 16 or 32, not " + std::to_string(o.bitDepth));
     if (o.margin < 0)
         throw Error("embed: negative margin");
-    if (o.originalLut && o.target == ExtractTarget::Raw)
+    if (o.originalLut && o.target == LutPurpose::Raw)
         throw Error("embed: an original LUT is for the smash target (a raw LUT does not depend on "
                     "the stage's LUT)");
     if (o.originalLut && o.originalLut->empty())

@@ -5,6 +5,7 @@
 #include "lut/roundtrip/Extract.h"
 
 #include "lut/interp/Sampler.h"
+#include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/SmashAuthoring.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/Embed.h"
@@ -53,14 +54,6 @@ Lut3D rawLut(const PatchFunction& edit, int m) {
     return out;
 }
 
-Lut3D rounded8(const Lut3D& lut) {
-    Lut3D out = lut;
-    for (auto& e : out.entries())
-        for (int c = 0; c < 3; ++c)
-            e[c] = static_cast<float>(std::lround(detail::clampUnit(e[c]) * 255.0) / 255.0);
-    return out;
-}
-
 std::string patchText(const PatchPlacement& pl) {
     std::string s = std::to_string(pl.size) + "^3 " + toString(pl.lattice) + " lattice";
     if (pl.lattice == PatchLattice::SmashStage)
@@ -82,7 +75,7 @@ void resolveTarget(const PatchPlacement& pl, const ExtractOptions& o, ExtractRes
         res.target = *pl.target;
         res.targetSource = TargetSource::Patch;
     } else {
-        res.target = isGameDisplayLattice(pl.lattice) ? ExtractTarget::Smash : ExtractTarget::Raw;
+        res.target = isGameDisplayLattice(pl.lattice) ? LutPurpose::Smash : LutPurpose::Raw;
         res.targetSource = TargetSource::Lattice;
     }
 }
@@ -225,7 +218,7 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
     if (!isFullStrength(options.strength))
         blendEdit(patch, stage, options.strength, res);
     const PatchFunction edit(patch.values, patch.axis);
-    if (res.target == ExtractTarget::Raw) {
+    if (res.target == LutPurpose::Raw) {
         if (stage)
             throw Error("this patch was embedded for the game with a stage LUT: its colours are "
                         "that LUT's picture, not a lattice a raw LUT can be read from; extract it "
@@ -313,8 +306,8 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
                                      "were clamped: the game cannot show those colours",
                                      double(res.clampedEntries), res.clampedMax,
                                      res.clampedMax * 255.0));
-        res.expected = detail::smashExpectedError(patch, sub, noise, rounded8(res.lut), wantedFast,
-                                                  stage ? nullptr : options.originalLut,
+        res.expected = detail::smashExpectedError(patch, sub, noise, quantized8(res.lut),
+                                                  wantedFast, stage ? nullptr : options.originalLut,
                                                   res.modelError, options.nthreads);
     }
     res.lut.setTitle(std::string("extracted from a ") + std::to_string(n) + "^3 patch (" +

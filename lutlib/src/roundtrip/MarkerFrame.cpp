@@ -93,7 +93,7 @@ HeaderBits headerBits(const MarkerHeader& h) {
     v = (v << 9) | static_cast<std::uint64_t>(h.size & 511);
     v = (v << 5) | static_cast<std::uint64_t>(h.scale & 31);
     if (version == 2) {
-        const std::uint64_t target = !h.target ? 0u : *h.target == ExtractTarget::Raw ? 1u : 2u;
+        const std::uint64_t target = !h.target ? 0u : *h.target == LutPurpose::Raw ? 1u : 2u;
         v = (v << 2) | target;
         v = (v << 1) | (h.stageDigest ? 1u : 0u);
         v = (v << 16) | (h.stageDigest ? *h.stageDigest : 0u);
@@ -155,7 +155,7 @@ bool decodeHeader(const HeaderBits& bits, MarkerHeader& h) {
         if (target == 3)
             return false;
         if (target != 0)
-            h.target = target == 1 ? ExtractTarget::Raw : ExtractTarget::Smash;
+            h.target = target == 1 ? LutPurpose::Raw : LutPurpose::Smash;
         if ((all >> 16) & 1u)
             h.stageDigest = static_cast<std::uint16_t>(all & 0xFFFFu);
     }

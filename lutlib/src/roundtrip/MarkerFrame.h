@@ -10,9 +10,9 @@
 // The geometry fields (sync up to N: 22 or 23 bits) fix the frame's size; they sit on the inner
 // ring's top row, which is why a patch must be at least kMinHeaderRow - 2 entries wide. The CRC
 // covers every bit before it.
+#include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
 #include "lut/roundtrip/PatchLattice.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <array>
 #include <cstdint>
@@ -37,7 +37,7 @@ struct MarkerHeader {
     LutLayout layout = LutLayout::Hald;
     int size = 0;
     int scale = 0;
-    std::optional<ExtractTarget> target;      // version 2
+    std::optional<LutPurpose> target;         // version 2
     std::optional<std::uint16_t> stageDigest; // version 2
 };
 

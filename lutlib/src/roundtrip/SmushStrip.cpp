@@ -45,7 +45,7 @@ PatchReading readSmushStrip(const ImageView& img) {
     p.frameWidth = n * n;
     p.frameHeight = n;
     p.headerVersion = 0;
-    p.target = ExtractTarget::Smash;
+    p.target = LutPurpose::Smash;
     out.values = lutFromImage(img, LutLayout::Pilot, n);
     out.axis = smushStripAxis();
     out.blockSpread = Lut3D(n);

@@ -1,6 +1,9 @@
 #pragma once
-// Converting a LUT file into another format, saying what the conversion cost: what `lutkit
-// convert` does, and what the editor's export can call. Two losses are measured apart:
+// Converting a LUT file into another format and, when asked or when the output means it, to
+// another purpose (lut/LutPurpose.h: a .nutexb is the game's LUT), saying what it cost: what
+// `lutkit convert` does, for every target. The purpose step is lut::convertPurpose
+// (lut/pipeline/PurposeConversion.h); the output says what it is for where its format has a
+// place for it. The losses are measured apart:
 //  - resampling, when the output stores another lattice size (the format's fixed size or the one
 //    asked for): lut::resampleWithError on a probe grid;
 //  - storage (integer quantisation, clipping, a dropped domain or shaper): the written file is
@@ -9,9 +12,11 @@
 // atomically and verified (lut/io/AtomicFile.h).
 #include "lut/ErrorStats.h"
 #include "lut/LutFile.h"
+#include "lut/LutPurpose.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/FormatOptions.h"
 #include "lut/ops/Strength.h"
+#include "lut/pipeline/PurposeConversion.h"
 
 #include <optional>
 #include <string>
@@ -26,10 +31,30 @@ struct ConvertOptions {
     // fixed size if it has one, else the input's.
     FormatOptions write;
     Interpolation interp = Interpolation::Tetrahedral; // for resampling
+    // What the input is for: nullopt = what the file says (its tag, a .nutexb), else raw.
+    std::optional<LutPurpose> inPurpose;
+    // What the output is for: nullopt = smash for a .nutexb output (the game applies it), else
+    // the input's.
+    std::optional<LutPurpose> outPurpose;
+    // raw <-> smash: the stage LUT, the screenshot, the refinement, the rule above white.
+    PurposeOptions purpose;
     // The LUT blended with neutral before it is resampled and written (lut/ops/Strength.h); a
     // shaper is baked into the 3D table first (the neutral of the whole file).
     StrengthOptions strength;
 };
+
+// What the input and the output are for, and the conversion between them.
+struct PurposeStep {
+    PurposeDecision input;
+    LutPurpose output = LutPurpose::Raw;
+    bool outputGiven = false;                    // asked for (--target); else the rule above
+    std::optional<PurposeConversion> conversion; // when the purposes differ
+};
+
+// The output's purpose for an input purpose: `given`, else smash for a writer of the game's
+// format (nutexb), else the input's.
+LutPurpose outputPurpose(LutPurpose input, std::optional<LutPurpose> given,
+                         const std::string& writerName);
 
 struct ResampleStep {
     int from = 0; // input lattice size
@@ -41,6 +66,7 @@ struct ResampleStep {
 struct ConvertReport {
     LutFile input; // as read (with its diagnostics)
     double readSeconds = 0.0;
+    PurposeStep purpose;
     std::string outputFormat;                // the writer's name
     std::optional<StrengthAmounts> strength; // nullopt: full strength, the LUT as read
     std::optional<ResampleStep> resample;    // nullopt: written at the input's size
@@ -52,9 +78,11 @@ struct ConvertReport {
     double totalSeconds = 0.0;
 };
 
-// Reads `input`, blends it with neutral when options.strength asks, resamples when the output
-// stores another size, writes `output`, reads it back and measures. Throws lut::Error for an
-// unknown format name, an output extension no format writes, an unreadable input, a size outside
+// Reads `input`, blends it with neutral when options.strength asks (the edit: before it is made
+// into the game's LUT, after a game LUT is made into its edit), turns it into the output's purpose
+// (a game LUT is 16^3: a size other than 16 for it is an error), resamples when the output stores
+// another size, writes `output`, reads it back and measures. Throws lut::Error for an unknown
+// format name, an output extension no format writes, an unreadable input, a size outside
 // lut/Limits.h, or a failed write (the old output, if any, is left as it was).
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options = {});

@@ -8,5 +8,8 @@ namespace lut {
 // Rounds every entry to the nearest 8-bit step (clamped to [0,1], lut/Quantize.h) in place and
 // reports the error and its cost (ErrorStats::seconds).
 ErrorStats quantize8(Lut3D& lut);
+// The table an 8-bit file holds (a .nutexb, an 8-bit strip): every entry rounded to nearest,
+// clamped to [0,1] (lut/Quantize.h), as a copy.
+Lut3D quantized8(Lut3D lut);
 
 } // namespace lut

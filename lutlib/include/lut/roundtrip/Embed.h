@@ -5,11 +5,11 @@
 // lut/roundtrip/Extract.h). Works on lut::Image (no file I/O).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
 #include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/PatchLattice.h"
 #include "lut/roundtrip/PatchPlacement.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <optional>
 #include <string_view>
@@ -32,7 +32,7 @@ struct EmbedOptions {
     // What the modder is making; recorded in the header so extract does the same by default, and
     // it picks the default lattice: the game-display lattice for smash (12^3; 16^3 with an
     // original LUT), the uniform 16^3 lattice for raw (exact at a raw 16^3 LUT's points).
-    ExtractTarget target = ExtractTarget::Smash;
+    LutPurpose target = LutPurpose::Smash;
     std::optional<PatchLattice> lattice; // default: from the target (above)
     int size = kSmashLutSize;            // uniform lattice only
     // Smash: the stage's LUT the screenshot was taken with. The game-display patch then holds the

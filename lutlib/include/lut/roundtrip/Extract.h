@@ -5,12 +5,12 @@
 #include "lut/ErrorStats.h"
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/LutPurpose.h"
 #include "lut/ops/Strength.h"
 #include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
 #include "lut/roundtrip/PatchReader.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 #include "lut/roundtrip/RoundtripWarning.h"
 
 #include <cstddef>
@@ -24,7 +24,7 @@ namespace lut {
 struct ExtractOptions {
     // Default: what the patch's header records (embed's --target), else smash for a game-display
     // patch and raw for a uniform one (patches made before the target was recorded).
-    std::optional<ExtractTarget> target;
+    std::optional<LutPurpose> target;
     std::string targetReason; // why the caller chose the target, for the note ("" = "given")
     // Smash: the stage's LUT the screenshot was taken with. A patch embedded with --original-lut
     // already holds its picture (only checked against the recorded digest); other patches are
@@ -61,7 +61,7 @@ struct ExpectedError {
 struct ExtractResult {
     Lut3D lut;
     PatchPlacement placement;
-    ExtractTarget target = ExtractTarget::Raw;
+    LutPurpose target = LutPurpose::Raw;
     TargetSource targetSource = TargetSource::Lattice;
     Diagnostics diagnostics;
     std::vector<RoundtripWarning> warnings;

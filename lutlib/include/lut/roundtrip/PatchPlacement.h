@@ -12,9 +12,9 @@
 // "the colour of the odd outer cells", whatever the edit made of white and black. Any per-pixel
 // global edit (curves, levels, inversion, gradient maps, channel mixing) keeps equal pixels equal
 // and so keeps the pattern; only an edit that maps white and black to the same colour destroys it.
+#include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
 #include "lut/roundtrip/PatchLattice.h"
-#include "lut/roundtrip/RoundtripTarget.h"
 
 #include <cstdint>
 #include <optional>
@@ -38,7 +38,7 @@ struct PatchPlacement {
     int frameHeight = 0;
     int headerVersion = 2; // 1: made before the target and the digest were recorded
     // What the modder said they were making when embedding (none in version 1 headers).
-    std::optional<ExtractTarget> target;
+    std::optional<LutPurpose> target;
     // The digest (lutDigest, lut/roundtrip/LutDigest.h) of the stage LUT the patch was made for
     // (embed --original-lut); none for a neutral stage.
     std::optional<std::uint16_t> stageDigest;

@@ -4,8 +4,9 @@
 // image (single-threaded, as ocioconvert does). The peer `lutkit bench` and bench/lutkit_bench
 // compare the samplers with; OpenColorIO stays private to this library.
 //
-// Tests do not use it: a test oracle must not share code with what it checks, so
-// tests/lutlib/test_sampler_ocio.cpp builds its own Lut3DTransform.
+// The table goes to OpenColorIO through the product's own builder (formats/src/ocio/OcioLut3D.h,
+// what the OCIO writers use). Tests do not use it: a test oracle must not share code with what it
+// checks, so tests/lutlib/test_sampler_ocio.cpp builds its own Lut3DTransform.
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"

@@ -1,0 +1,40 @@
+#pragma once
+// Compose and mix for LUTs that say what they are for (lut/LutPurpose.h): the rule lutkit compose
+// and lutkit mix follow, written once.
+//   mix      both LUTs are made for the result's purpose first (lut::convertPurpose), then mixed
+//            entry by entry (lut::mix): a blend of two game LUTs, or of two edits.
+//   compose  "B after A" on the picture: B's edit of the picture A gives. For a game LUT result
+//            with A the game's LUT, the game's LUT that shows B's edit of the picture A makes
+//            (A is the stage: SmashAuthoring's composition on A's picture, exact at the game's
+//            lattice); otherwise both as edits (a game LUT as the edit it makes), B's after A's
+//            (lut::compose), then made for the result's purpose.
+#include "lut/LutPurpose.h"
+#include "lut/ops/Compose.h"
+#include "lut/ops/OpResult.h"
+#include "lut/pipeline/PurposeConversion.h"
+
+#include <string>
+#include <vector>
+
+namespace lut {
+
+struct PurposedLut3D {
+    const Lut3D* lut = nullptr;
+    LutPurpose purpose = LutPurpose::Raw;
+};
+
+struct PurposeOpResult {
+    OpResult result;     // the LUT for `to`; error: the table operation's (compose, mix), if any
+    bool tableOp = true; // false: no table operation (the composition was authored directly)
+    // Each conversion on the way, with what it was for: "A", "B", "result".
+    std::vector<std::pair<std::string, PurposeConversion>> conversions;
+};
+
+PurposeOpResult mixForPurpose(const PurposedLut3D& a, const PurposedLut3D& b, double t,
+                              LutPurpose to, Interpolation method = Interpolation::Tetrahedral,
+                              const PurposeOptions& options = {});
+PurposeOpResult composeForPurpose(const PurposedLut3D& a, const PurposedLut3D& b, LutPurpose to,
+                                  const ComposeOptions& compose = {},
+                                  const PurposeOptions& options = {});
+
+} // namespace lut
