@@ -255,6 +255,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
 
     FormatOptions writeOptions = options.write;
     writeOptions.size = targetSize;
+    if (!options.outFormat.empty()) // iridas_cube: the Adobe dialect, as OpenColorIO's baker
+        FormatRegistry::instance().applyAlias(options.outFormat, writeOptions);
     t0 = Clock::now();
     std::string inPlaceBytes; // what went to standard output or a device, to read back
     report.writeDiagnostics = writeLutFile(*writer, output, toWrite, writeOptions, &inPlaceBytes);

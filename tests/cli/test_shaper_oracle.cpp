@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <regex>
 
@@ -347,4 +348,71 @@ TEST(ShaperOracle, OriginalLutWithAShaperSaysWhatSamplingCost) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr("sampled at the game's 16^3 lattice over [0,1]"));
     EXPECT_THAT(r.err, HasSubstr("inputs between lattice points"));
+}
+
+// A titled Resolve file (lutkit reads the TITLE; OpenColorIO's Resolve reader refuses it):
+// convert keeps the shaper and the title, as a comment, so OpenColorIO reads what lutkit wrote
+// and gives what it gives for the same file without its title. Before the fix the TITLE line was
+// written as it came, and OpenColorIO refused the output ("Unsupported tag: 'TITLE'").
+TEST(ShaperOracle, TitledShaperCubeWrittenSoOcioReadsIt) {
+    const std::string dir = workDir();
+    const std::string plain = writeShapedCube(dir);
+    const std::string titled = dir + "/titled.cube";
+    {
+        std::ifstream in(plain);
+        std::ofstream out(titled);
+        out << "TITLE \"warm log grade\"\n" << in.rdbuf();
+    }
+    const std::string out = dir + "/out.cube";
+    const RunResult r = runCli("convert " + q(titled) + " " + q(out));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream written(out);
+    const std::string text((std::istreambuf_iterator<char>(written)), {});
+    EXPECT_THAT(text, HasSubstr("LUT_1D_SIZE 4096")); // the shaper kept
+    EXPECT_THAT(text, HasSubstr("warm log grade"));   // and the title
+    const auto want = ocioFileProcessor(plain);
+    OCIO::ConstCPUProcessorRcPtr got;
+    ASSERT_NO_THROW(got = ocioFileProcessor(out)) << text.substr(0, 200);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 64.0f);
+    double worst = 0;
+    for (int k = 0; k < 5000; ++k) {
+        const glm::vec3 x(u(rng), u(rng), u(rng));
+        const glm::vec3 a = ocioEval(want, x), b = ocioEval(got, x);
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::fabs(double(a[c]) - b[c]));
+    }
+    EXPECT_LT(worst, 1e-6);
+}
+
+// --format iridas_cube (OpenColorIO's baker name for the Adobe dialect, which has no shaper):
+// the shaper is baked into the table with a warning that says what it cost, and OpenColorIO's
+// Iridas reader reads the result; the printed maximum bounds the truth, OpenColorIO's result for
+// the written file against its result for the source, at inputs the bake did not use. Before the
+// fix the alias was ignored and a Resolve file with LUT_1D_SIZE was written.
+TEST(ShaperOracle, IridasCubeBakesTheShaperWithinThePrintedError) {
+    const std::string dir = workDir();
+    const std::string cube = writeShapedCube(dir);
+    const std::string out = dir + "/adobe.cube";
+    const RunResult r = runCli("convert " + q(cube) + " " + q(out) + " --format iridas_cube");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream written(out);
+    const std::string text((std::istreambuf_iterator<char>(written)), {});
+    EXPECT_THAT(text, ::testing::Not(HasSubstr("LUT_1D"))) << text.substr(0, 200);
+    const std::string all = r.out + r.err;
+    ASSERT_THAT(all, HasSubstr("1D shaper baked into the 3D table"));
+    const double printed = numberAfter(all.substr(all.find("baked into the 3D table")), "max ");
+    ASSERT_TRUE(std::isfinite(printed)) << all;
+    const auto src = ocioFileProcessor(cube);
+    const auto got = ocioFileProcessor(out);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 64.0f);
+    double truth = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const glm::vec3 x(u(rng), u(rng), u(rng));
+        const glm::vec3 a = ocioEval(src, x), b = ocioEval(got, x);
+        for (int c = 0; c < 3; ++c)
+            truth = std::max(truth, std::fabs(double(a[c]) - b[c]));
+    }
+    EXPECT_GE(printed * 1.0001 + 1e-6, truth) << all;
 }

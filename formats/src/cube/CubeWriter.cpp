@@ -1,6 +1,7 @@
 // The .cube writer.
 //
-// Comments first (as "# text"), TITLE when set, the size line(s), DOMAIN_MIN/MAX (Adobe) or
+// Comments first (as "# text"), TITLE when set (as a comment in the Resolve dialect, which has
+// no TITLE), the size line(s), DOMAIN_MIN/MAX (Adobe) or
 // LUT_*_INPUT_RANGE (Resolve) only when the domain is not the default 0..1 (the default is implied
 // by the spec, and some readers mishandle DOMAIN lines), then the rows, LF line ends. Floats are
 // written as the shortest text that reads back as the same float (std::to_chars), so write ->
@@ -233,9 +234,12 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
             start = nl + 1;
         }
     }
+    // The Resolve dialect has no TITLE (OpenColorIO's Resolve reader refuses the file): there
+    // the title is a comment, which every reader skips.
     const std::string& title = cube ? cube->title() : shaper->title();
     if (!title.empty())
-        out += "TITLE \"" + oneLine(title, "the title", diags, true) + "\"\n";
+        out += std::string(resolve ? "# " : "") + "TITLE \"" +
+               oneLine(title, "the title", diags, true) + "\"\n";
 
     char buf[256];
     auto putTriple = [&](const char* keyword, glm::vec3 v) {
