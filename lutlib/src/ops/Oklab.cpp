@@ -2,12 +2,28 @@
 
 #include "lut/ops/ColorDifference.h"
 
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
 #include <cmath>
 #include <numbers>
 
 namespace lut {
 
 namespace {
+
+// Ottosson's matrices: linear sRGB -> LMS (M1), cube root, -> Lab (M2). glm matrices are
+// column-major: each row of the published matrices is written as a column and transposed.
+const glm::dmat3 kM1 = glm::transpose(glm::dmat3(0.4122214708, 0.5363325363, 0.0514459929, //
+                                                 0.2119034982, 0.6806995451, 0.1073969566, //
+                                                 0.0883024619, 0.2817188376, 0.6299787005));
+const glm::dmat3 kM2 = glm::transpose(glm::dmat3(0.2104542553, 0.7936177850, -0.0040720468, //
+                                                 1.9779984951, -2.4285922050, 0.4505937099, //
+                                                 0.0259040371, 0.7827717662, -0.8086757660));
+// The exact inverses, not the published rounded ones: Lab -> RGB undoes RGB -> Lab to double
+// rounding (a strength blend with amounts (1, 0) keeps the other component to float rounding).
+const glm::dmat3 kM1Inv = glm::inverse(kM1);
+const glm::dmat3 kM2Inv = glm::inverse(kM2);
 
 double encode(double v) {
     const double a = std::fabs(v);
@@ -18,23 +34,14 @@ double encode(double v) {
 } // namespace
 
 glm::dvec3 linearSrgbToOklab(glm::dvec3 c) {
-    const double l = 0.4122214708 * c.x + 0.5363325363 * c.y + 0.0514459929 * c.z;
-    const double m = 0.2119034982 * c.x + 0.6806995451 * c.y + 0.1073969566 * c.z;
-    const double s = 0.0883024619 * c.x + 0.2817188376 * c.y + 0.6299787005 * c.z;
-    const double l3 = std::cbrt(l), m3 = std::cbrt(m), s3 = std::cbrt(s);
-    return {0.2104542553 * l3 + 0.7936177850 * m3 - 0.0040720468 * s3,
-            1.9779984951 * l3 - 2.4285922050 * m3 + 0.4505937099 * s3,
-            0.0259040371 * l3 + 0.7827717662 * m3 - 0.8086757660 * s3};
+    const glm::dvec3 lms = kM1 * c;
+    return kM2 * glm::dvec3(std::cbrt(lms.x), std::cbrt(lms.y), std::cbrt(lms.z));
 }
 
 glm::dvec3 oklabToLinearSrgb(glm::dvec3 lab) {
-    const double l3 = lab.x + 0.3963377774 * lab.y + 0.2158037573 * lab.z;
-    const double m3 = lab.x - 0.1055613458 * lab.y - 0.0638541728 * lab.z;
-    const double s3 = lab.x - 0.0894841775 * lab.y - 1.2914855480 * lab.z;
-    const double l = l3 * l3 * l3, m = m3 * m3 * m3, s = s3 * s3 * s3;
-    return {4.0767416621 * l - 3.3077115913 * m + 0.2309699292 * s,
-            -1.2684380046 * l + 2.6097574011 * m - 0.3413193965 * s,
-            -0.0041960863 * l - 0.7034186147 * m + 1.7076147010 * s};
+    glm::dvec3 lms = kM2Inv * lab;
+    lms *= lms * lms;
+    return kM1Inv * lms;
 }
 
 glm::dvec3 srgbToOklab(glm::dvec3 encoded) {

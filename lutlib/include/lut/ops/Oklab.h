@@ -3,7 +3,8 @@
 // https://bottosson.github.io/posts/oklab/), the perceptual space lutkit's check measures hue in.
 // srgbToOklab takes sRGB-encoded display values, as elsewhere in lutkit's colour maths
 // (lut/ops/ColorDifference.h): decoded with the sRGB curve (mirrored for negatives), then linear
-// sRGB -> LMS -> cube root -> Lab with Ottosson's published matrices; linearSrgbToOklab takes
+// sRGB -> LMS -> cube root -> Lab with Ottosson's published matrices (back with their exact
+// inverses, so a round trip is exact to double rounding); linearSrgbToOklab takes
 // linear values. Hue is atan2(b, a) in
 // degrees, in [0, 360); chroma is hypot(a, b).
 #include <glm/vec3.hpp>
