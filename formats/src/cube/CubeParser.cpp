@@ -93,6 +93,15 @@ void CubeParser::comment(const TextLine& line, const char* hash, const char* e) 
         fail(line, columnOf(line, c), err.what(), std::string(text));
     }
     if (!purpose) {
+        // '# TITLE "text"': the title as the Resolve dialect (which has no TITLE keyword) holds
+        // it, written so by lutkit (CubeWriter.cpp); read back as the title.
+        constexpr std::string_view kTitle = "TITLE \"";
+        if (m_title.empty() && !m_titleComment && text.size() > kTitle.size() &&
+            text.substr(0, kTitle.size()) == kTitle && text.back() == '"') {
+            m_title.assign(text.substr(kTitle.size(), text.size() - kTitle.size() - 1));
+            m_titleComment = true;
+            return;
+        }
         m_comments.emplace_back(text);
         return;
     }

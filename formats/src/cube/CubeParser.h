@@ -104,6 +104,7 @@ private:
     // Header state.
     std::array<KeySeen, kKeyCount> m_seen{};
     std::string m_title;
+    bool m_titleComment = false; // the title came from a '# TITLE "..."' comment
     glm::vec3 m_domainMin{0.0f}, m_domainMax{1.0f};
     int m_size1D = 0, m_size3D = 0;
     float m_range1D[2] = {0.0f, 1.0f}, m_range3D[2] = {0.0f, 1.0f};
