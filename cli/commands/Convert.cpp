@@ -230,21 +230,8 @@ int runConvert(const ConvertOptions& o) {
     co.strength = o.strength;
     // An edit made into the game's LUT: on the stage's picture, measured over the screenshot's
     // colours (else a grid), the refinement reported and written when asked.
-    Lut3D stage;
-    if (!o.originalLut.empty()) {
-        stage = readStageLut(o.originalLut, o.verbosity);
-        co.purpose.stageLut = &stage;
-    }
-    Image shot;
-    ImageView shotView;
-    if (!o.screenshot.empty()) {
-        shot = formats::readImage(o.screenshot).image;
-        shotView = shot.view();
-        co.purpose.screenshot = &shotView;
-    }
-    co.purpose.measure = true;
-    co.purpose.refine = o.refine;
-    co.purpose.editInterpolation = o.interp;
+    PurposeInputs held;
+    preparePurposeInputs(o, held, co);
     formats::ConvertReport report;
     try {
         report = formats::convertLut(o.input, o.output, co);
@@ -360,6 +347,22 @@ CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)>
         onParsed(*o);
     });
     return sub;
+}
+
+void preparePurposeInputs(const ConvertOptions& o, PurposeInputs& held,
+                          formats::ConvertOptions& into) {
+    if (!o.originalLut.empty()) {
+        held.stage = readStageLut(o.originalLut, o.verbosity);
+        into.purpose.stageLut = &held.stage;
+    }
+    if (!o.screenshot.empty()) {
+        held.shot = formats::readImage(o.screenshot).image;
+        held.shotView = held.shot.view();
+        into.purpose.screenshot = &held.shotView;
+    }
+    into.purpose.measure = true;
+    into.purpose.refine = o.refine;
+    into.purpose.editInterpolation = o.interp;
 }
 
 } // namespace lut::cli

@@ -4,7 +4,10 @@
 #include "Notes.h"
 #include "Outputs.h"
 
+#include "lut/Image.h"
+#include "lut/Lut3D.h"
 #include "lut/formats/ColorTransform.h"
+#include "lut/formats/Convert.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Layout.h"
 #include "lut/ops/Strength.h"
@@ -57,6 +60,16 @@ int runConvert(const ConvertOptions& options);
 // nutexb: the game's LUT, each with its in-game error) (ConvertBatch.cpp).
 bool isConvertBatch(const ConvertOptions& options);
 int runConvertBatch(const ConvertOptions& options);
+
+// --original-lut and --screenshot, read once and held while the conversions run: `into`'s
+// purpose options point at them, measured, refined as --refine says (Convert.cpp).
+struct PurposeInputs {
+    Lut3D stage;
+    Image shot;
+    ImageView shotView;
+};
+void preparePurposeInputs(const ConvertOptions& options, PurposeInputs& held,
+                          formats::ConvertOptions& into);
 
 // Adds the subcommand to app; onParsed is called with the options once they are parsed.
 CLI::App* setupConvert(CLI::App& app, std::function<void(const ConvertOptions&)> onParsed);

@@ -114,21 +114,8 @@ int runConvertBatch(const ConvertOptions& o) {
     base.strength = o.strength;
     base.inPurpose = purposeOption(o.inTarget);
     base.outPurpose = asked;
-    Lut3D stage;
-    if (!o.originalLut.empty()) {
-        stage = readStageLut(o.originalLut, o.verbosity);
-        base.purpose.stageLut = &stage;
-    }
-    Image shot;
-    ImageView shotView;
-    if (!o.screenshot.empty()) {
-        shot = formats::readImage(o.screenshot).image;
-        shotView = shot.view();
-        base.purpose.screenshot = &shotView;
-    }
-    base.purpose.measure = true;
-    base.purpose.refine = o.refine;
-    base.purpose.editInterpolation = o.interp;
+    PurposeInputs held;
+    preparePurposeInputs(o, held, base);
 
     OutputOptions out = o.overwrite;
     out.output = o.output;
