@@ -20,9 +20,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 // out = 1.3 x - 0.1 per channel: below 0 under x = 1/13, above 1 over x = 11/13.
 double affine(double x) {
@@ -58,14 +56,15 @@ TEST(ApplyClamp, IntegerOutputsCountWhatTheyClamp) {
         const double v = affine(x / 255.0);
         expected += (v < -0.5 / 255 || v > 1 + 0.5 / 255) ? 4 : 0;
     }
-    RunResult r = runCli("apply --lut " + q(dir + "/stretch.cube") + " " + q(dir + "/in.png") +
-                         " -o " + q(dir + "/out.png"));
+    RunResult r = runCli("apply --lut " + shellQuoted(dir + "/stretch.cube") + " " +
+                         shellQuoted(dir + "/in.png") + " -o " + shellQuoted(dir + "/out.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr(std::to_string(expected) + " of 1024 pixels"));
     EXPECT_THAT(r.err, HasSubstr("clamped by the 8-bit output"));
     // A float output keeps them: no warning.
-    r = runCli("apply --lut " + q(dir + "/stretch.cube") + " " + q(dir + "/in.png") + " -o " +
-               q(dir + "/out.exr") + " --bit-depth 32");
+    r = runCli("apply --lut " + shellQuoted(dir + "/stretch.cube") + " " +
+               shellQuoted(dir + "/in.png") + " -o " + shellQuoted(dir + "/out.exr") +
+               " --bit-depth 32");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("clamped"), std::string::npos) << r.err;
     // 16-bit: half a 16-bit step.
@@ -74,8 +73,9 @@ TEST(ApplyClamp, IntegerOutputsCountWhatTheyClamp) {
         const double v = affine(x / 255.0);
         expected16 += (v < -0.5 / 65535 || v > 1 + 0.5 / 65535) ? 4 : 0;
     }
-    r = runCli("apply --lut " + q(dir + "/stretch.cube") + " " + q(dir + "/in.png") + " -o " +
-               q(dir + "/out16.png") + " --bit-depth 16");
+    r = runCli("apply --lut " + shellQuoted(dir + "/stretch.cube") + " " +
+               shellQuoted(dir + "/in.png") + " -o " + shellQuoted(dir + "/out16.png") +
+               " --bit-depth 16");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr(std::to_string(expected16) + " of 1024 pixels"));
     EXPECT_THAT(r.err, HasSubstr("clamped by the 16-bit output"));

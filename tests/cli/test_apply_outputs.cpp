@@ -34,14 +34,9 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using lut::test::fileBytes;
 
 // A darkening 2^3 .cube: every output value is half the input (exact in 8 bits for even codes).
 std::string writeHalvingCube(const std::string& dir) {
@@ -93,17 +88,18 @@ TEST(ApplyOutputs, TwoInputsNeverMeanWriteTheSecond) {
     const std::string lut = writeHalvingCube(dir);
     writePng(dir + "/a.png", 1);
     writePng(dir + "/b.png", 2);
-    const std::string before = slurp(dir + "/b.png");
+    const std::string before = fileBytes(dir + "/b.png");
     for (const char* cmd : {"apply --lut ", "preview --lut "}) {
-        const RunResult r =
-            runCli(std::string(cmd) + q(lut) + " " + q(dir + "/a.png") + " " + q(dir + "/b.png"));
+        const RunResult r = runCli(std::string(cmd) + shellQuoted(lut) + " " +
+                                   shellQuoted(dir + "/a.png") + " " + shellQuoted(dir + "/b.png"));
         EXPECT_EQ(r.exitCode, 2) << cmd;
         EXPECT_THAT(r.err, HasSubstr("name the output with -o")) << r.err;
-        EXPECT_EQ(slurp(dir + "/b.png"), before) << cmd << "wrote over its second input";
+        EXPECT_EQ(fileBytes(dir + "/b.png"), before) << cmd << "wrote over its second input";
     }
     // Several inputs and a file name: refused, and no folder named like the file appears.
-    const RunResult r = runCli("apply --lut " + q(lut) + " " + q(dir + "/a.png") + " " +
-                               q(dir + "/b.png") + " -o " + q(dir + "/graded.exr"));
+    const RunResult r =
+        runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/a.png") + " " +
+               shellQuoted(dir + "/b.png") + " -o " + shellQuoted(dir + "/graded.exr"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("-o DIR/"));
     EXPECT_FALSE(fs::exists(dir + "/graded.exr"));
@@ -114,31 +110,35 @@ TEST(ApplyOutputs, AnExistingOutputIsReplacedOnlyWithY) {
     const std::string lut = writeHalvingCube(dir);
     writePng(dir + "/in.png", 3);
     writePng(dir + "/out.png", 4);
-    const std::string before = slurp(dir + "/out.png");
+    const std::string before = fileBytes(dir + "/out.png");
     for (const char* cmd : {"apply --lut ", "preview --no-bloom --lut "}) {
-        RunResult r = runCli(std::string(cmd) + q(lut) + " " + q(dir + "/in.png") + " -o " +
-                             q(dir + "/out.png"));
+        RunResult r = runCli(std::string(cmd) + shellQuoted(lut) + " " +
+                             shellQuoted(dir + "/in.png") + " -o " + shellQuoted(dir + "/out.png"));
         EXPECT_EQ(r.exitCode, 1) << cmd;
         EXPECT_THAT(r.err, HasSubstr("out.png: already exists; pass -y/--overwrite"));
-        EXPECT_EQ(slurp(dir + "/out.png"), before);
-        r = runCli(std::string(cmd) + q(lut) + " " + q(dir + "/in.png") + " -o " +
-                   q(dir + "/out.png") + " -n");
+        EXPECT_EQ(fileBytes(dir + "/out.png"), before);
+        r = runCli(std::string(cmd) + shellQuoted(lut) + " " + shellQuoted(dir + "/in.png") +
+                   " -o " + shellQuoted(dir + "/out.png") + " -n");
         EXPECT_EQ(r.exitCode, 0) << r.err;
-        EXPECT_EQ(slurp(dir + "/out.png"), before);
+        EXPECT_EQ(fileBytes(dir + "/out.png"), before);
     }
-    const RunResult r = runCli("apply --lut " + q(lut) + " " + q(dir + "/in.png") + " -o " +
-                               q(dir + "/out.png") + " -y");
+    const RunResult r =
+        runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in.png") + " -o " +
+               shellQuoted(dir + "/out.png") + " -y");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     expectHalved(dir + "/in.png", dir + "/out.png");
     // The LUT commands follow the same rule.
-    const std::string cube = slurp(lut);
+    const std::string cube = fileBytes(lut);
     std::ofstream(dir + "/n.cube") << "old";
-    EXPECT_EQ(runCli("neutral " + q(dir + "/n.cube")).exitCode, 1);
-    EXPECT_EQ(slurp(dir + "/n.cube"), "old");
-    EXPECT_EQ(runCli("convert " + q(lut) + " " + q(dir + "/n.cube")).exitCode, 1);
-    EXPECT_EQ(slurp(dir + "/n.cube"), "old");
-    EXPECT_EQ(runCli("convert " + q(lut) + " " + q(dir + "/n.cube") + " -y").exitCode, 0);
-    EXPECT_NE(slurp(dir + "/n.cube"), "old");
+    EXPECT_EQ(runCli("neutral " + shellQuoted(dir + "/n.cube")).exitCode, 1);
+    EXPECT_EQ(fileBytes(dir + "/n.cube"), "old");
+    EXPECT_EQ(runCli("convert " + shellQuoted(lut) + " " + shellQuoted(dir + "/n.cube")).exitCode,
+              1);
+    EXPECT_EQ(fileBytes(dir + "/n.cube"), "old");
+    EXPECT_EQ(
+        runCli("convert " + shellQuoted(lut) + " " + shellQuoted(dir + "/n.cube") + " -y").exitCode,
+        0);
+    EXPECT_NE(fileBytes(dir + "/n.cube"), "old");
 }
 
 TEST(ApplyOutputs, NoClobberSkipsExistingFilesInABatch) {
@@ -149,21 +149,24 @@ TEST(ApplyOutputs, NoClobberSkipsExistingFilesInABatch) {
     for (int i = 0; i < 3; ++i)
         writePng(dir + "/in/f" + std::to_string(i) + ".png", i);
     writePng(dir + "/out/f1.png", 9);
-    const std::string kept = slurp(dir + "/out/f1.png");
-    RunResult r = runCli("apply --lut " + q(lut) + " " + q(dir + "/in") + " -o " + q(dir + "/out"));
+    const std::string kept = fileBytes(dir + "/out/f1.png");
+    RunResult r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in") +
+                         " -o " + shellQuoted(dir + "/out"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("-n/--no-clobber"));
     EXPECT_FALSE(fs::exists(dir + "/out/f0.png")) << "nothing is written before the check";
-    r = runCli("apply --lut " + q(lut) + " " + q(dir + "/in") + " -o " + q(dir + "/out") + " -n");
+    r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in") + " -o " +
+               shellQuoted(dir + "/out") + " -n");
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(slurp(dir + "/out/f1.png"), kept);
+    EXPECT_EQ(fileBytes(dir + "/out/f1.png"), kept);
     expectHalved(dir + "/in/f0.png", dir + "/out/f0.png");
     expectHalved(dir + "/in/f2.png", dir + "/out/f2.png");
     EXPECT_THAT(r.err, HasSubstr("2 of 3 files written"));
     EXPECT_THAT(r.err, HasSubstr("1 skipped"));
     // An input folder without images is an error, not a silent success.
     fs::create_directories(dir + "/empty");
-    r = runCli("apply --lut " + q(lut) + " " + q(dir + "/empty") + " -o " + q(dir + "/o2/"));
+    r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/empty") + " -o " +
+               shellQuoted(dir + "/o2/"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("folder holds no image files"));
 }
@@ -171,34 +174,36 @@ TEST(ApplyOutputs, NoClobberSkipsExistingFilesInABatch) {
 TEST(ApplyOutputs, TheLutAndEveryInputAreProtected) {
     const std::string dir = workDir();
     const std::string lut = writeHalvingCube(dir);
-    const std::string cube = slurp(lut);
+    const std::string cube = fileBytes(lut);
     writePng(dir + "/img.png", 5);
     fs::create_symlink("half.cube", dir + "/link.cube");
     fs::create_hard_link(lut, dir + "/hard.cube");
     for (const char* out : {"/half.cube", "/link.cube", "/hard.cube"})
         for (const char* cmd : {"apply --lut ", "preview --lut "}) {
             SCOPED_TRACE(std::string(cmd) + out);
-            const RunResult r = runCli(std::string(cmd) + q(lut) + " " + q(dir + "/img.png") +
-                                       " -o " + q(dir + out) + " -y --format png");
+            const RunResult r =
+                runCli(std::string(cmd) + shellQuoted(lut) + " " + shellQuoted(dir + "/img.png") +
+                       " -o " + shellQuoted(dir + out) + " -y --format png");
             EXPECT_EQ(r.exitCode, 1);
             EXPECT_THAT(r.err, HasSubstr("output is the same file as input"));
-            EXPECT_EQ(slurp(lut), cube);
+            EXPECT_EQ(fileBytes(lut), cube);
         }
     // --original-lut too, and in batch mode (the LUT's folder as the output folder).
-    RunResult r = runCli("preview --from-screenshot --original-lut " + q(lut) + " " +
-                         q(dir + "/img.png") + " -o " + q(dir + "/half.cube") + " -y");
+    RunResult r =
+        runCli("preview --from-screenshot --original-lut " + shellQuoted(lut) + " " +
+               shellQuoted(dir + "/img.png") + " -o " + shellQuoted(dir + "/half.cube") + " -y");
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_EQ(slurp(lut), cube);
+    EXPECT_EQ(fileBytes(lut), cube);
     fs::create_directories(dir + "/batch");
     writePng(dir + "/batch/x.png", 6);
     fs::copy_file(dir + "/batch/x.png", dir + "/batch/half.png");
-    ASSERT_EQ(runCli("neutral " + q(dir + "/half.png")).exitCode, 0); // a LUT strip
-    const std::string strip = slurp(dir + "/half.png");
-    r = runCli("apply --lut " + q(dir + "/half.png") + " " + q(dir + "/batch") + " -o " +
-               q(dir + "/") + " -y");
+    ASSERT_EQ(runCli("neutral " + shellQuoted(dir + "/half.png")).exitCode, 0); // a LUT strip
+    const std::string strip = fileBytes(dir + "/half.png");
+    r = runCli("apply --lut " + shellQuoted(dir + "/half.png") + " " + shellQuoted(dir + "/batch") +
+               " -o " + shellQuoted(dir + "/") + " -y");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("output is the same file as input"));
-    EXPECT_EQ(slurp(dir + "/half.png"), strip);
+    EXPECT_EQ(fileBytes(dir + "/half.png"), strip);
     EXPECT_TRUE(fs::exists(dir + "/x.png")) << "the other file of the batch is written";
 }
 
@@ -206,33 +211,35 @@ TEST(ApplyOutputs, StandardInputAndOutput) {
     const std::string dir = workDir();
     const std::string lut = writeHalvingCube(dir);
     writePng(dir + "/in.png", 7);
-    ASSERT_EQ(sh(kLutkit + " apply --lut " + q(lut) + " - -o - < " + q(dir + "/in.png") + " > " +
-                 q(dir + "/piped.png")),
+    ASSERT_EQ(sh(kLutkit + " apply --lut " + shellQuoted(lut) + " - -o - < " +
+                 shellQuoted(dir + "/in.png") + " > " + shellQuoted(dir + "/piped.png")),
               0);
     expectHalved(dir + "/in.png", dir + "/piped.png");
     // Another format on the way out, and a LUT from standard input.
-    ASSERT_EQ(sh(kLutkit + " apply --lut - " + q(dir + "/in.png") + " -o - --format ppm < " +
-                 q(lut) + " > " + q(dir + "/piped.ppm")),
+    ASSERT_EQ(sh(kLutkit + " apply --lut - " + shellQuoted(dir + "/in.png") +
+                 " -o - --format ppm < " + shellQuoted(lut) + " > " +
+                 shellQuoted(dir + "/piped.ppm")),
               0);
     expectHalved(dir + "/in.png", dir + "/piped.ppm");
-    EXPECT_EQ(slurp(dir + "/piped.ppm").substr(0, 2), "P6");
+    EXPECT_EQ(fileBytes(dir + "/piped.ppm").substr(0, 2), "P6");
     // /dev/stdout is written in place: a redirect still receives the image.
-    ASSERT_EQ(sh(kLutkit + " apply --lut " + q(lut) + " " + q(dir + "/in.png") +
-                 " -o /dev/stdout --format png > " + q(dir + "/devstdout.png")),
+    ASSERT_EQ(sh(kLutkit + " apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in.png") +
+                 " -o /dev/stdout --format png > " + shellQuoted(dir + "/devstdout.png")),
               0);
     expectHalved(dir + "/in.png", dir + "/devstdout.png");
     // LUTs: convert to and from standard output.
-    ASSERT_EQ(sh(kLutkit + " convert " + q(lut) + " - --format cube > " + q(dir + "/c.cube") +
-                 " 2>/dev/null"),
+    ASSERT_EQ(sh(kLutkit + " convert " + shellQuoted(lut) + " - --format cube > " +
+                 shellQuoted(dir + "/c.cube") + " 2>/dev/null"),
               0);
-    EXPECT_THAT(slurp(dir + "/c.cube"), HasSubstr("LUT_3D_SIZE 2"));
+    EXPECT_THAT(fileBytes(dir + "/c.cube"), HasSubstr("LUT_3D_SIZE 2"));
 }
 
 TEST(ApplyOutputs, SpecialFilesAreWrittenInPlace) {
     const std::string dir = workDir();
     const std::string lut = writeHalvingCube(dir);
     writePng(dir + "/in.png", 8);
-    RunResult r = runCli("apply --lut " + q(lut) + " " + q(dir + "/in.png") + " -o /dev/null");
+    RunResult r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in.png") +
+                         " -o /dev/null");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     struct stat st {};
     ASSERT_EQ(::stat("/dev/null", &st), 0);
@@ -240,15 +247,18 @@ TEST(ApplyOutputs, SpecialFilesAreWrittenInPlace) {
     // A FIFO: read by another process while lutkit writes into it, and still a FIFO after.
     const std::string fifo = dir + "/pipe.png";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    std::thread reader([&] { sh("cat " + q(fifo) + " > " + q(dir + "/from_fifo.png")); });
-    r = runCli("apply --lut " + q(lut) + " " + q(dir + "/in.png") + " -o " + q(fifo));
+    std::thread reader(
+        [&] { sh("cat " + shellQuoted(fifo) + " > " + shellQuoted(dir + "/from_fifo.png")); });
+    r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in.png") + " -o " +
+               shellQuoted(fifo));
     reader.join();
     EXPECT_EQ(r.exitCode, 0) << r.err;
     ASSERT_EQ(::stat(fifo.c_str(), &st), 0);
     EXPECT_TRUE(S_ISFIFO(st.st_mode));
     expectHalved(dir + "/in.png", dir + "/from_fifo.png");
     // A FIFO as an image input is refused at once (no hang), "-" is the way to stream one in.
-    r = runCli("apply --lut " + q(lut) + " " + q(fifo) + " -o " + q(dir + "/x.png"));
+    r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(fifo) + " -o " +
+               shellQuoted(dir + "/x.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("is a FIFO, not a regular file"));
 }
@@ -258,8 +268,9 @@ TEST(ApplyOutputs, FrameSequencesWithGaps) {
     const std::string lut = writeHalvingCube(dir);
     for (int f : {1, 2, 3, 5})
         writePng(dir + "/shot.000" + std::to_string(f) + ".png", f);
-    RunResult r = runCli("apply --lut " + q(lut) + " " + q(dir + "/shot.%04d.png") + " -o " +
-                         q(dir + "/out.####.png"));
+    RunResult r =
+        runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/shot.%04d.png") +
+               " -o " + shellQuoted(dir + "/out.####.png"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr("frames 4 of"));
     for (int f : {1, 2, 3, 5})
@@ -267,8 +278,8 @@ TEST(ApplyOutputs, FrameSequencesWithGaps) {
                      dir + "/out.000" + std::to_string(f) + ".png");
     EXPECT_FALSE(fs::exists(dir + "/out.0004.png"));
     // --frames asks for frame 4: it is a failure, the others are written.
-    r = runCli("apply --lut " + q(lut) + " " + q(dir + "/shot.#.png") + " --frames 2-5 -o " +
-               q(dir + "/o2.%04d.png"));
+    r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/shot.#.png") +
+               " --frames 2-5 -o " + shellQuoted(dir + "/o2.%04d.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("frame 4 is missing"));
     EXPECT_TRUE(fs::exists(dir + "/o2.0005.png"));
@@ -277,12 +288,12 @@ TEST(ApplyOutputs, FrameSequencesWithGaps) {
     fs::create_directories(dir + "/plates");
     writePng(dir + "/plates/a.png", 1);
     writePng(dir + "/plates/b.png", 2);
-    r = runCli("apply --lut " + q(lut) + " " + q(dir + "/plates") + " -o " +
-               q(dir + "/seq_%02d.png"));
+    r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/plates") + " -o " +
+               shellQuoted(dir + "/seq_%02d.png"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     expectHalved(dir + "/plates/b.png", dir + "/seq_02.png");
-    EXPECT_EQ(runCli("apply --lut " + q(lut) + " " + q(dir + "/shot.0001.png") +
-                     " --frames 1-3 -o " + q(dir + "/x.png"))
+    EXPECT_EQ(runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/shot.0001.png") +
+                     " --frames 1-3 -o " + shellQuoted(dir + "/x.png"))
                   .exitCode,
               2);
 }

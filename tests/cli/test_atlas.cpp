@@ -59,9 +59,7 @@ glm::dvec3 sepia(glm::dvec3 c) {
     return {std::min(1.0, 1.07 * y), 0.74 * y + 0.1, 0.43 * y + 0.05};
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 } // namespace
 
@@ -72,12 +70,13 @@ TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
                                      writeCube(dir + "/sepia.cube", 32, sepia)};
     const char* names[] = {"warm", "cool", "sepia"};
     for (const char* n : names)
-        ASSERT_EQ(runCli("convert " + q(dir + "/" + n + ".cube") + " " + q(dir + "/" + n + ".png") +
-                         " --layout reshade")
+        ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/" + n + ".cube") + " " +
+                         shellQuoted(dir + "/" + n + ".png") + " --layout reshade")
                       .exitCode,
                   0);
-    RunResult r = runCli("atlas build " + q(dir + "/warm.cube") + " " + q(dir + "/cool.cube") +
-                         " " + q(dir + "/sepia.cube") + " -o " + q(dir + "/atlas.png"));
+    RunResult r = runCli("atlas build " + shellQuoted(dir + "/warm.cube") + " " +
+                         shellQuoted(dir + "/cool.cube") + " " + shellQuoted(dir + "/sepia.cube") +
+                         " -o " + shellQuoted(dir + "/atlas.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("3 rows of 32^3 in the reshade layout"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("fLUT_LutAmount 3"), std::string::npos) << r.out;
@@ -105,7 +104,8 @@ TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
 
     // Split again: one strip per row, byte for byte the strips convert wrote.
     std::filesystem::create_directories(dir + "/rows");
-    r = runCli("atlas split " + q(dir + "/atlas.png") + " -o " + q(dir + "/rows/"));
+    r = runCli("atlas split " + shellQuoted(dir + "/atlas.png") + " -o " +
+               shellQuoted(dir + "/rows/"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (int k = 0; k < 3; ++k) {
         const std::string row = dir + "/rows/atlas-0" + std::to_string(k) + ".png";
@@ -115,13 +115,16 @@ TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
                   formats::readImage(dir + "/" + names[k] + ".png").image.pixels());
     }
     // The rows exist now: a second split refuses them without -y, replaces them with it.
-    EXPECT_EQ(runCli("atlas split " + q(dir + "/atlas.png") + " -o " + q(dir + "/rows/")).exitCode,
+    EXPECT_EQ(runCli("atlas split " + shellQuoted(dir + "/atlas.png") + " -o " +
+                     shellQuoted(dir + "/rows/"))
+                  .exitCode,
               1);
-    EXPECT_EQ(runCli("atlas split " + q(dir + "/atlas.png") + " -o " + q(dir + "/rows/") + " -y")
+    EXPECT_EQ(runCli("atlas split " + shellQuoted(dir + "/atlas.png") + " -o " +
+                     shellQuoted(dir + "/rows/") + " -y")
                   .exitCode,
               0);
 
-    r = runCli("atlas info " + q(dir + "/atlas.png"));
+    r = runCli("atlas info " + shellQuoted(dir + "/atlas.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("rows     3 (32^3 each)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("layout   reshade (detected"), std::string::npos) << r.out;
@@ -132,14 +135,15 @@ TEST(CliAtlas, NeutralFirstResamplesToTheLayoutsSizeAndSaysTheError) {
     const std::string dir = workDir();
     writeCube(dir + "/warm.cube", 33, warm);
     writeCube(dir + "/cool.cube", 17, cool);
-    RunResult r = runCli("atlas build " + q(dir + "/warm.cube") + " " + q(dir + "/cool.cube") +
-                         " -o " + q(dir + "/a.png") + " --neutral-first");
+    RunResult r = runCli("atlas build " + shellQuoted(dir + "/warm.cube") + " " +
+                         shellQuoted(dir + "/cool.cube") + " -o " + shellQuoted(dir + "/a.png") +
+                         " --neutral-first");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("row 0  (neutral)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("33^3 resampled to 32^3 (tetrahedral): max"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("17^3 resampled to 32^3"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("ui_items=\"Neutral\\0warm\\0cool\\0\""), std::string::npos) << r.out;
-    r = runCli("atlas info " + q(dir + "/a.png"));
+    r = runCli("atlas info " + shellQuoted(dir + "/a.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("rows     3"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("neutral  row 0"), std::string::npos) << r.out;
@@ -161,36 +165,37 @@ TEST(CliAtlas, RepeatedRowsAndOtherSizesAreRefusedNamingTheRow) {
     writeCube(dir + "/b.cube", 16, cool);
     writeCube(dir + "/c.cube", 17, sepia);
     writeCube(dir + "/n.cube", 16, [](glm::dvec3 c) { return c; });
-    const std::string out = q(dir + "/x.png");
-    RunResult r = runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/b.cube") + " " +
-                         q(dir + "/a.cube") + " -o " + out + " --layout unreal");
+    const std::string out = shellQuoted(dir + "/x.png");
+    RunResult r =
+        runCli("atlas build " + shellQuoted(dir + "/a.cube") + " " + shellQuoted(dir + "/b.cube") +
+               " " + shellQuoted(dir + "/a.cube") + " -o " + out + " --layout unreal");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(
         r.err.find("row 2 (" + dir + "/a.cube) stores the same LUT as row 0 (" + dir + "/a.cube)"),
         std::string::npos)
         << r.err;
     // A neutral file after --neutral-first is the neutral row again.
-    r = runCli("atlas build " + q(dir + "/n.cube") + " -o " + out +
+    r = runCli("atlas build " + shellQuoted(dir + "/n.cube") + " -o " + out +
                " --layout unreal --neutral-first");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("row 1 (" + dir + "/n.cube) stores the same LUT as row 0 (neutral)"),
               std::string::npos)
         << r.err;
     // 16^3 and 17^3 rows: refused unless --size asks for resampling.
-    r = runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/c.cube") + " -o " + out +
-               " --layout unreal");
+    r = runCli("atlas build " + shellQuoted(dir + "/a.cube") + " " + shellQuoted(dir + "/c.cube") +
+               " -o " + out + " --layout unreal");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("row 1 (" + dir + "/c.cube) is 17^3, the atlas's rows are 16^3"),
               std::string::npos)
         << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
-    r = runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/c.cube") + " -o " + out +
-               " --layout unreal --size 16");
+    r = runCli("atlas build " + shellQuoted(dir + "/a.cube") + " " + shellQuoted(dir + "/c.cube") +
+               " -o " + out + " --layout unreal --size 16");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("17^3 resampled to 16^3"), std::string::npos) << r.out;
     EXPECT_EQ(formats::readImageInfo(dir + "/x.png").height, 32);
     // The output is never an input.
-    r = runCli("atlas build " + q(dir + "/x.png") + " -o " + out + " -y");
+    r = runCli("atlas build " + shellQuoted(dir + "/x.png") + " -o " + out + " -y");
     EXPECT_EQ(r.exitCode, 1) << r.err;
 }
 
@@ -198,21 +203,22 @@ TEST(CliAtlas, InfoSaysHowManyRowsAndRefusesPartialRows) {
     const std::string dir = workDir();
     // A 1024x100 picture: 3 rows of 32 and 4 pixels.
     formats::writeImage(dir + "/cut.png", Image(1024, 100, 0.5f), {8, false, true});
-    RunResult r = runCli("atlas info " + q(dir + "/cut.png"));
+    RunResult r = runCli("atlas info " + shellQuoted(dir + "/cut.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("3 rows and 4 pixels: row 3 is cut short"), std::string::npos) << r.err;
     formats::writeImage(dir + "/wide.png", Image(1000, 32, 0.5f), {8, false, true});
-    r = runCli("atlas info " + q(dir + "/wide.png"));
+    r = runCli("atlas info " + shellQuoted(dir + "/wide.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("its width must be N^2"), std::string::npos) << r.err;
     // A Unity atlas of two rows is read as unity-32, found from its rows.
     writeCube(dir + "/a.cube", 32, warm);
     writeCube(dir + "/b.cube", 32, sepia);
-    ASSERT_EQ(runCli("atlas build " + q(dir + "/a.cube") + " " + q(dir + "/b.cube") + " -o " +
-                     q(dir + "/u.png") + " --layout unity-32")
+    ASSERT_EQ(runCli("atlas build " + shellQuoted(dir + "/a.cube") + " " +
+                     shellQuoted(dir + "/b.cube") + " -o " + shellQuoted(dir + "/u.png") +
+                     " --layout unity-32")
                   .exitCode,
               0);
-    r = runCli("atlas info " + q(dir + "/u.png"));
+    r = runCli("atlas info " + shellQuoted(dir + "/u.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("rows     2"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("layout   unity-32 (detected"), std::string::npos) << r.out;
@@ -222,12 +228,13 @@ TEST(CliAtlas, BadUsageExitsTwo) {
     const std::string dir = workDir();
     writeCube(dir + "/a.cube", 4, warm);
     for (const std::string& line : std::vector<std::string>{
-             "atlas stack a.cube -o x.png", "atlas build -o " + q(dir + "/x.png"),
-             "atlas build " + q(dir + "/a.cube"), "atlas split a.png b.png -o " + q(dir + "/"),
-             "atlas info a.png --size 16",
-             "atlas build " + q(dir + "/a.cube") + " -o " + q(dir + "/x.png") +
+             "atlas stack a.cube -o x.png", "atlas build -o " + shellQuoted(dir + "/x.png"),
+             "atlas build " + shellQuoted(dir + "/a.cube"),
+             "atlas split a.png b.png -o " + shellQuoted(dir + "/"), "atlas info a.png --size 16",
+             "atlas build " + shellQuoted(dir + "/a.cube") + " -o " + shellQuoted(dir + "/x.png") +
                  " --layout reshade --size 16",
-             "atlas build " + q(dir + "/a.cube") + " -o " + q(dir + "/x.png") + " --layout hald"}) {
+             "atlas build " + shellQuoted(dir + "/a.cube") + " -o " + shellQuoted(dir + "/x.png") +
+                 " --layout hald"}) {
         const RunResult r = runCli(line);
         EXPECT_EQ(r.exitCode, 2) << line << ": " << r.err;
     }

@@ -28,9 +28,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 std::string shippedConfig() {
     return std::string(LUTKIT_BINARY_DIR) + "/share/lutkit/ocio/config.ocio";
@@ -83,12 +81,14 @@ TEST(Bake, SameAsOciobakelutOnChainsAtTheCubeSizeAskedFor) {
         const std::string src = corpusPath(name);
         const std::string theirs = dir + "/ocio.cube", converted = dir + "/conv.cube",
                           baked = dir + "/bake.cube";
-        ASSERT_EQ(
-            sh("ociobakelut --lut " + q(src) + " --format resolve_cube --cubesize 33 " + q(theirs)),
-            0);
-        auto r = runCli("convert -y " + q(src) + " " + q(converted) + " --size 33");
+        ASSERT_EQ(sh("ociobakelut --lut " + shellQuoted(src) +
+                     " --format resolve_cube --cubesize 33 " + shellQuoted(theirs)),
+                  0);
+        auto r =
+            runCli("convert -y " + shellQuoted(src) + " " + shellQuoted(converted) + " --size 33");
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        r = runCli("bake -y --lut " + q(src) + " --format resolve_cube --cubesize 33 " + q(baked));
+        r = runCli("bake -y --lut " + shellQuoted(src) + " --format resolve_cube --cubesize 33 " +
+                   shellQuoted(baked));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         // ociobakelut prints 6 decimals: 5e-7 of rounding.
         EXPECT_LE(worstRelative(converted, theirs, 33), 2e-6);
@@ -105,13 +105,13 @@ TEST(Bake, SameAsOciobakelutWithAConfig) {
         SCOPED_TRACE(fmt);
         const std::string ext = std::string(fmt) == "flame" ? ".3dl" : ".cube";
         const std::string theirs = dir + "/ocio" + ext, ours = dir + "/ours" + ext;
-        ASSERT_EQ(sh("ociobakelut --iconfig " + q(cfg) +
+        ASSERT_EQ(sh("ociobakelut --iconfig " + shellQuoted(cfg) +
                      " --inputspace ACEScct --outputspace Rec.709 --format " + fmt +
-                     " --cubesize 17 " + q(theirs)),
+                     " --cubesize 17 " + shellQuoted(theirs)),
                   0);
-        const auto r = runCli("bake --config " + q(cfg) +
+        const auto r = runCli("bake --config " + shellQuoted(cfg) +
                               " --inputspace ACEScct --outputspace Rec.709 --format " + fmt +
-                              " --cubesize 17 " + q(ours));
+                              " --cubesize 17 " + shellQuoted(ours));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         // .3dl: 12-bit integers, rounded alike but for ties: one code at most.
         EXPECT_LE(worstRelative(ours, theirs, 17), ext == ".3dl" ? 1.0 / 4095 + 1e-6 : 2e-6);
@@ -123,7 +123,8 @@ TEST(Bake, ReportedErrorBoundsTheFileAgainstTheProcessor) {
     // measured here on 100,000 random inputs with OCIO reading the written file and the source.
     const std::string dir = workDir();
     const std::string src = corpusPath("clf/multiple_ops.clf"), out = dir + "/m.cube";
-    const auto r = runCli("bake --lut " + q(src) + " --cubesize 9 --json " + q(out));
+    const auto r =
+        runCli("bake --lut " + shellQuoted(src) + " --cubesize 9 --json " + shellQuoted(out));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto e = r.out.find("\"error\": ");
     const double reportedMax = jsonNumber(r.out, "max", e);
@@ -153,8 +154,8 @@ TEST(Bake, UsesLutkitsOwnConfigWithoutOcio) {
     // runCli runs through a shell: unset $OCIO for this one run.
     const std::string out = dir + "/a.cube";
     const std::string cmd = std::string("env -u OCIO '") + LUTKIT_CLI +
-                            "' bake --inputspace ACEScg --outputspace sRGB --json " + q(out) +
-                            " > " + q(dir + "/report.json");
+                            "' bake --inputspace ACEScg --outputspace sRGB --json " +
+                            shellQuoted(out) + " > " + shellQuoted(dir + "/report.json");
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     std::stringstream ss;
     ss << std::ifstream(dir + "/report.json").rdbuf();
@@ -182,21 +183,21 @@ TEST(Bake, UsesLutkitsOwnConfigWithoutOcio) {
 TEST(Bake, OcioEnvironmentAndConfigOption) {
     const std::string dir = workDir();
     // $OCIO names the config when --config does not.
-    std::string cmd = "OCIO=" + q(testConfig()) + " '" + LUTKIT_CLI +
-                      "' bake --inputspace log --outputspace gamma22 --json " + q(dir + "/a.cube") +
-                      " > " + q(dir + "/r.json");
+    std::string cmd = "OCIO=" + shellQuoted(testConfig()) + " '" + LUTKIT_CLI +
+                      "' bake --inputspace log --outputspace gamma22 --json " +
+                      shellQuoted(dir + "/a.cube") + " > " + shellQuoted(dir + "/r.json");
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     std::stringstream ss;
     ss << std::ifstream(dir + "/r.json").rdbuf();
     EXPECT_THAT(ss.str(), HasSubstr("test_config.ocio ($OCIO)"));
     // --config wins over $OCIO.
     cmd = "OCIO=/nonexistent.ocio '" + std::string(LUTKIT_CLI) + "' bake --config " +
-          q(testConfig()) + " --inputspace log --outputspace gamma22 " + q(dir + "/b.cube") +
-          " >/dev/null";
+          shellQuoted(testConfig()) + " --inputspace log --outputspace gamma22 " +
+          shellQuoted(dir + "/b.cube") + " >/dev/null";
     EXPECT_EQ(std::system(cmd.c_str()), 0);
     // A missing config is bad input (1) naming the file.
     const auto r = runCli("bake --config /nonexistent.ocio --inputspace a --outputspace b " +
-                          q(dir + "/c.cube"));
+                          shellQuoted(dir + "/c.cube"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("/nonexistent.ocio"));
 }
@@ -210,9 +211,9 @@ TEST(Bake, LooksAndDisplayViewsAreOcios) {
     lt->setDst("gamma22");
     lt->setLooks("warm");
     const auto look = cfg->getProcessor(lt)->getDefaultCPUProcessor();
-    auto r = runCli("bake --config " + q(testConfig()) +
+    auto r = runCli("bake --config " + shellQuoted(testConfig()) +
                     " --inputspace log --outputspace gamma22 --look warm --cubesize 17 " +
-                    q(dir + "/look.cube"));
+                    shellQuoted(dir + "/look.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // A display's view.
     auto dv = OCIO::DisplayViewTransform::Create();
@@ -220,9 +221,9 @@ TEST(Bake, LooksAndDisplayViewsAreOcios) {
     dv->setDisplay("Monitor");
     dv->setView("Gamma");
     const auto view = cfg->getProcessor(dv)->getDefaultCPUProcessor();
-    r = runCli("bake --config " + q(testConfig()) +
+    r = runCli("bake --config " + shellQuoted(testConfig()) +
                " --inputspace log --display Monitor --view Gamma --cubesize 17 " +
-               q(dir + "/view.cube"));
+               shellQuoted(dir + "/view.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const auto& [file, truth] :
          {std::make_pair(dir + "/look.cube", look), std::make_pair(dir + "/view.cube", view)}) {
@@ -238,26 +239,27 @@ TEST(Bake, LooksAndDisplayViewsAreOcios) {
 
 TEST(Bake, UnknownNamesAreBadUsageWithASuggestion) {
     const std::string dir = workDir();
-    const std::string cfg = " --config " + q(testConfig());
-    auto r = runCli("bake" + cfg + " --inputspace lgo --outputspace gamma22 " + q(dir + "/a.cube"));
+    const std::string cfg = " --config " + shellQuoted(testConfig());
+    auto r = runCli("bake" + cfg + " --inputspace lgo --outputspace gamma22 " +
+                    shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("unknown colour space 'lgo'"));
     EXPECT_THAT(r.err, HasSubstr("did you mean 'log'?"));
     r = runCli("bake" + cfg + " --inputspace log --outputspace lin --look wram " +
-               q(dir + "/a.cube"));
+               shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("did you mean 'warm'?"));
     r = runCli("bake" + cfg + " --inputspace log --display Monitor --view Gama " +
-               q(dir + "/a.cube"));
+               shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("did you mean 'Gamma'?"));
     r = runCli("bake" + cfg + " --inputspace log --outputspace lin --display Monitor " +
-               q(dir + "/a.cube"));
+               shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli("bake " + q(dir + "/a.cube"));
+    r = runCli("bake " + shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("nothing to bake"));
-    r = runCli("bake --format nosuch --lut x.cube " + q(dir + "/a.cube"));
+    r = runCli("bake --format nosuch --lut x.cube " + shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_FALSE(fs::exists(dir + "/a.cube"));
 }
@@ -287,10 +289,11 @@ TEST(Bake, CccIdAppliesToTheFilesAfterIt) {
 TEST(Bake, CccFileNeedsAnIdAndGetsTheRightOne) {
     const std::string dir = workDir();
     const std::string src = corpusPath("cdl_test1.ccc");
-    auto r = runCli("bake --lut " + q(src) + " " + q(dir + "/a.cube"));
+    auto r = runCli("bake --lut " + shellQuoted(src) + " " + shellQuoted(dir + "/a.cube"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("--cccid"));
-    r = runCli("bake --cccid cc0001 --lut " + q(src) + " --cubesize 9 " + q(dir + "/a.cube"));
+    r = runCli("bake --cccid cc0001 --lut " + shellQuoted(src) + " --cubesize 9 " +
+               shellQuoted(dir + "/a.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto truth = ocioFileProcessor(src, "cc0001"), file = ocioFileProcessor(dir + "/a.cube");
     for (int i = 0; i < 729; i += 5) {

@@ -31,9 +31,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 using Fn = std::function<glm::vec3(glm::vec3)>;
 
@@ -80,7 +78,8 @@ std::string python(const std::string& dir, const std::string& json, const std::s
                           << expression
                           << ")\n"
                              "print(' '.join(map(str, v)) if isinstance(v, tuple) else v)\n";
-    const std::string cmd = "python3 " + q(script) + " " + q(in) + " > " + q(out) + " 2>&1";
+    const std::string cmd = "python3 " + shellQuoted(script) + " " + shellQuoted(in) + " > " +
+                            shellQuoted(out) + " 2>&1";
     const int rc = std::system(cmd.c_str());
     std::ifstream f(out);
     std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -95,14 +94,14 @@ std::string python(const std::string& dir, const std::string& json, const std::s
 TEST(CliCheck, FailsOnAFoldOverAndSaysWhere) {
     const std::string dir = workDir();
     const std::string lut = writeCube(dir + "/fold.cube", 33, fold);
-    RunResult r = runCli("check " + q(lut));
+    RunResult r = runCli("check " + shellQuoted(lut));
     EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr(lut + ": fail"));
     EXPECT_THAT(r.out, HasSubstr("monotonicity   fail"));
     EXPECT_THAT(r.out, HasSubstr("1 fail fold-over"));
     EXPECT_THAT(r.out, HasSubstr("along red"));
     // The same as JSON, read by Python.
-    r = runCli("check " + q(lut) + " --json");
+    r = runCli("check " + shellQuoted(lut) + " --json");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(python(dir, r.out, "d['status'], d['files'][0]['status']"), "fail fail");
     EXPECT_EQ(python(dir, r.out, "d['files'][0]['findings'][0]['kind']"), "fold-over");
@@ -119,7 +118,7 @@ TEST(CliCheck, FailsOnAFoldOverAndSaysWhere) {
     EXPECT_NEAR(red, 0.55, 1.0 / 32);
     EXPECT_EQ(python(dir, r.out, "d['files'][0]['figures']['grey_worst_fold_over']"), "0");
     // -q: the verdict line only.
-    r = runCli("check -q " + q(lut));
+    r = runCli("check -q " + shellQuoted(lut));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
 }
@@ -127,7 +126,7 @@ TEST(CliCheck, FailsOnAFoldOverAndSaysWhere) {
 TEST(CliCheck, WarningsPassUnlessStrict) {
     const std::string dir = workDir();
     const std::string lut = writeCube(dir + "/clip.cube", 33, clip);
-    RunResult r = runCli("check " + q(lut) + " --json");
+    RunResult r = runCli("check " + shellQuoted(lut) + " --json");
     EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_EQ(python(dir, r.out, "d['files'][0]['status']"), "warn");
     const double share =
@@ -137,10 +136,10 @@ TEST(CliCheck, WarningsPassUnlessStrict) {
                      "[c['status'] for c in d['files'][0]['checks'] if "
                      "c['check']=='range'][0]"),
               "warn");
-    r = runCli("check --strict " + q(lut));
+    r = runCli("check --strict " + shellQuoted(lut));
     EXPECT_EQ(r.exitCode, 1);
     const std::string neutral = writeCube(dir + "/neutral.cube", 17, same);
-    r = runCli("check --strict " + q(neutral));
+    r = runCli("check --strict " + shellQuoted(neutral));
     EXPECT_EQ(r.exitCode, 0) << r.out;
     EXPECT_THAT(r.out, HasSubstr(": pass (3D 17^3, 0 findings"));
 }
@@ -149,7 +148,7 @@ TEST(CliCheck, ReportPictureFollowsTheOutputRules) {
     const std::string dir = workDir();
     const std::string a = writeCube(dir + "/a.cube", 17, fold);
     const std::string b = writeCube(dir + "/b.cube", 17, same);
-    RunResult r = runCli("check " + q(a) + " --report " + q(dir + "/a.png"));
+    RunResult r = runCli("check " + shellQuoted(a) + " --report " + shellQuoted(dir + "/a.png"));
     EXPECT_EQ(r.exitCode, 1);
     const lut::formats::LoadedImage pic = lut::formats::readImage(dir + "/a.png");
     EXPECT_EQ(pic.image.width(), 1600);
@@ -157,18 +156,20 @@ TEST(CliCheck, ReportPictureFollowsTheOutputRules) {
     EXPECT_THAT(r.out, HasSubstr("wrote " + dir + "/a.png"));
     // It exists: refused without -y (the check still runs), replaced with -y.
     const auto before = fs::last_write_time(dir + "/a.png");
-    r = runCli("check " + q(a) + " --report " + q(dir + "/a.png"));
+    r = runCli("check " + shellQuoted(a) + " --report " + shellQuoted(dir + "/a.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("already exists; pass -y/--overwrite"));
     EXPECT_EQ(fs::last_write_time(dir + "/a.png"), before);
-    r = runCli("check " + q(b) + " --report " + q(dir + "/a.png") + " -y");
+    r = runCli("check " + shellQuoted(b) + " --report " + shellQuoted(dir + "/a.png") + " -y");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     // Several LUTs: a folder, one picture each.
-    r = runCli("check " + q(a) + " " + q(b) + " --report " + q(dir + "/pics/"));
+    r = runCli("check " + shellQuoted(a) + " " + shellQuoted(b) + " --report " +
+               shellQuoted(dir + "/pics/"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_TRUE(fs::exists(dir + "/pics/a.check.png"));
     EXPECT_TRUE(fs::exists(dir + "/pics/b.check.png"));
-    r = runCli("check " + q(a) + " " + q(b) + " --report " + q(dir + "/one.png"));
+    r = runCli("check " + shellQuoted(a) + " " + shellQuoted(b) + " --report " +
+               shellQuoted(dir + "/one.png"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("name a folder"));
 }
@@ -177,21 +178,21 @@ TEST(CliCheck, BadFilesAndThresholds) {
     const std::string dir = workDir();
     const std::string good = writeCube(dir + "/good.cube", 9, same);
     std::ofstream(dir + "/bad.cube") << "LUT_3D_SIZE 2\n0 0 0\n";
-    RunResult r = runCli("check " + q(dir + "/bad.cube") + " " + q(good));
+    RunResult r = runCli("check " + shellQuoted(dir + "/bad.cube") + " " + shellQuoted(good));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("bad.cube"));
     EXPECT_THAT(r.out, HasSubstr(good + ": pass")); // the other file is still checked
     std::ofstream(dir + "/t.txt") << "# stricter\nsteep = 0.5 0.9\nfoldover = 1 2\n";
-    r = runCli("check " + q(good) + " --thresholds " + q(dir + "/t.txt"));
+    r = runCli("check " + shellQuoted(good) + " --thresholds " + shellQuoted(dir + "/t.txt"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("t.txt:3:1: unknown threshold 'foldover'; did you mean "
                                  "'fold-over'?"));
     std::ofstream(dir + "/t.txt") << "steep = 0.5 0.9\n";
-    r = runCli("check " + q(good) + " --thresholds " + q(dir + "/t.txt"));
+    r = runCli("check " + shellQuoted(good) + " --thresholds " + shellQuoted(dir + "/t.txt"));
     EXPECT_EQ(r.exitCode, 1) << r.out; // the identity's slope 1 now fails
     EXPECT_THAT(r.out, HasSubstr("banding        fail"));
     EXPECT_EQ(runCli("check").exitCode, 2);
-    EXPECT_EQ(runCli("check " + q(good) + " --format cube").exitCode, 2);
+    EXPECT_EQ(runCli("check " + shellQuoted(good) + " --format cube").exitCode, 2);
 }
 
 TEST(CliCheck, OverAPicture) {
@@ -209,7 +210,8 @@ TEST(CliCheck, OverAPicture) {
     w.alpha = false;
     w.bitDepth = 8;
     lut::formats::writeImage(dir + "/greys.png", shot, w);
-    RunResult r = runCli("check " + q(lut) + " --image " + q(dir + "/greys.png") + " --json");
+    RunResult r = runCli("check " + shellQuoted(lut) + " --image " +
+                         shellQuoted(dir + "/greys.png") + " --json");
     EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_EQ(python(dir, r.out, "d['files'][0]['over'], len(d['files'][0]['findings'])"),
               "picture 0");
@@ -217,8 +219,8 @@ TEST(CliCheck, OverAPicture) {
 
 TEST(CliChart, WritesTheCharts) {
     const std::string dir = workDir();
-    RunResult r =
-        runCli("chart hue-saturation " + q(dir + "/hs.png") + " --width 361 --height 101");
+    RunResult r = runCli("chart hue-saturation " + shellQuoted(dir + "/hs.png") +
+                         " --width 361 --height 101");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const lut::formats::LoadedImage img = lut::formats::readImage(dir + "/hs.png");
     ASSERT_EQ(img.image.width(), 361);
@@ -235,13 +237,13 @@ TEST(CliChart, WritesTheCharts) {
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(img.image.pixel(x, y)[c], want[c], 0.6 / 65535) << x << "," << y;
         }
-    r = runCli("chart all " + q(dir + "/all.png") + " --bit-depth 8");
+    r = runCli("chart all " + shellQuoted(dir + "/all.png") + " --bit-depth 8");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(lut::formats::readImage(dir + "/all.png").image.width(), 1024);
-    r = runCli("chart all " + q(dir + "/all.png"));
+    r = runCli("chart all " + shellQuoted(dir + "/all.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("already exists"));
-    r = runCli("chart hue-sat " + q(dir + "/x.png"));
+    r = runCli("chart hue-sat " + shellQuoted(dir + "/x.png"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("did you mean 'hue-saturation'"));
 }
@@ -250,33 +252,36 @@ TEST(CliCheck, QuietCheckAfterWritingALut) {
     const std::string dir = workDir();
     const std::string folded = writeCube(dir + "/fold.cube", 17, fold);
     const std::string neutral = writeCube(dir + "/neutral.cube", 17, same);
-    RunResult r = runCli("compose " + q(folded) + " " + q(neutral) + " " + q(dir + "/c.cube"));
+    RunResult r = runCli("compose " + shellQuoted(folded) + " " + shellQuoted(neutral) + " " +
+                         shellQuoted(dir + "/c.cube"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr("warning: " + dir +
                                  "/c.cube: check monotonicity fails: "
                                  "fold-over"));
     EXPECT_THAT(r.err, HasSubstr("lutkit check " + dir + "/c.cube --report"));
-    r = runCli("convert " + q(folded) + " " + q(dir + "/c.3dl"));
+    r = runCli("convert " + shellQuoted(folded) + " " + shellQuoted(dir + "/c.3dl"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr("check monotonicity fails"));
     // A game LUT is judged by what the game shows with it, not by its compensated numbers: the
     // neutral one passes, the folded one fails the same way.
-    r = runCli("convert " + q(neutral) + " " + q(dir + "/n.nutexb"));
+    r = runCli("convert " + shellQuoted(neutral) + " " + shellQuoted(dir + "/n.nutexb"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, Not(HasSubstr("check")));
-    r = runCli("convert " + q(folded) + " " + q(dir + "/f.nutexb"));
+    r = runCli("convert " + shellQuoted(folded) + " " + shellQuoted(dir + "/f.nutexb"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr("check monotonicity of the edit the game shows fails"));
-    r = runCli("check " + q(dir + "/n.nutexb"));
+    r = runCli("check " + shellQuoted(dir + "/n.nutexb"));
     EXPECT_EQ(r.exitCode, 0) << r.out;
     EXPECT_THAT(r.out, HasSubstr("checked as the edit the game shows"));
-    r = runCli("compose -q " + q(folded) + " " + q(neutral) + " " + q(dir + "/q.cube"));
+    r = runCli("compose -q " + shellQuoted(folded) + " " + shellQuoted(neutral) + " " +
+               shellQuoted(dir + "/q.cube"));
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_THAT(r.err, Not(HasSubstr("check")));
-    r = runCli("compose " + q(neutral) + " " + q(neutral) + " " + q(dir + "/n.cube"));
+    r = runCli("compose " + shellQuoted(neutral) + " " + shellQuoted(neutral) + " " +
+               shellQuoted(dir + "/n.cube"));
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.err, "");
-    r = runCli("invert " + q(neutral) + " " + q(dir + "/i.cube"));
+    r = runCli("invert " + shellQuoted(neutral) + " " + shellQuoted(dir + "/i.cube"));
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.err, "");
 }

@@ -32,9 +32,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 std::string testConfig() {
     return dataPath("ocio/test_config.ocio");
@@ -117,9 +115,9 @@ TEST(Colour, ApplyRunsTheLutInItsOwnSpace) {
     const lut::Image img = hdrImage(4.0f);
     writeExr(in, img);
     // --to: lin -> log (the LUT's space) -> LUT -> log -> gamma22.
-    auto r =
-        runCli("apply --lut " + q(lut) + " --config " + q(testConfig()) +
-               " --from lin --lut-space log --to gamma22 " + q(in) + " -o " + q(dir + "/to.exr"));
+    auto r = runCli("apply --lut " + shellQuoted(lut) + " --config " + shellQuoted(testConfig()) +
+                    " --from lin --lut-space log --to gamma22 " + shellQuoted(in) + " -o " +
+                    shellQuoted(dir + "/to.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // Nothing the LUT saw was above its domain (log of 4 is below 1); the darkest values fall
     // below the log space's 0 and are reported as such (the worst one is negative).
@@ -135,9 +133,9 @@ TEST(Colour, ApplyRunsTheLutInItsOwnSpace) {
     EXPECT_LE(worstDiff(got.image, want), 1e-4);
     EXPECT_EQ(got.image.pixel(3, 3)[3], 0.5f); // alpha passes through
     // --display/--view instead of --to.
-    r = runCli("apply --lut " + q(lut) + " --config " + q(testConfig()) +
-               " --from lin --lut-space log --display Monitor --view Gamma " + q(in) + " -o " +
-               q(dir + "/view.exr"));
+    r = runCli("apply --lut " + shellQuoted(lut) + " --config " + shellQuoted(testConfig()) +
+               " --from lin --lut-space log --display Monitor --view Gamma " + shellQuoted(in) +
+               " -o " + shellQuoted(dir + "/view.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto dv = OCIO::DisplayViewTransform::Create();
     dv->setSrc("log");
@@ -151,8 +149,9 @@ TEST(Colour, ApplyRunsTheLutInItsOwnSpace) {
                         ocioChain(img, g2, testConfig())),
               1e-4);
     // A look between --from and the LUT's space.
-    r = runCli("apply --lut " + q(lut) + " --config " + q(testConfig()) +
-               " --from lin --lut-space log --look warm " + q(in) + " -o " + q(dir + "/look.exr"));
+    r = runCli("apply --lut " + shellQuoted(lut) + " --config " + shellQuoted(testConfig()) +
+               " --from lin --lut-space log --look warm " + shellQuoted(in) + " -o " +
+               shellQuoted(dir + "/look.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto lt = OCIO::LookTransform::Create();
     lt->setSrc("lin");
@@ -180,7 +179,8 @@ TEST(Colour, ValuesOutsideTheLutsDomainAreReported) {
             above += out;
         }
     ASSERT_GT(above, 0u);
-    const auto r = runCli("apply --lut " + q(lut) + " " + q(in) + " -o " + q(dir + "/out.exr"));
+    const auto r = runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(in) + " -o " +
+                          shellQuoted(dir + "/out.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr(std::to_string(above) + " of " +
                                  std::to_string(img.width() * img.height()) + " pixels ("));
@@ -191,19 +191,22 @@ TEST(Colour, BadColourOptionsAreBadUsage) {
     const std::string dir = workDir();
     const std::string lut = writeGrade(dir + "/grade.cube"), in = dir + "/in.exr";
     writeExr(in, hdrImage(1.0f));
-    const std::string base = "apply --lut " + q(lut) + " --config " + q(testConfig()) + " ";
-    auto r = runCli(base + "--from lni " + q(in) + " -o " + q(dir + "/o.exr"));
+    const std::string base =
+        "apply --lut " + shellQuoted(lut) + " --config " + shellQuoted(testConfig()) + " ";
+    auto r = runCli(base + "--from lni " + shellQuoted(in) + " -o " + shellQuoted(dir + "/o.exr"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("did you mean 'lin'?"));
-    r = runCli(base + "--lut-space log " + q(in) + " -o " + q(dir + "/o.exr"));
+    r = runCli(base + "--lut-space log " + shellQuoted(in) + " -o " + shellQuoted(dir + "/o.exr"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("--lut-space needs --from"));
-    r = runCli(base + "--from lin --to log --display Monitor " + q(in) + " -o " +
-               q(dir + "/o.exr"));
+    r = runCli(base + "--from lin --to log --display Monitor " + shellQuoted(in) + " -o " +
+               shellQuoted(dir + "/o.exr"));
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli("preview " + q(in) + " -o " + q(dir + "/p.png") + " --display sRGB");
+    r = runCli("preview " + shellQuoted(in) + " -o " + shellQuoted(dir + "/p.png") +
+               " --display sRGB");
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli("preview " + q(in) + " -o " + q(dir + "/p.png") + " --from-screenshot --from sRGB");
+    r = runCli("preview " + shellQuoted(in) + " -o " + shellQuoted(dir + "/p.png") +
+               " --from-screenshot --from sRGB");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_FALSE(fs::exists(dir + "/o.exr"));
 }
@@ -211,25 +214,27 @@ TEST(Colour, BadColourOptionsAreBadUsage) {
 TEST(Colour, PreviewFromAndTo) {
     const std::string dir = workDir();
     const std::string scene = samplePath("sample_scene.exr"),
-                      cfg = " --config " + q(shippedConfig());
-    auto r = runCli("preview " + q(scene) + " -o " + q(dir + "/plain.png") + " --preset filmic");
+                      cfg = " --config " + shellQuoted(shippedConfig());
+    auto r = runCli("preview " + shellQuoted(scene) + " -o " + shellQuoted(dir + "/plain.png") +
+                    " --preset filmic");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // --from the space the pipeline takes EXRs in: the same picture (to a 16-bit step).
-    r = runCli("preview " + q(scene) + " -o " + q(dir + "/lin.png") + " --preset filmic" + cfg +
-               " --from lin_srgb");
+    r = runCli("preview " + shellQuoted(scene) + " -o " + shellQuoted(dir + "/lin.png") +
+               " --preset filmic" + cfg + " --from lin_srgb");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto plain = lut::formats::readImage(dir + "/plain.png");
     EXPECT_LE(worstDiff(lut::formats::readImage(dir + "/lin.png").image, plain.image), 1.5 / 65535);
     // --from another space: another picture.
-    r = runCli("preview " + q(scene) + " -o " + q(dir + "/acescg.png") + " --preset filmic" + cfg +
-               " --from ACEScg");
+    r = runCli("preview " + shellQuoted(scene) + " -o " + shellQuoted(dir + "/acescg.png") +
+               " --preset filmic" + cfg + " --from ACEScg");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_GT(worstDiff(lut::formats::readImage(dir + "/acescg.png").image, plain.image), 0.01);
     // --to: the display-encoded sRGB output converted by OCIO.
-    r = runCli("preview " + q(scene) + " -o " + q(dir + "/to.exr") + " --preset filmic" + cfg +
-               " --to Rec.709");
+    r = runCli("preview " + shellQuoted(scene) + " -o " + shellQuoted(dir + "/to.exr") +
+               " --preset filmic" + cfg + " --to Rec.709");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    r = runCli("preview " + q(scene) + " -o " + q(dir + "/srgb.exr") + " --preset filmic");
+    r = runCli("preview " + shellQuoted(scene) + " -o " + shellQuoted(dir + "/srgb.exr") +
+               " --preset filmic");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const lut::Image want = ocioChain(lut::formats::readImage(dir + "/srgb.exr").image,
                                       cst("sRGB", "Rec.709"), shippedConfig());
@@ -244,9 +249,9 @@ TEST(Colour, ConvertBakesTheConversionsAroundTheLut) {
         std::ofstream o(dir + "/id.cube");
         o << "LUT_3D_SIZE 2\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n";
     }
-    const auto r =
-        runCli("convert " + q(dir + "/id.cube") + " " + q(dir + "/lin.cube") + " --config " +
-               q(shippedConfig()) + " --from lin_srgb --lut-space sRGB --json");
+    const auto r = runCli(
+        "convert " + shellQuoted(dir + "/id.cube") + " " + shellQuoted(dir + "/lin.cube") +
+        " --config " + shellQuoted(shippedConfig()) + " --from lin_srgb --lut-space sRGB --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("\"shaper\": \"log2"));
     const auto e = r.out.find("\"error\": {\"max\": ");
@@ -281,7 +286,7 @@ TEST(Colour, ConvertBakesTheConversionsAroundTheLut) {
 TEST(Hald, LevelAsImageMagickNamesIt) {
     const std::string dir = workDir();
     // --level 8 = ImageMagick's hald:8: 512x512, a 64^3 lattice.
-    auto r = runCli("neutral --level 8 " + q(dir + "/h8.png"));
+    auto r = runCli("neutral --level 8 " + shellQuoted(dir + "/h8.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("64^3 (Hald level 8, 512x512)"));
     auto info = lut::formats::readImageInfo(dir + "/h8.png");
@@ -289,23 +294,23 @@ TEST(Hald, LevelAsImageMagickNamesIt) {
     EXPECT_EQ(info.height, 512);
     // --size 8 keeps meaning 8^3: not a square, so 9^3 (level 3, 27x27), and the message says so
     // (it said 8^3).
-    r = runCli("neutral --size 8 --layout hald " + q(dir + "/s8.png"));
+    r = runCli("neutral --size 8 --layout hald " + shellQuoted(dir + "/s8.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("9^3 (Hald level 3, 27x27)"));
     EXPECT_THAT(r.out, Not(HasSubstr("neutral 8^3")));
     info = lut::formats::readImageInfo(dir + "/s8.png");
     EXPECT_EQ(info.width, 27);
     // convert --level: resampled once, to the size the image holds.
-    r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/c4.png") +
-               " --level 4");
+    r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+               shellQuoted(dir + "/c4.png") + " --level 4");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("resample 33^3 -> 16^3"));
     info = lut::formats::readImageInfo(dir + "/c4.png");
     EXPECT_EQ(info.width, 64);
-    r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/c.cube") +
-               " --level 4");
+    r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+               shellQuoted(dir + "/c.cube") + " --level 4");
     EXPECT_EQ(r.exitCode, 2);
-    r = runCli("neutral --level 4 --size 16 " + q(dir + "/x.png"));
+    r = runCli("neutral --level 4 --size 16 " + shellQuoted(dir + "/x.png"));
     EXPECT_EQ(r.exitCode, 2);
 }
 

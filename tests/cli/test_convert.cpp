@@ -30,16 +30,9 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using lut::test::fileBytes;
 
 // Float64 trilinear evaluation with the same clamp-to-edge policy as lutlib.
 struct Vec3d {
@@ -78,8 +71,8 @@ lut::Lut3D readCube(const std::string& path) {
 TEST(CliConvert, CubeToCubeIsExact) {
     const std::string dir = workDir();
     const std::string out = dir + "/copy.cube";
-    const auto r =
-        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
+    const auto r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                          shellQuoted(out) + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     EXPECT_TRUE(js["resample"].isNull());
@@ -98,8 +91,8 @@ TEST(CliConvert, CubeToCubeIsExact) {
 TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
     const std::string dir = workDir();
     const std::string out = dir + "/small.cube";
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) +
-                          " --size 17 --interp trilinear --json");
+    const auto r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                          shellQuoted(out) + " --size 17 --interp trilinear --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     ASSERT_FALSE(js["resample"].isNull());
@@ -151,8 +144,8 @@ TEST(CliConvert, ResampleReportMatchesFloat64Reference) {
 TEST(CliConvert, EightBitQuantisationMatchesReference) {
     const std::string dir = workDir();
     const std::string out = dir + "/strip.png";
-    const auto r =
-        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) + " --json");
+    const auto r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                          shellQuoted(out) + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     ASSERT_FALSE(js["storage"].isNull()) << r.out;
@@ -175,8 +168,8 @@ TEST(CliConvert, EightBitQuantisationMatchesReference) {
 TEST(CliConvert, ToNutexbResamplesTo16Tetrahedral) {
     const std::string dir = workDir();
     const std::string out = dir + "/color_grading_lut.nutexb";
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(out) +
-                          " --json --target raw");
+    const auto r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                          shellQuoted(out) + " --json --target raw");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     ASSERT_FALSE(js["resample"].isNull()) << r.out;
@@ -189,8 +182,8 @@ TEST(CliConvert, ToNutexbResamplesTo16Tetrahedral) {
 
 TEST(CliConvert, TextReportNamesBothErrors) {
     const std::string dir = workDir();
-    const auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " +
-                          q(dir + "/x.cube") + " --size 9");
+    const auto r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                          shellQuoted(dir + "/x.cube") + " --size 9");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("resample 33^3 -> 9^3 (tetrahedral): max"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("8-bit steps"), std::string::npos) << r.out;
@@ -202,30 +195,30 @@ TEST(CliConvert, RefusesToOverwriteTheInput) {
     const std::string dir = workDir();
     const std::string in = dir + "/in.cube";
     fs::copy_file(samplePath("sample_grade.cube"), in);
-    const std::string before = slurp(in);
+    const std::string before = fileBytes(in);
 
-    auto r = runCli("convert " + q(in) + " " + q(in));
+    auto r = runCli("convert " + shellQuoted(in) + " " + shellQuoted(in));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("refusing to overwrite"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(in), std::string::npos) << r.err;
 
-    r = runCli("convert " + q(in) + " " + q(dir + "/./in.cube"));
+    r = runCli("convert " + shellQuoted(in) + " " + shellQuoted(dir + "/./in.cube"));
     EXPECT_EQ(r.exitCode, 1) << r.err;
 
     const std::string link = dir + "/link.cube";
     ASSERT_EQ(::link(in.c_str(), link.c_str()), 0);
-    r = runCli("convert " + q(in) + " " + q(link));
+    r = runCli("convert " + shellQuoted(in) + " " + shellQuoted(link));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("refusing to overwrite"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
 
-    EXPECT_EQ(slurp(in), before);
+    EXPECT_EQ(fileBytes(in), before);
 }
 
 TEST(CliConvert, BadUsageExitsTwo) {
     const std::string dir = workDir();
-    const std::string in = q(samplePath("sample_grade.cube"));
-    const std::string out = q(dir + "/o.cube");
+    const std::string in = shellQuoted(samplePath("sample_grade.cube"));
+    const std::string out = shellQuoted(dir + "/o.cube");
     EXPECT_EQ(runCli("convert").exitCode, 2);
     EXPECT_EQ(runCli("convert " + in).exitCode, 2);
     EXPECT_EQ(runCli("convert " + in + " " + out + " --size 1").exitCode, 2);
@@ -240,11 +233,12 @@ TEST(CliConvert, BadUsageExitsTwo) {
 
 TEST(CliConvert, BadInputExitsOneNamingTheFile) {
     const std::string dir = workDir();
-    const auto r = runCli("convert " + q(dir + "/missing.cube") + " " + q(dir + "/o.cube"));
+    const auto r = runCli("convert " + shellQuoted(dir + "/missing.cube") + " " +
+                          shellQuoted(dir + "/o.cube"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("missing.cube"), std::string::npos) << r.err;
-    const auto r2 =
-        runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/o.unknownext"));
+    const auto r2 = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                           shellQuoted(dir + "/o.unknownext"));
     EXPECT_EQ(r2.exitCode, 1);
     EXPECT_NE(r2.err.find("o.unknownext"), std::string::npos) << r2.err;
 }
@@ -252,14 +246,15 @@ TEST(CliConvert, BadInputExitsOneNamingTheFile) {
 TEST(CliConvert, ThroughOcioFormatsAndBack) {
     const std::string dir = workDir();
     // cube -> .3dl (12-bit) -> cube: the report's storage error is the 12-bit rounding.
-    auto r = runCli("convert " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/g.3dl") +
-                    " --json");
+    auto r = runCli("convert " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                    shellQuoted(dir + "/g.3dl") + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto js = lut::test::json::parse(r.out);
     EXPECT_EQ(js["output_format"].string, "flame");
     EXPECT_GT(js["storage"]["max"].number, 0.0);
     EXPECT_LE(js["storage"]["max"].number, 0.5 / 4095 + 1e-6);
-    r = runCli("convert " + q(dir + "/g.3dl") + " " + q(dir + "/back.cube") + " --json");
+    r = runCli("convert " + shellQuoted(dir + "/g.3dl") + " " + shellQuoted(dir + "/back.cube") +
+               " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     js = lut::test::json::parse(r.out);
     EXPECT_EQ(js["input"]["format"].string, "ocio");

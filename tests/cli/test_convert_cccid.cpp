@@ -18,9 +18,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 std::string workDir() {
     const std::string d = tempDir() + "-cccid";
@@ -44,10 +42,11 @@ TEST(ConvertCccId, TheSixCorrectionFilesOcioReads) {
     for (const auto& [name, id] : files) {
         SCOPED_TRACE(name + " --cccid " + id);
         const std::string src = corpusPath(name), out = dir + "/out.cube";
-        const RunResult none = runCli("convert -y " + q(src) + " " + q(out));
+        const RunResult none = runCli("convert -y " + shellQuoted(src) + " " + shellQuoted(out));
         EXPECT_EQ(none.exitCode, 1);
         EXPECT_THAT(none.err, HasSubstr("--cccid"));
-        const RunResult r = runCli("convert -y " + q(src) + " " + q(out) + " --cccid " + q(id));
+        const RunResult r = runCli("convert -y " + shellQuoted(src) + " " + shellQuoted(out) +
+                                   " --cccid " + shellQuoted(id));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const auto source = ocioFileProcessor(src, id);
         const auto written = ocioFileProcessor(out);

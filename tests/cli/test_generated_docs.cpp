@@ -23,10 +23,7 @@ std::string generated(const std::string& name) {
     return std::string(LUTKIT_BINARY_DIR) + "/cli/" + name;
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using lut::test::fileBytes;
 
 struct Shell {
     int exitCode = -1;
@@ -103,7 +100,7 @@ std::string complete(const std::string& words, int cword) {
 TEST(GeneratedDocs, ManPageNamesEveryCommandAndOptionAndRenders) {
     const std::string path = generated("lutkit.1");
     ASSERT_TRUE(fs::exists(path)) << path;
-    const std::string man = slurp(path);
+    const std::string man = fileBytes(path);
     EXPECT_EQ(man.rfind(".\\\"", 0), 0u) << "starts with a roff comment";
     EXPECT_THAT(man, HasSubstr(".TH LUTKIT 1"));
     EXPECT_THAT(man, HasSubstr("EXIT STATUS"));
@@ -123,10 +120,10 @@ TEST(GeneratedDocs, CompletionScriptsNameEveryCommandAndOption) {
     for (const char* name : {"completions/lutkit", "completions/_lutkit"}) {
         SCOPED_TRACE(name);
         ASSERT_TRUE(fs::exists(generated(name)));
-        expectMentionsEverything(slurp(generated(name)), nullptr);
+        expectMentionsEverything(fileBytes(generated(name)), nullptr);
     }
     ASSERT_TRUE(fs::exists(generated("completions/lutkit.fish")));
-    expectMentionsEverything(slurp(generated("completions/lutkit.fish")), fishName);
+    expectMentionsEverything(fileBytes(generated("completions/lutkit.fish")), fishName);
     EXPECT_EQ(sh("bash -n '" + generated("completions/lutkit") + "'").exitCode, 0);
     if (have("zsh")) {
         EXPECT_EQ(sh("zsh -n '" + generated("completions/_lutkit") + "' 2>&1").exitCode, 0);

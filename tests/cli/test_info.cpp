@@ -19,14 +19,12 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 } // namespace
 
 TEST(CliInfo, JsonFieldsOfTheSampleGrade) {
-    const auto r = runCli("info --json " + q(samplePath("sample_grade.cube")));
+    const auto r = runCli("info --json " + shellQuoted(samplePath("sample_grade.cube")));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     EXPECT_EQ(js["format"].string, "cube");
@@ -49,14 +47,14 @@ TEST(CliInfo, JsonFieldsOfTheSampleGrade) {
 
 TEST(CliInfo, NeutralIsExactAndEightBitNeutralIsNear) {
     const std::string dir = workDir();
-    ASSERT_EQ(runCli("neutral --size 5 " + q(dir + "/n.cube")).exitCode, 0);
-    auto js = lut::test::json::parse(runCli("info --json " + q(dir + "/n.cube")).out);
+    ASSERT_EQ(runCli("neutral --size 5 " + shellQuoted(dir + "/n.cube")).exitCode, 0);
+    auto js = lut::test::json::parse(runCli("info --json " + shellQuoted(dir + "/n.cube")).out);
     EXPECT_EQ(js["neutral"].string, "exact");
     EXPECT_EQ(js["max_deviation_from_identity"].number, 0.0);
     EXPECT_EQ(js["size"].number, 5);
     // A 12-bit .3dl neutral is within half an 8-bit step of the identity, but not exact.
-    ASSERT_EQ(runCli("neutral --size 17 " + q(dir + "/n.3dl")).exitCode, 0);
-    js = lut::test::json::parse(runCli("info --json " + q(dir + "/n.3dl")).out);
+    ASSERT_EQ(runCli("neutral --size 17 " + shellQuoted(dir + "/n.3dl")).exitCode, 0);
+    js = lut::test::json::parse(runCli("info --json " + shellQuoted(dir + "/n.3dl")).out);
     EXPECT_EQ(js["format"].string, "ocio");
     EXPECT_EQ(js["neutral"].string, "near");
     EXPECT_EQ(js["source_bit_depth"].number, 12);
@@ -68,20 +66,20 @@ TEST(CliInfo, JsonEscapesStrings) {
     const std::string dir = workDir();
     // A path with a quote, a backslash and a tab must still give valid JSON that round-trips.
     const std::string weird = dir + "/we\"ird\\na\tme.cube";
-    ASSERT_EQ(runCli("neutral --size 2 " + q(weird)).exitCode, 0);
-    const auto r = runCli("info --json " + q(weird));
+    ASSERT_EQ(runCli("neutral --size 2 " + shellQuoted(weird)).exitCode, 0);
+    const auto r = runCli("info --json " + shellQuoted(weird));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto js = lut::test::json::parse(r.out);
     EXPECT_EQ(js["path"].string, weird);
 }
 
 TEST(CliInfo, TextOutputAndErrors) {
-    const auto r = runCli("info " + q(samplePath("sample_grade.cube")));
+    const auto r = runCli("info " + shellQuoted(samplePath("sample_grade.cube")));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("33^3"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("neutral     no"), std::string::npos) << r.out;
     EXPECT_EQ(runCli("info").exitCode, 2);
-    const auto bad = runCli("info " + q(workDir() + "/none.cube"));
+    const auto bad = runCli("info " + shellQuoted(workDir() + "/none.cube"));
     EXPECT_EQ(bad.exitCode, 1);
     EXPECT_NE(bad.err.find("none.cube"), std::string::npos) << bad.err;
 }

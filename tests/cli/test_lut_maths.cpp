@@ -27,9 +27,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 using Fn = std::function<glm::vec3(glm::vec3)>;
 
@@ -178,7 +176,7 @@ TEST(LutMaths, DiffOfALutWithItselfIsExactlyZero) {
     const std::string dir = workDir();
     for (const std::string& a :
          {samplePath("sample_grade.cube"), writeCube(dir + "/b.cube", 5, gradeB)}) {
-        const auto r = runCli("diff " + q(a) + " " + q(a) + " --json");
+        const auto r = runCli("diff " + shellQuoted(a) + " " + shellQuoted(a) + " --json");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_THAT(r.out, HasSubstr("\"identical\": true"));
         EXPECT_EQ(jsonNumber(r.out, "max"), 0.0);
@@ -208,7 +206,8 @@ TEST(LutMaths, DiffOfTwoKnownLutsEqualsTheFloat64Reference) {
                 }
                 ++n;
             }
-    const auto r = runCli("diff " + q(a) + " " + q(b) + " --json --heatmap " + q(dir + "/h.png"));
+    const auto r = runCli("diff " + shellQuoted(a) + " " + shellQuoted(b) + " --json --heatmap " +
+                          shellQuoted(dir + "/h.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("\"identical\": false"));
     EXPECT_EQ(jsonNumber(r.out, "colors"), 125);
@@ -235,13 +234,14 @@ TEST(LutMaths, InvertThenComposeIsCloseToNeutral) {
     const std::string a = writeCube(dir + "/a.cube", 17, [](glm::vec3 x) {
         return glm::vec3(std::pow(x.x, 0.7f), std::pow(x.y, 1.2f), 0.5f * x.z + 0.5f * x.z * x.z);
     });
-    auto r = runCli("invert " + q(a) + " " + q(dir + "/inv.cube") + " --json");
+    auto r = runCli("invert " + shellQuoted(a) + " " + shellQuoted(dir + "/inv.cube") + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("\"invertible\": true"));
     EXPECT_EQ(jsonNumber(r.out, "unreachable"), 0);
     const double roundTrip = jsonNumber(r.out, "max", r.out.find("\"round_trip\""));
     EXPECT_LT(roundTrip, 0.02);
-    r = runCli("compose " + q(a) + " " + q(dir + "/inv.cube") + " " + q(dir + "/c.cube"));
+    r = runCli("compose " + shellQuoted(a) + " " + shellQuoted(dir + "/inv.cube") + " " +
+               shellQuoted(dir + "/c.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("error    between lattice points"));
     const lut::LutFile c = lut::formats::readLut(dir + "/c.cube");
@@ -262,7 +262,7 @@ TEST(LutMaths, InvertReportsWhereThereIsNoInverse) {
     // Flat in green: no input reaches a target with another green.
     const std::string a =
         writeCube(dir + "/a.cube", 9, [](glm::vec3 x) { return glm::vec3(x.x, 0.5f, x.z); });
-    const auto r = runCli("invert " + q(a) + " " + q(dir + "/inv.cube"));
+    const auto r = runCli("invert " + shellQuoted(a) + " " + shellQuoted(dir + "/inv.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("have no exact preimage"));
     EXPECT_THAT(r.out, HasSubstr("where    no inverse:"));
@@ -277,7 +277,8 @@ TEST(LutMaths, MixResizeSmoothAdjust) {
     const std::string a = writeCube(dir + "/a.cube", 5, [](glm::vec3 x) { return x; });
     const std::string b = writeCube(dir + "/b.cube", 5, gradeB);
     // mix: (1 - t) A + t B per entry, exactly.
-    auto r = runCli("mix " + q(a) + " " + q(b) + " " + q(dir + "/m.cube") + " --strength 0.25");
+    auto r = runCli("mix " + shellQuoted(a) + " " + shellQuoted(b) + " " +
+                    shellQuoted(dir + "/m.cube") + " --strength 0.25");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("the mix is exact"));
     const lut::LutFile m = lut::formats::readLut(dir + "/m.cube");
@@ -291,7 +292,7 @@ TEST(LutMaths, MixResizeSmoothAdjust) {
         return glm::vec3(0.1f + 0.8f * x.x, 0.2f + 0.3f * x.x + 0.5f * x.y, 0.9f - 0.7f * x.z);
     };
     const std::string af = writeCube(dir + "/af.cube", 3, affine);
-    r = runCli("resize " + q(af) + " " + q(dir + "/r.cube") + " --size 9");
+    r = runCli("resize " + shellQuoted(af) + " " + shellQuoted(dir + "/r.cube") + " --size 9");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_LT(printedMax(r.out, "error    "), 1e-6);
     const lut::LutFile rs = lut::formats::readLut(dir + "/r.cube");
@@ -302,15 +303,15 @@ TEST(LutMaths, MixResizeSmoothAdjust) {
             EXPECT_NEAR(rs.cube->entries()[i][c], want[c], 1e-6);
     }
     // smooth leaves an affine LUT as it is.
-    r = runCli("smooth " + q(af) + " " + q(dir + "/s.cube") + " --sigma 2");
+    r = runCli("smooth " + shellQuoted(af) + " " + shellQuoted(dir + "/s.cube") + " --sigma 2");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_LT(printedMax(r.out, "change   "), 1e-6);
-    r = runCli("smooth " + q(b) + " " + q(dir + "/s2.cube") + " --sigma 2");
+    r = runCli("smooth " + shellQuoted(b) + " " + shellQuoted(dir + "/s2.cube") + " --sigma 2");
     EXPECT_GT(printedMax(r.out, "change   "), 1e-3); // a curved LUT does change
     // adjust: contrast -1 makes every entry flat grey 0.5.
     { std::ofstream(dir + "/flat.txt") << "# lutkit adjustment list 1\ncontrast -1\n"; }
-    r = runCli("adjust " + q(b) + " --adjustments " + q(dir + "/flat.txt") + " " +
-               q(dir + "/flat.cube"));
+    r = runCli("adjust " + shellQuoted(b) + " --adjustments " + shellQuoted(dir + "/flat.txt") +
+               " " + shellQuoted(dir + "/flat.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const lut::LutFile flat = lut::formats::readLut(dir + "/flat.cube");
     for (const auto& e : flat.cube->entries())
@@ -318,8 +319,8 @@ TEST(LutMaths, MixResizeSmoothAdjust) {
             EXPECT_NEAR(e[c], 0.5, 1e-6);
     // A bad list names the file, the line and the column: bad input.
     { std::ofstream(dir + "/bad.txt") << "exposure 1\ncontrast x\n"; }
-    r = runCli("adjust " + q(b) + " --adjustments " + q(dir + "/bad.txt") + " " +
-               q(dir + "/bad.cube"));
+    r = runCli("adjust " + shellQuoted(b) + " --adjustments " + shellQuoted(dir + "/bad.txt") +
+               " " + shellQuoted(dir + "/bad.cube"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("bad.txt:2:"));
     EXPECT_FALSE(fs::exists(dir + "/bad.cube"));
@@ -327,16 +328,19 @@ TEST(LutMaths, MixResizeSmoothAdjust) {
 
 TEST(LutMaths, PlotAndNeverOverTheInput) {
     const std::string dir = workDir();
-    auto r = runCli("plot " + q(samplePath("sample_grade.cube")) + " " + q(dir + "/p.png"));
+    auto r = runCli("plot " + shellQuoted(samplePath("sample_grade.cube")) + " " +
+                    shellQuoted(dir + "/p.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto img = lut::formats::readImageInfo(dir + "/p.png");
     EXPECT_GT(img.width, img.height);
     EXPECT_GE(img.height, 200);
     const std::string a = writeCube(dir + "/a.cube", 5, gradeB);
     for (const std::string& cmd :
-         {"resize " + q(a) + " " + q(a) + " --size 3", "smooth " + q(a) + " " + q(a),
-          "compose " + q(a) + " " + q(a) + " " + q(a), "invert " + q(a) + " " + q(a),
-          "plot " + q(a) + " " + q(a)}) {
+         {"resize " + shellQuoted(a) + " " + shellQuoted(a) + " --size 3",
+          "smooth " + shellQuoted(a) + " " + shellQuoted(a),
+          "compose " + shellQuoted(a) + " " + shellQuoted(a) + " " + shellQuoted(a),
+          "invert " + shellQuoted(a) + " " + shellQuoted(a),
+          "plot " + shellQuoted(a) + " " + shellQuoted(a)}) {
         SCOPED_TRACE(cmd);
         r = runCli(cmd);
         EXPECT_EQ(r.exitCode, 1);

@@ -24,9 +24,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 double q8(double v) {
     return std::round(std::clamp(v, 0.0, 1.0) * 255.0) / 255.0;
@@ -87,8 +85,8 @@ const Scene& scene() {
 TEST(CliMatch, TheLutOpenColorIOReadsLandsOnTheTrueGrade) {
     const Scene& s = scene();
     const std::string out = s.dir + "/look.cube";
-    const auto r =
-        runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " -y --json");
+    const auto r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+                          shellQuoted(out) + " -y --json");
     ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
     EXPECT_THAT(r.out, HasSubstr("\"method\": "));
     const auto p = ocioFileProcessor(out);
@@ -111,25 +109,29 @@ TEST(CliMatch, TheLutOpenColorIOReadsLandsOnTheTrueGrade) {
 TEST(CliMatch, OutputRulesAndBadUsage) {
     const Scene& s = scene();
     const std::string out = s.dir + "/rules.cube";
-    ASSERT_EQ(
-        runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " --method hm -q")
-            .exitCode,
-        0);
+    ASSERT_EQ(runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+                     shellQuoted(out) + " --method hm -q")
+                  .exitCode,
+              0);
     const auto before = fs::last_write_time(out);
-    auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out));
+    auto r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+                    shellQuoted(out));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("-y"));
     EXPECT_EQ(fs::last_write_time(out), before);
-    r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " -y --method hmm");
+    r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+               shellQuoted(out) + " -y --method hmm");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("did you mean 'hm'"));
-    r = runCli("match " + q(s.source) + " " + q(out));
+    r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(out));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_THAT(r.err, HasSubstr("REFERENCE"));
-    r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(out) + " -y --strength 3");
+    r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+               shellQuoted(out) + " -y --strength 3");
     EXPECT_EQ(r.exitCode, 2);
     // the output may not be an input
-    r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(s.reference) + " -y");
+    r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+               shellQuoted(s.reference) + " -y");
     EXPECT_EQ(r.exitCode, 1);
 }
 
@@ -137,8 +139,9 @@ TEST(CliMatch, AMaskOfAnotherSizeIsNamed) {
     const Scene& s = scene();
     const std::string mask = s.dir + "/small-mask.png";
     lut::formats::writeImage(mask, lut::Image(10, 10, 1.0f), lut::formats::ImageWriteOptions(8));
-    const auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " +
-                          q(s.dir + "/masked.cube") + " -y --mask-source " + q(mask));
+    const auto r =
+        runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+               shellQuoted(s.dir + "/masked.cube") + " -y --mask-source " + shellQuoted(mask));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("sample_scene.png: the mask is 10x10"));
 }
@@ -154,8 +157,9 @@ TEST(CliMatch, AMaskLeavesPixelsOut) {
             std::fill(mask.pixel(x, y), mask.pixel(x, y) + 4, 1.0f);
     const std::string path = s.dir + "/sky-mask.png";
     lut::formats::writeImage(path, mask, lut::formats::ImageWriteOptions(8));
-    const auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " +
-                          q(s.dir + "/sky.cube") + " -y --json --mask-source " + q(path));
+    const auto r =
+        runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+               shellQuoted(s.dir + "/sky.cube") + " -y --json --mask-source " + shellQuoted(path));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("\"source_counted\": " + std::to_string(20 * w)));
 }
@@ -163,8 +167,9 @@ TEST(CliMatch, AMaskLeavesPixelsOut) {
 TEST(CliMatch, ReportPictureAndTheGamesLut) {
     const Scene& s = scene();
     const std::string png = s.dir + "/report.png", game = s.dir + "/color_grading_lut.nutexb";
-    const auto r = runCli("match " + q(s.source) + " " + q(s.reference) + " " + q(game) +
-                          " -y --method hm-mkl-hm --report-image " + q(png));
+    const auto r =
+        runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+               shellQuoted(game) + " -y --method hm-mkl-hm --report-image " + shellQuoted(png));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("in game"));
     const auto pic = lut::formats::readImage(png);

@@ -19,9 +19,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 } // namespace
 
@@ -40,7 +38,7 @@ TEST(CliNeutral, DefaultSizesPerFormat) {
     };
     for (const auto& c : cases) {
         const std::string path = dir + "/" + c.file;
-        const auto r = runCli("neutral " + q(path));
+        const auto r = runCli("neutral " + shellQuoted(path));
         ASSERT_EQ(r.exitCode, 0) << c.file << ": " << r.err;
         const lut::LutFile f = lut::formats::readLut(path);
         ASSERT_TRUE(f.cube) << c.file;
@@ -51,12 +49,12 @@ TEST(CliNeutral, DefaultSizesPerFormat) {
 
 TEST(CliNeutral, SizeAndUsage) {
     const std::string dir = workDir();
-    ASSERT_EQ(runCli("neutral --size 2 " + q(dir + "/two.cube")).exitCode, 0);
+    ASSERT_EQ(runCli("neutral --size 2 " + shellQuoted(dir + "/two.cube")).exitCode, 0);
     const lut::LutFile f = lut::formats::readLut(dir + "/two.cube");
     EXPECT_EQ(f.cube->size(), 2);
     EXPECT_TRUE(f.cube->isIdentity(0.0f));
     EXPECT_EQ(runCli("neutral").exitCode, 2);
-    EXPECT_EQ(runCli("neutral --size 300 " + q(dir + "/x.cube")).exitCode, 2);
-    EXPECT_EQ(runCli("neutral " + q(dir + "/x.unknownext")).exitCode, 1);
+    EXPECT_EQ(runCli("neutral --size 300 " + shellQuoted(dir + "/x.cube")).exitCode, 2);
+    EXPECT_EQ(runCli("neutral " + shellQuoted(dir + "/x.unknownext")).exitCode, 1);
     EXPECT_FALSE(fs::exists(dir + "/x.cube"));
 }

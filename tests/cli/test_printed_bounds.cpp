@@ -28,9 +28,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 using Fn = std::function<glm::vec3(glm::vec3)>;
 
@@ -116,8 +114,8 @@ TEST(PrintedBounds, ComposeOfSteepTables) {
     const std::string b = writeCube(dir + "/b.cube", 9, randomTable(2));
     for (int size : {9, 17}) {
         const std::string out = dir + "/ab" + std::to_string(size) + ".cube";
-        const auto r = runCli("compose " + q(a) + " " + q(b) + " " + q(out) + " --size " +
-                              std::to_string(size));
+        const auto r = runCli("compose " + shellQuoted(a) + " " + shellQuoted(b) + " " +
+                              shellQuoted(out) + " --size " + std::to_string(size));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         std::vector<float> x = randomInputs(glm::vec3(0.0f), glm::vec3(1.0f)), y = x;
         ocioApply(ocioFileProcessor(a), x);
@@ -135,8 +133,8 @@ TEST(PrintedBounds, ResizeOfPosterisation) {
     const std::string src = writeCube(dir + "/p.cube", 33, posterise);
     for (int size : {9, 17, 24}) {
         const std::string out = dir + "/p" + std::to_string(size) + ".cube";
-        const auto r =
-            runCli("resize " + q(src) + " " + q(out) + " --size " + std::to_string(size));
+        const auto r = runCli("resize " + shellQuoted(src) + " " + shellQuoted(out) + " --size " +
+                              std::to_string(size));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         std::vector<float> x = randomInputs(glm::vec3(0.0f), glm::vec3(1.0f)), y = x;
         ocioApply(ocioFileProcessor(src), x);
@@ -147,14 +145,16 @@ TEST(PrintedBounds, ResizeOfPosterisation) {
     }
     // convert resamples the same way and prints the same kind of figure
     const std::string out = dir + "/p17.3dl";
-    const auto r = runCli("convert " + q(src) + " " + q(out) + " --size 17 --json");
+    const auto r =
+        runCli("convert " + shellQuoted(src) + " " + shellQuoted(out) + " --size 17 --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const double printed = jsonNumber(r.out, "max", r.out.find("\"resample\""));
     Fn identity = [](glm::vec3 v) { return v; };
     std::vector<float> x = randomInputs(glm::vec3(0.0f), glm::vec3(1.0f)), y = x;
     ocioApply(ocioFileProcessor(src), x);
     // the resampling alone: the 17^3 table before the 12-bit storage, as a float .cube
-    const auto f = runCli("resize " + q(src) + " " + q(dir + "/r17.cube") + " --size 17");
+    const auto f =
+        runCli("resize " + shellQuoted(src) + " " + shellQuoted(dir + "/r17.cube") + " --size 17");
     ASSERT_EQ(f.exitCode, 0) << f.err;
     ocioApply(ocioFileProcessor(dir + "/r17.cube"), y);
     const double truth = maxDifference(x, y);
@@ -173,7 +173,7 @@ TEST(PrintedBounds, InvertResidualAndRoundTrip) {
         return glm::vec3(t.r + bump, t.g - bump, t.b + 0.5f * bump);
     });
     const std::string inv = dir + "/inv.cube";
-    const auto r = runCli("invert " + q(a) + " " + q(inv) + " --size 9 --json");
+    const auto r = runCli("invert " + shellQuoted(a) + " " + shellQuoted(inv) + " --size 9 --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto pa = ocioFileProcessor(a), pi = ocioFileProcessor(inv);
     std::vector<float> y = randomInputs(glm::vec3(0.0f), glm::vec3(1.0f)), ay = y;
@@ -206,9 +206,9 @@ TEST(PrintedBounds, BakeFromAConfig) {
          {Case{"ACEScct", "Rec.709", 17}, Case{"ACEScct", "sRGB", 9}, Case{"ACEScg", "sRGB", 33}}) {
         const std::string name = std::string(c.in) + "_" + c.out + std::to_string(c.size);
         const std::string out = dir + "/" + name + ".cube";
-        const auto r =
-            runCli("bake --config " + q(cfg) + " --inputspace " + c.in + " --outputspace " + c.out +
-                   " --cubesize " + std::to_string(c.size) + " --json " + q(out));
+        const auto r = runCli("bake --config " + shellQuoted(cfg) + " --inputspace " + c.in +
+                              " --outputspace " + c.out + " --cubesize " + std::to_string(c.size) +
+                              " --json " + shellQuoted(out));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const double printed = jsonNumber(r.out, "max", r.out.find("\"error\""));
         glm::vec3 lo, hi;

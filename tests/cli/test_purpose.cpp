@@ -35,13 +35,8 @@ std::string workDir() {
     std::filesystem::create_directories(d);
     return d;
 }
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
-std::string bytesOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using lut::test::fileBytes;
+using lut::test::shellQuoted;
 bool has(const std::string& text, const std::string& what) {
     return text.find(what) != std::string::npos;
 }
@@ -135,7 +130,8 @@ TEST(CliPurpose, ConvertCopiesTheGamesLutAndCompensatesAnEditOnce) {
     const std::string dir = workDir();
     const Lut3D game = gameLut();
     writeTable(dir + "/game.cube", game, LutPurpose::Smash);
-    const auto c = runCli("convert " + q(dir + "/game.cube") + " " + q(dir + "/g.nutexb"));
+    const auto c =
+        runCli("convert " + shellQuoted(dir + "/game.cube") + " " + shellQuoted(dir + "/g.nutexb"));
     ASSERT_EQ(c.exitCode, 0) << c.err;
     EXPECT_TRUE(has(c.out, "in:  smash (the file says so: LUTKIT_PURPOSE smash)")) << c.out;
     EXPECT_FALSE(has(c.out, "exact composition")) << c.out;
@@ -143,29 +139,35 @@ TEST(CliPurpose, ConvertCopiesTheGamesLutAndCompensatesAnEditOnce) {
     // The same table untagged is taken as an edit, said with the flag that chooses, and made
     // into the game's LUT; --in-target smash copies it.
     writeTable(dir + "/plain.cube", game, std::nullopt);
-    const auto p = runCli("convert " + q(dir + "/plain.cube") + " " + q(dir + "/p.nutexb"));
+    const auto p = runCli("convert " + shellQuoted(dir + "/plain.cube") + " " +
+                          shellQuoted(dir + "/p.nutexb"));
     ASSERT_EQ(p.exitCode, 0) << p.err;
     EXPECT_TRUE(has(p.out, "in:  raw (the file does not say; --in-target smash if it is the "
                            "game's LUT)"))
         << p.out;
     EXPECT_TRUE(has(p.out, "exact composition")) << p.out;
     EXPECT_NE(formats::readLut(dir + "/p.nutexb").cube->entries(), game.entries());
-    ASSERT_EQ(runCli("convert " + q(dir + "/plain.cube") + " " + q(dir + "/s.nutexb") +
-                     " --in-target smash")
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/plain.cube") + " " +
+                     shellQuoted(dir + "/s.nutexb") + " --in-target smash")
                   .exitCode,
               0);
     EXPECT_EQ(formats::readLut(dir + "/s.nutexb").cube->entries(), game.entries());
     // a .cube written from the game's LUT says so; from an edit that did not say, nothing
-    ASSERT_EQ(runCli("convert " + q(dir + "/g.nutexb") + " " + q(dir + "/back.cube")).exitCode, 0);
+    ASSERT_EQ(
+        runCli("convert " + shellQuoted(dir + "/g.nutexb") + " " + shellQuoted(dir + "/back.cube"))
+            .exitCode,
+        0);
     EXPECT_EQ(formats::readLut(dir + "/back.cube").purpose, LutPurpose::Smash);
-    ASSERT_EQ(runCli("convert " + q(dir + "/plain.cube") + " " + q(dir + "/plain2.cube")).exitCode,
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/plain.cube") + " " +
+                     shellQuoted(dir + "/plain2.cube"))
+                  .exitCode,
               0);
     EXPECT_EQ(formats::readLut(dir + "/plain2.cube").purpose, std::nullopt);
     // a bad name is bad usage
-    EXPECT_EQ(
-        runCli("convert " + q(dir + "/plain.cube") + " " + q(dir + "/x.cube") + " --in-target game")
-            .exitCode,
-        2);
+    EXPECT_EQ(runCli("convert " + shellQuoted(dir + "/plain.cube") + " " +
+                     shellQuoted(dir + "/x.cube") + " --in-target game")
+                  .exitCode,
+              2);
 }
 
 // smash -> raw: the edit the game's LUT makes; the printed max is not below the truth at 200,000
@@ -174,8 +176,8 @@ TEST(CliPurpose, TheEditOfTheGamesLutIsBoundedByWhatConvertPrints) {
     const std::string dir = workDir();
     const Lut3D game = gameLut();
     writeTable(dir + "/g.nutexb", game, std::nullopt);
-    const auto c = runCli("convert " + q(dir + "/g.nutexb") + " " + q(dir + "/edit.cube") +
-                          " --target raw --json");
+    const auto c = runCli("convert " + shellQuoted(dir + "/g.nutexb") + " " +
+                          shellQuoted(dir + "/edit.cube") + " --target raw --json");
     ASSERT_EQ(c.exitCode, 0) << c.err;
     std::smatch m;
     const std::regex re("\"sampling\": \\{\"max\": ([0-9.e+-]+)");
@@ -211,8 +213,8 @@ TEST(CliPurpose, ApplyAppliesTheGamesLutAsTheEditItMakes) {
     const Lut3D game = gameLut();
     writeTable(dir + "/g.nutexb", game, std::nullopt);
     const std::string in = randomPicture(dir + "/in.png", 96, 64);
-    const auto a =
-        runCli("apply --lut " + q(dir + "/g.nutexb") + " " + q(in) + " -o " + q(dir + "/out.png"));
+    const auto a = runCli("apply --lut " + shellQuoted(dir + "/g.nutexb") + " " + shellQuoted(in) +
+                          " -o " + shellQuoted(dir + "/out.png"));
     ASSERT_EQ(a.exitCode, 0) << a.err;
     EXPECT_TRUE(has(a.err, "is smash (a .nutexb is the game's LUT): used as an edit")) << a.err;
     const double printed = printedMax(a.err);
@@ -229,11 +231,11 @@ TEST(CliPurpose, ApplyAppliesTheGamesLutAsTheEditItMakes) {
         }
     EXPECT_LE(worst, printed + 0.5 + 1e-3);
     // --lut-target raw: the table as it is (far from the game's picture)
-    ASSERT_EQ(runCli("apply --lut " + q(dir + "/g.nutexb") + " --lut-target raw " + q(in) + " -o " +
-                     q(dir + "/raw.png"))
+    ASSERT_EQ(runCli("apply --lut " + shellQuoted(dir + "/g.nutexb") + " --lut-target raw " +
+                     shellQuoted(in) + " -o " + shellQuoted(dir + "/raw.png"))
                   .exitCode,
               0);
-    EXPECT_NE(bytesOf(dir + "/raw.png"), bytesOf(dir + "/out.png"));
+    EXPECT_NE(fileBytes(dir + "/raw.png"), fileBytes(dir + "/out.png"));
 }
 
 // preview --lut EDIT is preview --lut (the .nutexb convert writes from EDIT): one conversion.
@@ -241,16 +243,18 @@ TEST(CliPurpose, PreviewOfAnEditIsPreviewOfTheNutexbConvertWrites) {
     const std::string dir = workDir();
     writeTable(dir + "/look.cube", look(17), std::nullopt);
     const std::string shot = randomPicture(dir + "/shot.png", 64, 40);
-    ASSERT_EQ(runCli("convert " + q(dir + "/look.cube") + " " + q(dir + "/look.nutexb")).exitCode,
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/look.cube") + " " +
+                     shellQuoted(dir + "/look.nutexb"))
+                  .exitCode,
               0);
-    const auto a = runCli("preview " + q(shot) + " -o " + q(dir + "/a.png") + " --lut " +
-                          q(dir + "/look.cube"));
+    const auto a = runCli("preview " + shellQuoted(shot) + " -o " + shellQuoted(dir + "/a.png") +
+                          " --lut " + shellQuoted(dir + "/look.cube"));
     ASSERT_EQ(a.exitCode, 0) << a.err;
     EXPECT_TRUE(has(a.err, "is raw (the file does not say; --lut-target smash if it is the "
                            "game's LUT): used as the game's LUT"))
         << a.err;
-    const auto b = runCli("preview " + q(shot) + " -o " + q(dir + "/b.png") + " --lut " +
-                          q(dir + "/look.nutexb"));
+    const auto b = runCli("preview " + shellQuoted(shot) + " -o " + shellQuoted(dir + "/b.png") +
+                          " --lut " + shellQuoted(dir + "/look.nutexb"));
     ASSERT_EQ(b.exitCode, 0) << b.err;
     EXPECT_EQ(formats::readImage(dir + "/a.png").image.pixels(),
               formats::readImage(dir + "/b.png").image.pixels());
@@ -262,34 +266,38 @@ TEST(CliPurpose, ComposeMixResizeInfoAndExtractHonourIt) {
     writeTable(dir + "/stage.nutexb", game, std::nullopt);
     writeTable(dir + "/look.cube", look(17), LutPurpose::Raw);
     // compose: the look on the stage's picture is convert --original-lut stage
-    const auto c = runCli("compose " + q(dir + "/stage.nutexb") + " " + q(dir + "/look.cube") +
-                          " " + q(dir + "/new.nutexb"));
+    const auto c = runCli("compose " + shellQuoted(dir + "/stage.nutexb") + " " +
+                          shellQuoted(dir + "/look.cube") + " " + shellQuoted(dir + "/new.nutexb"));
     ASSERT_EQ(c.exitCode, 0) << c.err;
     EXPECT_TRUE(has(c.out, "OUT: smash")) << c.out;
-    ASSERT_EQ(runCli("convert " + q(dir + "/look.cube") + " " + q(dir + "/conv.nutexb") +
-                     " --original-lut " + q(dir + "/stage.nutexb"))
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/look.cube") + " " +
+                     shellQuoted(dir + "/conv.nutexb") + " --original-lut " +
+                     shellQuoted(dir + "/stage.nutexb"))
                   .exitCode,
               0);
-    EXPECT_EQ(bytesOf(dir + "/new.nutexb"), bytesOf(dir + "/conv.nutexb"));
+    EXPECT_EQ(fileBytes(dir + "/new.nutexb"), fileBytes(dir + "/conv.nutexb"));
     // mix: both made for the result's purpose (A's: smash), the result says so
-    const auto m = runCli("mix " + q(dir + "/stage.nutexb") + " " + q(dir + "/look.cube") + " " +
-                          q(dir + "/mixed.cube") + " --strength 0.5");
+    const auto m =
+        runCli("mix " + shellQuoted(dir + "/stage.nutexb") + " " + shellQuoted(dir + "/look.cube") +
+               " " + shellQuoted(dir + "/mixed.cube") + " --strength 0.5");
     ASSERT_EQ(m.exitCode, 0) << m.err;
     EXPECT_TRUE(has(m.out, "convert  B: raw -> smash")) << m.out;
     EXPECT_EQ(formats::readLut(dir + "/mixed.cube").purpose, LutPurpose::Smash);
     // resize keeps what the LUT is for
-    ASSERT_EQ(runCli("resize " + q(dir + "/mixed.cube") + " " + q(dir + "/r.cube") + " --size 33")
+    ASSERT_EQ(runCli("resize " + shellQuoted(dir + "/mixed.cube") + " " +
+                     shellQuoted(dir + "/r.cube") + " --size 33")
                   .exitCode,
               0);
     EXPECT_EQ(formats::readLut(dir + "/r.cube").purpose, LutPurpose::Smash);
     // info says it, as text and JSON
-    const auto i = runCli("info " + q(dir + "/r.cube"));
+    const auto i = runCli("info " + shellQuoted(dir + "/r.cube"));
     EXPECT_TRUE(has(i.out, "purpose     smash (the file says so: LUTKIT_PURPOSE smash)")) << i.out;
-    const auto j = runCli("info " + q(dir + "/look.cube") + " --json");
+    const auto j = runCli("info " + shellQuoted(dir + "/look.cube") + " --json");
     EXPECT_TRUE(has(j.out, "\"purpose\": \"raw\", \"purpose_source\": \"file\"")) << j.out;
     // extract of a graded strip that says it is the game's: copied, still the game's
     writeTable(dir + "/final.png", game, LutPurpose::Smash);
-    const auto x = runCli("extract " + q(dir + "/final.png") + " " + q(dir + "/x.nutexb"));
+    const auto x =
+        runCli("extract " + shellQuoted(dir + "/final.png") + " " + shellQuoted(dir + "/x.nutexb"));
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_EQ(formats::readLut(dir + "/x.nutexb").cube->entries(), game.entries());
 }
@@ -301,13 +309,15 @@ TEST(CliPurpose, ComposeNamesTheStageOfItsConversion) {
     writeTable(dir + "/stage.nutexb", gameLut(), std::nullopt);
     writeTable(dir + "/look.cube", look(17), LutPurpose::Raw);
     writeTable(dir + "/look2.cube", look(9), LutPurpose::Raw);
-    const auto staged = runCli("compose " + q(dir + "/stage.nutexb") + " " + q(dir + "/look.cube") +
-                               " " + q(dir + "/s.nutexb"));
+    const auto staged =
+        runCli("compose " + shellQuoted(dir + "/stage.nutexb") + " " +
+               shellQuoted(dir + "/look.cube") + " " + shellQuoted(dir + "/s.nutexb"));
     ASSERT_EQ(staged.exitCode, 0) << staged.err;
     EXPECT_TRUE(has(staged.out, "convert  B on A's picture: raw -> smash")) << staged.out;
     EXPECT_TRUE(has(staged.out, "(stage LUT: " + dir + "/stage.nutexb;")) << staged.out;
-    const auto neutral = runCli("compose " + q(dir + "/look.cube") + " " + q(dir + "/look2.cube") +
-                                " " + q(dir + "/n.nutexb"));
+    const auto neutral =
+        runCli("compose " + shellQuoted(dir + "/look.cube") + " " +
+               shellQuoted(dir + "/look2.cube") + " " + shellQuoted(dir + "/n.nutexb"));
     ASSERT_EQ(neutral.exitCode, 0) << neutral.err;
     EXPECT_TRUE(has(neutral.out, "convert  result: raw -> smash")) << neutral.out;
     EXPECT_TRUE(has(neutral.out, "(stage LUT: neutral;")) << neutral.out;

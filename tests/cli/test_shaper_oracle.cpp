@@ -43,9 +43,7 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 // The log2 shaper: (log2(x) + 8) / 14 clamped to [0, 1], 4096 entries over 0..64, then a warm
 // tone-mapped grade of the linear value the shaper stands for, 33^3 (no TITLE: OpenColorIO's
@@ -135,7 +133,8 @@ TEST(ShaperOracle, ApplyEqualsOcioOnFloatImages) {
     formats::ImageWriteOptions wo(32, false, false);
     formats::writeImage(dir + "/in.exr", img, wo);
     const RunResult r =
-        runCli("apply --lut " + q(cube) + " " + q(dir + "/in.exr") + " -o " + q(dir + "/out.exr"));
+        runCli("apply --lut " + shellQuoted(cube) + " " + shellQuoted(dir + "/in.exr") + " -o " +
+               shellQuoted(dir + "/out.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     int w = 0, h = 0;
     const std::vector<float> got = readRgb(dir + "/out.exr", w, h);
@@ -171,10 +170,11 @@ TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
             p[3] = 1.0f;
         }
     formats::writeImage(dir + "/scene.exr", img, formats::ImageWriteOptions(32, false, false));
-    const RunResult r = runCli("preview " + q(dir + "/scene.exr") + " -o " + q(dir + "/p.exr") +
-                               " --preset none --enable lut --disable display --interp "
-                               "tetrahedral --lut " +
-                               q(cube));
+    const RunResult r =
+        runCli("preview " + shellQuoted(dir + "/scene.exr") + " -o " + shellQuoted(dir + "/p.exr") +
+               " --preset none --enable lut --disable display --interp "
+               "tetrahedral --lut " +
+               shellQuoted(cube));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     int w = 0, h = 0;
     const std::vector<float> got = readRgb(dir + "/p.exr", w, h);
@@ -199,7 +199,8 @@ TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
     // + (unclipped - shown), at least 0), clamped to [0,1] and rounded to 8 bits.
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
-    const RunResult r = runCli("convert " + q(cube) + " " + q(dir + "/game.nutexb"));
+    const RunResult r =
+        runCli("convert " + shellQuoted(cube) + " " + shellQuoted(dir + "/game.nutexb"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const LutFile back = formats::readLut(dir + "/game.nutexb");
     ASSERT_TRUE(back.cube);
@@ -239,7 +240,7 @@ TEST(ShaperOracle, InverseResidualWithinThePrintedBound) {
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
     const std::string inv = dir + "/inverse.cube";
-    const RunResult r = runCli("invert " + q(cube) + " " + q(inv));
+    const RunResult r = runCli("invert " + shellQuoted(cube) + " " + shellQuoted(inv));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_THAT(r.out, HasSubstr("between the inverse's lattice points"));
     const double printed = numberAfter(r.out.substr(r.out.find("between  ")), ": max ");
@@ -267,7 +268,8 @@ TEST(ShaperOracle, LutImageSampledFromTheExactFile) {
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
     const std::string strip = dir + "/strip.exr";
-    const RunResult r = runCli("convert " + q(cube) + " " + q(strip) + " --size 17 --target raw");
+    const RunResult r = runCli("convert " + shellQuoted(cube) + " " + shellQuoted(strip) +
+                               " --size 17 --target raw");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_THAT(r.out + r.err, HasSubstr("sampled at a 17^3 lattice over 0..1"));
     const std::string all = r.out + r.err;
@@ -343,12 +345,33 @@ TEST(ShaperOracle, OriginalLutWithAShaperSaysWhatSamplingCost) {
             p[3] = 1.0f;
         }
     formats::writeImage(dir + "/shot.png", shot, formats::ImageWriteOptions(8, false, false));
-    const RunResult r = runCli("preview " + q(dir + "/shot.png") + " -o " + q(dir + "/p.png") +
-                               " --original-lut " + q(cube));
+    const RunResult r =
+        runCli("preview " + shellQuoted(dir + "/shot.png") + " -o " + shellQuoted(dir + "/p.png") +
+               " --original-lut " + shellQuoted(cube));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.err, HasSubstr("sampled at the game's 16^3 lattice over [0,1]"));
     EXPECT_THAT(r.err, HasSubstr("inputs between lattice points"));
 }
+
+namespace {
+
+// The largest difference between two OpenColorIO processors over random inputs in the shaper's
+// range 0..64 (inputs neither file's lattice was built on).
+double largestDifference(const OCIO::ConstCPUProcessorRcPtr& p,
+                         const OCIO::ConstCPUProcessorRcPtr& q, int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 64.0f);
+    double worst = 0;
+    for (int k = 0; k < count; ++k) {
+        const glm::vec3 x(u(rng), u(rng), u(rng));
+        const glm::vec3 a = ocioEval(p, x), b = ocioEval(q, x);
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::fabs(double(a[c]) - b[c]));
+    }
+    return worst;
+}
+
+} // namespace
 
 // A titled Resolve file (lutkit reads the TITLE; OpenColorIO's Resolve reader refuses it):
 // convert keeps the shaper and the title, as a comment, so OpenColorIO reads what lutkit wrote
@@ -364,7 +387,7 @@ TEST(ShaperOracle, TitledShaperCubeWrittenSoOcioReadsIt) {
         out << "TITLE \"warm log grade\"\n" << in.rdbuf();
     }
     const std::string out = dir + "/out.cube";
-    const RunResult r = runCli("convert " + q(titled) + " " + q(out));
+    const RunResult r = runCli("convert " + shellQuoted(titled) + " " + shellQuoted(out));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::ifstream written(out);
     const std::string text((std::istreambuf_iterator<char>(written)), {});
@@ -373,16 +396,7 @@ TEST(ShaperOracle, TitledShaperCubeWrittenSoOcioReadsIt) {
     const auto want = ocioFileProcessor(plain);
     OCIO::ConstCPUProcessorRcPtr got;
     ASSERT_NO_THROW(got = ocioFileProcessor(out)) << text.substr(0, 200);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<float> u(0.0f, 64.0f);
-    double worst = 0;
-    for (int k = 0; k < 5000; ++k) {
-        const glm::vec3 x(u(rng), u(rng), u(rng));
-        const glm::vec3 a = ocioEval(want, x), b = ocioEval(got, x);
-        for (int c = 0; c < 3; ++c)
-            worst = std::max(worst, std::fabs(double(a[c]) - b[c]));
-    }
-    EXPECT_LT(worst, 1e-6);
+    EXPECT_LT(largestDifference(want, got, 5000, 5), 1e-6);
 }
 
 // --format iridas_cube (OpenColorIO's baker name for the Adobe dialect, which has no shaper):
@@ -394,7 +408,8 @@ TEST(ShaperOracle, IridasCubeBakesTheShaperWithinThePrintedError) {
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
     const std::string out = dir + "/adobe.cube";
-    const RunResult r = runCli("convert " + q(cube) + " " + q(out) + " --format iridas_cube");
+    const RunResult r =
+        runCli("convert " + shellQuoted(cube) + " " + shellQuoted(out) + " --format iridas_cube");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::ifstream written(out);
     const std::string text((std::istreambuf_iterator<char>(written)), {});
@@ -405,14 +420,6 @@ TEST(ShaperOracle, IridasCubeBakesTheShaperWithinThePrintedError) {
     ASSERT_TRUE(std::isfinite(printed)) << all;
     const auto src = ocioFileProcessor(cube);
     const auto got = ocioFileProcessor(out);
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<float> u(0.0f, 64.0f);
-    double truth = 0;
-    for (int k = 0; k < 20000; ++k) {
-        const glm::vec3 x(u(rng), u(rng), u(rng));
-        const glm::vec3 a = ocioEval(src, x), b = ocioEval(got, x);
-        for (int c = 0; c < 3; ++c)
-            truth = std::max(truth, std::fabs(double(a[c]) - b[c]));
-    }
+    const double truth = largestDifference(src, got, 20000, 11);
     EXPECT_GE(printed * 1.0001 + 1e-6, truth) << all;
 }

@@ -31,16 +31,9 @@ std::string workDir() {
     return d;
 }
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using lut::test::fileBytes;
 
 // A small curved .cube of edge n.
 std::string writeCube(const std::string& path, int n, float gamma) {
@@ -75,7 +68,7 @@ Inputs makeInputs() {
     in.shot = in.dir + "/shot.png";
     formats::writeImage(in.shot, shot, formats::ImageWriteOptions(8, false, false));
     in.strip = in.dir + "/neutral.png";
-    EXPECT_EQ(runCli("neutral " + q(in.strip)).exitCode, 0);
+    EXPECT_EQ(runCli("neutral " + shellQuoted(in.strip)).exitCode, 0);
     in.adjustments = in.dir + "/adj.txt";
     std::ofstream(in.adjustments) << "# lutkit adjustment list 1\ncontrast 0.2\n";
     return in;
@@ -89,7 +82,7 @@ struct Row {
 };
 
 std::vector<Row> rows(const Inputs& in) {
-    const std::string a = q(in.a), b = q(in.b);
+    const std::string a = shellQuoted(in.a), b = shellQuoted(in.b);
     return {
         {"neutral", "neutral - --format cube --size 5", false, "wrote"},
         {"convert", "convert " + a + " - --format cube", false, "wrote"},
@@ -99,19 +92,23 @@ std::vector<Row> rows(const Inputs& in) {
         {"resize", "resize " + a + " - --size 5 --format cube", false, "wrote"},
         {"smooth", "smooth " + a + " - --format cube", false, "wrote"},
         {"mix", "mix " + a + " " + b + " - --strength 0.5 --format cube", false, "wrote"},
-        {"adjust", "adjust " + a + " --adjustments " + q(in.adjustments) + " - --format cube",
+        {"adjust",
+         "adjust " + a + " --adjustments " + shellQuoted(in.adjustments) + " - --format cube",
          false, "wrote"},
-        {"extract", "extract " + q(in.strip) + " - --format cube --target raw", false, "wrote"},
-        {"fit", "fit " + q(in.shot) + " " + q(in.shot) + " - --format cube", false, "wrote"},
+        {"extract", "extract " + shellQuoted(in.strip) + " - --format cube --target raw", false,
+         "wrote"},
+        {"fit", "fit " + shellQuoted(in.shot) + " " + shellQuoted(in.shot) + " - --format cube",
+         false, "wrote"},
         {"bake", "bake - --lut " + a + " --format resolve_cube --cubesize 9", false, "error"},
         {"bake-json", "bake - --lut " + a + " --format resolve_cube --cubesize 9 --json", false,
          "\"error\""},
         {"plot", "plot " + a + " - --format png", true, "wrote"},
-        {"embed", "embed " + q(in.shot) + " - --format png", true, "embedded"},
+        {"embed", "embed " + shellQuoted(in.shot) + " - --format png", true, "embedded"},
         {"diff-heatmap", "diff " + a + " " + b + " --heatmap - --format png", true, "ΔE"},
-        {"apply", "apply --lut " + a + " " + q(in.shot) + " -o - --format png -v", true, "->"},
-        {"preview", "preview " + q(in.shot) + " -o - --format png --lut " + a + " -v", true,
-         "screenshot"},
+        {"apply", "apply --lut " + a + " " + shellQuoted(in.shot) + " -o - --format png -v", true,
+         "->"},
+        {"preview", "preview " + shellQuoted(in.shot) + " -o - --format png --lut " + a + " -v",
+         true, "screenshot"},
     };
 }
 
@@ -126,15 +123,15 @@ TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
         const std::string reader = in.dir + "/" + row.name + ".read";
         // The command's stdout piped into the reader, as a user would.
         const std::string cli = std::string("'") + LUTKIT_CLI + "'";
-        const std::string cmd =
-            "set -o pipefail; " + cli + " " + row.args + " 2>" + q(err) + " </dev/null | tee " +
-            q(data) +
-            (row.image ? " >/dev/null"
-                       : " | " + cli + " info - --in-format cube >" + q(reader) + " 2>&1");
-        const int status = std::system(("bash -c " + q(cmd)).c_str());
-        EXPECT_EQ(status, 0) << slurp(err) << slurp(reader);
-        EXPECT_THAT(slurp(err), HasSubstr(row.report)) << "the report on stderr";
-        const std::string bytes = slurp(data);
+        const std::string cmd = "set -o pipefail; " + cli + " " + row.args + " 2>" +
+                                shellQuoted(err) + " </dev/null | tee " + shellQuoted(data) +
+                                (row.image ? " >/dev/null"
+                                           : " | " + cli + " info - --in-format cube >" +
+                                                 shellQuoted(reader) + " 2>&1");
+        const int status = std::system(("bash -c " + shellQuoted(cmd)).c_str());
+        EXPECT_EQ(status, 0) << fileBytes(err) << fileBytes(reader);
+        EXPECT_THAT(fileBytes(err), HasSubstr(row.report)) << "the report on stderr";
+        const std::string bytes = fileBytes(data);
         ASSERT_FALSE(bytes.empty());
         if (row.image) {
             ASSERT_GE(bytes.size(), 8u);
@@ -148,7 +145,7 @@ TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
                 img->read_image(0, 0, 0, img->spec().nchannels, OIIO::TypeDesc::UINT8, px.data()));
             EXPECT_EQ(bytes.find("wrote"), std::string::npos);
         } else {
-            EXPECT_THAT(slurp(reader), HasSubstr("cube")) << "lutkit info - read it";
+            EXPECT_THAT(fileBytes(reader), HasSubstr("cube")) << "lutkit info - read it";
             EXPECT_EQ(bytes.rfind("LUT_", 0) == 0 || bytes.rfind("TITLE", 0) == 0 ||
                           bytes.rfind("#", 0) == 0,
                       true)
@@ -161,7 +158,7 @@ TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
 
 TEST(StdoutOutputs, DevStdoutIsStandardOutputToo) {
     const Inputs in = makeInputs();
-    const RunResult r = runCli("convert " + q(in.a) + " /dev/stdout --format cube");
+    const RunResult r = runCli("convert " + shellQuoted(in.a) + " /dev/stdout --format cube");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out.substr(0, 200);
     EXPECT_THAT(r.err, HasSubstr("wrote"));
@@ -173,7 +170,8 @@ TEST(StdoutOutputs, DevStdoutIsStandardOutputToo) {
 
 TEST(StdoutOutputs, AFileOutputKeepsItsReportOnStdout) {
     const Inputs in = makeInputs();
-    const RunResult r = runCli("convert " + q(in.a) + " " + q(in.dir + "/x.cube"));
+    const RunResult r =
+        runCli("convert " + shellQuoted(in.a) + " " + shellQuoted(in.dir + "/x.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("wrote"));
     EXPECT_EQ(r.err.find("wrote"), std::string::npos);

@@ -23,12 +23,7 @@ using namespace lut::formats;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using lut::test::fileBytes;
 
 bool sameBits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
     return a.size() == b.size() &&
@@ -204,7 +199,7 @@ TEST(CubeWrite, AtomicFileAndRegistry) {
     EXPECT_EQ(files, 1);
     // A failed write leaves the old file alone.
     EXPECT_THROW(writeCube(dir + "/no/such/dir/x.cube", f), Error);
-    EXPECT_EQ(slurp(path).substr(0, 11), "LUT_3D_SIZE");
+    EXPECT_EQ(fileBytes(path).substr(0, 11), "LUT_3D_SIZE");
 }
 
 // OpenColorIO reads the file we wrote; its tetrahedral processor must agree with our reading of

@@ -34,10 +34,7 @@ Image pattern(int w, int h) {
     return img;
 }
 
-std::string bytesOf(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
+using lut::test::fileBytes;
 
 } // namespace
 
@@ -87,7 +84,7 @@ TEST(ImageProgress, ACancelledWriteLeavesTheOldFileAndNoTemporaryFile) {
     const std::string dir = lut::test::tempDir();
     const std::string path = dir + "/out.png";
     writeImage(path, pattern(64, 64), ImageWriteOptions(8, false, false));
-    const std::string old = bytesOf(path);
+    const std::string old = fileBytes(path);
     std::vector<double> seen;
     Progress p([&](double f) {
         seen.push_back(f);
@@ -97,7 +94,7 @@ TEST(ImageProgress, ACancelledWriteLeavesTheOldFileAndNoTemporaryFile) {
     ImageWriteOptions o(8, false, false);
     o.progress = &p;
     EXPECT_THROW(writeImage(path, pattern(1024, 2048), o), CancelledError);
-    EXPECT_EQ(bytesOf(path), old);
+    EXPECT_EQ(fileBytes(path), old);
     for (const auto& e : fs::directory_iterator(dir))
         EXPECT_EQ(e.path().filename().string(), "out.png") << "left behind: " << e.path();
     // Not cancelled: reports up to 1 and writes the picture.

@@ -88,12 +88,7 @@ std::string sha256Hex(const std::string& msg) {
     return std::string(out, 64);
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using lut::test::fileBytes;
 
 void put32(std::string& s, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i)
@@ -150,7 +145,7 @@ TEST(Sha256, KnownVectors) {
 
 TEST(Nutexb, SpecBuiltNeutralHasReferenceHash) {
     EXPECT_EQ(sha256Hex(referenceNeutral16()), kReferenceSha);
-    EXPECT_EQ(slurp(dataPath("nutexb/neutral16.nutexb")), referenceNeutral16());
+    EXPECT_EQ(fileBytes(dataPath("nutexb/neutral16.nutexb")), referenceNeutral16());
 }
 
 TEST(Nutexb, WriterNeutral16IsByteIdenticalToReference) {
@@ -165,7 +160,7 @@ TEST(Nutexb, RegisteredFormatWritesReferenceFileByDefault) {
     lut::LutFile f;
     f.cube = lut::Lut3D::identity(33); // resampled to the default 16^3
     const auto diags = lut::formats::writeLut(out, f);
-    EXPECT_EQ(sha256Hex(slurp(out)), kReferenceSha);
+    EXPECT_EQ(sha256Hex(fileBytes(out)), kReferenceSha);
     bool saysResampled = false;
     for (const auto& d : diags)
         saysResampled |= d.message.find("33^3 -> 16^3") != std::string::npos;
@@ -219,8 +214,8 @@ TEST(Nutexb, WritesLinearTiledAndNameLikeTheIndependentBuilder) {
                 const auto e = graded(x, y, z);
                 lut.at(x, y, z) = glm::vec3(e[0] / 255.0f, e[1] / 255.0f, e[2] / 255.0f);
             }
-    EXPECT_EQ(nx::writeBytes(lut, "", true), slurp(dataPath("nutexb/graded4_tiled.nutexb")));
-    EXPECT_EQ(nx::writeBytes(lut, "", false), slurp(dataPath("nutexb/graded4_linear.nutexb")));
+    EXPECT_EQ(nx::writeBytes(lut, "", true), fileBytes(dataPath("nutexb/graded4_tiled.nutexb")));
+    EXPECT_EQ(nx::writeBytes(lut, "", false), fileBytes(dataPath("nutexb/graded4_linear.nutexb")));
 
     const std::string named = nx::writeBytes(lut, "my_stage_lut", true);
     const nx::Header h = nx::parseHeader(named, "mem");

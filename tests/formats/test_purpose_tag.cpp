@@ -31,10 +31,7 @@ std::string workDir() {
     return d;
 }
 
-std::string bytesOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using lut::test::fileBytes;
 
 void writeText(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
@@ -83,7 +80,7 @@ TEST(PurposeTag, CubeSaysItInACommentAndReadsItBack) {
     for (LutPurpose p : {LutPurpose::Raw, LutPurpose::Smash}) {
         const std::string path = dir + "/" + toString(p) + ".cube";
         formats::writeLut(path, tagged(p));
-        const std::string text = bytesOf(path);
+        const std::string text = fileBytes(path);
         EXPECT_EQ(text.rfind("# " + purposeTag(p) + "\n", 0), 0u) << text.substr(0, 80);
         const LutFile back = formats::readLut(path);
         EXPECT_EQ(back.purpose, p);
@@ -94,7 +91,7 @@ TEST(PurposeTag, CubeSaysItInACommentAndReadsItBack) {
     LutFile untagged;
     untagged.cube = warm(3);
     formats::writeLut(dir + "/none.cube", untagged);
-    EXPECT_EQ(bytesOf(dir + "/none.cube").find("LUTKIT_PURPOSE"), std::string::npos);
+    EXPECT_EQ(fileBytes(dir + "/none.cube").find("LUTKIT_PURPOSE"), std::string::npos);
     EXPECT_EQ(formats::readLut(dir + "/none.cube").purpose, std::nullopt);
     // A 1D-only file keeps it too (its comments are not kept).
     LutFile oneD;
@@ -160,7 +157,7 @@ TEST(PurposeTag, FfmpegReadsTheTaggedCube) {
     formats::writeLut(dir + "/tagged.cube", f);
     f.purpose.reset();
     formats::writeLut(dir + "/plain.cube", f);
-    ASSERT_NE(bytesOf(dir + "/tagged.cube"), bytesOf(dir + "/plain.cube"));
+    ASSERT_NE(fileBytes(dir + "/tagged.cube"), fileBytes(dir + "/plain.cube"));
     auto run = [&](const std::string& lut, const std::string& out) {
         return runCommand("ffmpeg -v error -y -f lavfi -i testsrc2=size=64x48:rate=1 -frames:v 1 "
                           "-vf \"format=rgb24,lut3d=file='" +
@@ -174,9 +171,9 @@ TEST(PurposeTag, FfmpegReadsTheTaggedCube) {
                               "-frames:v 1 -vf format=rgb24 -f rawvideo -pix_fmt rgb24 '" +
                               dir + "/none.rgb'");
     ASSERT_EQ(c.exitCode, 0) << c.err;
-    EXPECT_EQ(bytesOf(dir + "/tagged.rgb").size(), 64u * 48u * 3u);
-    EXPECT_EQ(bytesOf(dir + "/tagged.rgb"), bytesOf(dir + "/plain.rgb"));
-    EXPECT_NE(bytesOf(dir + "/tagged.rgb"), bytesOf(dir + "/none.rgb"));
+    EXPECT_EQ(fileBytes(dir + "/tagged.rgb").size(), 64u * 48u * 3u);
+    EXPECT_EQ(fileBytes(dir + "/tagged.rgb"), fileBytes(dir + "/plain.rgb"));
+    EXPECT_NE(fileBytes(dir + "/tagged.rgb"), fileBytes(dir + "/none.rgb"));
 }
 
 // LUT images say it in their description: PNG (8 and 16-bit, a tEXt "Description"), TIFF
@@ -229,7 +226,7 @@ TEST(PurposeTag, NutexbIsTheGamesAndOcioFormatsKeepTheTag) {
         SCOPED_TRACE(ext);
         const std::string path = dir + "/g" + ext;
         formats::writeLut(path, tagged(LutPurpose::Smash, 5));
-        EXPECT_NE(bytesOf(path).find("LUTKIT_PURPOSE smash"), std::string::npos);
+        EXPECT_NE(fileBytes(path).find("LUTKIT_PURPOSE smash"), std::string::npos);
         EXPECT_EQ(formats::readLut(path).purpose, LutPurpose::Smash);
     }
 }

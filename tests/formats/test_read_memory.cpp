@@ -15,12 +15,7 @@
 
 namespace {
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using lut::test::fileBytes;
 
 const lut::Format& format(const std::string& name) {
     lut::formats::registerBuiltinFormats();
@@ -49,7 +44,7 @@ TEST(ReadMemory, EveryWritableFormatRoundTripsThroughMemoryAsThroughAFile) {
         lut::FormatOptions o;
         f.write(filePath, src, o);
         const std::string bytes = f.writeMemory(src, "mem" + ext, o);
-        EXPECT_EQ(bytes, slurp(filePath)) << name << ": memory and file bytes differ";
+        EXPECT_EQ(bytes, fileBytes(filePath)) << name << ": memory and file bytes differ";
         const lut::LutFile a = r.read(filePath, o);
         const lut::LutFile b = r.readMemory(bytes, "mem" + ext, o);
         ASSERT_TRUE(a.cube && b.cube) << name;

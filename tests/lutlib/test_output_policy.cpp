@@ -19,10 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using lut::test::fileBytes;
 
 std::vector<std::string> names(const std::string& dir) {
     std::vector<std::string> n;
@@ -51,7 +48,7 @@ TEST(OutputPolicy, ExistingFilesNeedPermission) {
     const OutputTarget replace = checkOutput(out, ExistingOutput::Replace);
     EXPECT_FALSE(replace.skip);
     EXPECT_EQ(replace.kind, OutputKind::ExistingFile);
-    EXPECT_EQ(slurp(out), "old");
+    EXPECT_EQ(fileBytes(out), "old");
 }
 
 TEST(OutputPolicy, FoldersAndMissingFoldersAreRefused) {
@@ -78,7 +75,7 @@ TEST(OutputPolicy, InputsAreNeverOutputs) {
         EXPECT_THROW(checkOutput(dir + out, ExistingOutput::Replace, {"-", dir + "/grade.cube"}),
                      Error)
             << out;
-    EXPECT_EQ(slurp(lut), "LUT_3D_SIZE 2\n");
+    EXPECT_EQ(fileBytes(lut), "LUT_3D_SIZE 2\n");
 }
 
 TEST(OutputPolicy, SpecialFilesAreWrittenInPlace) {
@@ -107,22 +104,22 @@ TEST(OutputFile, RegularFilesAppearOnlyWhenCommitted) {
         OutputFile f(checkOutput(out, ExistingOutput::Replace));
         f.write("new", 3);
         f.pwrite("N", 1, 0);
-        EXPECT_EQ(slurp(out), "old bytes");
-        EXPECT_EQ(slurp(f.tempPath()), "New");
+        EXPECT_EQ(fileBytes(out), "old bytes");
+        EXPECT_EQ(fileBytes(f.tempPath()), "New");
     } // not committed
-    EXPECT_EQ(slurp(out), "old bytes");
+    EXPECT_EQ(fileBytes(out), "old bytes");
     EXPECT_EQ(names(dir), std::vector<std::string>{"out.bin"});
     {
         OutputFile f(checkOutput(out, ExistingOutput::Replace));
         f.write("new", 3);
         EXPECT_THROW(f.commit([](const std::string&) { throw Error("bad header"); }), Error);
     }
-    EXPECT_EQ(slurp(out), "old bytes");
+    EXPECT_EQ(fileBytes(out), "old bytes");
     EXPECT_EQ(names(dir), std::vector<std::string>{"out.bin"});
     OutputFile f(checkOutput(out, ExistingOutput::Replace));
     f.write("new", 3);
-    f.commit([](const std::string& temp) { EXPECT_EQ(slurp(temp), "new"); });
-    EXPECT_EQ(slurp(out), "new");
+    f.commit([](const std::string& temp) { EXPECT_EQ(fileBytes(temp), "new"); });
+    EXPECT_EQ(fileBytes(out), "new");
 }
 
 TEST(OutputFile, ALinkIsWrittenThrough) {
@@ -131,7 +128,7 @@ TEST(OutputFile, ALinkIsWrittenThrough) {
     fs::create_symlink("real.bin", dir + "/link.bin");
     writeOutputBytes(checkOutput(dir + "/link.bin", ExistingOutput::Replace), "new");
     EXPECT_TRUE(fs::is_symlink(dir + "/link.bin"));
-    EXPECT_EQ(slurp(dir + "/real.bin"), "new");
+    EXPECT_EQ(fileBytes(dir + "/real.bin"), "new");
 }
 
 TEST(OutputFile, AFullDeviceIsAnErrorNamingThePath) {

@@ -151,6 +151,42 @@ inline RefImg refSmashBloom(const RefImg& scene) {
     return up;
 }
 
+// Tetrahedral interpolation of a LUT over [0,1] in double (clamp to edge): the cube cell is cut
+// into six tetrahedra along its main diagonal, chosen by the order of the fractions.
+inline void refTetrahedral(const Lut3D& lut, const double in[3], double out[3]) {
+    const int n = lut.size();
+    int i[3];
+    double f[3];
+    for (int c = 0; c < 3; ++c) {
+        const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
+        i[c] = std::min(static_cast<int>(std::floor(t)), n - 2);
+        f[c] = t - i[c];
+    }
+    // Walk from corner 000 to 111 one axis at a time, largest fraction first.
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int a, int b) { return f[a] > f[b]; });
+    int corner[3] = {i[0], i[1], i[2]};
+    auto entry = [&](int k) {
+        const glm::vec3 v = lut.at(corner[0], corner[1], corner[2]);
+        return static_cast<double>(v[k]);
+    };
+    double acc[3], prev[3];
+    for (int k = 0; k < 3; ++k)
+        acc[k] = prev[k] = entry(k);
+    for (int step = 0; step < 3; ++step) {
+        const int axis = order[step];
+        const double w = f[axis];
+        corner[axis] += 1;
+        for (int k = 0; k < 3; ++k) {
+            const double v = entry(k);
+            acc[k] += w * (v - prev[k]);
+            prev[k] = v;
+        }
+    }
+    for (int k = 0; k < 3; ++k)
+        out[k] = acc[k];
+}
+
 // Plain trilinear of a LUT over [0,1], clamp to edge, in double.
 inline void refTrilinear(const Lut3D& lut, const double in[3], double out[3]) {
     const int n = lut.size();

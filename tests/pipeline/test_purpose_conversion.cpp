@@ -45,45 +45,6 @@ void gameShows(const Lut3D& g, const double s[3], double out[3]) {
     }
 }
 
-// Plain tetrahedral interpolation of a LUT over [0,1] (the six tetrahedra of a cube cell).
-void refTetrahedral(const Lut3D& lut, const double in[3], double out[3]) {
-    const int n = lut.size();
-    int i[3];
-    double f[3];
-    for (int c = 0; c < 3; ++c) {
-        const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
-        i[c] = std::min(static_cast<int>(std::floor(t)), n - 2);
-        f[c] = t - i[c];
-    }
-    auto at = [&](int dr, int dg, int db, int c) {
-        return double(lut.at(i[0] + dr, i[1] + dg, i[2] + db)[c]);
-    };
-    const double fr = f[0], fg = f[1], fb = f[2];
-    for (int c = 0; c < 3; ++c) {
-        const double c000 = at(0, 0, 0, c), c111 = at(1, 1, 1, c);
-        double v;
-        if (fr >= fg && fg >= fb)
-            v = c000 + fr * (at(1, 0, 0, c) - c000) + fg * (at(1, 1, 0, c) - at(1, 0, 0, c)) +
-                fb * (c111 - at(1, 1, 0, c));
-        else if (fr >= fb && fb >= fg)
-            v = c000 + fr * (at(1, 0, 0, c) - c000) + fb * (at(1, 0, 1, c) - at(1, 0, 0, c)) +
-                fg * (c111 - at(1, 0, 1, c));
-        else if (fb >= fr && fr >= fg)
-            v = c000 + fb * (at(0, 0, 1, c) - c000) + fr * (at(1, 0, 1, c) - at(0, 0, 1, c)) +
-                fg * (c111 - at(1, 0, 1, c));
-        else if (fg >= fr && fr >= fb)
-            v = c000 + fg * (at(0, 1, 0, c) - c000) + fr * (at(1, 1, 0, c) - at(0, 1, 0, c)) +
-                fb * (c111 - at(1, 1, 0, c));
-        else if (fg >= fb && fb >= fr)
-            v = c000 + fg * (at(0, 1, 0, c) - c000) + fb * (at(0, 1, 1, c) - at(0, 1, 0, c)) +
-                fr * (c111 - at(0, 1, 1, c));
-        else
-            v = c000 + fb * (at(0, 0, 1, c) - c000) + fg * (at(0, 1, 1, c) - at(0, 0, 1, c)) +
-                fr * (c111 - at(0, 1, 1, c));
-        out[c] = v;
-    }
-}
-
 // A steep game LUT: a hard contrast with a clamp, warm; 8-bit as a nutexb holds it.
 Lut3D steepGame() {
     Lut3D g(16);

@@ -29,9 +29,7 @@ constexpr bool kMemorySanitized = false;
 constexpr bool kMemorySanitized = false;
 #endif
 
-inline std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 // Runs a shell command, its output discarded; its exit status.
 inline int sh(const std::string& cmd) {
@@ -116,13 +114,14 @@ inline Measured runMeasured(const std::string& args, const std::string& dir,
                             const std::string& input = "/dev/null") {
     Measured m;
     const std::string timeFile = dir + "/time.txt", out = dir + "/run.out", err = dir + "/run.err";
-    const std::string cmd = "/usr/bin/time -f 'peak %M' -o " + q(timeFile) + " " + q(LUTKIT_CLI) +
-                            " " + args + " <" + q(input) + " >" + q(out) + " 2>" + q(err);
+    const std::string cmd = "/usr/bin/time -f 'peak %M' -o " + shellQuoted(timeFile) + " " +
+                            shellQuoted(LUTKIT_CLI) + " " + args + " <" + shellQuoted(input) +
+                            " >" + shellQuoted(out) + " 2>" + shellQuoted(err);
     const int status = std::system(cmd.c_str());
     m.run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    m.run.out = readBytes(out);
-    m.run.err = readBytes(err);
-    const std::string t = readBytes(timeFile);
+    m.run.out = fileBytes(out);
+    m.run.err = fileBytes(err);
+    const std::string t = fileBytes(timeFile);
     const auto at = t.rfind("peak ");
     m.peakMiB = at == std::string::npos ? -1.0 : std::atof(t.c_str() + at + 5) / 1024.0;
     return m;

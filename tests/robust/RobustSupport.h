@@ -19,10 +19,7 @@ inline void writeBytes(const std::string& path, std::string_view bytes) {
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
-inline std::string readBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using lut::test::fileBytes;
 
 // Replaces every occurrence of dir + "/" in text by "" (messages name the full path).
 inline std::string stripDir(std::string text, const std::string& dir) {

@@ -41,7 +41,7 @@ TEST(AtomicFile, CommitWithoutChecksReplacesTheFile) {
         f.write("new bytes");
         f.commit();
     }
-    EXPECT_EQ(readBytes(dir + "/a.txt"), "new bytes");
+    EXPECT_EQ(fileBytes(dir + "/a.txt"), "new bytes");
     EXPECT_EQ(listDir(dir), std::vector<std::string>{"a.txt"});
 }
 
@@ -56,7 +56,7 @@ TEST(AtomicFile, AVerifierThatRefusesKeepsTheOldFileAndNamesTheOutput) {
         f.commit([](const std::string& t) { throw lut::Error("\"" + t + "\" is not a PNG\n"); });
     });
     EXPECT_EQ(msg, dir + "/a.png: cannot write: \"" + dir + "/a.png\" is not a PNG");
-    EXPECT_EQ(readBytes(dir + "/a.png"), "old");
+    EXPECT_EQ(fileBytes(dir + "/a.png"), "old");
     EXPECT_FALSE(fs::exists(temp));
     EXPECT_EQ(listDir(dir), std::vector<std::string>{"a.png"});
 }
@@ -75,7 +75,7 @@ TEST(AtomicFile, AnEmptyOrShortFileIsRefused) {
                   f.commit({std::uint64_t{10}, {}});
               }),
               dir + "/a.cube: cannot write: only 5 of 10 bytes reached the file");
-    EXPECT_EQ(readBytes(dir + "/a.cube"), "old");
+    EXPECT_EQ(fileBytes(dir + "/a.cube"), "old");
     EXPECT_EQ(listDir(dir), std::vector<std::string>{"a.cube"});
 }
 
@@ -104,7 +104,7 @@ TEST(AtomicFile, WriteFileAtomicallyKeepsThePermissionsOfTheFileItReplaces) {
     fs::permissions(dir + "/p.cube", fs::perms::owner_read | fs::perms::owner_write |
                                          fs::perms::group_read | fs::perms::group_write);
     lut::writeFileAtomically(dir + "/p.cube", "new");
-    EXPECT_EQ(readBytes(dir + "/p.cube"), "new");
+    EXPECT_EQ(fileBytes(dir + "/p.cube"), "new");
     EXPECT_EQ(fs::status(dir + "/p.cube").permissions() & fs::perms::all,
               fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
                   fs::perms::group_write);
@@ -119,7 +119,7 @@ TEST(AtomicFile, LongOutputNamesWork) {
         SCOPED_TRACE(len);
         const std::string name = std::string(len - 5, 'n') + ".cube";
         lut::writeFileAtomically(dir + "/" + name, "bytes");
-        EXPECT_EQ(readBytes(dir + "/" + name), "bytes");
+        EXPECT_EQ(fileBytes(dir + "/" + name), "bytes");
         lut::AtomicFile f(dir + "/" + name);
         const std::string tempName = fs::path(f.tempPath()).filename().string();
         EXPECT_LE(tempName.size(), 255u);
@@ -174,7 +174,7 @@ TEST(AtomicFileInterrupt, TemporaryFilesInFlightAreRemovedAndNothingCommits) {
             ::_exit(gone && refused && refusedNew && lut::interruptSignal() == SIGINT ? 0 : 3);
         },
         ::testing::ExitedWithCode(0), "");
-    EXPECT_EQ(readBytes(dir + "/kept.cube"), "old");
+    EXPECT_EQ(fileBytes(dir + "/kept.cube"), "old");
     EXPECT_EQ(listDir(dir), std::vector<std::string>{"kept.cube"});
 }
 

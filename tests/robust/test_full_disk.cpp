@@ -20,9 +20,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 // A 33^3 LUT of random values: no writer can compress it into a few KiB.
 std::string randomCube() {
@@ -93,16 +91,16 @@ void checkFullDisk(const Case& c) {
                      " KiB free: " + c.command);
         writeBytes(out, old);
         disk.fill(freeKiB);
-        std::string args = fill(c.command, "OUT", q(out));
-        args = fill(args, "IN.cube", q(dir + "/in.cube"));
-        args = fill(args, "IN.png", q(dir + "/in.png"));
+        std::string args = fill(c.command, "OUT", shellQuoted(out));
+        args = fill(args, "IN.cube", shellQuoted(dir + "/in.cube"));
+        args = fill(args, "IN.png", shellQuoted(dir + "/in.png"));
         const auto r = disk.run(args);
         EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
         const auto lines = errorLines(r.err);
         ASSERT_EQ(lines.size(), 1u) << r.err;
         EXPECT_THAT(lines[0], HasSubstr(out + ": cannot write: No space left on device"));
         EXPECT_THAT(lines[0], ::testing::Not(HasSubstr(".tmp"))); // never the hidden name
-        EXPECT_EQ(readBytes(out), old);
+        EXPECT_EQ(fileBytes(out), old);
         EXPECT_EQ(disk.listing(), std::vector<std::string>{name});
     }
 }

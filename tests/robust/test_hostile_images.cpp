@@ -25,9 +25,10 @@ TEST(HostileImages, TiledOpenExrIsReadByTilesAndWrittenWithItsTiles) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:topleft=0.1,0.2,0.3:topright=0.9,0.5,0.1:bottomleft=0,1,0.5:"
              "bottomright=0.7,0.7,0.7 80x56 3 -d half --tile 32 32 --compression zip -o " +
-             q(dir + "/tiled.exr"));
-    const auto r = lut::test::runCli("apply --lut " + q(invertCube(dir)) + " " +
-                                     q(dir + "/tiled.exr") + " -o " + q(dir + "/out.exr"));
+             shellQuoted(dir + "/tiled.exr"));
+    const auto r =
+        lut::test::runCli("apply --lut " + shellQuoted(invertCube(dir)) + " " +
+                          shellQuoted(dir + "/tiled.exr") + " -o " + shellQuoted(dir + "/out.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const OiioImage in = oiioRead(dir + "/tiled.exr"), out = oiioRead(dir + "/out.exr");
     EXPECT_EQ(out.tileWidth, 32);
@@ -45,9 +46,10 @@ TEST(HostileImages, TiledTiffLutStripIsRead) {
             for (int v : {x % 16, g, x / 16})
                 ppm += static_cast<char>(static_cast<int>(std::lround(v * 255.0 / 15.0)));
     writeBytes(dir + "/strip.ppm", ppm);
-    oiiotool(q(dir + "/strip.ppm") + " --tile 16 16 -o " + q(dir + "/strip.tif"));
+    oiiotool(shellQuoted(dir + "/strip.ppm") + " --tile 16 16 -o " +
+             shellQuoted(dir + "/strip.tif"));
     ASSERT_EQ(oiioRead(dir + "/strip.tif").tileWidth, 16);
-    const auto r = lut::test::runCli("info " + q(dir + "/strip.tif") + " --json");
+    const auto r = lut::test::runCli("info " + shellQuoted(dir + "/strip.tif") + " --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("\"neutral\": \"exact\""));
 }
@@ -56,9 +58,10 @@ TEST(HostileImages, TiledTiffLutStripIsRead) {
 TEST(HostileImages, IffImageIsReadByTiles) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:top=0.2,0.4,0.6:bottom=0.9,0.1,0.3 100x70 3 -d uint8 -o " +
-             q(dir + "/in.iff"));
-    const auto r = lut::test::runCli("apply --lut " + q(invertCube(dir)) + " " +
-                                     q(dir + "/in.iff") + " -o " + q(dir + "/out.tif"));
+             shellQuoted(dir + "/in.iff"));
+    const auto r =
+        lut::test::runCli("apply --lut " + shellQuoted(invertCube(dir)) + " " +
+                          shellQuoted(dir + "/in.iff") + " -o " + shellQuoted(dir + "/out.tif"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_LT(worstInverted(oiioRead(dir + "/in.iff"), oiioRead(dir + "/out.tif")),
               0.5 / 255.0 + 1e-6);
@@ -73,12 +76,13 @@ TEST(HostileImages, CompressedTiffCutShortIsAnErrorAndNothingIsWritten) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:top=0.2,0.4,0.6:bottom=0.9,0.1,0.3 256x256 3 -d uint8 "
              "--compression zip -o " +
-             q(dir + "/full.tif"));
-    const std::string full = readBytes(dir + "/full.tif");
+             shellQuoted(dir + "/full.tif"));
+    const std::string full = fileBytes(dir + "/full.tif");
     ASSERT_EQ(full.substr(0, 8), std::string("II*\0\x08\0\0\0", 8)); // directory first
     writeBytes(dir + "/cut.tif", full.substr(0, full.size() * 6 / 10));
-    const auto r = lut::test::runCli("apply --lut " + q(invertCube(dir)) + " " +
-                                     q(dir + "/cut.tif") + " -o " + q(dir + "/out.tif"));
+    const auto r =
+        lut::test::runCli("apply --lut " + shellQuoted(invertCube(dir)) + " " +
+                          shellQuoted(dir + "/cut.tif") + " -o " + shellQuoted(dir + "/out.tif"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(stripDir(r.err, dir), StartsWith("lutkit: error: cut.tif: "));
     EXPECT_FALSE(std::filesystem::exists(dir + "/out.tif"));
@@ -89,11 +93,12 @@ TEST(HostileImages, CompressedTiffCutShortIsAnErrorAndNothingIsWritten) {
 TEST(HostileImages, UncompressedTiffCutShortIsRefusedBeforeDecoding) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern constant:color=0.5,0.5,0.5 64x64 3 -d uint8 --compression none -o " +
-             q(dir + "/full.tif"));
-    const std::string full = readBytes(dir + "/full.tif");
+             shellQuoted(dir + "/full.tif"));
+    const std::string full = fileBytes(dir + "/full.tif");
     writeBytes(dir + "/cut.tif", full.substr(0, full.size() / 2));
-    const auto r = lut::test::runCli("apply --lut " + q(invertCube(dir)) + " " +
-                                     q(dir + "/cut.tif") + " -o " + q(dir + "/out.tif"));
+    const auto r =
+        lut::test::runCli("apply --lut " + shellQuoted(invertCube(dir)) + " " +
+                          shellQuoted(dir + "/cut.tif") + " -o " + shellQuoted(dir + "/out.tif"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(stripDir(r.err, dir),
                 HasSubstr("cut.tif: declares 64x64 pixels (12288 bytes as stored) in "));
@@ -106,12 +111,13 @@ TEST(HostileImages, UncompressedTiffCutShortIsRefusedBeforeDecoding) {
 TEST(HostileImages, Truncated16BitTiffLutStripIsRefused) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:left=0,0,0:right=1,1,1 256x16 3 -d uint16 --compression zip -o " +
-             q(dir + "/strip.tif"));
-    const std::string full = readBytes(dir + "/strip.tif");
+             shellQuoted(dir + "/strip.tif"));
+    const std::string full = fileBytes(dir + "/strip.tif");
     writeBytes(dir + "/cut.tif", full.substr(0, full.size() / 2));
     for (const std::string cmd : {"info", "convert"}) {
-        const auto r = lut::test::runCli(cmd + " " + q(dir + "/cut.tif") +
-                                         (cmd == "convert" ? " " + q(dir + "/out.cube") : ""));
+        const auto r =
+            lut::test::runCli(cmd + " " + shellQuoted(dir + "/cut.tif") +
+                              (cmd == "convert" ? " " + shellQuoted(dir + "/out.cube") : ""));
         EXPECT_EQ(r.exitCode, 1) << cmd;
         EXPECT_THAT(stripDir(r.err, dir), HasSubstr("cut.tif: ")) << cmd;
     }
@@ -123,8 +129,8 @@ TEST(HostileImages, Truncated16BitTiffLutStripIsRefused) {
 TEST(HostileImages, JpegClaimingMorePixelsThanItHoldsIsRefused) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:top=0.2,0.4,0.6:bottom=0.9,0.1,0.3 64x64 3 -d uint8 -o " +
-             q(dir + "/small.jpg"));
-    const std::string jpg = readBytes(dir + "/small.jpg");
+             shellQuoted(dir + "/small.jpg"));
+    const std::string jpg = fileBytes(dir + "/small.jpg");
     std::size_t sof = 2;
     while (sof + 4 < jpg.size() && static_cast<unsigned char>(jpg[sof + 1]) != 0xC0)
         sof += 2 + (static_cast<unsigned char>(jpg[sof + 2]) << 8 |
@@ -139,8 +145,9 @@ TEST(HostileImages, JpegClaimingMorePixelsThanItHoldsIsRefused) {
     claim(4000, 4000, "claims4000.jpg"); // beyond what its bytes can hold: the header says so
     claim(128, 128, "claims128.jpg");    // plausible: libjpeg's warning says so
     for (const std::string name : {"claims4000.jpg", "claims128.jpg"}) {
-        const auto r = lut::test::runCli("apply --lut " + q(invertCube(dir)) + " " +
-                                         q(dir + "/" + name) + " -o " + q(dir + "/out.png"));
+        const auto r = lut::test::runCli("apply --lut " + shellQuoted(invertCube(dir)) + " " +
+                                         shellQuoted(dir + "/" + name) + " -o " +
+                                         shellQuoted(dir + "/out.png"));
         EXPECT_EQ(r.exitCode, 1) << name;
         EXPECT_FALSE(std::filesystem::exists(dir + "/out.png")) << name;
         if (name == "claims4000.jpg") {
@@ -283,12 +290,13 @@ TEST(HostileImages, LyingHeadersAreRefusedByEveryCommandBeforeAllocating) {
     const std::string lut = invertCube(dir);
     for (const Lying& f : lyingHeaders()) {
         writeBytes(dir + "/" + f.name, f.bytes);
-        const std::string p = q(dir + "/" + f.name);
+        const std::string p = shellQuoted(dir + "/" + f.name);
         std::vector<std::string> commands = {
-            "apply --lut " + q(lut) + " " + p + " -o " + q(dir + "/out.tif"),
-            "preview " + p + " -o " + q(dir + "/out.png"), "embed " + p + " " + q(dir + "/out.png"),
-            "extract " + p + " " + q(dir + "/o.cube"),
-            "fit " + p + " " + p + " " + q(dir + "/o.cube")};
+            "apply --lut " + shellQuoted(lut) + " " + p + " -o " + shellQuoted(dir + "/out.tif"),
+            "preview " + p + " -o " + shellQuoted(dir + "/out.png"),
+            "embed " + p + " " + shellQuoted(dir + "/out.png"),
+            "extract " + p + " " + shellQuoted(dir + "/o.cube"),
+            "fit " + p + " " + p + " " + shellQuoted(dir + "/o.cube")};
         if (f.name.find(".png") != std::string::npos || f.name.find(".tif") != std::string::npos)
             commands.push_back("info " + p); // the LUT image formats
         for (const std::string& args : commands) {
@@ -316,18 +324,20 @@ TEST(HostileImages, MaxMemoryHoldsAcrossFilesDecodedAtOnce) {
     for (const char* name : {"a.tga", "b.tga"}) {
         oiiotool("--pattern constant:color=0.2,0.4,0.6,1 4096x3072 4 -d uint8 --compression rle "
                  "-o " +
-                 q(dir + "/in/" + name));
+                 shellQuoted(dir + "/in/" + name));
         oiiotool("--pattern constant:color=0.2,0.4,0.6,1 16x16 4 -d uint8 --compression rle -o " +
-                 q(dir + "/tiny/" + name));
+                 shellQuoted(dir + "/tiny/" + name));
     }
     const std::string lut = invertCube(dir);
-    const Measured base = runMeasured("apply --lut " + q(lut) + " " + q(dir + "/tiny") + " -o " +
-                                          q(dir + "/tiny-out/") + " --threads 2 -q",
-                                      dir);
+    const Measured base =
+        runMeasured("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/tiny") + " -o " +
+                        shellQuoted(dir + "/tiny-out/") + " --threads 2 -q",
+                    dir);
     ASSERT_EQ(base.run.exitCode, 0) << base.run.err;
-    const Measured m = runMeasured("apply --lut " + q(lut) + " " + q(dir + "/in") + " -o " +
-                                       q(dir + "/out/") + " --threads 2 --max-memory 80M -q",
-                                   dir);
+    const Measured m =
+        runMeasured("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/in") + " -o " +
+                        shellQuoted(dir + "/out/") + " --threads 2 --max-memory 80M -q",
+                    dir);
     ASSERT_EQ(m.run.exitCode, 0) << m.run.err;
     const double frame = 4096.0 * 3072 * 4 / (1 << 20);
     EXPECT_LT(m.peakMiB, base.peakMiB + 1.5 * frame) << "both frames were held at once";
@@ -344,11 +354,12 @@ TEST(HostileImages, TwoPartOpenExrKeepsBothParts) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.8,0.7 40x24 3 --pattern "
              "checker:width=4:height=4 40x24 3 --siappend -d half -o " +
-             q(dir + "/two.exr"));
+             shellQuoted(dir + "/two.exr"));
     ASSERT_EQ(oiioRead(dir + "/two.exr").subimages, 2);
     const std::string lut = invertCube(dir);
-    const auto r = lut::test::runCli("apply --lut " + q(lut) + " " + q(dir + "/two.exr") + " -o " +
-                                     q(dir + "/out.exr"));
+    const auto r =
+        lut::test::runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/two.exr") +
+                          " -o " + shellQuoted(dir + "/out.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_EQ(oiioRead(dir + "/out.exr").subimages, 2);
     for (int part = 0; part < 2; ++part)
@@ -357,22 +368,24 @@ TEST(HostileImages, TwoPartOpenExrKeepsBothParts) {
             << "part " << part;
 
     // A format that holds one image: refused naming --subimage; with it, that part.
-    const auto png = lut::test::runCli("apply --lut " + q(lut) + " " + q(dir + "/two.exr") +
-                                       " -o " + q(dir + "/out.png"));
+    const auto png =
+        lut::test::runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/two.exr") +
+                          " -o " + shellQuoted(dir + "/out.png"));
     EXPECT_EQ(png.exitCode, 1);
     EXPECT_EQ(stripDir(png.err, dir),
               "lutkit: error: two.exr: holds 2 images (OpenEXR parts) and out.png's format holds "
               "one: write .exr or .tif to keep every one, or pick one with --subimage N (0 to "
               "1)\n");
-    const auto one = lut::test::runCli("apply --lut " + q(lut) + " " + q(dir + "/two.exr") +
-                                       " -o " + q(dir + "/one.exr") + " --subimage 1");
+    const auto one =
+        lut::test::runCli("apply --lut " + shellQuoted(lut) + " " + shellQuoted(dir + "/two.exr") +
+                          " -o " + shellQuoted(dir + "/one.exr") + " --subimage 1");
     ASSERT_EQ(one.exitCode, 0) << one.err;
     EXPECT_EQ(oiioRead(dir + "/one.exr").subimages, 1);
     EXPECT_LT(worstInverted(oiioRead(dir + "/two.exr", 1), oiioRead(dir + "/one.exr")), 1e-3);
 
     // preview shows one image: it asks which.
-    const auto preview =
-        lut::test::runCli("preview " + q(dir + "/two.exr") + " -o " + q(dir + "/p.exr"));
+    const auto preview = lut::test::runCli("preview " + shellQuoted(dir + "/two.exr") + " -o " +
+                                           shellQuoted(dir + "/p.exr"));
     EXPECT_EQ(preview.exitCode, 1);
     EXPECT_THAT(stripDir(preview.err, dir),
                 HasSubstr("two.exr: holds 2 images (OpenEXR parts): pick one with --subimage N "
@@ -384,15 +397,15 @@ TEST(HostileImages, TiffPagesAndMipLevelsAreKept) {
     const std::string dir = lut::test::tempDir();
     oiiotool("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.8,0.7 32x16 3 --pattern "
              "checker:width=4:height=4 32x16 3 --siappend -d uint16 -o " +
-             q(dir + "/pages.tif"));
+             shellQuoted(dir + "/pages.tif"));
     oiiotool("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.8,0.7 64x32 3 -d half --tile 16 16 "
              "-otex " +
-             q(dir + "/tex.exr"));
+             shellQuoted(dir + "/tex.exr"));
     const std::string lut = invertCube(dir);
     for (const std::string name : {"pages.tif", "tex.exr"}) {
         const std::string out = dir + "/out-" + name;
-        const auto r = lut::test::runCli("apply --lut " + q(lut) + " " + q(dir + "/" + name) +
-                                         " -o " + q(out));
+        const auto r = lut::test::runCli("apply --lut " + shellQuoted(lut) + " " +
+                                         shellQuoted(dir + "/" + name) + " -o " + shellQuoted(out));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const OiioImage in = oiioRead(dir + "/" + name);
         const OiioImage got = oiioRead(out);
@@ -419,8 +432,9 @@ TEST(HostileImages, StandardInputIsBoundedByWhatItCanBe) {
     if (!kMemorySanitized) {
         EXPECT_LT(info.peakMiB, 256.0);
     }
-    const Measured apply = runMeasured(
-        "apply --lut " + q(invertCube(dir)) + " - -o " + q(dir + "/o.png"), dir, "/dev/zero");
+    const Measured apply = runMeasured("apply --lut " + shellQuoted(invertCube(dir)) + " - -o " +
+                                           shellQuoted(dir + "/o.png"),
+                                       dir, "/dev/zero");
     EXPECT_EQ(apply.run.exitCode, 1);
     EXPECT_THAT(apply.run.err,
                 HasSubstr("lutkit: error: -: standard input is not an image lutkit reads"));

@@ -32,11 +32,12 @@ TEST(HostileOcio, TransformsReferringToEachOtherAreRefusedNamingTheCycle) {
                       "  - !<ColorSpace>\n    name: b\n    from_scene_reference: "
                       "!<ColorSpaceTransform> {src: raw, dst: a}\n"));
     for (const std::string& args :
-         {"bake " + q(dir + "/out.cube") + " --config " + q(dir + "/cycle.ocio") +
-              " --inputspace raw --outputspace a",
-          "apply --lut " + q(lut::test::dataPath("cube/adobe_3d_domain.cube")) + " " +
-              q(lut::test::dataPath("strip/neutral4_pilot.png")) + " -o " + q(dir + "/o.png") +
-              " --config " + q(dir + "/cycle.ocio") + " --from a"}) {
+         {"bake " + shellQuoted(dir + "/out.cube") + " --config " +
+              shellQuoted(dir + "/cycle.ocio") + " --inputspace raw --outputspace a",
+          "apply --lut " + shellQuoted(lut::test::dataPath("cube/adobe_3d_domain.cube")) + " " +
+              shellQuoted(lut::test::dataPath("strip/neutral4_pilot.png")) + " -o " +
+              shellQuoted(dir + "/o.png") + " --config " + shellQuoted(dir + "/cycle.ocio") +
+              " --from a"}) {
         const auto r = lut::test::runCli(args);
         SCOPED_TRACE(args);
         EXPECT_EQ(r.exitCode, 1);
@@ -54,9 +55,9 @@ TEST(HostileOcio, LookApplyingItselfIsRefused) {
     text += "looks:\n  - !<Look>\n    name: loop\n    process_space: raw\n    transform: "
             "!<LookTransform> {src: raw, dst: raw, looks: loop}\n";
     writeBytes(dir + "/look.ocio", text);
-    const auto r =
-        lut::test::runCli("bake " + q(dir + "/out.cube") + " --config " + q(dir + "/look.ocio") +
-                          " --inputspace raw --outputspace raw --looks loop");
+    const auto r = lut::test::runCli("bake " + shellQuoted(dir + "/out.cube") + " --config " +
+                                     shellQuoted(dir + "/look.ocio") +
+                                     " --inputspace raw --outputspace raw --looks loop");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(stripDir(r.err, dir),
                 HasSubstr("look.ocio: look 'loop' -> look 'loop': these transforms refer to each "
@@ -74,9 +75,10 @@ TEST(HostileOcio, FileTransformOnADeviceOrFifoIsRefused) {
                    config("  - !<ColorSpace>\n    name: lut\n    from_scene_reference: "
                           "!<FileTransform> {src: " +
                           name + ".cube}\n"));
-        const auto r = lut::test::runCli("--version >/dev/null; cd " + q(dir) + " && timeout 60 " +
-                                         q(LUTKIT_CLI) + " bake out.cube --config " + name +
-                                         ".ocio --inputspace raw --outputspace lut");
+        const auto r =
+            lut::test::runCli("--version >/dev/null; cd " + shellQuoted(dir) + " && timeout 60 " +
+                              shellQuoted(LUTKIT_CLI) + " bake out.cube --config " + name +
+                              ".ocio --inputspace raw --outputspace lut");
         SCOPED_TRACE(name);
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_THAT(stripDir(r.err, dir),
@@ -94,7 +96,7 @@ TEST(HostileOcio, CtfReferencingItselfIsRefused) {
                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<ProcessList id=\"a\" version=\"2\">\n"
                "  <Reference inBitDepth=\"32f\" outBitDepth=\"32f\" path=\"self.ctf\"/>\n"
                "</ProcessList>\n");
-    const auto r = lut::test::runCli("info " + q(dir + "/self.ctf"));
+    const auto r = lut::test::runCli("info " + shellQuoted(dir + "/self.ctf"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(stripDir(r.err, dir),
                 HasSubstr("self.ctf: references itself through 1 file(s) (a cycle OpenColorIO "

@@ -27,17 +27,17 @@ TEST(HostileOutputs, ReportsOnStandardOutputToAFullDiskAreAFailedWrite) {
     const std::string dir = lut::test::tempDir();
     writeBytes(dir + "/a.cube", neutralCube(3));
     writeBytes(dir + "/b.cube", neutralCube(4));
-    const std::string a = q(dir + "/a.cube"), b = q(dir + "/b.cube");
+    const std::string a = shellQuoted(dir + "/a.cube"), b = shellQuoted(dir + "/b.cube");
     for (const std::string& args :
          {"info " + a + " --json", "diff " + a + " " + b + " --json",
-          "convert " + a + " " + q(dir + "/c.cube") + " --json", "validate " + a,
-          "bake " + q(dir + "/baked.cube") + " --lut " + a + " --json", "info " + a}) {
+          "convert " + a + " " + shellQuoted(dir + "/c.cube") + " --json", "validate " + a,
+          "bake " + shellQuoted(dir + "/baked.cube") + " --lut " + a + " --json", "info " + a}) {
         const std::string err = dir + "/err.txt";
-        const int status =
-            std::system((q(LUTKIT_CLI) + " " + args + " >/dev/full 2>" + q(err)).c_str());
+        const int status = std::system(
+            (shellQuoted(LUTKIT_CLI) + " " + args + " >/dev/full 2>" + shellQuoted(err)).c_str());
         SCOPED_TRACE(args);
         EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
-        EXPECT_EQ(readBytes(err).substr(readBytes(err).find("lutkit: error: -:")),
+        EXPECT_EQ(fileBytes(err).substr(fileBytes(err).find("lutkit: error: -:")),
                   "lutkit: error: -: cannot write standard output: No space left on device\n");
     }
 }
@@ -48,8 +48,8 @@ TEST(HostileOutputs, ReportsOnStandardOutputToAFullDiskAreAFailedWrite) {
 TEST(HostileOutputs, SecondWriterOfANewFileFailsNamingIt) {
     const std::string dir = lut::test::tempDir();
     const std::string out = dir + "/new.cube";
-    const std::string cmd =
-        q(LUTKIT_CLI) + " convert - " + q(out) + " --in-format cube -q 2>" + q(dir + "/err");
+    const std::string cmd = shellQuoted(LUTKIT_CLI) + " convert - " + shellQuoted(out) +
+                            " --in-format cube -q 2>" + shellQuoted(dir + "/err");
     std::signal(SIGPIPE, SIG_IGN);
     FILE* first = ::popen((cmd + "1").c_str(), "w");
     FILE* second = ::popen((cmd + "2").c_str(), "w");
@@ -61,12 +61,12 @@ TEST(HostileOutputs, SecondWriterOfANewFileFailsNamingIt) {
     const int s1 = ::pclose(first);
     std::fwrite(two.data(), 1, two.size(), second);
     const int s2 = ::pclose(second);
-    EXPECT_EQ(WEXITSTATUS(s1), 0) << readBytes(dir + "/err1");
+    EXPECT_EQ(WEXITSTATUS(s1), 0) << fileBytes(dir + "/err1");
     EXPECT_EQ(WEXITSTATUS(s2), 1);
-    EXPECT_EQ(stripDir(readBytes(dir + "/err2"), dir),
+    EXPECT_EQ(stripDir(fileBytes(dir + "/err2"), dir),
               "lutkit: error: new.cube: already exists: another program created it while lutkit "
               "was writing it; not replaced\n");
-    EXPECT_THAT(readBytes(out), HasSubstr("TITLE \"first\""));
+    EXPECT_THAT(fileBytes(out), HasSubstr("TITLE \"first\""));
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"err1", "err2", "new.cube"}));
 }
 
@@ -86,7 +86,7 @@ TEST(HostileOutputs, ExclusiveOutputKeepsAFileThatAppearedMeanwhile) {
                   "x.cube: already exists: another program created it while lutkit was writing "
                   "it; not replaced");
     }
-    EXPECT_EQ(readBytes(out), "theirs");
+    EXPECT_EQ(fileBytes(out), "theirs");
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"x.cube"}));
 
     // With -y (Replace) a file there when the write begins is the user's to replace.
@@ -95,7 +95,7 @@ TEST(HostileOutputs, ExclusiveOutputKeepsAFileThatAppearedMeanwhile) {
     EXPECT_EQ(lut::checkOutput(other, lut::ExistingOutput::Replace).kind,
               lut::OutputKind::ExistingFile);
     lut::writeFileAtomically(other, "ours");
-    EXPECT_EQ(readBytes(other), "ours");
+    EXPECT_EQ(fileBytes(other), "ours");
 }
 
 } // namespace

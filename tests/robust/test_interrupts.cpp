@@ -152,7 +152,7 @@ TEST(Interrupts, ABatchStopsListsWhatItFinishedAndLeavesNoTemporaryFile) {
         ASSERT_TRUE(seen) << "the batch ended before it could be interrupted";
         ::kill(r.pid, sig);
         EXPECT_EQ(finish(r), 130);
-        const std::string err = readBytes(dir + "/err.txt");
+        const std::string err = fileBytes(dir + "/err.txt");
         const std::string last = lastLine(err);
         EXPECT_THAT(last, MatchesRegex(std::string("lutkit: interrupted \\(") +
                                        (sig == SIGINT ? "SIGINT" : "SIGTERM") +
@@ -184,7 +184,7 @@ TEST(Interrupts, ASingleWriteIsRemovedAndTheOldFileKept) {
         ASSERT_TRUE(writing) << "neutral ended before its temporary file was seen";
         ::kill(r.pid, sig);
         const int code = finish(r);
-        const std::string err = readBytes(dir + "/err.txt");
+        const std::string err = fileBytes(dir + "/err.txt");
         if (code == 0) {
             // The rename won the race: then the new file is whole.
             const lut::LutFile f = lut::formats::readLut(out);
@@ -195,7 +195,7 @@ TEST(Interrupts, ASingleWriteIsRemovedAndTheOldFileKept) {
             EXPECT_EQ(lastLine(err), std::string("lutkit: interrupted (") +
                                          (sig == SIGINT ? "SIGINT" : "SIGTERM") +
                                          "); unfinished outputs removed");
-            EXPECT_EQ(readBytes(out), old);
+            EXPECT_EQ(fileBytes(out), old);
         }
         EXPECT_EQ(listDir(dir), (std::vector<std::string>{"big.cube", "err.txt"}));
         fs::remove(dir + "/err.txt");

@@ -86,9 +86,7 @@ public:
     std::size_t largest() const { return g_largest.load(); }
 };
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 // Runs the CLI killed after `seconds` (exit 137): a reader that blocks fails the test instead of
 // hanging the suite.
@@ -98,14 +96,14 @@ lut::test::RunResult runCliBounded(const std::string& args, int seconds = 30) {
     static int counter = 0;
     const std::string tag = std::to_string(::getpid()) + "_b" + std::to_string(counter++);
     const fs::path out = dir / ("out_" + tag), err = dir / ("err_" + tag);
-    const std::string cmd = "timeout -s KILL " + std::to_string(seconds) + " " + q(LUTKIT_CLI) +
-                            " " + args + " >" + q(out.string()) + " 2>" + q(err.string()) +
-                            " </dev/null";
+    const std::string cmd =
+        "timeout -s KILL " + std::to_string(seconds) + " " + shellQuoted(LUTKIT_CLI) + " " + args +
+        " >" + shellQuoted(out.string()) + " 2>" + shellQuoted(err.string()) + " </dev/null";
     const int status = std::system(cmd.c_str());
     lut::test::RunResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    r.out = readBytes(out.string());
-    r.err = readBytes(err.string());
+    r.out = fileBytes(out.string());
+    r.err = fileBytes(err.string());
     fs::remove(out);
     fs::remove(err);
     return r;
@@ -154,9 +152,10 @@ TEST(SpecialFiles, FifoSocketDirectoryAndDeviceAsALutAreRefusedWithoutBlocking) 
         const std::string path = dir + "/" + s.name;
         const std::string expected = path + ": is " + s.kind + ", not a regular file";
         for (const std::string& args :
-             {"info " + q(path), "validate " + q(path),
-              "convert " + q(path) + " " + q(dir + "/o.cube"),
-              "apply --lut " + q(path) + " " + q(dir + "/img.png") + " -o " + q(dir + "/o.png")}) {
+             {"info " + shellQuoted(path), "validate " + shellQuoted(path),
+              "convert " + shellQuoted(path) + " " + shellQuoted(dir + "/o.cube"),
+              "apply --lut " + shellQuoted(path) + " " + shellQuoted(dir + "/img.png") + " -o " +
+                  shellQuoted(dir + "/o.png")}) {
             SCOPED_TRACE(args);
             const auto r = runCliBounded(args);
             EXPECT_EQ(r.exitCode, 1);

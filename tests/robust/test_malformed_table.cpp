@@ -278,7 +278,7 @@ const std::vector<Defect>& table() {
          "pilot",
          [](const std::string& path) {
              image(256, 16)(path);
-             std::string b = readBytes(path);
+             std::string b = fileBytes(path);
              writeBytes(path, b.substr(0, b.size() / 2));
          }},
         // ---- formats read through OpenColorIO

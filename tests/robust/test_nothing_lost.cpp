@@ -25,9 +25,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 void writePng(const std::string& path, int w, int h, float r, float g, float b) {
     auto out = OIIO::ImageOutput::create(path);
@@ -52,10 +50,11 @@ TEST(NothingLost, ReadErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
     const std::string dir = lut::test::tempDir();
     writeBytes(dir + "/bad.cube", "LUT_3D_SIZE 2\n0 0 0\n");
     writeBytes(dir + "/out.cube", kGood);
-    const auto r = runCli("convert " + q(dir + "/bad.cube") + " " + q(dir + "/out.cube") + " -y");
+    const auto r = runCli("convert " + shellQuoted(dir + "/bad.cube") + " " +
+                          shellQuoted(dir + "/out.cube") + " -y");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("bad.cube:3:1: expected 8 data rows for LUT_3D_SIZE 2, found 1"));
-    EXPECT_EQ(readBytes(dir + "/out.cube"), kGood);
+    EXPECT_EQ(fileBytes(dir + "/out.cube"), kGood);
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"bad.cube", "out.cube"}));
 }
 
@@ -63,18 +62,19 @@ TEST(NothingLost, WriteErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
     const std::string dir = lut::test::tempDir();
     writeBytes(dir + "/in.cube", kDarkening);
     writePng(dir + "/out.png", 64, 8, 0.25f, 0.5f, 0.75f);
-    const std::string before = readBytes(dir + "/out.png");
+    const std::string before = fileBytes(dir + "/out.png");
     // PNG cannot hold float: refused by the writer, after the output was chosen.
-    auto r =
-        runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/out.png") + " --bit-depth 32 -y");
+    auto r = runCli("convert " + shellQuoted(dir + "/in.cube") + " " +
+                    shellQuoted(dir + "/out.png") + " --bit-depth 32 -y");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("out.png: PNG stores 8 or 16 bits per channel, not float"));
-    EXPECT_EQ(readBytes(dir + "/out.png"), before);
+    EXPECT_EQ(fileBytes(dir + "/out.png"), before);
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"in.cube", "out.png"}));
 
     // A folder is never replaced by a file, even with -y: refused before anything is written.
     fs::create_directories(dir + "/taken.cube/inside");
-    r = runCli("convert " + q(dir + "/in.cube") + " " + q(dir + "/taken.cube") + " -y");
+    r = runCli("convert " + shellQuoted(dir + "/in.cube") + " " + shellQuoted(dir + "/taken.cube") +
+               " -y");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("taken.cube: is a folder, not a file"));
     EXPECT_TRUE(fs::is_directory(dir + "/taken.cube/inside"));
@@ -83,7 +83,7 @@ TEST(NothingLost, WriteErrorLeavesExistingOutputUntouchedAndNoTempFiles) {
     // The library path: a writer error through the registry keeps the folder as it was.
     lut::LutFile empty;
     EXPECT_THROW(lut::formats::writeLut(dir + "/out.png", empty), lut::Error);
-    EXPECT_EQ(readBytes(dir + "/out.png"), before);
+    EXPECT_EQ(fileBytes(dir + "/out.png"), before);
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"in.cube", "out.png", "taken.cube"}));
 }
 
@@ -101,11 +101,11 @@ TEST(NothingLost, ConvertRefusesToOverwriteItsInput) {
     };
     for (const auto& [out, message] : cases) {
         SCOPED_TRACE(out);
-        const auto r = runCli("convert " + q(in) + " " + q(out));
+        const auto r = runCli("convert " + shellQuoted(in) + " " + shellQuoted(out));
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_THAT(r.err, HasSubstr(message));
         EXPECT_THAT(r.err, HasSubstr("refusing to overwrite it"));
-        EXPECT_EQ(readBytes(in), kDarkening);
+        EXPECT_EQ(fileBytes(in), kDarkening);
     }
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"a.cube", "hard.cube", "sym.cube"}));
 }
@@ -116,8 +116,8 @@ TEST(NothingLost, ImageCommandsRefuseToOverwriteTheirInput) {
     writePng(dir + "/img.png", 64, 48, 0.5f, 0.4f, 0.3f);
     writePng(dir + "/other.png", 64, 48, 0.2f, 0.4f, 0.3f);
     fs::create_hard_link(dir + "/img.png", dir + "/hard.png");
-    const std::string img = readBytes(dir + "/img.png");
-    const std::string d = q(dir) + "/";
+    const std::string img = fileBytes(dir + "/img.png");
+    const std::string d = shellQuoted(dir) + "/";
     const std::vector<std::string> commands = {
         "apply --lut " + d + "dark.cube " + d + "img.png -o " + d + "img.png -y",
         "apply --lut " + d + "dark.cube " + d + "img.png -o " + d + "hard.png -y",
@@ -134,7 +134,7 @@ TEST(NothingLost, ImageCommandsRefuseToOverwriteTheirInput) {
         const auto r = runCli(c);
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_THAT(r.err, HasSubstr("output is the same file as input"));
-        EXPECT_EQ(readBytes(dir + "/img.png"), img);
+        EXPECT_EQ(fileBytes(dir + "/img.png"), img);
     }
 }
 
@@ -173,7 +173,7 @@ TEST(NothingLost, KillDuringAWriteLeavesTheOldOrTheCompleteFile) {
         int status = 0;
         ::waitpid(pid, &status, 0);
         ASSERT_TRUE(fs::exists(target)) << "the old file vanished";
-        if (readBytes(target) == kGood) {
+        if (fileBytes(target) == kGood) {
             ++oldSeen;
             continue;
         }

@@ -20,9 +20,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
 std::string refusal(const std::function<void()>& fn) {
     try {
@@ -75,21 +73,24 @@ TEST(ProtectInputs, ExtractNeverWritesOverItsOriginalLut) {
     writeBytes(dir + "/orig.cube", neutralCube(3));
     fs::create_hard_link(dir + "/orig.cube", dir + "/orig-hard.cube");
     fs::create_symlink("orig.cube", dir + "/orig-sym.cube");
-    const std::string original = readBytes(dir + "/orig.cube");
-    auto r = runCli("embed " + q(dir + "/shot.png") + " " + q(dir + "/edited.png"));
+    const std::string original = fileBytes(dir + "/orig.cube");
+    auto r =
+        runCli("embed " + shellQuoted(dir + "/shot.png") + " " + shellQuoted(dir + "/edited.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* out : {"orig.cube", "orig-hard.cube", "orig-sym.cube"}) {
         SCOPED_TRACE(out);
-        r = runCli("extract " + q(dir + "/edited.png") + " " + q(dir + "/" + std::string(out)) +
-                   " --target smash --original-lut " + q(dir + "/orig.cube"));
+        r = runCli("extract " + shellQuoted(dir + "/edited.png") + " " +
+                   shellQuoted(dir + "/" + std::string(out)) + " --target smash --original-lut " +
+                   shellQuoted(dir + "/orig.cube"));
         EXPECT_EQ(r.exitCode, 1) << r.out;
         EXPECT_THAT(r.err, HasSubstr(std::string(out) + ": output is the same file as input " +
                                      dir + "/orig.cube"));
-        EXPECT_EQ(readBytes(dir + "/orig.cube"), original);
+        EXPECT_EQ(fileBytes(dir + "/orig.cube"), original);
     }
     // And it still works into a new file.
-    r = runCli("extract " + q(dir + "/edited.png") + " " + q(dir + "/new.cube") +
-               " --target smash --original-lut " + q(dir + "/orig.cube"));
+    r = runCli("extract " + shellQuoted(dir + "/edited.png") + " " +
+               shellQuoted(dir + "/new.cube") + " --target smash --original-lut " +
+               shellQuoted(dir + "/orig.cube"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
 }
 
@@ -99,14 +100,15 @@ TEST(ProtectInputs, FitNeverWritesOverEitherImage) {
     writeGreyPng(dir + "/after.png", 64, 48);
     fs::create_hard_link(dir + "/after.png", dir + "/after-hard.png");
     fs::create_symlink("after.png", dir + "/after-sym.png");
-    const std::string after = readBytes(dir + "/after.png");
+    const std::string after = fileBytes(dir + "/after.png");
     for (const char* out : {"before.png", "after.png", "after-hard.png", "after-sym.png"}) {
         SCOPED_TRACE(out);
-        const auto r = runCli("fit " + q(dir + "/before.png") + " " + q(dir + "/after.png") + " " +
-                              q(dir + "/" + std::string(out)) + " --size 4");
+        const auto r = runCli("fit " + shellQuoted(dir + "/before.png") + " " +
+                              shellQuoted(dir + "/after.png") + " " +
+                              shellQuoted(dir + "/" + std::string(out)) + " --size 4");
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_THAT(r.err, HasSubstr(std::string(out) + ": output is the same file as input "));
-        EXPECT_EQ(readBytes(dir + "/after.png"), after);
+        EXPECT_EQ(fileBytes(dir + "/after.png"), after);
     }
 }
 
@@ -115,15 +117,17 @@ TEST(ProtectInputs, ConvertAndEmbedThroughALinkedFolder) {
     writeBytes(dir + "/a.cube", neutralCube(2));
     writeGreyPng(dir + "/shot.png", 400, 300);
     fs::create_directory_symlink(dir, dir + "/link");
-    const std::string cube = readBytes(dir + "/a.cube"), shot = readBytes(dir + "/shot.png");
-    auto r = runCli("convert " + q(dir + "/a.cube") + " " + q(dir + "/link/a.cube"));
+    const std::string cube = fileBytes(dir + "/a.cube"), shot = fileBytes(dir + "/shot.png");
+    auto r =
+        runCli("convert " + shellQuoted(dir + "/a.cube") + " " + shellQuoted(dir + "/link/a.cube"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("output is the same file as input"));
-    r = runCli("embed " + q(dir + "/shot.png") + " " + q(dir + "/link/shot.png"));
+    r = runCli("embed " + shellQuoted(dir + "/shot.png") + " " +
+               shellQuoted(dir + "/link/shot.png"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("output is the same file as input"));
-    EXPECT_EQ(readBytes(dir + "/a.cube"), cube);
-    EXPECT_EQ(readBytes(dir + "/shot.png"), shot);
+    EXPECT_EQ(fileBytes(dir + "/a.cube"), cube);
+    EXPECT_EQ(fileBytes(dir + "/shot.png"), shot);
 }
 
 } // namespace

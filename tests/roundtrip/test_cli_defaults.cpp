@@ -25,13 +25,8 @@ using lut::test::runCli;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
-std::string bytesOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using lut::test::fileBytes;
+using lut::test::shellQuoted;
 std::string shotFile(const std::string& dir) {
     const std::string path = dir + "/shot.png";
     formats::ImageWriteOptions o;
@@ -59,14 +54,15 @@ TEST(RoundtripDefaults, EmbedThenExtractNeedsNoOptions) {
     for (const char* target : {"smash", "raw"}) {
         SCOPED_TRACE(target);
         const std::string emb = dir + "/emb-" + target + ".png";
-        const auto e = runCli("embed " + q(shot) + " " + q(emb) +
+        const auto e = runCli("embed " + shellQuoted(shot) + " " + shellQuoted(emb) +
                               (std::string(target) == "raw" ? " --target raw" : ""));
         ASSERT_EQ(e.exitCode, 0) << e.err;
         EXPECT_TRUE(has(e.out, std::string("patch for ") + target)) << e.out;
         EXPECT_TRUE(has(e.out, "at scale 8")) << e.out;
         EXPECT_TRUE(has(e.out, "no options needed")) << e.out;
         const std::string ed = edited(emb, dir + "/edited-" + target + ".png", curvesEdit());
-        const auto x = runCli("extract " + q(ed) + " " + q(dir + "/out-" + target + ".cube"));
+        const auto x = runCli("extract " + shellQuoted(ed) + " " +
+                              shellQuoted(dir + "/out-" + target + ".cube"));
         ASSERT_EQ(x.exitCode, 0) << x.err;
         EXPECT_TRUE(has(x.out, std::string("target: ") + target + " (recorded in the patch)"))
             << x.out;
@@ -78,18 +74,19 @@ TEST(RoundtripDefaults, EmbedThenExtractNeedsNoOptions) {
             for (int c = 0; c < 3; ++c)
                 ASSERT_NEAR(got.entries()[i][c], lib.lut.entries()[i][c], 1e-5);
         // writing to .nutexb means the game, whatever the patch was made for
-        const auto n = runCli("extract " + q(ed) + " " + q(dir + "/cgl-" + target + ".nutexb"));
+        const auto n = runCli("extract " + shellQuoted(ed) + " " +
+                              shellQuoted(dir + "/cgl-" + target + ".nutexb"));
         ASSERT_EQ(n.exitCode, 0) << n.err;
         EXPECT_TRUE(has(n.out, "target: smash (the output is a .nutexb")) << n.out;
         // ... unless --target raw says otherwise
-        const auto r = runCli("extract " + q(ed) + " " + q(dir + "/raw-" + target + ".nutexb") +
-                              " --target raw");
+        const auto r = runCli("extract " + shellQuoted(ed) + " " +
+                              shellQuoted(dir + "/raw-" + target + ".nutexb") + " --target raw");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_TRUE(has(r.out, "target: raw (given)")) << r.out;
     }
     // bad combinations are bad usage
-    EXPECT_EQ(runCli("embed " + q(shot) + " " + q(dir + "/x.png") +
-                     " --target raw --original-lut " + q(dir + "/out-smash.cube"))
+    EXPECT_EQ(runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/x.png") +
+                     " --target raw --original-lut " + shellQuoted(dir + "/out-smash.cube"))
                   .exitCode,
               2);
 }
@@ -97,16 +94,19 @@ TEST(RoundtripDefaults, EmbedThenExtractNeedsNoOptions) {
 TEST(RoundtripDefaults, ExtractPrintsWhatTheExpectedErrorCovers) {
     const std::string dir = rtDir();
     const std::string shot = shotFile(dir);
-    ASSERT_EQ(runCli("embed " + q(shot) + " " + q(dir + "/emb.png")).exitCode, 0);
+    ASSERT_EQ(runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/emb.png")).exitCode,
+              0);
     const std::string ed = edited(dir + "/emb.png", dir + "/ed.png", levelsEdit());
-    const auto x = runCli("extract " + q(ed) + " " + q(dir + "/cgl.nutexb") + " --refine");
+    const auto x =
+        runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/cgl.nutexb") + " --refine");
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_TRUE(has(x.out, "expected error, an upper estimate from the patch's own redundancy"));
     EXPECT_TRUE(has(x.out, "what the game shows with the 8-bit LUT")) << x.out;
     EXPECT_TRUE(has(x.out, "at the LUT's lattice points: max")) << x.out;
     EXPECT_TRUE(has(x.out, "over all inputs, between the lattice points too: max")) << x.out;
     EXPECT_TRUE(has(x.out, "least-squares refinement")) << x.out;
-    const auto quiet = runCli("extract " + q(ed) + " " + q(dir + "/q.nutexb") + " -q");
+    const auto quiet =
+        runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/q.nutexb") + " -q");
     EXPECT_FALSE(has(quiet.out, "expected error")) << quiet.out;
 }
 
@@ -119,24 +119,26 @@ TEST(RoundtripDefaults, TheStageLutIsEmbeddedAndNotNeededAgain) {
     LutFile wf;
     wf.cube = warm;
     formats::writeLut(dir + "/stage.nutexb", wf);
-    const auto e = runCli("embed " + q(shot) + " " + q(dir + "/emb.png") + " --original-lut " +
-                          q(dir + "/stage.nutexb"));
+    const auto e = runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/emb.png") +
+                          " --original-lut " + shellQuoted(dir + "/stage.nutexb"));
     ASSERT_EQ(e.exitCode, 0) << e.err;
     EXPECT_TRUE(has(e.out, "16^3 game-display patch for smash with the stage LUT")) << e.out;
     const std::string ed = edited(dir + "/emb.png", dir + "/ed.png", curvesEdit());
-    const auto x = runCli("extract " + q(ed) + " " + q(dir + "/cgl.nutexb"));
+    const auto x = runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/cgl.nutexb"));
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_TRUE(has(x.out, "for the stage LUT")) << x.out;
     // given again, the right LUT is quietly accepted; another one is a warning
-    const auto same = runCli("extract " + q(ed) + " " + q(dir + "/cgl2.nutexb") +
-                             " --original-lut " + q(dir + "/stage.nutexb"));
+    const auto same =
+        runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/cgl2.nutexb") +
+               " --original-lut " + shellQuoted(dir + "/stage.nutexb"));
     EXPECT_FALSE(has(same.err, "stage LUT")) << same.err;
-    EXPECT_EQ(bytesOf(dir + "/cgl.nutexb"), bytesOf(dir + "/cgl2.nutexb"));
+    EXPECT_EQ(fileBytes(dir + "/cgl.nutexb"), fileBytes(dir + "/cgl2.nutexb"));
     LutFile nf;
     nf.cube = Lut3D::identity(16);
     formats::writeLut(dir + "/neutral.cube", nf);
-    const auto other = runCli("extract " + q(ed) + " " + q(dir + "/cgl3.nutexb") +
-                              " --original-lut " + q(dir + "/neutral.cube"));
+    const auto other =
+        runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/cgl3.nutexb") +
+               " --original-lut " + shellQuoted(dir + "/neutral.cube"));
     EXPECT_EQ(other.exitCode, 0);
     EXPECT_TRUE(has(other.err, "was embedded for the stage LUT")) << other.err;
 }
@@ -154,26 +156,27 @@ TEST(RoundtripDefaults, ConvertMakesTheGamesLutFromAGradedStrip) {
     FormatOptions smush;
     smush.layout = LutLayout::Smush;
     formats::writeLut(dir + "/neutral_graded.png", gf, smush);
-    const auto c =
-        runCli("convert " + q(dir + "/neutral_graded.png") + " " + q(dir + "/cgl.nutexb"));
+    const auto c = runCli("convert " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                          shellQuoted(dir + "/cgl.nutexb"));
     ASSERT_EQ(c.exitCode, 0) << c.err;
     EXPECT_TRUE(has(c.out, "out: smash (the output is a .nutexb")) << c.out;
     EXPECT_TRUE(has(c.out, "exact composition:")) << c.out;
     EXPECT_TRUE(has(c.out, "least-squares refinement:")) << c.out;
     EXPECT_TRUE(has(c.err + c.out, "layout detected: smush")) << c.err << c.out;
     // extract on the same file: the same LUT (one library call)
-    const auto x =
-        runCli("extract " + q(dir + "/neutral_graded.png") + " " + q(dir + "/cgl-extract.nutexb"));
+    const auto x = runCli("extract " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                          shellQuoted(dir + "/cgl-extract.nutexb"));
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_TRUE(has(x.out, "Smush-LUT's neutral.png")) << x.out;
-    EXPECT_EQ(bytesOf(dir + "/cgl.nutexb"), bytesOf(dir + "/cgl-extract.nutexb"));
+    EXPECT_EQ(fileBytes(dir + "/cgl.nutexb"), fileBytes(dir + "/cgl-extract.nutexb"));
     // to a .cube, the edit as it is, the table convert writes from the same file (extract
     // compensated it for the game before, while saying "the edit itself")
-    const auto xc =
-        runCli("extract " + q(dir + "/neutral_graded.png") + " " + q(dir + "/x-extract.cube"));
+    const auto xc = runCli("extract " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                           shellQuoted(dir + "/x-extract.cube"));
     ASSERT_EQ(xc.exitCode, 0) << xc.err;
     EXPECT_TRUE(has(xc.out, "target: raw")) << xc.out;
-    ASSERT_EQ(runCli("convert " + q(dir + "/neutral_graded.png") + " " + q(dir + "/x-convert.cube"))
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                     shellQuoted(dir + "/x-convert.cube"))
                   .exitCode,
               0);
     const Lut3D viaExtract = formats::readLut(dir + "/x-extract.cube").toLut3D();
@@ -188,21 +191,21 @@ TEST(RoundtripDefaults, ConvertMakesTheGamesLutFromAGradedStrip) {
                                                               viaConvert.at(r, g, b)[c]));
     EXPECT_LE(worstCube, 1e-6f);
     // --refine writes the refinement; --target raw the strip as it is
-    ASSERT_EQ(runCli("convert " + q(dir + "/neutral_graded.png") + " " +
-                     q(dir + "/refined.nutexb") + " --refine")
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                     shellQuoted(dir + "/refined.nutexb") + " --refine")
                   .exitCode,
               0);
-    EXPECT_NE(bytesOf(dir + "/cgl.nutexb"), bytesOf(dir + "/refined.nutexb"));
-    ASSERT_EQ(runCli("convert " + q(dir + "/neutral_graded.png") + " " + q(dir + "/raw.nutexb") +
-                     " --target raw")
+    EXPECT_NE(fileBytes(dir + "/cgl.nutexb"), fileBytes(dir + "/refined.nutexb"));
+    ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                     shellQuoted(dir + "/raw.nutexb") + " --target raw")
                   .exitCode,
               0);
     const Lut3D raw = formats::readLut(dir + "/raw.nutexb").toLut3D();
     EXPECT_NEAR(raw.at(3, 9, 5).x, graded.at(3, 9, 5).x, 0.5f / 255.0f + 1e-6f);
-    EXPECT_EQ(
-        runCli("convert " + q(dir + "/neutral_graded.png") + " " + q(dir + "/x.cube") + " --refine")
-            .exitCode,
-        2); // --refine is for the smash target
+    EXPECT_EQ(runCli("convert " + shellQuoted(dir + "/neutral_graded.png") + " " +
+                     shellQuoted(dir + "/x.cube") + " --refine")
+                  .exitCode,
+              2); // --refine is for the smash target
 }
 
 TEST(RoundtripDefaults, SmushLutsFirstStripFilesAreRead) {
@@ -230,7 +233,8 @@ TEST(RoundtripDefaults, SmushLutsFirstStripFilesAreRead) {
     formats::ImageWriteOptions o;
     o.alpha = false;
     formats::writeImage(dir + "/stage.lut.png", img, o);
-    const auto x = runCli("extract " + q(dir + "/stage.lut.png") + " " + q(dir + "/cgl.nutexb"));
+    const auto x = runCli("extract " + shellQuoted(dir + "/stage.lut.png") + " " +
+                          shellQuoted(dir + "/cgl.nutexb"));
     ASSERT_EQ(x.exitCode, 0) << x.err;
     EXPECT_TRUE(has(x.out, "Smush-LUT strip")) << x.out;
     const Lut3D lut = formats::readLut(dir + "/cgl.nutexb").toLut3D();
@@ -244,7 +248,10 @@ TEST(RoundtripDefaults, SmushLutsFirstStripFilesAreRead) {
             }
     // the same picture without the name is not taken for a strip
     std::filesystem::copy_file(dir + "/stage.lut.png", dir + "/plain.png");
-    EXPECT_EQ(runCli("extract " + q(dir + "/plain.png") + " " + q(dir + "/x.nutexb")).exitCode, 1);
+    EXPECT_EQ(
+        runCli("extract " + shellQuoted(dir + "/plain.png") + " " + shellQuoted(dir + "/x.nutexb"))
+            .exitCode,
+        1);
 }
 
 TEST(RoundtripDefaults, HelpStatesEveryDefault) {

@@ -21,14 +21,9 @@ using lut::test::runCli;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
+using lut::test::shellQuoted;
 
-std::string fileBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using lut::test::fileBytes;
 
 std::string writeScreenshot(const std::string& dir, int bitDepth) {
     const std::string path = dir + "/shot" + std::to_string(bitDepth) + ".png";
@@ -58,7 +53,8 @@ TEST(RoundtripCli, LatticeAcceptsGameDisplayAndItsAliasSmash) {
     int k = 0;
     for (const char* name : {"game-display", "smash"}) {
         const std::string out = dir + "/lattice-" + name + ".png";
-        const auto r = runCli("embed " + q(shot) + " " + q(out) + " --lattice " + name);
+        const auto r =
+            runCli("embed " + shellQuoted(shot) + " " + shellQuoted(out) + " --lattice " + name);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.out.find("12^3 game-display patch for smash"), std::string::npos) << r.out;
         const auto img = formats::readImage(out);
@@ -68,8 +64,8 @@ TEST(RoundtripCli, LatticeAcceptsGameDisplayAndItsAliasSmash) {
         bytes[k++] = fileBytes(out);
     }
     EXPECT_EQ(bytes[0], bytes[1]);
-    const auto bad =
-        runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --lattice gamedisplay");
+    const auto bad = runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/x.png") +
+                            " --lattice gamedisplay");
     EXPECT_EQ(bad.exitCode, 2) << bad.err;
 }
 
@@ -78,7 +74,8 @@ TEST(RoundtripCli, EmbedKeepsTheBitDepthAndTheScreenshot) {
     for (int depth : {8, 16}) {
         const std::string shot = writeScreenshot(dir, depth);
         const std::string out = dir + "/embedded" + std::to_string(depth) + ".png";
-        const auto r = runCli("embed " + q(shot) + " " + q(out) + " --corner bottom-right");
+        const auto r = runCli("embed " + shellQuoted(shot) + " " + shellQuoted(out) +
+                              " --corner bottom-right");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.out.find("12^3 game-display patch for smash"), std::string::npos);
         const auto img = formats::readImage(out);
@@ -98,12 +95,14 @@ TEST(RoundtripCli, EmbedKeepsTheBitDepthAndTheScreenshot) {
     }
     // refuses to overwrite its input, and bad usage is exit 2
     const std::string shot = writeScreenshot(dir, 8);
-    EXPECT_EQ(runCli("embed " + q(shot) + " " + q(shot)).exitCode, 1);
-    EXPECT_EQ(runCli("embed " + q(shot)).exitCode, 2);
-    EXPECT_EQ(runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --corner middle").exitCode,
+    EXPECT_EQ(runCli("embed " + shellQuoted(shot) + " " + shellQuoted(shot)).exitCode, 1);
+    EXPECT_EQ(runCli("embed " + shellQuoted(shot)).exitCode, 2);
+    EXPECT_EQ(runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/x.png") +
+                     " --corner middle")
+                  .exitCode,
               2);
-    const auto tooBig =
-        runCli("embed " + q(shot) + " " + q(dir + "/x.png") + " --size 40 --scale 3");
+    const auto tooBig = runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/x.png") +
+                               " --size 40 --scale 3");
     EXPECT_EQ(tooBig.exitCode, 1);
     EXPECT_NE(tooBig.err.find("needs"), std::string::npos);
 }
@@ -112,11 +111,13 @@ TEST(RoundtripCli, ExtractRawMatchesTheEdit) {
     const std::string dir = rtDir();
     const std::string shot = writeScreenshot(dir, 8);
     const std::string emb = dir + "/emb.png";
-    ASSERT_EQ(runCli("embed " + q(shot) + " " + q(emb) + " --target raw").exitCode, 0);
+    ASSERT_EQ(
+        runCli("embed " + shellQuoted(shot) + " " + shellQuoted(emb) + " --target raw").exitCode,
+        0);
     const Edit f = saturationEdit();
     const std::string edited = editFile(emb, dir + "/edited.png", f);
     const std::string cube = dir + "/out.cube";
-    const auto r = runCli("extract " + q(edited) + " " + q(cube));
+    const auto r = runCli("extract " + shellQuoted(edited) + " " + shellQuoted(cube));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("expected error"), std::string::npos);
     const Lut3D lut = formats::readLut(cube).toLut3D();
@@ -131,7 +132,9 @@ TEST(RoundtripCli, ExtractRawMatchesTheEdit) {
             }
     EXPECT_LE(worst, 0.51);
     // an output size and a strip image work too
-    ASSERT_EQ(runCli("extract " + q(edited) + " " + q(dir + "/out33.cube") + " --size 33").exitCode,
+    ASSERT_EQ(runCli("extract " + shellQuoted(edited) + " " + shellQuoted(dir + "/out33.cube") +
+                     " --size 33")
+                  .exitCode,
               0);
     EXPECT_EQ(formats::readLut(dir + "/out33.cube").toLut3D().size(), 33);
 }
@@ -140,10 +143,11 @@ TEST(RoundtripCli, ExtractSmashWritesTheCompensatedNutexb) {
     const std::string dir = rtDir();
     const std::string shot = writeScreenshot(dir, 8);
     const std::string emb = dir + "/emb.png";
-    ASSERT_EQ(runCli("embed " + q(shot) + " " + q(emb)).exitCode, 0);
+    ASSERT_EQ(runCli("embed " + shellQuoted(shot) + " " + shellQuoted(emb)).exitCode, 0);
     const std::string edited = editFile(emb, dir + "/edited.png", curvesEdit());
     const std::string nutexb = dir + "/color_grading_lut.nutexb";
-    const auto r = runCli("extract " + q(edited) + " " + q(nutexb) + " --target smash");
+    const auto r =
+        runCli("extract " + shellQuoted(edited) + " " + shellQuoted(nutexb) + " --target smash");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("expected error"), std::string::npos);
     const Lut3D shipped = formats::readLut(nutexb).toLut3D();
@@ -161,8 +165,8 @@ TEST(RoundtripCli, ExtractSmashWritesTheCompensatedNutexb) {
     nf.cube = Lut3D::identity(16);
     formats::writeLut(neutral, nf);
     const std::string withOrig = dir + "/with_original.cube";
-    ASSERT_EQ(runCli("extract " + q(edited) + " " + q(withOrig) +
-                     " --target smash --original-lut " + q(neutral))
+    ASSERT_EQ(runCli("extract " + shellQuoted(edited) + " " + shellQuoted(withOrig) +
+                     " --target smash --original-lut " + shellQuoted(neutral))
                   .exitCode,
               0);
     const Lut3D w = formats::readLut(withOrig).toLut3D();
@@ -174,18 +178,21 @@ TEST(RoundtripCli, ExtractSmashWritesTheCompensatedNutexb) {
 TEST(RoundtripCli, ExtractFailsAndWarnsClearly) {
     const std::string dir = rtDir();
     const std::string shot = writeScreenshot(dir, 8);
-    const auto none = runCli("extract " + q(shot) + " " + q(dir + "/x.cube"));
+    const auto none = runCli("extract " + shellQuoted(shot) + " " + shellQuoted(dir + "/x.cube"));
     EXPECT_EQ(none.exitCode, 1);
     EXPECT_NE(none.err.find("no LUT patch found"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(dir + "/x.cube"));
-    EXPECT_EQ(runCli("extract " + q(shot) + " " + q(dir + "/x.cube") + " --target game").exitCode,
+    EXPECT_EQ(runCli("extract " + shellQuoted(shot) + " " + shellQuoted(dir + "/x.cube") +
+                     " --target game")
+                  .exitCode,
               2);
     // a clipping edit: the LUT is written, with a warning on stderr
     const std::string emb = dir + "/emb.png";
-    ASSERT_EQ(runCli("embed " + q(shot) + " " + q(emb)).exitCode, 0);
+    ASSERT_EQ(runCli("embed " + shellQuoted(shot) + " " + shellQuoted(emb)).exitCode, 0);
     const std::string edited =
         editFile(emb, dir + "/clipped.png", levelsEdit(0.3, 0.6, 1.0, 0.0, 1.0));
-    const auto r = runCli("extract " + q(edited) + " " + q(dir + "/clipped.cube"));
+    const auto r =
+        runCli("extract " + shellQuoted(edited) + " " + shellQuoted(dir + "/clipped.cube"));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("warning: "), std::string::npos);
     EXPECT_NE(r.err.find("clipped"), std::string::npos);
@@ -198,7 +205,8 @@ TEST(RoundtripCli, FitWritesTheLutAndReportsTheError) {
     const Edit f = levelsEdit();
     const std::string after = editFile(before, dir + "/after.png", f);
     const std::string out = dir + "/fit.cube";
-    const auto r = runCli("fit " + q(before) + " " + q(after) + " " + q(out) + " --size 17");
+    const auto r = runCli("fit " + shellQuoted(before) + " " + shellQuoted(after) + " " +
+                          shellQuoted(out) + " --size 17");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("error over those pixels rms"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("held out on colours it was not fitted to"), std::string::npos) << r.out;
@@ -224,6 +232,9 @@ TEST(RoundtripCli, FitWritesTheLutAndReportsTheError) {
     const std::string small = dir + "/small.png";
     formats::ImageWriteOptions o;
     formats::writeImage(small, syntheticScreenshot(100, 50), o);
-    EXPECT_EQ(runCli("fit " + q(before) + " " + q(small) + " " + q(dir + "/y.cube")).exitCode, 1);
-    EXPECT_EQ(runCli("fit " + q(before) + " " + q(after)).exitCode, 2);
+    EXPECT_EQ(runCli("fit " + shellQuoted(before) + " " + shellQuoted(small) + " " +
+                     shellQuoted(dir + "/y.cube"))
+                  .exitCode,
+              1);
+    EXPECT_EQ(runCli("fit " + shellQuoted(before) + " " + shellQuoted(after)).exitCode, 2);
 }

@@ -22,13 +22,8 @@ using lut::test::runCli;
 
 namespace {
 
-std::string q(const std::string& s) {
-    return "'" + s + "'";
-}
-std::string bytesOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using lut::test::fileBytes;
+using lut::test::shellQuoted;
 bool has(const std::string& text, const std::string& what) {
     return text.find(what) != std::string::npos;
 }
@@ -39,7 +34,7 @@ std::string editedPatch(const std::string& dir, const Edit& edit) {
     formats::ImageWriteOptions o;
     o.alpha = false;
     formats::writeImage(shot, syntheticScreenshot(kShotWidth, kShotHeight, 8), o);
-    const auto e = runCli("embed " + q(shot) + " " + q(dir + "/patch.png"));
+    const auto e = runCli("embed " + shellQuoted(shot) + " " + shellQuoted(dir + "/patch.png"));
     EXPECT_EQ(e.exitCode, 0) << e.err;
     auto img = formats::readImage(dir + "/patch.png");
     applyEdit(img.image, edit, 8);
@@ -53,18 +48,21 @@ TEST(Purpose, AnExtractedGameLutIsNotCompensatedTwice) {
     const std::string dir = rtDir();
     const Edit edit = warmGradientMap();
     const std::string ed = editedPatch(dir, edit);
-    const auto x = runCli("extract " + q(ed) + " " + q(dir + "/grade.cube"));
+    const auto x = runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/grade.cube"));
     ASSERT_EQ(x.exitCode, 0) << x.err;
     // the file says what it is, in a comment other readers skip
-    EXPECT_TRUE(has(bytesOf(dir + "/grade.cube"), "\n# LUTKIT_PURPOSE smash\n") ||
-                bytesOf(dir + "/grade.cube").rfind("# LUTKIT_PURPOSE smash\n", 0) == 0);
-    const auto c = runCli("convert " + q(dir + "/grade.cube") + " " + q(dir + "/cgl.nutexb"));
+    EXPECT_TRUE(has(fileBytes(dir + "/grade.cube"), "\n# LUTKIT_PURPOSE smash\n") ||
+                fileBytes(dir + "/grade.cube").rfind("# LUTKIT_PURPOSE smash\n", 0) == 0);
+    const auto c = runCli("convert " + shellQuoted(dir + "/grade.cube") + " " +
+                          shellQuoted(dir + "/cgl.nutexb"));
     ASSERT_EQ(c.exitCode, 0) << c.err;
     EXPECT_TRUE(has(c.out, "in:  smash (the file says so: LUTKIT_PURPOSE smash)")) << c.out;
     // what the game shows against the edit: as extract's own .nutexb (the same bytes)
     const Truth once = smashTruth(formats::readLut(dir + "/cgl.nutexb").toLut3D(), edit);
-    ASSERT_EQ(runCli("extract " + q(ed) + " " + q(dir + "/direct.nutexb")).exitCode, 0);
-    EXPECT_EQ(bytesOf(dir + "/cgl.nutexb"), bytesOf(dir + "/direct.nutexb"));
+    ASSERT_EQ(
+        runCli("extract " + shellQuoted(ed) + " " + shellQuoted(dir + "/direct.nutexb")).exitCode,
+        0);
+    EXPECT_EQ(fileBytes(dir + "/cgl.nutexb"), fileBytes(dir + "/direct.nutexb"));
     std::printf("[ measured ] extract -> .cube -> convert -> .nutexb, game vs edit: mean %.2f, "
                 "p99 %.2f, max %.2f 8-bit steps\n",
                 once.overall.mean, once.overall.p99, once.overall.max);
@@ -72,8 +70,8 @@ TEST(Purpose, AnExtractedGameLutIsNotCompensatedTwice) {
     EXPECT_LT(once.overall.p99, 8.0);
     // What convert did before the file said what it was (--in-target raw forces it): the game's
     // LUT compensated a second time, far off the edit.
-    const auto twice = runCli("convert " + q(dir + "/grade.cube") + " " + q(dir + "/twice.nutexb") +
-                              " --in-target raw");
+    const auto twice = runCli("convert " + shellQuoted(dir + "/grade.cube") + " " +
+                              shellQuoted(dir + "/twice.nutexb") + " --in-target raw");
     ASSERT_EQ(twice.exitCode, 0) << twice.err;
     const Truth bad = smashTruth(formats::readLut(dir + "/twice.nutexb").toLut3D(), edit);
     std::printf("[ measured ] compensated twice (--in-target raw): mean %.2f, p99 %.2f 8-bit "

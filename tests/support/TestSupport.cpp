@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -68,6 +69,15 @@ RunResult runCommand(const std::string& command) {
     fs::remove(out);
     fs::remove(err);
     return r;
+}
+
+std::string shellQuoted(const std::string& s) {
+    return "'" + s + "'";
+}
+
+std::string fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
 }
 
 } // namespace lut::test

@@ -21,5 +21,9 @@ RunResult runCli(const std::string& args);
 RunResult runCommand(const std::string& command);
 // Whether a program is on PATH.
 bool haveProgram(const std::string& name);
+// A path or argument in single quotes, for the shell of runCli and runCommand.
+std::string shellQuoted(const std::string& s);
+// A whole file's bytes ("" when it cannot be read).
+std::string fileBytes(const std::string& path);
 
 } // namespace lut::test
