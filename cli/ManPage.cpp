@@ -5,6 +5,8 @@
 
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace lut::cli {
 
@@ -104,7 +106,26 @@ std::string manPage(const ProgramEntry& p) {
           "output refused because it is the input, write failed; in batch mode: any file "
           "failed).\n"
        << ".TP\n2\nBad usage (unknown command or option, missing or invalid argument).\n"
-       << ".SH SEE ALSO\n"
+       << ".SH FILES\n";
+    // The installed docs (cmake/LutkitInstall.cmake); tests/install checks each path exists.
+    const std::pair<const char*, const char*> docs[] = {
+        {"README.md", "the guide: quick starts, every command, the formats"},
+        {"docs/colour.md", "colour management: --from/--to, --config and lutkit's own OpenColorIO "
+                           "config, bake, displays, views, looks"},
+        {"docs/accuracy.md", "every error figure lutkit prints and how it is checked"},
+        {"docs/check.md", "lutkit check: the findings, thresholds and report"},
+        {"docs/roundtrip.md", "embed, extract and fit: the image-editor round trip"},
+        {"docs/match.md", "lutkit match"},
+        {"docs/editor.md", "lutkit-editor"},
+        {"docs/pipeline.md", "the preview pipeline"},
+        {"docs/robustness.md", "hostile and broken files"},
+        {"docs/specs", "the file formats and the Smash pipeline, with exact numbers"},
+    };
+    for (const auto& [path, what] : docs)
+        os << ".TP\n"
+           << roff(std::string(LUTKIT_DOC_DIR) + "/" + path) << "\n"
+           << roff(what) << ".\n";
+    os << ".SH SEE ALSO\n"
        << ".BR lutkit\\-editor (1)\n";
     return os.str();
 }

@@ -3,6 +3,7 @@
 #include "Suggest.h"
 
 #include "lut/Error.h"
+#include "lut/Version.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FrameSequence.h"
 #include "lut/match/MatchOptions.h"
@@ -436,7 +437,8 @@ void refuseNonFiniteNumbers(CLI::App& app) {
 CLI::Option* addConfig(CLI::App& sub, std::string& target) {
     return sub
         .add_option("--config", target,
-                    "OpenColorIO config (default: $OCIO, else lutkit's own: docs/colour.md)")
+                    "OpenColorIO config (default: $OCIO, else lutkit's own: " LUTKIT_DOC_DIR
+                    "/docs/colour.md)")
         ->type_name("FILE");
 }
 

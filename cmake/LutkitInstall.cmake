@@ -9,7 +9,8 @@
 #                                    lutkit::imageio (the module, for $<TARGET_FILE:...>)
 #   P/share/lutkit/ocio/config.ocio  lutkit's own OpenColorIO config (found relative to the
 #                                    executable, formats/src/ocio/ColorConfig.cpp)
-#   P/share/doc/lutkit/              README.md, CONTRIBUTING.md and docs/
+#   P/share/doc/lutkit/              README.md, CONTRIBUTING.md, LICENSE, copyright and docs/
+#                                    (the .md files and their pictures)
 # tests/install checks the installed tree: the installed lutkit runs, and a one-file project
 # builds against it with find_package.
 include(CMakePackageConfigHelpers)
@@ -44,8 +45,15 @@ install(FILES ${PROJECT_BINARY_DIR}/lutkitConfig.cmake ${PROJECT_BINARY_DIR}/lut
               ${PROJECT_SOURCE_DIR}/cmake/LutkitLibraryDependencies.cmake
         DESTINATION ${LUTKIT_INSTALL_CMAKEDIR} COMPONENT dev)
 
-# The docs, where Debian puts a package's: share/doc/lutkit.
+# The docs, where Debian puts a package's: share/doc/lutkit, laid out as in the repo so the
+# README's links (docs/colour.md, docs/images/...) work in the installed tree; the pictures the
+# docs show; the licence, and Debian's machine-readable copyright file. `--help` and the man page
+# cite the installed paths (LUTKIT_DOC_DIR, cli/CMakeLists.txt); tests/install checks that every
+# path they and the README cite is installed.
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CONTRIBUTING.md
+              ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/share/debian/copyright
         DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lutkit)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lutkit/docs
-        FILES_MATCHING PATTERN "*.md")
+        FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
+# The measurements the README's Numbers cite.
+install(FILES ${PROJECT_SOURCE_DIR}/bench/RESULTS.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/lutkit/bench)

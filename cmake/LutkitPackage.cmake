@@ -21,6 +21,9 @@ format OpenColorIO reads, reporting the error each step costs; previews a grade 
 as the game shows it; and takes a LUT out of a screenshot graded in an image editor. \
 lutkit-editor is its Qt 6 editor.")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+# Apache-2.0 (LICENSE); the package carries it and /usr/share/doc/lutkit/copyright (Debian's
+# machine-readable form, share/debian/copyright), installed by cmake/LutkitInstall.cmake.
+set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 # Only the default component (install() rules without a COMPONENT): not `dev`.
 set(CPACK_INSTALL_CMAKE_PROJECTS "${PROJECT_BINARY_DIR};lutkit;Unspecified;/")
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # lutkit_0.1.0_amd64.deb

@@ -5,6 +5,7 @@
 #include "Usage.h"
 #include "Vocabulary.h"
 
+#include "lut/Version.h"
 #include "lut/io/InputFile.h"
 #include "lut/ops/AdjustmentList.h"
 #include "lut/ops/Clipping.h"
@@ -49,7 +50,8 @@ CLI::App* setupAdjust(CLI::App& app, std::function<void(const AdjustCommandOptio
         ->required()
         ->type_name("FILE");
     sub->add_option("--adjustments", o->adjustments,
-                    "the adjustment list (one \"keyword numbers\" line each; docs/editor.md)")
+                    "the adjustment list (one \"keyword numbers\" line each; " LUTKIT_DOC_DIR
+                    "/docs/editor.md)")
         ->required()
         ->type_name("FILE");
     addOutputFormat(*sub, o->format);

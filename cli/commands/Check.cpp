@@ -8,6 +8,7 @@
 
 #include "lut/Error.h"
 #include "lut/LutPurpose.h"
+#include "lut/Version.h"
 #include "lut/check/CheckLut.h"
 #include "lut/check/CheckPicture.h"
 #include "lut/formats/ImageIO.h"
@@ -241,7 +242,7 @@ CLI::App* setupCheck(CLI::App& app, std::function<void(const CheckCommandOptions
         ->type_name("PATH");
     sub->add_flag("--strict", o->strict, "a warning fails too (exit 1)");
     sub->add_option("--thresholds", o->thresholds,
-                    "thresholds file: lines 'NAME = WARN FAIL' (docs/check.md)")
+                    "thresholds file: lines 'NAME = WARN FAIL' (" LUTKIT_DOC_DIR "/docs/check.md)")
         ->type_name("FILE");
     sub->add_flag("--json", o->json, "print the report as JSON");
     addPurpose(*sub, "--target", o->target,

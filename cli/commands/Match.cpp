@@ -7,6 +7,7 @@
 #include "Vocabulary.h"
 
 #include "lut/LutPurpose.h"
+#include "lut/Version.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
@@ -299,7 +300,7 @@ CLI::App* setupMatch(CLI::App& app, std::function<void(const MatchCommandOptions
         "float files scene-linear; a reference of the other kind is converted. The report gives "
         "the distance to the reference's colours before and after (sliced Wasserstein in "
         "CIELAB, mean ΔE2000 of matched quantiles), how the LUT interpolates, what it clips and "
-        "the time taken (docs/match.md).\n\n"
+        "the time taken (" LUTKIT_DOC_DIR "/docs/match.md).\n\n"
         "Examples:\n"
         "  lutkit match stage.png look.png look.cube\n"
         "  lutkit match shot.png ref1.jpg ref2.jpg look.cube --method hm-mkl-hm --strength 0.7\n"

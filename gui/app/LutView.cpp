@@ -2,6 +2,8 @@
 
 #include "PreviewFrame.h"
 
+#include "lut/Version.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -60,7 +62,8 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     for (LutLayout l : allLayouts())
         if (layoutFixedSize(l) == 0) // reshade, unity-32: unreal's and unity's pixels at 32^3
             m_layout->addItem(QString::fromLatin1(toString(l)), int(l));
-    m_layout->setToolTip(tr("Layout of the slices (see docs/specs/strip-layouts.md)"));
+    m_layout->setToolTip(tr("Layout of the slices (see %1/docs/specs/strip-layouts.md)")
+                             .arg(QStringLiteral(LUTKIT_DOC_DIR)));
     form->addRow(tr("Layout"), m_layout);
     m_wrap = new QCheckBox(tr("Show slices as a grid"), this);
     m_wrap->setChecked(true);

@@ -139,7 +139,7 @@ TEST(Vocabulary, AnOptionNameMeansTheSameEverywhere) {
 
 TEST(Vocabulary, TheNamesIssue18Fixes) {
     const auto p = programTable();
-    // option -> the choices validator it must have (vocabulary.md)
+    // option -> the choices validator it must have (cli/Vocabulary.h)
     const std::map<std::string, std::string> named = {
         {"--format", "choices:format"},     {"--in-format", "choices:in-format"},
         {"--layout", "choices:layout"},     {"--in-layout", "choices:layout"},

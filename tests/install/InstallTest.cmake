@@ -8,10 +8,14 @@
 #     `lutkit info --json` on both outputs reports the sizes the formats store (16 and 33); the
 #     installed lutkit-editor (when Qt was found) starts and reports the version, and its .desktop
 #     entry, MIME types and icons are in share/ (the entry's Exec is the installed program)
-#  3. a one-file project (consumer/) configures with find_package(lutkit VERSION) against the
+#  3. every doc path cited by `lutkit --help`, each command's --help, lutkit-editor --help, the
+#     installed man page and the README exists in the repo and in the installed tree: the
+#     installed paths (LUTKIT_DOC_DIR/..., e.g. /usr/share/doc/lutkit/docs/colour.md) and the
+#     repo-relative ones (docs/x.md, bench/RESULTS.md); every picture a doc shows is installed
+#  4. a one-file project (consumer/) configures with find_package(lutkit VERSION) against the
 #     prefix only, builds, and runs (consumer/main.cpp says what it checks)
 cmake_minimum_required(VERSION 3.20)
-foreach(v BUILD_DIR WORK_DIR SAMPLES_DIR CONSUMER_DIR VERSION CXX_COMPILER)
+foreach(v BUILD_DIR WORK_DIR SAMPLES_DIR CONSUMER_DIR VERSION CXX_COMPILER SOURCE_DIR DOC_DIR DOC_INSTALL_DIR)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "InstallTest.cmake: -D${v}=... is required")
   endif()
@@ -95,7 +99,83 @@ if(EXISTS ${prefix}/bin/lutkit-editor)
   endif()
 endif()
 
-# 3. A project built against the installed package, and nothing else.
+# 3. The paper trail: every doc a help text, the man page or the README cites, in the repo and
+# installed. The installed path cited is DOC_DIR (the .deb's /usr/share/doc/lutkit), found here
+# under the prefix.
+run("installed lutkit --help" ${lutkit} --help)
+set(cited_in "${out}")
+string(REGEX MATCHALL "\n  [a-z]+ +[A-Z]" commands "${out}")
+list(LENGTH commands n_commands)
+if(n_commands LESS 20)
+  message(FATAL_ERROR "lutkit --help lists ${n_commands} commands (parsing failed?):\n${out}")
+endif()
+foreach(c ${commands})
+  string(REGEX REPLACE "^\n  ([a-z]+) .*" "\\1" c "${c}")
+  run("installed lutkit ${c} --help" ${lutkit} ${c} --help)
+  string(APPEND cited_in "${out}")
+endforeach()
+if(EXISTS ${prefix}/bin/lutkit-editor)
+  run("installed lutkit-editor --help" ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen
+      ${prefix}/bin/lutkit-editor --help)
+  string(APPEND cited_in "${out}")
+endif()
+file(READ ${prefix}/share/man/man1/lutkit.1 man)
+string(REPLACE "\\-" "-" man "${man}")
+string(REPLACE "\\&" "" man "${man}")
+file(READ ${SOURCE_DIR}/README.md readme)
+string(APPEND cited_in "\n${man}\n${readme}")
+# Brackets and semicolons would split CMake's lists oddly: the paths hold none.
+string(REGEX REPLACE "[][;]" " " cited_in "${cited_in}")
+string(REGEX REPLACE "([][+.*()^$?|\\])" "\\\\\\1" doc_regex "${DOC_DIR}")
+string(REGEX MATCHALL "${doc_regex}/[A-Za-z0-9_./-]*[A-Za-z0-9_]" absolute "${cited_in}")
+string(REGEX MATCHALL "(^|[^A-Za-z0-9_./-])(docs|bench)/[A-Za-z0-9_./-]*\\.(md|png)" relative "${cited_in}")
+set(cited "")
+foreach(p ${absolute})
+  string(LENGTH "${DOC_DIR}/" skip)
+  string(SUBSTRING "${p}" ${skip} -1 p)
+  list(APPEND cited "${p}")
+endforeach()
+foreach(p ${relative})
+  string(REGEX REPLACE "^[^db]" "" p "${p}")
+  list(APPEND cited "${p}")
+endforeach()
+list(REMOVE_DUPLICATES cited)
+list(LENGTH absolute n_absolute)
+if(NOT cited MATCHES "docs/colour\\.md" OR n_absolute LESS 5)
+  message(FATAL_ERROR "found only ${n_absolute} installed doc paths cited: ${cited}")
+endif()
+set(installed_docs ${prefix}/${DOC_INSTALL_DIR})
+foreach(p ${cited})
+  if(NOT EXISTS ${SOURCE_DIR}/${p})
+    message(FATAL_ERROR "cited by --help, the man page or the README, not in the repo: ${p}")
+  endif()
+  if(NOT EXISTS ${installed_docs}/${p})
+    message(FATAL_ERROR "cited by --help, the man page or the README, not installed: ${installed_docs}/${p}")
+  endif()
+endforeach()
+list(LENGTH cited n_cited)
+message(STATUS "install_tree: ${n_cited} cited doc paths in the repo and installed: ${cited}")
+# The pictures the installed docs show, next to them.
+file(GLOB_RECURSE docs_md ${installed_docs}/*.md)
+set(n_pictures 0)
+foreach(md ${docs_md})
+  file(READ ${md} text)
+  get_filename_component(dir ${md} DIRECTORY)
+  string(REGEX MATCHALL "!\\[[^]]*\\]\\([^)]+\\)" pictures "${text}")
+  foreach(pic ${pictures})
+    string(REGEX REPLACE ".*\\(([^)]+)\\)$" "\\1" pic "${pic}")
+    if(NOT EXISTS ${dir}/${pic})
+      message(FATAL_ERROR "${md} shows ${pic}, not installed")
+    endif()
+    math(EXPR n_pictures "${n_pictures} + 1")
+  endforeach()
+endforeach()
+
+if(n_pictures LESS 5)
+  message(FATAL_ERROR "found only ${n_pictures} pictures in the installed docs")
+endif()
+
+# 4. A project built against the installed package, and nothing else.
 set(launcher "")
 if(CXX_LAUNCHER)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_LAUNCHER})

@@ -3,8 +3,9 @@
 #   - its control fields: name, version, the runtime dependencies dpkg-shlibdeps found
 #     (OpenImageIO, OpenColorIO; Qt 6 and its platform plugins with the editor);
 #   - what it holds: the programs, the image module, the man page, the completions, the editor's
-#     desktop entry, MIME types and icon, the OCIO config and the docs, and no headers, static
-#     libraries or CMake package (the `dev` component);
+#     desktop entry, MIME types and icon, the OCIO config, the docs with their pictures, the
+#     licence and Debian's copyright file, and no headers, static libraries or CMake package
+#     (the `dev` component);
 #   - the extracted lutkit and lutkit-editor run (--version), and the README's quick starts run
 #     as written with that lutkit first on PATH (docs_tests with LUTKIT_QUICKSTART_BIN).
 # Variables: BUILD_DIR, WORK_DIR, VERSION, DOCS_TESTS, EDITOR (ON/OFF).
@@ -50,7 +51,9 @@ run(dpkg-deb -x "${deb}" "${root}")
 set(files usr/bin/lutkit usr/lib/lutkit/lutkit_imageio.so usr/share/man/man1/lutkit.1
           usr/share/bash-completion/completions/lutkit usr/share/zsh/site-functions/_lutkit
           usr/share/fish/vendor_completions.d/lutkit.fish usr/share/lutkit/ocio/config.ocio
-          usr/share/doc/lutkit/README.md usr/share/doc/lutkit/docs/specs/strip-layouts.md)
+          usr/share/doc/lutkit/README.md usr/share/doc/lutkit/docs/specs/strip-layouts.md
+          usr/share/doc/lutkit/docs/colour.md usr/share/doc/lutkit/docs/images/check-report.png
+          usr/share/doc/lutkit/LICENSE usr/share/doc/lutkit/copyright)
 if(EDITOR)
   list(APPEND files usr/bin/lutkit-editor usr/share/applications/lutkit-editor.desktop
        usr/share/mime/packages/lutkit.xml usr/share/icons/hicolor/scalable/apps/lutkit-editor.svg)

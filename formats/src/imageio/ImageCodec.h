@@ -2,7 +2,8 @@
 // The streaming seam every image codec implements: an ImageSource hands out rows in the file's
 // own sample type, an ImageSink takes rows in the output's type, both in chunks of whole rows, in
 // order. Native codecs (PNG, OpenEXR scanline files, PNM) are compiled into lutkit_formats; every
-// other format goes through OpenImageIO in the module (OiioCodec.cpp forwards to it).
+// other format goes through OpenImageIO in the module (ImageIOLoader.cpp loads it and forwards to
+// it; OiioImage.cpp inside it).
 #include "lut/formats/ImageIO.h"
 #include "lut/io/OutputFile.h"
 

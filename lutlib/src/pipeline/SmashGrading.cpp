@@ -1,5 +1,6 @@
 // Scalar, accurate (std::pow) forms of the Smash grading math. The pipeline's grading pass uses
-// table pows for speed (SmashStages.cpp) and is tested against these and a float64 reference.
+// polynomial pows for speed (GradeStages.cpp, FastMath.h) and is tested against these and a float64
+// reference.
 #include "lut/pipeline/SmashGrading.h"
 
 #include "FastMath.h"

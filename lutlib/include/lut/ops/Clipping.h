@@ -1,7 +1,7 @@
 #pragma once
 // Clipping feedback: how many entries of a LUT fall outside the range a display (or an 8-bit
 // export) can hold, cheap enough to run on every slider move (a 33^3 LUT takes tens of
-// microseconds; tests/ops/test_clipping.cpp prints the time).
+// microseconds; tests/ops/test_grading.cpp checks the count against a plain one).
 #include "lut/Lut3D.h"
 
 #include <array>
