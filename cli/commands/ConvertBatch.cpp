@@ -7,6 +7,7 @@
 #include "Batch.h"
 #include "LutFiles.h"
 #include "PurposeText.h"
+#include "StrengthOptions.h"
 #include "Usage.h"
 
 #include "lut/formats/Convert.h"
@@ -52,6 +53,8 @@ std::string convertOne(const std::string& format, const BatchJob& j,
     notes = r.input.diagnostics;
     notes.insert(notes.end(), r.writeDiagnostics.begin(), r.writeDiagnostics.end());
     std::string line = j.input + " -> " + j.output + ": ";
+    if (const std::string s = strengthText(base.strength); !s.empty())
+        line += "strength " + s + "; ";
     const auto& c = r.purpose.conversion;
     if (c && c->to == LutPurpose::Smash) {
         const SmashAuthoringResult& a = c->authoring;

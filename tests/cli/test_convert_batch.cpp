@@ -117,6 +117,24 @@ TEST(CliConvertBatch, OtherFormatsKeepNamesAndABadFileIsListed) {
               formats::readLut(dir + "/in/a.png").cube->entries());
 }
 
+// --strength on a folder: every file's line says the strength it was made at (it did not), and
+// each file is what the one-file convert writes at that strength.
+TEST(CliConvertBatch, EveryLineSaysTheStrength) {
+    const std::string dir = workDir();
+    std::filesystem::create_directories(dir + "/in");
+    std::filesystem::copy_file(samplePath("sample_grade.cube"), dir + "/in/b.cube");
+    const RunResult r =
+        runCli("convert '" + dir + "/in/' -o '" + dir + "/out/' --format cube --strength 0.5");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("b.cube -> " + dir + "/out/b.cube: strength 0.5"), std::string::npos)
+        << r.out;
+    const RunResult one =
+        runCli("convert '" + dir + "/in/b.cube' '" + dir + "/one.cube' --strength 0.5 -q");
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    EXPECT_EQ(formats::readLut(dir + "/out/b.cube").cube->entries(),
+              formats::readLut(dir + "/one.cube").cube->entries());
+}
+
 TEST(CliConvertBatch, UsageAndEmptyFolders) {
     const std::string dir = workDir();
     std::filesystem::create_directories(dir + "/empty");
