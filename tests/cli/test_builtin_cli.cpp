@@ -80,6 +80,8 @@ TEST(CliBuiltin, ConvertWritesTheGamesDefaultLutAsItIs) {
     RunResult r = runCli("convert builtin:smash-default '" + dir + "/d.nutexb'");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.find("target   smash"), std::string::npos) << r.out; // not compensated
+    // What it is for, and why: its name, not a file (it said "the file says so").
+    EXPECT_NE(r.out.find("in:  smash (a built-in game LUT)"), std::string::npos) << r.out;
     const Lut3D back = formats::readLut(dir + "/d.nutexb").toLut3D();
     const Lut3D want = smashDefault();
     ASSERT_EQ(back.size(), 16);

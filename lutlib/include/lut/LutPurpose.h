@@ -45,12 +45,13 @@ std::optional<LutPurpose> takePurposeTag(std::vector<std::string>& comments,
 // Which purpose a command takes for a LUT it reads, and why: what the user gave (a flag, an
 // answer) first, then what the file says (its tag, or its format: a .nutexb is the game's LUT),
 // else `assumed` (lutkit's default: raw). The programs say the text when the file did not say.
-enum class PurposeSource { Given, File, Format, Assumed };
+enum class PurposeSource { Given, File, Format, Builtin, Assumed };
 struct PurposeDecision {
     LutPurpose purpose = LutPurpose::Raw;
     PurposeSource source = PurposeSource::Assumed;
     std::optional<LutPurpose> said; // what the file says (kept when given overrides it)
     // "smash (the file says so: LUTKIT_PURPOSE smash)", "smash (a .nutexb is the game's LUT)",
+    // "smash (a built-in game LUT)",
     // "raw (--in-target)", "raw (the file does not say; --in-target smash if it is the game's
     // LUT)": `how` names what chooses (a flag, the editor's question).
     std::string text(const std::string& how) const;

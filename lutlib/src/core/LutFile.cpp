@@ -49,7 +49,10 @@ Lut3D LutFile::toLut3D(int size) const {
 
 PurposeDecision decidePurpose(const LutFile& file, std::optional<LutPurpose> given,
                               LutPurpose assumed) {
-    return decidePurpose(file.purpose, file.format == "nutexb", given, assumed);
+    PurposeDecision d = decidePurpose(file.purpose, file.format == "nutexb", given, assumed);
+    if (d.source == PurposeSource::File && file.format == "builtin")
+        d.source = PurposeSource::Builtin; // builtin:smash-default says so by its name
+    return d;
 }
 
 } // namespace lut

@@ -114,6 +114,9 @@ std::string PurposeDecision::text(const std::string& how) const {
         return name + " (the file says so: " + purposeTag(purpose) + ")";
     case PurposeSource::Format:
         return name + " (a .nutexb is the game's LUT)";
+    case PurposeSource::Builtin:
+        return name +
+               (purpose == LutPurpose::Smash ? " (a built-in game LUT)" : " (a built-in edit)");
     case PurposeSource::Assumed:
         break;
     }
