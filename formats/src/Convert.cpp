@@ -13,7 +13,7 @@
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
 #include "lut/ops/Strength.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <glm/mat3x3.hpp>
 

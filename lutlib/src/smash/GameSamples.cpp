@@ -1,9 +1,9 @@
 // The samples, the game's error over them and the least-squares refinement; see GameSamples.h.
-#include "pipeline/GameSamples.h"
+#include "smash/GameSamples.h"
 
 #include "lut/Parallel.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "pipeline/GameDisplay.h"
+#include "lut/smash/SmashConstants.h"
+#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

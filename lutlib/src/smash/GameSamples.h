@@ -1,9 +1,9 @@
 #pragma once
 // Internal to lutlib: the colours over which Smash authoring measures and refines a game LUT
-// (lut/pipeline/SmashAuthoring.h): inputs s of the game's LUT with the display colour wanted
+// (lut/smash/SmashAuthoring.h): inputs s of the game's LUT with the display colour wanted
 // there, located in the LUT's cells; the game's error over them; the least-squares refinement.
 #include "lut/Lut3D.h"
-#include "lut/pipeline/GameError.h"
+#include "lut/smash/GameError.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,10 +1,10 @@
 // Scalar, accurate (std::pow) forms of the Smash grading math. The pipeline's grading pass uses
 // table pows for speed (SmashStages.cpp) and is tested against these and a float64 reference.
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/smash/SmashGrading.h"
 
-#include "FastMath.h"
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
+#include "pipeline/FastMath.h"
 
 #include <algorithm>
 #include <atomic>
