@@ -1,8 +1,7 @@
-// The samples, the game's error over them and the least-squares refinement; see GameSamples.h.
+// The samples and the game's error over them; see GameSamples.h.
 #include "smash/GameSamples.h"
 
 #include "lut/Parallel.h"
-#include "lut/smash/SmashConstants.h"
 #include "smash/GameDisplay.h"
 
 #include <algorithm>
@@ -34,262 +33,18 @@ std::uint32_t GameSamples::cellIndex(std::size_t p) const {
     return m_corner[3 * p] + m * (m_corner[3 * p + 1] + m * m_corner[3 * p + 2]);
 }
 
-namespace {
-
-// Trilinear weight of the corner (dx, dy, dz) of sample p's cell.
-double cornerWeight(const GameSamples& sm, std::size_t p, int dx, int dy, int dz) {
-    const double fx = sm.fraction(p, 0), fy = sm.fraction(p, 1), fz = sm.fraction(p, 2);
-    return (dx ? fx : 1.0 - fx) * (dy ? fy : 1.0 - fy) * (dz ? fz : 1.0 - fz);
-}
-
-// The trilinear value of channel values v (r fastest, n^3) at sample p.
-double trilinear(const GameSamples& sm, const std::vector<double>& v, std::size_t p) {
-    const int n = sm.lutSize();
-    const int i = sm.corner(p, 0), j = sm.corner(p, 1), k = sm.corner(p, 2);
-    double acc = 0.0;
-    for (int dz = 0; dz < 2; ++dz)
-        for (int dy = 0; dy < 2; ++dy)
-            for (int dx = 0; dx < 2; ++dx)
-                acc += cornerWeight(sm, p, dx, dy, dz) *
-                       v[static_cast<std::size_t>(i + dx) +
-                         static_cast<std::size_t>(n) *
-                             (j + dy + static_cast<std::size_t>(n) * (k + dz))];
-    return acc;
-}
-
-std::vector<double> channel(const Lut3D& lut, int c) {
+std::vector<double> lutChannel(const Lut3D& lut, int c) {
     std::vector<double> v(lut.entryCount());
     for (std::size_t i = 0; i < v.size(); ++i)
         v[i] = lut.entries()[i][c];
     return v;
 }
 
-// Samples grouped by cell (CSR): start[cell] .. start[cell + 1] index into order.
-struct CellIndex {
-    std::vector<std::uint32_t> start;
-    std::vector<std::uint32_t> order;
-};
-
-CellIndex groupByCell(const GameSamples& sm) {
-    const std::size_t m = static_cast<std::size_t>(sm.lutSize() - 1);
-    CellIndex idx;
-    idx.start.assign(m * m * m + 1, 0);
-    for (std::size_t p = 0; p < sm.size(); ++p)
-        ++idx.start[sm.cellIndex(p) + 1];
-    for (std::size_t c = 1; c < idx.start.size(); ++c)
-        idx.start[c] += idx.start[c - 1];
-    idx.order.resize(sm.size());
-    std::vector<std::uint32_t> fill(idx.start.begin(), idx.start.end() - 1);
-    for (std::size_t p = 0; p < sm.size(); ++p)
-        idx.order[fill[sm.cellIndex(p)]++] = static_cast<std::uint32_t>(p);
-    return idx;
-}
-
-// Calls fn(p, weight) for every sample in the cells around lattice entry (i, j, k).
-template <class Fn>
-void forSamplesAround(const GameSamples& sm, const CellIndex& idx, int i, int j, int k, Fn&& fn) {
-    const int m = sm.lutSize() - 1;
-    for (int ck = std::max(k - 1, 0); ck <= std::min(k, m - 1); ++ck)
-        for (int cj = std::max(j - 1, 0); cj <= std::min(j, m - 1); ++cj)
-            for (int ci = std::max(i - 1, 0); ci <= std::min(i, m - 1); ++ci) {
-                const std::size_t cell =
-                    static_cast<std::size_t>(ci) +
-                    static_cast<std::size_t>(m) * (cj + static_cast<std::size_t>(m) * ck);
-                for (std::uint32_t q = idx.start[cell]; q < idx.start[cell + 1]; ++q) {
-                    const std::size_t p = idx.order[q];
-                    fn(p, cornerWeight(sm, p, i - ci, j - cj, k - ck));
-                }
-            }
-}
-
-// gameShown as a function of the brightened value r, tabulated for the 8-bit search (which
-// evaluates it a few million times): linear interpolation on 2^16 intervals of [0, 1.4] is within
-// 1e-6 of the display value, far below what decides between two 8-bit entries.
-class ShownTable {
-public:
-    ShownTable() : m_v(kSize + 2) {
-        for (int i = 0; i <= kSize + 1; ++i) {
-            const double r = kMax * i / kSize;
-            m_v[static_cast<std::size_t>(i)] =
-                srgbEncodeUnit(clampUnit(std::pow(r, static_cast<double>(kSmashDecodeExponent))));
-        }
-    }
-    double operator()(double lutOut, double s) const {
-        const double r = ((lutOut - s) * static_cast<double>(kSmashBrightenMix) + s) *
-                         static_cast<double>(kSmashBrightenScale);
-        if (!(r > 0.0))
-            return 0.0;
-        const double x = r * (kSize / kMax);
-        if (x >= kSize)
-            return 1.0;
-        const std::size_t i = static_cast<std::size_t>(x);
-        const double f = x - static_cast<double>(i);
-        return m_v[i] + f * (m_v[i + 1] - m_v[i]);
-    }
-
-private:
-    static constexpr int kSize = 1 << 16;
-    static constexpr double kMax = 1.4;
-    std::vector<double> m_v;
-};
-
-const ShownTable& shownTable() {
-    static const ShownTable table;
-    return table;
-}
-
-constexpr double kEdgeTolerance = 1e-6;  // wanted this close to white or black is white/black
-constexpr double kMaxStep = 4.0 / 255.0; // per Gauss-Seidel update
-constexpr double kRidge = 1e-6;          // towards the exact entry, for unconstrained entries
-constexpr double kMinSlope = 0.02;       // display slope floor (weights stay positive)
-constexpr int kOuterRounds = 4;          // re-weightings (the display is not linear in the entry)
-constexpr int kInnerSweeps = 6;          // Gauss-Seidel sweeps per weighting
-constexpr int kMaxIntegerSweeps = 4;
-
-// One channel: the display-space least squares solved as weighted least squares in LUT space
-// (each sample's weight the squared secant slope of the display between the current value and the
-// one that shows the wanted colour, so the weighted LUT-space residual is the display residual),
-// re-weighted a few times; then the 8-bit search on the true display error.
-void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exact, int c,
-                   Lut3D& out) {
-    const int n = sm.lutSize();
-    const std::size_t count = sm.size();
-    std::vector<double> target(count), weight(count);
-    std::vector<signed char> side(count); // +1: only too dark counts (white), -1: only too bright
-    for (std::size_t p = 0; p < count; ++p) {
-        const double t = sm.wanted(p, c);
-        target[p] = lutForShown(t, sm.s(p, c));
-        // (a float blend of white entries may miss 1 by a rounding)
-        side[p] = t >= 1.0 - kEdgeTolerance ? 1 : t <= kEdgeTolerance ? -1 : 0;
-    }
-    const std::vector<double> ex = channel(exact, c);
-    std::vector<double> v(ex.size());
-    for (std::size_t i = 0; i < v.size(); ++i)
-        v[i] = clampUnit(ex[i]);
-    std::vector<double> cur(count);
-    for (std::size_t p = 0; p < count; ++p)
-        cur[p] = trilinear(sm, v, p);
-
-    for (int round = 0; round < kOuterRounds; ++round) {
-        for (std::size_t p = 0; p < count; ++p) {
-            const double s = sm.s(p, c), d = cur[p] - target[p];
-            double slope = std::fabs(d) > 1e-6 ? (gameShown(cur[p], s) - sm.wanted(p, c)) / d
-                                               : gameShownSlope(target[p], s);
-            slope = std::max(slope, kMinSlope);
-            weight[p] = slope * slope;
-        }
-        for (int sweep = 0; sweep < kInnerSweeps; ++sweep) {
-            double largest = 0.0;
-            for (int k = 0; k < n; ++k)
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i) {
-                        const std::size_t e =
-                            static_cast<std::size_t>(i) +
-                            static_cast<std::size_t>(n) * (j + static_cast<std::size_t>(n) * k);
-                        double num = kRidge * (v[e] - ex[e]), den = kRidge;
-                        forSamplesAround(sm, idx, i, j, k, [&](std::size_t p, double w) {
-                            const double r = cur[p] - target[p];
-                            if ((side[p] > 0 && r >= 0.0) || (side[p] < 0 && r <= 0.0))
-                                return;
-                            num += weight[p] * w * r;
-                            den += weight[p] * w * w;
-                        });
-                        // a step at most kMaxStep: the weights are from the round's start, and
-                        // a long step past the white or black point would overshoot
-                        const double step = std::clamp(-num / den, -kMaxStep, kMaxStep);
-                        const double next = clampUnit(v[e] + step);
-                        const double delta = next - v[e];
-                        if (delta == 0.0)
-                            continue;
-                        v[e] = next;
-                        largest = std::max(largest, std::fabs(delta));
-                        forSamplesAround(sm, idx, i, j, k,
-                                         [&](std::size_t p, double w) { cur[p] += w * delta; });
-                    }
-            if (largest < 1e-6)
-                break;
-        }
-    }
-
-    // 8 bits: start from the nearest values and move single entries by one step while the true
-    // squared display error over the samples falls.
-    std::vector<int> q(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        q[i] = static_cast<int>(std::lround(v[i] * 255.0));
-        v[i] = q[i] / 255.0;
-    }
-    const ShownTable& table = shownTable();
-    auto err = [&](std::size_t p, double value) {
-        const double d = table(value, sm.s(p, c)) - sm.wanted(p, c);
-        return d * d;
-    };
-    std::vector<double> errNow(count);
-    for (std::size_t p = 0; p < count; ++p) {
-        cur[p] = trilinear(sm, v, p);
-        errNow[p] = err(p, cur[p]);
-    }
-    std::vector<char> active(v.size(), 1), nextActive(v.size(), 0);
-    for (int sweep = 0; sweep < kMaxIntegerSweeps; ++sweep) {
-        bool changed = false;
-        std::fill(nextActive.begin(), nextActive.end(), 0);
-        for (int k = 0; k < n; ++k)
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i) {
-                    const std::size_t e =
-                        static_cast<std::size_t>(i) +
-                        static_cast<std::size_t>(n) * (j + static_cast<std::size_t>(n) * k);
-                    if (!active[e])
-                        continue;
-                    double gain[2] = {0.0, 0.0};
-                    const int steps[2] = {-1, 1};
-                    forSamplesAround(sm, idx, i, j, k, [&](std::size_t p, double w) {
-                        for (int d = 0; d < 2; ++d)
-                            gain[d] += err(p, cur[p] + w * steps[d] / 255.0) - errNow[p];
-                    });
-                    int best = -1;
-                    for (int d = 0; d < 2; ++d) {
-                        const int nq = q[e] + steps[d];
-                        if (nq < 0 || nq > 255 || gain[d] >= -1e-15)
-                            continue;
-                        if (best < 0 || gain[d] < gain[best])
-                            best = d;
-                    }
-                    if (best < 0)
-                        continue;
-                    q[e] += steps[best];
-                    const double delta = steps[best] / 255.0;
-                    v[e] = q[e] / 255.0;
-                    forSamplesAround(sm, idx, i, j, k, [&](std::size_t p, double w) {
-                        cur[p] += w * delta;
-                        errNow[p] = err(p, cur[p]);
-                    });
-                    changed = true;
-                    for (int dk = -1; dk <= 1; ++dk)
-                        for (int dj = -1; dj <= 1; ++dj)
-                            for (int di = -1; di <= 1; ++di) {
-                                const int a = i + di, b = j + dj, g = k + dk;
-                                if (a < 0 || b < 0 || g < 0 || a >= n || b >= n || g >= n)
-                                    continue;
-                                nextActive[static_cast<std::size_t>(a) +
-                                           static_cast<std::size_t>(n) *
-                                               (b + static_cast<std::size_t>(n) * g)] = 1;
-                            }
-                }
-        if (!changed)
-            break;
-        active.swap(nextActive);
-    }
-    for (std::size_t i = 0; i < v.size(); ++i)
-        out.entries()[i][c] = static_cast<float>(q[i] / 255.0);
-}
-
-} // namespace
-
 GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads,
                         std::vector<double>* perSample) {
     const std::size_t count = sm.size();
     std::vector<double> steps(3 * count);
-    const std::vector<double> ch[3] = {channel(lut, 0), channel(lut, 1), channel(lut, 2)};
+    const std::vector<double> ch[3] = {lutChannel(lut, 0), lutChannel(lut, 1), lutChannel(lut, 2)};
     const int chunks = static_cast<int>(std::min<std::size_t>(count, 4096));
     parallelFor(chunks, nthreads, [&](int c0, int c1) {
         const std::size_t p0 =
@@ -298,7 +53,7 @@ GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads,
             count * static_cast<std::size_t>(c1) / static_cast<std::size_t>(chunks);
         for (std::size_t p = p0; p < p1; ++p)
             for (int c = 0; c < 3; ++c) {
-                const double shown = gameShown(trilinear(sm, ch[c], p), sm.s(p, c));
+                const double shown = gameShown(sm.trilinear(ch[c], p), sm.s(p, c));
                 steps[3 * p + c] = (shown - sm.wanted(p, c)) * 255.0;
             }
     });
@@ -308,17 +63,6 @@ GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads,
             (*perSample)[i] = std::fabs(steps[i]);
     }
     return summariseSteps(steps);
-}
-
-Lut3D refineSmashLut(const GameSamples& sm, const Lut3D& exact, int nthreads) {
-    Lut3D out(sm.lutSize());
-    out.setTitle(exact.title());
-    const CellIndex idx = groupByCell(sm);
-    parallelFor(3, nthreads, [&](int c0, int c1) {
-        for (int c = c0; c < c1; ++c)
-            refineChannel(sm, idx, exact, c, out);
-    });
-    return out;
 }
 
 } // namespace lut::detail

@@ -12,6 +12,7 @@
 #include "smash/GameDisplay.h"
 #include "smash/GameMeasure.h"
 #include "smash/GameSamples.h"
+#include "smash/SmashRefinement.h"
 
 #include <algorithm>
 #include <cmath>
