@@ -5,6 +5,7 @@
 #include "lut/Limits.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/io/LutWriter.h"
 #include "lut/io/OutputPolicy.h"
 #include "lut/io/StdStreams.h"
 
