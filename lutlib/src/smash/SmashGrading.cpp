@@ -1,5 +1,5 @@
 // Scalar, accurate (std::pow) forms of the Smash grading math. The pipeline's grading pass uses
-// table pows for speed (GradeStages.cpp) and is tested against these and a float64 reference.
+// table pows for speed (SmashStages.cpp) and is tested against these and a float64 reference.
 #include "lut/smash/SmashGrading.h"
 
 #include "lut/Limits.h"
