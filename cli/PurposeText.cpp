@@ -6,8 +6,8 @@
 
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "lut/pipeline/StageLut.h"
+#include "lut/smash/SmashConstants.h"
+#include "lut/smash/StageLut.h"
 
 #include <iostream>
 #include <sstream>
@@ -101,7 +101,7 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
     out.decision = decidePurpose(file, given);
     if (out.decision.purpose == wanted) {
         out.lut = file.toLut3D();
-    } else { // a shaper evaluated exactly (lut/pipeline/PurposeConversion.h)
+    } else { // a shaper evaluated exactly (lut/smash/PurposeConversion.h)
         out.conversion = convertPurpose(file, out.decision.purpose, wanted, options);
         out.lut = out.conversion->lut;
     }

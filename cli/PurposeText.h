@@ -1,6 +1,6 @@
 #pragma once
 // What lutkit says about what a LUT is for (lut/LutPurpose.h) and about turning it into the LUT
-// for another purpose (lut/pipeline/PurposeConversion.h): one wording for convert, extract,
+// for another purpose (lut/smash/PurposeConversion.h): one wording for convert, extract,
 // apply, preview, compose and mix, and the options that choose it.
 #include "Notes.h"
 
@@ -8,8 +8,8 @@
 #include "lut/LutPurpose.h"
 #include "lut/formats/Convert.h"
 #include "lut/interp/Interpolation.h"
-#include "lut/pipeline/PurposeConversion.h"
-#include "lut/pipeline/PurposeOps.h"
+#include "lut/smash/PurposeConversion.h"
+#include "lut/smash/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 

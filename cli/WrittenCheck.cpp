@@ -3,7 +3,7 @@
 #include "lut/Error.h"
 #include "lut/check/CheckLut.h"
 #include "lut/io/OutputPolicy.h"
-#include "lut/pipeline/SmashShownEdit.h"
+#include "lut/smash/SmashShownEdit.h"
 
 #include <cstdio>
 #include <iostream>

@@ -5,7 +5,7 @@
 // that writes a LUT calls it once, after the write:
 //     checkWrittenLut(o.output, file, o.verbosity);
 // A game LUT (Smash Ultimate's, compensated for the game's brighten pass) is judged by what the
-// game shows with it (lut/pipeline/SmashShownEdit.h): the command passes the game LUT it wrote
+// game shows with it (lut/smash/SmashShownEdit.h): the command passes the game LUT it wrote
 // and shownByGame = true (the compensated table's own numbers, compressed under 0.73 and clipped
 // there, say nothing about the look).
 #include "Notes.h"

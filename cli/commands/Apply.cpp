@@ -50,7 +50,7 @@ int runApply(const ApplyOptions& o) {
     if (o.verbosity.verbose && o.color.any())
         std::cerr << "lutkit: " << colour.describe() << "\n";
     // An edit goes on the pixels as it is (a shaper then its table, exactly); the game's LUT as
-    // the edit it makes of the game's picture (lut/pipeline/PurposeConversion.h), with a note
+    // the edit it makes of the game's picture (lut/smash/PurposeConversion.h), with a note
     // saying so and what it cost. At another strength, that edit blended with neutral (one
     // table).
     // (65^3: half the 33^3 lattice's mean error for ~1 s more, measured on a warm stage LUT)

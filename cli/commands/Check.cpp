@@ -15,7 +15,7 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
-#include "lut/pipeline/SmashShownEdit.h"
+#include "lut/smash/SmashShownEdit.h"
 
 #include <CLI/CLI.hpp>
 

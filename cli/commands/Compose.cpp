@@ -8,7 +8,7 @@
 #include "WrittenCheck.h"
 
 #include "lut/ops/Compose.h"
-#include "lut/pipeline/PurposeOps.h"
+#include "lut/smash/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,7 +25,7 @@ int runCompose(const ComposeCommandOptions& o) {
     ComposeOptions c;
     c.size = o.size;
     c.method = o.interp;
-    // B's edit of the picture A gives, for what OUT is for (lut/pipeline/PurposeOps.h).
+    // B's edit of the picture A gives, for what OUT is for (lut/smash/PurposeOps.h).
     PurposeOptions po;
     po.editInterpolation = o.interp;
     const PurposeOpResult pr =

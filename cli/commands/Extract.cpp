@@ -12,8 +12,8 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
-#include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/Extract.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <CLI/CLI.hpp>
 

@@ -14,8 +14,8 @@
 #include "lut/match/Match.h"
 #include "lut/match/MatchReportImage.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/PurposeConversion.h"
 #include "lut/pipeline/SceneKind.h"
+#include "lut/smash/PurposeConversion.h"
 
 #include <CLI/CLI.hpp>
 
@@ -184,7 +184,7 @@ int runMatch(const MatchCommandOptions& o) {
     SmashAuthoringResult game;
     if (smash) {
         // The match made into the game's LUT as lutkit convert makes one
-        // (lut/pipeline/PurposeConversion.h), measured over the screenshot's colours.
+        // (lut/smash/PurposeConversion.h), measured over the screenshot's colours.
         PurposeOptions po;
         po.stageLut = o.originalLut.empty() ? nullptr : &stage;
         Image shot;

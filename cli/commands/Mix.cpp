@@ -7,7 +7,7 @@
 #include "Vocabulary.h"
 
 #include "lut/ops/Compose.h"
-#include "lut/pipeline/PurposeOps.h"
+#include "lut/smash/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 
@@ -21,7 +21,7 @@ int runMix(const MixCommandOptions& o) {
         return kExitOk;
     const PurposedPair p =
         readPurposedPair(o.a, o.b, o.inTarget, o.target, o.output, o.format, o.verbosity);
-    // Both made for what OUT is for, then mixed (lut/pipeline/PurposeOps.h).
+    // Both made for what OUT is for, then mixed (lut/smash/PurposeOps.h).
     PurposeOptions po;
     po.editInterpolation = o.interp;
     const PurposeOpResult pr = mixForPurpose({&p.a, p.pa.purpose}, {&p.b, p.pb.purpose}, o.strength,

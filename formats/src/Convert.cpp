@@ -9,11 +9,11 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
-#include "lut/io/StdStreams.h"
+#include "lut/io/LutWriter.h"
 #include "lut/ops/CompareLuts.h"
 #include "lut/ops/Resample.h"
 #include "lut/ops/Strength.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <glm/mat3x3.hpp>
 

@@ -9,7 +9,7 @@ namespace lut::formats {
 // .cube, Adobe and Resolve dialects (cube/CubeFormat.cpp).
 std::unique_ptr<Format> makeCubeFormat();
 // OpenColorIO bridge: one reader for every extension OCIO reads but .cube (OcioReader.cpp), and
-// one writer per format OCIO's Baker bakes (OcioBaker.cpp) plus .spi3d, which OCIO reads but
+// one writer per format OCIO's Baker bakes (OcioWriters.cpp) plus .spi3d, which OCIO reads but
 // cannot bake (Spi3dFormat.cpp; part of the makeOcioBakeFormats list).
 std::unique_ptr<Format> makeOcioReadFormat();
 std::vector<std::unique_ptr<Format>> makeOcioBakeFormats();

@@ -1,7 +1,7 @@
 #include "CheckModel.h"
 
 #include "lut/check/CheckFinding.h"
-#include "lut/pipeline/SmashShownEdit.h"
+#include "lut/smash/SmashShownEdit.h"
 
 namespace lut::gui {
 

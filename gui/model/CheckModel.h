@@ -3,7 +3,7 @@
 // run on a worker of its own (latest request wins, so dragging a slider never queues checks and
 // the window never waits), and the highlight of a finding's colours on the picture (also on a
 // worker: a hue band's test costs an Oklab conversion per pixel). A game LUT (the Smash target's
-// export) is judged by what the game shows with it (lut/pipeline/SmashShownEdit.h), as
+// export) is judged by what the game shows with it (lut/smash/SmashShownEdit.h), as
 // `lutkit check` judges a .nutexb. Widget-free (QtCore, QtGui for QImage).
 #include "PreviewWorker.h"
 

@@ -3,8 +3,8 @@
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FormatRegistry.h"
-#include "lut/pipeline/PurposeConversion.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/PurposeConversion.h"
+#include "lut/smash/SmashConstants.h"
 
 namespace lut::gui {
 

@@ -1,8 +1,8 @@
 #include "PreviewRenderer.h"
 
-#include "lut/pipeline/SmashCompensation.h"
-#include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
+#include "lut/smash/SmashCompensation.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <chrono>
 

@@ -5,6 +5,7 @@
 // mix, resize, info and extract honour and keep it. Oracles: the game's model in float64 written
 // here from docs/specs/smash-pipeline.md, OpenColorIO's processor on the written files, the
 // program's own other command where the claim is that two commands agree.
+#include "OcioTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
@@ -184,11 +185,7 @@ TEST(CliPurpose, TheEditOfTheGamesLutIsBoundedByWhatConvertPrints) {
     ASSERT_TRUE(std::regex_search(c.out, m, re)) << c.out;
     const double printed = std::stod(m[1]);
     EXPECT_EQ(formats::readLut(dir + "/edit.cube").purpose, LutPurpose::Raw);
-    auto ft = OCIO::FileTransform::Create();
-    const std::string path = dir + "/edit.cube";
-    ft->setSrc(path.c_str());
-    ft->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-    const auto cpu = OCIO::Config::CreateRaw()->getProcessor(ft)->getDefaultCPUProcessor();
+    const auto cpu = test::ocioFileProcessor(dir + "/edit.cube");
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     double truth = 0.0;

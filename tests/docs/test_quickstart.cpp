@@ -5,6 +5,7 @@
 // specs: the strip layout (docs/specs/strip-layouts.md), the game's compensation
 // (docs/specs/smash-pipeline.md) in float64, OpenColorIO's reading of the .3dl, an affine grade
 // that every interpolation reproduces exactly.
+#include "OcioTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/formats/Registry.h"
@@ -334,11 +335,7 @@ TEST(QuickStart, Colourist) {
     LineRun r = runLine(dir, lines[0]);
     ASSERT_EQ(r.exitCode, 0) << describe(lines[0], r);
     EXPECT_TRUE(mentions(r.out, "max")) << "convert printed no error figure:\n" << r.out;
-    OCIO::ConstConfigRcPtr config = OCIO::Config::CreateRaw();
-    OCIO::FileTransformRcPtr ft = OCIO::FileTransform::Create();
-    ft->setSrc((dir / "look.3dl").c_str());
-    ft->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-    OCIO::ConstCPUProcessorRcPtr cpu = config->getProcessor(ft)->getDefaultCPUProcessor();
+    OCIO::ConstCPUProcessorRcPtr cpu = lut::test::ocioFileProcessor((dir / "look.3dl").string());
     double worst = 0;
     for (int i = 0; i <= 10; ++i)
         for (int j = 0; j <= 10; ++j)

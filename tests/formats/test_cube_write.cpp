@@ -1,5 +1,6 @@
 // .cube writing: bit-exact round trips, what the header holds, the shaper rules, atomic writes,
 // and OpenColorIO (an independent reader) agreeing with our reading of what we wrote.
+#include "OcioTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/formats/Cube.h"
@@ -217,12 +218,7 @@ TEST(CubeWrite, OcioReadsOurOutputAndAgrees) {
         const LutFile ours = readCube(path);
         const auto sampler = makeSampler(*ours.cube, Interpolation::Tetrahedral);
 
-        OCIO::ConstConfigRcPtr config = OCIO::Config::CreateRaw();
-        OCIO::FileTransformRcPtr ft = OCIO::FileTransform::Create();
-        ft->setSrc(path.c_str());
-        ft->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-        OCIO::ConstProcessorRcPtr proc = config->getProcessor(ft);
-        OCIO::ConstCPUProcessorRcPtr cpu = proc->getOptimizedCPUProcessor(OCIO::OPTIMIZATION_NONE);
+        OCIO::ConstCPUProcessorRcPtr cpu = test::ocioFileProcessor(path);
 
         std::mt19937 rng(99);
         std::uniform_real_distribution<float> u(0.0f, 1.0f);

@@ -1,5 +1,6 @@
 // The OpenColorIO bridge: every Baker format written and read back, hand-written foreign files
 // compared with values computed here, and the extension list checked against OCIO itself.
+#include "OcioTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/Error.h"
@@ -215,10 +216,7 @@ TEST(OcioFormat, FormatsWithAShaperKeepTheInputRange) {
         EXPECT_EQ(back.cube->domainMax(), glm::vec3(2.0f));
         EXPECT_LE(maxEntryDiff(*domainFile().cube, *back.cube), 2e-6);
 
-        auto ft = OCIO::FileTransform::Create();
-        ft->setSrc(path.c_str());
-        ft->setInterpolation(OCIO::INTERP_BEST);
-        const auto cpu = OCIO::Config::CreateRaw()->getProcessor(ft)->getDefaultCPUProcessor();
+        const auto cpu = lut::test::ocioFileProcessor(path);
         float rgb[3] = {2.0f, 1.0f, 0.5f};
         cpu->applyRGB(rgb);
         const glm::vec3 want = affine(glm::vec3(1.0f, 0.5f, 0.25f));

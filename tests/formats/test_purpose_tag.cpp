@@ -2,6 +2,7 @@
 // format that has a place for it and read back; other readers still read the file and ignore the
 // tag (OpenColorIO's processor equals the table at its lattice, ffmpeg's lut3d gives the same
 // picture as with the untagged file), and other programs see the image description (oiiotool).
+#include "OcioTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/Error.h"
@@ -131,10 +132,7 @@ TEST(PurposeTag, OpenColorIOReadsTheTaggedCube) {
     const std::string path = dir + "/smash.cube";
     const LutFile f = tagged(LutPurpose::Smash, 5);
     formats::writeLut(path, f);
-    auto ft = OCIO::FileTransform::Create();
-    ft->setSrc(path.c_str());
-    ft->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-    const auto cpu = OCIO::Config::CreateRaw()->getProcessor(ft)->getDefaultCPUProcessor();
+    const auto cpu = test::ocioFileProcessor(path);
     double worst = 0.0;
     for (int b = 0; b < 5; ++b)
         for (int g = 0; g < 5; ++g)

@@ -17,8 +17,8 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashCompensation.h"
-#include "lut/pipeline/SmashDisplayEdit.h"
+#include "lut/smash/SmashCompensation.h"
+#include "lut/smash/SmashDisplayEdit.h"
 
 #include <QAbstractButton>
 #include <QComboBox>

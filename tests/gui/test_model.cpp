@@ -14,9 +14,9 @@
 #include "lut/formats/Registry.h"
 #include "lut/ops/AdjustmentList.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashCompensation.h"
-#include "lut/pipeline/SmashDisplayEdit.h"
 #include "lut/roundtrip/Embed.h"
+#include "lut/smash/SmashCompensation.h"
+#include "lut/smash/SmashDisplayEdit.h"
 
 #include <glm/common.hpp>
 

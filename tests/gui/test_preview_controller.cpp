@@ -8,7 +8,7 @@
 #include "lut/Quantize.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashDisplayEdit.h"
+#include "lut/smash/SmashDisplayEdit.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

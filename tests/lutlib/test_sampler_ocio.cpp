@@ -1,6 +1,7 @@
 // OpenColorIO as the oracle: our trilinear and tetrahedral samplers (scalar and SIMD) against
 // OCIO's CPU processor for a Lut3DTransform holding the same entries.
 #include "LutTestUtil.h"
+#include "OcioTestUtil.h"
 #include "lut/interp/Sampler.h"
 
 #include <OpenColorIO/OpenColorIO.h>
@@ -12,22 +13,9 @@ using namespace lut;
 namespace {
 
 OCIO::ConstCPUProcessorRcPtr ocioProcessor(const Lut3D& lut, Interpolation method) {
-    const int n = lut.size();
-    auto t = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
-    // setValue takes the red, green and blue lattice indices explicitly, so OCIO's internal
-    // order (blue fastest) does not matter here.
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 e = lut.at(r, g, b);
-                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
-                            static_cast<unsigned long>(b), e.r, e.g, e.b);
-            }
-    t->setInterpolation(method == Interpolation::Tetrahedral ? OCIO::INTERP_TETRAHEDRAL
-                                                             : OCIO::INTERP_LINEAR);
-    auto config = OCIO::Config::CreateRaw();
-    return config->getProcessor(t)->getOptimizedCPUProcessor(
-        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
+    return test::ocioCpuProcessor(test::ocioLut3DTransform(lut, method == Interpolation::Tetrahedral
+                                                                    ? OCIO::INTERP_TETRAHEDRAL
+                                                                    : OCIO::INTERP_LINEAR));
 }
 
 std::vector<glm::vec3> oracleInputs(int n) {

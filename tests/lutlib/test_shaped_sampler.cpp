@@ -3,6 +3,7 @@
 // OpenColorIO's processor for a Lut1DTransform then a Lut3DTransform holding the same entries,
 // and the SIMD kernel against sample() bit for bit (NaN, +-Inf, HDR, 2 and 65536 entries).
 #include "LutTestUtil.h"
+#include "OcioTestUtil.h"
 #include "lut/LutFile.h"
 #include "lut/PixelChain.h"
 #include "lut/interp/Sampler.h"
@@ -74,20 +75,8 @@ OCIO::ConstCPUProcessorRcPtr ocioShaped(const LutFile& file) {
         l1->setValue(static_cast<unsigned long>(i), s[i].r, s[i].g, s[i].b);
     l1->setInterpolation(OCIO::INTERP_LINEAR);
     group->appendTransform(l1);
-    const Lut3D& lut = *file.cube;
-    const int n = lut.size();
-    auto l3 = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 e = lut.at(r, g, b);
-                l3->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
-                             static_cast<unsigned long>(b), e.r, e.g, e.b);
-            }
-    l3->setInterpolation(OCIO::INTERP_TETRAHEDRAL);
-    group->appendTransform(l3);
-    return OCIO::Config::CreateRaw()->getProcessor(group)->getOptimizedCPUProcessor(
-        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
+    group->appendTransform(test::ocioLut3DTransform(*file.cube, OCIO::INTERP_TETRAHEDRAL));
+    return test::ocioCpuProcessor(group);
 }
 
 glm::vec3 viaKernel(const Sampler& s, glm::vec3 in) {

@@ -4,7 +4,7 @@
 #include "PipelineTestUtil.h"
 
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <gtest/gtest.h>
 

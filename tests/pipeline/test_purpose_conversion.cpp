@@ -1,4 +1,4 @@
-// A LUT made for one purpose turned into another (lut/pipeline/PurposeConversion.h), against the
+// A LUT made for one purpose turned into another (lut/smash/PurposeConversion.h), against the
 // game's model in float64 written here from docs/specs/smash-pipeline.md:
 //   - the edit a game LUT makes (smash -> raw): exact at its lattice, and the sampling error it
 //     prints is not below the truth measured at 200,000 random colours it did not use;
@@ -13,8 +13,8 @@
 #include "PipelineTestUtil.h"
 
 #include "lut/pipeline/PreviewPlan.h"
-#include "lut/pipeline/PurposeConversion.h"
-#include "lut/pipeline/PurposeOps.h"
+#include "lut/smash/PurposeConversion.h"
+#include "lut/smash/PurposeOps.h"
 
 #include <gtest/gtest.h>
 

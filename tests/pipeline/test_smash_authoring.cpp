@@ -1,9 +1,9 @@
-// Smash authoring (lut/pipeline/SmashAuthoring.h) against the game written out in float64 from
+// Smash authoring (lut/smash/SmashAuthoring.h) against the game written out in float64 from
 // docs/specs/smash-pipeline.md ("The Smush compensation"): the exact composition at the 16^3
 // lattice, the least-squares refinement over the colours that occur, and the error both report.
 #include "PipelineTestUtil.h"
 
-#include "lut/pipeline/SmashAuthoring.h"
+#include "lut/smash/SmashAuthoring.h"
 
 #include <gtest/gtest.h>
 

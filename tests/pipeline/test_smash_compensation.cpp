@@ -1,9 +1,9 @@
-// The LUTs that cancel Smash's brighten step (lut/pipeline/SmashCompensation.h) against the
+// The LUTs that cancel Smash's brighten step (lut/smash/SmashCompensation.h) against the
 // game's shader evaluated in float64 (PipelineTestUtil.h, from docs/specs/smash-pipeline.md).
 #include "PipelineTestUtil.h"
 
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashCompensation.h"
+#include "lut/smash/SmashCompensation.h"
 
 #include <gtest/gtest.h>
 

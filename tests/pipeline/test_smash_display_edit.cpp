@@ -1,4 +1,4 @@
-// The Smash LUT for an edit made on the game's picture (lut/pipeline/SmashDisplayEdit.h) against
+// The Smash LUT for an edit made on the game's picture (lut/smash/SmashDisplayEdit.h) against
 // the game's shader in float64 (PipelineTestUtil.h, from docs/specs/smash-pipeline.md): at every
 // lattice input the game, run with the returned LUT, shows the edit of what it showed before.
 // Also the screenshot/scene rule (lut/pipeline/SceneKind.h).
@@ -6,7 +6,7 @@
 
 #include "lut/Error.h"
 #include "lut/pipeline/SceneKind.h"
-#include "lut/pipeline/SmashDisplayEdit.h"
+#include "lut/smash/SmashDisplayEdit.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 
 #include "lut/interp/Sampler.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // What the game shows with a game LUT, as an edit of the neutral game's picture
-// (lut/pipeline/SmashShownEdit.h), against the game's shader in float64 (PipelineTestUtil.h, from
+// (lut/smash/SmashShownEdit.h), against the game's shader in float64 (PipelineTestUtil.h, from
 // docs/specs/smash-pipeline.md): for a display colour d, the neutral game's input s showing it is
 // found here by bisection on that shader; the entry must be what the shader shows for s with the
 // game LUT, clipped to the display and sRGB-encoded.
 #include "PipelineTestUtil.h"
 
-#include "lut/pipeline/SmashDisplayEdit.h"
-#include "lut/pipeline/SmashShownEdit.h"
+#include "lut/smash/SmashDisplayEdit.h"
+#include "lut/smash/SmashShownEdit.h"
 
 #include <gtest/gtest.h>
 

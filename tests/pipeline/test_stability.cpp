@@ -3,8 +3,8 @@
 #include "PipelineTestUtil.h"
 
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <gtest/gtest.h>
 

@@ -7,10 +7,10 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/QuantizeLut.h"
-#include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/Extract.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,10 @@
 #pragma once
-// OpenColorIO as the oracle in tests: a file's processor (optionally with a CCC id), evaluated
-// directly at given inputs.
+// OpenColorIO as the oracle in tests: a file's processor (optionally with a CCC id), a table as
+// OCIO's own Lut3DTransform, evaluated directly at given inputs. Written here, apart from the
+// product's builder (formats/src/ocio/OcioLut3D.h), so that an oracle shares no code with what it
+// checks.
 #include "TestSupport.h"
+#include "lut/Lut3D.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <glm/vec3.hpp>
@@ -13,6 +16,12 @@ namespace lut::test {
 
 namespace OCIO = OCIO_NAMESPACE;
 
+// The faithful (unoptimized) float CPU processor of a transform.
+inline OCIO::ConstCPUProcessorRcPtr ocioCpuProcessor(const OCIO::ConstTransformRcPtr& t) {
+    return OCIO::Config::CreateRaw()->getProcessor(t)->getOptimizedCPUProcessor(
+        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
+}
+
 inline OCIO::ConstCPUProcessorRcPtr ocioFileProcessor(const std::string& path,
                                                       const std::string& cccid = {}) {
     OCIO::ClearAllCaches();
@@ -21,8 +30,24 @@ inline OCIO::ConstCPUProcessorRcPtr ocioFileProcessor(const std::string& path,
     ft->setInterpolation(OCIO::INTERP_BEST);
     if (!cccid.empty())
         ft->setCCCId(cccid.c_str());
-    return OCIO::Config::CreateRaw()->getProcessor(ft)->getOptimizedCPUProcessor(
-        OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_NONE);
+    return ocioCpuProcessor(ft);
+}
+
+// lut as an OCIO Lut3DTransform over [0,1] with the given interpolation. setValue takes the
+// red, green and blue lattice indices explicitly, so OCIO's internal order (blue fastest) does not
+// matter here.
+inline OCIO::Lut3DTransformRcPtr ocioLut3DTransform(const Lut3D& lut, OCIO::Interpolation interp) {
+    const int n = lut.size();
+    auto t = OCIO::Lut3DTransform::Create(static_cast<unsigned long>(n));
+    for (int b = 0; b < n; ++b)
+        for (int g = 0; g < n; ++g)
+            for (int r = 0; r < n; ++r) {
+                const glm::vec3 e = lut.at(r, g, b);
+                t->setValue(static_cast<unsigned long>(r), static_cast<unsigned long>(g),
+                            static_cast<unsigned long>(b), e.r, e.g, e.b);
+            }
+    t->setInterpolation(interp);
+    return t;
 }
 
 inline glm::vec3 ocioEval(const OCIO::ConstCPUProcessorRcPtr& p, glm::vec3 v) {

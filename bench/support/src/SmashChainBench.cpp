@@ -2,7 +2,7 @@
 
 #include "lut/Error.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>

@@ -15,7 +15,7 @@
 #include "lut/Error.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/InputFile.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 namespace lut::formats {
 

@@ -12,7 +12,7 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
-#include "lut/io/StdStreams.h"
+#include "lut/io/LutWriter.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #pragma once
 // Cinespace .csp written by hand when the table has a shaper or an input range other than [0,1]
-// (OcioBaker.cpp uses OCIO's Baker otherwise). The .csp prelut is a per-channel list of input
+// (OcioWriters.cpp uses OCIO's Baker otherwise). The .csp prelut is a per-channel list of input
 // points and output values; OpenColorIO reads it as a smooth (cubic Hermite) curve through those
 // points, resampled to 65536 entries: a straight shaper (an input range) comes back exactly, and
 // a curved one is written with its segments cut into straight pieces (4096 points at least) so the

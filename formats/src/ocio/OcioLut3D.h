@@ -1,6 +1,6 @@
 #pragma once
 // A lutkit table as OpenColorIO's Lut3DTransform, in one place: how the writers hand a table to
-// OpenColorIO (OcioBaker.cpp) and how the benchmarks' peer runs one (bench/support's
+// OpenColorIO (OcioWriters.cpp) and how the benchmarks' peer runs one (bench/support's
 // OcioLutProcessor, through lutkit::formats_internal). Test oracles build their own on purpose.
 #include "lut/Lut3D.h"
 

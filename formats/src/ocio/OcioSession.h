@@ -1,5 +1,5 @@
 #pragma once
-// What every OpenColorIO bridge needs (OcioReader.cpp, OcioBaker.cpp): OCIO's multi-line
+// What every OpenColorIO bridge needs (OcioReader.cpp, OcioWriters.cpp): OCIO's multi-line
 // messages made one line, an OcioSession that serialises OCIO use and turns its log into
 // diagnostics (the library must not print), and the one way an OCIO failure becomes a lut::Error.
 // OCIO is touched only inside read()/write(): nothing here runs at start-up (no static OCIO

@@ -1,7 +1,5 @@
 #include "lut/io/StdStreams.h"
 
-#include "lut/io/OutputFile.h"
-
 #include <cerrno>
 #include <cstring>
 #include <unistd.h>
@@ -55,19 +53,6 @@ std::string readStandardInput(std::size_t maxBytes,
     if (bytes.size() > limit)
         over();
     return bytes;
-}
-
-Diagnostics writeLutFile(const Format& format, const std::string& path, const LutFile& lut,
-                         const FormatOptions& options, std::string* writtenBytes) {
-    const OutputTarget target = checkOutput(path, ExistingOutput::Replace);
-    if (!target.inPlace())
-        return format.write(target.writePath, lut, options);
-    Diagnostics d;
-    std::string bytes = format.writeMemory(lut, path, options, &d);
-    writeOutputBytes(target, bytes);
-    if (writtenBytes)
-        *writtenBytes = std::move(bytes);
-    return d;
 }
 
 } // namespace lut

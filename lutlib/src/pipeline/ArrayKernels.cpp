@@ -1,6 +1,6 @@
 #include "ArrayKernels.h"
 
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/smash/SmashGrading.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include "core/simd/Transpose.h"

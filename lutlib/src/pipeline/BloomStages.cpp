@@ -3,7 +3,7 @@
 // bit-identical (what makes skipping safe).
 #include "ArrayKernels.h"
 #include "StageDetail.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/smash/SmashGrading.h"
 
 namespace lut::detail {
 

@@ -3,7 +3,7 @@
 #include "ArrayKernels.h"
 #include "StageDetail.h"
 #include "lut/LutFile.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #include "lut/pipeline/Pipeline.h"
 
 #include "StageDetail.h"
-#include "lut/pipeline/SmashGrading.h"
 #include "lut/pipeline/Transfer.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,19 +1,19 @@
 // Extract: the LUT from a read patch, for a raw engine (the edit itself) or for the game (the
-// edit composed with what the game does to its LUT's output, lut/pipeline/SmashAuthoring.h); see
+// edit composed with what the game does to its LUT's output, lut/smash/SmashAuthoring.h); see
 // lut/roundtrip/Extract.h, docs/roundtrip.md and, for the game's side,
 // docs/specs/smash-pipeline.md.
 #include "lut/roundtrip/Extract.h"
 
 #include "lut/interp/Sampler.h"
 #include "lut/ops/QuantizeLut.h"
-#include "lut/pipeline/SmashAuthoring.h"
-#include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/LutDigest.h"
 #include "lut/roundtrip/PatchFinder.h"
-#include "pipeline/GameDisplay.h"
+#include "lut/smash/SmashAuthoring.h"
+#include "lut/smash/SmashConstants.h"
 #include "roundtrip/ExtractBounds.h"
 #include "roundtrip/ExtractChecks.h"
+#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

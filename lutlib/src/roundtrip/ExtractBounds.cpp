@@ -5,8 +5,8 @@
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/ErrorBound.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "pipeline/GameDisplay.h"
+#include "lut/smash/SmashConstants.h"
+#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Checks on a read patch before extract builds a LUT; see ExtractChecks.h.
 #include "roundtrip/ExtractChecks.h"
 
-#include "pipeline/GameDisplay.h"
+#include "smash/GameDisplay.h"
 
 #include "lut/io/Layout.h"
 #include "lut/roundtrip/EditCause.h"

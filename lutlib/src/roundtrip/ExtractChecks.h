@@ -3,10 +3,10 @@
 // reports what it found (warnings with a kind, info notes). Each warning has a test that
 // triggers it (docs/roundtrip.md, "Warnings").
 #include "lut/ErrorStats.h"
-#include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchReader.h"
 #include "lut/roundtrip/RoundtripWarning.h"
+#include "lut/smash/GameError.h"
 
 #include <string>
 

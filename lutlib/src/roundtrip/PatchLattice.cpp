@@ -5,7 +5,7 @@
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
 #include "lut/roundtrip/SmushStrip.h"
-#include "pipeline/GameDisplay.h"
+#include "smash/GameDisplay.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 // Converting a LUT file into another format and, when asked or when the output means it, to
 // another purpose (lut/LutPurpose.h: a .nutexb is the game's LUT), saying what it cost: what
 // `lutkit convert` does, for every target. The purpose step is lut::convertPurpose
-// (lut/pipeline/PurposeConversion.h); the output says what it is for where its format has a
+// (lut/smash/PurposeConversion.h); the output says what it is for where its format has a
 // place for it. The losses are measured apart:
 //  - resampling, when the output stores another lattice size (the format's fixed size or the one
 //    asked for): lut::resampleWithError on a probe grid;
@@ -16,7 +16,7 @@
 #include "lut/interp/Interpolation.h"
 #include "lut/io/FormatOptions.h"
 #include "lut/ops/Strength.h"
-#include "lut/pipeline/PurposeConversion.h"
+#include "lut/smash/PurposeConversion.h"
 
 #include <optional>
 #include <string>

@@ -12,8 +12,8 @@
 #include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
-#include "lut/pipeline/PurposeConversion.h"
 #include "lut/roundtrip/Extract.h"
+#include "lut/smash/PurposeConversion.h"
 
 #include <optional>
 #include <string>

@@ -5,7 +5,7 @@
 // ".nutexb"); read and write it with lut::formats::readLut / writeLut. What a caller can set:
 namespace lut::formats::nutexb {
 
-// FormatOptions::size 0 writes lut::kSmashLutSize (lut/pipeline/SmashConstants.h): every stage
+// FormatOptions::size 0 writes lut::kSmashLutSize (lut/smash/SmashConstants.h): every stage
 // LUT of the game is 16^3.
 // The texture name written in the footer when none is given.
 constexpr const char* kDefaultName = "color_grading_lut";

@@ -1,7 +1,7 @@
 #pragma once
-// "-" on lutkit's command lines: standard input and output, and the LUT writes that go to them
-// (or to a device, FIFO, /dev/stdout) in place instead of through a temporary file.
-#include "lut/io/Format.h"
+// "-" on lutkit's command lines: standard input, read whole and bounded. Writes to standard
+// output go through lut/io/OutputFile.h (a LUT file's: lut/io/LutWriter.h).
+#include "lut/Error.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -28,12 +28,5 @@ struct StreamBound {
 constexpr std::size_t kStreamHeadBytes = std::size_t(1) << 20;
 std::string readStandardInput(std::size_t maxBytes,
                               const std::function<StreamBound(const std::string& head)>& bound);
-
-// Writes lut with format to path under lut::checkOutput's rules with ExistingOutput::Replace
-// (callers that refuse existing outputs check first): "-" and special files in place through
-// format.writeMemory, regular files through format.write. writtenBytes, when given, receives the
-// bytes of an in-place write (to read them back without a file).
-Diagnostics writeLutFile(const Format& format, const std::string& path, const LutFile& lut,
-                         const FormatOptions& options, std::string* writtenBytes = nullptr);
 
 } // namespace lut

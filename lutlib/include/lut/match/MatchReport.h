@@ -5,7 +5,7 @@
 #include "lut/match/DistributionDistance.h"
 #include "lut/match/LutQuality.h"
 #include "lut/match/MatchOptions.h"
-#include "lut/pipeline/GameError.h"
+#include "lut/smash/GameError.h"
 
 #include <cstddef>
 #include <string>

@@ -7,9 +7,9 @@
 #include "lut/Lut3D.h"
 #include "lut/LutPurpose.h"
 #include "lut/io/Layout.h"
-#include "lut/pipeline/SmashConstants.h"
 #include "lut/roundtrip/PatchLattice.h"
 #include "lut/roundtrip/PatchPlacement.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <optional>
 #include <string_view>

@@ -7,11 +7,11 @@
 #include "lut/Lut3D.h"
 #include "lut/LutPurpose.h"
 #include "lut/ops/Strength.h"
-#include "lut/pipeline/GameError.h"
 #include "lut/roundtrip/EditCause.h"
 #include "lut/roundtrip/PatchPlacement.h"
 #include "lut/roundtrip/PatchReader.h"
 #include "lut/roundtrip/RoundtripWarning.h"
+#include "lut/smash/GameError.h"
 
 #include <cstddef>
 #include <optional>

@@ -1,7 +1,7 @@
 // The game's display model in double; see GameDisplay.h.
-#include "pipeline/GameDisplay.h"
+#include "smash/GameDisplay.h"
 
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <algorithm>
 #include <cmath>

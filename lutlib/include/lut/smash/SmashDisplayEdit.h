@@ -21,10 +21,10 @@
 // cannot reach stay outside [0,1] so callers can count them (lut/ops/Clipping.h); the nutexb
 // writer clamps and rounds.
 //
-// This is lut/pipeline/SmashAuthoring.h's exact composition (authorSmashLutForEdit) with
+// This is lut/smash/SmashAuthoring.h's exact composition (authorSmashLutForEdit) with
 // AboveWhite::Continue; use authorSmashLutForEdit directly for the screenshot's rule above white
 // (AboveWhite::Clip, what the round trip and `convert --target smash` ship), the refinement and
-// the error report. It differs from smashGameLut (lut/pipeline/SmashCompensation.h), which
+// the error report. It differs from smashGameLut (lut/smash/SmashCompensation.h), which
 // treats the edit as the whole gamma-space picture without the game's brighten step.
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"

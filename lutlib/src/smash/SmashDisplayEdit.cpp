@@ -1,8 +1,8 @@
-// The editor's Smash LUT for a display edit: the exact composition of lut/pipeline/SmashAuthoring.h
-// with the edit continued above white; see lut/pipeline/SmashDisplayEdit.h.
-#include "lut/pipeline/SmashDisplayEdit.h"
+// The editor's Smash LUT for a display edit: the exact composition of lut/smash/SmashAuthoring.h
+// with the edit continued above white; see lut/smash/SmashDisplayEdit.h.
+#include "lut/smash/SmashDisplayEdit.h"
 
-#include "lut/pipeline/SmashAuthoring.h"
+#include "lut/smash/SmashAuthoring.h"
 
 namespace lut {
 

@@ -13,8 +13,8 @@
 #include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
 #include "lut/interp/Interpolation.h"
-#include "lut/pipeline/GameError.h"
-#include "lut/pipeline/SmashAuthoring.h"
+#include "lut/smash/GameError.h"
+#include "lut/smash/SmashAuthoring.h"
 
 #include <string>
 

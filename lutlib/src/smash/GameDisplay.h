@@ -1,7 +1,7 @@
 #pragma once
 // Internal to lutlib: what the game displays, in double precision, for authoring game LUTs (the
 // round trip's extract, the Smash compensation of an edit). Built on the pipeline's constants
-// (lut/pipeline/SmashConstants.h, docs/specs/smash-pipeline.md sections 2 and 3), so the float
+// (lut/smash/SmashConstants.h, docs/specs/smash-pipeline.md sections 2 and 3), so the float
 // pipeline and this model cannot drift apart. Kept in double because authoring runs it once per
 // lattice point or sample and the checks compare against it.
 

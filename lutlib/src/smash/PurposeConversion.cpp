@@ -1,12 +1,12 @@
 // A LUT made for one purpose turned into the LUT for another; see
-// lut/pipeline/PurposeConversion.h.
-#include "lut/pipeline/PurposeConversion.h"
+// lut/smash/PurposeConversion.h.
+#include "lut/smash/PurposeConversion.h"
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "pipeline/GameDisplay.h"
+#include "lut/smash/SmashConstants.h"
+#include "smash/GameDisplay.h"
 
 #include <glm/common.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
 // How far what the game shows is from what it should show, in 8-bit display steps: the measure
-// the Smash authoring functions (lut/pipeline/SmashAuthoring.h) and the round trip report.
+// the Smash authoring functions (lut/smash/SmashAuthoring.h) and the round trip report.
 #include <cstddef>
 #include <string>
 #include <utility>

@@ -1,7 +1,7 @@
-#include "lut/pipeline/StageLut.h"
+#include "lut/smash/StageLut.h"
 
 #include "lut/ops/Lattice.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 namespace lut {
 

@@ -18,11 +18,11 @@
 // quarter, or the centres between the grid's points; a screenshot's refinement that wins is then
 // fitted again on all its colours). What the game shows is reported where
 // nothing was fitted: over every input (a bound, lut/ops/ErrorBound.h) or every pixel of the
-// screenshot (pipeline/GameMeasure.h).
+// screenshot (smash/GameMeasure.h).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
-#include "lut/pipeline/GameError.h"
+#include "lut/smash/GameError.h"
 
 #include <glm/vec3.hpp>
 

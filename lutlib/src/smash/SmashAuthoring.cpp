@@ -1,17 +1,18 @@
 // The exact Smash composition, the colours it is measured over, the refinement; see
-// lut/pipeline/SmashAuthoring.h.
-#include "lut/pipeline/SmashAuthoring.h"
+// lut/smash/SmashAuthoring.h.
+#include "lut/smash/SmashAuthoring.h"
 
 #include "lut/Error.h"
 #include "lut/ErrorStats.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/QuantizeLut.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "lut/pipeline/SmashGrading.h"
-#include "pipeline/GameDisplay.h"
-#include "pipeline/GameMeasure.h"
-#include "pipeline/GameSamples.h"
+#include "lut/smash/SmashConstants.h"
+#include "lut/smash/SmashGrading.h"
+#include "smash/GameDisplay.h"
+#include "smash/GameMeasure.h"
+#include "smash/GameSamples.h"
+#include "smash/SmashRefinement.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "lut/pipeline/SmashCompensation.h"
+#include "lut/smash/SmashCompensation.h"
 
 #include "lut/interp/Sampler.h"
-#include "lut/pipeline/SmashGrading.h"
+#include "lut/smash/SmashGrading.h"
 
 #include <algorithm>
 

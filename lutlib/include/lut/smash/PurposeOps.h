@@ -11,7 +11,7 @@
 #include "lut/LutPurpose.h"
 #include "lut/ops/Compose.h"
 #include "lut/ops/OpResult.h"
-#include "lut/pipeline/PurposeConversion.h"
+#include "lut/smash/PurposeConversion.h"
 
 #include <string>
 #include <vector>

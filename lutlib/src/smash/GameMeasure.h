@@ -1,6 +1,6 @@
 #pragma once
 // Internal to lutlib: what the game shows with an 8-bit LUT against the wanted colours, measured
-// where nothing was fitted (lut/pipeline/SmashAuthoring.h), and the colours a refinement is
+// where nothing was fitted (lut/smash/SmashAuthoring.h), and the colours a refinement is
 // fitted on and checked against.
 //   Every input: the error bounded over every s in [0,1]^3 (held-out inputs at the centres of a
 //   grid four times finer than the LUT's lattice, plus the slope between them,
@@ -14,8 +14,8 @@
 //   refinement that wins there is fitted again on every colour.
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
-#include "lut/pipeline/GameError.h"
-#include "pipeline/GameSamples.h"
+#include "lut/smash/GameError.h"
+#include "smash/GameSamples.h"
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>

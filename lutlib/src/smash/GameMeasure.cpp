@@ -1,11 +1,11 @@
 // The game's error where nothing was fitted; see GameMeasure.h.
-#include "pipeline/GameMeasure.h"
+#include "smash/GameMeasure.h"
 
 #include "lut/Parallel.h"
 #include "lut/Quantize.h"
 #include "lut/ops/ErrorBound.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "pipeline/GameDisplay.h"
+#include "lut/smash/SmashConstants.h"
+#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "lut/pipeline/SmashShownEdit.h"
+#include "lut/smash/SmashShownEdit.h"
 
 #include "lut/Error.h"
 #include "lut/interp/Sampler.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "pipeline/GameDisplay.h"
+#include "lut/smash/SmashConstants.h"
+#include "smash/GameDisplay.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Smash Ultimate's numbers, in one place: the post-processing shader's literals
 // (docs/specs/smash-pipeline.md sections 1 and 2) and the size of the game's grading LUT. Used
-// by the preview pipeline, the grading maths (lut/pipeline/SmashGrading.h), the round trip's
+// by the preview pipeline, the grading maths (lut/smash/SmashGrading.h), the round trip's
 // display model and the nutexb format. The largest value a frame keeps once sanitized (the
 // game's half-float render targets) is lut::limits::kMaxColorValue (lut/Limits.h).
 

@@ -19,7 +19,7 @@
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/interp/Sampler.h"
-#include "lut/pipeline/SmashConstants.h"
+#include "lut/smash/SmashConstants.h"
 
 #include <glm/vec3.hpp>
 

@@ -1,5 +1,5 @@
-// Compose and mix with purposes; see lut/pipeline/PurposeOps.h.
-#include "lut/pipeline/PurposeOps.h"
+// Compose and mix with purposes; see lut/smash/PurposeOps.h.
+#include "lut/smash/PurposeOps.h"
 
 namespace lut {
 

@@ -1,5 +1,5 @@
-// Display error summaries; see lut/pipeline/GameError.h.
-#include "lut/pipeline/GameError.h"
+// Display error summaries; see lut/smash/GameError.h.
+#include "lut/smash/GameError.h"
 
 #include "lut/ErrorStats.h"
 

@@ -1,68 +1,16 @@
-// The samples, the game's error over them and the least-squares refinement; see GameSamples.h.
-#include "pipeline/GameSamples.h"
+// The least-squares refinement of a game LUT over samples; see SmashRefinement.h.
+#include "smash/SmashRefinement.h"
 
 #include "lut/Parallel.h"
-#include "lut/pipeline/SmashConstants.h"
-#include "pipeline/GameDisplay.h"
+#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace lut::detail {
 
-void GameSamples::reserve(std::size_t count) {
-    m_s.reserve(3 * count);
-    m_t.reserve(3 * count);
-    m_f.reserve(3 * count);
-    m_corner.reserve(3 * count);
-}
-
-void GameSamples::add(const glm::dvec3& s, const glm::dvec3& wanted) {
-    for (int c = 0; c < 3; ++c) {
-        const double sc = clampUnit(s[c]);
-        const double x = sc * (m_n - 1);
-        const int i = std::min(static_cast<int>(x), m_n - 2);
-        m_s.push_back(sc);
-        m_t.push_back(clampUnit(wanted[c]));
-        m_corner.push_back(static_cast<std::uint16_t>(i));
-        m_f.push_back(x - i);
-    }
-}
-
-std::uint32_t GameSamples::cellIndex(std::size_t p) const {
-    const std::uint32_t m = static_cast<std::uint32_t>(m_n - 1);
-    return m_corner[3 * p] + m * (m_corner[3 * p + 1] + m * m_corner[3 * p + 2]);
-}
-
 namespace {
-
-// Trilinear weight of the corner (dx, dy, dz) of sample p's cell.
-double cornerWeight(const GameSamples& sm, std::size_t p, int dx, int dy, int dz) {
-    const double fx = sm.fraction(p, 0), fy = sm.fraction(p, 1), fz = sm.fraction(p, 2);
-    return (dx ? fx : 1.0 - fx) * (dy ? fy : 1.0 - fy) * (dz ? fz : 1.0 - fz);
-}
-
-// The trilinear value of channel values v (r fastest, n^3) at sample p.
-double trilinear(const GameSamples& sm, const std::vector<double>& v, std::size_t p) {
-    const int n = sm.lutSize();
-    const int i = sm.corner(p, 0), j = sm.corner(p, 1), k = sm.corner(p, 2);
-    double acc = 0.0;
-    for (int dz = 0; dz < 2; ++dz)
-        for (int dy = 0; dy < 2; ++dy)
-            for (int dx = 0; dx < 2; ++dx)
-                acc += cornerWeight(sm, p, dx, dy, dz) *
-                       v[static_cast<std::size_t>(i + dx) +
-                         static_cast<std::size_t>(n) *
-                             (j + dy + static_cast<std::size_t>(n) * (k + dz))];
-    return acc;
-}
-
-std::vector<double> channel(const Lut3D& lut, int c) {
-    std::vector<double> v(lut.entryCount());
-    for (std::size_t i = 0; i < v.size(); ++i)
-        v[i] = lut.entries()[i][c];
-    return v;
-}
 
 // Samples grouped by cell (CSR): start[cell] .. start[cell + 1] index into order.
 struct CellIndex {
@@ -97,47 +45,10 @@ void forSamplesAround(const GameSamples& sm, const CellIndex& idx, int i, int j,
                     static_cast<std::size_t>(m) * (cj + static_cast<std::size_t>(m) * ck);
                 for (std::uint32_t q = idx.start[cell]; q < idx.start[cell + 1]; ++q) {
                     const std::size_t p = idx.order[q];
-                    fn(p, cornerWeight(sm, p, i - ci, j - cj, k - ck));
+                    fn(p, sm.cornerWeight(p, i - ci, j - cj, k - ck));
                 }
             }
 }
-
-// gameShown as a function of the brightened value r, tabulated for the 8-bit search (which
-// evaluates it a few million times): linear interpolation on 2^16 intervals of [0, 1.4] is within
-// 1e-6 of the display value, far below what decides between two 8-bit entries.
-class ShownTable {
-public:
-    ShownTable() : m_v(kSize + 2) {
-        for (int i = 0; i <= kSize + 1; ++i) {
-            const double r = kMax * i / kSize;
-            m_v[static_cast<std::size_t>(i)] =
-                srgbEncodeUnit(clampUnit(std::pow(r, static_cast<double>(kSmashDecodeExponent))));
-        }
-    }
-    double operator()(double lutOut, double s) const {
-        const double r = ((lutOut - s) * static_cast<double>(kSmashBrightenMix) + s) *
-                         static_cast<double>(kSmashBrightenScale);
-        if (!(r > 0.0))
-            return 0.0;
-        const double x = r * (kSize / kMax);
-        if (x >= kSize)
-            return 1.0;
-        const std::size_t i = static_cast<std::size_t>(x);
-        const double f = x - static_cast<double>(i);
-        return m_v[i] + f * (m_v[i + 1] - m_v[i]);
-    }
-
-private:
-    static constexpr int kSize = 1 << 16;
-    static constexpr double kMax = 1.4;
-    std::vector<double> m_v;
-};
-
-const ShownTable& shownTable() {
-    static const ShownTable table;
-    return table;
-}
-
 constexpr double kEdgeTolerance = 1e-6;  // wanted this close to white or black is white/black
 constexpr double kMaxStep = 4.0 / 255.0; // per Gauss-Seidel update
 constexpr double kRidge = 1e-6;          // towards the exact entry, for unconstrained entries
@@ -162,13 +73,13 @@ void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exa
         // (a float blend of white entries may miss 1 by a rounding)
         side[p] = t >= 1.0 - kEdgeTolerance ? 1 : t <= kEdgeTolerance ? -1 : 0;
     }
-    const std::vector<double> ex = channel(exact, c);
+    const std::vector<double> ex = lutChannel(exact, c);
     std::vector<double> v(ex.size());
     for (std::size_t i = 0; i < v.size(); ++i)
         v[i] = clampUnit(ex[i]);
     std::vector<double> cur(count);
     for (std::size_t p = 0; p < count; ++p)
-        cur[p] = trilinear(sm, v, p);
+        cur[p] = sm.trilinear(v, p);
 
     for (int round = 0; round < kOuterRounds; ++round) {
         for (std::size_t p = 0; p < count; ++p) {
@@ -218,14 +129,14 @@ void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exa
         q[i] = static_cast<int>(std::lround(v[i] * 255.0));
         v[i] = q[i] / 255.0;
     }
-    const ShownTable& table = shownTable();
+    // (gameShownTabulated: the search evaluates the display a few million times)
     auto err = [&](std::size_t p, double value) {
-        const double d = table(value, sm.s(p, c)) - sm.wanted(p, c);
+        const double d = gameShownTabulated(value, sm.s(p, c)) - sm.wanted(p, c);
         return d * d;
     };
     std::vector<double> errNow(count);
     for (std::size_t p = 0; p < count; ++p) {
-        cur[p] = trilinear(sm, v, p);
+        cur[p] = sm.trilinear(v, p);
         errNow[p] = err(p, cur[p]);
     }
     std::vector<char> active(v.size(), 1), nextActive(v.size(), 0);
@@ -284,31 +195,6 @@ void refineChannel(const GameSamples& sm, const CellIndex& idx, const Lut3D& exa
 }
 
 } // namespace
-
-GameError gameErrorOver(const GameSamples& sm, const Lut3D& lut, int nthreads,
-                        std::vector<double>* perSample) {
-    const std::size_t count = sm.size();
-    std::vector<double> steps(3 * count);
-    const std::vector<double> ch[3] = {channel(lut, 0), channel(lut, 1), channel(lut, 2)};
-    const int chunks = static_cast<int>(std::min<std::size_t>(count, 4096));
-    parallelFor(chunks, nthreads, [&](int c0, int c1) {
-        const std::size_t p0 =
-            count * static_cast<std::size_t>(c0) / static_cast<std::size_t>(chunks);
-        const std::size_t p1 =
-            count * static_cast<std::size_t>(c1) / static_cast<std::size_t>(chunks);
-        for (std::size_t p = p0; p < p1; ++p)
-            for (int c = 0; c < 3; ++c) {
-                const double shown = gameShown(trilinear(sm, ch[c], p), sm.s(p, c));
-                steps[3 * p + c] = (shown - sm.wanted(p, c)) * 255.0;
-            }
-    });
-    if (perSample) {
-        perSample->resize(steps.size());
-        for (std::size_t i = 0; i < steps.size(); ++i)
-            (*perSample)[i] = std::fabs(steps[i]);
-    }
-    return summariseSteps(steps);
-}
 
 Lut3D refineSmashLut(const GameSamples& sm, const Lut3D& exact, int nthreads) {
     Lut3D out(sm.lutSize());

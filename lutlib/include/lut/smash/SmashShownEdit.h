@@ -5,10 +5,10 @@
 //
 //     s_c = the input for which the neutral game shows d_c (per channel; s <= 1/1.3703, where
 //           the neutral game reaches white)
-//     entry(d) = smashShownColour(s, gameLut)      (lut/pipeline/SmashAuthoring.h: the game's
+//     entry(d) = smashShownColour(s, gameLut)      (lut/smash/SmashAuthoring.h: the game's
 //                                                   grading + brighten + display, clipped)
 //
-// The inverse view of smashLutForDisplayEdit (lut/pipeline/SmashDisplayEdit.h): a game LUT made
+// The inverse view of smashLutForDisplayEdit (lut/smash/SmashDisplayEdit.h): a game LUT made
 // from an edit shows that edit here, to the authoring error. This is how a .nutexb is judged by
 // the look it gives (lutkit check, the quiet check after writing one): the table's own numbers
 // are compensated for the brighten pass (compressed under 0.73 and clipped there).
