@@ -151,17 +151,22 @@ inline RefImg refSmashBloom(const RefImg& scene) {
     return up;
 }
 
-// Tetrahedral interpolation of a LUT over [0,1] in double (clamp to edge): the cube cell is cut
-// into six tetrahedra along its main diagonal, chosen by the order of the fractions.
-inline void refTetrahedral(const Lut3D& lut, const double in[3], double out[3]) {
+// The lattice cell holding `in` (clamped to [0,1]): its lower corner i and the fractions f.
+inline void refCell(const Lut3D& lut, const double in[3], int i[3], double f[3]) {
     const int n = lut.size();
-    int i[3];
-    double f[3];
     for (int c = 0; c < 3; ++c) {
         const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
         i[c] = std::min(static_cast<int>(std::floor(t)), n - 2);
         f[c] = t - i[c];
     }
+}
+
+// Tetrahedral interpolation of a LUT over [0,1] in double (clamp to edge): the cube cell is cut
+// into six tetrahedra along its main diagonal, chosen by the order of the fractions.
+inline void refTetrahedral(const Lut3D& lut, const double in[3], double out[3]) {
+    int i[3];
+    double f[3];
+    refCell(lut, in, i, f);
     // Walk from corner 000 to 111 one axis at a time, largest fraction first.
     int order[3] = {0, 1, 2};
     std::sort(order, order + 3, [&](int a, int b) { return f[a] > f[b]; });
@@ -189,14 +194,9 @@ inline void refTetrahedral(const Lut3D& lut, const double in[3], double out[3]) 
 
 // Plain trilinear of a LUT over [0,1], clamp to edge, in double.
 inline void refTrilinear(const Lut3D& lut, const double in[3], double out[3]) {
-    const int n = lut.size();
     int i[3];
     double f[3];
-    for (int c = 0; c < 3; ++c) {
-        const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
-        i[c] = std::min(static_cast<int>(std::floor(t)), n - 2);
-        f[c] = t - i[c];
-    }
+    refCell(lut, in, i, f);
     for (int c = 0; c < 3; ++c) {
         double acc = 0;
         for (int k = 0; k < 8; ++k) {
