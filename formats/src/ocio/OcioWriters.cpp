@@ -32,6 +32,18 @@ namespace {
 // Largest grid a Lut3DTransform accepts in OCIO 2.1.
 constexpr int kOcioMaxGrid = 129;
 
+// A Matrix that maps [lo, hi] onto [0,1] per channel.
+OCIO::MatrixTransformRcPtr rangeMatrix(glm::vec3 lo, glm::vec3 hi) {
+    double oldMin[4] = {lo.x, lo.y, lo.z, 0.0}, oldMax[4] = {hi.x, hi.y, hi.z, 1.0};
+    double newMin[4] = {0, 0, 0, 0}, newMax[4] = {1, 1, 1, 1};
+    double m44[16], offset4[4];
+    OCIO::MatrixTransform::Fit(m44, offset4, oldMin, oldMax, newMin, newMax);
+    auto mt = OCIO::MatrixTransform::Create();
+    mt->setMatrix(m44);
+    mt->setOffset(offset4);
+    return mt;
+}
+
 class OcioBakeFormat final : public Format {
 public:
     enum class Shaper { None, Transforms, Csp };
@@ -104,15 +116,7 @@ public:
             auto group = OCIO::GroupTransform::Create();
             if (!lut.hasDefaultDomain()) {
                 // Map [0,1] inputs to the table's own lattice coordinates.
-                const glm::vec3 lo = lut.domainMin(), hi = lut.domainMax();
-                double oldMin[4] = {lo.x, lo.y, lo.z, 0.0}, oldMax[4] = {hi.x, hi.y, hi.z, 1.0};
-                double newMin[4] = {0, 0, 0, 0}, newMax[4] = {1, 1, 1, 1};
-                double m44[16], offset4[4];
-                OCIO::MatrixTransform::Fit(m44, offset4, oldMin, oldMax, newMin, newMax);
-                auto mt = OCIO::MatrixTransform::Create();
-                mt->setMatrix(m44);
-                mt->setOffset(offset4);
-                group->appendTransform(mt);
+                group->appendTransform(rangeMatrix(lut.domainMin(), lut.domainMax()));
             }
             group->appendTransform(l3);
 
@@ -167,18 +171,6 @@ private:
     std::vector<FormatAlias> m_aliases;
     Shaper m_shaper;
 };
-
-// A Matrix that maps [lo, hi] onto [0,1] per channel.
-OCIO::MatrixTransformRcPtr rangeMatrix(glm::vec3 lo, glm::vec3 hi) {
-    double oldMin[4] = {lo.x, lo.y, lo.z, 0.0}, oldMax[4] = {hi.x, hi.y, hi.z, 1.0};
-    double newMin[4] = {0, 0, 0, 0}, newMax[4] = {1, 1, 1, 1};
-    double m44[16], offset4[4];
-    OCIO::MatrixTransform::Fit(m44, offset4, oldMin, oldMax, newMin, newMax);
-    auto mt = OCIO::MatrixTransform::Create();
-    mt->setMatrix(m44);
-    mt->setOffset(offset4);
-    return mt;
-}
 
 Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFile& file,
                                             const FormatOptions& options) const {
