@@ -9,6 +9,7 @@
 #include "smash/GameDisplay.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -254,7 +255,10 @@ ExpectedError summarise(const std::function<Bounds3(const glm::dvec3&)>& boundsA
     const int m = cells * k;
     const std::size_t points =
         static_cast<std::size_t>(m) * static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
-    std::vector<double> p99(3 * points, 0.0), mean(3 * points, 0.0), mdl(3 * points, 0.0);
+    // The bound works in slabs of planes on several threads, and two neighbouring slabs both
+    // evaluate the planes of their shared halo: the same centre can be written by two threads
+    // (with the same value), so the stores are atomic.
+    std::vector<std::atomic<double>> kept(9 * points);
     BoundOptions o;
     o.cells = cells;
     o.perCell = k;
@@ -276,13 +280,21 @@ ExpectedError summarise(const std::function<Bounds3(const glm::dvec3&)>& boundsA
                 if (!centre)
                     continue;
                 for (int c = 0; c < 3; ++c) {
-                    p99[3 * index + static_cast<std::size_t>(c)] = v.p99Everywhere[c];
-                    mean[3 * index + static_cast<std::size_t>(c)] = v.mean[c];
-                    mdl[3 * index + static_cast<std::size_t>(c)] = v.model[c];
+                    const std::size_t at = 9 * index + static_cast<std::size_t>(c);
+                    kept[at].store(v.p99Everywhere[c], std::memory_order_relaxed);
+                    kept[at + 3].store(v.mean[c], std::memory_order_relaxed);
+                    kept[at + 6].store(v.model[c], std::memory_order_relaxed);
                 }
             }
         },
         o);
+    std::vector<double> p99(3 * points), mean(3 * points), mdl(3 * points);
+    for (std::size_t i = 0; i < 3 * points; ++i) {
+        const std::size_t at = 9 * (i / 3) + i % 3;
+        p99[i] = kept[at].load(std::memory_order_relaxed);
+        mean[i] = kept[at + 3].load(std::memory_order_relaxed);
+        mdl[i] = kept[at + 6].load(std::memory_order_relaxed);
+    }
     e.overall.maxSteps = std::max(bound.maxAbs, e.atLattice.maxSteps);
     // The p99 counts each box at its centre's value plus what the value can add within the box
     // (as the maximum does, lut/ops/ErrorBound.h): along each axis the largest change between
