@@ -129,6 +129,14 @@ TEST(ImagePlausibility, LyingHeadersOfEveryFormatAreRefusedWithTheFigures) {
                          std::string("\0\x08\x03\x01\x02\x03\0;", 8),
                      "declares 4000x4000 pixels (16000000 bytes as stored) in 3 bytes of GIF data, "
                      "more than LZW data can hold (at most 4096:1)"});
+    // GIF: a 5000x4000 screen (an 80 MB canvas) holding one 8x8 frame: the frames' LZW data
+    // must cover a screen over 2^24 pixels (a fuzzed 962-byte file took an 874 MB canvas).
+    cases.push_back({"wide-screen.gif",
+                     "GIF89a" + le16(5000) + le16(4000) + std::string("\0\0\0", 3) + "," + le16(0) +
+                         le16(0) + le16(8) + le16(8) +
+                         std::string("\0\x08\x03\x01\x02\x03\0;", 8),
+                     "declares 5000x4000 pixels (20000000 bytes as stored) in 3 bytes of GIF data, "
+                     "more than LZW data can hold (at most 4096:1)"});
     // BMP: 2000x2000 24-bit, uncompressed, 54 bytes of header and 10 of pixels.
     std::string bmp = "BM" + le32(64) + le32(0) + le32(54) + le32(40) + le32(2000) + le32(2000) +
                       le16(1) + le16(24) + le32(0) + le32(0) + le32(0) + le32(0) + le32(0) +

@@ -152,6 +152,11 @@ DeclaredImage scanJpeg(const HeaderBytes& b, const std::string& path) {
 // GIF (89a): the logical screen (OpenImageIO composes every frame on an RGBA canvas of that
 // size), then image descriptors, each followed by its LZW data in sub-blocks. LZW with 12-bit
 // codes emits at most 4096 indices per code: bounded at 4096 stored bytes per data byte.
+// The screen is what the reader allocates and what lutkit writes, but the file stores only its
+// frames (the rest is background): a 962-byte file whose 56610x3862 screen held small frames
+// took an 874 MB canvas. A screen over kGifFreeScreenPixels (a 64 MiB canvas) counts as stored
+// pixels, so the file's LZW data must be able to cover it.
+constexpr std::uint64_t kGifFreeScreenPixels = std::uint64_t(1) << 24;
 DeclaredImage scanGif(const HeaderBytes& b, const std::string& path) {
     (void)path;
     DeclaredImage d;
@@ -192,7 +197,9 @@ DeclaredImage scanGif(const HeaderBytes& b, const std::string& path) {
         }
     }
     d.complete = d.complete || b.whole();
-    DeclaredPart screen = part(sw, sh, 4, stored, data, 4096.0, "LZW");
+    DeclaredPart screen = part(
+        sw, sh, 4, sw * sh > kGifFreeScreenPixels ? std::max(stored, sw * sh) : stored, data,
+        4096.0, "LZW");
     screen.what = frames > 1 ? std::to_string(frames) + " frames" : "";
     d.parts.push_back(screen);
     if (largest.width * largest.height > sw * sh) {
