@@ -133,8 +133,7 @@ TEST(ImagePlausibility, LyingHeadersOfEveryFormatAreRefusedWithTheFigures) {
     // must cover a screen over 2^24 pixels (a fuzzed 962-byte file took an 874 MB canvas).
     cases.push_back({"wide-screen.gif",
                      "GIF89a" + le16(5000) + le16(4000) + std::string("\0\0\0", 3) + "," + le16(0) +
-                         le16(0) + le16(8) + le16(8) +
-                         std::string("\0\x08\x03\x01\x02\x03\0;", 8),
+                         le16(0) + le16(8) + le16(8) + std::string("\0\x08\x03\x01\x02\x03\0;", 8),
                      "declares 5000x4000 pixels (20000000 bytes as stored) in 3 bytes of GIF data, "
                      "more than LZW data can hold (at most 4096:1)"});
     // BMP: 2000x2000 24-bit, uncompressed, 54 bytes of header and 10 of pixels.

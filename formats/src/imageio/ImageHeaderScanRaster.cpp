@@ -197,9 +197,9 @@ DeclaredImage scanGif(const HeaderBytes& b, const std::string& path) {
         }
     }
     d.complete = d.complete || b.whole();
-    DeclaredPart screen = part(
-        sw, sh, 4, sw * sh > kGifFreeScreenPixels ? std::max(stored, sw * sh) : stored, data,
-        4096.0, "LZW");
+    DeclaredPart screen =
+        part(sw, sh, 4, sw * sh > kGifFreeScreenPixels ? std::max(stored, sw * sh) : stored, data,
+             4096.0, "LZW");
     screen.what = frames > 1 ? std::to_string(frames) + " frames" : "";
     d.parts.push_back(screen);
     if (largest.width * largest.height > sw * sh) {
