@@ -6,6 +6,7 @@
 #   lut::parallelFor/parallelForDynamic: samplers, resampling, adjustments   lutlib_tests
 #   the LUT maths (compose, smooth, invert, diff, heat maps), lutkit check   ops_tests
 #   the preview pipeline's stages (bloom, grading, display)                  pipeline_tests
+#   the game: compensation, authoring and its refinement, the error bounds   smash_tests
 #   the parallel .cube row reader; image files (OIIO's own threads)          formats_tests
 #   the round trip's fit                                                     roundtrip_tests (Fit.*)
 #   lutkit match: samples, histograms, transport, table, measures            match_tests (the
@@ -47,6 +48,7 @@ runs=(
   "lutlib_tests:-AllMethods/Policy.LatticePointsReturnEntriesExactly/*:Lut3D.IdentityIsExactForEverySize"
   "ops_tests:-LargeLuts.Size256:CheckDefects.NeutralOfEverySizeHasNoFinding:CheckFiles.EveryFixtureAndOcioTestFileWithoutACrash"
   "pipeline_tests:"
+  "smash_tests:"
   "formats_tests:-CubeRead.FloatParsingMatchesFromChars"
   "roundtrip_tests:Fit.*-Fit.NaturalImageWarnsAboutCoverage"
   "match_tests:MatchStiff.*:MatchReport.*:HistogramMatch.*"

@@ -2,8 +2,8 @@
 // default stage LUT as it is (it is the game's LUT), and a screenshot of a stage without its own
 // LUT previews closer to the game with --original-lut builtin:smash-default than with the neutral
 // default -- the game's pictures made here with the float64 reference chain of
-// docs/specs/smash-pipeline.md (tests/pipeline/PipelineTestUtil.h).
-#include "../pipeline/PipelineTestUtil.h"
+// docs/specs/smash-pipeline.md (tests/support/PipelineTestUtil.h).
+#include "PipelineTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"

@@ -1,7 +1,7 @@
 // lutkit preview: output pixels against the float64 reference of docs/specs/smash-pipeline.md
 // (shared with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
-#include "../pipeline/PipelineTestUtil.h"
 #include "OklabReference.h"
+#include "PipelineTestUtil.h"
 #include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"

@@ -1,10 +1,10 @@
 // The other stages against formulas written here, and the settings interface.
 #include "PipelineTestUtil.h"
 
+#include "core/FastMath.h"
 #include "lut/Error.h"
 #include "lut/pipeline/Pipeline.h"
 #include "pipeline/ArrayKernels.h"
-#include "pipeline/FastMath.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // The AVX2 path performs the same IEEE operations in the same order as the scalar functions of
 // FastMath.h (every multiply-add is an explicit fma on both sides, and lutlib is built with
 // -ffp-contract=off), so both give bit-identical results: the path never changes a frame.
-#include "FastMath.h"
+#include "core/FastMath.h"
 
 #include <cstddef>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Private helpers shared by the stage implementations.
-#include "FastMath.h"
+#include "core/FastMath.h"
 #include "lut/Image.h"
 #include "lut/Lut1D.h"
 #include "lut/Lut3D.h"

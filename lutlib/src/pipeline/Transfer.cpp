@@ -1,6 +1,6 @@
 #include "lut/pipeline/Transfer.h"
 
-#include "FastMath.h"
+#include "core/FastMath.h"
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
 

@@ -1,11 +1,11 @@
 // Scalar, accurate (std::pow) forms of the Smash grading math. The pipeline's grading pass uses
-// polynomial pows for speed (GradeStages.cpp, FastMath.h) and is tested against these and a float64
-// reference.
+// polynomial pows for speed (pipeline/GradeStages.cpp, core/FastMath.h) and is tested against
+// these and a float64 reference.
 #include "lut/smash/SmashGrading.h"
 
+#include "core/FastMath.h"
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
-#include "pipeline/FastMath.h"
 
 #include <algorithm>
 #include <atomic>
