@@ -1,7 +1,7 @@
 // Format::readMemory / writeMemory: every format reads and writes bytes in memory (standard
-// input and output). The cube and nutexb formats parse bytes directly, the others go through a
-// private temporary file; either way the result equals reading the same bytes from a file, and
-// messages name the caller's name for the data, never a temporary path.
+// input and output). The cube and nutexb formats parse and make bytes directly, the others go
+// through a private temporary file; either way the result equals reading the same bytes from a
+// file, and messages name the caller's name for the data, never a temporary path.
 #include "TestSupport.h"
 
 #include "lut/Error.h"
@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -66,4 +67,29 @@ TEST(ReadMemory, ErrorsNameTheGivenNameNotATemporaryFile) {
             EXPECT_EQ(msg.find("/tmp"), std::string::npos) << msg;
         }
     }
+}
+
+// The cube and nutexb formats touch no file in memory (the editor's export preview writes and
+// reads them back at every adjustment): with the temporary folder missing they still work.
+TEST(ReadMemory, CubeAndNutexbNeedNoTemporaryFolder) {
+    lut::LutFile src;
+    src.cube = lut::Lut3D::identity(16);
+    const std::string missing = lut::test::tempDir() + "/no-such-folder";
+    const char* old = std::getenv("TMPDIR");
+    const std::string saved = old ? old : "";
+    ::setenv("TMPDIR", missing.c_str(), 1);
+    for (const char* name : {"cube", "nutexb"}) {
+        const lut::Format& f = format(name);
+        const std::string label = std::string("mem") + f.extensions().front();
+        lut::Diagnostics d;
+        std::string bytes;
+        EXPECT_NO_THROW(bytes = f.writeMemory(src, label, {}, &d)) << name;
+        EXPECT_NO_THROW((void)f.readMemory(bytes, label, {})) << name;
+        for (const auto& x : d)
+            EXPECT_EQ(x.path, label) << name << ": " << x.message;
+    }
+    if (old)
+        ::setenv("TMPDIR", saved.c_str(), 1);
+    else
+        ::unsetenv("TMPDIR");
 }

@@ -4,6 +4,7 @@
 
 #include "lut/Limits.h"
 #include "lut/formats/Cube.h"
+#include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
 namespace lut::formats {
@@ -41,6 +42,14 @@ public:
     }
     Diagnostics write(const std::string& path, const LutFile& lut,
                       const FormatOptions& options) const override {
+        Diagnostics d;
+        const std::string text = writeMemory(lut, path, options, &d);
+        writeFileAtomically(path, text);
+        return d;
+    }
+    // The text is made in memory (the editor's export preview asks for it at every adjustment).
+    std::string writeMemory(const LutFile& lut, const std::string& name,
+                            const FormatOptions& options, Diagnostics* diagnostics) const override {
         CubeWriteOptions wo;
         if (const auto d = options.attribute(kCubeDialectAttribute)) {
             if (*d == "resolve")
@@ -48,18 +57,26 @@ public:
             else if (*d == "adobe")
                 wo.dialect = CubeWriteOptions::Dialect::Adobe;
             else
-                throw Error(path + ": unknown .cube dialect '" + *d + "' (adobe or resolve)");
+                throw Error(name + ": unknown .cube dialect '" + *d + "' (adobe or resolve)");
         }
+        Diagnostics d;
+        std::string text;
         if (options.size != 0 && lut.cube && options.size != lut.cube->size()) {
             LutFile resized = lut;
             resized.cube = resample(*lut.cube, options.size, Interpolation::Tetrahedral);
-            Diagnostics d = writeCube(path, resized, wo);
-            d.insert(d.begin(), {Diagnostic::Severity::Info, path, 0, 0,
+            text = writeCubeString(resized, &d, wo);
+            d.insert(d.begin(), {Diagnostic::Severity::Info, name, 0, 0,
                                  "3D table resampled from " + std::to_string(lut.cube->size()) +
                                      "^3 to " + std::to_string(options.size) + "^3 (tetrahedral)"});
-            return d;
+        } else {
+            text = writeCubeString(lut, &d, wo);
         }
-        return writeCube(path, lut, wo);
+        for (auto& x : d)
+            if (x.path.empty())
+                x.path = name;
+        if (diagnostics)
+            *diagnostics = std::move(d);
+        return text;
     }
 };
 

@@ -50,28 +50,38 @@ public:
     Diagnostics write(const std::string& path, const LutFile& file,
                       const FormatOptions& options) const override {
         Diagnostics diags;
+        const std::string bytes = writeMemory(file, path, options, &diags);
+        writeFileAtomically(path, bytes);
+        return diags;
+    }
+    // The bytes are made in memory (the editor's export preview asks for them at every
+    // adjustment).
+    std::string writeMemory(const LutFile& file, const std::string& name,
+                            const FormatOptions& options, Diagnostics* diagnostics) const override {
+        Diagnostics diags;
         if (options.bitDepth != 0 && options.bitDepth != 8)
-            diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, path,
+            diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, name,
                                            "nutexb stores 8-bit values: bit depth " +
                                                std::to_string(options.bitDepth) + " ignored"));
         if (options.dither)
-            diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, path,
+            diags.push_back(makeDiagnostic(Diagnostic::Severity::Warning, name,
                                            "nutexb values are rounded to nearest: dither ignored"));
         const int size = options.size > 0 ? options.size : kSmashLutSize;
-        const Lut3D lut = prepareUnitLut(file, size, path, diags);
+        const Lut3D lut = prepareUnitLut(file, size, name, diags);
         std::size_t clamped = 0;
         const std::string tiling =
             options.attribute(nutexb::kTilingAttribute).value_or("block-linear");
         if (tiling != "block-linear" && tiling != "linear")
-            throw Error(path + ": " + nutexb::kTilingAttribute + " is '" + tiling +
+            throw Error(name + ": " + nutexb::kTilingAttribute + " is '" + tiling +
                         "', expected block-linear or linear");
-        const std::string bytes =
+        std::string bytes =
             nutexb::writeBytes(lut, options.attribute(nutexb::kNameAttribute).value_or(""),
                                tiling == "block-linear", &clamped);
-        addClampDiagnostic(clamped, 8, path, diags);
-        addQuantizationDiagnostic(lut, 8, path, diags);
-        writeFileAtomically(path, bytes);
-        return diags;
+        addClampDiagnostic(clamped, 8, name, diags);
+        addQuantizationDiagnostic(lut, 8, name, diags);
+        if (diagnostics)
+            *diagnostics = std::move(diags);
+        return bytes;
     }
 };
 
