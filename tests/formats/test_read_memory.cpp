@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -70,8 +71,9 @@ TEST(ReadMemory, ErrorsNameTheGivenNameNotATemporaryFile) {
 }
 
 // The cube and nutexb formats touch no file in memory (the editor's export preview writes and
-// reads them back at every adjustment): with the temporary folder missing they still work.
-TEST(ReadMemory, CubeAndNutexbNeedNoTemporaryFolder) {
+// reads them back at every adjustment), nor do OpenColorIO's writers: with the temporary folder
+// missing they still work.
+TEST(ReadMemory, CubeNutexbAndOcioWritersNeedNoTemporaryFolder) {
     lut::LutFile src;
     src.cube = lut::Lut3D::identity(16);
     const std::string missing = lut::test::tempDir() + "/no-such-folder";
@@ -87,6 +89,20 @@ TEST(ReadMemory, CubeAndNutexbNeedNoTemporaryFolder) {
         EXPECT_NO_THROW((void)f.readMemory(bytes, label, {})) << name;
         for (const auto& x : d)
             EXPECT_EQ(x.path, label) << name << ": " << x.message;
+    }
+    // OpenColorIO's writers, with a shaper where the format keeps one (clf, csp)
+    lut::LutFile shaped = src;
+    shaped.shaper = lut::Lut1D(64);
+    for (int i = 0; i < 64; ++i) {
+        const float v = std::pow(i / 63.0f, 0.5f);
+        shaped.shaper->entries()[static_cast<std::size_t>(i)] = glm::vec3(v);
+    }
+    for (const char* name : {"spi3d", "flame", "clf", "csp"}) {
+        const lut::Format& f = format(name);
+        const std::string label = std::string("mem") + f.extensions().front();
+        std::string bytes;
+        EXPECT_NO_THROW(bytes = f.writeMemory(shaped, label, {})) << name;
+        EXPECT_FALSE(bytes.empty()) << name;
     }
     if (old)
         ::setenv("TMPDIR", saved.c_str(), 1);

@@ -3,7 +3,6 @@
 #include "ocio/OcioSession.h"
 
 #include "lut/Error.h"
-#include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
 #include <algorithm>
@@ -33,8 +32,8 @@ void putTriplet(std::string& out, glm::vec3 v) {
 
 } // namespace
 
-Diagnostics writeCspWithShaper(const std::string& path, const LutFile& file, int size) {
-    Diagnostics diags;
+std::string cspWithShaperBytes(const std::string& path, const LutFile& file, int size,
+                               Diagnostics& diags) {
     std::optional<Lut3D> cube = file.cube;
     if (cube && size != 0 && size != cube->size()) {
         diags.push_back(ocioDiagnostic(path, "3D table resampled from " +
@@ -105,8 +104,7 @@ Diagnostics writeCspWithShaper(const std::string& path, const LutFile& file, int
         for (const glm::vec3& v : sh.entries())
             putTriplet(text, v);
     }
-    writeFileAtomically(path, text);
-    return diags;
+    return text;
 }
 
 } // namespace lut::formats

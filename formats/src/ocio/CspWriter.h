@@ -11,7 +11,9 @@
 
 namespace lut::formats {
 
-// size 0 = the cube's own size; otherwise the cube is resampled (tetrahedral, reported).
-Diagnostics writeCspWithShaper(const std::string& path, const LutFile& file, int size);
+// The file's text. size 0 = the cube's own size; otherwise the cube is resampled (tetrahedral,
+// reported in diags). `path` names the file in messages.
+std::string cspWithShaperBytes(const std::string& path, const LutFile& file, int size,
+                               Diagnostics& diags);
 
 } // namespace lut::formats

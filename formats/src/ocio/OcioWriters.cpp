@@ -67,12 +67,32 @@ public:
 
     Diagnostics write(const std::string& path, const LutFile& file,
                       const FormatOptions& options) const override {
+        Diagnostics diags;
+        const std::string bytes = writeMemory(file, path, options, &diags);
+        writeFileAtomically(path, bytes);
+        return diags;
+    }
+    // Every writer makes its bytes in memory (OCIO's Baker and GroupTransform write to a
+    // stream); write() puts them on disk atomically.
+    std::string writeMemory(const LutFile& file, const std::string& path,
+                            const FormatOptions& options, Diagnostics* diagnostics) const override {
+        Diagnostics diags;
+        std::string bytes = encode(file, path, options, diags);
+        if (diagnostics)
+            *diagnostics = std::move(diags);
+        return bytes;
+    }
+
+    int storedBitDepth() const override { return m_storedBits; }
+
+private:
+    std::string encode(const LutFile& file, const std::string& path, const FormatOptions& options,
+                       Diagnostics& diags) const {
         const bool plain = !file.shaper && file.cube && file.cube->hasDefaultDomain();
         if (m_shaper == Shaper::Transforms && !plain)
-            return writeTransforms(path, file, options);
+            return transformsBytes(path, file, options, diags);
         if (m_shaper == Shaper::Csp && !plain)
-            return writeCspWithShaper(path, file, options.size);
-        Diagnostics diags;
+            return cspWithShaperBytes(path, file, options.size, diags);
         if (file.shaper)
             diags.push_back(ocioDiagnostic(path, "the 1D shaper was baked into the 3D table",
                                            Diagnostic::Severity::Warning));
@@ -153,17 +173,13 @@ public:
             throw Error(path + ": OpenColorIO cannot write " + m_name + ": " +
                         ocioMessage(e.what()));
         }
-        writeFileAtomically(path, os.str());
         session.appendDiagnostics(diags);
-        return diags;
+        return os.str();
     }
 
-    int storedBitDepth() const override { return m_storedBits; }
-
-private:
     // .clf/.ctf: [range Matrix] [Lut1D] [range Matrix] Lut3D, exactly the LutFile.
-    Diagnostics writeTransforms(const std::string& path, const LutFile& file,
-                                const FormatOptions& options) const;
+    std::string transformsBytes(const std::string& path, const LutFile& file,
+                                const FormatOptions& options, Diagnostics& diags) const;
 
     std::string m_name, m_ocioName, m_ext, m_description;
     int m_storedBits;
@@ -172,9 +188,9 @@ private:
     Shaper m_shaper;
 };
 
-Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFile& file,
-                                            const FormatOptions& options) const {
-    Diagnostics diags;
+std::string OcioBakeFormat::transformsBytes(const std::string& path, const LutFile& file,
+                                            const FormatOptions& options,
+                                            Diagnostics& diags) const {
     std::optional<Lut3D> cube = file.cube;
     if (cube && options.size != 0 && options.size != cube->size()) {
         diags.push_back(
@@ -225,9 +241,8 @@ Diagnostics OcioBakeFormat::writeTransforms(const std::string& path, const LutFi
     } catch (const std::exception& e) {
         throw Error(path + ": OpenColorIO cannot write " + m_name + ": " + ocioMessage(e.what()));
     }
-    writeFileAtomically(path, os.str());
     session.appendDiagnostics(diags);
-    return diags;
+    return os.str();
 }
 
 } // namespace

@@ -27,6 +27,13 @@ public:
     Diagnostics write(const std::string& path, const LutFile& file,
                       const FormatOptions& options) const override {
         Diagnostics diags;
+        const std::string text = writeMemory(file, path, options, &diags);
+        writeFileAtomically(path, text);
+        return diags;
+    }
+    std::string writeMemory(const LutFile& file, const std::string& path,
+                            const FormatOptions& options, Diagnostics* diagnostics) const override {
+        Diagnostics diags;
         const Lut3D lut = prepareUnitLut(file, options.size, path, diags);
         const int n = lut.size();
         std::string text = "SPILUT 1.0\n3 3\n" + std::to_string(n) + " " + std::to_string(n) + " " +
@@ -42,8 +49,9 @@ public:
                                   double(v.x), double(v.y), double(v.z));
                     text += buf;
                 }
-        writeFileAtomically(path, text);
-        return diags;
+        if (diagnostics)
+            *diagnostics = std::move(diags);
+        return text;
     }
 };
 
