@@ -240,3 +240,19 @@ TEST(CliAtlas, BadUsageExitsTwo) {
     }
     EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
+
+// A row from the game's LUT (a .nutexb, builtin:smash-default) is stored as it is, with a warning
+// naming it: an engine applies an atlas row to its picture, where the game's compensation for
+// its brighten pass would show brighter than the edit. An edit's row says nothing of the kind.
+TEST(CliAtlas, AGameLutRowIsStoredAsItIsWithAWarning) {
+    const std::string dir = workDir();
+    writeCube(dir + "/warm.cube", 32, warm);
+    RunResult r = runCli("atlas build " + shellQuoted(dir + "/warm.cube") +
+                         " builtin:smash-default -o " + shellQuoted(dir + "/a.png") + " --size 32");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("builtin:smash-default: warning: what it is for: smash"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("--target raw` gives the edit it makes"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("warm.cube: warning: what it is for"), std::string::npos) << r.err;
+}

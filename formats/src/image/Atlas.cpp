@@ -82,6 +82,16 @@ AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::s
         const int k = first + static_cast<int>(rows.size());
         const LutFile file = readLut(path, options.read);
         r.report.diagnostics = file.diagnostics;
+        // An atlas row is applied by an engine to its picture as it is: the game's LUT (made
+        // for Smash Ultimate's brighten pass) would show brighter than its edit there.
+        if (const PurposeDecision d = decidePurpose(file, std::nullopt);
+            d.purpose == LutPurpose::Smash)
+            r.report.diagnostics.push_back(
+                {Diagnostic::Severity::Warning, path, 0, 0,
+                 "what it is for: " + d.text("") +
+                     ", made for Smash Ultimate's brighten pass; the row stores it as it is "
+                     "and an engine applying it shows it brighter (`lutkit convert " +
+                     path + " edit.cube --target raw` gives the edit it makes)"});
         Lut3D table = prepareUnitLut(file, 0, path, r.report.diagnostics);
         r.report.sourceSize = table.size();
         if (n == 0)
