@@ -277,6 +277,25 @@ private slots:
         QCOMPARE(makeTargetLut(doc.lutSource(), ExportTarget::Grading).shown->size(), 33);
     }
 
+    void thePreviewOfEveryTargetWritesNoFile() {
+        // Each adjustment makes and reads back the target's bytes in memory: no temporary folder.
+        Document doc;
+        doc.openLut(samplePath("sample_grade.cube"));
+        QTemporaryDir dir;
+        const QByteArray old =
+            qEnvironmentVariableIsSet("TMPDIR") ? qgetenv("TMPDIR") : QByteArray();
+        qputenv("TMPDIR", dir.filePath("no-such-folder").toUtf8());
+        std::string error;
+        try {
+            for (const ExportTargetInfo& t : exportTargets())
+                (void)makeTargetLut(doc.lutSource(), t.id);
+        } catch (const std::exception& e) {
+            error = e.what();
+        }
+        old.isNull() ? qunsetenv("TMPDIR") : qputenv("TMPDIR", old);
+        QVERIFY2(error.empty(), error.c_str());
+    }
+
     void aGameLutOpensAsWhatTheGameShows() {
         // A .nutexb is what the game applies: opened and exported for Smash unchanged, it is the
         // same file; an edit applies to the picture the game shows with it.

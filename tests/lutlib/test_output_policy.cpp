@@ -141,3 +141,45 @@ TEST(OutputFile, AFullDeviceIsAnErrorNamingThePath) {
         EXPECT_EQ(std::string(e.what()), "/dev/full: cannot write: No space left on device");
     }
 }
+
+// An in-memory output: seekable like a file, the caller's string given the bytes only at commit
+// (as a file appears only then), empty output refused as AtomicFile refuses an empty file, and
+// no file created anywhere (the current folder and the temporary folder are not touched: the
+// name is only a name).
+TEST(OutputFile, MemoryOutputsFillTheCallersStringAtCommit) {
+    const std::string dir = lut::test::tempDir();
+    const std::string name = dir + "/mem.bin";
+    std::string bytes = "old";
+    {
+        OutputFile f(memoryOutput(name, bytes));
+        EXPECT_TRUE(f.seekable());
+        EXPECT_EQ(f.tempPath(), "");
+        f.write("new", 3);
+        f.pwrite("N", 1, 0);
+        f.pwrite("!", 1, 4); // past the end: the gap is zeros, as in a file
+        EXPECT_EQ(f.size(), 5u);
+        EXPECT_EQ(bytes, "old");
+    } // not committed
+    EXPECT_EQ(bytes, "old");
+    {
+        OutputFile f(memoryOutput(name, bytes));
+        f.write("new", 3);
+        f.pwrite("N", 1, 0);
+        bool called = false;
+        f.commit([&](const std::string&) { called = true; });
+        EXPECT_FALSE(called) << "there is no file to verify";
+        EXPECT_THROW(f.write("x", 1), Error);
+    }
+    EXPECT_EQ(bytes, "New");
+    {
+        OutputFile f(memoryOutput(name, bytes));
+        try {
+            f.commit();
+            ADD_FAILURE() << "an empty output was committed";
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()), name + ": cannot write: the writer produced no bytes");
+        }
+    }
+    EXPECT_EQ(bytes, "New");
+    EXPECT_TRUE(names(dir).empty());
+}

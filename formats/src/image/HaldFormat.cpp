@@ -62,6 +62,16 @@ public:
         checkLayout(path, options);
         return writeLutImage(path, lut, options, LutLayout::Hald);
     }
+    LutFile readMemory(std::string_view bytes, const std::string& name,
+                       const FormatOptions& options) const override {
+        checkLayout(name, options);
+        return readLutImageMemory(bytes, name, options, LutLayout::Hald);
+    }
+    std::string writeMemory(const LutFile& lut, const std::string& name,
+                            const FormatOptions& options, Diagnostics* diagnostics) const override {
+        checkLayout(name, options);
+        return writeLutImageMemory(name, lut, options, LutLayout::Hald, diagnostics);
+    }
 
 private:
     static void checkLayout(const std::string& path, const FormatOptions& options) {

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace lut::formats {
 
@@ -17,5 +18,14 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
 // Writes a LUT image in `layout`; bit depth from options (0 = 8 for PNG/TIFF, float for EXR).
 Diagnostics writeLutImage(const std::string& path, const LutFile& file,
                           const FormatOptions& options, LutLayout layout);
+// The same from and to bytes in memory (Format::readMemory/writeMemory): `name` stands for the
+// data in messages and its extension picks the image format; the same codecs and checks, no
+// temporary file. The header and pixels come from one decoder (bytes cannot change between).
+LutFile readLutImageMemory(std::string_view bytes, const std::string& name,
+                           const FormatOptions& options,
+                           std::optional<LutLayout> forced = std::nullopt);
+std::string writeLutImageMemory(const std::string& name, const LutFile& file,
+                                const FormatOptions& options, LutLayout layout,
+                                Diagnostics* diagnostics);
 
 } // namespace lut::formats

@@ -7,7 +7,9 @@
 //   reshade (unreal-32)    1024 x 32 as unreal, N = 32 only (ReShade's LUT.fx, Unreal's 1024x32)
 //   unity-32               1024 x 32 as unity, N = 32 only (Unity's NeutralLdrLut.png)
 //
-// Files go through OpenImageIO: 8/16-bit PNG and TIFF, float EXR (also float TIFF). Integer
+// Files go through lutkit's image codecs (OpenImageIO for TIFF): 8/16-bit PNG and TIFF, float EXR
+// (also float TIFF), from and to files or bytes in memory alike (readMemory/writeMemory need no
+// temporary file). Integer
 // samples are read exactly (v/255, v/65535) and written by rounding to nearest with clamping
 // (lut::toUnorm8/16), optionally dithered (FormatOptions::dither); a diagnostic says how many
 // values were clamped and what the quantisation cost. Default output depth: 8 bits for PNG and
@@ -56,6 +58,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 
 namespace lut::formats {
@@ -200,22 +203,19 @@ std::optional<LutPurpose> purposeOf(const ImageMetadata* meta, const std::string
 
 } // namespace
 
-LutFile readLutImage(const std::string& path, const FormatOptions& options,
-                     std::optional<LutLayout> forced) {
-    const std::optional<LutLayout> wanted = forced ? forced : options.layout;
+namespace {
 
-    // OpenImageIO opens the file itself: a FIFO, a directory or a device is refused first. The
-    // picture size comes from the header, and a size no LUT layout has is refused before any
-    // pixel is decoded (a small file can claim a huge picture).
-    checkRegularInput(path);
-    const ImageInfo header = readImageInfo(path);
+// The picture size against the layouts, from the header before any pixel is decoded (a small
+// file can claim a huge picture): the layouts the size fits; with a layout wanted, its N (else
+// 0, decided from the pixels). Throws naming the sizes the layouts need.
+std::vector<LayoutFit> checkLayoutSize(const std::string& path, const ImageInfo& header,
+                                       std::optional<LutLayout> wanted, int& n) {
     const int w = header.width, h = header.height;
     const std::vector<LayoutFit> fits = layoutsForImageSize(w, h);
 
-    LutLayout layout = LutLayout::Pilot;
-    int n = 0;
+    n = 0;
     if (wanted) {
-        layout = *wanted;
+        const LutLayout layout = *wanted;
         n = layoutSizeForImage(layout, w, h);
         if (n == 0) {
             const std::string need =
@@ -235,15 +235,26 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
                     " need N^2 x N (e.g. 256x16), hald needs L^3 x L^3 (e.g. 64x64)");
     }
 
-    // The pixels: at most a 256^3 LUT's worth now (65536x256 or 4096x4096).
-    const std::uint64_t pixels = static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h);
-    const LoadedImage img =
-        allocating(path, "decoding the " + sizeText(w, h) + " image",
-                   pixels * (16 + 4 * static_cast<std::uint64_t>(std::max(header.channels, 1))),
-                   [&] { return readImage(path); });
-    if (img.image.width() != w || img.image.height() != h)
-        throw Error(path + ": the file changed while being read (" + sizeText(w, h) +
-                    " when opened, " + sizeText(img.image.width(), img.image.height()) + " now)");
+    return fits;
+}
+
+// The pixels, once their size was checked: at most a 256^3 LUT's worth (65536x256 or
+// 4096x4096).
+LoadedImage decodeLutImage(const std::string& path, const ImageInfo& header,
+                           const std::function<LoadedImage()>& decode) {
+    const std::uint64_t pixels =
+        static_cast<std::uint64_t>(header.width) * static_cast<std::uint64_t>(header.height);
+    return allocating(path, "decoding the " + sizeText(header.width, header.height) + " image",
+                      pixels * (16 + 4 * static_cast<std::uint64_t>(std::max(header.channels, 1))),
+                      decode);
+}
+
+// The LUT in the decoded image: the layout wanted (n its size) or detected (fits).
+LutFile lutFromLoadedImage(const std::string& path, const LoadedImage& img,
+                           std::optional<LutLayout> wanted, const std::vector<LayoutFit>& fits,
+                           int n) {
+    const int w = img.image.width(), h = img.image.height();
+    LutLayout layout = wanted.value_or(LutLayout::Pilot);
     LutFile file;
     file.sourceBitDepth = img.info.isFloat ? 0 : img.info.bitDepth;
     file.purpose = purposeOf(img.metadata.get(), path);
@@ -335,9 +346,42 @@ LutFile readLutImage(const std::string& path, const FormatOptions& options,
     return file;
 }
 
-Diagnostics writeLutImage(const std::string& path, const LutFile& source,
-                          const FormatOptions& options, LutLayout layout) {
-    Diagnostics diags;
+} // namespace
+
+LutFile readLutImage(const std::string& path, const FormatOptions& options,
+                     std::optional<LutLayout> forced) {
+    const std::optional<LutLayout> wanted = forced ? forced : options.layout;
+    // OpenImageIO opens the file itself: a FIFO, a directory or a device is refused first.
+    checkRegularInput(path);
+    const ImageInfo header = readImageInfo(path);
+    int n = 0;
+    const std::vector<LayoutFit> fits = checkLayoutSize(path, header, wanted, n);
+    const LoadedImage img = decodeLutImage(path, header, [&] { return readImage(path); });
+    if (img.image.width() != header.width || img.image.height() != header.height)
+        throw Error(path + ": the file changed while being read (" +
+                    sizeText(header.width, header.height) + " when opened, " +
+                    sizeText(img.image.width(), img.image.height()) + " now)");
+    return lutFromLoadedImage(path, img, wanted, fits, n);
+}
+
+LutFile readLutImageMemory(std::string_view bytes, const std::string& name,
+                           const FormatOptions& options, std::optional<LutLayout> forced) {
+    const std::optional<LutLayout> wanted = forced ? forced : options.layout;
+    // One source: the header, checked, then its pixels (bytes in memory cannot change between).
+    const auto source = openImageMemory(name, std::string(bytes));
+    const ImageInfo header = source->info();
+    int n = 0;
+    const std::vector<LayoutFit> fits = checkLayoutSize(name, header, wanted, n);
+    const LoadedImage img =
+        decodeLutImage(name, header, [&] { return readFrame(*source, name, nullptr, kOnlyImage); });
+    return lutFromLoadedImage(name, img, wanted, fits, n);
+}
+
+namespace {
+
+// The picture of a LUT image and how to write it; diagnostics name path.
+Image lutImage(const std::string& path, const LutFile& source, const FormatOptions& options,
+               LutLayout layout, ImageWriteOptions& wo, Diagnostics& diags) {
     int bits = options.bitDepth > 0 ? options.bitDepth : defaultBitDepth(path);
     if (bits != 8 && bits != 16 && bits != 32)
         throw Error(path + ": bit depth " + std::to_string(bits) + " is not 8, 16 or 32 (float)");
@@ -366,8 +410,9 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source,
         if (!options.dither)
             addQuantizationDiagnostic(lut, bits, path, diags);
     }
-    const Image image = lutToImage(lut, layout);
-    ImageWriteOptions wo;
+    wo = ImageWriteOptions();
+    if (ext.empty())
+        wo.format = "png"; // standard output, a device or a name without extension: a PNG
     wo.bitDepth = bits;
     wo.dither = options.dither;
     wo.alpha = true;
@@ -376,8 +421,30 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& source,
         meta->text.emplace_back("ImageDescription", purposeTag(*source.purpose));
         wo.metadata = std::move(meta);
     }
+    return lutToImage(lut, layout);
+}
+
+} // namespace
+
+Diagnostics writeLutImage(const std::string& path, const LutFile& source,
+                          const FormatOptions& options, LutLayout layout) {
+    Diagnostics diags;
+    ImageWriteOptions wo;
+    const Image image = lutImage(path, source, options, layout, wo, diags);
     writeImage(path, image, wo);
     return diags;
+}
+
+std::string writeLutImageMemory(const std::string& name, const LutFile& source,
+                                const FormatOptions& options, LutLayout layout,
+                                Diagnostics* diagnostics) {
+    Diagnostics diags;
+    ImageWriteOptions wo;
+    const Image image = lutImage(name, source, options, layout, wo, diags);
+    std::string bytes = writeImageMemory(name, image, wo);
+    if (diagnostics)
+        *diagnostics = std::move(diags);
+    return bytes;
 }
 
 namespace {
@@ -406,6 +473,17 @@ public:
                       const FormatOptions& options) const override {
         const LutLayout layout = options.layout.value_or(LutLayout::Pilot);
         return writeLutImage(path, lut, options, layout);
+    }
+    // In memory through the same codecs, no temporary file (the editor's export preview makes
+    // and reads back a strip at every adjustment).
+    LutFile readMemory(std::string_view bytes, const std::string& name,
+                       const FormatOptions& options) const override {
+        return readLutImageMemory(bytes, name, options);
+    }
+    std::string writeMemory(const LutFile& lut, const std::string& name,
+                            const FormatOptions& options, Diagnostics* diagnostics) const override {
+        return writeLutImageMemory(name, lut, options, options.layout.value_or(LutLayout::Pilot),
+                                   diagnostics);
     }
 };
 

@@ -104,12 +104,24 @@ public:
 // format, else sniffed). Throws lut::Error naming the file; FIFOs and devices are refused first.
 std::unique_ptr<ImageSource> openImageSource(const std::string& path,
                                              const std::string& format = {});
+// The same on bytes in memory: `name` stands for them in every message (as a path would, and
+// its extension is what OpenImageIO is told, as a file's); the same plausibility rule
+// (checkImageBytes) and codecs as a file, no file touched. Empty bytes are refused.
+std::unique_ptr<ImageSource> openImageMemory(const std::string& name, std::string bytes,
+                                             const std::string& format = {});
+// Reads the selected subimage of an open source into a float RGBA frame (readImage's work;
+// name stands for the source in messages).
+LoadedImage readFrame(ImageSource& src, const std::string& name, const Progress* progress,
+                      int subimage);
+// Writes a frame to an output (writeImage's work once the output rule was applied).
+void writeFrame(const OutputTarget& target, const Image& image, const ImageWriteOptions& options);
 // Selects subimage `subimage` (its first MIP level) of src; kOnlyImage keeps part 0 and refuses
 // a file holding several subimages (MultiImageError). Throws lut::Error naming path when there
 // is no such subimage. Returns the parts (MIP levels) of that subimage, in order.
 std::vector<int> selectSubimage(ImageSource& src, const std::string& path, int subimage);
 // Whether a native codec writes this format (else OpenImageIO does).
 std::string canonicalImageFormat(const std::string& formatOrPath);
+// Sinks write to any OutputTarget: a file, standard output, a device or memory (memoryOutput).
 std::unique_ptr<ImageSink> createImageSink(const OutputTarget& target, const SinkSpec& spec);
 // A file of several parts (subimages, MIP levels), written one after the other: OpenEXR and TIFF
 // (formatHoldsParts), through OpenImageIO.

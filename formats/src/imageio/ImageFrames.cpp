@@ -1,6 +1,6 @@
 // Whole frames as float RGBA (lut/formats/ImageIO.h), read and written chunk by chunk through
-// the codecs: the file's samples are converted straight into (out of) the frame's rows, so no
-// second frame-sized buffer of the file's type exists.
+// the codecs, from and to files or bytes in memory alike: the file's samples are converted straight
+// into (out of) the frame's rows, so no second frame-sized buffer of the file's type exists.
 #include "imageio/ImageCodec.h"
 #include "imageio/PixelConvert.h"
 
@@ -36,10 +36,22 @@ LoadedImage readImage(const std::string& path, const std::string& format, const 
                       int subimage) {
     checkCancelled(progress, path);
     auto src = openImageSource(path, format);
-    selectSubimage(*src, path, subimage);
+    return readFrame(*src, path, progress, subimage);
+}
+
+LoadedImage readImageMemory(std::string_view bytes, const std::string& name,
+                            const std::string& format, const Progress* progress, int subimage) {
+    checkCancelled(progress, name);
+    auto src = openImageMemory(name, std::string(bytes), format);
+    return readFrame(*src, name, progress, subimage);
+}
+
+LoadedImage readFrame(ImageSource& source, const std::string& path, const Progress* progress,
+                      int subimage) {
+    selectSubimage(source, path, subimage);
     LoadedImage out;
-    out.info = src->info();
-    out.metadata = src->metadata();
+    out.info = source.info();
+    out.metadata = source.metadata();
     const ImageInfo& info = out.info;
     const RgbaMap map = rgbaMapOf(info);
     const std::uint64_t frameBytes =
@@ -48,30 +60,43 @@ LoadedImage readImage(const std::string& path, const std::string& format, const 
                "a " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                    " float RGBA frame",
                frameBytes, [&] { out.image = Image(info.width, info.height); });
-    const int rows = chunkRows(info.width, info.channels, src->rowGranularity());
+    const int rows = chunkRows(info.width, info.channels, source.rowGranularity());
     const std::size_t rb = rowBytes(info);
     std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
     for (int y0 = 0; y0 < info.height; y0 += rows) {
         checkCancelled(progress, path);
         const int y1 = std::min(info.height, y0 + rows);
-        src->readRows(y0, y1, chunk.data());
+        source.readRows(y0, y1, chunk.data());
         toRgba(chunk.data(), info.type, info.channels, map,
                static_cast<std::size_t>(info.width) * static_cast<std::size_t>(y1 - y0),
                out.image.pixel(0, y0));
         reportProgress(progress, static_cast<double>(y1) / info.height);
     }
-    src->finish();
+    source.finish();
     return out;
 }
 
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
     if (image.empty())
         throw Error(path + ": cannot write an empty image");
+    writeFrame(checkOutput(path, ExistingOutput::Replace), image, options);
+}
+
+std::string writeImageMemory(const std::string& name, const Image& image,
+                             const ImageWriteOptions& options) {
+    if (image.empty())
+        throw Error(name + ": cannot write an empty image");
+    std::string bytes;
+    writeFrame(memoryOutput(name, bytes), image, options);
+    return bytes;
+}
+
+void writeFrame(const OutputTarget& target, const Image& image, const ImageWriteOptions& options) {
+    const std::string& path = target.path;
     const int bits = options.bitDepth;
     if (bits != 8 && bits != 16 && bits != 32)
         throw Error(path + ": unsupported bit depth " + std::to_string(bits) +
                     " (expected 8, 16 or 32)");
-    const OutputTarget target = checkOutput(path, ExistingOutput::Replace);
     SinkSpec spec;
     spec.format = options.format;
     const std::string fmt = canonicalImageFormat(

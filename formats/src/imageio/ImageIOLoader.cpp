@@ -102,7 +102,9 @@ public:
         : m_memory(std::move(memory)) {
         module::SourceOpen req;
         req.path = path;
-        req.memory = path == "-" ? &m_memory : nullptr;
+        // Bytes in memory (standard input's, or Format::readMemory's; never empty then) go to
+        // OpenImageIO's in-memory reader.
+        req.memory = path == "-" || !m_memory.empty() ? &m_memory : nullptr;
         req.format = format;
         std::string error;
         rethrow(api().openSource(req, &m_handle, m_parts, error), error);
@@ -163,10 +165,12 @@ public:
             // OpenImageIO 2.4 writes a multi-part OpenEXR by name only (and libtiff reads back
             // the pages it chains): the writer gets the temporary file itself, which commit()
             // then checks and renames like any other.
-            if (target.inPlace())
-                throw Error(target.path + ": a file of " + std::to_string(parts.size()) +
-                            " images (parts, pages, frames or MIP levels) cannot be written to "
-                            "standard output or a device: name a file");
+            if (target.inPlace() || target.kind == OutputKind::Memory)
+                throw Error(
+                    target.path + ": a file of " + std::to_string(parts.size()) +
+                    " images (parts, pages, frames or MIP levels) cannot be written to " +
+                    (target.kind == OutputKind::Memory ? "memory" : "standard output or a device") +
+                    ": name a file");
             name = m_out.tempPath();
             cb.pwrite = nullptr;
             m_temp = name;

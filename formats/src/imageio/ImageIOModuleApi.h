@@ -35,7 +35,7 @@ struct ByteCallbacks {
 
 struct SourceOpen {
     std::string path;
-    const std::string* memory = nullptr; // standard input's bytes, or null
+    const std::string* memory = nullptr; // the bytes (standard input's, or in memory), or null
     std::string format;                  // for memory: the format's name, "" = by content
 };
 

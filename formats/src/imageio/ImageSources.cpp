@@ -1,5 +1,6 @@
 // Which codec reads or writes a file: told from the first bytes for reading (never from the
-// name, which may lie), from the output's extension or the named format for writing.
+// name, which may lie), from the output's extension or the named format for writing. Files,
+// standard input and bytes in memory take the same checks and codecs.
 #include "imageio/ImageCodec.h"
 #include "imageio/ImageHeaderChecks.h"
 
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 namespace lut::formats {
 
@@ -84,14 +86,27 @@ std::string readImageStream(const std::string& named) {
         });
 }
 
+// A file (path), standard input ("-") or bytes in memory (`bytes`, with path the name that
+// stands for them): standard input is read whole and then takes the memory path, so bytes are
+// checked and decoded exactly as a file's are, only without a file.
 std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::string& format,
-                                           DeclaredImage& declared) {
+                                           DeclaredImage& declared,
+                                           std::optional<std::string> bytes) {
     std::string memory;
     std::string head;
     const std::string named = format.empty() ? "" : canonicalImageFormat(format);
-    if (isStdStream(path)) {
-        memory = readImageStream(named);
-        declared = checkImageBytes("-", memory, named, true);
+    if (bytes || isStdStream(path)) {
+        if (bytes) {
+            // Codecs read empty memory as "no memory": the name must never be opened as a file.
+            if (bytes->empty())
+                throw Error(path + ": is empty");
+            memory = std::move(*bytes);
+        } else {
+            memory = readImageStream(named);
+        }
+        // As for a file, a TGA (no magic number) is told by its name's extension.
+        declared = checkImageBytes(isStdStream(path) ? "-" : path, memory,
+                                   named.empty() && bytes ? path : named, true);
         head = memory.substr(0, 16);
     } else {
         checkRegularInput(path); // a FIFO or device is refused before it is opened
@@ -136,6 +151,11 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         if (tail.find("\xff\xd9") == std::string::npos)
             throw Error(path + ": JPEG file ends before its end-of-image marker (truncated)");
     }
+    // OpenImageIO reads memory through the reader it is told (a file's it would find from the
+    // bytes when the extension's reader refuses them): the format the bytes declare, else the
+    // name's extension.
+    if (named.empty() && !memory.empty() && !declared.format.empty())
+        return openOiioSource(path, std::move(memory), declared.format);
     return openOiioSource(path, std::move(memory), named.empty() ? format : named);
 }
 
@@ -232,8 +252,15 @@ void ImageSink::nextPart() {
 
 std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std::string& format) {
     DeclaredImage declared;
-    auto src = openAnySource(path, format, declared);
+    auto src = openAnySource(path, format, declared, std::nullopt);
     return std::make_unique<CheckedSource>(path, std::move(src), declared.decoderBytes);
+}
+
+std::unique_ptr<ImageSource> openImageMemory(const std::string& name, std::string bytes,
+                                             const std::string& format) {
+    DeclaredImage declared;
+    auto src = openAnySource(name, format, declared, std::move(bytes));
+    return std::make_unique<CheckedSource>(name, std::move(src), declared.decoderBytes);
 }
 
 bool formatHoldsParts(const std::string& canonicalFormat) {

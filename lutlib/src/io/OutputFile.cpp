@@ -44,6 +44,11 @@ int ownStreamFd(const std::string& path) {
 } // namespace
 
 OutputFile::OutputFile(const OutputTarget& target) : m_target(target) {
+    if (m_target.kind == OutputKind::Memory) {
+        if (!m_target.memory)
+            throw Error(m_target.path + ": cannot write: no memory to write to");
+        return;
+    }
     if (m_target.kind == OutputKind::Stdout) {
         m_fd = STDOUT_FILENO;
         return;
@@ -85,10 +90,21 @@ void OutputFile::fail(const std::string& reason) {
         m_fd = -1;
     }
     m_atomic.reset(); // removes the temporary file
+    m_memory.clear();
     throw Error(m_target.path + ": cannot write: " + reason);
 }
 
 void OutputFile::checkedWrite(const void* data, std::size_t bytes, std::int64_t offset) {
+    if (m_target.kind == OutputKind::Memory) {
+        if (m_done)
+            throw Error(m_target.path + ": cannot write: the output is closed");
+        const std::size_t at = static_cast<std::size_t>(offset);
+        if (at + bytes > m_memory.size())
+            m_memory.resize(at + bytes);
+        if (bytes > 0)
+            std::memcpy(m_memory.data() + at, data, bytes);
+        return;
+    }
     if (m_done || m_fd < 0)
         throw Error(m_target.path + ": cannot write: the output is closed");
     const char* p = static_cast<const char*>(data);
@@ -129,6 +145,14 @@ void OutputFile::pwrite(const void* data, std::size_t bytes, std::uint64_t offse
 void OutputFile::commit(const std::function<void(const std::string&)>& verify) {
     if (m_done)
         throw Error(m_target.path + ": cannot write: the output is closed");
+    if (m_target.kind == OutputKind::Memory) {
+        if (m_memory.empty())
+            fail("the writer produced no bytes");
+        m_done = true;
+        *m_target.memory = std::move(m_memory);
+        m_memory.clear();
+        return;
+    }
     if (!m_atomic) {
         m_done = true;
         if (m_ownFd) {

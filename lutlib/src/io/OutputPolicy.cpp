@@ -114,4 +114,13 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
     return t;
 }
 
+OutputTarget memoryOutput(const std::string& name, std::string& bytes) {
+    OutputTarget t;
+    t.path = name;
+    t.writePath = name;
+    t.kind = OutputKind::Memory;
+    t.memory = &bytes;
+    return t;
+}
+
 } // namespace lut

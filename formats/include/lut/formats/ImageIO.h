@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lut::formats {
@@ -95,6 +96,16 @@ std::string subimageKind(const std::string& format);
 // (kOnlyImage: the file must hold one).
 LoadedImage readImage(const std::string& path, const std::string& format = {},
                       const Progress* progress = nullptr, int subimage = kOnlyImage);
+// The same from bytes in memory (the editor's export preview, Format::readMemory): `name` stands
+// for the data in every message and its extension is what OpenImageIO is told, as a file's path
+// would be; the format is told from the bytes as for a file. The same plausibility rule, codecs
+// (OpenImageIO through its in-memory reader) and errors as readImage; nothing is written to or
+// read from disk. Empty bytes are refused ("NAME: is empty"). Known limit: OpenImageIO 2.4's GIF
+// reader cannot seek to its frames through the in-memory reader (a GIF reads from a file only,
+// as from standard input before).
+LoadedImage readImageMemory(std::string_view bytes, const std::string& name,
+                            const std::string& format = {}, const Progress* progress = nullptr,
+                            int subimage = kOnlyImage);
 // Describes subimage `subimage` (kOnlyImage: the first; info.subimages says how many there are).
 ImageInfo readImageInfo(const std::string& path, const std::string& format = {},
                         int subimage = kOnlyImage);
@@ -137,5 +148,13 @@ struct ImageWriteOptions {
 // extension. Throws lut::Error naming the file, e.g. for a bit depth the format cannot store (PNG
 // has no float). Callers apply the overwrite rule first (lut/io/OutputPolicy.h): this replaces.
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options);
+// The bytes writeImage would put in a file named `name` (whose extension picks the format, as a
+// path's does; options.format otherwise), made in memory through the same codecs and checks
+// (lut::memoryOutput): no temporary file. A file of several images (OpenEXR parts, TIFF pages),
+// which OpenImageIO 2.4 writes by file name only, is refused here as for standard output; every
+// single-image writer lutkit uses (PNG, PNM, OpenEXR, and through OpenImageIO TIFF, DPX, TGA,
+// BMP, JPEG ...) writes through its I/O proxy.
+std::string writeImageMemory(const std::string& name, const Image& image,
+                             const ImageWriteOptions& options);
 
 } // namespace lut::formats

@@ -35,9 +35,11 @@ public:
     virtual Diagnostics write(const std::string& path, const LutFile& lut,
                               const FormatOptions& options) const = 0;
 
-    // The same from and to bytes in memory (standard input and output, archives, tests).
-    // `name` stands for the file in messages and gives the extension where a format needs one.
-    // The defaults go through a private temporary file; formats that parse bytes override them.
+    // The same from and to bytes in memory (standard input and output, the editor's export
+    // preview, archives, tests). `name` stands for the file in messages and gives the extension
+    // where a format needs one. The result equals read()/write() on a file holding the same
+    // bytes. cube, nutexb, strip and hald decode and encode in memory (no file is touched); the
+    // defaults, for formats that only know files, go through a private temporary folder.
     virtual LutFile readMemory(std::string_view bytes, const std::string& name,
                                const FormatOptions& options) const;
     virtual std::string writeMemory(const LutFile& lut, const std::string& name,

@@ -29,6 +29,7 @@ enum class OutputKind {
     ExistingFile, // a regular file that will be replaced (ExistingOutput::Replace)
     Stdout,       // "-"
     Special,      // device, FIFO, socket, /dev/..., /proc/...: written in place
+    Memory,       // bytes in memory (memoryOutput): no file at all
 };
 
 struct OutputTarget {
@@ -36,6 +37,9 @@ struct OutputTarget {
     std::string writePath; // where the bytes go: path, or the file a symbolic link names
     OutputKind kind = OutputKind::NewFile;
     bool skip = false; // ExistingOutput::Skip and the file exists: write nothing
+    // OutputKind::Memory: the caller's string, given the bytes when the output is committed
+    // (left as it was when the write fails).
+    std::string* memory = nullptr;
     bool inPlace() const { return kind == OutputKind::Stdout || kind == OutputKind::Special; }
 };
 
@@ -57,6 +61,11 @@ private:
 // writing one new file) is kept and the second writer fails naming it.
 OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
                          const std::vector<std::string>& inputs = {});
+
+// An output whose bytes go to `bytes` in memory (Format::writeMemory, the editor's export
+// preview): `name` stands for it in messages and its extension picks the format, as a path's
+// would. It can seek like a regular file; nothing touches the file system.
+OutputTarget memoryOutput(const std::string& name, std::string& bytes);
 
 // Whether path was found absent by checkOutput under Refuse or Skip and not written since.
 bool isExclusiveOutput(const std::string& path);
