@@ -1,9 +1,8 @@
 // Format::readMemory / writeMemory: every format reads and writes bytes in memory (standard
 // input and output). Every writer encodes in memory; the cube, nutexb, strip and hald formats
 // decode in memory too (touching no file), OpenColorIO's reader goes through a private temporary
-// file (its FileTransform opens a path); either way the result
-// equals reading the same bytes from a file, and messages name the caller's name for the data,
-// never a temporary path.
+// file (its FileTransform opens a path); either way the result equals reading the same bytes
+// from a file, and messages name the caller's name for the data, never a temporary path.
 #include "TestSupport.h"
 
 #include "lut/Error.h"
