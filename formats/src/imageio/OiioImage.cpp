@@ -172,6 +172,17 @@ private:
 };
 
 OiioSource::OiioSource(const SourceOpen& req) : m_path(req.path) {
+    open(req);
+    listParts();
+    // OpenImageIO 2.4's WebP reader loses its frame iterator when asked for the frame after the
+    // last one (how listParts finds the end): every later read then failed with "Couldn't decode
+    // subimage 0", even for files oiiotool itself wrote. The reader starts afresh instead.
+    if (std::strcmp(m_in->format_name(), "webp") == 0)
+        open(req);
+}
+
+void OiioSource::open(const SourceOpen& req) {
+    m_in.reset();
     OIIO::ImageSpec config;
     // Keep colour values as stored: by default OIIO premultiplies PNG/TIFF colour by an
     // unassociated alpha, which would scale every pixel whose alpha is not 1.
@@ -189,7 +200,6 @@ OiioSource::OiioSource(const SourceOpen& req) : m_path(req.path) {
         throw Error(req.path + ": cannot read image: " +
                     (err.empty() ? "not an image OpenImageIO can read" : err));
     }
-    listParts();
 }
 
 OiioSource::~OiioSource() = default;

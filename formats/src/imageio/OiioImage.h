@@ -27,6 +27,7 @@ private:
         int subimage = 0;
         int mipLevel = 0;
     };
+    void open(const SourceOpen& request);
     void listParts();
     [[noreturn]] void fail(const std::string& what, bool ok);
 
