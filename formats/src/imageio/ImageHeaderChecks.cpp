@@ -210,13 +210,24 @@ std::string sniffImageFormat(const HeaderBytes& b, const std::string& nameOrForm
         std::isspace(static_cast<unsigned char>(h[2])))
         return "pnm";
     // Formats OpenImageIO reads that have no scanner here: known by their magic numbers (so
-    // standard input may be one), held to the pixel limit once OpenImageIO has read the header.
-    if (starts("\x01\xda", 2) || starts("\x80\x2a\x5f\xd7", 4) || starts("\xd7\x5f\x2a\x80", 4) ||
-        starts("DDS ", 4) || starts("\x53\x80\xf6\x34", 4) || starts("SIMPLE  =", 9) ||
-        starts("\xff\x4f\xff\x51", 4) || starts("\0\0\0\x0cjP  ", 8) ||
-        starts("\x2f\x08\x67\xab", 4) || starts("\xab\x67\x08\x2f", 4) ||
-        (h.size() >= 12 && h.compare(4, 4, "ftyp") == 0))
-        return "other";
+    // standard input may be one, and OpenImageIO, which finds no reader for memory by content,
+    // is told which), held to the pixel limit once OpenImageIO has read the header.
+    if (starts("\x01\xda", 2))
+        return "sgi";
+    if (starts("\x80\x2a\x5f\xd7", 4) || starts("\xd7\x5f\x2a\x80", 4))
+        return "cineon";
+    if (starts("DDS ", 4))
+        return "dds";
+    if (starts("\x53\x80\xf6\x34", 4))
+        return "softimage";
+    if (starts("SIMPLE  =", 9))
+        return "fits";
+    if (starts("\xff\x4f\xff\x51", 4) || starts("\0\0\0\x0cjP  ", 8))
+        return "jpeg2000";
+    if (starts("\x2f\x08\x67\xab", 4) || starts("\xab\x67\x08\x2f", 4))
+        return "zfile";
+    if (h.size() >= 12 && h.compare(4, 4, "ftyp") == 0)
+        return "heif";
     // TGA has no magic number: its name, the named format, or the TGA 2.0 footer.
     std::string ext = nameOrFormat.find('.') == std::string::npos ? "." + nameOrFormat
                                                                   : extensionOf(nameOrFormat);
@@ -254,8 +265,9 @@ DeclaredImage scanImageHeader(const HeaderBytes& b, const std::string& format,
         return scanBmp(b, path);
     if (format == "pnm")
         return scanPnm(b, path);
-    if (format == "other") {
-        DeclaredImage d;
+    if (format == "sgi" || format == "cineon" || format == "dds" || format == "softimage" ||
+        format == "fits" || format == "jpeg2000" || format == "zfile" || format == "heif") {
+        DeclaredImage d; // no scanner: the pixel limit once OpenImageIO has read the header
         d.format = format;
         return d;
     }

@@ -6,6 +6,7 @@
 #include "imageio/OiioImage.h"
 
 #include "lut/Limits.h"
+#include "lut/io/TempFiles.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -17,7 +18,10 @@ OIIO_API void encode_exif(const ImageSpec& spec, std::vector<char>& blob);
 OIIO_NAMESPACE_END
 
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 
 namespace lut::formats::module {
 
@@ -171,6 +175,39 @@ private:
     int64_t m_end = 0;
 };
 
+namespace {
+
+// A private file holding `bytes` (mode 0600, in the temporary folder), registered for removal on
+// an interrupt; its path.
+std::string scratchFile(const std::string& bytes, const std::string& suffix,
+                        TempPathRegistration& registration) {
+    std::string path =
+        (std::filesystem::temp_directory_path() / ("lutkit-stdin-XXXXXX" + suffix)).string();
+    const int fd = ::mkstemps(path.data(), static_cast<int>(suffix.size()));
+    if (fd < 0)
+        throw Error("cannot create a temporary file in " +
+                    std::filesystem::temp_directory_path().string() + ": " + std::strerror(errno));
+    registration = TempPathRegistration(path);
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            const std::string why = std::strerror(errno);
+            ::close(fd);
+            ::unlink(path.c_str());
+            registration.release();
+            throw Error(path + ": cannot write: " + why);
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    return path;
+}
+
+} // namespace
+
 OiioSource::OiioSource(const SourceOpen& req) : m_path(req.path) {
     open(req);
     listParts();
@@ -187,13 +224,27 @@ void OiioSource::open(const SourceOpen& req) {
     // Keep colour values as stored: by default OIIO premultiplies PNG/TIFF colour by an
     // unassociated alpha, which would scale every pixel whose alpha is not 1.
     config.attribute("oiio:UnassociatedAlpha", 1);
+    std::string name = req.memory && !req.format.empty() ? "stdin." + req.format : req.path;
     if (req.memory) {
-        m_memory =
-            std::make_unique<OIIO::Filesystem::IOMemReader>(req.memory->data(), req.memory->size());
-        void* proxy = m_memory.get();
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        // Only the readers checked to read through an IOProxy get one (each read from standard
+        // input in tests/formats/test_oiio_formats_read.cpp); any other gets the bytes in a
+        // private temporary file, removed with this source (and on an interrupt: it is
+        // registered). OpenImageIO 2.4's GIF, SGI, FITS and HEIF readers say they take a proxy
+        // but open the file by name ("Could not open file stdin.gif").
+        static const std::string kProxyReaders[] = {"tiff", "jpeg", "openexr", "png", "dpx", "webp",
+                                                    "iff",  "bmp",  "targa",   "hdr", "psd", "pnm"};
+        if (std::find(std::begin(kProxyReaders), std::end(kProxyReaders), req.format) ==
+            std::end(kProxyReaders)) {
+            if (m_scratch.empty())
+                m_scratch = scratchFile(*req.memory, "." + req.format, m_scratchRegistration);
+            name = m_scratch;
+        } else {
+            m_memory = std::make_unique<OIIO::Filesystem::IOMemReader>(req.memory->data(),
+                                                                       req.memory->size());
+            void* proxy = m_memory.get();
+            config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        }
     }
-    const std::string name = req.memory && !req.format.empty() ? "stdin." + req.format : req.path;
     m_in = OIIO::ImageInput::open(name, &config);
     if (!m_in) {
         std::string err = oneLine(OIIO::geterror());
@@ -202,7 +253,13 @@ void OiioSource::open(const SourceOpen& req) {
     }
 }
 
-OiioSource::~OiioSource() = default;
+OiioSource::~OiioSource() {
+    m_in.reset();
+    if (!m_scratch.empty()) {
+        ::unlink(m_scratch.c_str());
+        m_scratchRegistration.release();
+    }
+}
 
 // Every image the file holds: subimage by subimage, each one's MIP levels. A PSD's subimages
 // after the first are its layers, which the first (the merged image) already shows.

@@ -3,6 +3,7 @@
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
+#include "lut/io/TempFiles.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -33,6 +34,8 @@ private:
 
     std::string m_path;
     std::unique_ptr<OIIO_NAMESPACE::Filesystem::IOMemReader> m_memory;
+    std::string m_scratch; // the bytes in a file, for a reader that reads files only
+    TempPathRegistration m_scratchRegistration;
     std::unique_ptr<OIIO_NAMESPACE::ImageInput> m_in;
     OIIO_NAMESPACE::ImageSpec m_spec;
     std::vector<Part> m_parts;

@@ -234,7 +234,9 @@ RgbaMap rgbaMapOf(const ImageInfo& info) {
         m.r = r;
         m.g = g;
         m.b = b;
-    } else if (y >= 0 || info.channels <= 2) {
+    } else if ((y >= 0 && info.channels - (m.a >= 0 ? 1 : 0) <= 1) || info.channels <= 2) {
+        // Grey: one channel besides alpha (a "Y" among three or more is a name, not grey:
+        // OpenImageIO calls a FITS file's RGB channels "Y", "unknown", "unknown").
         const int grey = y >= 0 ? y : 0;
         m.r = m.g = m.b = grey;
         if (m.a < 0 && info.channels == 2)

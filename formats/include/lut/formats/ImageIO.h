@@ -100,9 +100,10 @@ LoadedImage readImage(const std::string& path, const std::string& format = {},
 // for the data in every message and its extension is what OpenImageIO is told, as a file's path
 // would be; the format is told from the bytes as for a file. The same plausibility rule, codecs
 // (OpenImageIO through its in-memory reader) and errors as readImage; nothing is written to or
-// read from disk. Empty bytes are refused ("NAME: is empty"). Known limit: OpenImageIO 2.4's GIF
-// reader cannot seek to its frames through the in-memory reader (a GIF reads from a file only,
-// as from standard input before).
+// read from disk, except for a format whose OpenImageIO reader opens files by name only (GIF,
+// SGI, FITS, HEIF ...: every one but TIFF, JPEG, OpenEXR, DPX, WebP, IFF, BMP, TGA, HDR, PSD,
+// which read through its in-memory reader): those get the bytes in a private temporary file.
+// Empty bytes are refused ("NAME: is empty").
 LoadedImage readImageMemory(std::string_view bytes, const std::string& name,
                             const std::string& format = {}, const Progress* progress = nullptr,
                             int subimage = kOnlyImage);
