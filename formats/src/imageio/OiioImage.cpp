@@ -233,8 +233,8 @@ void OiioSource::open(const SourceOpen& req) {
         // but open the file by name ("Could not open file stdin.gif").
         static const std::string kProxyReaders[] = {"tiff", "jpeg", "openexr", "png", "dpx", "webp",
                                                     "iff",  "bmp",  "targa",   "hdr", "psd", "pnm"};
-        if (std::find(std::begin(kProxyReaders), std::end(kProxyReaders), req.format) ==
-            std::end(kProxyReaders)) {
+        if (!req.format.empty() && std::find(std::begin(kProxyReaders), std::end(kProxyReaders),
+                                             req.format) == std::end(kProxyReaders)) {
             if (m_scratch.empty())
                 m_scratch = scratchFile(*req.memory, "." + req.format, m_scratchRegistration);
             name = m_scratch;
@@ -247,10 +247,17 @@ void OiioSource::open(const SourceOpen& req) {
     }
     m_in = OIIO::ImageInput::open(name, &config);
     if (!m_in) {
-        std::string err = oneLine(OIIO::geterror());
+        std::string err = withoutScratch(oneLine(OIIO::geterror()));
         throw Error(req.path + ": cannot read image: " +
                     (err.empty() ? "not an image OpenImageIO can read" : err));
     }
+}
+
+// OpenImageIO's messages name the file it opened: the caller's name stands for the bytes.
+std::string OiioSource::withoutScratch(std::string text) const {
+    for (std::size_t at; !m_scratch.empty() && (at = text.find(m_scratch)) != std::string::npos;)
+        text.replace(at, m_scratch.size(), m_path);
+    return text;
 }
 
 OiioSource::~OiioSource() {
@@ -283,7 +290,7 @@ void OiioSource::listParts() {
 }
 
 void OiioSource::fail(const std::string& what, bool ok) {
-    std::string err = oneLine(m_in->geterror());
+    std::string err = withoutScratch(oneLine(m_in->geterror()));
     if (err.empty())
         err = ok ? "the codec reported an error" : "truncated or corrupt";
     throw Error(m_path + ": " + what + ": " + err);

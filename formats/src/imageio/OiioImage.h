@@ -29,6 +29,7 @@ private:
         int mipLevel = 0;
     };
     void open(const SourceOpen& request);
+    std::string withoutScratch(std::string text) const;
     void listParts();
     [[noreturn]] void fail(const std::string& what, bool ok);
 
