@@ -209,13 +209,28 @@ std::string scratchFile(const std::string& bytes, const std::string& suffix,
 } // namespace
 
 OiioSource::OiioSource(const SourceOpen& req) : m_path(req.path) {
-    open(req);
-    listParts();
-    // OpenImageIO 2.4's WebP reader loses its frame iterator when asked for the frame after the
-    // last one (how listParts finds the end): every later read then failed with "Couldn't decode
-    // subimage 0", even for files oiiotool itself wrote. The reader starts afresh instead.
-    if (std::strcmp(m_in->format_name(), "webp") == 0)
+    try {
         open(req);
+        listParts();
+        // OpenImageIO 2.4's WebP reader loses its frame iterator when asked for the frame after
+        // the last one (how listParts finds the end): every later read then failed with
+        // "Couldn't decode subimage 0", even for files oiiotool itself wrote. The reader starts
+        // afresh instead.
+        if (std::strcmp(m_in->format_name(), "webp") == 0)
+            open(req);
+    } catch (...) {
+        removeScratch(); // no destructor runs for a constructor that throws
+        throw;
+    }
+}
+
+void OiioSource::removeScratch() noexcept {
+    m_in.reset();
+    if (!m_scratch.empty()) {
+        ::unlink(m_scratch.c_str());
+        m_scratchRegistration.release();
+        m_scratch.clear();
+    }
 }
 
 void OiioSource::open(const SourceOpen& req) {
@@ -261,11 +276,7 @@ std::string OiioSource::withoutScratch(std::string text) const {
 }
 
 OiioSource::~OiioSource() {
-    m_in.reset();
-    if (!m_scratch.empty()) {
-        ::unlink(m_scratch.c_str());
-        m_scratchRegistration.release();
-    }
+    removeScratch();
 }
 
 // Every image the file holds: subimage by subimage, each one's MIP levels. A PSD's subimages

@@ -30,6 +30,7 @@ private:
     };
     void open(const SourceOpen& request);
     std::string withoutScratch(std::string text) const;
+    void removeScratch() noexcept;
     void listParts();
     [[noreturn]] void fail(const std::string& what, bool ok);
 
