@@ -54,34 +54,47 @@ fi
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:allocator_may_return_null=1:${ASAN_OPTIONS:-}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:${UBSAN_OPTIONS:-}"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:${LSAN_OPTIONS:-}"
-failed=()
-for name in "${names[@]}"; do
-  bin="$build/bin/fuzz_$name"
-  [ -x "$bin" ] || { echo "fuzz: no $bin"; failed+=("$name(missing)"); continue; }
-  work="$build/corpus/$name"
-  findings="$build/findings/$name"
+# One fuzzer: its seeds, its run, one line (the log's tail when it found something). Exit status:
+# 0 clean, 1 a finding or no executable.
+fuzz_one() {
+  local name="$1" bin="$build/bin/fuzz_$1" work="$build/corpus/$1" findings="$build/findings/$1"
+  [ -x "$bin" ] || { echo "fuzz: no $bin"; return 1; }
   rm -rf "$work"
   mkdir -p "$work" "$findings"
   [ -d "$root/tests/fuzz/corpus/$name" ] && cp -r "$root/tests/fuzz/corpus/$name/." "$work/"
   [ -d "$root/tests/data/fuzz-regress/$name" ] && cp -r "$root/tests/data/fuzz-regress/$name/." "$work/"
+  local glob
   glob="$(seed_globs "$name")"
   if [ -n "$glob" ]; then
     # Small files only: a huge seed slows every mutation.
     find "$root/tests/data" -type f -name "$glob" -size -64k -not -path "*/fuzz-regress/*" \
       -exec sh -c 'for f; do cp "$f" "$0/$(echo "$f" | md5sum | cut -c1-16)"; done' "$work" {} +
   fi
-  echo "fuzz: $name for ${seconds}s on $(ls "$work" | wc -l) seeds"
-  log="$build/findings/$name.log"
-  if "$bin" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=65536 \
-       -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1; then
-    echo "fuzz: $name ok ($(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs)"
-  else
-    echo "fuzz: $name FOUND A PROBLEM; last lines of $log:"
-    tail -n 40 "$log"
-    failed+=("$name")
-  fi
+  local seeds log="$build/findings/$name.log" rc=0
+  seeds=$(ls "$work" | wc -l)
+  "$bin" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=65536 \
+    -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || rc=$?
   # Leftovers of findings-free runs are empty folders; keep only real findings.
   rmdir "$findings" 2>/dev/null || true
+  if [ $rc -eq 0 ]; then
+    echo "fuzz: $name ok, ${seconds} s from $seeds seeds ($(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs)"
+    return 0
+  fi
+  # One write, so a finding's lines are not interleaved with the other fuzzer's line.
+  printf '%s\n' "fuzz: $name FOUND A PROBLEM; last lines of $log:" "$(tail -n 40 "$log")"
+  return 1
+}
+
+# Each fuzzer is one thread: $jobs of them run at once.
+failed=()
+pids=()
+for name in "${names[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do sleep 1; done
+  fuzz_one "$name" &
+  pids+=($!)
+done
+for i in "${!pids[@]}"; do
+  wait "${pids[$i]}" || failed+=("${names[$i]}")
 done
 rm -rf /dev/shm/lutkit-fuzz-* 2>/dev/null || true
 
