@@ -1,17 +1,17 @@
 // The .cube format in the registry ("cube", extension ".cube"): the reader (CubeReader.cpp,
 // CubeParser.h), the writer (CubeWriter.cpp) and the validator (CubeValidator.cpp) live beside it.
+#include "EncodedFormat.h"
 #include "Formats.h"
 
 #include "lut/Limits.h"
 #include "lut/formats/Cube.h"
-#include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
 namespace lut::formats {
 
 namespace {
 
-class CubeFormat final : public Format {
+class CubeFormat final : public EncodedFormat {
 public:
     std::string name() const override { return "cube"; }
     std::string description() const override {
@@ -39,13 +39,6 @@ public:
         CubeReadOptions o;
         o.strict = options.strict;
         return parseCube(bytes, name, o);
-    }
-    Diagnostics write(const std::string& path, const LutFile& lut,
-                      const FormatOptions& options) const override {
-        Diagnostics d;
-        const std::string text = writeMemory(lut, path, options, &d);
-        writeFileAtomically(path, text);
-        return d;
     }
     // The text is made in memory (the editor's export preview asks for it at every adjustment).
     std::string writeMemory(const LutFile& lut, const std::string& name,

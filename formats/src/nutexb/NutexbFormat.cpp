@@ -8,12 +8,12 @@
 // from the attribute nutexb:name or color_grading_lut (lut/formats/Nutexb.h). A neutral 16^3 file
 // is byte-identical to the reference the game tools write (SHA-256 in nutexb.md, asserted in
 // tests).
+#include "EncodedFormat.h"
 #include "Formats.h"
 #include "LutPrep.h"
 #include "nutexb/NutexbCodec.h"
 
 #include "lut/Error.h"
-#include "lut/io/AtomicFile.h"
 #include "lut/io/InputFile.h"
 #include "lut/smash/SmashConstants.h"
 
@@ -21,7 +21,7 @@ namespace lut::formats {
 
 namespace {
 
-class NutexbFormat final : public Format {
+class NutexbFormat final : public EncodedFormat {
 public:
     std::string name() const override { return "nutexb"; }
     std::string description() const override {
@@ -47,13 +47,6 @@ public:
     // The header is a footer: any bytes may start a volume, up to a 256^3 one.
     std::uint64_t maxStreamBytes(std::string_view) const override { return nutexb::maxFileSize(); }
 
-    Diagnostics write(const std::string& path, const LutFile& file,
-                      const FormatOptions& options) const override {
-        Diagnostics diags;
-        const std::string bytes = writeMemory(file, path, options, &diags);
-        writeFileAtomically(path, bytes);
-        return diags;
-    }
     // The bytes are made in memory (the editor's export preview asks for them at every
     // adjustment).
     std::string writeMemory(const LutFile& file, const std::string& name,

@@ -13,13 +13,13 @@
 // writer (OCIO's Baker would resample them); .csp gets a prelut written by hand (CspWriter.cpp),
 // since the Baker derives its prelut from a colour space, never from a table it is given. Each
 // format also answers to OCIO's own name for it (ociobakelut --format cinespace, truelight ...).
+#include "EncodedFormat.h"
 #include "Formats.h"
 #include "ocio/CspWriter.h"
 #include "ocio/OcioLut3D.h"
 #include "ocio/OcioSession.h"
 
 #include "lut/Error.h"
-#include "lut/io/AtomicFile.h"
 #include "lut/ops/Resample.h"
 
 #include <optional>
@@ -44,7 +44,7 @@ OCIO::MatrixTransformRcPtr rangeMatrix(glm::vec3 lo, glm::vec3 hi) {
     return mt;
 }
 
-class OcioBakeFormat final : public Format {
+class OcioBakeFormat final : public EncodedFormat {
 public:
     enum class Shaper { None, Transforms, Csp };
     OcioBakeFormat(std::string name, std::string ocioName, std::string ext, std::string description,
@@ -65,13 +65,6 @@ public:
         throw Error(path + ": read it with the 'ocio' format");
     }
 
-    Diagnostics write(const std::string& path, const LutFile& file,
-                      const FormatOptions& options) const override {
-        Diagnostics diags;
-        const std::string bytes = writeMemory(file, path, options, &diags);
-        writeFileAtomically(path, bytes);
-        return diags;
-    }
     // Every writer makes its bytes in memory (OCIO's Baker and GroupTransform write to a
     // stream); write() puts them on disk atomically.
     std::string writeMemory(const LutFile& file, const std::string& path,

@@ -1,11 +1,11 @@
 // Sony Pictures Imageworks .spi3d: OCIO 2.1 reads it but its Baker cannot write it, so we
 // write it ourselves ("SPILUT 1.0", "3 3", "N N N", then one "r g b  R G B" line per lattice
 // point with its indices; no domain, no shaper) and read it back through OCIO like the rest.
+#include "EncodedFormat.h"
 #include "Formats.h"
 #include "LutPrep.h"
 
 #include "lut/Error.h"
-#include "lut/io/AtomicFile.h"
 
 #include <cstdio>
 
@@ -13,7 +13,7 @@ namespace lut::formats {
 
 namespace {
 
-class Spi3dFormat final : public Format {
+class Spi3dFormat final : public EncodedFormat {
 public:
     std::string name() const override { return "spi3d"; }
     std::string description() const override {
@@ -23,13 +23,6 @@ public:
     bool canRead() const override { return false; }
     LutFile read(const std::string& path, const FormatOptions&) const override {
         throw Error(path + ": read it with the 'ocio' format");
-    }
-    Diagnostics write(const std::string& path, const LutFile& file,
-                      const FormatOptions& options) const override {
-        Diagnostics diags;
-        const std::string text = writeMemory(file, path, options, &diags);
-        writeFileAtomically(path, text);
-        return diags;
     }
     std::string writeMemory(const LutFile& file, const std::string& path,
                             const FormatOptions& options, Diagnostics* diagnostics) const override {
