@@ -2,7 +2,6 @@
 
 #include "Document.h"
 #include "FileActions.h"
-#include "MainWindow.h"
 #include "PlotDialog.h"
 #include "PreviewFrame.h"
 
@@ -113,8 +112,8 @@ QString comparisonText(const Comparison& c) {
     return t;
 }
 
-CompareDialog::CompareDialog(MainWindow* window, Comparison comparison)
-    : QDialog(window), m_window(window), m_comparison(std::move(comparison)) {
+CompareDialog::CompareDialog(QWidget* parent, Comparison comparison, FileActions* files)
+    : QDialog(parent), m_comparison(std::move(comparison)), m_files(files) {
     setWindowTitle(tr("Compare with %1").arg(QFileInfo(m_comparison.otherPath).fileName()));
     auto* layout = new QVBoxLayout(this);
     auto* text = new QPlainTextEdit(reportText(), this);
@@ -142,7 +141,7 @@ CompareDialog::CompareDialog(MainWindow* window, Comparison comparison)
             QFileDialog::getSaveFileName(this, tr("Save Heat Map"), QStringLiteral("heatmap.png"),
                                          tr("PNG pictures (*.png);;All files (*)"));
         if (!path.isEmpty()) // the file dialog asked before replacing
-            m_window->fileActions()->savePicture(path, m_comparison.heat.image, true);
+            m_files->savePicture(path, m_comparison.heat.image, true);
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);

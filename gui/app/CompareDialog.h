@@ -18,7 +18,7 @@
 namespace lut::gui {
 
 class Document;
-class MainWindow;
+class FileActions;
 
 struct Comparison {
     QString otherPath;
@@ -51,13 +51,14 @@ QString comparisonText(const Comparison& c);
 class CompareDialog : public QDialog {
     Q_OBJECT
 public:
-    CompareDialog(MainWindow* window, Comparison comparison);
+    // Save Heat Map writes through `files`.
+    CompareDialog(QWidget* parent, Comparison comparison, FileActions* files);
 
     QString reportText() const;
 
 private:
-    MainWindow* m_window;
     Comparison m_comparison;
+    FileActions* m_files;
 };
 
 } // namespace lut::gui

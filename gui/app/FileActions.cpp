@@ -5,9 +5,9 @@
 #include "ErrorText.h"
 #include "ExportDialog.h"
 #include "FileLoader.h"
-#include "MainWindow.h"
 #include "OpenLutQuestion.h"
 #include "PreviewController.h"
+#include "Prompts.h"
 #include "RecentFiles.h"
 #include "TaskStatus.h"
 
@@ -25,7 +25,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
-#include <QStatusBar>
 
 #include <cstdio>
 
@@ -42,17 +41,18 @@ QString human(const std::exception& e) {
 
 } // namespace
 
-FileActions::FileActions(MainWindow* window)
-    : QObject(window), m_window(window), m_loader(new FileLoader(this)),
+FileActions::FileActions(const EditorContext& context, QObject* parent)
+    : QObject(parent), m_doc(context.document), m_preview(context.preview),
+      m_prompts(context.prompts), m_loader(new FileLoader(this)),
       m_saveTask(new BackgroundTask(this)) {
     connect(m_loader, &FileLoader::imageLoaded, this,
             [this](const QString& path, std::shared_ptr<formats::LoadedImage> image) {
                 m_lastDone = path;
                 m_lastOk = false;
                 try {
-                    m_window->document()->adoptImage(std::move(*image), path);
+                    m_doc->adoptImage(std::move(*image), path);
                 } catch (const std::exception& e) {
-                    m_window->reportError(tr("Cannot open image"), human(e));
+                    m_prompts->reportError(tr("Cannot open image"), human(e));
                     return;
                 }
                 m_lastOk = true;
@@ -74,29 +74,30 @@ FileActions::FileActions(MainWindow* window)
                 }
                 QStringList notes;
                 try {
-                    notes = m_window->document()->adoptLut(*file, path, answer);
+                    notes = m_doc->adoptLut(*file, path, answer);
                 } catch (const std::exception& e) {
-                    m_window->reportError(tr("Cannot open LUT"), human(e));
+                    m_prompts->reportError(tr("Cannot open LUT"), human(e));
                     return;
                 }
                 m_lastOk = true;
-                m_window->showNotes(notes);
+                m_prompts->showNotes(notes);
                 addRecent(kRecentLutsKey, path);
             });
     connect(m_loader, &FileLoader::failed, this,
             [this](const QString& path, const QString& message, bool isLut) {
                 m_lastDone = path;
                 m_lastOk = false;
-                m_window->reportError(
+                m_prompts->reportError(
                     isLut ? tr("Cannot open LUT") : tr("Cannot open image"),
                     QString::fromStdString(humanErrorText(message.toStdString())));
             });
-    connect(m_loader, &FileLoader::busyChanged, m_window,
-            [this](bool busy) { m_window->setLoading(busy); });
-    connect(m_loader, &FileLoader::progressChanged, m_window->loadingStatus(),
+    connect(m_loader, &FileLoader::busyChanged, this,
+            [this](bool busy) { m_prompts->setLoading(busy); });
+    connect(m_loader, &FileLoader::progressChanged, m_prompts->loadingStatus(),
             &TaskStatus::setFraction);
-    connect(m_window->loadingStatus(), &TaskStatus::cancelRequested, m_loader, &FileLoader::cancel);
-    m_window->watchTask(m_saveTask, QStringLiteral("task.savePreview"));
+    connect(m_prompts->loadingStatus(), &TaskStatus::cancelRequested, m_loader,
+            &FileLoader::cancel);
+    m_prompts->watchTask(m_saveTask, QStringLiteral("task.savePreview"));
 }
 
 QString FileActions::imageFilter() {
@@ -120,7 +121,7 @@ QString FileActions::lutFilter() {
 }
 
 void FileActions::showStatus(const QString& message) {
-    m_window->statusBar()->showMessage(message, 5000);
+    m_prompts->showStatus(message);
 }
 
 // ---- recent files ---------------------------------------------------------------------------
@@ -132,7 +133,7 @@ void FileActions::setRecentMenus(QMenu* images, QMenu* luts) {
 }
 
 void FileActions::addRecent(const char* key, const QString& path) {
-    if (!m_window->interactiveErrors())
+    if (!m_prompts->interactive())
         return; // headless runs (tests, --screenshot) leave settings alone
     QSettings settings;
     settings.setValue(key, addRecentFile(settings.value(key).toStringList(), path));
@@ -184,12 +185,12 @@ void FileActions::rememberPurpose(const QString& path, LutPurpose purpose) {
 
 std::optional<LutPurpose> FileActions::purposeFor(const QString& path, bool* cancelled) {
     *cancelled = false;
-    if (const auto p = m_window->lutPurposeAnswer()) // said on the command line, by a script
+    if (const auto p = m_prompts->lutPurposeAnswer()) // said on the command line, by a script
         return p;
-    if (m_window->interactiveErrors())
+    if (m_prompts->interactive())
         if (const auto p = rememberedPurpose(path))
             return p;
-    if (!m_window->interactiveErrors())
+    if (!m_prompts->interactive())
         return std::nullopt; // headless: taken as an edit, with a note
     // As Open LUT asks a strip's layout: once, and the answer is kept for this file.
     QMessageBox box(QMessageBox::Question, tr("What is this LUT for?"),
@@ -199,7 +200,7 @@ std::optional<LutPurpose> FileActions::purposeFor(const QString& path, bool* can
                        "color_grading_lut.nutexb: Smush-LUT's output, a .nutexb converted to a "
                        "strip)?\n\nThe game's LUT is not compensated again when exported.")
                         .arg(QFileInfo(path).fileName()),
-                    QMessageBox::NoButton, m_window);
+                    QMessageBox::NoButton, m_prompts->dialogParent());
     QPushButton* edit = box.addButton(tr("An Edit (the Look)"), QMessageBox::AcceptRole);
     QPushButton* game = box.addButton(tr("The Game's LUT"), QMessageBox::AcceptRole);
     QPushButton* cancel = box.addButton(QMessageBox::Cancel);
@@ -220,7 +221,7 @@ std::optional<LutPurpose> FileActions::purposeFor(const QString& path, bool* can
 // ---- opening --------------------------------------------------------------------------------
 
 bool FileActions::startOpenImage(const QString& path) {
-    m_window->setLoadingText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    m_prompts->setLoadingText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
     m_loader->loadImage(path);
     return true;
 }
@@ -228,7 +229,7 @@ bool FileActions::startOpenImage(const QString& path) {
 bool FileActions::startOpenLut(const QString& path, const FormatOptions& options) {
     if (!maybeSave())
         return false;
-    m_window->setLoadingText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    m_prompts->setLoadingText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
     m_loader->loadLut(path, options);
     return true;
 }
@@ -252,25 +253,25 @@ bool FileActions::openScreenshotLut(const QString& path) {
         return false;
     QStringList notes;
     try {
-        notes = m_window->document()->startFromScreenshot(path);
+        notes = m_doc->startFromScreenshot(path);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot extract a LUT"), human(e));
+        m_prompts->reportError(tr("Cannot extract a LUT"), human(e));
         return false;
     }
-    m_window->showNotes(notes);
+    m_prompts->showNotes(notes);
     return true;
 }
 
 void FileActions::newNeutral(int size) {
     if (!maybeSave())
         return;
-    m_window->document()->newNeutral(size);
+    m_doc->newNeutral(size);
 }
 
 // ---- writing --------------------------------------------------------------------------------
 
 bool FileActions::confirmReplace(const QString& path, bool original) {
-    if (!m_window->interactiveErrors())
+    if (!m_prompts->interactive())
         return false; // headless: an existing file is replaced only when told (overwrite)
     // The full path: one name (color_grading_lut.nutexb) is every stage's LUT, so the folder is
     // what tells them apart.
@@ -279,7 +280,7 @@ bool FileActions::confirmReplace(const QString& path, bool original) {
         QMessageBox::Warning, tr("Replace file?"),
         original ? tr("%1 is the LUT you opened. Replace it? The original is lost.").arg(where)
                  : tr("%1 already exists. Replace it?").arg(where),
-        QMessageBox::NoButton, m_window);
+        QMessageBox::NoButton, m_prompts->dialogParent());
     box.setInformativeText(tr("Keep the file to choose another name."));
     QPushButton* replace = box.addButton(tr("Replace"), QMessageBox::DestructiveRole);
     QPushButton* keep = box.addButton(tr("Keep the file"), QMessageBox::RejectRole);
@@ -290,7 +291,7 @@ bool FileActions::confirmReplace(const QString& path, bool original) {
 }
 
 bool FileActions::isOpenedLut(const QString& path) const {
-    const QString opened = m_window->document()->lutPath();
+    const QString opened = m_doc->lutPath();
     return !opened.isEmpty() &&
            QFileInfo(path).absoluteFilePath() == QFileInfo(opened).absoluteFilePath();
 }
@@ -299,23 +300,22 @@ bool FileActions::exportLut(const QString& path, const QString& format,
                             const FormatOptions& options, ExportTarget target, bool overwrite,
                             const StrengthOptions& strength) {
     if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, isOpenedLut(path))) {
-        m_window->reportError(
+        m_prompts->reportError(
             tr("Export"), tr("%1 exists and was not replaced.")
                               .arg(QDir::toNativeSeparators(QFileInfo(path).absoluteFilePath())));
         return false;
     }
     try {
         QDir().mkpath(QFileInfo(path).absolutePath()); // the "edited" folder beside an original
-        const Diagnostics d =
-            m_window->document()->exportLut(path, format, options, target, strength);
+        const Diagnostics d = m_doc->exportLut(path, format, options, target, strength);
         QStringList lines;
         for (const auto& x : d)
             lines << QString::fromStdString(x.str());
-        lines << m_window->checkWarnings(target); // lutkit check's failing checks, if any
+        lines << m_prompts->checkWarnings(target); // lutkit check's failing checks, if any
         showStatus(tr("Exported %1").arg(QDir::toNativeSeparators(path)));
-        m_window->showNotes(lines);
+        m_prompts->showNotes(lines);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Export failed"), human(e));
+        m_prompts->reportError(tr("Export failed"), human(e));
         return false;
     }
     return true;
@@ -323,9 +323,9 @@ bool FileActions::exportLut(const QString& path, const QString& format,
 
 bool FileActions::saveAs(const QString& path) {
     try {
-        m_window->document()->saveAs(path);
+        m_doc->saveAs(path);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Save failed"), human(e));
+        m_prompts->reportError(tr("Save failed"), human(e));
         return false;
     }
     addRecent(kRecentLutsKey, path);
@@ -334,7 +334,7 @@ bool FileActions::saveAs(const QString& path) {
 }
 
 bool FileActions::save() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     const QString path = doc->lutPath();
     bool writable = false;
     if (!path.isEmpty()) {
@@ -346,8 +346,7 @@ bool FileActions::save() {
         return !doc->isModified();
     }
     // The first save over the file the user opened asks: it replaces their original.
-    if (doc->savingReplacesOriginal() && m_window->interactiveErrors() &&
-        !confirmReplace(path, true)) {
+    if (doc->savingReplacesOriginal() && m_prompts->interactive() && !confirmReplace(path, true)) {
         saveAsDialog();
         return !doc->isModified();
     }
@@ -355,15 +354,15 @@ bool FileActions::save() {
 }
 
 bool FileActions::startSavePreview(const QString& path) {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     if (!doc->hasImage()) {
-        m_window->reportError(tr("Save preview image"), tr("No image is open."));
+        m_prompts->reportError(tr("Save preview image"), tr("No image is open."));
         return false;
     }
     // Rendered (unless the current frame is the full-resolution preview) and written on a
     // worker: a 4K picture takes seconds to encode and check. The window stays live, the status
     // bar shows the progress with Cancel; a cancelled write leaves any old file as it was.
-    const PreviewController* preview = m_window->preview();
+    const PreviewController* preview = m_preview;
     const double renderShare = preview->hasFullResolutionFrame() ? 0.0 : 0.4;
     m_saveTask->start(
         tr("Saving %1…").arg(QFileInfo(path).fileName()),
@@ -380,8 +379,8 @@ bool FileActions::startSavePreview(const QString& path) {
             });
         },
         [this](const QString& message) {
-            m_window->reportError(tr("Cannot save the preview"),
-                                  QString::fromStdString(humanErrorText(message.toStdString())));
+            m_prompts->reportError(tr("Cannot save the preview"),
+                                   QString::fromStdString(humanErrorText(message.toStdString())));
         });
     return true;
 }
@@ -395,9 +394,9 @@ bool FileActions::savePreviewImage(const QString& path) {
 
 bool FileActions::savePicture(const QString& path, const Image& image, bool overwrite) {
     if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, false)) {
-        m_window->reportError(tr("Save picture"), tr("%1 exists and was not replaced.")
-                                                      .arg(QDir::toNativeSeparators(
-                                                          QFileInfo(path).absoluteFilePath())));
+        m_prompts->reportError(tr("Save picture"), tr("%1 exists and was not replaced.")
+                                                       .arg(QDir::toNativeSeparators(
+                                                           QFileInfo(path).absoluteFilePath())));
         return false;
     }
     try {
@@ -406,7 +405,7 @@ bool FileActions::savePicture(const QString& path, const Image& image, bool over
         o.alpha = false;
         formats::writeImage(path.toStdString(), image, o);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot save the picture"), human(e));
+        m_prompts->reportError(tr("Cannot save the picture"), human(e));
         return false;
     }
     showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()));
@@ -415,9 +414,9 @@ bool FileActions::savePicture(const QString& path, const Image& image, bool over
 
 bool FileActions::saveAdjustments(const QString& path) {
     try {
-        m_window->document()->saveAdjustmentList(path);
+        m_doc->saveAdjustmentList(path);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot save the adjustments"), human(e));
+        m_prompts->reportError(tr("Cannot save the adjustments"), human(e));
         return false;
     }
     showStatus(tr("Saved adjustments %1").arg(QFileInfo(path).fileName()));
@@ -426,26 +425,26 @@ bool FileActions::saveAdjustments(const QString& path) {
 
 bool FileActions::loadAdjustments(const QString& path) {
     try {
-        m_window->document()->loadAdjustmentList(path);
+        m_doc->loadAdjustmentList(path);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot load the adjustments"), human(e));
+        m_prompts->reportError(tr("Cannot load the adjustments"), human(e));
         return false;
     }
     return true;
 }
 
 bool FileActions::maybeSave() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     if (!doc->isModified())
         return true;
-    if (!m_window->interactiveErrors())
+    if (!m_prompts->interactive())
         return true; // headless: never block on a question
     // No default that loses anything: Cancel is the default (and Escape); saving over the
     // opened original is not offered here (Save As is), unless it was replaced already.
     const bool canSave = !doc->lutPath().isEmpty() && !doc->savingReplacesOriginal();
     QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
                     tr("The LUT \"%1\" has unsaved changes.").arg(doc->displayName()),
-                    QMessageBox::NoButton, m_window);
+                    QMessageBox::NoButton, m_prompts->dialogParent());
     box.setInformativeText(canSave ? tr("Save them, discard them, or go back?")
                                    : tr("Save them to a new file, discard them, or go back?"));
     QPushButton* save =
@@ -469,21 +468,21 @@ bool FileActions::maybeSave() {
 // ---- dialogs --------------------------------------------------------------------------------
 
 void FileActions::openImageDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(m_window, tr("Open Image"), QString(), imageFilter());
+    const QString path = QFileDialog::getOpenFileName(m_prompts->dialogParent(), tr("Open Image"),
+                                                      QString(), imageFilter());
     if (!path.isEmpty())
         startOpenImage(path);
 }
 
 void FileActions::openLutDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(m_window, tr("Open LUT"), QString(), lutFilter());
+    const QString path = QFileDialog::getOpenFileName(m_prompts->dialogParent(), tr("Open LUT"),
+                                                      QString(), lutFilter());
     if (!path.isEmpty())
         openLutAsking(path);
 }
 
 bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
-    if (!m_window->interactiveErrors() || !stripLayoutIsAmbiguous(path))
+    if (!m_prompts->interactive() || !stripLayoutIsAmbiguous(path))
         return true;
     // A 256x16 picture fits several strip layouts: detection usually knows, the user may not
     // agree (a heavy grade can fool it). What it is for, when nothing says, is asked in the same
@@ -498,8 +497,9 @@ bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
     } catch (const std::exception&) {
         // unreadable: the read that follows says why
     }
-    const bool askPurpose = !says && !m_window->lutPurposeAnswer() && !rememberedPurpose(path);
-    const auto answer = askOpenLut(m_window, QFileInfo(path).fileName(), items, askPurpose);
+    const bool askPurpose = !says && !m_prompts->lutPurposeAnswer() && !rememberedPurpose(path);
+    const auto answer =
+        askOpenLut(m_prompts->dialogParent(), QFileInfo(path).fileName(), items, askPurpose);
     if (!answer)
         return false;
     options.layout = parseOptionalLayout(answer->layout == items[0] ? std::string()
@@ -517,33 +517,33 @@ bool FileActions::openLutAsking(const QString& path) {
 }
 
 void FileActions::openScreenshotDialog() {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("LUT from Edited Screenshot"),
-                                                      QString(), imageFilter());
+    const QString path = QFileDialog::getOpenFileName(
+        m_prompts->dialogParent(), tr("LUT from Edited Screenshot"), QString(), imageFilter());
     if (!path.isEmpty())
         openScreenshotLut(path);
 }
 
 void FileActions::saveAsDialog() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     QString base = doc->lutPath();
     if (base.isEmpty())
         base = doc->hasImage() ? QFileInfo(doc->imagePath()).absolutePath() + QStringLiteral("/") +
                                      QFileInfo(doc->imagePath()).completeBaseName() +
                                      QStringLiteral("_grade.cube")
                                : QStringLiteral("grade.cube");
-    const QString path = QFileDialog::getSaveFileName(m_window, tr("Save LUT"), base,
-                                                      tr("Cube LUT (*.cube);;All files (*)"));
+    const QString path = QFileDialog::getSaveFileName(m_prompts->dialogParent(), tr("Save LUT"),
+                                                      base, tr("Cube LUT (*.cube);;All files (*)"));
     if (!path.isEmpty())
         saveAs(path); // the file dialog asked before replacing
 }
 
 void FileActions::exportDialog() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     ExportNameInput naming;
     naming.lutPath = doc->lutPath();
     naming.imagePath = doc->imagePath();
     naming.fallbackFolder = QDir::homePath();
-    ExportDialog dlg(m_window->preview()->options().target, naming, m_window);
+    ExportDialog dlg(m_preview->options().target, naming, m_prompts->dialogParent());
     // "Keep the file" in the replace question returns here, with every setting as it was, to
     // choose another name or folder.
     while (dlg.exec() == QDialog::Accepted && !dlg.path().isEmpty()) {
@@ -558,36 +558,38 @@ void FileActions::exportDialog() {
 }
 
 void FileActions::savePreviewDialog() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     if (!doc->hasImage()) {
-        m_window->reportError(tr("Save preview image"), tr("Open an image first."));
+        m_prompts->reportError(tr("Save preview image"), tr("Open an image first."));
         return;
     }
     const QString base = QFileInfo(doc->imagePath()).path() + '/' +
                          QFileInfo(doc->imagePath()).completeBaseName() +
                          QStringLiteral("_preview.png");
-    const QString path =
-        QFileDialog::getSaveFileName(m_window, tr("Save Preview Image"), base, imageFilter());
+    const QString path = QFileDialog::getSaveFileName(
+        m_prompts->dialogParent(), tr("Save Preview Image"), base, imageFilter());
     if (!path.isEmpty())
         savePreviewImage(path);
 }
 
 void FileActions::saveAdjustmentsDialog() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     const QString from = !doc->lutPath().isEmpty() ? doc->lutPath() : doc->imagePath();
     const QString base = from.isEmpty() ? QStringLiteral("adjustments.txt")
                                         : QFileInfo(from).absolutePath() + '/' +
                                               QFileInfo(from).completeBaseName() +
                                               QStringLiteral("_adjustments.txt");
-    const QString path = QFileDialog::getSaveFileName(
-        m_window, tr("Save Adjustments"), base, tr("Adjustment lists (*.txt);;All files (*)"));
+    const QString path =
+        QFileDialog::getSaveFileName(m_prompts->dialogParent(), tr("Save Adjustments"), base,
+                                     tr("Adjustment lists (*.txt);;All files (*)"));
     if (!path.isEmpty())
         saveAdjustments(path);
 }
 
 void FileActions::loadAdjustmentsDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        m_window, tr("Load Adjustments"), QString(), tr("Adjustment lists (*.txt);;All files (*)"));
+    const QString path =
+        QFileDialog::getOpenFileName(m_prompts->dialogParent(), tr("Load Adjustments"), QString(),
+                                     tr("Adjustment lists (*.txt);;All files (*)"));
     if (!path.isEmpty())
         loadAdjustments(path);
 }

@@ -7,7 +7,8 @@
 // Pictures and LUTs are read on a worker (FileLoader): start* returns at once with a progress
 // indicator in the status bar, and the document takes the file when it arrives; the other forms
 // wait for it (processing events) and say whether it worked. Each operation reports its error
-// through the window (dialog, or stderr when headless) and leaves the document as it was.
+// through the prompts (Prompts.h: a dialog, or stderr when headless) and leaves the document as it
+// was.
 #include "ExportTarget.h"
 
 #include "lut/Image.h"
@@ -25,13 +26,17 @@ class QMenu;
 namespace lut::gui {
 
 class BackgroundTask;
+class Document;
 class FileLoader;
-class MainWindow;
+class PreviewController;
+class Prompts;
+struct EditorContext;
 
 class FileActions : public QObject {
     Q_OBJECT
 public:
-    explicit FileActions(MainWindow* window);
+    // Works on the context's document and preview; asks and reports through its prompts.
+    FileActions(const EditorContext& context, QObject* parent);
 
     FileLoader* loader() const { return m_loader; }
     // Reading on the worker; false when nothing started (the user kept unsaved changes).
@@ -107,7 +112,9 @@ private:
     void updateRecentMenus();
     void showStatus(const QString& message);
 
-    MainWindow* m_window;
+    Document* m_doc;
+    PreviewController* m_preview;
+    Prompts* m_prompts;
     FileLoader* m_loader;
     BackgroundTask* m_saveTask;
     QMenu* m_recentImages = nullptr;

@@ -57,8 +57,10 @@ MainWindow::MainWindow(QWidget* parent)
     buildCentre();
     buildDocks();
     m_loading = new TaskStatus(QStringLiteral("loading"), this); // FileActions connects to it
-    m_files = new FileActions(this);
-    m_actions = new WindowActions(this); // after the docks: the View menu lists them
+    const EditorContext context{m_doc, m_preview, this};
+    m_files = new FileActions(context, this);
+    // After the docks: the View menu lists them.
+    m_actions = new WindowActions(this, context, m_files, m_view);
     buildStatusBar();
     // Ctrl+Z, Ctrl+E... from any widget, a spin box being typed in included.
     qApp->installEventFilter(new ShortcutGuard(this));
@@ -257,6 +259,10 @@ void MainWindow::showNotes(const QStringList& notes) {
 
 QString MainWindow::notesText() const {
     return m_notesBar->isHidden() ? QString() : m_notesLabel->text();
+}
+
+void MainWindow::showStatus(const QString& message) {
+    statusBar()->showMessage(message, 5000);
 }
 
 void MainWindow::setLoading(bool busy) {

@@ -3,8 +3,10 @@
 // scopes / history docks, status bar. The state lives in the model (Document: the LUT and the
 // picture; PreviewController: the preview and the target's export); the window lays out the
 // widgets and wires them to the model. Menus and toolbars are WindowActions, opening and writing
-// files is FileActions.
+// files is FileActions; both work on the model and ask and report through the window's Prompts
+// (Prompts.h), never through the window itself.
 #include "PreviewController.h"
+#include "Prompts.h"
 
 #include "lut/LutPurpose.h"
 #include "lut/io/Format.h"
@@ -37,7 +39,7 @@ class ScopesView;
 class WheelsPanel;
 class WindowActions;
 
-class MainWindow : public QMainWindow {
+class MainWindow : public QMainWindow, public Prompts {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
@@ -56,31 +58,35 @@ public:
     CheckPanel* checkPanel() const { return m_check; }
     // The failing checks of the LUT the preview's target exports (lutkit check), one line each:
     // what an export of that target warns about.
-    QStringList checkWarnings(ExportTarget target) const;
+    QStringList checkWarnings(ExportTarget target) const override;
 
     // false: errors go to stderr and lastError() instead of a dialog, no question is asked and
     // no setting is written (tests, --screenshot, --save-preview, scripts).
     void setInteractiveErrors(bool on) { m_interactiveErrors = on; }
     bool interactiveErrors() const { return m_interactiveErrors; }
+    // Prompts: the window answers for its actions.
+    bool interactive() const override { return m_interactiveErrors; }
+    QWidget* dialogParent() override { return this; }
+    void showStatus(const QString& message) override;
     QString lastError() const { return m_lastError; }
     // What a LUT file that does not say what it is for is taken for, without asking
     // (lutkit-editor --lut-target, the script command lut-target); nullopt: ask (interactive),
     // else take it as an edit.
     void setLutPurposeAnswer(std::optional<LutPurpose> answer) { m_purposeAnswer = answer; }
-    std::optional<LutPurpose> lutPurposeAnswer() const { return m_purposeAnswer; }
+    std::optional<LutPurpose> lutPurposeAnswer() const override { return m_purposeAnswer; }
     // Shows (dialog or stderr) and remembers an error.
-    void reportError(const QString& title, const QString& message);
+    void reportError(const QString& title, const QString& message) override;
     // Shows what a reader or writer noted (the notes bar; stderr when headless).
-    void showNotes(const QStringList& notes);
+    void showNotes(const QStringList& notes) override;
     QString notesText() const;
     void setVerbose(bool on) { m_verbose = on; }
     // The status bar's progress indicator while files load on the worker (with Cancel).
-    void setLoading(bool busy);
-    void setLoadingText(const QString& text);
+    void setLoading(bool busy) override;
+    void setLoadingText(const QString& text) override;
     bool isLoading() const;
     // Shows a long task in the status bar while it runs: its label, progress and Cancel.
-    TaskStatus* watchTask(BackgroundTask* task, const QString& name);
-    TaskStatus* loadingStatus() const { return m_loading; }
+    TaskStatus* watchTask(BackgroundTask* task, const QString& name) override;
+    TaskStatus* loadingStatus() const override { return m_loading; }
     // Processes events until the file reads in flight are done and adopted.
     void waitForLoads();
 

@@ -2,8 +2,8 @@
 
 #include "Document.h"
 #include "ErrorText.h"
-#include "MainWindow.h"
 #include "PreviewController.h"
+#include "Prompts.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -29,8 +29,10 @@ QSlider* amountSlider(QWidget* parent, const char* name, int value) {
 
 } // namespace
 
-MatchDialog::MatchDialog(MainWindow* window, std::unique_ptr<MatchSession> session)
-    : QDialog(window), m_window(window), m_session(std::move(session)) {
+MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
+                         std::unique_ptr<MatchSession> session)
+    : QDialog(parent), m_doc(context.document), m_preview(context.preview),
+      m_prompts(context.prompts), m_session(std::move(session)) {
     setWindowTitle(tr("Match to Reference"));
     setObjectName("matchDialog");
     auto* layout = new QVBoxLayout(this);
@@ -65,13 +67,13 @@ MatchDialog::MatchDialog(MainWindow* window, std::unique_ptr<MatchSession> sessi
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, [this] {
         try {
-            m_window->document()->startFrom(
+            m_doc->startFrom(
                 m_session->table(),
                 tr("matched to %1").arg(QFileInfo(m_session->referencePath()).fileName()));
             accept();
         } catch (const std::exception& e) {
-            m_window->reportError(tr("Cannot match"),
-                                  QString::fromStdString(humanErrorText(e.what())));
+            m_prompts->reportError(tr("Cannot match"),
+                                   QString::fromStdString(humanErrorText(e.what())));
         }
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &MatchDialog::reject);
@@ -105,14 +107,15 @@ void MatchDialog::apply() {
     try {
         LutSource source;
         source.effective = std::make_shared<const Lut3D>(m_session->table());
-        m_window->preview()->setSource(source);
+        m_preview->setSource(source);
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot match"), QString::fromStdString(humanErrorText(e.what())));
+        m_prompts->reportError(tr("Cannot match"),
+                               QString::fromStdString(humanErrorText(e.what())));
     }
 }
 
 void MatchDialog::reject() {
-    m_window->preview()->setSource(m_window->document()->lutSource());
+    m_preview->setSource(m_doc->lutSource());
     QDialog::reject();
 }
 

@@ -15,13 +15,18 @@ class QSlider;
 
 namespace lut::gui {
 
-class MainWindow;
+class Document;
+class PreviewController;
+class Prompts;
+struct EditorContext;
 
 class MatchDialog : public QDialog {
     Q_OBJECT
 public:
-    // Takes the fitted session; shows its result in the window at once.
-    MatchDialog(MainWindow* window, std::unique_ptr<MatchSession> session);
+    // Takes the fitted session; shows its result in the context's preview at once, bakes it into
+    // the context's document on OK, and reports errors through its prompts.
+    MatchDialog(QWidget* parent, const EditorContext& context,
+                std::unique_ptr<MatchSession> session);
 
     const MatchSession& session() const { return *m_session; }
 
@@ -31,7 +36,9 @@ public slots:
 private:
     void apply(); // the sliders' options, baked into the document's LUT
 
-    MainWindow* m_window;
+    Document* m_doc;
+    PreviewController* m_preview;
+    Prompts* m_prompts;
     std::unique_ptr<MatchSession> m_session;
     QSlider* m_strength = nullptr;
     QSlider* m_luma = nullptr;

@@ -2,8 +2,6 @@
 
 #include "Document.h"
 #include "FileActions.h"
-#include "MainWindow.h"
-#include "PreviewController.h"
 #include "PreviewFrame.h"
 
 #include "lut/ops/Plot.h"
@@ -27,12 +25,12 @@ Image plotExportedLut(const Document& doc, ExportTarget target) {
     return plotLut(*exportedLut(doc, target)).image;
 }
 
-PlotDialog::PlotDialog(MainWindow* window)
-    : QDialog(window), m_window(window),
-      m_plot(plotExportedLut(*window->document(), window->preview()->options().target)),
+PlotDialog::PlotDialog(QWidget* parent, const Document& doc, ExportTarget target,
+                       FileActions* files)
+    : QDialog(parent), m_doc(doc), m_files(files), m_plot(plotExportedLut(doc, target)),
       m_picture(toDisplayImage(m_plot)) {
-    const ExportTargetInfo& t = exportTargetInfo(window->preview()->options().target);
-    setWindowTitle(tr("Plot LUT: %1").arg(window->document()->displayName()));
+    const ExportTargetInfo& t = exportTargetInfo(target);
+    setWindowTitle(tr("Plot LUT: %1").arg(doc.displayName()));
     auto* layout = new QVBoxLayout(this);
     auto* caption = new QLabel(
         tr("The %1 export (%2): curves along the neutral axis, slices at blue 0, 0.5 and 1, the "
@@ -73,8 +71,7 @@ void PlotDialog::showScaled() {
 }
 
 void PlotDialog::savePng() {
-    Document* doc = m_window->document();
-    const QString from = !doc->lutPath().isEmpty() ? doc->lutPath() : doc->imagePath();
+    const QString from = !m_doc.lutPath().isEmpty() ? m_doc.lutPath() : m_doc.imagePath();
     const QString base = from.isEmpty()
                              ? QStringLiteral("plot.png")
                              : QFileInfo(from).absolutePath() + '/' +
@@ -82,7 +79,7 @@ void PlotDialog::savePng() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save Plot"), base,
                                                       tr("PNG pictures (*.png);;All files (*)"));
     if (!path.isEmpty())
-        m_window->fileActions()->savePicture(path, m_plot, true); // the file dialog asked
+        m_files->savePicture(path, m_plot, true); // the file dialog asked
 }
 
 } // namespace lut::gui

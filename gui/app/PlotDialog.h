@@ -17,7 +17,7 @@ class QLabel;
 namespace lut::gui {
 
 class Document;
-class MainWindow;
+class FileActions;
 
 // The table the default export for `target` gives (what the file holds); throws lut::Error.
 std::shared_ptr<const Lut3D> exportedLut(const Document& doc, ExportTarget target);
@@ -27,8 +27,9 @@ Image plotExportedLut(const Document& doc, ExportTarget target);
 class PlotDialog : public QDialog {
     Q_OBJECT
 public:
-    // Plots the window's document for the window's target (throws lut::Error).
-    explicit PlotDialog(MainWindow* window);
+    // Plots what `doc` exports for `target` (throws lut::Error); Save PNG writes through
+    // `files`.
+    PlotDialog(QWidget* parent, const Document& doc, ExportTarget target, FileActions* files);
 
     const Image& plot() const { return m_plot; }
 
@@ -39,7 +40,8 @@ private:
     void showScaled();
     void savePng();
 
-    MainWindow* m_window;
+    const Document& m_doc;
+    FileActions* m_files;
     Image m_plot;
     QImage m_picture;
     QLabel* m_view = nullptr;

@@ -5,11 +5,11 @@
 #include "Document.h"
 #include "ErrorText.h"
 #include "FileActions.h"
-#include "MainWindow.h"
 #include "MatchDialog.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
 #include "PreviewView.h"
+#include "Prompts.h"
 
 #include "lut/interp/Sampler.h"
 #include "lut/io/BuiltinLut.h"
@@ -22,6 +22,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMainWindow>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
@@ -66,9 +67,12 @@ void setItemEnabled(QComboBox* box, int index, bool on) {
 
 } // namespace
 
-WindowActions::WindowActions(MainWindow* window)
-    : QObject(window), m_window(window), m_compareTask(new BackgroundTask(this)) {
-    m_window->watchTask(m_compareTask, QStringLiteral("task.compare"));
+WindowActions::WindowActions(QMainWindow* window, const EditorContext& context, FileActions* files,
+                             PreviewView* view)
+    : QObject(window), m_window(window), m_doc(context.document), m_preview(context.preview),
+      m_prompts(context.prompts), m_files(files), m_view(view),
+      m_compareTask(new BackgroundTask(this)) {
+    m_prompts->watchTask(m_compareTask, QStringLiteral("task.compare"));
     buildFileMenu();
     buildEditMenu();
     buildViewMenu();
@@ -81,13 +85,12 @@ WindowActions::WindowActions(MainWindow* window)
     for (QAction* a : m_window->findChildren<QAction*>())
         if (!a->shortcuts().isEmpty())
             a->setShortcutContext(Qt::ApplicationShortcut);
-    showOptions(m_window->preview()->options());
-    connect(m_window->preview(), &PreviewController::optionsChanged, this,
-            &WindowActions::showOptions);
+    showOptions(m_preview->options());
+    connect(m_preview, &PreviewController::optionsChanged, this, &WindowActions::showOptions);
 }
 
 void WindowActions::buildFileMenu() {
-    FileActions* files = m_window->fileActions();
+    FileActions* files = m_files;
     QStyle* st = m_window->style();
     QMenu* file = m_window->menuBar()->addMenu(tr("&File"));
     QMenu* newMenu = file->addMenu(tr("&New from neutral"));
@@ -137,7 +140,7 @@ void WindowActions::buildFileMenu() {
 
 void WindowActions::buildEditMenu() {
     QStyle* st = m_window->style();
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     QMenu* edit = m_window->menuBar()->addMenu(tr("&Edit"));
     m_undo = doc->undoStack()->createUndoAction(m_window, tr("&Undo"));
     m_undo->setObjectName("action.undo");
@@ -157,7 +160,7 @@ void WindowActions::buildEditMenu() {
 }
 
 void WindowActions::buildViewMenu() {
-    PreviewView* view = m_window->previewView();
+    PreviewView* view = m_view;
     QMenu* menu = m_window->menuBar()->addMenu(tr("&View"));
     m_fit = menu->addAction(tr("Zoom to &Fit"), QKeySequence(tr("Ctrl+0")), view,
                             &PreviewView::zoomToFit);
@@ -269,10 +272,10 @@ void WindowActions::buildToolsMenu() {
 }
 
 void WindowActions::matchToReference() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     if (!doc->hasImage()) {
-        m_window->reportError(tr("Cannot match"),
-                              tr("Open a picture first: its look is matched to the reference."));
+        m_prompts->reportError(tr("Cannot match"),
+                               tr("Open a picture first: its look is matched to the reference."));
         return;
     }
     const QString path = QFileDialog::getOpenFileName(m_window, tr("Match to Reference"),
@@ -285,26 +288,27 @@ void WindowActions::matchToReference() {
         auto session =
             std::make_unique<MatchSession>(doc->storedImage(), doc->imageInfo().isFloat, path);
         QApplication::restoreOverrideCursor();
-        MatchDialog dlg(m_window, std::move(session));
+        MatchDialog dlg(m_window, EditorContext{m_doc, m_preview, m_prompts}, std::move(session));
         dlg.exec();
     } catch (const std::exception& e) {
         QApplication::restoreOverrideCursor();
-        m_window->reportError(tr("Cannot match"), QString::fromStdString(humanErrorText(e.what())));
+        m_prompts->reportError(tr("Cannot match"),
+                               QString::fromStdString(humanErrorText(e.what())));
     }
 }
 
 void WindowActions::showPlot() {
     try {
-        PlotDialog dlg(m_window);
+        PlotDialog dlg(m_window, *m_doc, m_preview->options().target, m_files);
         dlg.exec();
     } catch (const std::exception& e) {
-        m_window->reportError(tr("Cannot plot the LUT"),
-                              QString::fromStdString(humanErrorText(e.what())));
+        m_prompts->reportError(tr("Cannot plot the LUT"),
+                               QString::fromStdString(humanErrorText(e.what())));
     }
 }
 
 void WindowActions::compareWithFile() {
-    Document* doc = m_window->document();
+    Document* doc = m_doc;
     const QString from = !doc->lutPath().isEmpty() ? doc->lutPath() : doc->imagePath();
     const QString path = QFileDialog::getOpenFileName(
         m_window, tr("Compare with LUT File"),
@@ -320,23 +324,22 @@ CompareDialog* WindowActions::compareDialog() const {
 void WindowActions::startCompare(const QString& path) {
     // The comparison runs on a worker (over a 4K picture it takes seconds): the window stays
     // live, the status bar shows its progress with Cancel, and the report opens when it is done.
-    const CompareInput input =
-        compareInput(*m_window->document(), m_window->preview()->options().target, path);
+    const CompareInput input = compareInput(*m_doc, m_preview->options().target, path);
     m_compareTask->start(
         tr("Comparing %1…").arg(QFileInfo(path).fileName()),
         [this, input](const Progress& progress) -> BackgroundTask::Delivery {
             auto c = std::make_shared<const Comparison>(compareLuts(input, &progress));
             return [this, c] {
                 m_lastComparison = c;
-                auto* dlg = new CompareDialog(m_window, *c);
+                auto* dlg = new CompareDialog(m_window, *c, m_files);
                 dlg->setAttribute(Qt::WA_DeleteOnClose);
                 dlg->show(); // not modal: the window stays usable beside the report
                 m_compareDialog = dlg;
             };
         },
         [this](const QString& message) {
-            m_window->reportError(tr("Cannot compare the LUTs"),
-                                  QString::fromStdString(humanErrorText(message.toStdString())));
+            m_prompts->reportError(tr("Cannot compare the LUTs"),
+                                   QString::fromStdString(humanErrorText(message.toStdString())));
         });
 }
 
@@ -390,11 +393,11 @@ void WindowActions::buildToolbars() {
 }
 
 void WindowActions::applyWidgets() {
-    m_window->preview()->setOptions(optionsFromWidgets());
+    m_preview->setOptions(optionsFromWidgets());
 }
 
 PreviewOptions WindowActions::optionsFromWidgets() const {
-    PreviewOptions o = m_window->preview()->options();
+    PreviewOptions o = m_preview->options();
     o.target = static_cast<ExportTarget>(m_target->currentData().toInt());
     o.input = static_cast<SceneKind>(m_input->currentData().toInt());
     if (m_chain->isEnabled()) // disabled, it shows the target's fact, not the user's choice

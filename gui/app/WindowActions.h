@@ -16,6 +16,7 @@
 
 class QAction;
 class QComboBox;
+class QMainWindow;
 class QMenu;
 class QToolBar;
 
@@ -24,13 +25,21 @@ namespace lut::gui {
 class BackgroundTask;
 class CompareDialog;
 struct Comparison;
-class MainWindow;
+class Document;
+class FileActions;
+class PreviewController;
+class PreviewView;
+class Prompts;
+struct EditorContext;
 
 class WindowActions : public QObject {
     Q_OBJECT
 public:
-    // Builds the menus and toolbars on `window` (after its docks exist: View lists them).
-    explicit WindowActions(MainWindow* window);
+    // Builds the menus and toolbars on `window` (after its docks exist: View lists them), over
+    // the context's document and preview; File runs `files`, View zooms `view`, errors and long
+    // tasks go to the context's prompts.
+    WindowActions(QMainWindow* window, const EditorContext& context, FileActions* files,
+                  PreviewView* view);
 
     QAction* bloomAction() const { return m_bloom; }
     QAction* lutAction() const { return m_lut; }
@@ -67,7 +76,12 @@ private:
     void showOptions(const PreviewOptions& options);
     void applyWidgets();
 
-    MainWindow* m_window;
+    QMainWindow* m_window;
+    Document* m_doc;
+    PreviewController* m_preview;
+    Prompts* m_prompts;
+    FileActions* m_files;
+    PreviewView* m_view;
     BackgroundTask* m_compareTask;
     std::shared_ptr<const Comparison> m_lastComparison;
     QPointer<CompareDialog> m_compareDialog;

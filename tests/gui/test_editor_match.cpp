@@ -91,7 +91,7 @@ private slots:
 
         const Lut3D before = w.document()->baseLut();
         auto session = std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath);
-        MatchDialog dlg(&w, std::move(session));
+        MatchDialog dlg(&w, EditorContext{w.document(), w.preview(), &w}, std::move(session));
         dlg.show();
         auto* report = dlg.findChild<QPlainTextEdit*>("matchReport");
         QVERIFY(report && report->toPlainText().contains("before"));
@@ -114,7 +114,8 @@ private slots:
 
         // OK keeps it
         MatchDialog again(
-            &w, std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath));
+            &w, EditorContext{w.document(), w.preview(), &w},
+            std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath));
         again.show();
         auto* buttons = again.findChild<QDialogButtonBox*>();
         QVERIFY(buttons);

@@ -300,7 +300,7 @@ private slots:
 
         // Plot: lut::plotLut of the export, shown.
         {
-            PlotDialog dlg(&w);
+            PlotDialog dlg(&w, *w.document(), ExportTarget::Grading, w.fileActions());
             dlg.show();
             const Image expected = plotExportedLut(*w.document(), ExportTarget::Grading);
             QCOMPARE(dlg.plot().width(), expected.width());
@@ -331,7 +331,7 @@ private slots:
                                      std::size_t(w.document()->storedImage()->height()));
         QVERIFY(c.report.identical());
         QCOMPARE(c.heat.image.width(), w.document()->storedImage()->width());
-        CompareDialog dlg(&w, c);
+        CompareDialog dlg(&w, c, w.fileActions());
         dlg.show();
         auto* report = dlg.findChild<QPlainTextEdit*>("compareReport");
         QVERIFY(report);
