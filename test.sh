@@ -10,6 +10,9 @@ root="$(cd "$(dirname "$0")" && pwd)"
 # A final summary line in every case, naming the stage that failed.
 stage="install"
 t0=$(date +%s)
+ts=$t0
+# One line per stage with its time, so a slow stage shows in CI's log.
+took() { echo "test.sh: $stage took $(( $(date +%s) - ts )) s"; ts=$(date +%s); }
 trap 'rc=$?; if [ $rc -ne 0 ]; then echo "test.sh: FAILED in stage: $stage (exit $rc) after $(( $(date +%s) - t0 )) s"; fi' EXIT
 "$root/scripts/install-deps.sh"
 jobs="$(nproc)"
@@ -17,6 +20,7 @@ jobs="$(nproc)"
 # it and the build folder is not hashed, so another clone of the same sources reuses the objects.
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 
+took
 stage="release"
 echo "== Release build and tests"
 # Tests and benchmarks on (./run.sh builds the same tree without them).
@@ -25,16 +29,21 @@ cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DLUTKIT_WARNINGS_A
 cmake --build "$root/build" -j"$jobs"
 (cd "$root/build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs")
 
+took
+
 if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
   stage="sanitizers"
   echo "== AddressSanitizer + UBSan build and tests (scripts/sanitize.sh)"
   "$root/scripts/sanitize.sh" "$root/build-asan"
+  took
   stage="tsan"
   echo "== ThreadSanitizer build and the threaded code's tests (scripts/tsan.sh)"
   "$root/scripts/tsan.sh" "$root/build-tsan"
+  took
   stage="fuzzing"
   echo "== Fuzzing each reader for ${LUTKIT_FUZZ_SECONDS:-30} s (scripts/fuzz.sh)"
   "$root/scripts/fuzz.sh" "$root/build-fuzz" "${LUTKIT_FUZZ_SECONDS:-30}"
+  took
 fi
 stage="done"
 echo "test.sh: ALL PASSED in $(( $(date +%s) - t0 )) s$([ "${LUTKIT_QUICK:-0}" = "1" ] && echo " (quick: no sanitizers, no fuzzing)")"
