@@ -6,6 +6,7 @@
 // of the library's values). CLI11 must turn any bad argument into a CLI::ParseError (exit code 2);
 // any other exception escaping is a finding.
 #include "CommandLine.h"
+#include "Usage.h"
 
 #include "lut/pipeline/Pipeline.h"
 
@@ -184,6 +185,10 @@ inline bool runCliArgs(const std::uint8_t* data, std::size_t size) {
         return !cli.app().get_subcommands().empty();
     } catch (const CLI::ParseError&) {
         return false; // exit code 2 in lutkit
+    } catch (const lut::cli::UsageError&) {
+        // A combination a command's own check refuses after parsing (convert with no OUT):
+        // exit code 2 in lutkit too (CommandLine::run).
+        return false;
     }
 }
 
