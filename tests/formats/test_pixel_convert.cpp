@@ -140,3 +140,37 @@ TEST(PixelConvert, HalfRunsReadAndWriteEveryValue) {
                 ASSERT_TRUE(std::isnan(halfValue(back[k])));
     }
 }
+
+// A reader's channel list or alpha index may point past the channels it stores (OpenImageIO's
+// GIF reader said alpha = 4 of 4 channels for a fuzzed file, and the conversion read one sample
+// past every row): the map uses only stored channels, alpha by its name when the index is wrong.
+TEST(PixelConvert, ChannelIndicesPastTheStoredChannelsAreNeverUsed) {
+    ImageInfo gif;
+    gif.channels = 4;
+    gif.type = PixelType::UInt8;
+    gif.channelNames = {"R", "G", "B", "A"};
+    gif.alphaChannel = 4;
+    RgbaMap m = rgbaMapOf(gif);
+    EXPECT_EQ(m.a, 3);
+
+    gif.channelNames = {"R", "G", "B"};
+    m = rgbaMapOf(gif); // no channel named A: no alpha
+    EXPECT_EQ(m.a, -1);
+
+    ImageInfo named; // more names than stored channels
+    named.channels = 3;
+    named.type = PixelType::UInt8;
+    named.channelNames = {"X", "Y", "Z", "R", "G", "B"};
+    m = rgbaMapOf(named);
+    for (int i : {m.r, m.g, m.b, m.a})
+        EXPECT_LT(i, 3);
+
+    // The converted pixels: (10, 20, 30, 40) in 8 bits, alpha read from channel 3.
+    gif.channelNames = {"R", "G", "B", "A"};
+    m = rgbaMapOf(gif);
+    const std::vector<std::uint8_t> px = {10, 20, 30, 40, 50, 60, 70, 80};
+    std::vector<float> rgba(8);
+    toRgba(px.data(), PixelType::UInt8, 4, m, 2, rgba.data());
+    for (int i = 0; i < 8; ++i)
+        EXPECT_FLOAT_EQ(rgba[i], static_cast<float>(px[i] / 255.0)) << i;
+}

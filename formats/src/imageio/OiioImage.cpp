@@ -341,7 +341,14 @@ void OiioSource::select(int index, ImageInfo& info, ImageMetadata& meta, int& gr
     info.bitsPerSample = s.get_int_attribute("oiio:BitsPerSample", 8 * bytesPerSample(info.type));
     info.compression = s.get_string_attribute("compression");
     info.channelNames.assign(s.channelnames.begin(), s.channelnames.end());
+    // An alpha index past the stored channels (OpenImageIO's GIF reader said 4 of 4 for a fuzzed
+    // file) is taken by name instead, or as no alpha.
     info.alphaChannel = s.alpha_channel;
+    if (info.alphaChannel >= s.nchannels) {
+        const auto a = std::find(s.channelnames.begin(), s.channelnames.end(), "A");
+        const auto at = static_cast<int>(a - s.channelnames.begin());
+        info.alphaChannel = a != s.channelnames.end() && at < s.nchannels ? at : -1;
+    }
     info.colorSpace = s.get_string_attribute("oiio:ColorSpace");
     info.chromaSubsampling = s.get_string_attribute("jpeg:subsampling");
     info.tileWidth = s.tile_width;

@@ -222,13 +222,19 @@ const char* toString(PixelType t) {
 RgbaMap rgbaMapOf(const ImageInfo& info) {
     RgbaMap m;
     const auto& names = info.channelNames;
+    // Only channels the pixels have: a reader may name more channels than it stores, or an
+    // alpha index past the last channel (OpenImageIO's GIF reader said alpha = 4 of 4 channels
+    // for a fuzzed file; the conversion read past every row). Alpha then goes by its name.
+    const std::size_t stored = static_cast<std::size_t>(std::max(0, info.channels));
     auto find = [&](const char* n) {
-        for (std::size_t i = 0; i < names.size(); ++i)
+        for (std::size_t i = 0; i < std::min(names.size(), stored); ++i)
             if (names[i] == n)
                 return static_cast<int>(i);
         return -1;
     };
-    m.a = info.alphaChannel;
+    m.a = info.alphaChannel >= 0 && info.alphaChannel < info.channels ? info.alphaChannel
+          : info.alphaChannel >= 0                                    ? find("A")
+                                                                      : -1;
     const int r = find("R"), g = find("G"), b = find("B"), y = find("Y");
     if (r >= 0 && g >= 0 && b >= 0) {
         m.r = r;
