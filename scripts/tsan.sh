@@ -44,7 +44,7 @@ jobs="$(nproc)"
 # ThreadSanitizer (the exhaustive lattice and float-parsing sweeps, the fit's 50 s coverage case,
 # the 256^3 LUT maths, the check of every neutral size and every fixture: the same loops run on
 # smaller LUTs in the tests that stay; the cases made once per OpenColorIO test file (Files/*:
-# ~330 files through convert and bake, 6-25 s each here, ~45 min of the stage), whose threaded
+# ~265 cases through convert and bake, 6-25 s each here, ~45 min of the stage), whose threaded
 # sampling OcioCorpusRead.* and OcioCorpusBake.* drive on a few files).
 runs=(
   "lutlib_tests:-AllMethods/Policy.LatticePointsReturnEntriesExactly/*:Lut3D.IdentityIsExactForEverySize"
