@@ -191,4 +191,47 @@ TEST(ImagePlausibility, LyingHeadersOfEveryFormatAreRefusedWithTheFigures) {
     }
 }
 
+// BigTIFF counts are 64 bits: a field of 2^62 LONGs is 2^64 bytes, which wraps to 0 when the
+// count is multiplied by its size. A fuzzed file (CI's image_apply) passed the "more values than
+// the file holds" check that way and then looped over 2^62 strip byte counts. Refused now, with
+// the count and the file's size; likewise a directory offset near 2^64 and 2^32x2^32 tiles.
+TEST(ImagePlausibility, BigTiffCountsThatWrapWhenMultipliedAreRefused) {
+    const std::string dir = lut::test::tempDir();
+    auto le64 = [](std::uint64_t v) {
+        std::string s;
+        for (int k = 0; k < 8; ++k)
+            s += char(v >> (8 * k));
+        return s;
+    };
+    // One BigTIFF directory at byte 16 with the given (tag, type, count, value) entries.
+    struct Entry {
+        unsigned tag, type;
+        std::uint64_t count, value;
+    };
+    auto bigTiff = [&](const std::vector<Entry>& entries, std::uint64_t ifd = 16) {
+        std::string t = "II" + le16(43) + le16(8) + le16(0) + le64(ifd) + le64(entries.size());
+        for (const auto& e : entries)
+            t += le16(e.tag) + le16(e.type) + le64(e.count) + le64(e.value);
+        t += le64(0);
+        t.resize(t.size() + 64, '\0');
+        return t;
+    };
+    const std::uint64_t huge = std::uint64_t(1) << 62;
+    writeBytes(dir + "/counts.tif",
+               bigTiff({{256, 3, 1, 8}, {257, 3, 1, 8}, {273, 4, huge, 0}, {279, 4, huge, 0}}));
+    EXPECT_THAT(refusal(dir + "/counts.tif"),
+                HasSubstr("counts.tif: TIFF directory 1 (at byte 16): field 273 lists "
+                          "4611686018427387904 values, more than the file's"));
+    writeBytes(dir + "/far.tif", bigTiff({{256, 3, 1, 8}}, ~std::uint64_t(0) - 3));
+    EXPECT_THAT(refusal(dir + "/far.tif"),
+                HasSubstr("far.tif: TIFF directory 1 (at byte 18446744073709551612) is past the "
+                          "end of the file"));
+    writeBytes(dir + "/tiles.tif", bigTiff({{256, 16, 1, 8},
+                                            {257, 16, 1, 8},
+                                            {322, 16, 1, std::uint64_t(1) << 32},
+                                            {323, 16, 1, std::uint64_t(1) << 32}}));
+    EXPECT_THAT(refusal(dir + "/tiles.tif"),
+                HasSubstr("tiles.tif: TIFF tiles of 4294967296x4294967296 pixels, over the limit"));
+}
+
 } // namespace

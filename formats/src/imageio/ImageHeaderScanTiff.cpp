@@ -91,7 +91,7 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
             "TIFF directory " + std::to_string(page + 1) + " (at byte " + std::to_string(ifd) + ")";
         if (!seen.insert(ifd).second)
             throw Error(path + ": " + where + " is listed twice: the directories form a loop");
-        if (ifd + static_cast<std::uint64_t>(countSize) > b.size()) {
+        if (ifd > b.size() || b.size() - ifd < static_cast<std::uint64_t>(countSize)) {
             if (!b.whole()) {
                 d.complete = false;
                 return d;
@@ -133,8 +133,9 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
             const std::uint64_t count = field(i, 4, big ? 8 : 4);
             const int size = typeSize(type);
             const int valueAt = big ? 12 : 8;
-            const bool inline_ = size > 0 && count * static_cast<std::uint64_t>(size) <=
-                                                 static_cast<std::uint64_t>(offsetSize);
+            // Division, not count * size: a BigTIFF count is 64 bits, and 2^62 LONGs multiply
+            // to 0 (a fuzzed file went on to loop over 2^62 strip counts).
+            const bool inline_ = size > 0 && count <= static_cast<std::uint64_t>(offsetSize / size);
             auto value = [&](std::uint64_t k) -> std::uint64_t {
                 if (size <= 0)
                     return 0;
@@ -144,7 +145,7 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
                     field(i, valueAt, offsetSize) + k * static_cast<std::uint64_t>(size);
                 return num(at, std::min(size, 8));
             };
-            if (size > 0 && count * static_cast<std::uint64_t>(size) > b.size())
+            if (size > 0 && count > b.size() / static_cast<std::uint64_t>(size))
                 throw Error(path + ": " + where + ": field " + std::to_string(tag) + " lists " +
                             std::to_string(count) + " values, more than the file's " +
                             std::to_string(b.size()) + " bytes hold (corrupt)");
@@ -240,7 +241,8 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
         p.height = h;
         p.channels = photometric == 3 ? 3 : static_cast<int>(spp);
         if (tw > 0 && th > 0) {
-            if (tw * th > (std::uint64_t(1) << 24))
+            if (tw > (std::uint64_t(1) << 24) || th > (std::uint64_t(1) << 24) ||
+                tw * th > (std::uint64_t(1) << 24))
                 throw LimitError(path + ": TIFF tiles of " + std::to_string(tw) + "x" +
                                  std::to_string(th) +
                                  " pixels, over the limit of 16777216 pixels per tile");
