@@ -7,6 +7,9 @@
 # in tests/data), so the checked-in seeds never change. Crashes, leaks, timeouts and OOMs land in
 # BUILD_DIR/findings/<name>/ and make this script exit non-zero; add each one (after fixing it) to
 # tests/data/fuzz-regress/<name>/ so the normal test suite replays it.
+# FUZZ_SEED (default 1) fixes libFuzzer's random seed, so a run explores the same mutations on
+# every machine: CI's verdict on a commit is the one its author saw, not a lottery over inputs
+# nobody changed. FUZZ_SEED=0 draws a new seed (exploration: run it longer, locally or nightly).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build-fuzz}"
@@ -14,6 +17,7 @@ seconds="${2:-60}"
 shift $(( $# > 2 ? 2 : $# )) || true
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 jobs="$(nproc)"
+seed="${FUZZ_SEED:-1}"
 
 start=$(date +%s)
 echo "fuzz: configuring $build (clang, -fsanitize=fuzzer-no-link,address,undefined)"
@@ -73,11 +77,11 @@ fuzz_one() {
   local seeds log="$build/findings/$name.log" rc=0
   seeds=$(ls "$work" | wc -l)
   "$bin" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=65536 \
-    -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || rc=$?
+    -seed="$seed" -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || rc=$?
   # Leftovers of findings-free runs are empty folders; keep only real findings.
   rmdir "$findings" 2>/dev/null || true
   if [ $rc -eq 0 ]; then
-    echo "fuzz: $name ok, ${seconds} s from $seeds seeds ($(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs)"
+    echo "fuzz: $name ok, ${seconds} s from $seeds seeds, seed $seed ($(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}') runs)"
     return 0
   fi
   # One write, so a finding's lines are not interleaved with the other fuzzer's line.
