@@ -222,6 +222,11 @@ TEST(ImagePlausibility, BigTiffCountsThatWrapWhenMultipliedAreRefused) {
     EXPECT_THAT(refusal(dir + "/counts.tif"),
                 HasSubstr("counts.tif: TIFF directory 1 (at byte 16): field 273 lists "
                           "4611686018427387904 values, more than the file's"));
+    // Strip byte counts of a type without a size (999): nothing bounds their count by the file,
+    // so they are not read (a fuzzed TIFF listed 3.6e9 of type 55556; 2^63 here would never end).
+    writeBytes(dir + "/typeless.tif",
+               bigTiff({{256, 3, 1, 8}, {257, 3, 1, 8}, {279, 999, std::uint64_t(1) << 63, 0}}));
+    EXPECT_EQ(refusal(dir + "/typeless.tif"), "(accepted)");
     writeBytes(dir + "/far.tif", bigTiff({{256, 3, 1, 8}}, ~std::uint64_t(0) - 3));
     EXPECT_THAT(refusal(dir + "/far.tif"),
                 HasSubstr("far.tif: TIFF directory 1 (at byte 18446744073709551612) is past the "

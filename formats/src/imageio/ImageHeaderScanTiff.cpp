@@ -174,13 +174,17 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
             case 323:
                 th = value(0);
                 break;
+            // Offsets and counts of a type without a size are not read: their count is not
+            // bounded by the file (a fuzzed type 55556 with 3.6e9 counts looped over them all).
             case 273: // StripOffsets
             case 324: // TileOffsets
-                offsets = {type, count, field(i, valueAt, offsetSize), inline_, i};
+                if (size > 0)
+                    offsets = {type, count, field(i, valueAt, offsetSize), inline_, i};
                 break;
             case 279: // StripByteCounts
             case 325: // TileByteCounts
-                counts = {type, count, field(i, valueAt, offsetSize), inline_, i};
+                if (size > 0)
+                    counts = {type, count, field(i, valueAt, offsetSize), inline_, i};
                 break;
             default:
                 break;
