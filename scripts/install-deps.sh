@@ -20,7 +20,9 @@ esac
 # libopenexr-dev, libpng-dev, zlib1g-dev, libdeflate-dev: the native image codecs (formats/src/imageio).
 # ccache: rebuilds (the four builds of ./test.sh, a fresh clone in CI) reuse unchanged objects.
 # ffmpeg: an outside reader in the tests (its lut3d filter reads the .cube files lutkit writes).
-PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
+# openexr: OpenEXR's own tools (exrstdattr, exrmakepreview, exrmultiview) write the test files
+# that carry every attribute type OpenEXR knows (tests/formats/test_image_plausibility.cpp).
+PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools openexr libopenexr-dev libpng-dev
   zlib1g-dev libdeflate-dev libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev

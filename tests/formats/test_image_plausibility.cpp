@@ -239,4 +239,80 @@ TEST(ImagePlausibility, BigTiffCountsThatWrapWhenMultipliedAreRefused) {
                 HasSubstr("tiles.tif: TIFF tiles of 4294967296x4294967296 pixels, over the limit"));
 }
 
+// OpenEXR reads a known attribute type by its own layout (a channel list up to its empty name, a
+// box2i as 16 bytes...), not by the size in the attribute's header, and reads the next attribute
+// from wherever that ends. A fuzzed channel list whose terminator was overwritten made OpenEXR
+// read on into the next attributes' bytes and allocate 486 MB for a size it found there. Every
+// attribute's value must be exactly the size its header declares; files written by OpenEXR's own
+// tools, carrying every attribute type they write, are accepted.
+TEST(ImagePlausibility, ExrAttributesMustBeTheSizeTheirHeaderDeclares) {
+    const std::string dir = lut::test::tempDir();
+    auto attr = [&](const std::string& name, const std::string& type, const std::string& value,
+                    std::uint32_t declared) {
+        return name + std::string(1, '\0') + type + std::string(1, '\0') + le32(declared) + value;
+    };
+    auto channel = [&](const char* c) {
+        return std::string(c) + std::string(1, '\0') + le32(1) + std::string(4, '\0') + le32(1) +
+               le32(1);
+    };
+    const std::string chlist = channel("B") + channel("G") + channel("R") + std::string(1, '\0');
+    auto exr = [&](const std::string& attributes) {
+        std::string e = std::string("\x76\x2f\x31\x01\x02\0\0\0", 8) + attributes +
+                        attr("compression", "compression", std::string(1, '\0'), 1) +
+                        attr("dataWindow", "box2i", le32(0) + le32(0) + le32(3) + le32(3), 16) +
+                        std::string(1, '\0');
+        e.resize(e.size() + 4 * 8 + 4 * 4 * 6, '\0');
+        return e;
+    };
+    // The channel list's terminator overwritten: OpenEXR would read past its declared 55 bytes.
+    std::string unterminated = chlist;
+    unterminated.back() = 'X';
+    writeBytes(dir + "/chlist.exr", exr(attr("channels", "chlist", unterminated, 55)));
+    EXPECT_THAT(refusal(dir + "/chlist.exr"),
+                HasSubstr("chlist.exr: OpenEXR header attribute 'channels' (chlist) declares 55 "
+                          "bytes, but its value is longer"));
+    // A box2i that declares 12 bytes: OpenEXR reads 16.
+    writeBytes(dir + "/box.exr",
+               exr(attr("channels", "chlist", chlist, 55) +
+                   attr("displayWindow", "box2i", le32(0) + le32(0) + le32(3), 12)));
+    EXPECT_THAT(refusal(dir + "/box.exr"),
+                HasSubstr("box.exr: OpenEXR header attribute 'displayWindow' (box2i) declares 12 "
+                          "bytes, but its value is longer (16 bytes; corrupt)"));
+    // A preview that claims 30000x30000 pixels in 8 bytes.
+    writeBytes(dir + "/preview.exr", exr(attr("channels", "chlist", chlist, 55) +
+                                         attr("preview", "preview", le32(30000) + le32(30000), 8)));
+    EXPECT_THAT(refusal(dir + "/preview.exr"),
+                HasSubstr("preview.exr: OpenEXR header attribute 'preview' (preview) declares 8"));
+    // The well-formed file is accepted.
+    writeBytes(dir + "/good.exr", exr(attr("channels", "chlist", chlist, 55)));
+    EXPECT_EQ(refusal(dir + "/good.exr"), "(accepted)");
+
+    // OpenEXR's own tools: a preview, every standard attribute exrstdattr writes (chromaticities,
+    // keycode, timecode, rational, envmap, v2f, float, int, string), a stringvector (multiView),
+    // and matrices and vectors from oiiotool.
+    const std::string base = dir + "/base.exr";
+    ASSERT_TRUE(oiiotool("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.5,0.1 64x48 3 -d half -o '" +
+                         base + "'"));
+    auto run = [](const std::string& cmd) {
+        const int s = std::system((cmd + " >/dev/null 2>&1").c_str());
+        return WIFEXITED(s) && WEXITSTATUS(s) == 0;
+    };
+    ASSERT_TRUE(run("exrmakepreview -w 32 '" + base + "' '" + dir + "/prev.exr'"))
+        << "OpenEXR's tools (Debian package openexr: scripts/install-deps.sh)";
+    ASSERT_TRUE(run("exrstdattr -chromaticities 0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329 "
+                    "-whiteLuminance 100 -adoptedNeutral 0.3 0.3 -xDensity 72 -owner me "
+                    "-comments hi -utcOffset 0 -longitude 1 -latitude 2 -altitude 3 -focus 4 "
+                    "-expTime 0.01 -aperture 2.8 -isoSpeed 100 -envmap latlong "
+                    "-keyCode 1 2 3 4 5 4 64 -timeCode 1 2 -wrapmodes clamp "
+                    "-framesPerSecond 24 1 -float f 1.5 -int i 3 -string s hello '" +
+                    dir + "/prev.exr' '" + dir + "/std.exr'"));
+    ASSERT_TRUE(run("exrmultiview left '" + base + "' right '" + base + "' '" + dir + "/mv.exr'"));
+    ASSERT_TRUE(oiiotool("'" + base +
+                         "' --attrib:type=matrix worldtocamera 1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1 "
+                         "--attrib:type=float[3] v3 1,2,3 --attrib:type=int[2] v2 1,2 -o '" +
+                         dir + "/attrs.exr'"));
+    for (const char* f : {"prev.exr", "std.exr", "mv.exr", "attrs.exr"})
+        EXPECT_EQ(refusal(dir + "/" + f), "(accepted)") << f;
+}
+
 } // namespace

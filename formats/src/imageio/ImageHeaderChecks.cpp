@@ -72,6 +72,58 @@ int HeaderBytes::byte(std::uint64_t offset) const {
 // give what it stores; its compression how far its share of the chunks can expand (measured and
 // derived in docs/robustness.md; DWAA/DWAB: a DC value and an end-of-block code per 8x8 block,
 // deflated).
+namespace {
+
+// How many bytes OpenEXR's reader takes for an attribute value of type `kind` whose header says
+// `len` (OpenEXR 3.1, Header::readFrom): a known type is read by its own layout, not by `len`,
+// and the next attribute is read from wherever that ends. A file where the two differ is
+// corrupt, and OpenEXR would go on reading attribute names and sizes from inside values (a
+// fuzzed channel list without its terminator made it allocate 486 MB for an "attribute" it
+// found in the data that followed). Unknown types are kept as opaque bytes: exactly `len`.
+std::uint64_t exrValueBytes(const HeaderBytes& b, const std::string& kind, std::uint64_t value,
+                            std::uint64_t len) {
+    // clang-format off
+    static const std::pair<const char*, std::uint64_t> kFixed[] = {
+        {"box2i", 16}, {"box2f", 16}, {"compression", 1}, {"deepImageState", 1}, {"double", 8},
+        {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36},
+        {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9},
+        {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12},
+        {"v3d", 24}, {"chromaticities", 32}};
+    // clang-format on
+    for (const auto& [name, bytes] : kFixed)
+        if (kind == name)
+            return bytes;
+    const std::uint64_t end = std::min(b.size(), value + len + 1);
+    if (kind == "chlist") { // names and 16 bytes each, up to an empty name
+        std::uint64_t c = value;
+        while (c < end && b.byte(c) != 0) {
+            const std::string name = b.get(c, 256);
+            const auto nul = name.find('\0');
+            if (nul == std::string::npos)
+                return len + 1; // no end within the value: not what the header says
+            c += nul + 1 + 16;
+        }
+        return c + 1 - value;
+    }
+    if (kind == "stringvector") { // int32 size + characters, until `len` is reached
+        std::uint64_t c = value;
+        while (c < value + len) {
+            const auto n = static_cast<std::int32_t>(b.le(c, 4));
+            if (n < 0)
+                return len + 1;
+            c += 4 + static_cast<std::uint64_t>(n);
+        }
+        return c - value;
+    }
+    if (kind == "preview") { // width, height, then 4 bytes per pixel
+        const std::uint64_t w = b.le(value, 4), h = b.le(value + 4, 4);
+        return len < 8 || w > len || h > len ? len + 1 : 8 + 4 * w * h;
+    }
+    return len;
+}
+
+} // namespace
+
 DeclaredImage scanExr(const HeaderBytes& b, const std::string& path) {
     DeclaredImage d;
     d.format = "openexr";
@@ -124,6 +176,13 @@ DeclaredImage scanExr(const HeaderBytes& b, const std::string& path) {
             }
             const std::uint64_t value = at;
             at += static_cast<std::uint64_t>(len);
+            const std::uint64_t reads =
+                exrValueBytes(b, kind, value, static_cast<std::uint64_t>(len));
+            if (reads != static_cast<std::uint64_t>(len))
+                throw Error(path + ": OpenEXR header attribute '" + attr + "' (" + kind +
+                            ") declares " + std::to_string(len) + " bytes, but its value is " +
+                            (reads > static_cast<std::uint64_t>(len) ? "longer" : "shorter") +
+                            " (" + std::to_string(reads) + " bytes; corrupt)");
             if (kind == "box2i" && attr == "dataWindow" && len == 16) {
                 x0 = static_cast<std::int32_t>(b.le(value, 4));
                 y0 = static_cast<std::int32_t>(b.le(value + 4, 4));
@@ -332,6 +391,11 @@ void checkDeclaredImage(const std::string& path, const DeclaredImage& image) {
                          " parts whose pixels need more than the file's " +
                          std::to_string(sharedData) + " bytes of " + name +
                          " data can hold: truncated or corrupt");
+    // Plausible sizes, but a block of data is cut off by the end of the file.
+    for (const DeclaredPart& p : image.parts)
+        if (!p.cutShort.empty())
+            throw Error(path + (p.what.empty() ? "" : " (" + p.what + ")") + ": " + p.cutShort +
+                        ": truncated or corrupt");
 }
 
 std::uint64_t plausibleFileBytes(const DeclaredImage& image) {

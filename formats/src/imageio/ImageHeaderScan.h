@@ -49,6 +49,10 @@ struct DeclaredPart {
     double maxRatio = 0.0; // the codec's most stored bytes per data byte (0: no bound but the
                            // pixel limit)
     std::string codec;     // "uncompressed", "deflate", "PackBits", ...: for messages
+    // Set when a block of the part's data (a TIFF strip or tile) runs past the end of the file:
+    // what is cut short, for the message. A decoder handed such a block decodes whatever memory
+    // follows what was read (docs/robustness.md), so the file is refused before decoding.
+    std::string cutShort;
 };
 
 struct DeclaredImage {

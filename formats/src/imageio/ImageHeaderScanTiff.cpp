@@ -218,6 +218,7 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
                 out[static_cast<std::size_t>(k)] = x;
             }
         };
+        std::string cutShort;
         if (counts.count == 0) {
             data = b.size();
         } else {
@@ -232,6 +233,14 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
                     const std::uint64_t o = withOffsets ? at[static_cast<std::size_t>(j)] : 0;
                     const std::uint64_t c = len[static_cast<std::size_t>(j)];
                     data += o >= b.size() ? 0 : std::min(c, b.size() - o);
+                    if (withOffsets && cutShort.empty() && b.whole() && c > 0 &&
+                        (o >= b.size() || c > b.size() - o))
+                        cutShort = std::string(tw > 0 && th > 0 ? "TIFF tile " : "TIFF strip ") +
+                                   std::to_string(k + j + 1) + " of " +
+                                   std::to_string(counts.count) + " (bytes " + std::to_string(o) +
+                                   " to " + std::to_string(o + c) +
+                                   ") runs past the end of the file (" + std::to_string(b.size()) +
+                                   " bytes)";
                 }
             }
         }
@@ -255,6 +264,7 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
             p.storedBytes = h * ceilDiv(w * bits, 8);
         }
         p.dataBytes = data;
+        p.cutShort = cutShort;
         const auto [ratio, codec] = tiffCodec(compression, w);
         p.maxRatio = ratio;
         p.codec = codec;
