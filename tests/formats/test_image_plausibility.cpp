@@ -315,4 +315,52 @@ TEST(ImagePlausibility, ExrAttributesMustBeTheSizeTheirHeaderDeclares) {
         EXPECT_EQ(refusal(dir + "/" + f), "(accepted)") << f;
 }
 
+// OpenImageIO's Maya IFF reader decodes a run-length tile until each channel's stream has filled
+// the tile, trusting the runs: a run past the tile writes past its buffer (valgrind on a fuzzed
+// 652-byte file: a write after a 192-byte block; under ASan, the heap corruption that kept
+// image_oiio out of CI). Every RLE tile of a file is checked before decoding; files oiiotool
+// writes (RLE and stored tiles, 8 and 16 bits, RGB and RGBA, several tiles) are accepted.
+TEST(ImagePlausibility, IffTilesWhoseRunsOverrunTheTileAreRefused) {
+    const std::string dir = lut::test::tempDir();
+    auto be32 = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    auto be16 = [](unsigned v) { return std::string{char(v >> 8), char(v)}; };
+    // A 4x2 RGB 8-bit image, one RLE tile: three streams of runs (count byte, value).
+    auto iff = [&](const std::string& streams) {
+        const std::string tbhd = "TBHD" + be32(32) + be32(4) + be32(2) + be16(1) + be16(1) +
+                                 be32(1) + be16(0) + be16(1) + be32(1) + std::string(8, '\0');
+        std::string rgba = "RGBA" + be32(static_cast<std::uint32_t>(8 + streams.size())) + be16(0) +
+                           be16(0) + be16(3) + be16(1) + streams;
+        rgba.resize((rgba.size() + 3) / 4 * 4, '\0');
+        const std::string tbmp =
+            "FOR4" + be32(static_cast<std::uint32_t>(4 + rgba.size())) + "TBMP" + rgba;
+        const std::string body = "CIMG" + tbhd + tbmp;
+        return "FOR4" + be32(static_cast<std::uint32_t>(body.size())) + body;
+    };
+    const std::string good = std::string("\x87\x10\x87\x20\x87\x30", 6); // 8 pixels each
+    writeBytes(dir + "/good.iff", iff(good));
+    EXPECT_EQ(refusal(dir + "/good.iff"), "(accepted)");
+    writeBytes(dir + "/run.iff", iff(std::string("\x88\x10\x87\x20\x87\x30", 6))); // 9 pixels
+    EXPECT_THAT(refusal(dir + "/run.iff"),
+                HasSubstr("run.iff: IFF tile 1 of 1: an RLE run goes past the tile's 8 pixels: "
+                          "truncated or corrupt"));
+    writeBytes(dir + "/short.iff", iff(std::string("\x87\x10\x83\x20", 4))); // stream 2 short
+    EXPECT_THAT(refusal(dir + "/short.iff"),
+                HasSubstr("short.iff: IFF tile 1 of 1: its RLE data ends before the tile is "
+                          "filled"));
+
+    for (const std::string& args :
+         {std::string("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.5,0.1 300x200 3 -d uint8"),
+          std::string("--pattern fill:top=0.1,0.2,0.3,1:bottom=0.9,0.5,0.1,0.5 300x200 4 -d "
+                      "uint16"),
+          std::string("--pattern noise:type=uniform 130x70 4 -d uint8"),
+          std::string("--pattern noise:type=uniform 130x70 3 -d uint16"),
+          std::string("--pattern constant:color=0.5,0.5,0.5 1000x700 3 -d uint8")}) {
+        const std::string p = dir + "/w.iff";
+        ASSERT_TRUE(oiiotool(args + " -o '" + p + "'")) << args;
+        EXPECT_EQ(refusal(p), "(accepted)") << args;
+    }
+}
+
 } // namespace

@@ -391,10 +391,10 @@ void checkDeclaredImage(const std::string& path, const DeclaredImage& image) {
                          " parts whose pixels need more than the file's " +
                          std::to_string(sharedData) + " bytes of " + name +
                          " data can hold: truncated or corrupt");
-    // Plausible sizes, but a block of data is cut off by the end of the file.
+    // Plausible sizes, but a block of data its decoder would read or write past.
     for (const DeclaredPart& p : image.parts)
-        if (!p.cutShort.empty())
-            throw Error(path + (p.what.empty() ? "" : " (" + p.what + ")") + ": " + p.cutShort +
+        if (!p.corruptBlock.empty())
+            throw Error(path + (p.what.empty() ? "" : " (" + p.what + ")") + ": " + p.corruptBlock +
                         ": truncated or corrupt");
 }
 

@@ -49,10 +49,11 @@ struct DeclaredPart {
     double maxRatio = 0.0; // the codec's most stored bytes per data byte (0: no bound but the
                            // pixel limit)
     std::string codec;     // "uncompressed", "deflate", "PackBits", ...: for messages
-    // Set when a block of the part's data (a TIFF strip or tile) runs past the end of the file:
-    // what is cut short, for the message. A decoder handed such a block decodes whatever memory
-    // follows what was read (docs/robustness.md), so the file is refused before decoding.
-    std::string cutShort;
+    // Set when a block of the part's data is one its decoder would read or write past (a TIFF
+    // strip or tile past the end of the file, an IFF tile whose runs overrun it): which block and
+    // how, for the message. OpenImageIO's decoders trust these (docs/robustness.md), so the file
+    // is refused before decoding.
+    std::string corruptBlock;
 };
 
 struct DeclaredImage {

@@ -252,20 +252,74 @@ DeclaredImage scanDpx(const HeaderBytes& b, const std::string& path) {
     return d;
 }
 
+namespace {
+
+// Maya IFF tiles as OpenImageIO 2.4 decodes them (IffInput::readimg), from `at` (the first chunk
+// inside "FOR4" <size> "TBMP"): chunks in order until `tiles` "RGBA" chunks were read, each
+// x0, y0, x1, y1 (16 bits) then its data; a tile whose chunk is smaller than its pixels is RLE,
+// one stream per channel byte (a count byte: bit 7 a run of the next byte, else that many + 1
+// literal bytes). The decoder stops only when a stream has filled the tile, so a run that goes
+// past it writes past its buffer, and a stream that ends early reads past the chunk (valgrind:
+// a fuzzed 652-byte IFF wrote past a 192-byte tile buffer; under ASan, the heap corruption
+// docs/robustness.md tracked). Returns what is wrong with the first such tile, or "".
+std::string iffTileDefect(const HeaderBytes& b, std::uint64_t at, std::uint64_t tiles,
+                          std::uint64_t width, std::uint64_t height, std::uint64_t bytesPerPixel) {
+    for (std::uint64_t t = 0; t < tiles;) {
+        if (at + 8 > b.size())
+            return ""; // the file ends: the codec says the data is missing
+        const std::uint64_t size = b.be(at + 4, 4);
+        const std::uint64_t data = at + 8;
+        at = data + (size + 3) / 4 * 4;
+        if (b.get(data - 8, 4) != "RGBA")
+            continue;
+        ++t;
+        const std::string who = "IFF tile " + std::to_string(t) + " of " + std::to_string(tiles);
+        const std::uint64_t x0 = b.be(data, 2), y0 = b.be(data + 2, 2);
+        const std::uint64_t x1 = b.be(data + 4, 2), y1 = b.be(data + 6, 2);
+        if (size < 8 || x0 > x1 || y0 > y1 || x1 >= width || y1 >= height)
+            return who + " lies outside the image or has no pixels";
+        const std::uint64_t pixels = (x1 - x0 + 1) * (y1 - y0 + 1);
+        if (pixels * bytesPerPixel + 8 <= size)
+            continue; // stored uncompressed
+        std::uint64_t in = data + 8;
+        const std::uint64_t end = std::min(b.size(), data + size);
+        for (std::uint64_t stream = 0; stream < bytesPerPixel; ++stream) {
+            std::uint64_t out = 0;
+            while (out < pixels) {
+                if (in >= end)
+                    return who + ": its RLE data ends before the tile is filled";
+                const int code = b.byte(in++);
+                const std::uint64_t count = static_cast<std::uint64_t>(code & 0x7f) + 1;
+                in += (code & 0x80) ? 1 : count;
+                out += count;
+                if (out > pixels)
+                    return who + ": an RLE run goes past the tile's " + std::to_string(pixels) +
+                           " pixels";
+            }
+            if (in > end)
+                return who + ": its RLE data ends before the tile is filled";
+        }
+    }
+    return "";
+}
+
+} // namespace
+
 // Maya IFF: "FOR4" <size> "CIMG", then chunks; TBHD gives width, height, the channels (flags:
-// RGB, alpha), 8 or 16 bits and the compression (per-channel runs of at most 128 in two bytes:
-// bounded at 64:1). OpenImageIO reads every tile of the image at the first row.
+// RGB, alpha), 8 or 16 bits, the tile count and the compression (per-channel runs of at most 128
+// in two bytes: bounded at 64:1). OpenImageIO reads every tile of the image at the first row;
+// its RLE decoder trusts the runs (iffTileDefect above), so a whole file's tiles are checked.
 DeclaredImage scanIff(const HeaderBytes& b, const std::string& path) {
-    (void)path;
     DeclaredImage d;
     d.format = "iff";
     std::uint64_t at = 12;
     for (int chunks = 0; chunks < 64 && at + 8 <= b.size(); ++chunks) {
         const std::string id = b.get(at, 4);
         const std::uint64_t len = b.be(at + 4, 4);
-        if (id == "TBHD" && len >= 24) {
+        if (id == "TBHD" && len >= 24 && d.parts.empty()) {
             const std::uint64_t w = b.be(at + 8, 4), h = b.be(at + 12, 4);
             const std::uint64_t flags = b.be(at + 20, 4), bytes = b.be(at + 24, 2);
+            const std::uint64_t tiles = b.be(at + 26, 2);
             const std::uint64_t compression = b.be(at + 28, 4);
             const int channels = ((flags & 1) ? 3 : 0) + ((flags & 2) ? 1 : 0);
             if (channels == 0)
@@ -280,6 +334,20 @@ DeclaredImage scanIff(const HeaderBytes& b, const std::string& path) {
             p.codec = compression == 1 ? "RLE" : "uncompressed";
             d.parts.push_back(p);
             d.decoderBytes = p.storedBytes;
+            if (!b.whole())
+                return d; // a stream: the tiles are checked by the codec only
+            // The tiles: the first "FOR4" <size> "TBMP" after the header.
+            std::uint64_t next = at + 8 + (len + 3) / 4 * 4;
+            for (int more = 0; more < 64 && next + 12 <= b.size(); ++more) {
+                if (b.get(next, 4) == "FOR4" && b.get(next + 8, 4) == "TBMP") {
+                    d.parts.back().corruptBlock =
+                        iffTileDefect(b, next + 12, tiles, w, h,
+                                      static_cast<std::uint64_t>(channels) * (bytes ? 2 : 1));
+                    break;
+                }
+                next += 8 + (b.be(next + 4, 4) + 3) / 4 * 4;
+            }
+            (void)path;
             return d;
         }
         at += 8 + (len + 3) / 4 * 4;

@@ -264,7 +264,7 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
             p.storedBytes = h * ceilDiv(w * bits, 8);
         }
         p.dataBytes = data;
-        p.cutShort = cutShort;
+        p.corruptBlock = cutShort;
         const auto [ratio, codec] = tiffCodec(compression, w);
         p.maxRatio = ratio;
         p.codec = codec;
