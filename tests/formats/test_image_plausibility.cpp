@@ -350,6 +350,14 @@ TEST(ImagePlausibility, IffTilesWhoseRunsOverrunTheTileAreRefused) {
                 HasSubstr("short.iff: IFF tile 1 of 1: its RLE data ends before the tile is "
                           "filled"));
 
+    // A DATE chunk that claims 3.7 GB (OpenImageIO allocated it while reading the header).
+    std::string date = iff(good);
+    date.insert(12 + 40, "DATE" + be32(0xe1e1e1e1u) + "2026");
+    writeBytes(dir + "/date.iff", date);
+    EXPECT_THAT(refusal(dir + "/date.iff"),
+                HasSubstr("date.iff: IFF chunk 'DATE' at byte 52 declares 3789677025 bytes, but "
+                          "only "));
+
     for (const std::string& args :
          {std::string("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.5,0.1 300x200 3 -d uint8"),
           std::string("--pattern fill:top=0.1,0.2,0.3,1:bottom=0.9,0.5,0.1,0.5 300x200 4 -d "
