@@ -358,6 +358,16 @@ TEST(ImagePlausibility, IffTilesWhoseRunsOverrunTheTileAreRefused) {
                 HasSubstr("date.iff: IFF chunk 'DATE' at byte 52 declares 3789677025 bytes, but "
                           "only "));
 
+    // A depth-only image (flags 4) whose bytes field is not 0: OpenImageIO's header reader
+    // asserted and aborted the process (exit 134).
+    std::string depth = iff(good);
+    depth.replace(12 + 8 + 12, 4, be32(4));    // flags: z-buffer only
+    depth.replace(12 + 8 + 16, 2, be16(0x65)); // bytes
+    writeBytes(dir + "/depth.iff", depth);
+    EXPECT_THAT(refusal(dir + "/depth.iff"),
+                HasSubstr("depth.iff: IFF header (TBHD) declares a depth-only image with 101 in "
+                          "its bytes field"));
+
     for (const std::string& args :
          {std::string("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.5,0.1 300x200 3 -d uint8"),
           std::string("--pattern fill:top=0.1,0.2,0.3,1:bottom=0.9,0.5,0.1,0.5 300x200 4 -d "

@@ -335,6 +335,12 @@ DeclaredImage scanIff(const HeaderBytes& b, const std::string& path) {
             const std::uint64_t compression = b.be(at + 28, 4);
             tiles = b.be(at + 26, 2);
             const int channels = ((flags & 1) ? 3 : 0) + ((flags & 2) ? 1 : 0);
+            // A depth-only image (flag 4) stores 32-bit floats, "bytes" 0; OpenImageIO asserts
+            // that and aborts the process otherwise (a fuzzed header: exit 134, no message).
+            if (channels == 0 && (flags & 4) && bytes != 0)
+                throw Error(path + ": IFF header (TBHD) declares a depth-only image with " +
+                            std::to_string(bytes) +
+                            " in its bytes field, where only 0 (32-bit depth) is valid (corrupt)");
             if (channels == 0)
                 return d;
             bytesPerPixel = static_cast<std::uint64_t>(channels) * (bytes ? 2 : 1);
