@@ -341,21 +341,22 @@ DeclaredImage scanIff(const HeaderBytes& b, const std::string& path) {
                 throw Error(path + ": IFF header (TBHD) declares a depth-only image with " +
                             std::to_string(bytes) +
                             " in its bytes field, where only 0 (32-bit depth) is valid (corrupt)");
-            if (channels == 0)
-                return d;
-            bytesPerPixel = static_cast<std::uint64_t>(channels) * (bytes ? 2 : 1);
-            DeclaredPart p;
-            p.width = w;
-            p.height = h;
-            p.channels = channels;
-            p.storedBytes = w * h * bytesPerPixel;
-            p.dataBytes = b.size();
-            p.maxRatio = compression == 1 ? 64.0 : compression == 0 ? 1.0 : 0.0;
-            p.codec = compression == 1 ? "RLE" : "uncompressed";
-            d.parts.push_back(p);
-            d.decoderBytes = p.storedBytes;
-            if (!b.whole())
-                return d; // a stream: the rest is the codec's to check
+            // No colour channels: no part, but the chunks' sizes are still checked.
+            if (channels > 0) {
+                bytesPerPixel = static_cast<std::uint64_t>(channels) * (bytes ? 2 : 1);
+                DeclaredPart p;
+                p.width = w;
+                p.height = h;
+                p.channels = channels;
+                p.storedBytes = w * h * bytesPerPixel;
+                p.dataBytes = b.size();
+                p.maxRatio = compression == 1 ? 64.0 : compression == 0 ? 1.0 : 0.0;
+                p.codec = compression == 1 ? "RLE" : "uncompressed";
+                d.parts.push_back(p);
+                d.decoderBytes = p.storedBytes;
+                if (!b.whole())
+                    return d; // a stream: the rest is the codec's to check
+            }
         }
         at += 8 + (len + 3) / 4 * 4;
     }
