@@ -368,6 +368,13 @@ TEST(ImagePlausibility, IffTilesWhoseRunsOverrunTheTileAreRefused) {
                 HasSubstr("depth.iff: IFF header (TBHD) declares a depth-only image with 101 in "
                           "its bytes field"));
 
+    // An origin other than (0, 0): OpenImageIO 2.4 copied a tile row of -51 bytes.
+    std::string origin = iff(good);
+    origin.replace(12 + 8 + 24, 4, be32(33));
+    writeBytes(dir + "/origin.iff", origin);
+    EXPECT_THAT(refusal(dir + "/origin.iff"),
+                HasSubstr("origin.iff: IFF header (TBHD) places the image at (33, 0)"));
+
     for (const std::string& args :
          {std::string("--pattern fill:top=0.1,0.2,0.3:bottom=0.9,0.5,0.1 300x200 3 -d uint8"),
           std::string("--pattern fill:top=0.1,0.2,0.3,1:bottom=0.9,0.5,0.1,0.5 300x200 4 -d "

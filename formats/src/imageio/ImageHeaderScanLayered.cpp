@@ -341,6 +341,14 @@ DeclaredImage scanIff(const HeaderBytes& b, const std::string& path) {
                 throw Error(path + ": IFF header (TBHD) declares a depth-only image with " +
                             std::to_string(bytes) +
                             " in its bytes field, where only 0 (32-bit depth) is valid (corrupt)");
+            // The image's origin: OpenImageIO 2.4 takes it as the data window's and then cuts
+            // tiles as if it were 0 (a fuzzed x of 33 in a 16-wide image: memcpy of -51 bytes).
+            const std::uint64_t x = len >= 32 ? b.be(at + 32, 4) : 0;
+            const std::uint64_t y = len >= 32 ? b.be(at + 36, 4) : 0;
+            if (x != 0 || y != 0)
+                throw Error(path + ": IFF header (TBHD) places the image at (" + std::to_string(x) +
+                            ", " + std::to_string(y) +
+                            "); OpenImageIO's reader handles only (0, 0)");
             // No colour channels: no part, but the chunks' sizes are still checked.
             if (channels > 0) {
                 bytesPerPixel = static_cast<std::uint64_t>(channels) * (bytes ? 2 : 1);
