@@ -293,9 +293,7 @@ private slots:
         w.show();
         QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
         QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
-        PreviewOptions o = w.preview()->options();
-        o.target = ExportTarget::Grading;
-        w.setPreviewOptions(o);
+        w.document()->setTarget(ExportTarget::Grading);
         w.waitForPreview();
 
         // Plot: lut::plotLut of the export, shown.

@@ -48,14 +48,15 @@ LutSource source(std::shared_ptr<const Lut3D> lut) {
     return s;
 }
 
-// Grading target (.cube: the file holds the LUT exactly) on a linear scene with the filmic
-// chain: the pipeline's pilot preset with the LUT itself.
-PreviewOptions gradingFilmic() {
+// Grading target (.cube: the file holds the LUT exactly; the document's) on a linear scene with
+// the filmic chain: the pipeline's pilot preset with the LUT itself.
+void gradingFilmic(PreviewController& c, Document& doc) {
+    doc.setTarget(ExportTarget::Grading);
+    c.setDocument(&doc);
     PreviewOptions o;
-    o.target = ExportTarget::Grading;
     o.input = SceneKind::Scene;
     o.preset = Preset::Pilot;
-    return o;
+    c.setOptions(o);
 }
 
 // The independent path: the pipeline with the same settings, whole.
@@ -83,8 +84,9 @@ class PreviewControllerTest : public QObject {
     Q_OBJECT
 private slots:
     void newSceneGivesBeforeThenProxyThenFullFrame() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         const auto lut = makeLut(1.2f);
         c.setSource(source(lut));
         c.waitForIdle();
@@ -159,8 +161,9 @@ private slots:
     }
 
     void lutEditsReuseTheStagesBeforeTheLut() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         const auto scene = makeScene(900, 90, 1.0f); // no proxy
         c.setImage(scene, true);
         c.waitForFullResolution();
@@ -195,8 +198,9 @@ private slots:
     }
 
     void whileInteractiveOnlyProxiesThenTheFullFrame() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         c.setImage(makeScene(2100, 60, 1.0f), true); // proxy 1/3
         c.waitForFullResolution();
         FrameLog log(c);
@@ -218,8 +222,9 @@ private slots:
     }
 
     void framesOfAReplacedImageAreDropped() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         const auto a = makeScene(1500, 80, 0.3f);
         const auto b = makeScene(1500, 80, 1.0f);
         QSignalSpy before(&c, &PreviewController::beforeReady);
@@ -283,8 +288,9 @@ private slots:
         const auto scene = makeScene(1200, 50, 1.0f);
         const auto lut = makeLut(1.3f);
         const Image want = pipelineRun(*scene, lut, Preset::Pilot, true);
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         c.setSource(source(lut));
         c.setImage(scene, true);
         QVERIFY(c.renderFullResolution().pixels() == want.pixels()); // no frame yet: rendered
