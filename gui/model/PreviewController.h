@@ -125,9 +125,9 @@ private:
     template <class T> void retire(std::shared_ptr<T>& p);
     void requestScene();
     void requestFirstLook(int key);
-    void onSceneReady(const std::shared_ptr<const Image>& stored, int key, const BeforeKey& madeFor,
+    void onSceneReady(const std::shared_ptr<const Image>& stored, int key, const BeforeKey& before,
                       const std::shared_ptr<const Image>& scene,
-                      const std::shared_ptr<const Image>& proxy, const QImage& before);
+                      const std::shared_ptr<const Image>& proxy, const QImage& beforeImage);
     void requestPreview();
     // Options or target changed: a new scene when its preparation or before picture changed.
     void rerender();
