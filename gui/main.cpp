@@ -192,6 +192,7 @@ int main(int argc, char** argv) {
         return 2;
     };
     lut::gui::PreviewOptions options;
+    lut::gui::ExportTarget target = lut::gui::ExportTarget::Smash; // the document's
     std::optional<lut::SceneKind> input;
     std::optional<lut::LutPurpose> lutAnswer; // --lut-target
     // The value of `option` through `parse`; a refusal names the option.
@@ -205,9 +206,9 @@ int main(int argc, char** argv) {
     try {
         // --preset smash is the Smash target; another preset is an engine's chain.
         const lut::Preset preset = value(presetOpt, lut::parsePreset);
-        options.target = parser.isSet(targetOpt) ? value(targetOpt, lut::gui::parseExportTarget)
-                         : preset == lut::Preset::Smash ? lut::gui::ExportTarget::Smash
-                                                        : lut::gui::ExportTarget::Engine;
+        target = parser.isSet(targetOpt)        ? value(targetOpt, lut::gui::parseExportTarget)
+                 : preset == lut::Preset::Smash ? lut::gui::ExportTarget::Smash
+                                                : lut::gui::ExportTarget::Engine;
         if (preset != lut::Preset::Smash)
             options.preset = preset;
         options.interpolation = value(interpOpt, lut::parseInterpolation);
@@ -296,6 +297,7 @@ int main(int argc, char** argv) {
         window.restoreWindowState();
     if (lutAnswer)
         window.setLutPurposeAnswer(*lutAnswer);
+    window.document()->setTarget(target);
     window.setPreviewOptions(options);
     if (windowSize.isValid())
         window.resize(windowSize);

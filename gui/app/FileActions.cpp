@@ -543,7 +543,7 @@ void FileActions::exportDialog() {
     naming.lutPath = doc->lutPath();
     naming.imagePath = doc->imagePath();
     naming.fallbackFolder = QDir::homePath();
-    ExportDialog dlg(m_preview->options().target, naming, m_prompts->dialogParent());
+    ExportDialog dlg(doc->target(), naming, m_prompts->dialogParent());
     // "Keep the file" in the replace question returns here, with every setting as it was, to
     // choose another name or folder.
     while (dlg.exec() == QDialog::Accepted && !dlg.path().isEmpty()) {

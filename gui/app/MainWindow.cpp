@@ -54,6 +54,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_doc(new Document(this)), m_preview(new PreviewController(this)) {
     setObjectName("MainWindow");
     setAcceptDrops(true);
+    m_preview->setDocument(m_doc); // the preview grades for the document's target
     buildCentre();
     buildDocks();
     m_loading = new TaskStatus(QStringLiteral("loading"), this); // FileActions connects to it
@@ -91,6 +92,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_preview, &PreviewController::frameReady, this, &MainWindow::onFrame);
     connect(m_preview, &PreviewController::targetLutChanged, this, &MainWindow::onTargetLut);
     connect(m_preview, &PreviewController::optionsChanged, this, [this] { updateExportState(); });
+    connect(m_doc, &Document::targetChanged, this, [this] { updateExportState(); });
     connect(m_view, &PreviewView::hoverPixel, this, &MainWindow::onHover);
     connect(m_view, &PreviewView::zoomChanged, this, [this](double s) {
         m_zoomLabel->setText(tr("Zoom %1 %%2")
@@ -225,8 +227,8 @@ void MainWindow::updateTitle() {
 void MainWindow::updateExportState() {
     // Connects the picture with the file: what the preview shows is the target's export.
     const PreviewOptions& o = m_preview->options();
-    const QString target = QString::fromStdString(exportTargetInfo(o.target).label);
-    if (showsTheExport(o)) {
+    const QString target = QString::fromStdString(exportTargetInfo(m_doc->target()).label);
+    if (showsTheExport(o, m_doc->target())) {
         m_exportLabel->setText(tr("Shows the %1 export").arg(target));
         m_exportLabel->setStyleSheet(QString());
     } else {
@@ -400,7 +402,7 @@ void MainWindow::onTargetLut(const std::shared_ptr<const TargetLut>& target) {
                                 .arg(c.above)
                                 .arg(c.below)
                                 .arg(c.nonFinite));
-    const ExportTargetInfo& info = exportTargetInfo(m_preview->options().target);
+    const ExportTargetInfo& info = exportTargetInfo(m_doc->target());
     QString extra = tr("<b>Export</b> %1, %2 as written and read back<br><b>Outside 0..1</b> %3")
                         .arg(QString::fromStdString(info.label).toHtmlEscaped())
                         .arg(QString::number(target->shown->size()) + QChar(0x00B3))
@@ -408,11 +410,11 @@ void MainWindow::onTargetLut(const std::shared_ptr<const TargetLut>& target) {
     if (!m_doc->lutNotes().isEmpty())
         extra += QStringLiteral("<br><b>Notes</b> ") + m_doc->lutNotes().join(' ').toHtmlEscaped();
     m_lutView->setLut(*target->shown, m_doc->lutOrigin(), extra);
-    m_checkModel->setLut(target->shown, m_preview->options().target == ExportTarget::Smash);
+    m_checkModel->setLut(target->shown, m_doc->target() == ExportTarget::Smash);
 }
 
 QStringList MainWindow::checkWarnings(ExportTarget target) const {
-    return target == m_preview->options().target ? m_checkModel->failingChecks() : QStringList();
+    return target == m_doc->target() ? m_checkModel->failingChecks() : QStringList();
 }
 
 void MainWindow::onHover(int x, int y) {

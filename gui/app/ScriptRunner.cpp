@@ -229,7 +229,7 @@ QString suggestedExport(MainWindow& w, ExportChoice* choice) {
     naming.lutPath = w.document()->lutPath();
     naming.imagePath = w.document()->imagePath();
     naming.fallbackFolder = QDir::currentPath();
-    ExportDialog dlg(w.preview()->options().target, naming, &w);
+    ExportDialog dlg(w.document()->target(), naming, &w);
     *choice = dlg.choice();
     return dlg.path();
 }
@@ -282,8 +282,7 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
     } else if (cmd == "new-neutral") {
         w.fileActions()->newNeutral(arg(0).toInt());
     } else if (cmd == "target") {
-        const ExportTarget t = parseExportTarget(arg(0).toStdString());
-        setOptions([&](PreviewOptions& o) { o.target = t; });
+        doc->setTarget(parseExportTarget(arg(0).toStdString()));
     } else if (cmd == "input") {
         const SceneKind k = parseSceneKind(arg(0).toStdString());
         setOptions([&](PreviewOptions& o) { o.input = k; });
@@ -444,7 +443,7 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         }
         ExportChoice choice;
         QString path = suggestedExport(w, &choice);
-        FormatOptions o = targetFormatOptions(preview->options().target);
+        FormatOptions o = targetFormatOptions(doc->target());
         if (!args.isEmpty()) {
             path = args[0];
             choice.format = args.size() > 1 ? args[1] : QString();
@@ -452,19 +451,18 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
             if (args.size() > 2)
                 o.layout = parseOptionalLayout(args[2].toStdString());
             // By extension; the target's own file type takes the target's settings.
-            const ExportTargetInfo& t = exportTargetInfo(preview->options().target);
+            const ExportTargetInfo& t = exportTargetInfo(doc->target());
             if (choice.format.isEmpty() && path.endsWith(QString::fromStdString(t.extension)))
-                o = targetFormatOptions(preview->options().target);
+                o = targetFormatOptions(doc->target());
         }
         out << "exported " << path << "\n";
-        noNewError(
-            w.exportLut(path, choice.format, o, preview->options().target, overwrite, strength));
+        noNewError(w.exportLut(path, choice.format, o, doc->target(), overwrite, strength));
     } else if (cmd == "save-preview") {
         settle(w);
         noNewError(w.savePreviewImage(arg(0)));
     } else if (cmd == "plot-save") {
         settle(w);
-        const Image plot = plotExportedLut(*doc, preview->options().target);
+        const Image plot = plotExportedLut(*doc, doc->target());
         noNewError(w.fileActions()->savePicture(arg(0), plot));
     } else if (cmd == "compare") {
         // Through Tools > Compare's worker, as the menu runs it; the report also opens.
@@ -532,15 +530,15 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         const PreviewOptions& o = preview->options();
         out << what << " ";
         if (what == "target")
-            out << QString::fromStdString(exportTargetInfo(o.target).key);
+            out << QString::fromStdString(exportTargetInfo(doc->target()).key);
         else if (what == "purpose")
             out << toString(doc->lutPurpose());
         else if (what == "input")
             out << toString(o.input);
         else if (what == "chain")
-            out << toString(effectivePreset(o));
+            out << toString(effectivePreset(o, doc->target()));
         else if (what == "bloom")
-            out << onOffText(bloomApplied(o));
+            out << onOffText(bloomApplied(o, doc->target()));
         else if (what.startsWith("param:"))
             out << doc->param(paramByKey(what.mid(6)).id);
         else if (what == "undo-count")

@@ -87,6 +87,8 @@ WindowActions::WindowActions(QMainWindow* window, const EditorContext& context, 
             a->setShortcutContext(Qt::ApplicationShortcut);
     showOptions(m_preview->options());
     connect(m_preview, &PreviewController::optionsChanged, this, &WindowActions::showOptions);
+    // The target is the document's: a script or the command line may change it too.
+    connect(m_doc, &Document::targetChanged, this, [this] { showOptions(m_preview->options()); });
 }
 
 void WindowActions::buildFileMenu() {
@@ -249,7 +251,10 @@ void WindowActions::buildPreviewMenu() {
         a->setCheckable(true);
         connect(a, &QAction::triggered, this, &WindowActions::applyWidgets);
     }
-    for (QComboBox* box : {m_target, m_input, m_chain, m_interp})
+    connect(m_target, &QComboBox::activated, this, [this] {
+        m_doc->setTarget(static_cast<ExportTarget>(m_target->currentData().toInt()));
+    });
+    for (QComboBox* box : {m_input, m_chain, m_interp})
         connect(box, &QComboBox::activated, this, &WindowActions::applyWidgets);
 }
 
@@ -299,7 +304,7 @@ void WindowActions::matchToReference() {
 
 void WindowActions::showPlot() {
     try {
-        PlotDialog dlg(m_window, *m_doc, m_preview->options().target, m_files);
+        PlotDialog dlg(m_window, *m_doc, m_doc->target(), m_files);
         dlg.exec();
     } catch (const std::exception& e) {
         m_prompts->reportError(tr("Cannot plot the LUT"),
@@ -324,7 +329,7 @@ CompareDialog* WindowActions::compareDialog() const {
 void WindowActions::startCompare(const QString& path) {
     // The comparison runs on a worker (over a 4K picture it takes seconds): the window stays
     // live, the status bar shows its progress with Cancel, and the report opens when it is done.
-    const CompareInput input = compareInput(*m_doc, m_preview->options().target, path);
+    const CompareInput input = compareInput(*m_doc, m_doc->target(), path);
     m_compareTask->start(
         tr("Comparing %1…").arg(QFileInfo(path).fileName()),
         [this, input](const Progress& progress) -> BackgroundTask::Delivery {
@@ -398,7 +403,6 @@ void WindowActions::applyWidgets() {
 
 PreviewOptions WindowActions::optionsFromWidgets() const {
     PreviewOptions o = m_preview->options();
-    o.target = static_cast<ExportTarget>(m_target->currentData().toInt());
     o.input = static_cast<SceneKind>(m_input->currentData().toInt());
     if (m_chain->isEnabled()) // disabled, it shows the target's fact, not the user's choice
         o.preset = static_cast<Preset>(m_chain->currentData().toInt());
@@ -412,20 +416,21 @@ PreviewOptions WindowActions::optionsFromWidgets() const {
 }
 
 void WindowActions::showOptions(const PreviewOptions& o) {
-    m_target->setCurrentIndex(m_target->findData(int(o.target)));
+    const ExportTarget target = m_doc->target();
+    m_target->setCurrentIndex(m_target->findData(int(target)));
     m_input->setCurrentIndex(m_input->findData(int(o.input)));
     // The chain is a choice for engine and grading targets on a linear scene only.
     const bool chooseChain =
-        exportTargetInfo(o.target).purpose == LutPurpose::Raw && o.input == SceneKind::Scene;
+        exportTargetInfo(target).purpose == LutPurpose::Raw && o.input == SceneKind::Scene;
     m_chain->setEnabled(chooseChain);
     setItemEnabled(m_chain, m_chain->findData(int(Preset::Smash)), !chooseChain);
-    m_chain->setCurrentIndex(m_chain->findData(int(effectivePreset(o))));
+    m_chain->setCurrentIndex(m_chain->findData(int(effectivePreset(o, target))));
     m_interp->setCurrentIndex(m_interp->findData(int(o.interpolation)));
-    m_bloom->setEnabled(bloomSwitchable(o));
-    m_bloom->setChecked(bloomApplied(o));
+    m_bloom->setEnabled(bloomSwitchable(o, target));
+    m_bloom->setChecked(bloomApplied(o, target));
     m_lut->setChecked(o.lutEnabled);
-    m_brighten->setEnabled(brightenSwitchable(o));
-    m_brighten->setChecked(brightenApplied(o));
+    m_brighten->setEnabled(brightenSwitchable(o, target));
+    m_brighten->setChecked(brightenApplied(o, target));
 }
 
 } // namespace lut::gui

@@ -112,6 +112,13 @@ Document::Document(QObject* parent) : QObject(parent), m_undo(new QUndoStack(thi
 
 Document::~Document() = default;
 
+void Document::setTarget(ExportTarget target) {
+    if (target == m_target)
+        return;
+    m_target = target;
+    emit targetChanged();
+}
+
 QString Document::displayName() const {
     return m_lutPath.isEmpty() ? tr("Untitled") : QFileInfo(m_lutPath).fileName();
 }

@@ -74,6 +74,13 @@ public:
     // lut::Error (document unchanged) when the image cannot be read or holds no patch.
     QStringList startFromScreenshot(const QString& path);
 
+    // ---- what the document is made for ------------------------------------------------------
+    // The export target (ExportTarget.h): the game's LUT, an engine strip or a grading .cube.
+    // The preview grades with its export and the window's exports default to it. A choice of
+    // output, not an edit: no undo step, and opening another LUT or picture keeps it.
+    ExportTarget target() const { return m_target; }
+    void setTarget(ExportTarget target); // targetChanged() when it differs
+
     const Lut3D& baseLut() const { return *m_base; }
     const Lut3D& effectiveLut() const { return *m_effective; }
     std::shared_ptr<const Lut3D> effectiveLutShared() const { return m_effective; }
@@ -142,6 +149,7 @@ signals:
     void modifiedChanged(bool modified);
     void imageChanged();
     void pathChanged();
+    void targetChanged();
 
 private:
     void replaceLut(Lut3D base, const QString& path, const QString& origin, const QString& format,
@@ -154,6 +162,7 @@ private:
     std::shared_ptr<const Adjustments> m_adjustmentsShared;
     Adjustments m_adjustments;
     LutPurpose m_purpose = LutPurpose::Raw;
+    ExportTarget m_target = ExportTarget::Smash;
     bool m_purposeKnown = false; // said by the file or the user (else assumed: not written)
     QString m_lutPath;
     QString m_origin;

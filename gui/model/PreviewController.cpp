@@ -27,15 +27,33 @@ QSize PreviewController::imageSize() const {
     return m_stored ? QSize(m_stored->width(), m_stored->height()) : QSize();
 }
 
-PreviewOptions PreviewController::beforeOptions(const PreviewOptions& o) {
+PreviewController::BeforeKey PreviewController::beforeKey(const PreviewOptions& o,
+                                                          ExportTarget target) {
     // What the before picture depends on: a screenshot is shown as stored; a scene goes through
-    // the chain with the neutral export (the LUT and brighten switches do not matter).
-    PreviewOptions b = o;
-    b.lutEnabled = true;
-    b.brighten = true;
+    // the target's chain with the neutral export (the LUT and brighten switches do not matter).
     if (o.input == SceneKind::Screenshot)
-        b = PreviewOptions{};
+        return {};
+    BeforeKey b{o, target};
+    b.options.lutEnabled = true;
+    b.options.brighten = true;
     return b;
+}
+
+void PreviewController::setDocument(const Document* document) {
+    if (document == m_doc)
+        return;
+    const ExportTarget before = target();
+    if (m_doc)
+        disconnect(m_doc, nullptr, this, nullptr);
+    m_doc = document;
+    if (m_doc)
+        connect(m_doc, &Document::targetChanged, this, &PreviewController::rerender);
+    if (target() != before)
+        rerender();
+}
+
+ExportTarget PreviewController::target() const {
+    return m_doc ? m_doc->target() : ExportTarget::Smash;
 }
 
 LutSource PreviewController::jobSource() const {
@@ -67,7 +85,8 @@ void PreviewController::setImage(std::shared_ptr<const Image> stored, bool store
 
 void PreviewController::requestScene() {
     m_sceneReady = false;
-    const int key = scenePreparationKey(m_options);
+    const ExportTarget target = this->target();
+    const int key = scenePreparationKey(m_options, target);
     // The same preparation with other before options keeps the scene and its proxy.
     std::shared_ptr<const Image> reuse = key == m_sceneKey ? m_scene : nullptr;
     std::shared_ptr<const Image> reuseProxy = key == m_sceneKey ? m_proxy : nullptr;
@@ -78,13 +97,14 @@ void PreviewController::requestScene() {
             requestFirstLook(key);
     }
     m_worker->request(
-        [this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options, key, reuse,
-         reuseProxy, firstLook, factor = m_proxyFactor]() -> PreviewWorker::Delivery {
+        [this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options, target, key,
+         reuse, reuseProxy, firstLook, factor = m_proxyFactor]() -> PreviewWorker::Delivery {
             std::shared_ptr<const Image> scene = reuse, proxy = reuseProxy;
             QImage before;
             try {
                 if (!scene)
-                    scene = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
+                    scene = std::make_shared<const Image>(
+                        prepareScene(*stored, isFloat, options, target));
                 // After a first look its proxy stays the proxy (onSceneReady).
                 if (!proxy && !firstLook)
                     proxy = factor > 1 ? std::make_shared<const Image>(downscale(*scene, factor))
@@ -92,8 +112,9 @@ void PreviewController::requestScene() {
                 if (options.input == SceneKind::Screenshot) {
                     before = toDisplayImage(*stored); // a screenshot's before is the file
                 } else {
-                    const TargetLut neutral = makeTargetLut(LutSource{}, options.target);
-                    before = toDisplayImage(renderBefore(*stored, *scene, options, neutral.shown));
+                    const TargetLut neutral = makeTargetLut(LutSource{}, target);
+                    before = toDisplayImage(
+                        renderBefore(*stored, *scene, options, target, neutral.shown));
                 }
             } catch (const std::exception&) {
                 // Out of memory: what can be shown is shown; the frames say what failed.
@@ -102,9 +123,9 @@ void PreviewController::requestScene() {
                 if (!proxy && !firstLook)
                     proxy = scene;
             }
-            const PreviewOptions bo = beforeOptions(options);
-            return [this, stored, key, bo, scene, proxy, before] {
-                onSceneReady(stored, key, bo, scene, proxy, before);
+            const BeforeKey bk = beforeKey(options, target);
+            return [this, stored, key, bk, scene, proxy, before] {
+                onSceneReady(stored, key, bk, scene, proxy, before);
             };
         },
         PreviewWorker::Lane::Scene);
@@ -115,24 +136,27 @@ void PreviewController::requestFirstLook(int key) {
     // scene takes ~0.4 s of CPU): the proxy scene made from the picture reduced first, and a
     // proxy-sized before picture, so the first graded frame is a proxy render away. The proxy
     // stays; the full scene brings the full-resolution before picture.
-    m_worker->request([this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options, key,
+    m_worker->request([this, stored = m_stored, isFloat = m_storedIsFloat, options = m_options,
+                       target = target(), key,
                        factor = m_proxyFactor]() -> PreviewWorker::Delivery {
         std::shared_ptr<const Image> proxy;
         QImage before;
         try {
             const Image small = downscale(*stored, factor);
-            proxy = std::make_shared<const Image>(prepareScene(small, isFloat, options));
+            proxy = std::make_shared<const Image>(prepareScene(small, isFloat, options, target));
             if (options.input == SceneKind::Screenshot) {
                 before = toDisplayImage(small);
             } else {
-                const TargetLut neutral = makeTargetLut(LutSource{}, options.target);
-                before = toDisplayImage(renderBefore(small, *proxy, options, neutral.shown));
+                const TargetLut neutral = makeTargetLut(LutSource{}, target);
+                before =
+                    toDisplayImage(renderBefore(small, *proxy, options, target, neutral.shown));
             }
         } catch (const std::exception&) {
             return {}; // the full scene still comes, or says what failed
         }
         return [this, stored, key, proxy, before] {
-            if (stored != m_stored || key != scenePreparationKey(m_options) || m_sceneReady)
+            if (stored != m_stored || key != scenePreparationKey(m_options, this->target()) ||
+                m_sceneReady)
                 return; // replaced meanwhile, or the full scene came first
             m_proxy = proxy;
             m_proxyReady = true;
@@ -146,12 +170,12 @@ void PreviewController::requestFirstLook(int key) {
 }
 
 void PreviewController::onSceneReady(const std::shared_ptr<const Image>& stored, int key,
-                                     const PreviewOptions& before,
+                                     const BeforeKey& before,
                                      const std::shared_ptr<const Image>& scene,
                                      const std::shared_ptr<const Image>& proxy,
                                      const QImage& beforeImage) {
-    if (stored != m_stored || key != scenePreparationKey(m_options) ||
-        !(before == beforeOptions(m_options)))
+    if (stored != m_stored || key != scenePreparationKey(m_options, target()) ||
+        !(before == beforeKey(m_options, target())))
         return; // replaced meanwhile: a newer request is on its way
     if (scene != m_scene) {
         retire(m_beforeLutSource[0]);
@@ -167,7 +191,7 @@ void PreviewController::onSceneReady(const std::shared_ptr<const Image>& stored,
     m_scene = scene;
     m_proxy = keptProxy;
     m_sceneKey = key;
-    m_sceneBeforeOptions = before;
+    m_sceneBefore = before;
     if (m_proxy == scene)
         m_proxyFactor = 1;
     m_before = beforeImage;
@@ -189,8 +213,12 @@ void PreviewController::setOptions(const PreviewOptions& options) {
         return;
     m_options = options;
     emit optionsChanged(m_options);
-    if (m_stored && (scenePreparationKey(m_options) != m_sceneKey ||
-                     !(beforeOptions(m_options) == m_sceneBeforeOptions)))
+    rerender();
+}
+
+void PreviewController::rerender() {
+    if (m_stored && (scenePreparationKey(m_options, target()) != m_sceneKey ||
+                     !(beforeKey(m_options, target()) == m_sceneBefore)))
         requestScene();
     else
         requestPreview();
@@ -209,36 +237,38 @@ bool PreviewController::isCurrent(const PreviewFrame& frame) const {
         return false;
     const auto& scene = frame.proxyFactor > 1 ? m_proxy : m_scene;
     return frame.scene && frame.scene == scene && frame.source == jobSource() &&
-           frame.options == m_options;
+           frame.target == target() && frame.options == m_options;
 }
 
 std::shared_ptr<const TargetLut> PreviewController::targetLut() const {
-    if (m_target && m_targetSource == jobSource() && m_targetKind == m_options.target)
+    if (m_target && m_targetSource == jobSource() && m_targetKind == target())
         return m_target;
     return nullptr;
 }
 
 std::shared_ptr<const Image>
 PreviewController::cachedBeforeLut(const std::shared_ptr<const Image>& scene,
-                                   const PreviewOptions& options) const {
+                                   const PreviewOptions& options, ExportTarget target) const {
     const auto& cached = m_beforeLutSource[scene == m_scene ? 0 : 1];
     if (!cached || cached->scene != scene)
         return nullptr;
-    if (cached->options == options || sameBeforeLut(cached->options, options))
+    if ((cached->options == options && cached->target == target) ||
+        sameBeforeLut(cached->options, cached->target, options, target))
         return cached->beforeLut;
     return nullptr;
 }
 
 PreviewJob PreviewController::makeJob(bool proxy) const {
     PreviewJob j;
+    j.target = target();
     if (m_stored && (proxy ? m_proxyReady : m_sceneReady)) {
         j.scene = proxy ? m_proxy : m_scene;
         j.proxyFactor = proxy ? m_proxyFactor : 1;
-        j.beforeLut = cachedBeforeLut(j.scene, m_options);
+        j.beforeLut = cachedBeforeLut(j.scene, m_options, j.target);
     }
     j.source = jobSource();
     j.options = m_options;
-    j.target = targetLut();
+    j.targetLut = targetLut();
     return j;
 }
 
@@ -274,11 +304,11 @@ void PreviewController::requestPreview() {
 }
 
 void PreviewController::onFrame(const std::shared_ptr<const PreviewFrame>& frame) {
-    if (frame->target && frame->target != m_target && frame->source == jobSource() &&
-        frame->options.target == m_options.target) {
-        m_target = frame->target;
+    if (frame->targetLut && frame->targetLut != m_target && frame->source == jobSource() &&
+        frame->target == target()) {
+        m_target = frame->targetLut;
         m_targetSource = frame->source;
-        m_targetKind = frame->options.target;
+        m_targetKind = frame->target;
         emit targetLutChanged(m_target);
     }
     if (!frame->scene || !(m_sceneReady || m_proxyReady) ||
@@ -337,20 +367,22 @@ std::function<Image(const Progress&)> PreviewController::fullResolutionRenderer(
     if (hasFullResolutionFrame())
         return [frame = m_frame](const Progress&) { return frame->image; };
     std::shared_ptr<const Image> scene = m_sceneReady ? m_scene : nullptr;
-    std::shared_ptr<const Image> beforeLut = scene ? cachedBeforeLut(scene, m_options) : nullptr;
-    return [stored = m_stored, isFloat = m_storedIsFloat, options = m_options, scene, beforeLut,
-            target = targetLut(), source = jobSource()](const Progress& progress) {
+    const ExportTarget target = this->target();
+    std::shared_ptr<const Image> beforeLut =
+        scene ? cachedBeforeLut(scene, m_options, target) : nullptr;
+    return [stored = m_stored, isFloat = m_storedIsFloat, options = m_options, target, scene,
+            beforeLut, targetLut = targetLut(), source = jobSource()](const Progress& progress) {
         std::shared_ptr<const Image> s = scene, b = beforeLut;
         if (!s)
-            s = std::make_shared<const Image>(prepareScene(*stored, isFloat, options));
+            s = std::make_shared<const Image>(prepareScene(*stored, isFloat, options, target));
         progress.check("preview");
         if (!b)
-            b = std::make_shared<const Image>(renderBeforeLut(*s, options));
+            b = std::make_shared<const Image>(renderBeforeLut(*s, options, target));
         progress.check("preview");
-        auto t = target ? target
-                        : std::make_shared<const TargetLut>(makeTargetLut(source, options.target));
+        auto t = targetLut ? targetLut
+                           : std::make_shared<const TargetLut>(makeTargetLut(source, target));
         progress.check("preview");
-        return renderFromLut(*b, options, t->shown).image;
+        return renderFromLut(*b, options, target, t->shown).image;
     };
 }
 

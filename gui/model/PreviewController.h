@@ -1,8 +1,9 @@
 #pragma once
-// The editor's preview without widgets: the options, the stored image and its prepared scene and
-// proxy, the before picture, the before-LUT cache, the target's export (the LUT the preview grades
-// with), the worker thread, the frames and their timings. The window gives it the image and the
-// document's LUT source and draws what it delivers; tests drive it headless.
+// The editor's preview without widgets: the options, the document's export target, the stored image
+// and its prepared scene and proxy, the before picture, the before-LUT cache, the target's export
+// (the LUT the preview grades with), the worker thread, the frames and their timings. The window
+// gives it the image and the document's LUT source and draws what it delivers; tests drive it
+// headless.
 //
 // What runs where: on a new image, or options that change how the scene is prepared, the worker
 // prepares the scene (PreviewRenderer.h: ungrade, decode...), its proxy (lut::downscale, at most
@@ -15,9 +16,11 @@
 // for a screenshot the reduction comes before the ungrading); the full scene and before picture
 // follow. A
 // render first makes the target's export of the document (ExportTarget.h, cached while the
-// document and target stay), then the pipeline; the stages before the LUT are cached per scene
+// document and target stay; the target is the document's, read when a job is made, and a change
+// of it re-renders), then the pipeline; the stages before the LUT are cached per scene
 // (full and proxy) and reused while lut::Pipeline::sameBeforeLut says they still apply, so a LUT
 // edit re-runs only the LUT part. The UI thread never renders.
+#include "Document.h"
 #include "PreviewFrame.h"
 #include "PreviewRenderer.h"
 
@@ -26,6 +29,7 @@
 #include <QImage>
 #include <QList>
 #include <QObject>
+#include <QPointer>
 #include <QSize>
 
 #include <functional>
@@ -46,6 +50,10 @@ public:
     // (lut::formats::ImageInfo::isFloat). A new image drops the frames, the caches and the before
     // picture (imageChanged); the worker then prepares the scene and the first frames.
     void setImage(std::shared_ptr<const Image> stored, bool storedIsFloat);
+    // The document whose export target the preview grades for (Document::target), followed on
+    // Document::targetChanged; without one (null), the Smash target.
+    void setDocument(const Document* document);
+    ExportTarget target() const;
     void setSource(LutSource source);
     const LutSource& source() const { return m_source; }
     const PreviewOptions& options() const { return m_options; }
@@ -68,7 +76,8 @@ public:
     // The latest frame delivered for the current image (a proxy or full resolution; null after
     // an image change). Failed renders do not replace it.
     std::shared_ptr<const PreviewFrame> currentFrame() const { return m_frame; }
-    // Whether the frame was made from the current scene (or its proxy), source and options.
+    // Whether the frame was made from the current scene (or its proxy), source, target and
+    // options.
     bool isCurrent(const PreviewFrame& frame) const;
     // The target's export of the current source (null until the worker made it).
     std::shared_ptr<const TargetLut> targetLut() const;
@@ -99,37 +108,47 @@ signals:
     // Every render the worker finishes for the current image; frame->error says if it failed.
     void frameReady(std::shared_ptr<const lut::gui::PreviewFrame> frame);
     void optionsChanged(const lut::gui::PreviewOptions& options);
-    // A new export of the current source and target (the clipping count, the LUT dock).
+    // A new export of the current source and the document's target (the clipping count, the LUT
+    // dock).
     void targetLutChanged(std::shared_ptr<const lut::gui::TargetLut> target);
 
 private:
+    // What the before picture depends on (a screenshot's: nothing but the file).
+    struct BeforeKey {
+        PreviewOptions options;
+        ExportTarget target = ExportTarget::Smash;
+        bool operator==(const BeforeKey&) const = default;
+    };
+    static BeforeKey beforeKey(const PreviewOptions& options, ExportTarget target);
     LutSource jobSource() const; // the document's source, or neutral when the LUT is off
     // Lets go of a large frame, scene or picture: freed on the worker (PreviewWorker::retire).
     template <class T> void retire(std::shared_ptr<T>& p);
     void requestScene();
     void requestFirstLook(int key);
-    void onSceneReady(const std::shared_ptr<const Image>& stored, int key,
-                      const PreviewOptions& beforeOptions,
+    void onSceneReady(const std::shared_ptr<const Image>& stored, int key, const BeforeKey& before,
                       const std::shared_ptr<const Image>& scene,
-                      const std::shared_ptr<const Image>& proxy, const QImage& before);
+                      const std::shared_ptr<const Image>& proxy, const QImage& beforeImage);
     void requestPreview();
+    // Options or target changed: a new scene when its preparation or before picture changed.
+    void rerender();
     PreviewJob makeJob(bool proxy) const;
     void submit(PreviewJob job);
     void onFrame(const std::shared_ptr<const PreviewFrame>& frame);
     std::shared_ptr<const Image> cachedBeforeLut(const std::shared_ptr<const Image>& scene,
-                                                 const PreviewOptions& options) const;
-    static PreviewOptions beforeOptions(const PreviewOptions& options);
+                                                 const PreviewOptions& options,
+                                                 ExportTarget target) const;
 
     PreviewWorker* m_worker;
     PreviewOptions m_options;
+    QPointer<const Document> m_doc;
     LutSource m_source;
     std::shared_ptr<const Image> m_stored;
     bool m_storedIsFloat = false;
-    // The prepared scene, made for scene key m_sceneKey and before options m_beforeOptions.
+    // The prepared scene, made for scene key m_sceneKey and before picture key m_sceneBefore.
     std::shared_ptr<const Image> m_scene;
     std::shared_ptr<const Image> m_proxy;
     int m_sceneKey = -1;
-    PreviewOptions m_sceneBeforeOptions;
+    BeforeKey m_sceneBefore;
     int m_proxyFactor = 1;
     bool m_sceneReady = false; // the worker delivered the scene for the current options
     bool m_proxyReady = false; // ... or at least its proxy (a large picture's first look)

@@ -30,22 +30,23 @@ std::shared_ptr<const PreviewFrame> renderFrame(const PreviewJob& job) {
     frame->serial = job.serial;
     frame->scene = job.scene;
     frame->source = job.source;
+    frame->target = job.target;
     frame->options = job.options;
     QElapsedTimer timer;
     timer.start();
     try {
-        frame->target =
-            job.target
-                ? job.target
-                : std::make_shared<const TargetLut>(makeTargetLut(job.source, job.options.target));
+        frame->targetLut =
+            job.targetLut
+                ? job.targetLut
+                : std::make_shared<const TargetLut>(makeTargetLut(job.source, job.target));
         frame->targetMilliseconds = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         if (job.scene && !job.scene->empty()) {
             frame->reusedBeforeLut = job.beforeLut != nullptr;
-            frame->beforeLut =
-                job.beforeLut
-                    ? job.beforeLut
-                    : std::make_shared<const Image>(renderBeforeLut(*job.scene, job.options));
-            PreviewResult r = renderFromLut(*frame->beforeLut, job.options, frame->target->shown);
+            frame->beforeLut = job.beforeLut ? job.beforeLut
+                                             : std::make_shared<const Image>(renderBeforeLut(
+                                                   *job.scene, job.options, job.target));
+            PreviewResult r =
+                renderFromLut(*frame->beforeLut, job.options, job.target, frame->targetLut->shown);
             frame->image = std::move(r.image);
             frame->milliseconds = r.milliseconds;
             frame->report = QString::fromStdString(r.report);

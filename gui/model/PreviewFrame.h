@@ -17,14 +17,15 @@ namespace lut::gui {
 struct PreviewJob {
     std::shared_ptr<const Image> scene; // prepared frame (full size or proxy)
     LutSource source;                   // the document (neutral when the LUT is switched off)
+    ExportTarget target = ExportTarget::Smash; // the document's (Document::target)
     PreviewOptions options;
     int proxyFactor = 1; // 1 = full resolution
     quint64 serial = 0;
     // The scene after the stages before the LUT (renderBeforeLut), when the caller has it for
-    // this scene and these options; else the worker makes it and returns it in the frame.
+    // this scene, target and options; else the worker makes it and returns it in the frame.
     std::shared_ptr<const Image> beforeLut;
     // The target's export of this source, when the caller has it; else the worker makes it.
-    std::shared_ptr<const TargetLut> target;
+    std::shared_ptr<const TargetLut> targetLut;
 };
 
 struct PreviewFrame {
@@ -45,9 +46,10 @@ struct PreviewFrame {
     // and cache the before-LUT frame and the export.
     std::shared_ptr<const Image> scene;
     LutSource source;
+    ExportTarget target = ExportTarget::Smash;
     PreviewOptions options;
     std::shared_ptr<const Image> beforeLut;
-    std::shared_ptr<const TargetLut> target;
+    std::shared_ptr<const TargetLut> targetLut;
 };
 
 // 8-bit display copy of a display-encoded float image through lut::toUnorm8.

@@ -96,8 +96,9 @@ private slots:
         QVERIFY(frame);
         QCOMPARE(frame->proxyFactor, 1);
         const PreviewOptions o = w.previewOptions();
-        const Image want = renderPreview(prepareScene(*w.document()->storedImage(), false, o), o,
-                                         makeTargetLut(w.document()->lutSource(), o.target).shown)
+        const ExportTarget t = w.document()->target();
+        const Image want = renderPreview(prepareScene(*w.document()->storedImage(), false, o, t), o,
+                                         t, makeTargetLut(w.document()->lutSource(), t).shown)
                                .image;
         QVERIFY(frame->image.pixels() == want.pixels());
         // The displayed 8-bit image is the same pixels through toUnorm8.
@@ -169,7 +170,7 @@ private slots:
         target->setFocus();
         while (target->currentData().toInt() != int(ExportTarget::Grading))
             QTest::keyClick(target, Qt::Key_Down);
-        QCOMPARE(w.previewOptions().target, ExportTarget::Grading);
+        QCOMPARE(w.document()->target(), ExportTarget::Grading);
         QVERIFY(!brighten->isEnabled());
         QVERIFY(!brighten->isChecked());
         // Back to Smash: the choice (off) is kept.
@@ -439,8 +440,9 @@ private slots:
         doc.openImage(samplePath("sample_scene.png"));
         doc.openLut(samplePath("sample_grade.cube"));
         const PreviewOptions o;
-        const Image want = renderPreview(prepareScene(*doc.storedImage(), false, o), o,
-                                         makeTargetLut(doc.lutSource(), o.target).shown)
+        const ExportTarget t = doc.target(); // Smash, as the window's
+        const Image want = renderPreview(prepareScene(*doc.storedImage(), false, o, t), o, t,
+                                         makeTargetLut(doc.lutSource(), t).shown)
                                .image;
         const formats::LoadedImage got = formats::readImage(preview.toStdString());
         QCOMPARE(got.image.width(), want.width());

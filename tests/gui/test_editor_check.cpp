@@ -94,9 +94,7 @@ private slots:
         MainWindow w;
         w.setInteractiveErrors(false);
         w.show();
-        PreviewOptions o = w.previewOptions();
-        o.target = ExportTarget::Grading; // the export is the LUT itself
-        w.setPreviewOptions(o);
+        w.document()->setTarget(ExportTarget::Grading); // the export is the LUT itself
         QVERIFY(w.openImageFile(writeShot(dir)));
         QVERIFY(w.openLutFile(writeFoldCube(dir)));
         settle(w);
@@ -146,7 +144,7 @@ private slots:
         // The neutral document, Smash target: the compensated game LUT, judged by what the game
         // shows, passes (its own table fails: compressed under 0.73 and clipped there).
         settle(w);
-        QCOMPARE(w.previewOptions().target, ExportTarget::Smash);
+        QCOMPARE(w.document()->target(), ExportTarget::Smash);
         auto report = w.checkPanel()->model()->report();
         QVERIFY(report);
         QVERIFY2(report->status() == CheckStatus::Pass, qPrintable(w.checkPanel()->verdictText()));

@@ -28,6 +28,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -293,9 +294,10 @@ private slots:
         w.show();
         QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
         QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
-        PreviewOptions o = w.preview()->options();
-        o.target = ExportTarget::Grading;
-        w.setPreviewOptions(o);
+        w.document()->setTarget(ExportTarget::Grading);
+        // The toolbar's target follows the document's (as after a script or --target).
+        QCOMPARE(w.findChild<QComboBox*>("target")->currentData().toInt(),
+                 int(ExportTarget::Grading));
         w.waitForPreview();
 
         // Plot: lut::plotLut of the export, shown.

@@ -483,7 +483,7 @@ private slots:
         Document doc;
         doc.openImage(path);
         const double readMs = sync.nsecsElapsed() / 1e6;
-        prepareScene(*doc.storedImage(), false, w.previewOptions());
+        prepareScene(*doc.storedImage(), false, w.previewOptions(), w.document()->target());
         qInfo("the same on the calling thread: read %.1f ms, read + scene %.1f ms", readMs,
               sync.nsecsElapsed() / 1e6);
     }

@@ -241,16 +241,16 @@ private slots:
         s.lut = std::make_shared<const Lut3D>(formats::readLut(nutexb.toStdString()).toLut3D());
         const Image want = Pipeline(s).run(loaded.image);
 
-        PreviewOptions o; // the defaults: Smash, screenshot
-        const Image scene = prepareScene(*doc.storedImage(), false, o);
-        const TargetLut target = makeTargetLut(doc.lutSource(), o.target);
-        const PreviewResult got = renderPreview(scene, o, target.shown);
+        PreviewOptions o; // the defaults: a screenshot; and the document's target: Smash
+        const Image scene = prepareScene(*doc.storedImage(), false, o, doc.target());
+        const TargetLut target = makeTargetLut(doc.lutSource(), doc.target());
+        const PreviewResult got = renderPreview(scene, o, doc.target(), target.shown);
         QCOMPARE(got.image.width(), want.width());
         QCOMPARE(got.image.height(), want.height());
         QVERIFY(got.image.pixels() == want.pixels());
         // And the LUT matters: the neutral document's preview differs.
-        const TargetLut neutral = makeTargetLut(LutSource{}, o.target);
-        QVERIFY(renderPreview(scene, o, neutral.shown).image.pixels() != want.pixels());
+        const auto neutral = makeTargetLut(LutSource{}, doc.target()).shown;
+        QVERIFY(renderPreview(scene, o, doc.target(), neutral).image.pixels() != want.pixels());
     }
 
     void everyTargetPreviewsTheFileItWrites() {
@@ -334,17 +334,16 @@ private slots:
                 for (SceneKind input : {SceneKind::Screenshot, SceneKind::Scene})
                     for (bool bloom : {true, false}) {
                         PreviewOptions o;
-                        o.target = target;
                         o.preset = preset;
                         o.input = input;
                         o.bloom = bloom;
-                        const Image scene = prepareScene(*doc.storedImage(), true, o);
-                        const Image whole = renderPreview(scene, o, lut).image;
-                        const Image before = renderBeforeLut(scene, o);
-                        const Image split = renderFromLut(before, o, lut).image;
+                        const Image scene = prepareScene(*doc.storedImage(), true, o, target);
+                        const Image whole = renderPreview(scene, o, target, lut).image;
+                        const Image before = renderBeforeLut(scene, o, target);
+                        const Image split = renderFromLut(before, o, target, lut).image;
                         QVERIFY2(whole.pixels() == split.pixels(),
                                  qPrintable(QStringLiteral("%1 %2 bloom %3")
-                                                .arg(toString(effectivePreset(o)))
+                                                .arg(toString(effectivePreset(o, target)))
                                                 .arg(toString(input))
                                                 .arg(bloom)));
                     }
@@ -356,25 +355,25 @@ private slots:
         // display-only chain.
         Document doc;
         doc.openImage(samplePath("sample_scene.exr"));
-        PreviewOptions smash;
+        constexpr ExportTarget kSmash = ExportTarget::Smash, kGrading = ExportTarget::Grading;
+        PreviewOptions smash; // for the Smash target
         smash.input = SceneKind::Scene;
         smash.bloom = false;
         smash.brighten = false;
         smash.lutEnabled = false;
-        PreviewOptions none = smash;
-        none.target = ExportTarget::Grading;
+        PreviewOptions none = smash; // for the Grading target
         none.preset = Preset::None;
-        const Image smashScene = prepareScene(*doc.storedImage(), true, smash);
-        const Image a = renderPreview(smashScene, smash, nullptr).image;
+        const Image smashScene = prepareScene(*doc.storedImage(), true, smash, kSmash);
+        const Image a = renderPreview(smashScene, smash, kSmash, nullptr).image;
         const Image b = Pipeline(Preset::None).run(*doc.storedImage());
         double worst = 0;
         for (std::size_t i = 0; i < a.pixels().size(); ++i)
             if (i % 4 != 3 && b.pixels()[i] < 1.0f) // values clipped by display are not compared
                 worst = std::max(worst, std::abs(double(a.pixels()[i]) - double(b.pixels()[i])));
         QVERIFY2(worst < 2e-3, qPrintable(QString::number(worst)));
-        QVERIFY(!showsTheExport(smash)); // an inspection view, and the window says so
+        QVERIFY(!showsTheExport(smash, kSmash)); // an inspection view, and the window says so
         smash.brighten = true;
-        const Image c = renderPreview(smashScene, smash, nullptr).image;
+        const Image c = renderPreview(smashScene, smash, kSmash, nullptr).image;
         QVERIFY(c.pixel(160, 150)[1] > a.pixel(160, 150)[1] + 0.05f); // about 2x in linear light
         // Brighten off grades with smashWithoutBrighten(LUT): the same picture as the pipeline
         // run with that LUT directly.
@@ -384,23 +383,24 @@ private slots:
         PipelineSettings direct;
         direct.bloom = false;
         direct.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(doc.effectiveLut()));
-        QVERIFY(renderPreview(smashScene, smash, doc.effectiveLutShared()).image.pixels() ==
+        QVERIFY(renderPreview(smashScene, smash, kSmash, doc.effectiveLutShared()).image.pixels() ==
                 Pipeline(direct).run(smashScene).pixels());
         // Only the game chain has a brighten step; it is switchable for every interpolation.
         for (Interpolation m :
              {Interpolation::Trilinear, Interpolation::Tetrahedral, Interpolation::Nearest}) {
             smash.interpolation = m;
-            QVERIFY(brightenSwitchable(smash));
+            QVERIFY(brightenSwitchable(smash, kSmash));
         }
-        QVERIFY(!brightenApplied(smash));
+        QVERIFY(!brightenApplied(smash, kSmash));
         none.brighten = true;
-        QVERIFY(!brightenSwitchable(none));
-        QVERIFY(!brightenApplied(none));
+        QVERIFY(!brightenSwitchable(none, kGrading));
+        QVERIFY(!brightenApplied(none, kGrading));
         // Brighten off with another chain changes nothing.
         none.brighten = false;
-        QVERIFY(pipelineSettings(none, doc.effectiveLutShared()).lut == doc.effectiveLutShared());
+        QVERIFY(pipelineSettings(none, kGrading, doc.effectiveLutShared()).lut ==
+                doc.effectiveLutShared());
         none.lutEnabled = true;
-        QVERIFY(showsTheExport(none));
+        QVERIFY(showsTheExport(none, kGrading));
     }
 
     void sliderMappingRoundTrips() {

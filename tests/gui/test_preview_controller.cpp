@@ -12,6 +12,7 @@
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace lut;
@@ -48,14 +49,15 @@ LutSource source(std::shared_ptr<const Lut3D> lut) {
     return s;
 }
 
-// Grading target (.cube: the file holds the LUT exactly) on a linear scene with the filmic
-// chain: the pipeline's pilot preset with the LUT itself.
-PreviewOptions gradingFilmic() {
+// Grading target (.cube: the file holds the LUT exactly; the document's) on a linear scene with
+// the filmic chain: the pipeline's pilot preset with the LUT itself.
+void gradingFilmic(PreviewController& c, Document& doc) {
+    doc.setTarget(ExportTarget::Grading);
+    c.setDocument(&doc);
     PreviewOptions o;
-    o.target = ExportTarget::Grading;
     o.input = SceneKind::Scene;
     o.preset = Preset::Pilot;
-    return o;
+    c.setOptions(o);
 }
 
 // The independent path: the pipeline with the same settings, whole.
@@ -83,8 +85,9 @@ class PreviewControllerTest : public QObject {
     Q_OBJECT
 private slots:
     void newSceneGivesBeforeThenProxyThenFullFrame() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         const auto lut = makeLut(1.2f);
         c.setSource(source(lut));
         c.waitForIdle();
@@ -159,8 +162,9 @@ private slots:
     }
 
     void lutEditsReuseTheStagesBeforeTheLut() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         const auto scene = makeScene(900, 90, 1.0f); // no proxy
         c.setImage(scene, true);
         c.waitForFullResolution();
@@ -195,8 +199,9 @@ private slots:
     }
 
     void whileInteractiveOnlyProxiesThenTheFullFrame() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         c.setImage(makeScene(2100, 60, 1.0f), true); // proxy 1/3
         c.waitForFullResolution();
         FrameLog log(c);
@@ -218,8 +223,9 @@ private slots:
     }
 
     void framesOfAReplacedImageAreDropped() {
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         const auto a = makeScene(1500, 80, 0.3f);
         const auto b = makeScene(1500, 80, 1.0f);
         QSignalSpy before(&c, &PreviewController::beforeReady);
@@ -279,12 +285,89 @@ private slots:
                     .pixels());
     }
 
+    void documentTargetChangeRerendersWithThatTargetsExport() {
+        // The target is the document's (issue 26): setting it re-renders the preview with that
+        // target's export, the frame a controller whose document had the target from the start
+        // gives, and the pipeline's pixels with the LUT the .cube export holds exactly.
+        const auto scene = makeScene(400, 60, 1.0f); // no proxy
+        const auto lut = makeLut(1.2f);
+        PreviewOptions o;
+        o.input = SceneKind::Scene;
+        o.preset = Preset::Pilot; // the engine chain, used by the Grading target only
+        Document doc;
+        QCOMPARE(doc.target(), ExportTarget::Smash); // the default
+        PreviewController c;
+        c.setDocument(&doc);
+        c.setOptions(o);
+        c.setSource(source(lut));
+        c.setImage(scene, true);
+        c.waitForFullResolution();
+        const auto smashFrame = c.currentFrame();
+        QCOMPARE(smashFrame->target, ExportTarget::Smash);
+
+        QSignalSpy changed(&doc, &Document::targetChanged);
+        FrameLog log(c);
+        doc.setTarget(ExportTarget::Grading);
+        QCOMPARE(changed.count(), 1);
+        doc.setTarget(ExportTarget::Grading); // the same value: no signal
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(c.target(), ExportTarget::Grading);
+        QVERIFY(!c.isCurrent(*smashFrame));
+        c.waitForIdle(); // no request from here: the controller re-rendered on the signal
+        QVERIFY(!log.frames.isEmpty());
+        const auto gradingFrame = c.currentFrame();
+        QVERIFY(c.isCurrent(*gradingFrame));
+        QCOMPARE(gradingFrame->target, ExportTarget::Grading);
+        QCOMPARE(gradingFrame->proxyFactor, 1);
+        const Image want = pipelineRun(*scene, lut, Preset::Pilot, true);
+        QVERIFY(gradingFrame->image.pixels() == want.pixels());
+        QVERIFY(smashFrame->image.pixels() != want.pixels()); // the target matters here
+        // The before picture follows the target's chain too (the neutral LUT through it).
+        const Image neutral = pipelineRun(*scene, nullptr, Preset::Pilot, true);
+        QCOMPARE(qGreen(c.beforeImage().pixel(200, 30)), int(toUnorm8(neutral.pixel(200, 30)[1])));
+
+        Document fromStart;
+        fromStart.setTarget(ExportTarget::Grading);
+        PreviewController d;
+        d.setDocument(&fromStart);
+        d.setOptions(o);
+        d.setSource(source(lut));
+        d.setImage(scene, true);
+        d.waitForFullResolution();
+        QVERIFY(d.currentFrame()->image.pixels() == gradingFrame->image.pixels());
+        QVERIFY(d.targetLut() && c.targetLut());
+        QVERIFY(d.targetLut()->shown->entries() == c.targetLut()->shown->entries());
+
+        // Back to Smash: the first frame's pixels again, bit for bit.
+        doc.setTarget(ExportTarget::Smash);
+        QCOMPARE(changed.count(), 2);
+        c.waitForIdle();
+        QVERIFY(c.isCurrent(*c.currentFrame()));
+        QVERIFY(c.currentFrame()->image.pixels() == smashFrame->image.pixels());
+    }
+
+    void documentTargetIsAChoiceNotAnEdit() {
+        // Not an undo step, not a modification, and kept when another LUT is opened.
+        Document doc;
+        doc.setTarget(ExportTarget::Engine);
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QVERIFY(!doc.isModified());
+        doc.newNeutral(17);
+        QCOMPARE(doc.target(), ExportTarget::Engine);
+        LutFile file;
+        file.cube = Lut3D::identity(5);
+        doc.adoptLut(file, QStringLiteral("other.cube"));
+        QCOMPARE(doc.target(), ExportTarget::Engine);
+        QCOMPARE(PreviewController().target(), ExportTarget::Smash); // no document
+    }
+
     void fullResolutionImageWithOrWithoutAFrame() {
         const auto scene = makeScene(1200, 50, 1.0f);
         const auto lut = makeLut(1.3f);
         const Image want = pipelineRun(*scene, lut, Preset::Pilot, true);
+        Document doc;
         PreviewController c;
-        c.setOptions(gradingFilmic());
+        gradingFilmic(c, doc);
         c.setSource(source(lut));
         c.setImage(scene, true);
         QVERIFY(c.renderFullResolution().pixels() == want.pixels()); // no frame yet: rendered
