@@ -368,6 +368,12 @@ TEST(ImagePlausibility, IffTilesWhoseRunsOverrunTheTileAreRefused) {
                 HasSubstr("depth.iff: IFF header (TBHD) declares a depth-only image with 101 in "
                           "its bytes field"));
 
+    // Colour channels with the "black" flag: asserted and aborted the same way.
+    std::string black = iff(good);
+    black.replace(12 + 8 + 12, 4, be32(0x11));
+    writeBytes(dir + "/black.iff", black);
+    EXPECT_THAT(refusal(dir + "/black.iff"),
+                HasSubstr("black.iff: IFF header (TBHD) flags colour channels and 'black' (17)"));
     // An origin other than (0, 0): OpenImageIO 2.4 copied a tile row of -51 bytes.
     std::string origin = iff(good);
     origin.replace(12 + 8 + 24, 4, be32(33));

@@ -341,6 +341,10 @@ DeclaredImage scanIff(const HeaderBytes& b, const std::string& path) {
                 throw Error(path + ": IFF header (TBHD) declares a depth-only image with " +
                             std::to_string(bytes) +
                             " in its bytes field, where only 0 (32-bit depth) is valid (corrupt)");
+            // Colour with the "black" flag (16): asserted the same way.
+            if (channels > 0 && (flags & 16))
+                throw Error(path + ": IFF header (TBHD) flags colour channels and 'black' (" +
+                            std::to_string(flags) + "), which exclude each other (corrupt)");
             // The image's origin: OpenImageIO 2.4 takes it as the data window's and then cuts
             // tiles as if it were 0 (a fuzzed x of 33 in a 16-wide image: memcpy of -51 bytes).
             const std::uint64_t x = len >= 32 ? b.be(at + 32, 4) : 0;
