@@ -135,9 +135,10 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
             const int valueAt = big ? 12 : 8;
             // Division, not count * size: a BigTIFF count is 64 bits, and 2^62 LONGs multiply
             // to 0 (a fuzzed file went on to loop over 2^62 strip counts).
-            const bool inline_ = size > 0 && count <= static_cast<std::uint64_t>(offsetSize / size);
+            const bool inline_ =
+                size > 0 && count > 0 && count <= static_cast<std::uint64_t>(offsetSize / size);
             auto value = [&](std::uint64_t k) -> std::uint64_t {
-                if (size <= 0)
+                if (size <= 0 || k >= count) // no such value (a count of 0 has none inline)
                     return 0;
                 if (inline_)
                     return field(i, valueAt + static_cast<int>(k) * size, std::min(size, 8));
