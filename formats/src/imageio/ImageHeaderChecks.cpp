@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <limits>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -214,8 +215,12 @@ DeclaredImage scanExr(const HeaderBytes& b, const std::string& path) {
             p.width = static_cast<std::uint64_t>(x1 - x0 + 1);
             p.height = static_cast<std::uint64_t>(y1 - y0 + 1);
             p.channels = channels;
-            p.storedBytes = static_cast<std::uint64_t>(
-                static_cast<double>(p.width) * static_cast<double>(p.height) * bytesPerPixel);
+            // In double (a 2^31 x 2^31 window overflows 64 bits); converting a double past 2^64
+            // is undefined (UBSan, image_oiio), so it saturates.
+            const double stored =
+                static_cast<double>(p.width) * static_cast<double>(p.height) * bytesPerPixel;
+            p.storedBytes = stored >= 1.8e19 ? std::numeric_limits<std::uint64_t>::max()
+                                             : static_cast<std::uint64_t>(stored);
             // clang-format off
             static const std::pair<double, const char*> kCodecs[] = {
                 {1.0, "uncompressed"}, {64.0, "RLE"}, {1032.0, "ZIPS"}, {1032.0, "ZIP"},
