@@ -44,7 +44,7 @@ for fmt in "${formats[@]}"; do
   rm -rf "$work"
   mkdir -p "$work" "$findings"
   cp "$root/tests/fuzz/corpus/image_oiio/$fmt"-* "$work/" 2>/dev/null || true
-  cp "$root/tests/data/fuzz-regress/image_oiio/"*-"$fmt"-* "$work/" 2>/dev/null || true
+  cp "$root/tests/data/fuzz-regress/image_oiio/$fmt"-* "$root/tests/data/fuzz-regress/image_oiio/"*-"$fmt"-* "$work/" 2>/dev/null || true
   seeds=$(ls "$work" | wc -l)
   [ "$seeds" -gt 0 ] || { echo "fuzz-nightly: no seeds for $fmt"; failed+=("$fmt(no seeds)"); continue; }
   log="$build/findings/image_oiio-$fmt.log"
