@@ -283,6 +283,13 @@ TEST(ImagePlausibility, ExrAttributesMustBeTheSizeTheirHeaderDeclares) {
                                          attr("preview", "preview", le32(30000) + le32(30000), 8)));
     EXPECT_THAT(refusal(dir + "/preview.exr"),
                 HasSubstr("preview.exr: OpenEXR header attribute 'preview' (preview) declares 8"));
+    // Tiles of 8x2293768 pixels for a 4x4 image: OpenEXR allocated 293 MB for one tile.
+    writeBytes(dir + "/tiles.exr",
+               exr(attr("channels", "chlist", chlist, 55) +
+                   attr("tiles", "tiledesc", le32(8) + le32(2293768) + std::string(1, '\0'), 9)));
+    EXPECT_THAT(refusal(dir + "/tiles.exr"),
+                HasSubstr("tiles.exr: OpenEXR tiles of 8x2293768 pixels, over the limit of "
+                          "16777216 pixels per tile"));
     // The well-formed file is accepted.
     writeBytes(dir + "/good.exr", exr(attr("channels", "chlist", chlist, 55)));
     EXPECT_EQ(refusal(dir + "/good.exr"), "(accepted)");
@@ -350,6 +357,12 @@ TEST(ImagePlausibility, IffTilesWhoseRunsOverrunTheTileAreRefused) {
                 HasSubstr("short.iff: IFF tile 1 of 1: its RLE data ends before the tile is "
                           "filled"));
 
+    // A tile chunk that claims 2 GB (OpenImageIO reads a tile's chunk whole).
+    std::string bigTile = iff(good);
+    bigTile.replace(bigTile.find("RGBA") + 4, 4, be32(0x7a000000u));
+    writeBytes(dir + "/tile.iff", bigTile);
+    EXPECT_THAT(refusal(dir + "/tile.iff"),
+                HasSubstr("tile.iff: IFF tile 1 of 1 declares 2046820352 bytes, but only "));
     // A DATE chunk that claims 3.7 GB (OpenImageIO allocated it while reading the header).
     std::string date = iff(good);
     date.insert(12 + 40, "DATE" + be32(0xe1e1e1e1u) + "2026");

@@ -274,6 +274,10 @@ std::string iffTileDefect(const HeaderBytes& b, std::uint64_t at, std::uint64_t 
             continue;
         ++t;
         const std::string who = "IFF tile " + std::to_string(t) + " of " + std::to_string(tiles);
+        // Its chunk is read whole into a buffer of the declared size (a fuzzed 2 GB).
+        if (size > b.size() - data)
+            return who + " declares " + std::to_string(size) + " bytes, but only " +
+                   std::to_string(b.size() - data) + " follow in the file";
         const std::uint64_t x0 = b.be(data, 2), y0 = b.be(data + 2, 2);
         const std::uint64_t x1 = b.be(data + 4, 2), y1 = b.be(data + 6, 2);
         if (size < 8 || x0 > x1 || y0 > y1 || x1 >= width || y1 >= height)
