@@ -192,11 +192,7 @@ DeclaredImage scanExr(const HeaderBytes& b, const std::string& path) {
             } else if (kind == "tiledesc" && len == 9) {
                 // OpenEXR allocates a whole tile per compressor whatever the data window (a
                 // fuzzed 16x12 image with 8x2293768 tiles: 293 MB); the TIFF limit applies.
-                const std::uint64_t tw = b.le(value, 4), th = b.le(value + 4, 4);
-                if (tw > (1u << 24) || th > (1u << 24) || tw * th > (1u << 24))
-                    throw LimitError(path + ": OpenEXR tiles of " + std::to_string(tw) + "x" +
-                                     std::to_string(th) +
-                                     " pixels, over the limit of 16777216 pixels per tile");
+                checkTileSize(path, "OpenEXR", b.le(value, 4), b.le(value + 4, 4));
             } else if (kind == "compression" && len == 1) {
                 compression = b.byte(value);
             } else if (kind == "string" && attr == "type") {
@@ -368,6 +364,15 @@ std::string ratioText(double r) {
 }
 
 } // namespace
+
+void checkTileSize(const std::string& path, const std::string& format, std::uint64_t width,
+                   std::uint64_t height) {
+    constexpr std::uint64_t kMaxTilePixels = std::uint64_t(1) << 24;
+    if (width > kMaxTilePixels || height > kMaxTilePixels || width * height > kMaxTilePixels)
+        throw LimitError(path + ": " + format + " tiles of " + std::to_string(width) + "x" +
+                         std::to_string(height) + " pixels, over the limit of " +
+                         std::to_string(kMaxTilePixels) + " pixels per tile");
+}
 
 void checkDeclaredImage(const std::string& path, const DeclaredImage& image) {
     const std::string name = formatName(image.format);

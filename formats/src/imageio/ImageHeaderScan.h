@@ -92,6 +92,11 @@ DeclaredImage scanImageHeader(const HeaderBytes& b, const std::string& format,
 // stored bytes than its data bytes can expand to. Throws LimitError naming the file (and part).
 void checkDeclaredImage(const std::string& path, const DeclaredImage& image);
 
+// Tiled formats (TIFF, OpenEXR): their decoders allocate a whole tile whatever the image's size,
+// so a tile over 2^24 pixels (either side, or its area) is refused as over the limit, naming it.
+void checkTileSize(const std::string& path, const std::string& format, std::uint64_t width,
+                   std::uint64_t height);
+
 // The most bytes a complete file of this declaration can take (for standard input, read before
 // it is whole): the data the parts' pixels need at worst (incompressible data expands them a
 // little) plus room for metadata; 0 when the header does not say enough to bound it.

@@ -255,11 +255,7 @@ DeclaredImage scanTiff(const HeaderBytes& b, const std::string& path) {
         p.height = h;
         p.channels = photometric == 3 ? 3 : static_cast<int>(spp);
         if (tw > 0 && th > 0) {
-            if (tw > (std::uint64_t(1) << 24) || th > (std::uint64_t(1) << 24) ||
-                tw * th > (std::uint64_t(1) << 24))
-                throw LimitError(path + ": TIFF tiles of " + std::to_string(tw) + "x" +
-                                 std::to_string(th) +
-                                 " pixels, over the limit of 16777216 pixels per tile");
+            checkTileSize(path, "TIFF", tw, th);
             p.storedBytes = ceilDiv(w, tw) * ceilDiv(h, th) * th * ceilDiv(tw * bits, 8);
         } else {
             p.storedBytes = h * ceilDiv(w * bits, 8);
