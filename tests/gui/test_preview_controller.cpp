@@ -294,14 +294,18 @@ private slots:
         PreviewOptions o;
         o.input = SceneKind::Scene;
         o.preset = Preset::Pilot; // the engine chain, used by the Grading target only
+        // A controller over `d` showing the scene at full resolution.
+        auto show = [&](PreviewController& pc, const Document& d) {
+            pc.setDocument(&d);
+            pc.setOptions(o);
+            pc.setSource(source(lut));
+            pc.setImage(scene, true);
+            pc.waitForFullResolution();
+        };
         Document doc;
         QCOMPARE(doc.target(), ExportTarget::Smash); // the default
         PreviewController c;
-        c.setDocument(&doc);
-        c.setOptions(o);
-        c.setSource(source(lut));
-        c.setImage(scene, true);
-        c.waitForFullResolution();
+        show(c, doc);
         const auto smashFrame = c.currentFrame();
         QCOMPARE(smashFrame->target, ExportTarget::Smash);
 
@@ -329,11 +333,7 @@ private slots:
         Document fromStart;
         fromStart.setTarget(ExportTarget::Grading);
         PreviewController d;
-        d.setDocument(&fromStart);
-        d.setOptions(o);
-        d.setSource(source(lut));
-        d.setImage(scene, true);
-        d.waitForFullResolution();
+        show(d, fromStart);
         QVERIFY(d.currentFrame()->image.pixels() == gradingFrame->image.pixels());
         QVERIFY(d.targetLut() && c.targetLut());
         QVERIFY(d.targetLut()->shown->entries() == c.targetLut()->shown->entries());
