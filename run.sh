@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # ./run.sh              install what is missing, build the CLI (Release), run the main job on the
 #                       sample: a neutral 16^3 LUT in every native format + the sample grade
 #                       converted, each with the error it cost.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # ./test.sh   install what is missing, build, and run the whole test suite with ctest.
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer builds and fuzzing.
 # Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),

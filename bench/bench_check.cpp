@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark: lut::checkLut on 17, 33 and 65 point LUTs (a smooth grade: a per-channel
 // S-curve with lifted blacks, 10% less saturation and a warm tint, as tests/ops' filmic grade),
 // on all cores and on one, with and without the distance from neutral (ΔE2000 over the lattice,

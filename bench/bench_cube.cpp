@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark: .cube parsing and writing for 17, 33, 65 (and, with LUTKIT_BENCH_CUBE_MAX=256,
 // 129 and 256) point cubes, next to OpenColorIO reading the same file (FileTransform +
 // getProcessor, its caches cleared each time) in the same run. Counters: MB_per_s and

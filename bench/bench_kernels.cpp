@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark: the LUT kernels on a 4K float RGBA frame, for every interpolation and LUT
 // size 16, 17, 33, 65, next to OpenColorIO's CPU processor on the same LUT and pixels and a
 // plain copy of the same bytes. Counters: ns_per_pixel, and for our kernels max_err / mean_err

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit match on a 1080p source and a 1080p reference, to a 33^3 LUT (issue 23: under 1 s on
 // both cores), against a plain HM-MKL-HM written here the way a numpy script does it (sort,
 // unique values and counts, linear interpolation of the distribution functions, the MKL matrix

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The preview pipeline on a 1920x1080 float frame: the full smash chain (target < 30 ms per frame
 // on two cores so the editor previews at 30 fps), each smash stage alone, and the other presets.
 // Run: build/bin/lutkit_bench --benchmark_filter=Pipeline

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # lutkit apply/preview against ffmpeg's lut3d filter, whole process, side by side in one run
 # (issue 13's targets). Generates its inputs, then for every job alternates lutkit and ffmpeg
 # runs (paired, so a busy machine slows both alike) and prints the median wall time, CPU time

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // runBatch (Batch.h): files in parallel within a memory budget, a progress bar, a summary.
 #include "Batch.h"
 

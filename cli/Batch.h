@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The batch runner shared by lutkit apply and lutkit preview: which files to write where
 // (planBatch), and running a job per file, files in parallel within a memory budget, with a

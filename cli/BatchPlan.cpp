@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // planBatch (Batch.h): which file is written where, decided before anything is written.
 #include "Batch.h"
 #include "Usage.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The lutkit command line: every subcommand (commands/X.{h,cpp}: its options, CLI11 set-up, help
 // with examples, and run function), plus `help [COMMAND]`, -V/--version and the hidden

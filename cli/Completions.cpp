@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shell completion scripts for bash, zsh and fish, generated from the option tables: command
 // names, option names, the fixed values of an option (layouts, formats, presets ...), files
 // where a file is expected and folders where a folder is.

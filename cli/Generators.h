@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The man page and the bash, zsh and fish completion scripts, generated from the option tables
 // (OptionTable.h) by `lutkit --generate KIND` when lutkit is built (cli/CMakeLists.txt), so they

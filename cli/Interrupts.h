@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // SIGINT and SIGTERM (Ctrl-C, kill): lutkit removes every temporary file in flight
 // (lut/io/TempFiles.h) and exits with code 130 (README "Exit codes"). A finished output is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A tiny JSON writer for the --json output of lutkit info and convert: strings are escaped
 // (quotes, backslashes, control characters; bytes >= 0x80 pass through as UTF-8) and non-finite

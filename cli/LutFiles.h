@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the LUT-maths subcommands (diff, compose, invert, resize, smooth, mix, plot, adjust) share:
 // reading a LUT file as one 3D table, writing a result in any format, and the one line that says

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit.1, generated from the option tables.
 #include "Generators.h"
 

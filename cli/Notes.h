@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What lutkit says besides its results: the library's diagnostics, one line each. Notes (Info)
 // appear only when they change what the user gets and -q silences them; warnings and errors are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How lutkit writes numbers in its reports, once for every command: significant digits, times,
 // colour triples (JSON arrays are json::vec3 in Json.h).

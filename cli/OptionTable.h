@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The lutkit command line as plain data, read from the CLI11 option tables: what the man page
 // and the shell completions are generated from, and what the vocabulary test checks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // std::bad_alloc as one clear line with the size asked for: lutkit's operator new (main.cpp)
 // notes the size of an allocation that fails before it throws, and the error handlers (the

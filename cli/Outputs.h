@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The output options every writing subcommand shares (-o, -y, -n) and the one place the CLI
 // applies the library's output rule (lut/io/OutputPolicy.h), so every command refuses an existing

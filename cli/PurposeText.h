@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What lutkit says about what a LUT is for (lut/LutPurpose.h) and about turning it into the LUT
 // for another purpose (lut/smash/PurposeConversion.h): one wording for convert, extract,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // --strength, --luma-strength and --chroma-strength: the LUT a command writes or applies, blended
 // with neutral (lut/ops/Strength.h). The same three options on convert, apply, preview and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Exit codes of lutkit (README "Exit codes") and the error for bad usage found after parsing.
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One vocabulary for every lutkit subcommand: an option name means the same thing everywhere
 // (--format is the output format, --in-format the input's, --layout the output layout ...). The

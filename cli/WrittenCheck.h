@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The quiet check of a LUT a command just wrote (lut/check/CheckLut.h, default thresholds): one
 // warning line on standard error per check that fails, naming its worst finding and how to see

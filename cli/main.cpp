@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit: the command-line front end. Everything lives in the lutkit_cli library
 // (CommandLine.h: the subcommands of commands/, help, errors and exit codes).
 #include "CommandLine.h"

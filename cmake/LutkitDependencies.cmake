@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Finds the Debian-packaged dependencies and papers over their known quirks on Debian 12.
 include(LutkitLibraryDependencies) # Threads, GLM, OpenColorIO
 

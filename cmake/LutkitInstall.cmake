@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # What `cmake --install build --prefix P` puts where. The programs install themselves in their own
 # CMakeLists (cli/, gui/); this file installs the package a C++ project links against:
 #   P/lib/lutkit/lutkit_imageio.so  the OpenImageIO module (formats/src/imageio/ImageIOLoader.cpp

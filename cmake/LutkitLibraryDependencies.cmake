@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # What lutkit's two libraries need wherever they are linked: lutkit::lutlib needs GLM and
 # Threads, lutkit::formats OpenColorIO and the native image codecs' libpng, zlib, libdeflate and
 # OpenEXR. Included by LutkitDependencies.cmake when lutkit itself is built and, installed next

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `cpack -G DEB` in a build tree (scripts/package.sh does the build and this): a .deb for Debian
 # 12 / Ubuntu with what a user runs -- the CLI, the editor with its desktop entry, icons and MIME
 # types, the OpenImageIO module, the man page, the shell completions, lutkit's OCIO config and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit-editor: the Qt 6 LUT editor.
 //   lutkit-editor [IMAGE [LUT]]
 //   lutkit-editor --screenshot OUT.png [IMAGE [LUT]]   render the window offscreen, save, exit

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The long fuzzing runs CI has no time for (issue 29): fuzz_image_oiio once per image format
 # OpenImageIO reads for lutkit, each from that format's seeds (tests/fuzz/corpus/image_oiio/
 # <format>-*, made by tests/fuzz/make_image_seeds.sh) and its regression inputs, for a number of

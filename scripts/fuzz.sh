@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the libFuzzer harnesses (tests/fuzz) with clang and runs each for a bounded time.
 # Usage: scripts/fuzz.sh [BUILD_DIR] [SECONDS] [FUZZER...]
 #   BUILD_DIR defaults to build-fuzz, SECONDS (per fuzzer) to 60 (0: build only), FUZZER to all

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian packages lutkit needs, only those missing. Idempotent; run as root (or with
 # sudo available). Extra packages may be named as arguments.
 #   scripts/install-deps.sh           everything: the build, the editor, the tests, benchmarks,

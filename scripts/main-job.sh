@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job of ./run.sh: a neutral 16^3 LUT in every native format, and the bundled sample grade
 # converted to a Smash nutexb and an Unreal 256x16 strip PNG, with the error each conversion cost.
 # Usage: scripts/main-job.sh LUTKIT OUTDIR

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates samples/sample_scene.{exr,png} and samples/sample_grade.cube from
 # samples/tools/make_samples.cpp (deterministic).
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # scripts/package.sh [BUILD_DIR]   build what the Debian package holds (Release: the CLI, the
 # editor, the image module, the man page and completions) and make it with CPack
 # (cmake/LutkitPackage.cmake): BUILD_DIR/lutkit_<version>_<arch>.deb, default build/ (the tree

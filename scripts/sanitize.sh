@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the whole test suite with AddressSanitizer + UndefinedBehaviorSanitizer and runs it.
 # Usage: scripts/sanitize.sh [BUILD_DIR]   (default build-asan)
 # Optimised lightly (-O1) so the slow tests stay bearable while stack traces stay readable.

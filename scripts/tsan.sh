@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the tests of lutkit's threaded code with ThreadSanitizer and runs them.
 # Usage: scripts/tsan.sh [BUILD_DIR]   (default build-tsan)
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit adjust: lut::parseAdjustmentList and lut::applyAdjustments, the result written.
 #include "commands/Adjust.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit adjust LUT --adjustments FILE OUT: the editor's adjustment list (exposure, contrast,
 // lift/gamma/gain, curves, hue curves, strength: lut/ops/AdjustmentList.h) applied to a LUT.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit apply: a LUT on the stored pixel values of images (like Photoshop's Color Lookup).
 #include "commands/Apply.h"
 

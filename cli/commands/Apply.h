@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit apply --lut LUT IN... -o OUT: a LUT on the stored pixel values of images, streamed in
 // chunks in the file's own type (lut/formats/ApplyImage.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit atlas: build an atlas from LUT files, split it into strips, say what one holds.
 #include "commands/Atlas.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit atlas build|split|info: LUTs as the rows of one picture (ReShade's MultiLUT.fx atlas by
 // default) and back (lut/formats/Atlas.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit bake: prints what lut::formats::bake did and what it cost.
 #include "commands/Bake.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit bake OUT: a colour conversion of an OpenColorIO config, or LUT files through OCIO's whole
 // processor, baked into any LUT format, like ociobakelut (same option names), with a shaper when

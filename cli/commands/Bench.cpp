@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit bench: error against run time for the LUT kernels.
 //
 // For each interpolation and LUT size the LUT is sampled from lut::analyticGrade, applied to a

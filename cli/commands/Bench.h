@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit bench: error against run time for the LUT kernels, against OpenColorIO and a copy.
 #include "lut/interp/Interpolation.h"

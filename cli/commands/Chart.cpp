@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit chart: lut::stressChart (or every chart, stacked) written as an image.
 #include "commands/Chart.h"
 

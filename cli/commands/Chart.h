@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit chart NAME OUT: the stress charts colourists grade to judge a LUT by eye
 // (lut/check/StressCharts.h), as pictures to grade in other tools; `all` stacks every chart.

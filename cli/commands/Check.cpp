@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit check: lut::checkLut's report for each LUT file, as text or JSON, and its picture.
 #include "commands/Check.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit check LUT...: the LUT check's report (lut/check/CheckLut.h), per file: pass / warn /
 // fail for each check with its figures, the findings worst first; --report draws it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit compose: lut::compose, then the result written and its error printed.
 #include "commands/Compose.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit compose A B OUT: B after A as one LUT, at a size the user chooses, with the error of
 // that size reported (lut/ops/Compose.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit convert: prints what lut::formats::convertLut did and what it cost.
 #include "commands/Convert.h"
 

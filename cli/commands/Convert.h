@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit convert IN OUT: any readable LUT file to any writable one, saying what it cost
 // (lut::formats::convertLut does the work; this prints its report as text or JSON).

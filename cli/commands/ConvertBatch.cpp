@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit convert DIR/ -o OUTDIR/: a folder of LUTs (a modder's edited strips) converted file by
 // file through the batch runner apply uses (Batch.h: files in parallel, a progress bar, past a
 // bad file, every failure listed), each under its own name as --format (default nutexb: the

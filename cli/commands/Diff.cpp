@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit diff: prints lut::diffLuts' report (and writes its heat map).
 #include "commands/Diff.h"
 

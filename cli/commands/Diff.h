@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit diff A B: how two LUTs differ, in ΔE2000 and 8-bit steps per channel, and where (named
 // regions of the cube), over the lattice or over the colours of an image; a heat map PNG

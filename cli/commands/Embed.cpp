@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit embed: a neutral LUT patch with a self-describing marker frame, pasted into a
 // screenshot (docs/roundtrip.md); lutkit extract finds it again after grading.
 #include "commands/Embed.h"

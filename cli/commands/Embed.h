@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit embed SCREENSHOT OUT: paste a neutral LUT patch with a marker frame into a screenshot.
 #include "Notes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit extract: the LUT an edited screenshot's patch shows (docs/roundtrip.md).
 #include "commands/Extract.h"
 

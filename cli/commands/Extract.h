@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit extract EDITED OUT: find the patch in an edited screenshot and write the LUT it shows.
 // Also reads Smush-LUT's files: a graded LUT image (its neutral.png) and its first versions'

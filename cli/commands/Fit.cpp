@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit fit: a 3D LUT fitted to a before/after image pair (lut/roundtrip/Fit.h).
 #include "commands/Fit.h"
 

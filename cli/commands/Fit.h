@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit fit BEFORE AFTER OUT: fit a 3D LUT to a before/after image pair.
 #include "Notes.h"

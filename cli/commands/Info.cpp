@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit info: what a LUT file holds, as text or JSON.
 #include "commands/Info.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit info IN: what a LUT file holds, as text or JSON.
 #include "Notes.h"

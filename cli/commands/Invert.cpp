@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit invert: lut::invert, then the result written and its report printed.
 #include "commands/Invert.h"
 

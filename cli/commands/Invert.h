@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit invert A OUT: the LUT that undoes A where it can be undone, and where it cannot
 // (lut/ops/Invert.h): never NaN, a least-squares answer where A has no inverse.

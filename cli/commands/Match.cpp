@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit match: a LUT that gives a picture the look of reference pictures (lut/match/Match.h).
 #include "commands/Match.h"
 

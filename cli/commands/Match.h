@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit match SOURCE REFERENCE... OUT: a LUT that gives SOURCE the look of the references
 // (lut/match/Match.h, docs/match.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit mix: lut::mix, the result written and its error printed.
 #include "commands/Mix.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit mix A B OUT --strength t: (1 - t) A + t B per entry on A's lattice (lut/ops/Compose.h).
 #include "Notes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit neutral: the identity LUT in any writable format.
 #include "commands/Neutral.h"
 

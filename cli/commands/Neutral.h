@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit neutral OUT: a neutral (identity) LUT in any writable format.
 #include "Notes.h"

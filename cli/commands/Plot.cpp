@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit plot: lut::plotLut written as an 8-bit PNG (or any image format by extension).
 #include "commands/Plot.h"
 

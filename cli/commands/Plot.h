@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit plot LUT OUT.png: the per-channel curves along the neutral axis, three slices of the cube
 // and the lattice in 3D, as one picture (lut/ops/Plot.h; the editor shows the same).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit preview: an image through the post-processing chain (preset smash = the game's), with a
 // LUT, written display-encoded. Which input is a screenshot and which a scene is the library's
 // rule (lut/pipeline/SceneKind.h, shared with the editor): 8/16-bit inputs are in-game

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit preview IN... -o OUT: images as the game would show them, through the
 // post-processing chain (lut/pipeline/Pipeline.h) with a LUT, written display-encoded.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit resize A OUT --size N: a LUT on another lattice, with the error that costs
 // (lut/ops/Resize.h).

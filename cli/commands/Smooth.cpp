@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit smooth: lut::smooth, the result written and the change printed.
 #include "commands/Smooth.h"
 

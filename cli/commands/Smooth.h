@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit smooth A OUT --sigma S: a Gaussian blur of the LUT's deviation from the identity, with
 // how much it changed the LUT (lut/ops/Smooth.h).

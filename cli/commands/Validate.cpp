@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit validate: parse LUT files and report problems with file:line:col. .cube files get the
 // full treatment (lut::formats::validateCube: strict departures from Adobe 1.0); other formats are
 // read through the registry and reported ok or failed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit validate FILE...: parse LUT files and report problems with file:line:col.
 #include "Notes.h"

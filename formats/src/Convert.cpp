@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // convertLut: read, resample when the output stores another size, write, read back, measure.
 #include "lut/formats/Convert.h"
 

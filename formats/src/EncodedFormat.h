@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A format that encodes in memory: write() puts writeMemory()'s bytes on disk atomically
 // (lut::writeFileAtomically: a temporary file renamed into place, an old file untouched when the

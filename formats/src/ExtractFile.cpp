@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT an edited file shows; see lut/formats/ExtractFile.h.
 #include "lut/formats/ExtractFile.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Factories of the built-in formats (internal to formats/). One per format file.
 #include "lut/io/Format.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared by the formats whose files imply a fixed [0,1] domain and store no shaper (LUT images,
 // Hald, nutexb): turn any LutFile into a plain N^3 table over [0,1], saying what that cost.

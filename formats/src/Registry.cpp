@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one list of built-in formats. Each format file exposes a factory declared in Formats.h.
 #include "lut/formats/Registry.h"
 

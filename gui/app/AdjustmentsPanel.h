@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Sliders (with spin boxes) for every adjustment parameter, bound to a Document: moving a slider
 // pushes undoable edits that merge for the duration of the drag; the panel follows the document

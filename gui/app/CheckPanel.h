@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The "Check" panel: lutkit check of the LUT the export writes (gui/model/CheckModel), kept
 // current as the LUT changes: the verdict, one line per check, the findings worst first. Clicking

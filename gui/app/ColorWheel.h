@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A lift, gamma or gain colour wheel: dragging the puck away from the centre tints that range
 // towards the hue under it, by an amount that grows with the distance (Shift: ten times finer);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Tools > Compare with LUT File: how the LUT the editor would export now (exportedLut, the
 // window's target) differs from a LUT file, as `lutkit diff` reports it: lut::diffLuts over the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Edits one curve of the document's adjustments (lut/ops/Curve.h) with the mouse: a click adds a
 // point and drags it, a point drags (Shift: ten times finer), a double-click or right-click on a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The curves dock: a curve editor (CurveEditor) with a choice of curve: tone curves master, R,
 // G, B and the hue curves hue vs hue, hue vs saturation, hue vs luminance. The chosen curve's

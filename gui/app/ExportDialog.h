@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Export settings: one entry per (writable format, layout) so every strip layout is a choice,
 // plus size, bit depth, dither, and the target file. What the file holds follows the window's

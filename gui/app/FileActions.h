@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the File menu does: open a picture, a LUT or an edited screenshot, start from neutral,
 // save, export, save the preview image, save and load the adjustment list, the recent-file

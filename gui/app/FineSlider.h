@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A slider for precise values on a short track: a click jumps to the position, a drag follows
 // the mouse relative to where it was (no jump), ten times finer while Shift is held; the wheel

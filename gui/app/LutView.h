@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The LUT panel: the N slices of the LUT the export writes (the target's file, read back) as a
 // strip in a chosen layout (lut::lutToImage), scaled with nearest-neighbour so every entry stays

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editor window: preview (centre) under a notes bar, adjustments / curves / wheels / LUT /
 // scopes / history docks, status bar. The state lives in the model (Document: the LUT and the

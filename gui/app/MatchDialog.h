@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Tools > Match to Reference…: the match of the open picture to a reference picture
 // (MatchSession), shown live in the window while its sliders move: strength, lightness and

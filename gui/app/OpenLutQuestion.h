@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The one question Open LUT asks before a LUT image is read, as a user expects it: the layout when
 // several fit the picture (a 256x16 strip) and, when the file does not say what it is for

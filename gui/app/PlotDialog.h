@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Tools > Plot LUT: the picture `lutkit plot` draws (lut::plotLut: curves along the neutral
 // axis, three slices, the lattice in 3D) of the LUT the editor would export now for the window's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The image view: before (left of the divider) and after (right), a draggable divider, zoom
 // (fit, 100 %, wheel about the cursor) and pan (drag with the left button away from the divider,

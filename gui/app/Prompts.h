@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the editor's actions (FileActions, WindowActions) ask of the window they run in: whether a
 // person is there to answer questions, where errors, notes and status messages go, and the status

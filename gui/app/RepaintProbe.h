@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Measures how long the window's thread goes without painting: a small widget asks to be
 // repainted every few milliseconds and records the longest gap between two of its paint events.

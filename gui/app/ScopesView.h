@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The scopes of the preview (gui/model/Scopes.h, computed on the worker with every frame): the
 // histogram of R, G, B and luma, the RGB parade, the luma waveform (with 0, 25, 50, 75 and 100 %

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editor's scripted mode (lutkit-editor --script FILE): drives the real window the way a user
 // does, one command per line, for the tests that run under a real X server (Xvfb) and for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Keeps the window's shortcuts working from every widget: a spin box (its line edit) claims
 // Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y and even Ctrl+E (end of line) for itself, so after typing a value

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A long task in the status bar: what runs ("Opening shot.png…"), how far it is (a percentage
 // once the task reports one, else a busy bar) and a Cancel button. Hidden while nothing runs.

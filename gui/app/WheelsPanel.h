@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The colour wheels dock: lift, gamma and gain wheels side by side (ColorWheel), each editing the
 // per-channel values of its range; the master values stay on the Adjustments sliders.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The window's menus, toolbars and shortcuts: File (FileActions), Edit (undo/redo, reset), View
 // (zoom, split/after/before, clipping overlay, docks), Preview (the PreviewController's options),

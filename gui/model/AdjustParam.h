@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editable adjustment parameters as data: one id per number in lut::Adjustments (the curves
 // and colour wheels edit the same struct through their own widgets), with the label, range and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A long task on a worker thread, with progress and cancel, so the window never waits for it
 // (comparing a LUT over a 4K picture, writing the preview image): start() returns at once, the

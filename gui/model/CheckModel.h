@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editor's "Check" panel model: lutkit check (lut::checkLut) on the LUT the export writes,
 // run on a worker of its own (latest request wins, so dragging a slider never queues checks and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Clears the upper halves of the calling thread's AVX registers (vzeroupper) when the CPU has AVX;
 // nothing elsewhere. Every worker of the editor calls it before its work.

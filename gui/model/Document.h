@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editor's document: a base LUT, the adjustments on top of it (the effective LUT is base +
 // adjustments), the undo stack and the modified state, plus the picture being previewed. No

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Messages for people: library errors name their limits by C++ constant
 // ("... over the limit of 256 (lut::limits::kMax3DSize)"); the editor shows what the limit means

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The file the export dialog suggests, so an export never lands on a file the user has by
 // surprise: a new name in the LUT's folder (else the picture's), never the opened LUT or picture.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where the LUT goes: the export destinations, each a file type made for one purpose
 // (lut/LutPurpose.h, the one vocabulary of what a LUT is for):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reads pictures and LUT files on a worker thread so the window never waits for a file: a 4K PNG
 // takes seconds to decode, and a small file may hold a huge picture (a 16384x16384 PNG of one

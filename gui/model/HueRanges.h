@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Local influence for the hue curves (lut/ops/Curve.h, periodic over 0..360 degrees) and the six
 // hue ranges colourists pick from. A curve through its points alone gives a lone point a

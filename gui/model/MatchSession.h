@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Tools > Match to Reference… without widgets: the match of the document's picture to a
 // reference picture, fitted once (lut::fitMatch, the same as `lutkit match`), then baked again

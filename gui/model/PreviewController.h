@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editor's preview without widgets: the options, the document's export target, the stored image
 // and its prepared scene and proxy, the before picture, the before-LUT cache, the target's export

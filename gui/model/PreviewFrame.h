@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One preview render as plain data: what the worker is asked for (PreviewJob), what it delivers
 // (PreviewFrame), and the function that makes one from the other (renderFrame). No Qt objects,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The editor's preview: the same lutlib pipeline `lutkit preview` runs (lut/pipeline/Pipeline.h),
 // as plain C++ so the document model and tests can use it without widgets. The preview worker

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Runs the preview's tasks one at a time on a thread of its own, latest request wins: while one
 // task runs, a new request replaces the pending one of its lane, so a fast slider never queues up

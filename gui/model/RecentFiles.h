@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Recent-file list logic (most recent first, no duplicates, bounded), kept apart from QSettings
 // so it is testable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the scopes dock draws, computed from a preview frame's 8-bit picture on the preview worker
 // (PreviewFrame), so they follow every frame without work on the UI thread:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Undo step for any edit of the adjustments: a slider, a spin box, a curve point, a colour wheel,
 // reset, a loaded adjustment list. Consecutive edits with the same merge key within one gesture

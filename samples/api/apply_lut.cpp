@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Applies a .cube LUT to an image the way `lutkit apply` does: the stored pixel values go through
 // the LUT (no colour conversion), alpha passes through.
 //   api_apply_lut GRADE.cube IMAGE OUT.png

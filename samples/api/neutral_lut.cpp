@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Makes a neutral (identity) LUT and writes it for two games: as Smash Ultimate's
 // color_grading_lut.nutexb and as a 256x16 LUT strip in Unreal's layout, ready to grade in an
 // image editor.

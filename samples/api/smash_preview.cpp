@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shows what Smash Ultimate would show: runs the game's post-processing (bloom, the grading LUT
 // with its brighten and alpha mix, sRGB display; lut/pipeline/Pipeline.h) on a linear HDR scene.
 //   api_smash_preview SCENE.exr GRADE.cube OUT.png

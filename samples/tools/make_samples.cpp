@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Makes the bundled samples: a small synthetic stage scene (sky gradient, saturated objects,
 // skin-like tones, bright highlights above 1.0) as a linear float EXR and an 8-bit sRGB PNG, and a
 // 33^3 sample grade .cube (a warm/teal "sunset" look). Deterministic: the same bytes every run.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut/bench/KernelBench.h (bench/support): the analytic grade, its sampled LUTs, the synthetic
 // frame and the error measure that `lutkit bench` prints.
 #include "lut/bench/KernelBench.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut/bench/OcioLutProcessor.h (bench/support): OpenColorIO's processor as `lutkit bench` sets it
 // up must hold the LUT in the right order and run the interpolation it was asked for, or the
 // speed comparison compares different work. Oracle: the interpolation formulas at points where

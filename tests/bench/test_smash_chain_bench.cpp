@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut/bench/SmashChainBench.h (bench/support): the scene and LUT the smash-chain benchmarks run
 // on must be what their comments promise, or the timings measure something else.
 #include "lut/Error.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The lutkit command line in-process (lutkit_cli), for tests that read its option tables or run
 // it with stub run functions: what users get, without touching files.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit apply: stored values through the LUT, alpha and bit depth kept, rounding to nearest;
 // batch with -o DIR keeps going past bad files.
 #include "TestSupport.h"

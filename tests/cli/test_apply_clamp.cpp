@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit apply into an integer output: LUT outputs outside [0,1] that the 8/16-bit output clamps
 // are counted and warned about, never clamped silently. The LUT is an affine map (a 2^3 .cube
 // every interpolation reproduces exactly), so the count is computed here from the map itself:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where apply and preview write, and what they never touch (issue 13): inputs are positional,
 // the output is -o; an existing output is replaced only with -y; -n skips; - is standard input
 // and output; special files are written in place; frame sequences; no command writes over any

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit atlas build / split / info: a 3-row MultiLUT atlas of three different LUTs and its split
 // rows are byte for byte the ReShade strips of those LUTs; sampled with MultiLUT.fx's formula
 // (tests/support/ShaderSamplers.h) each row gives its LUT within half an 8-bit step; repeated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit bake: side by side with ociobakelut (the installed peer) on the same files and config,
 // the report's error checked against an independent measurement, lutkit's own config found
 // without $OCIO, $OCIO and --config obeyed, looks and display views equal to OpenColorIO's

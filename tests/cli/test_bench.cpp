@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit bench --json: the figures of the table as one JSON document (issue 27), each with the
 // yardstick it is measured against in the same run. Times are not asserted (speed goes in
 // benchmarks, never in a test); what must hold whatever the machine's load is.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // builtin:neutral and builtin:smash-default wherever a LUT file goes: convert writes the game's
 // default stage LUT as it is (it is the game's LUT), and a screenshot of a stage without its own
 // LUT previews closer to the game with --original-lut builtin:smash-default than with the neutral

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit check, lutkit chart and the quiet check after writing a LUT, run as users run them: exit
 // codes, the figures against formulas written here, the JSON read by Python's json module (an
 // independent parser), the pictures read back, and the output rules (-y, a folder for several).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colour management in apply, preview and convert: the LUT runs in the space it was made for,
 // with OpenColorIO converting on either side; checked against OCIO's own processors doing the
 // whole chain (the LUT included, as a FileTransform); values outside the LUT's domain are

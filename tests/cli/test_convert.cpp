@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit convert: exact round trips, the error report checked against float64 references
 // computed here, refusal to overwrite the input, and usage errors.
 #include "TestSupport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit convert DIR/ -o OUTDIR/: every LUT file of a folder (a modder's edited strips), each
 // under its own name, as one convert of that file would write it, with its in-game error; a bad
 // file is listed and the others are still written; existing outputs follow -y/-n.

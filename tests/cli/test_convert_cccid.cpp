@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit convert --cccid: the six .ccc/.cdl files of OpenColorIO's test data that OCIO reads only
 // with a CCC id, each converted with an id (by name where the file has ids, by index) and
 // compared with OpenColorIO's processor of the source with the same id, the written file read

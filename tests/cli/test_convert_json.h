@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A minimal strict JSON parser for the CLI tests: it throws on anything that is not valid JSON,
 // so parsing the output is itself a check of `--json`.

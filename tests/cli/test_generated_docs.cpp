@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The man page and the shell completions the build generates (cli/CMakeLists.txt runs
 // `lutkit --generate KIND`): they exist, name every command and option of the option tables (read
 // through lutkit_cli, not a copied list), render (man -l) or parse (bash -n, zsh -n, fish -n when

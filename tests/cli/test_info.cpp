@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit info: the JSON output parsed strictly and its fields checked against values known here.
 #include "TestSupport.h"
 #include "test_convert_json.h"

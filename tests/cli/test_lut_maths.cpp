@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT-maths subcommands on files: diff against a float64 CIEDE2000 written here from Sharma,
 // Wu and Dalal (2005); a LUT against itself exactly 0; invert then compose back to neutral; mix,
 // resize and adjust against values computed here; plot and heat-map pictures written.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit match end to end: the sample scene graded by a formula written here (channel mix,
 // curves, saturation), the graded pixels flipped and shuffled, matched; the written .cube is
 // evaluated by OpenColorIO's processor (the oracle), never by lutkit, and must land near the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit neutral: default sizes per format and identity contents read back.
 #include "TestSupport.h"
 

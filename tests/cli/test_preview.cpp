@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit preview: output pixels against the float64 reference of docs/specs/smash-pipeline.md
 // (shared with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
 #include "OklabReference.h"

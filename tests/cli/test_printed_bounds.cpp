@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every maximum error the LUT commands print is an upper bound of the truth: the truth measured
 // here on 200,000 random inputs with OpenColorIO's processors (the files lutkit read and wrote,
 // evaluated by OCIO, unoptimised), and the printed figure must not be below it. The tables are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a LUT is for (lut/LutPurpose.h), honoured by every command that reads one (issue 22,
 // "double compensation"): convert copies the game's LUT and makes an edit into it, and makes the
 // edit a game LUT makes with an error bound the truth does not exceed; apply applies the game's

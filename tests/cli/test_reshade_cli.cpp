@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // --layout reshade (and unity-32) through the commands: neutral writes 1024x32, convert resamples
 // to 32^3 and says so, apply and preview read a ReShade strip with --lut-layout, a size the name
 // does not hold is bad usage.

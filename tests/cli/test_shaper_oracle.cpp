@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A Resolve .cube holding a 1D shaper (a log2 shaper of 4096 entries over 0..64) and a 33^3
 // grade, through every command that processes pixels with it, against OpenColorIO's processor of
 // the same file (FileTransform, OPTIMIZATION_NONE): apply (float EXR), preview's LUT stage, the

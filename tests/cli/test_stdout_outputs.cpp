@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `-` as the output of every command that writes (issue 22): the data alone on standard output,
 // every note, report, JSON and "wrote" line on standard error. Each row pipes the command into a
 // reader that takes standard input -- `lutkit info -` for LUTs (`lutkit convert a.cube - --format

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // --strength, --luma-strength and --chroma-strength on convert, apply and extract: what they
 // write against the float64 Oklab blend of tests/support/OklabReference.h, the ends (0 = neutral,
 // 1 = the LUT) bit for bit, and bad values as bad usage.

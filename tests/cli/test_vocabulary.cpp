@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One vocabulary across lutkit (issue 18), checked on every subcommand's option table as lutkit_cli
 // builds it: an option name means the same thing everywhere, the names the issue fixes mean what
 // it says, every value from a fixed set is validated, any bad value is bad usage (exit 2), and

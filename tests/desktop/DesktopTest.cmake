@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest desktop_entry, desktop_mime, desktop_icons (tests/desktop/CMakeLists.txt).
 #   entry  desktop-file-validate finds nothing to say about lutkit-editor.desktop; Exec runs
 #          lutkit-editor; every MimeType it lists is defined in lutkit.xml and every type there is

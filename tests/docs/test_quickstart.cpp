@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The README's quick start, run as it stands: the lines between `<!-- quickstart:NAME -->` and
 // `<!-- /quickstart -->` are taken from README.md and run one by one with /bin/sh in an empty
 // folder, with the built lutkit first on PATH, on small inputs the test makes where the README

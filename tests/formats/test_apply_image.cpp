@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The streaming apply (lut/formats/ApplyImage.h): every data type and the metadata kept (checked
 // against OpenImageIO's own reading of the input and the output), pixel values against the map
 // the LUT samples, streamed results bit-identical to one whole-frame chunk, values outside the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tegra X1 block-linear tiling: the offsets and sizes nutexb.md states, and properties of the
 // general algorithm (a bijection into the tiled size, padding untouched) for odd sizes.
 #include "lut/Error.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A .cube declaring a table over the limits (LUT_3D_SIZE 257) is refused at its header line
 // before the rest of the file is read: a tiny file holding only the header gets the message with
 // its line and column, and a 448 MB file (sparse: the header, then zeros) is refused in a child

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // .cube resource limits: huge declared sizes refused before any data is read, huge lines refused
 // after a bounded look, endless rows refused at the first extra row, oversized files refused.
 #include "TestSupport.h"

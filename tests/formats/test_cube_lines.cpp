@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The shared physical-line reader (formats/src/cube/TextLineReader.h): line numbers and columns as
 // an editor shows them across LF, CR LF, lone CR, BOM, blank lines; bounded look at long lines.
 #include "cube/TextLineReader.h"

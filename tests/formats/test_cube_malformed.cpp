@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The malformed .cube corpus (tests/data/cube/malformed, one defect per file): each file's exact
 // error text, physical line and column. Line and column numbers were counted by hand in the
 // files (blank lines, comments, CR LF, BOM and lone-CR line ends included).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // .cube reading: golden files of both dialects, line counting across CRLF/BOM/comments, strict
 // departures, and the float parser checked against std::from_chars as the oracle.
 #include "TestSupport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // .cube writing: bit-exact round trips, what the header holds, the shaper rules, atomic writes,
 // and OpenColorIO (an independent reader) agreeing with our reading of what we wrote.
 #include "OcioTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut/formats/ImageFiles.h: the one policy for what a rendered image is written as, shared by
 // `lutkit apply`/`preview` and the editor's "save preview" (they used to decide apart and drift:
 // an RGBA input saved as .jpg got 4 channels from the editor and 3 from the CLI).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pre-open plausibility rule (lut::formats::checkImageFile, issue 29): no false refusals on
 // the most compressible files the usual writer makes (a flat image, for every format and
 // compression OpenImageIO writes: its ratio is the measured one docs/robustness.md lists, and it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress and cancellation of whole-frame image reads and writes (lut/formats/ImageIO.h with a
 // lut::Progress): the editor decodes pictures and writes its preview on workers, and a picture
 // that is opened while another one decodes stops the first (a 200 KB PNG can hold 8192x8192

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // nutexb: byte-exact writing (reference SHA-256 and bytes built here from nutexb.md's formulas,
 // never from our own writer), reading tiled/linear/sRGB files built by an independent script
 // (tests/data/nutexb/make_corpus.py), options, and exact 8-bit round trips.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The malformed nutexb corpus (tests/data/nutexb/bad_*.nutexb, one defect per file, built by
 // make_corpus.py): each is refused with an error naming the file, the field, the value found and
 // what was expected.

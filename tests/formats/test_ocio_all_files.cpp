@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every file of OpenColorIO's test data (tests/data/ocio/corpus: all of OpenColorIO's
 // tests/data/files but its configs) through lutkit's two ways of sampling a foreign file --
 // convert's reader (lut::formats::readLut, the table written as .clf) and bake (--lut FILE) --

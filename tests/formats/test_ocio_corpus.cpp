@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenColorIO's own test files (tests/data/ocio/corpus) through lutkit: every bake equals OCIO's
 // processor on the source file, evaluated directly, at every lattice point of a 33^3 grid (the
 // written file itself read by OCIO, an independent reader); chains are read through the whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenColorIO bridge: every Baker format written and read back, hand-written foreign files
 // compared with values computed here, and the extension list checked against OCIO itself.
 #include "OcioTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Images of the formats OpenImageIO reads for lutkit, each written by oiiotool, read by
 // lut::formats::readImage as oiiotool reads them: every pixel's stored code equals the one
 // `oiiotool --dumpdata` prints, from the file and from its bytes in memory (standard input's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // formats/src/imageio/PixelConvert: stored samples <-> float RGBA, against the definitions
 // written here in float64 (lut/Quantize.h's rule: round half away from zero, clamp to [0, 1],
 // NaN -> 0; v/255 and v/65535 on the way in; IEEE half). The 8/16-bit writes and the half

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The native PNG reader (formats/src/imageio/PngCodec.cpp: libdeflate + PngUnfilter for the common
 // files, libpng for the others) against OpenImageIO's decoding of the same files, and against the
 // samples the test itself wrote. The files are written here, filters and Adam7 plainly from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a LUT is for, in its file (lut/LutPurpose.h): the LUTKIT_PURPOSE tag written by every
 // format that has a place for it and read back; other readers still read the file and ignore the
 // tag (OpenColorIO's processor equals the table at its lattice, ffmpeg's lut3d gives the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Format::readMemory / writeMemory: every format reads and writes bytes in memory (standard
 // input and output). Every writer encodes in memory; the cube, nutexb, strip and hald formats
 // decode in memory too (touching no file), OpenColorIO's reader goes through a private temporary

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 1024x32 strips (docs/specs/strip-layouts.md): files written in the reshade and unity-32
 // layouts, read back with OpenImageIO directly and sampled with the engines' own shader formulas
 // (tests/support/ShaderSamplers.h: ReShade's LUT.fx, Unity's ApplyLut2D) against a float64

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Round trips across formats that must be exact (issue 3): the neutral LUT through
 // cube -> pilot png -> nutexb -> smush png -> hald -> cube keeps its 8-bit values, and any 8-bit
 // LUT goes through nutexb <-> png <-> cube bit-exactly (in every order and layout).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shapers and input ranges survive the formats that hold them: a Resolve .cube with a 1D shaper
 // over 0..16 converted to .clf, .ctf and .csp and back (it used to lose the shaper: 172 8-bit
 // steps, exit 0), checked with OpenColorIO reading the original and the round-tripped files; and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT images: pixel positions of each layout checked against hand-computed places in the file
 // (read back with OpenImageIO directly, not with our reader), exact 8/16-bit/float round trips,
 // any N, bit depths, clamping and quantisation diagnostics, dither, Hald through the strip format.

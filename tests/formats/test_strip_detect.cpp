@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Auto-detection of the layout of an N^2 x N image (rule in formats/src/image/StripFormat.cpp): a
 // table that is close to neutral (each output channel follows its own input axis) in exactly
 // one layout is read in it; else the one layout whose brightness is neutral-shaped; otherwise

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden LUT images written by tests/data/strip/make_golden.py with its own PNG encoder from the
 // layout formulas (not by lutkit): our reader must find each entry where the spec puts it.
 #include "lut/formats/Registry.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz target for lutkit check (tests/fuzz/fuzz_check.cpp and the regression replay): the bytes
 // are a thresholds file, a line "%%", then a .cube file (no "%%" line: all of it is the .cube).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz target for the CLI's argument handling: the real command line (lutkit_cli's
 // lut::cli::CommandLine, where CLI11 converts and checks numbers and words) parses fuzzed argument

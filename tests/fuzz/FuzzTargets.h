@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The fuzz targets, shared by the libFuzzer harnesses (tests/fuzz/fuzz_*.cpp, clang build) and
 // the regression replay (tests/regress, normal build): a crashing input found by a fuzzer is

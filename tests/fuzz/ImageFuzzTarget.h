@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz target for image reading into apply and preview: the bytes are an image file that goes
 // through the read path apply and preview use (lut::formats::readImage, OpenImageIO behind the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz target for the images OpenImageIO reads on lutkit's behalf (issue 29): TIFF, JPEG, TGA,
 // BMP, HDR, DPX, PSD, GIF, tiled and multi-part OpenEXR, IFF, WebP. The input is the file itself

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz target for the OpenColorIO bridge: the files OCIO reads, through our "ocio" format reader
 // (formats/src/ocio/OcioReader.cpp): a session that serialises OCIO, its exceptions turned into

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz target for the embed/extract patch finder: findPatch, readPatch and extractLut (raw target;
 // smash and the one-call form when byte 0 asks, see extractChecked) on

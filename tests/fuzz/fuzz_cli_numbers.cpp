@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: the CLI's argument handling where it parses numbers and words. The bytes
 // are an argument list for the real subcommand set-up (CliTarget.h, stub run functions that
 // check what validation promised) and, whole, one word for the parse helpers (FuzzTargets.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: image reading into apply and preview. The target itself lives in
 // ImageFuzzTarget.h so that tests/regress replays crashing inputs through the same path in the
 // normal build.

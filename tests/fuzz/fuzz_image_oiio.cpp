@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: image files OpenImageIO reads for lutkit (TIFF, JPEG, TGA, BMP, HDR, DPX,
 // PSD, GIF, tiled EXR, IFF, WebP), through the pre-open rule, apply's streaming (tiles, parts,
 // codec errors) and preview's frame read. One harness for every format (the format is told by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: the embed/extract patch finder (findPatch, readPatch, extractLut). The target
 // itself lives in PatchFuzzTarget.h so that tests/regress replays crashing inputs through the same
 // path in the normal build.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the hostile image files of issue 29 into tests/data/fuzz-regress/image_oiio/ as
 reject-* inputs: regress_tests replays each through fuzz_image_oiio's target and requires it to
 be refused. Each is built here byte by byte from its format's specification (the JPEG and the cut

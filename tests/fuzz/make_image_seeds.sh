@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Writes the seed corpus of fuzz_image_oiio (tests/fuzz/corpus/image_oiio/): small real files of
 # every format OpenImageIO reads for lutkit, in the variants whose code paths differ (strips and
 # tiles, compressions, bit depths, several pages, parts or frames, MIP levels). Made with

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the checked-in seed corpora under tests/fuzz/corpus/<fuzzer>/ (run once; kept small so
 mutations stay fast). scripts/fuzz.sh adds matching files from tests/data at run time."""
 import os

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared bits of the editor tests: sample paths, the float64 reference for an exposure edit, a
 // tiny PNG that holds a huge picture.

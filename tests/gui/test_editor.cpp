@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The editor driven like a user, offscreen: open files, drag a slider, undo, export, compare the
 // exported LUT with a float64 expectation, and check the preview pixels against the pipeline and
 // (when it exists) `lutkit preview`.

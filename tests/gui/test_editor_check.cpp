@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 24 in the editor: the Check panel lists lutkit check's findings for the LUT the export
 // writes, kept current; clicking a finding highlights its colours on the picture, and the
 // highlighted pixels are exactly those the defect's formula (written here) says it touches; an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The editor from the outside, as its users and the CLI see it:
 //   - issue 15, problem 2 and "one truth": for every target the window's preview (saved with the
 //     scripted mode) equals the CLI's rendering of the file the default export wrote, bit for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 23 in the editor: Tools > Match to Reference… on the sample scene, the reference being
 // the scene graded by a formula written here and shuffled. The preview takes the matched LUT
 // while the sliders move (strength 0: the neutral LUT; 1: near the true grade), Cancel gives the

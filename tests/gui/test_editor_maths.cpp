@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 16, "usable in the editor": the editor's Tools (Plot LUT, Compare with LUT File) give what
 // the CLI gives, run through the scripted mode:
 //   - plot-save of the sample grade equals `lutkit plot` of the file the default export wrote,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 28, the colourist's tools: hue curves with local influence (a point changes only the hues
 // near it; six hue-range presets; the active curve visible) and the luma waveform and vectorscope.
 // The oracles are written here from the definitions: the Fritsch-Carlson curve through a point

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 28, the editor's second pass: nothing freezes, nothing ambiguous. Each problem of the
 // issue driven through the window, offscreen, as a user meets it:
 //   - Tools > Compare with LUT File, File > Save Preview Image and opening a file run on workers

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 15, problem 5: the grading tools driven with the mouse as a colourist would, each one
 // undo step per gesture, checked against what the tool must do written out here: a curve passes
 // through its points, hue curves leave greys alone, a colour wheel keeps luminance, strength

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 15's numbered problems 1, 3 and 4 and its "also" list, each driven through the window as
 // a user would (keys, the export dialog, the toolbar), offscreen:
 //   1. Ctrl+E, Enter never replaces the opened LUT; a second export asks, and Enter keeps the file.

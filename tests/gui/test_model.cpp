@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The editor's document model without widgets: LUT + adjustments + undo + modified state,
 // export, and the preview path. Expectations are float64 formulas written here.
 #include "GuiTestSupport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The preview controller without widgets (QT_QPA_PLATFORM=offscreen): what it renders, in which
 // order, what it caches and drops. The expected pixels come from lut::Pipeline run directly on
 // the scene (the `lutkit preview` path) with the LUT the export writes, read back from a real

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest install_tree (tests/install/CMakeLists.txt): checks that `cmake --install` gives a tree
 # that works on its own.
 #  1. cmake --install BUILD_DIR --prefix WORK_DIR/prefix

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The Debian package (cmake/LutkitPackage.cmake), made from this build tree with cpack and
 # extracted with dpkg-deb -x into a fresh root (no dpkg database, no root needed):
 #   - its control fields: name, version, the runtime dependencies dpkg-shlibdeps found

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUTs and inputs shared by the lutlib tests.
 #include "lut/Lut3D.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT authoring adjustments against plain float64 formulas written out here, independently of
 // lutlib/src/ops/Adjust.cpp (which composes, clamps and skips neutral steps).
 #include "lut/Limits.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Built-in LUTs (lut/io/BuiltinLut.h): builtin:smash-default holds the reference renderer's
 // default stage LUT, written here from its source (ScanMountGoat/ssbh_wgpu,
 // ssbh_wgpu/src/texture.rs, create_default_lut: the values below per channel, x = red, y = green,

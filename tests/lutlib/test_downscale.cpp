@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut::downscale (lut/Downscale.h) against block means computed in double here.
 #include "lut/Downscale.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame sequence names and ranges as oiiotool and ffmpeg spell them (lut/io/FrameSequence.h).
 #include "TestSupport.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lut3D / Lut1D value types: identity exactness, storage order, domain checks, 1D apply.
 #include "lut/Error.h"
 #include "lut/Lut1D.h"

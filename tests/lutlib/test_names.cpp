@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The names users see and type (issue 18's vocabulary, written here plainly as the oracle): the
 // primary names toString gives, and the old names every parser keeps accepting as aliases.
 #include "lut/Error.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one output rule (lut/io/OutputPolicy.h) and the writer behind it (lut/io/OutputFile.h):
 // existing files are replaced only when asked, special files are written in place, nothing is
 // created or touched before the write succeeds.

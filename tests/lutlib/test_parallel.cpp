@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // parallelFor: every index exactly once, any thread count, exceptions come back to the caller.
 #include "lut/Parallel.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut::PixelChain: steps run in order around the LUT, the LUT is the sampler's, values outside
 // the domain are counted (not silently clamped), and a neutral LUT is recognised.
 #include "lut/PixelChain.h"

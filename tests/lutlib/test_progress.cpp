@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut/Progress.h: what a long call reports and how it stops when cancelled (the editor runs
 // reads, writes and comparisons on workers and cancels them from the window's thread).
 #include "lut/Progress.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // resample / resampleWithError / compareLuts / quantize8 / toUnorm / ErrorStats against float64
 // references written here.
 #include "LutTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The extreme-input policy of Sampler.h, for every sampler, through both sample() (scalar) and
 // applyPixels() (the run-time chosen SIMD kernel).
 #include "LutTestUtil.h"

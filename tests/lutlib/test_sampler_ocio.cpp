@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenColorIO as the oracle: our trilinear and tetrahedral samplers (scalar and SIMD) against
 // OCIO's CPU processor for a Lut3DTransform holding the same entries.
 #include "LutTestUtil.h"

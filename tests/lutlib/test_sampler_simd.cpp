@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The SIMD kernels (applyPixels) against the scalar reference (sample()) on random and extreme
 // inputs: same cells, same policy, agreement to float rounding; alpha untouched.
 #include "LutTestUtil.h"

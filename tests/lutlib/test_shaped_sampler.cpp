@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A LUT file's 1D shaper then its 3D table, evaluated exactly (makeSampler(LutFile)): the shaper
 // against a float64 linear interpolation written here from Lut1D's definition, the whole against
 // OpenColorIO's processor for a Lut1DTransform then a Lut3DTransform holding the same entries,

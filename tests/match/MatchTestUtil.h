@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Pictures and plain float64 grades shared by the match tests (tests/match). The grades are the
 // oracles: a look written as a formula here, never a map built by lutlib's match.

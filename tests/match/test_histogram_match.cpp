@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Histogram matching and its curves, against float64 formulas written here.
 #include "lut/Error.h"
 #include "lut/match/ChannelCurve.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 23's acceptance cases, each against a grade written plainly in MatchTestUtil.h: the LUT
 // lutkit match makes from pictures with no correspondence, applied to the source, must land near
 // the source truly graded. (tests/cli/test_match.cpp runs the first through the command line and

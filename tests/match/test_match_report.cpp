@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What match reports is checked from outside: the interpolation figure bounds what
 // OpenColorIO's processor of the written .cube gives against the transfer, over every pixel; the
 // clipping count is what that processor clips. Strength and preserve against Oklab and CIELAB

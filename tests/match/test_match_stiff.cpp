@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stiff inputs (issue 23): a reference of two flat colours, a black reference, one of far wider
 // gamut, an HDR reference, an almost grey source. Each must give a finite, monotone LUT without
 // fold-overs, and a warning that says what happened.

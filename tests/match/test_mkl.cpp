@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The linear Monge-Kantorovich map against its defining property, checked in float64 here: the
 // mapped source has the reference's mean and covariance, and the matrix is symmetric positive
 // definite (no fold-over).

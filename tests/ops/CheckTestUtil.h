@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUTs with known defects and their plain float64 oracles, for the LUT check's tests
 // (tests/ops/test_check_*.cpp). Everything here is written from formulas, independently of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUTs and plain float64 references shared by the LUT-maths tests (tests/ops).
 #include "lut/Lut3D.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The adjustment list text (lut/ops/AdjustmentList.h): exact round trips, the documented syntax
 // and errors that name the line and column.
 #include "OpsTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT check (lut/check/CheckLut.h) on LUTs with known defects built here from formulas
 // (CheckTestUtil.h): each defect found, located within one lattice cell of where the formula puts
 // it, sized within 10% of the formula's own figure (computed here in float64); and no finding on a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT check on files: the project's sample grade (its findings true by its own formula),
 // every LUT fixture and OpenColorIO test file checked without a crash with finite figures,
 // neutral fixtures without a finding; shapers and 1D files; a picture's colours; the thresholds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stress charts (lut/check/StressCharts.h) against the textbook HSV and HSL formulas, and the
 // check's report picture (lut/check/CheckPicture.h): the AFTER charts are the LUT's output, and
 // each finding is circled where its colour is. Pictures are written under the build tree to look

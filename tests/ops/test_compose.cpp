@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // compose, mix, strength and smooth (lut/ops/Compose.h, Smooth.h) against float64 references
 // written here, and the honesty of the errors they report.
 #include "OpsTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monotone curves (lut/ops/Curve.h) against values derived by hand from the Fritsch-Carlson
 // construction and against the properties it promises (through the points, monotone, no
 // overshoot, periodic hue curves).

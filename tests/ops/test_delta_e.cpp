@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CIEDE2000 against the published test data of Sharma, Wu and Dalal (Color Res. Appl. 30(1),
 // 2005, table 1) and sRGB -> CIELAB against known values.
 #include "lut/ops/ColorDifference.h"

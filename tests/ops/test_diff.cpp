@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT diffs (lut/ops/Diff.h) and heat maps (lut/ops/HeatMap.h) against float64 references
 // written here: per-channel 8-bit steps by plain loops, ΔE2000 by the Sharma-checked function
 // (test_delta_e.cpp) applied to the known outputs.

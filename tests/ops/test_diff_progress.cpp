@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress and cancellation of the diffs and heat maps (lut/Progress.h through DiffOptions and
 // HeatMapOptions): the editor compares a LUT over a 4K picture on a worker and cancels it from
 // the window. The results with a Progress are the results without one, bit for bit; a cancel

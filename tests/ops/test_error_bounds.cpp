@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every maximum error the LUT operations report bounds the truth (lut/ops/ErrorBound.h): the
 // truth is measured here on 200,000 random inputs (none of them chosen by lutkit), with the
 // float64 interpolations of OpsTestUtil.h, and the reported maximum must not be below it. Steep

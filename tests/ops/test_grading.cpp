@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The grading tools added to lut/ops/Adjust.h (tone curves, hue curves, colour wheels, LUT
 // strength) against float64 formulas written out here, plus identity, extreme and clipping
 // checks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // invert (lut/ops/Invert.h): round trips close to the identity for invertible LUTs, with the
 // bound justified from the interpolation error; finite answers and honest reports for LUTs that
 // cannot be inverted; 1D monotone inversion against closed forms.

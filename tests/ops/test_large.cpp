@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT maths at the largest size a LUT may have (256^3 entries, 200 MB of floats): results
 // still exact where they must be and finite everywhere. Times are printed, never asserted.
 #include "OpsTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Oklab (lut/ops/Oklab.h) against the values Björn Ottosson and CSS Color 4 publish.
 #include "lut/ops/Oklab.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT picture (lut/ops/Plot.h): assertions on pixels at places the layout documents. The
 // pictures are also written under the build tree (build/test-tmp/...) to look at, never compared
 // as files.

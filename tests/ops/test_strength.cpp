@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT strength in lightness and chroma (lut/ops/Strength.h) against a float64 Oklab written from
 // Björn Ottosson's definition (tests/support/OklabReference.h: his published matrices both ways)
 // and the sRGB transfer curve of IEC 61966-2-1.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Screenshot "deprocess": undoing display encode + grading with the original LUT, then grading
 // with a new LUT, matches grading the scene with the new LUT directly (bloom off: it cannot be
 // undone).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pipeline in two parts around its LUT (PipelinePart): BeforeLut then FromLut is the whole
 // run bit for bit, and sameBeforeLut says when a cached BeforeLut frame still applies.
 #include "PipelineTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The screenshot/scene rule (lut/pipeline/SceneKind.h) that lutkit preview and the editor share.
 #include "lut/pipeline/SceneKind.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Skipping a stage never changes the output: every preset, with every stage enabled in turn,
 // run normally and with forceAll give bit-identical frames on several scenes.
 #include "PipelineTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // HDR up to 1e4, negatives, NaN and Inf: defined (finite) output everywhere, and a NaN pixel does
 // not spread through the blurs.
 #include "PipelineTestUtil.h"

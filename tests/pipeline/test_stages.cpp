@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The other stages against formulas written here, and the settings interface.
 #include "PipelineTestUtil.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replays the fuzz regression corpus (tests/data/fuzz-regress/<fuzzer>/) through the same targets
 // the libFuzzer harnesses use (tests/fuzz/FuzzTargets.h), in the normal build: every input that
 // once crashed a reader must now be read or refused with lut::Error, never crash. Files whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A full disk for the "nothing lost" tests (issue 17): a small tmpfs mounted in a private mount
 // namespace of the test process (as root, or through a user namespace), so lutkit writes into a

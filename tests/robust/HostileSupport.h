@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for the hostile-file tests (issue 29): oiiotool to make real files, OpenImageIO's own
 // reader as the oracle for pixels, /usr/bin/time for a command's peak memory, crafted bytes.

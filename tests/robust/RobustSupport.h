@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers shared by the robustness tests: writing crafted files and stripping the test folder
 // from error messages so exact texts can be asserted.

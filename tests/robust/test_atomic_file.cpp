@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Verified writes (lut/io/AtomicFile.h), at the library level: a verifier's refusal, a writer's
 // failure and a rename failure keep the old file and name the output (never the hidden temporary
 // name); temporary names fit NAME_MAX for output names of up to 255 bytes (issue 17: they failed

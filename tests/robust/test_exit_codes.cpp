@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exit codes, as documented in the README: 0 success, 1 bad input or failed operation, 2 bad
 // usage (any: unknown command or option, bad value, missing argument). For every subcommand: an
 // unknown option (2), a missing file (1), a malformed file (1) and a success (0), each with the

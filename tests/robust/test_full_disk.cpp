@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 17, problem 1: a full disk never destroys an output. For every writer in the format
 // registry (convert) and every image format apply, preview and embed write, on a disk with no
 // room and on one with a little room (the writer gets part of the file out): exit 1, one line

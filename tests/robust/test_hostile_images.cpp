@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile and broken images (issue 29), through the built lutkit: tiled files read by tiles and
 // written tiled, a codec's error after a read is an error naming the file, memory bounded by
 // what the file holds (checked on its header before anything is allocated, in every command),

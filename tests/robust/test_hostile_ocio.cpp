@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Files OpenColorIO opens on lutkit's behalf (issue 29): a config's FileTransforms and the files
 // a CTF references are held to the rules of a file on the command line (no device or FIFO, even
 // through a symbolic link), and transforms that refer to each other in a cycle are refused

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What lutkit writes that is not a file (issue 29): reports on standard output are checked like
 // any write; a new output is created exclusively, so a second writer of the same new file fails
 // naming it instead of replacing the first one's result.

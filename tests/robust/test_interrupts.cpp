@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 17: SIGINT/SIGTERM left hidden temporary files (.f003.tmpNNN.png) and said nothing. Now
 // the temporary files in flight are removed, what was finished is listed, and lutkit exits with
 // 130 (README "Exit codes"). Each test signals at a moment it has seen (an output or a temporary

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One line per error: the libraries print nothing of their own. OpenColorIO logs through a global
 // function; with OCIO_LOGGING_LEVEL=debug it printed "[OpenColorIO Debug]: ..." lines from
 // `lutkit bench` and `info` listed a dozen of them as notes (issue 17: library chatter folded

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Resource limits: files that claim or contain far too much are refused early, with a message
 // that names the limit. Large files are made sparse (ftruncate) so the tests cost nothing: a
 // reader that tried to read them whole would need gigabytes, so passing shows it did not.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT inputs that are not what they seem (issue 17): special files given as a LUT, a .cube that
 // changes while it is read, headers that claim far more than the file holds, and allocations that
 // fail. Each case ends in one line naming the file, never a hang, a signal or a raw

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The malformed-input table: one defect per row, across every reader, each with the exact
 // message the user sees (what() of the error, with the test folder stripped from paths). A
 // message that changes must change here too, on purpose: these texts are the user interface.

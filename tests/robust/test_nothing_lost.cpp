@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Nothing lost: a failed command leaves an existing output untouched and no temporary files; no
 // command overwrites its own input (same path, symlink or hard link); a kill -9 in the middle of
 // a write leaves the target either as it was or complete.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 17: under a memory limit the message was a raw "std::bad_alloc" (or "out of memory" with
 // nothing else). Now one line names the command's files and the size that could not be had. The
 // limit is injected (the fault shim's malloc refuses requests over 100 MB), so the test means

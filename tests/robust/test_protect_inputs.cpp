@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 17, problem 2: no command writes over any of its inputs, through one check
 // (lut::checkNotOverwritingInputs): the same path however spelled, a symbolic link, a hard link,
 // a path through a linked folder. Before, only the first input was compared with the output:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Usage errors exit 2 everywhere (issue 17: `--layout bogus` exited 1 while `--format bogus`
 // exited 2). For every subcommand of the real lutkit and every option that takes a word or a
 // number: an unknown word exits 2 and names it; the files given are real, so a value that got

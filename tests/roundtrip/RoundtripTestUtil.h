@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared helpers of the round-trip tests: known global edits written out in plain double
 // precision (the oracles), image quantisation, a synthetic screenshot, a private temp folder.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Saving a round-trip screenshot the way an image editor would (8-bit PNG, 16-bit TIFF, quality-90
 // JPEG with 4:2:0 or 4:4:4 chroma) and reading it back through lutkit's reader.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The truth a round-trip test compares extract's output and report with, written plainly in
 // float64 from docs/specs/smash-pipeline.md: what the game shows with an 8-bit LUT against the

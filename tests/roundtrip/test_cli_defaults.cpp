@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The round trip's defaults pair up through the lutkit binary: embed records what it is for,
 // extract needs no options, a .nutexb output means the game; convert --target smash makes the
 // game's LUT from a graded strip (Smush-LUT's neutral.png) and extract reads Smush-LUT's own

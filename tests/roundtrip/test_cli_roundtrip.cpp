@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The embed / extract / fit subcommands end to end through the lutkit binary.
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The measurements behind embed's defaults (docs/roundtrip.md, "The default patch, and why" and
 // "Lossy files"): which patch gives the most accurate LUT for each target, and which scale and
 // alignment survive a quality-90 JPEG. Truth in float64 (TruthOracle.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clear diagnoses: blur, sharpen, noise, brush strokes, a colour-profile conversion, a resize and
 // a lossy save over the patch are each named as the likely cause, with the fix.
 #include "RoundtripTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Embed a patch, edit the image with known global functions, find and extract it again.
 #include "OklabReference.h"
 #include "RoundtripTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fit: recover known LUTs from synthetic before/after pairs, then degrade the pairs.
 #include "RoundtripTestUtil.h"
 #include "TestSupport.h"

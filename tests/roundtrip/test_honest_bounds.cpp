@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The expected error extract prints is an upper bound of the truth in practice: for every
 // synthetic edit x file type x target, the truth (the exact edit in float64 and, for smash, the
 // game written out from docs/specs/smash-pipeline.md) against what extract reports.

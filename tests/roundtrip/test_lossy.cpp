@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lossy files: chroma subsampling is told from the file's metadata and from the patch's pixels,
 // and extract says so.
 #include "RoundtripTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The patch lattice's user-facing names: "game-display" (alias "smash") and "uniform".
 #include "lut/Error.h"
 #include "lut/roundtrip/Extract.h"

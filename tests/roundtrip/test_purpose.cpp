@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 22, "double compensation": a LUT file says what it is for (lut/LutPurpose.h) and every
 // command honours it. From the default (game) patch, `extract EDITED grade.cube` writes the
 // game's LUT and says so in the file; `convert grade.cube color_grading_lut.nutexb` then copies

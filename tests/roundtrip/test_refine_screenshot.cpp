@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // convert --refine --screenshot on a screenshot-sized picture (issue 22: the refinement fitted
 // the pixels it sampled and made the others worse, 0.64 -> 1.08 mean steps, while printing a
 // gain and a max of 38 where pixels were 98 off). The game is simulated here in float64 from

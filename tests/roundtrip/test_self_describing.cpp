@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The patch describes itself: embed records the lattice, layout, scale, target and the stage
 // LUT's digest, extract does by default what embed set up, and patches made before the target
 // existed (tests/data/roundtrip/v1-*.png, made by lutkit embed before issue 14) still read.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // --target smash: the extracted LUT, put through the game's grading on the original scene, must
 // show the edited screenshot. The game is simulated here in float64 from smash-pipeline.md
 // (bloom off), independently of the library's code.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // embed --original-lut: the patch holds the colours the game displays for its 16^3 LUT inputs with
 // the stage's LUT, so extract reads the edit exactly where the compensation needs it. Checked
 // against the game written out in float64 from docs/specs/smash-pipeline.md.

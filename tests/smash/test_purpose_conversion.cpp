@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A LUT made for one purpose turned into another (lut/smash/PurposeConversion.h), against the
 // game's model in float64 written here from docs/specs/smash-pipeline.md:
 //   - the edit a game LUT makes (smash -> raw): exact at its lattice, and the sampling error it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smash authoring (lut/smash/SmashAuthoring.h) against the game written out in float64 from
 // docs/specs/smash-pipeline.md ("The Smush compensation"): the exact composition at the 16^3
 // lattice, the least-squares refinement over the colours that occur, and the error both report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUTs that cancel Smash's brighten step (lut/smash/SmashCompensation.h) against the
 // game's shader evaluated in float64 (PipelineTestUtil.h, from docs/specs/smash-pipeline.md).
 #include "PipelineTestUtil.h"

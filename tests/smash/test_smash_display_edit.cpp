@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Smash LUT for an edit made on the game's picture (lut/smash/SmashDisplayEdit.h) against
 // the game's shader in float64 (PipelineTestUtil.h, from docs/specs/smash-pipeline.md): at every
 // lattice input the game, run with the returned LUT, shows the edit of what it showed before.

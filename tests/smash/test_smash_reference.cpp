@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every Smash stage against the float64 reference in PipelineTestUtil.h (written from
 // docs/specs/smash-pipeline.md, not from lutlib), on small odd-sized frames, to 1e-5.
 #include "PipelineTestUtil.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the game shows with a game LUT, as an edit of the neutral game's picture
 // (lut/smash/SmashShownEdit.h), against the game's shader in float64 (PipelineTestUtil.h, from
 // docs/specs/smash-pipeline.md): for a display colour d, the neutral game's input s showing it is

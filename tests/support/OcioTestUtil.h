@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // OpenColorIO as the oracle in tests: a file's processor (optionally with a CCC id), a table as
 // OCIO's own Lut3DTransform, evaluated directly at given inputs. Written here, apart from the

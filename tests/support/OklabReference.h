@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A float64 Oklab written plainly from Björn Ottosson's definition
 // (https://bottosson.github.io/posts/oklab/, his published matrices both ways) over the sRGB

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for the pipeline tests: deterministic scenes and float64 reference maths written from
 // docs/specs/smash-pipeline.md (independent of lutlib's implementation).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Engine shaders that sample LUT strips and atlases, written out from their sources as the
 // oracle of the strip and atlas tests (docs/specs/strip-layouts.md): ReShade's LUT.fx and

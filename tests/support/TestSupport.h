@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared helpers for tests: paths to data, temporary folders, running the CLI.
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/bench/OcioLutProcessor.h"
 
 #include "ocio/OcioLut3D.h"

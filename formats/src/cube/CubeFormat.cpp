@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The .cube format in the registry ("cube", extension ".cube"): the reader (CubeReader.cpp,
 // CubeParser.h), the writer (CubeWriter.cpp) and the validator (CubeValidator.cpp) live beside it.
 #include "EncodedFormat.h"

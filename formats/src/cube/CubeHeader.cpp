@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The .cube header: keywords, their arguments and the header as a whole (CubeParser.h says what
 // is accepted and refused).
 #include "cube/CubeParser.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The .cube keyword table and the table of departures from the Adobe 1.0 spec that strict reading
 // reports (how many of each kind are shown before only counting, and the words of the "and N more"

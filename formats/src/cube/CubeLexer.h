@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The .cube lexer: whitespace and tokens of one line, and numbers. The hot path (fastRow, a plain
 // data line of three numbers, with an exact Clinger fast path for the floats) is inline here so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The .cube parser: lines, comments, data rows and the result (CubeParser.h says what is
 // accepted and refused; the header's keywords are in CubeHeader.cpp).
 #include "cube/CubeParser.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The .cube reader: Adobe Cube LUT Specification 1.0 and the DaVinci Resolve dialect.
 //

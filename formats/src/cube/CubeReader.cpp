@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The .cube entry points for reading: from memory and from a file (CubeParser.h says what is
 // accepted and refused).
 #include "cube/CubeParser.h"

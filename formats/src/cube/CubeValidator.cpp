@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validating a .cube file: the parser in strict mode, its departures and its one error returned
 // as diagnostics instead of thrown.
 #include "cube/CubeParser.h"

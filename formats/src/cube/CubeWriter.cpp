@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The .cube writer.
 //
 // Comments first (as "# text"), TITLE when set (as a comment in the Resolve dialect, which has

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The parallel row reader: the data rows of a big plain .cube parsed on all cores. Only a fast
 // path: whenever the data is not plain, it gives up and the sequential parser (CubeParser), which

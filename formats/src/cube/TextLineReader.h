@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The one physical-line reader of the text formats. It exists so that every text reader counts
 // lines the same way an editor does (OpenColorIO's readers drift after blank lines and comments):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lutkit atlas: LUTs as the rows of one picture and back (lut/formats/Atlas.h).
 #include "lut/formats/Atlas.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hald CLUT images (ImageMagick, G'MIC, FFmpeg haldclut, lutgen): level L, an L^3 x L^3 picture
 // holding an N^3 LUT with N = L^2, linear index i = r + N*g + N^2*b at x = i mod L^3,
 // y = i div L^3 (strip-layouts.md). Values are the stored 8/16-bit or float samples.

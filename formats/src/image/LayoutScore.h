@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to the LUT image formats: how strongly a table read in a layout looks like a LUT read
 // the right way round (each output channel following its own input), what the strip reader

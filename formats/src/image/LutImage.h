@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: LUT images shared by StripFormat.cpp ("strip": pilot, unity, smush and, when asked,
 // hald) and HaldFormat.cpp ("hald").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT images: an N^3 LUT stored as a 2D picture in a named layout (strip-layouts.md).
 //
 //   unreal (pilot, godot)  N^2 x N   x = r + N*b, y = g          (green 0 on the top row)

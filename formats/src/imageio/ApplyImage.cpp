@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // applyToImage (lut/formats/ApplyImage.h): read, compute and write overlapped, chunk by chunk.
 //
 //   reader thread   decodes chunk i+2 into a free slot

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Bytes in and out for the native codecs: a file read with pread (never mapped: a file that
 // shrinks while it is read must be an error, not SIGBUS) or bytes in memory (standard input); an

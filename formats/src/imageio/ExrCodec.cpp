@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenEXR scanline files, natively, with the OpenEXR library: single-part, flat, every channel
 // half or every channel float (tiled, multi-part, deep and mixed-type files go through
 // OpenImageIO). Rows are read and written straight between the file and an interleaved buffer of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The streaming seam every image codec implements: an ImageSource hands out rows in the file's
 // own sample type, an ImageSink takes rows in the output's type, both in chunks of whole rows, in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image file names and the write policy: see lut/formats/ImageFiles.h. No codec here (names
 // only), so callers do not open anything to ask.
 #include "lut/formats/ImageFiles.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whole frames as float RGBA (lut/formats/ImageIO.h), read and written chunk by chunk through
 // the codecs, from and to files or bytes in memory alike: the file's samples are converted straight
 // into (out of) the frame's rows, so no second frame-sized buffer of the file's type exists.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pre-open plausibility rule (ImageHeaderChecks.h, ImageHeaderScan.h): the dispatch by first
 // bytes, the OpenEXR scanner, the rule itself and the public checkImageFile().
 #include "imageio/ImageHeaderChecks.h"

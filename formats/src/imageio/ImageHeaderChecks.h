@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Sizes an image file declares in its header, checked against the file's length before a codec
 // believes them (issue 17: memory bounded by what the file holds, not what it claims; issue 29:

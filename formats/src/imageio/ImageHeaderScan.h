@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What image headers declare, read field by field without decoding anything (no OpenImageIO:
 // this runs before the image module opens a file). One scanner per format, in

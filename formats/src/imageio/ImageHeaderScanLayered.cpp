@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Header scanners for PSD, DPX and Maya IFF (ImageHeaderScan.h): formats whose headers list
 // sections, layers or elements, each with a size OpenImageIO allocates when it opens the file.
 #include "imageio/ImageHeaderScan.h"

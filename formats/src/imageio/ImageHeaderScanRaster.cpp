@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Header scanners for the single-image raster formats (ImageHeaderScan.h): PNG, JPEG, GIF, BMP,
 // TGA, Radiance HDR and WebP. Each reads the fields its format's specification puts first and
 // says how far the codec can expand its bytes; docs/robustness.md gives each bound's reasoning

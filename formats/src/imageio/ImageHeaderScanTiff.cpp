@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Header scanner for TIFF (ImageHeaderScan.h): TIFF 6.0 and BigTIFF, every page (IFD) of the
 // chain. What a page stores is its strips' or tiles' byte counts, each within the file; how far
 // they can expand depends on the compression tag (docs/robustness.md).

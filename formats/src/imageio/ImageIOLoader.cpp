@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The formats library's side of the OpenImageIO module: sources and sinks for the formats the
 // native codecs do not take load lutkit_imageio.so on first use and forward to it (why: see
 // ImageIOModuleApi.h).

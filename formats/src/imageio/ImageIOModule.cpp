@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Entry point of lutkit_imageio.so: OpenImageIO sources and sinks (OiioImage.cpp) behind a
 // C-callable table (ImageIOModuleApi.h says why this is a separate module).
 #include "imageio/ImageIOModuleApi.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The seam between the formats library and the OpenImageIO module (lutkit_imageio.so).
 //

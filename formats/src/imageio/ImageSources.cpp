@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which codec reads or writes a file: told from the first bytes for reading (never from the
 // name, which may lie), from the output's extension or the named format for writing. Files,
 // standard input and bytes in memory take the same checks and codecs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Inside lutkit_imageio.so: OpenImageIO sources and sinks for every format the native codecs do
 // not take (TIFF, JPEG, DPX, BMP, TGA, HDR, WebP, tiled or multi-part EXR ...). No colour
 // conversion is ever applied: stored values in, stored values out. Metadata: OpenImageIO's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // OpenImageIO sources and sinks, inside lutkit_imageio.so only (OiioImage.cpp).
 #include "imageio/ImageIOModuleApi.h"

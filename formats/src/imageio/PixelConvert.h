@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Stored samples <-> the kernel's float RGBA, run by run (a few thousand pixels, never a frame):
 // 8/16-bit values v become exactly v/255 and v/65535 (correctly rounded float divisions) and go

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG, natively. Reading: the common files (8/16-bit grey, grey + alpha, RGB, RGBA, not
 // interlaced, no tRNS, up to 64 MiB of samples) are inflated in one call by libdeflate (about
 // twice zlib's speed) and unfiltered here (PngUnfilter.h); the others are libpng's, row by row

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG row unfiltering: the five filters of the PNG specification, section 9.
 #include "imageio/PngUnfilter.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Undoes the PNG row filters (https://www.w3.org/TR/png/#9Filters) for the reader's fast path
 // (PngCodec.cpp): None, Sub, Up, Average and Paeth on bytes, `bpp` bytes per pixel (1..8).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PNG writer (PngCodec.cpp's summary says why it is ours): filtered rows, deflated in strips
 // on several threads into one zlib stream, chunks written through lut::OutputFile with checked
 // writes, the finished file read back (header and end) before it replaces the output.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Binary PNM, natively: P5 (grey) and P6 (RGB), maxval 1..65535 (16-bit samples big-endian),
 // the netpbm definition (http://netpbm.sourceforge.net/doc/ppm.html). A header of three numbers
 // with '#' comments; rows follow uncompressed, so the file size is checked against the header

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tegra X1 block-linear tiling (nutexb.md, "Tiling"); the layout is described in BlockLinear.h.
 #include "nutexb/BlockLinear.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Tegra X1 block-linear tiling (the "swizzle" of Switch textures; nutexb.md, "Tiling"), the
 // general 3D algorithm: any size, any bytes per texel >= 1. Internal to formats/; tests and

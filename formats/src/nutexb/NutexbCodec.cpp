@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The nutexb byte codec; the byte layout is described in NutexbCodec.h (docs/specs/nutexb.md).
 #include "nutexb/NutexbCodec.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The nutexb byte codec (docs/specs/nutexb.md): the footer, reading a whole file's bytes into a
 // LutFile and writing a Lut3D as bytes. Internal to formats/; tests and fuzzers reach it through

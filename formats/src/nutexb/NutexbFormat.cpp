@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // nutexb: Smash Ultimate texture files, here the 3D colour-grading LUT (nutexb.md, byte-exact).
 //
 // The bytes (footer, tiling, reading, writing) are in NutexbCodec.{h,cpp} and BlockLinear.{h,cpp};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut::formats::bake: sample a colour conversion (a config's, LUT files' through OCIO, or a LUT
 // with conversions around it) on a lattice, with a shaper when its input is HDR, write it in any
 // format and measure the written file against the conversion (lut/formats/Bake.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What lut::formats::bake samples (lut/formats/Bake.h): the function, what it is called, the
 // colour space its input is in (to choose a shaper) and an input range a source file has.

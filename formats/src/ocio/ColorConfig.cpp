@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finding and loading OpenColorIO configs, and checking the names users give against them.
 #include "lut/formats/ColorConfig.h"
 

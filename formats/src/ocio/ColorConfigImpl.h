@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The OpenColorIO config behind lut::formats::ColorConfig (formats/src only).
 #include "lut/formats/ColorConfig.h"

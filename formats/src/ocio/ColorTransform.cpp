@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenColorIO processors as pixel steps, and the conversions around a LUT.
 #include "lut/formats/ColorTransform.h"
 

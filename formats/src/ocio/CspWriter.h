@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Cinespace .csp written by hand when the table has a shaper or an input range other than [0,1]
 // (OcioWriters.cpp uses OCIO's Baker otherwise). The .csp prelut is a per-channel list of input

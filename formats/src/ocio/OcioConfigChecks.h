@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What an OpenColorIO config makes OCIO do on lutkit's behalf, checked when the config is loaded
 // (ColorConfig::load), before any processor is built:

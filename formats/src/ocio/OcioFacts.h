@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the OpenColorIO reader reports about a file besides its table: the tables and other ops
 // in the processor, the bit depth the file stored, its title and comments.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Files that would make OpenColorIO 2.1 (the version lutkit is built with) loop or allocate
 // without end, refused before OCIO sees them. Each check names the defect it avoids and was found

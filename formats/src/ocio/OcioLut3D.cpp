@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ocio/OcioLut3D.h"
 
 namespace lut::formats {

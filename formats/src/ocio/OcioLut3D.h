@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A lutkit table as OpenColorIO's Lut3DTransform, in one place: how the writers hand a table to
 // OpenColorIO (OcioWriters.cpp) and how the benchmarks' peer runs one (bench/support's

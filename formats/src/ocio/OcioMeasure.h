@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Measuring a table against the function it stands for (OpenColorIO's processor, or a chain of
 // conversions around a LUT): both evaluated at held-out points between the lattice points, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenColorIO reader: every LUT file OpenColorIO 2.1 reads (but .cube, ours).
 //
 // OCIO builds a processor from a FileTransform on the file (it detects the format by extension and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ocio/OcioSampling.h"
 
 #include "ocio/OcioMeasure.h"

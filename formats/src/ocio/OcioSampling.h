@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Turning an OpenColorIO processor read from a file into a LutFile (OcioReader.cpp): exactly when
 // the file is one of the shapes lut::formats::OcioStructure names, else by sampling the whole

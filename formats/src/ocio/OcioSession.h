@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What every OpenColorIO bridge needs (OcioReader.cpp, OcioWriters.cpp): OCIO's multi-line
 // messages made one line, an OcioSession that serialises OCIO use and turns its log into

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What an OpenColorIO processor holds, seen as lutkit's LutFile: a plain 3D table, a 1D shaper
 // then a 3D table, or per-channel 1D tables, each over an input range (the domain) set by the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenColorIO writers: every format OCIO's Baker writes.
 //
 // A raw in-memory Config with an input space and an output space whose transform is our table (a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sony Pictures Imageworks .spi3d: OCIO 2.1 reads it but its Baker cannot write it, so we
 // write it ourselves ("SPILUT 1.0", "3 3", "N N N", then one "r g b  R G B" line per lattice
 // point with its indices; no domain, no shaper) and read it back through OCIO like the rest.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes lutkit-editor's icon and renders the PNG sizes (gui/desktop/icons/, run from anywhere).
 
 The icon is an RGB colour cube seen from its white corner; each visible face is an NxN lattice of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Box-filter reduction of an image by an integer factor: a quick, smooth proxy of a frame (the
 // editor previews on one while a slider is dragged).

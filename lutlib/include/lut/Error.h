@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Errors thrown by lutlib and formats. The library never prints and never exits: callers (CLI,
 // GUI) decide how to show these. Non-fatal findings come back as Diagnostics in results.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Every size limit and format constant lutlib enforces, in one place.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 #include "lut/Error.h"
 #include "lut/Lut1D.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a LUT is for: the one vocabulary of the library, both programs and the files they write
 // (docs/architecture.md, "Why one purpose"; docs/roundtrip.md):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What `lutkit apply` does to every pixel, as one chain of steps run on small runs of float RGBA
 // pixels (a few thousand at a time, from the streaming image reader, lut/formats/ApplyImage.h):

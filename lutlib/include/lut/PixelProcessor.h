@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Something that rewrites RGBA float pixels in place (an OpenColorIO conversion,
 // lut::formats::ColorTransform), and a chain of them run over a whole image in bands of rows on

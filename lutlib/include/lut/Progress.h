@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Progress and cancellation of long library calls that a program runs on a worker thread (the
 // editor reading a large picture, writing its preview, comparing a LUT over a picture). The caller

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT check's measures over the table's cells: invertibility (the sign of each tetrahedron's
 // Jacobian, as the tetrahedral interpolant lut::Sampler uses cuts a cell) and the share of the
 // output cube the LUT reaches.

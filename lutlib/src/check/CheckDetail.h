@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's LUT check (lut/check/CheckLut.h): what its parts share. The check works
 // on "table coordinates" u in [0, 1]^3 (the 3D table's lattice point (i, j, k) is at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lut::checkLut: the parts of the check (CheckDetail.h) in order, then one summary per check.
 #include "lut/check/CheckLut.h"
 

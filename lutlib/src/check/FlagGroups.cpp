@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flags into findings: flags of one kind whose cells touch (26-neighbourhood) make one finding,
 // located at its worst flag, sized by it, with the share of the cube (or picture) its lattice
 // edges stand for.

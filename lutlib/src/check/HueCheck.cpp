@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT check's hue measures: constant-hue ramps (fixed Oklab hue and lightness, chroma from
 // grey to the sRGB gamut's edge) and the skin line through the LUT, and the hue they come out
 // with.

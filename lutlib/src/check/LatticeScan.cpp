@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The lattice and ray scans of the LUT check: every lattice line along each axis and every ray
 // through scanLine (LineScan.h), their events turned into flags on the cells they touch.
 #include "check/CheckDetail.h"

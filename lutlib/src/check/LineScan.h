@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's LUT check: one line of samples through the cube (a lattice line or a ray)
 // looked at for fold-overs, banding (flat runs, steps, steep slopes), clips and second

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT check of a file with only 1D tables: each channel's curve is one line (LineScan.h);
 // events of one kind that touch along it make one finding.
 #include "check/CheckDetail.h"

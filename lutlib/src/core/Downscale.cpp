@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/Downscale.h"
 
 #include "lut/Parallel.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Polynomial pow() for the pipeline's hot loops: pow(x, p) = exp2(p * log2(x)) with log2 and exp2
 // from Cephes-style minimax polynomials and the product p * log2(x) carried in two floats, so the

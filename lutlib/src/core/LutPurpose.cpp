@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a LUT is for, its names and its tag in files; see lut/LutPurpose.h.
 #include "lut/LutPurpose.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PixelProcessor and ProcessorChain (lut/PixelProcessor.h).
 #include "lut/PixelProcessor.h"
 

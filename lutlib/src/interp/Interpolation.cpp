@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/interp/Interpolation.h"
 
 #include "lut/Error.h"

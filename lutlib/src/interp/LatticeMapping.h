@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: input -> lattice cell + fraction, the one definition every 3D LUT
 // evaluation uses: the scalar samplers (interp/ScalarLattice.h), the SIMD kernels

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Samplers: one class per interpolation, chosen once by makeSampler(). sample() is the scalar
 // reference (the readable definition); applyPixels() runs the SIMD kernel picked at run time for
 // this CPU (src/interp/simd/), which must agree with sample() to float rounding. Both map inputs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the scalar forms of the lattice mapping (interp/LatticeMapping.h) and the
 // tetrahedral blend (interp/Tetrahedral.h), for the scalar samplers and the round trip's

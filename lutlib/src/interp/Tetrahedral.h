@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the tetrahedral blend of one lattice cell, written once for any vector
 // width and used by the scalar sampler, the AVX2 kernel and the round trip's PatchFunction.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // File-name rules: the running program's folder, a path's extension; see lut/io/FileNames.h.
 #include "lut/io/FileNames.h"
 

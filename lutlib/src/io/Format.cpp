@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Format's defaults: the memory forms of formats that only know files, through a private
 // temporary folder, and the stream bound. The registry is FormatRegistry.cpp.
 #include "lut/io/Format.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The registry of formats: lookup by name and extension, and the one read and write of a LUT
 // file that every front end goes through; see lut/io/FormatRegistry.h.
 #include "lut/io/FormatRegistry.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one write of a LUT file; see lut/io/LutWriter.h.
 #include "lut/io/LutWriter.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/io/OutputFile.h"
 
 #include "lut/io/AtomicFile.h"

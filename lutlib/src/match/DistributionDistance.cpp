@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sliced Wasserstein and quantile ΔE2000 between colour distributions: see
 // lut/match/DistributionDistance.h.
 #include "lut/match/DistributionDistance.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Histograms and the smooth histogram-matching curve: see lut/match/HistogramMatch.h.
 #include "lut/match/HistogramMatch.h"
 

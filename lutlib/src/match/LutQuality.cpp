@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monotonicity, fold-overs and smoothness of a LUT file: see lut/match/LutQuality.h.
 #include "lut/match/LutQuality.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's match: CIELAB of stored or working-space values (display-encoded values
 // through the sRGB curve, scene-linear ones as linear Rec.709/sRGB), for the distances.

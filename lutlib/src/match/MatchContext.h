@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's match: what fitMatch learnt of the pictures, kept for matchLook's
 // measurements so the pictures are read once.

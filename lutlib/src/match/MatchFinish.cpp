@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strength and preserve for a matched colour: see lut/match/MatchFinish.h.
 #include "lut/match/MatchFinish.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fitting the transfer by each method, and auto's choice: see lut/match/Match.h.
 #include "lut/Error.h"
 #include "lut/match/LutQuality.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Baking a transfer into a LUT file, and matchLook's measurements: see lut/match/Match.h.
 #include "lut/Error.h"
 #include "lut/Parallel.h"

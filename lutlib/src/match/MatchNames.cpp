@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The names users type for match's methods and what it preserves (lut/match/MatchOptions.h).
 #include "lut/Error.h"
 #include "lut/match/MatchOptions.h"

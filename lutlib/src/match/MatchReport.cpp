@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The text of a match report: see lut/match/MatchReport.h.
 #include "lut/match/MatchReport.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Source, result and reference side by side with histograms: see lut/match/MatchReportImage.h.
 #include "lut/match/MatchReportImage.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pictures as samples, their histograms and moments: see match/MatchSamples.h.
 #include "match/MatchSamples.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's match: the pictures' pixels as working-space samples, and the histograms
 // and moments taken of them. Reductions run in fixed chunks merged in order, so the results do

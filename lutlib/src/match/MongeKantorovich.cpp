@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The linear Monge-Kantorovich map: see lut/match/MongeKantorovich.h.
 #include "lut/match/MongeKantorovich.h"
 

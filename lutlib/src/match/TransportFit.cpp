@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sliced transport and the monotone lattice fit of its displacements: see match/TransportFit.h.
 #include "match/TransportFit.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's match: the regularised method's correction (lut/match/MatchOptions.h).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: a tiny rasteriser for the pictures the LUT maths draws (plot, heat maps):
 // filled rectangles, anti-aliased lines and discs, and text in a built-in 5x7 bitmap font.

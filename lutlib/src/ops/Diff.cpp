@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/ops/Diff.h"
 
 #include "lut/Error.h"

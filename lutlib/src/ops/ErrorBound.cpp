@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The held-out bound of a lattice approximation's error; see lut/ops/ErrorBound.h.
 #include "lut/ops/ErrorBound.h"
 

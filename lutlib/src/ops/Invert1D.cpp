@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/Error.h"
 #include "lut/ops/ErrorBound.h"
 #include "lut/ops/Invert.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib's LUT maths (ops/): the pieces diff, compose, smooth, invert and plot share.
 #include "lut/ErrorStats.h"

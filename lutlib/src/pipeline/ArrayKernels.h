@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Flat-array forms of the pipeline's per-pixel math, with an AVX2 + FMA path chosen at run time.
 // The AVX2 path performs the same IEEE operations in the same order as the scalar functions of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pointwise and simple stages: sanitize, exposure, tone mapping, chromatic aberration, vignette,
 // film grain, display encode.
 #include "ArrayKernels.h"

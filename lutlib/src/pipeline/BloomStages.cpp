@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bloom stages. Each builds its bloom image in prepare() (reading the sanitized frame) and adds it
 // in processRows(). Exact zeros are never added, so a bloom that finds nothing leaves the frame
 // bit-identical (what makes skipping safe).

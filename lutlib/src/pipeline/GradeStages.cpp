@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LUT stages: the Smash grading pass (with an optional fused sRGB display encode) and a generic
 // LUT stage.
 #include "ArrayKernels.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The preview recipe, once for both programs; see lut/pipeline/PreviewPlan.h.
 #include "lut/pipeline/PreviewPlan.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The screenshot/scene rule; see lut/pipeline/SceneKind.h.
 #include "lut/pipeline/SceneKind.h"
 

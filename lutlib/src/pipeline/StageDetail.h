@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Private helpers shared by the stage implementations.
 #include "core/FastMath.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pixels inside a patch's blocks; see BlockAnalysis.h and lut/roundtrip/BlockEvidence.h.
 #include "roundtrip/BlockAnalysis.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: gathers lut::BlockEvidence (lut/roundtrip/BlockEvidence.h) from a patch's
 // pixels; readPatch calls it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Chroma subsampling from a patch's pixels; see lut/roundtrip/ChromaCheck.h.
 #include "lut/roundtrip/ChromaCheck.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: "the same colour" in the round trip is judged per channel, by the largest
 // channel difference (an edit may move one channel and not the others).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Embedding a neutral LUT patch and its marker frame into a screenshot; see lut/roundtrip/Embed.h
 // and docs/roundtrip.md.
 #include "lut/roundtrip/Embed.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Extract: the LUT from a read patch, for a raw engine (the edit itself) or for the game (the
 // edit composed with what the game does to its LUT's output, lut/smash/SmashAuthoring.h); see
 // lut/roundtrip/Extract.h, docs/roundtrip.md and, for the game's side,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Extract's expected error; see ExtractBounds.h.
 #include "roundtrip/ExtractBounds.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: extract's expected error (lut/roundtrip/Extract.h, ExpectedError), an upper
 // estimate built from the patch's own redundancy. At every input x the error is bounded by

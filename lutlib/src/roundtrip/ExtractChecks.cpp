@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks on a read patch before extract builds a LUT; see ExtractChecks.h.
 #include "roundtrip/ExtractChecks.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: what extract checks on a read patch before it builds a LUT, and how it
 // reports what it found (warnings with a kind, info notes). Each warning has a test that

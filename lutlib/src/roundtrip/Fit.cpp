@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Regularised least-squares LUT fit from a before/after pair: see Fit.h for the model.
 #include "lut/roundtrip/Fit.h"
 

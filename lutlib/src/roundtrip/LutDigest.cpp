@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LUT fingerprint of the patch header; see lut/roundtrip/LutDigest.h.
 #include "lut/roundtrip/LutDigest.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Why a comb of marker-like edges did not decode; see MarkerComb.h.
 #include "roundtrip/MarkerComb.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: a regular comb of marker-like edges that the patch finder saw but could
 // not decode, and why (blur, noise, a damaged header): the finder's "not found" message.

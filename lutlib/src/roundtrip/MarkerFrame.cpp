@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The marker frame's header bits, CRC and rings; see MarkerFrame.h.
 #include "roundtrip/MarkerFrame.h"
 

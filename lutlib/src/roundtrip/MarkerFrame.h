@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the bits of the marker frame around a round-trip patch (the picture is in
 // lut/roundtrip/PatchPlacement.h). Two header versions, told apart by the sync byte; both are

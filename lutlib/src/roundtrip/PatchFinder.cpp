@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finding the patch by its marker frame: an exact run-length detector (lossless edits keep equal
 // pixels equal), the same with noise tolerance, then an edge detector for softened or resized
 // frames. Each candidate is confirmed by decoding the frame's header (MarkerFrame.h).

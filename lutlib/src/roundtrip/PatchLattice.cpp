@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The patch lattice's names and input values; see lut/roundtrip/PatchLattice.h.
 #include "lut/roundtrip/PatchLattice.h"
 

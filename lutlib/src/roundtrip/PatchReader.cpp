@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading the patch's blocks and evaluating the measured edit between them; see
 // lut/roundtrip/PatchReader.h.
 #include "lut/roundtrip/PatchReader.h"

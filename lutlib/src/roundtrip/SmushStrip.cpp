@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smush-LUT's .lut.png strip; see lut/roundtrip/SmushStrip.h.
 #include "lut/roundtrip/SmushStrip.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The game's display model in double; see GameDisplay.h.
 #include "smash/GameDisplay.h"
 

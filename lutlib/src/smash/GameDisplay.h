@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: what the game displays, in double precision, for authoring game LUTs (the
 // round trip's extract, the Smash compensation of an edit). Built on the pipeline's constants

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Display error summaries; see lut/smash/GameError.h.
 #include "lut/smash/GameError.h"
 

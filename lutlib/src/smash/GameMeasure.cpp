@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The game's error where nothing was fitted; see GameMeasure.h.
 #include "smash/GameMeasure.h"
 

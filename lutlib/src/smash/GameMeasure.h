@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: what the game shows with an 8-bit LUT against the wanted colours, measured
 // where nothing was fitted (lut/smash/SmashAuthoring.h), and the colours a refinement is

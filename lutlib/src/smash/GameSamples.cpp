@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The samples and the game's error over them; see GameSamples.h.
 #include "smash/GameSamples.h"
 

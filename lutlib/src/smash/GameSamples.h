@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the colours over which Smash authoring measures and refines a game LUT
 // (lut/smash/SmashAuthoring.h): inputs s of the game's LUT with the display colour wanted

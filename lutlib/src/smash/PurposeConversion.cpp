@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A LUT made for one purpose turned into the LUT for another; see
 // lut/smash/PurposeConversion.h.
 #include "lut/smash/PurposeConversion.h"

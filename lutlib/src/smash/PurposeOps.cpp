@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compose and mix with purposes; see lut/smash/PurposeOps.h.
 #include "lut/smash/PurposeOps.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact Smash composition, the colours it is measured over, the refinement; see
 // lut/smash/SmashAuthoring.h.
 #include "lut/smash/SmashAuthoring.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/smash/SmashCompensation.h"
 
 #include "lut/interp/Sampler.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The editor's Smash LUT for a display edit: the exact composition of lut/smash/SmashAuthoring.h
 // with the edit continued above white; see lut/smash/SmashDisplayEdit.h.
 #include "lut/smash/SmashDisplayEdit.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scalar, accurate (std::pow) forms of the Smash grading math. The pipeline's grading pass uses
 // polynomial pows for speed (pipeline/GradeStages.cpp, core/FastMath.h) and is tested against
 // these and a float64 reference.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The least-squares refinement of a game LUT over samples; see SmashRefinement.h.
 #include "smash/SmashRefinement.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the least-squares refinement of a game LUT (lut/smash/SmashAuthoring.h)
 // over the colours of GameSamples.h.

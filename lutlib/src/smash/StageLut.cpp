@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lut/smash/StageLut.h"
 
 #include "lut/ops/Lattice.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Built against an installed lutkit by tests/install (find_package(lutkit), lutkit::formats).
 // Usage: consumer GRADE.cube OUT_DIR. Exits 1 with a message on the first check that fails:
 //  - the installed lut/Version.h is the version the package was found with;

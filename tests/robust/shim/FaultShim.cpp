@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LD_PRELOAD shim that injects the faults the robustness tests need where the real thing cannot
 // be arranged:
 //  - a full disk (where no small file system can be mounted): writes to files under

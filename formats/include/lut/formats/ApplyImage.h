@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A lut::PixelChain (a LUT and the steps around it) through an image file, streamed: rows are
 // read in chunks in the file's own type, converted run by run into float RGBA, run through the

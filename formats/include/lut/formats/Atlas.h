@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUT atlases as files (lutkit atlas build / split / info): several LUTs as the rows of one 8-bit
 // picture in a strip layout (lut/io/Atlas.h), ReShade's MultiLUT.fx atlas by default, and back.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Baking colour conversions into LUT files: what ociobakelut does, and more.
 //

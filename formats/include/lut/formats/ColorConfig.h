@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // OpenColorIO configs for lutkit's colour management (apply, convert, preview and bake with
 // --config/--from/--to/--look/--display/--view, named as ocioconvert and ociobakelut name them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // OpenColorIO conversions as pixel steps (lut/PixelProcessor.h), and the plan `lutkit apply`,
 // `convert` and `preview` follow: the LUT runs in the colour space it was made for, with OCIO's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Converting a LUT file into another format and, when asked or when the output means it, to
 // another purpose (lut/LutPurpose.h: a .nutexb is the game's LUT), saying what it cost: what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The .cube format (Adobe Cube LUT Specification 1.0 and the DaVinci Resolve dialect): reading
 // from memory or a file, writing to a string or a file, and strict validation against the Adobe

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The LUT an edited file shows, whatever the file is: what `lutkit extract` and the editor's "LUT
 // from Edited Screenshot" both call, so they read the same files the same way

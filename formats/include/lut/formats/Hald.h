@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Hald CLUT sizes, as ImageMagick names them: a Hald image of level L is L^3 x L^3 pixels and
 // holds an N^3 LUT with N = L^2 (hald:8 is 512x512, a 64^3 LUT). lutkit's --size N means the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What lutkit knows about image files by their name, and the one policy for what a written image
 // holds: used by `lutkit apply`, `lutkit preview` and the editor's "save preview", so they cannot

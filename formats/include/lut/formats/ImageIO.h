@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Image files: their stored values as float RGBA, no colour conversion (LUT images, screenshots
 // for the round trip, preview frames). Read and written in chunks of rows: the native codecs

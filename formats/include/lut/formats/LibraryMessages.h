@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The libraries behind the formats print nothing of their own: what they log is folded into the
 // one line or the diagnostics of the read or write that caused it. OpenColorIO logs through a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Smash Ultimate nutexb volumes: the game's 3D colour-grading LUT (color_grading_lut.nutexb), an
 // RGBA8 N^3 texture, block-linear tiled (Tegra X1) or in linear rows. The byte contract is

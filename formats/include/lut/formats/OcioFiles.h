@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Settings of the OpenColorIO reader ("ocio": every LUT file OpenColorIO reads but .cube), passed
 // as FormatOptions attributes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // half <-> float with F16C (compiled with -mf16c -mavx, called only when the CPU has it).
 #include <immintrin.h>
 

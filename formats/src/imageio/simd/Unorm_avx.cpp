@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Float RGBA -> 8/16-bit RGB(A) with AVX (compiled with -mavx, called only when the CPU has it):
 // the value lut::toUnorm8/toUnorm16 give (lut/Quantize.h), four channels at a time. The scalar
 // form is `v > 0 ? (v >= 1 ? max : int(double(v) * max + 0.5)) : 0`; here v is first clamped to

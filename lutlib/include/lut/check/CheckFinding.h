@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One finding of lutkit's LUT check (lut/check/CheckLut.h): what is wrong, where, how large, how
 // much of the cube (or of a picture) it touches, and the region of input colours it concerns, so

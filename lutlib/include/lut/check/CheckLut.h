@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit's LUT check: an automatic health report of a LUT file (docs/check.md says what each
 // figure measures and why its threshold is where it is).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The check's report as one picture a person reads at a glance (`lutkit check --report OUT.png`):
 //  - the overall result and one line per check (pass / warn / fail and its figures);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The thresholds of lutkit's LUT check (lut/check/CheckLut.h): for each figure, the value at
 // which it warns and the value at which it fails (a figure at or above `fail` fails, at or above

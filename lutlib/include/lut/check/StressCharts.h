@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The stress charts colourists run through a LUT to judge it by eye, as pictures of input
 // colours (sRGB-encoded, in [0, 1]): what `lutkit chart` writes for grading in other tools, and

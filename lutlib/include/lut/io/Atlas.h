@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUT atlases: strips of one layout and lattice size stacked top to bottom in one picture, row k
 // at pixel rows k N .. k N + N - 1 -- what ReShade's MultiLUT.fx samples (its selector adds

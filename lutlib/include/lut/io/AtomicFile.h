@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Verified writes, in one place. Every output file is written to a hidden temporary sibling
 // (tempPath(): same folder, so the rename is atomic; same extension, so OpenImageIO picks the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUTs known by name, usable wherever a LUT file is (lutkit --lut, --original-lut, convert's
 // input, the editor): "builtin:NAME". The prefix cannot be a LUT file's name by accident (a file

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a file name says: its extension, the way formats and image writers are chosen; and where
 // the running program lives, the way its installed files are found.

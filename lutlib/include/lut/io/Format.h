@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One concrete LUT file format. Formats live in formats/ and are registered from one list
 // (lut/io/FormatRegistry.h).

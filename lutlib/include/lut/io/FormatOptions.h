@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a caller can ask of a format reader or writer. The typed fields are the options several
 // formats share; an option that only one format understands is a named attribute

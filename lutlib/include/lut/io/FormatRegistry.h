@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Formats by name and extension. Two formats may claim one extension: read() tries each in turn
 // and, if all fail, throws one error that lists every format's reason.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Numbered frame sequences, spelled as oiiotool and ffmpeg spell them:
 //   frame.%04d.exr   printf style: %0Nd pads to N digits, %d does not pad (ffmpeg, oiiotool)

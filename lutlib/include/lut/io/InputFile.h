@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading input files safely, in one place: every LUT reader goes through here before it reads a
 // byte (and readers that hand a path to a library, OpenColorIO or OpenImageIO, call

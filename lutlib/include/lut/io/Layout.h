@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUT image layouts: where entry (r, g, b) of an N^3 LUT sits in a 2D picture. See
 // docs/specs/strip-layouts.md. Pixel (x, y) has y = 0 at the top row.

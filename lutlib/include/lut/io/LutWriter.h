@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The one write of a LUT file in a given format, for the registry (FormatRegistry::write),
 // lutkit convert and bake: the output rule (lut/io/OutputPolicy.h) decides where the bytes go, a

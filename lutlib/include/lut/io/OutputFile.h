@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where an output's bytes go, after checkOutput (lut/io/OutputPolicy.h) said they may: a regular
 // file is written to a temporary sibling (lut::AtomicFile) and renamed into place by commit(),

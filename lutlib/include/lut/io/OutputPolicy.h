@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The one rule for every file lutkit writes (every subcommand that writes, through one call, so
 // the rule cannot differ between them):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // No command writes over any of its inputs: the one check every command runs on each output
 // before it writes (convert, embed, extract with --original-lut, fit with both images, apply and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // "-" on lutkit's command lines: standard input, read whole and bounded. Writes to standard
 // output go through lut/io/OutputFile.h (a LUT file's: lut/io/LutWriter.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Temporary files in flight and interrupts, in one place. Every temporary file (AtomicFile's
 // hidden sibling of an output, a private scratch folder) is listed here while it lives, so a

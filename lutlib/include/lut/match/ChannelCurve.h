@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A monotone 1D curve: the per-channel part of a colour match (histogram matching), sampled on
 // uniformly spaced knots and continued linearly beyond them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How far apart two pictures' colour distributions are, in CIELAB (the measure `lutkit match`
 // reports before and after, and by which `auto` chooses):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Per-channel histogram matching: the 1D curve that gives a source channel the distribution of a
 // reference channel, made smooth enough to ship in a LUT.

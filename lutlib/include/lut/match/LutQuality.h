@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How well a LUT file (a shaper, then a 3D table) interpolates: the figures `lutkit match`
 // reports for the LUT it wrote. Measured on a grid of `grid`^3 points uniform in the working

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // lutkit match: a LUT that gives a source picture the look of one or more reference pictures,
 // with no correspondence between their pixels (docs/match.md). One implementation for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What `--strength`, `--luma-strength`, `--chroma-strength` and `--preserve` do to a matched
 // colour: one function, applied per colour before the match is tabulated (the LUT holds a shaper

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What `lutkit match` and the editor's "Match to reference..." ask for: the method that carries
 // the look of a reference picture over to a source picture, and what to keep of the source

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What `lutkit match` says about the LUT it made (text here; --json in the CLI), and what the
 // editor shows: the distance to the reference's colours before and after, how the LUT

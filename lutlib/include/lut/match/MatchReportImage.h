@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The picture `lutkit match --report-image` writes and the editor shows: the source, the result
 // (the LUT applied to the source) and the reference side by side, each scaled to fit 480x270,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A fitted colour match as a function of the source's stored values, in the form a LUT file
 // holds it: a per-channel shaper, then a 3D table (docs/match.md):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The linear Monge-Kantorovich colour map (F. Pitié and A. Kokaram, "The linear
 // Monge-Kantorovitch linear colour mapping for example-based colour transfer", IET CVMP 2007):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The space a colour match is computed in. The LUT maps the source's stored values to stored
 // values of the same kind; the statistics (histograms, covariances, distances between lattice

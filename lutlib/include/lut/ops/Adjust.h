@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUT authoring operations: grading adjustments applied to the *entries* of a Lut3D (its output
 // colours), so an edited LUT carries the edit with it when it is exported.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The adjustment list: lut::Adjustments as readable text, so the editor can save what it did and
 // `lutkit` can apply the same list to a LUT. One adjustment per line, a keyword then numbers:

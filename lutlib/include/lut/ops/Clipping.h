@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Clipping feedback: how many entries of a LUT fall outside the range a display (or an 8-bit
 // export) can hold, cheap enough to run on every slider move (a 33^3 LUT takes tens of

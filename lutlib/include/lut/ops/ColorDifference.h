@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Colour difference for LUT comparisons: CIEDE2000 on CIELAB computed from sRGB-encoded values.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The difference between two LUTs as functions: what a lossy step (resampling, quantizing,
 // writing and reading back) cost.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Combining LUTs: composition (one after the other) and mixing (including LUT strength, a mix
 // with the identity). NaN entries count as 0 and infinities as +-65504 (their number is in

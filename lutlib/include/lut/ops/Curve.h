@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A curve through control points for the grading tools (lut/ops/Adjust.h): tone curves (master,
 // red, green, blue) and the periodic hue curves (hue vs hue, saturation, luminance).

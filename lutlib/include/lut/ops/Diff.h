@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How two LUTs differ: per channel in 8-bit steps, in ΔE2000 (lut/ops/ColorDifference.h: entries
 // are taken as sRGB-encoded), and where (lut/ops/Regions.h), over the LUT's lattice or over the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // An error figure that bounds the truth: the difference between a function and its lattice
 // approximation over the whole of a box, estimated on points the approximation did not use.

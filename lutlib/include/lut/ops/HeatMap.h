@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Pictures of where two LUTs differ: ΔE2000 (lut/ops/ColorDifference.h) per pixel of an image, or
 // over slices of the cube, mapped through a dark-to-bright colour ramp (black 0 -> purple -> red

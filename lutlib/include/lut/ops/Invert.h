@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Inverting a LUT: a table that undoes it where it can be undone, and a report of where it
 // cannot. Never NaN: NaN entries count as 0 and infinities as +-65504.

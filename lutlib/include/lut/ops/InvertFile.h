@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Inverting a LUT file whose 1D shaper S runs before its 3D table T (a Resolve .cube, a .csp or
 // .clf read as shaper + table): f = T(S(x)), so f^-1 = S^-1(T^-1(y)). T is inverted as a table

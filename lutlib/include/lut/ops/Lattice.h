@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A LUT file (a 1D shaper, then a 3D table) as one 3D table, where one lattice is truly needed:
 // the game's 16^3 LUT, a format that stores no shaper, a lattice to invert. Each entry is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a LUT operation (compose, mix, smooth; lut/ops/Compose.h, Smooth.h) returns: the LUT and
 // the error it introduced, measured as each function documents.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A picture of a LUT that people can read at a glance (lutkit plot, the editor's LUT view):
 //  - left: the per-channel curves along the neutral axis (output R, G, B for input (t, t, t)),

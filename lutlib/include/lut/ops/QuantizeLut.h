@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rounding a LUT's entries to what an 8-bit file stores, with the error it introduced.
 #include "lut/ErrorStats.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Named regions of the RGB cube, for saying *where* two LUTs differ or a LUT cannot be inverted.
 //

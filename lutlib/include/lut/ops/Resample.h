@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Resampling a LUT to another lattice size, with the error it introduced (bounded over the whole
 // domain, lut/ops/ErrorBound.h).

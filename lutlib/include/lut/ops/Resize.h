@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Resizing a LUT with the error reported: lut::resampleWithError (lut/ops/Resample.h) on a copy
 // whose NaN entries count as 0 and infinities as +-65504, so the result and its error are finite

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Smoothing a LUT: a Gaussian blur over the lattice of the LUT's *deviation from the identity*
 // (entry - lattice input), added back to the identity. So the identity and any LUT that is an

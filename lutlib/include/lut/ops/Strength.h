@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUT strength ("intensity", "contribution"): a LUT blended with the neutral LUT, separately in
 // lightness and in chroma, in a perceptual space (Oklab), so "half the grade" looks like half and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The preview pipeline: an ordered list of stages (lut/pipeline/Stage.h) run on a linear float
 // RGBA frame, used by `lutkit preview` and by the editor, so both show the same pixels.

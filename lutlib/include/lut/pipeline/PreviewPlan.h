@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The preview recipe, composed once for `lutkit preview` and the editor (docs/architecture.md,
 // "Why one plan"): whether the picture is an in-game screenshot or a linear scene (SceneKind.h's

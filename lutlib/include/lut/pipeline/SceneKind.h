@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a picture opened for preview holds, and the rule that tells it from the file (issue 14:
 // "an 8-bit sRGB image is an in-game screenshot by default, a linear EXR a scene"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One step of the preview pipeline (lut::Pipeline). Every stage works in place on a float RGBA
 // linear frame (lut::ImageView) and never changes alpha (the sanitize stage, which runs first,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Display transfer functions used by the preview pipeline, scalar reference forms.
 //

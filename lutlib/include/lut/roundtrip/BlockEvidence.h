@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the pixels inside a read patch's blocks say about how the patch was touched (extract names
 // the likely cause from it: lut/roundtrip/EditCause.h). A global colour edit maps every uniform

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Whether a read patch went through chroma subsampling (a JPEG saved with 4:2:0 or 4:2:2 chroma,
 // what most editors do by default), told from its pixels: at the boundary between two entries'

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The likely cause extract names when a patch is not what a global colour edit leaves (from the
 // block evidence, lut/roundtrip/BlockEvidence.h, and the entries' agreement with their

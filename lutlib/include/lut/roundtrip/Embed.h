@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Embedding: paste a neutral LUT patch with a self-describing marker frame into a screenshot, so
 // the modder can grade it in any editor and extract the edit as a LUT afterwards (the round trip:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Extracting: find the patch in an edited screenshot, read it, check it and turn the edit into a
 // LUT for a target (docs/roundtrip.md). Works on lut::Image (no file I/O).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fitting a 3D LUT to a before/after image pair, for when no patch was embedded.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A short fingerprint of a LUT, recorded in a round-trip patch's header by `embed --original-lut`
 // so `extract` can tell whether the stage LUT it is given is the one the patch was made for.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Finding a round-trip patch again in an edited screenshot by its marker frame (the frame is
 // described in lut/roundtrip/PatchPlacement.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The patch lattice: which input values a round-trip patch samples (docs/roundtrip.md).
 #include "lut/Lut3D.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where a round-trip patch sits in an image, how big its marker frame is, and what the frame's
 // header says about it (the patch describes itself: extract needs no options for what embed set

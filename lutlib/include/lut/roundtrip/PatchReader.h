@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading a found round-trip patch: what the edit did to each lattice input (PatchReading), and
 // the edit as a function of any input (PatchFunction).

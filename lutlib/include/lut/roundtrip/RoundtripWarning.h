@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The warnings extract and fit can give (lut/roundtrip/Extract.h, lut/roundtrip/Fit.h), each with
 // a test that triggers it.

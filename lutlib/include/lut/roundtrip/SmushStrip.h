@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Smush-LUT's own round trip (github.com/ScanMountGoat/Smush-LUT), read by lutkit extract:
 //  - its first versions wrote `<screenshot>.lut.png`: the screenshot darkened for the game's

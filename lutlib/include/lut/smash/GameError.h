@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How far what the game shows is from what it should show, in 8-bit display steps: the measure
 // the Smash authoring functions (lut/smash/SmashAuthoring.h) and the round trip report.

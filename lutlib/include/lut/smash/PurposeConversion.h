@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Turning a LUT made for one purpose (lut/LutPurpose.h) into the LUT for another: the one
 // implementation behind lutkit convert, extract, apply, preview, compose, mix and the editor's

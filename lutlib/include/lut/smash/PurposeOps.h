@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Compose and mix for LUTs that say what they are for (lut/LutPurpose.h): the rule lutkit compose
 // and lutkit mix follow, written once.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Authoring a Smash Ultimate LUT for a look the modder made on the game's picture: the exact
 // composition at the game's 16^3 lattice, an optional least-squares refinement between lattice

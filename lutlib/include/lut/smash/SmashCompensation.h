@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // LUTs that cancel Smash Ultimate's brighten step (docs/specs/smash-pipeline.md section 2 and
 // "The Smush compensation"): the game grades with r = ((L(s) - s) * 0.99961 + s) * 1.3703 in

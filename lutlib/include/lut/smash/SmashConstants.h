@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Smash Ultimate's numbers, in one place: the post-processing shader's literals
 // (docs/specs/smash-pipeline.md sections 1 and 2) and the size of the game's grading LUT. Used

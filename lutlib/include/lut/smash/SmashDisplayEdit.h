@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Smash Ultimate LUT for an edit made on the game's picture: what the editor's Smash export
 // writes (gui/model/ExportTarget). The edit is a LUT on display colours, the colours a screenshot

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Smash Ultimate colour grading + brighten pass (docs/specs/smash-pipeline.md section 2) as
 // plain functions, shared by the preview pipeline (lutlib/src/pipeline), the screenshot "deprocess"

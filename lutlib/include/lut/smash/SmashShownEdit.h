@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What Smash Ultimate shows with a game LUT, as an edit of the picture the neutral game shows:
 // the LUT on display colours d (what a screenshot holds, piecewise sRGB) whose entry at d is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The game's LUT a LUT file stands for, where a stage's LUT is named by a file (--original-lut
 // of preview, embed, extract and convert --target smash): Smash Ultimate samples one 16^3 table

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the first, branch-free pass of lut::countOutsideDomain (core/PixelChain.cpp)
 // with AVX2, two RGBA pixels per compare. Free of glm and the standard library's inline

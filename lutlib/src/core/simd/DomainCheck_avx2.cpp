@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The first pass of countOutsideDomain with AVX2 (core/simd/DomainCheck.h): the scalar loop did
 // not vectorize (its && chains per channel) and cost ~3 ns per pixel in `lutkit apply`, a third
 // of the LUT kernel's time; this one runs at the speed of L1 reads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The in-lane 4x4 transpose both AVX2 code paths use (simd/SamplerKernels_avx2.cpp and
 // pipeline/ArrayKernels.cpp). Only <immintrin.h> is included (see the note in SimdKernels.h);

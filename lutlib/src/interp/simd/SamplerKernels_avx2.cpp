@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AVX2 + FMA kernels for the 3D LUT samplers, 8 pixels per iteration.
 //
 // Shape: load 8 RGBA pixels (4 registers of 2 pixels), transpose them in-lane to R, G, B planes,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AVX-512 (F + DQ) tetrahedral kernel, 16 pixels per iteration: the AVX2 kernel's shape
 // (SamplerKernels_avx2.cpp) at twice the width, and bit-identical to it.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to lutlib: the plain-data view of a sampler's table that the SIMD kernels read.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What `lutkit bench` and bench/lutkit_bench measure: a smooth analytic grade, the LUTs sampled
 // from it, a synthetic 4K-like frame, and the error and speed of a sampler on that frame.

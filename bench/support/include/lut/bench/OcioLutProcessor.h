@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // OpenColorIO's CPU processor for a 3D LUT, set up the way OCIO's own tools run one: the table
 // as a Lut3DTransform, an optimized float -> float CPU processor, one apply() over the whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the smash-chain benchmarks run (`lutkit bench`'s "smash chain" row and bench/lutkit_bench's
 // Pipeline benchmarks): a synthetic HDR scene, a non-identity grading LUT, and the timing of the
