@@ -284,6 +284,47 @@ TEST(ApplyImage, ValuesOutsideTheDomainAreCounted) {
     EXPECT_EQ(r.domain.worst, 7.5f);
 }
 
+// 8-bit pixels always lie in [0, 1]: the count is skipped only when the LUT's domain holds
+// [0, 1]. Here it ends at 0.5, so every code above 127.5 in any channel is outside (counted
+// plainly from the stored codes).
+TEST(ApplyImage, IntegerPixelsOutsideANarrowDomainAreCounted) {
+    const std::string dir = lut::test::tempDir();
+    const std::string in = dir + "/shot.png";
+    auto out = OIIO::ImageOutput::create(in);
+    ASSERT_TRUE(out->open(in, OIIO::ImageSpec(16, 16, 3, OIIO::TypeDesc::UINT8)));
+    std::vector<unsigned char> px(16 * 16 * 3);
+    std::size_t expected = 0;
+    for (std::size_t i = 0; i < 16 * 16; ++i) {
+        bool outside = false;
+        for (std::size_t c = 0; c < 3; ++c) {
+            px[3 * i + c] = static_cast<unsigned char>((i * 37 + c * 101) % 256);
+            outside = outside || px[3 * i + c] / 255.0 > 0.5;
+        }
+        expected += outside;
+    }
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+    out->close();
+    Lut3D l(2);
+    l.setDomain(glm::vec3(0.0f), glm::vec3(0.5f));
+    for (int b = 0; b < 2; ++b)
+        for (int g = 0; g < 2; ++g)
+            for (int r = 0; r < 2; ++r)
+                l.at(r, g, b) = glm::vec3(r, g, b) * 0.5f;
+    PixelChain chain;
+    chain.setLut(l, Interpolation::Tetrahedral);
+    ASSERT_FALSE(chain.unitInputStaysInDomain());
+    const ApplyImageReport r =
+        applyToImage(in, checkOutput(dir + "/o.png", ExistingOutput::Refuse), chain);
+    ASSERT_GT(expected, 0u);
+    EXPECT_EQ(r.domain.outside, expected);
+    // The same picture through a LUT over [0, 1] with entries in [0, 1]: nothing can be outside
+    // its domain or clamped by the 8-bit output, nothing is counted.
+    ASSERT_TRUE(affineChain().unitInputGivesUnitOutput());
+    const ApplyImageReport unit =
+        applyToImage(in, checkOutput(dir + "/o2.png", ExistingOutput::Refuse), affineChain());
+    EXPECT_EQ(unit.domain.outside, 0u);
+}
+
 TEST(ApplyImage, TruncatedAndHostileFilesAreRefused) {
     const std::string dir = lut::test::tempDir();
     const Case png{"t", ".png", OIIO::TypeDesc::UINT8, 3, ""};

@@ -81,6 +81,21 @@ public:
     bool isIdentityOnUnitRange() const {
         return m_before.empty() && m_after.empty() && m_identityLut;
     }
+    // Whether a pixel whose R, G, B lie in [0, 1] (every integer-typed pixel) reaches the LUT
+    // inside its domain: no step before it and a domain containing [0, 1]. Callers of such
+    // input then need not count what the LUT saw outside its domain (run's stats stay empty).
+    bool unitInputStaysInDomain() const {
+        return m_before.empty() && m_domainMin.x <= 0.0f && m_domainMin.y <= 0.0f &&
+               m_domainMin.z <= 0.0f && m_domainMax.x >= 1.0f && m_domainMax.y >= 1.0f &&
+               m_domainMax.z >= 1.0f;
+    }
+    // Whether such a pixel also leaves the chain with R, G, B in [0, 1] (give or take float
+    // rounding, far below half a 16-bit step): the above and no step after a 3D table whose
+    // entries all lie in [0, 1], as every interpolation is a convex combination of entries.
+    // Callers then need not count values an integer output type would clamp.
+    bool unitInputGivesUnitOutput() const {
+        return unitInputStaysInDomain() && m_after.empty() && m_sampler && m_entriesInUnit;
+    }
     // The step names in order, the LUT as "lut"; for -v.
     std::vector<std::string> stepNames() const;
 
@@ -99,6 +114,7 @@ private:
     glm::vec3 m_domainMin{0.0f};
     glm::vec3 m_domainMax{1.0f};
     bool m_identityLut = true;
+    bool m_entriesInUnit = false; // every entry of the 3D table in [0, 1]
 };
 
 // Counts the values of count RGBA pixels outside [min, max] (R, G, B only) into stats.

@@ -93,6 +93,20 @@ void countOutsideDomain(const float* rgba, std::size_t count, glm::vec3 lo, glm:
     }
 }
 
+namespace {
+
+// Every value of the table in [0, 1] (NaN is not).
+bool entriesInUnit(const Lut3D& lut) {
+    const float* v = lut.data();
+    const std::size_t n = 3 * lut.entryCount();
+    bool in = true;
+    for (std::size_t i = 0; i < n; ++i)
+        in &= v[i] >= 0.0f && v[i] <= 1.0f;
+    return in;
+}
+
+} // namespace
+
 PixelChain::PixelChain() = default;
 PixelChain::~PixelChain() = default;
 PixelChain::PixelChain(const PixelChain&) = default;
@@ -108,6 +122,7 @@ void PixelChain::setLut(const Lut3D& lut, Interpolation method) {
     const bool coversUnit = lo.x <= 0.0f && lo.y <= 0.0f && lo.z <= 0.0f && hi.x >= 1.0f &&
                             hi.y >= 1.0f && hi.z >= 1.0f;
     m_identityLut = coversUnit && lut.isIdentity(1e-6f);
+    m_entriesInUnit = entriesInUnit(lut);
 }
 
 void PixelChain::setLut(const LutFile& file, Interpolation method) {
@@ -120,6 +135,9 @@ void PixelChain::setLut(const LutFile& file, Interpolation method) {
     m_domainMax = file.inputDomainMax();
     // A shaper is taken as changing values (no identity shortcut): the chain runs.
     m_identityLut = false;
+    // The table's entries bound the output whatever the shaper gives it (a 1D-only file: not
+    // known, taken as unbounded).
+    m_entriesInUnit = file.cube && entriesInUnit(*file.cube);
 }
 
 void PixelChain::addBefore(std::string name, PixelStep step) {
