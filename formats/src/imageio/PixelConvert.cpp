@@ -20,6 +20,7 @@ namespace detail {
 void halfToFloatF16c(const std::uint16_t* src, float* dst, std::size_t n);
 void floatToHalfF16c(const float* src, std::uint16_t* dst, std::size_t n);
 std::size_t rgbaToUnorm8Avx(const float* rgba, std::size_t n, std::uint8_t* dst, int nch);
+std::size_t unorm8ToRgbaAvx(const std::uint8_t* src, std::size_t n, float* rgba, int nch);
 std::size_t rgbaToUnorm16Avx(const float* rgba, std::size_t n, std::uint16_t* dst, int nch);
 } // namespace detail
 
@@ -108,7 +109,8 @@ void gather(const T* s, int nch, const RgbaMap& m, std::size_t n, float* __restr
     if constexpr (std::is_same_v<T, std::uint8_t>) {
         const float* t = unorm8Table();
         if (nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0) {
-            for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t done = hasAvx() ? detail::unorm8ToRgbaAvx(s, n, o, 3) : 0;
+            for (std::size_t i = done; i < n; ++i) {
                 o[4 * i + 0] = t[s[3 * i + 0]];
                 o[4 * i + 1] = t[s[3 * i + 1]];
                 o[4 * i + 2] = t[s[3 * i + 2]];
@@ -117,7 +119,8 @@ void gather(const T* s, int nch, const RgbaMap& m, std::size_t n, float* __restr
             return;
         }
         if (nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3) {
-            for (std::size_t i = 0; i < 4 * n; ++i)
+            const std::size_t done = hasAvx() ? detail::unorm8ToRgbaAvx(s, n, o, 4) : 0;
+            for (std::size_t i = 4 * done; i < 4 * n; ++i)
                 o[i] = t[s[i]];
             return;
         }

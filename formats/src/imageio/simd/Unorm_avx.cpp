@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Float RGBA -> 8/16-bit RGB(A) with AVX (compiled with -mavx, called only when the CPU has it):
-// the value lut::toUnorm8/toUnorm16 give (lut/Quantize.h), four channels at a time. The scalar
+// 8-bit RGB(A) -> float RGBA and float RGBA -> 8/16-bit RGB(A) with AVX (compiled with -mavx,
+// called only when the CPU has it). Reading: code / 255.0f, an IEEE division as the scalar
+// table's own (PixelConvert.cpp), so the same bits; alpha 1 for RGB. Writing: the value
+// lut::toUnorm8/toUnorm16 give (lut/Quantize.h), four channels at a time. The scalar
 // form is `v > 0 ? (v >= 1 ? max : int(double(v) * max + 0.5)) : 0`; here v is first clamped to
 // [0, 1] in float (maxps returns its second operand, 0, for NaN), which gives the same integer
 // for every float: 0 * max + 0.5 and 1 * max + 0.5 truncate to 0 and max, and in between the
@@ -22,6 +24,39 @@ inline __m128i unorm4(const float* p, __m256d scale) {
 }
 
 } // namespace
+
+// n pixels of 8-bit RGB (nch 3) or RGBA (nch 4) to float RGBA; returns how many were done (a
+// multiple of 4; the caller converts the rest). RGB reads 16 bytes for 12: the last 4 pixels
+// are left to the caller so that no read passes the end.
+std::size_t unorm8ToRgbaAvx(const std::uint8_t* src, std::size_t n, float* rgba, int nch) {
+    const __m256 scale = _mm256_set1_ps(255.0f);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    // Pixel j's R, G, B into bytes 4j..4j+2, a zero into 4j+3.
+    const __m128i spread = _mm_setr_epi8(0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1, 9, 10, 11, -1);
+    std::size_t i = 0;
+    const std::size_t end = nch == 3 ? (n >= 6 ? n - 2 : 0) : n;
+    for (; i + 4 <= end; i += 4) {
+        __m128i b;
+        if (nch == 3)
+            b = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(src + 3 * i)),
+                                 spread);
+        else
+            b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + 4 * i));
+        const __m256i p01 =
+            _mm256_set_m128i(_mm_cvtepu8_epi32(_mm_srli_si128(b, 4)), _mm_cvtepu8_epi32(b));
+        const __m256i p23 = _mm256_set_m128i(_mm_cvtepu8_epi32(_mm_srli_si128(b, 12)),
+                                             _mm_cvtepu8_epi32(_mm_srli_si128(b, 8)));
+        __m256 f01 = _mm256_div_ps(_mm256_cvtepi32_ps(p01), scale);
+        __m256 f23 = _mm256_div_ps(_mm256_cvtepi32_ps(p23), scale);
+        if (nch == 3) {
+            f01 = _mm256_blend_ps(f01, one, 0x88);
+            f23 = _mm256_blend_ps(f23, one, 0x88);
+        }
+        _mm256_storeu_ps(rgba + 4 * i, f01);
+        _mm256_storeu_ps(rgba + 4 * i + 8, f23);
+    }
+    return i;
+}
 
 // n pixels of float RGBA to 8-bit RGB (nch 3) or RGBA (nch 4); returns how many were done
 // (a multiple of 4; the caller converts the rest).
