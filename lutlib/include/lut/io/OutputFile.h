@@ -50,6 +50,7 @@ public:
 
 private:
     void checkedWrite(const void* data, std::size_t bytes, std::int64_t offset);
+    void startWriteback();
 
     OutputTarget m_target;
     std::unique_ptr<AtomicFile> m_atomic;
@@ -57,6 +58,7 @@ private:
     bool m_ownFd = false;
     std::string m_memory; // OutputKind::Memory: the bytes until commit()
     std::uint64_t m_size = 0;
+    std::uint64_t m_writebackFrom = 0; // bytes before this were handed to the disk early
     bool m_done = false;
 };
 
