@@ -147,6 +147,33 @@ TEST(PixelConvert, HalfRunsReadAndWriteEveryValue) {
     }
 }
 
+// Half RGB runs of every length up to 19 in buffers of exactly that size (the one-pass path reads
+// ahead and works two pixels at a time; ASan sees a read or write past the run): alpha reads as 1,
+// values exactly, writes give the same bits back and touch nothing past the run.
+TEST(PixelConvert, HalfRgbRunsOfEveryLength) {
+    RgbaMap map;
+    map.a = -1;
+    for (std::size_t n = 1; n <= 19; ++n) {
+        std::vector<std::uint16_t> in(3 * n);
+        for (std::size_t k = 0; k < in.size(); ++k)
+            in[k] = static_cast<std::uint16_t>(0x3000 + 97 * k); // 0.125 upwards
+        std::vector<float> rgba(4 * n);
+        toRgba(in.data(), PixelType::Half, 3, map, n, rgba.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t c = 0; c < 3; ++c)
+                ASSERT_EQ(static_cast<double>(rgba[4 * i + c]), halfValue(in[3 * i + c]))
+                    << n << " " << i << " " << c;
+            ASSERT_EQ(rgba[4 * i + 3], 1.0f) << n << " " << i;
+        }
+        std::vector<std::uint16_t> back(3 * n + 3, 0x1234);
+        fromRgba(rgba.data(), n, back.data(), PixelType::Half, 3, map);
+        for (std::size_t k = 0; k < 3 * n; ++k)
+            ASSERT_EQ(back[k], in[k]) << n << " " << k;
+        for (std::size_t k = 3 * n; k < back.size(); ++k)
+            ASSERT_EQ(back[k], 0x1234) << n << " " << k;
+    }
+}
+
 // A reader's channel list or alpha index may point past the channels it stores (OpenImageIO's
 // GIF reader said alpha = 4 of 4 channels for a fuzzed file, and the conversion read one sample
 // past every row): the map uses only stored channels, alpha by its name when the index is wrong.

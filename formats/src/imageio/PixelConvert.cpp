@@ -19,6 +19,8 @@ namespace lut::formats {
 namespace detail {
 void halfToFloatF16c(const std::uint16_t* src, float* dst, std::size_t n);
 void floatToHalfF16c(const float* src, std::uint16_t* dst, std::size_t n);
+std::size_t halfRgbToRgbaF16c(const std::uint16_t* src, std::size_t n, float* rgba);
+std::size_t rgbaToHalfRgbF16c(const float* rgba, std::size_t n, std::uint16_t* dst);
 std::size_t rgbaToUnorm8Avx(const float* rgba, std::size_t n, std::uint8_t* dst, int nch);
 std::size_t unorm8ToRgbaAvx(const std::uint8_t* src, std::size_t n, float* rgba, int nch);
 std::size_t rgbaToUnorm16Avx(const float* rgba, std::size_t n, std::uint16_t* dst, int nch);
@@ -326,10 +328,17 @@ void toRgba(const void* src, PixelType type, int nch, const RgbaMap& map, std::s
             halfToFloatN(static_cast<const std::uint16_t*>(src), rgba, 4 * n); // already RGBA
             return;
         }
-        const std::size_t count = n * static_cast<std::size_t>(nch);
+        const auto* h = static_cast<const std::uint16_t*>(src);
+        std::size_t done = 0;
+        if (nch == 3 && map.r == 0 && map.g == 1 && map.b == 2 && map.a < 0 && hasF16c()) {
+            done = detail::halfRgbToRgbaF16c(h, n, rgba); // one pass; the rest below
+            if (done == n)
+                return;
+        }
+        const std::size_t count = (n - done) * static_cast<std::size_t>(nch);
         float* f = scratch(count);
-        halfToFloatN(static_cast<const std::uint16_t*>(src), f, count);
-        gather(static_cast<const float*>(f), nch, map, n, rgba);
+        halfToFloatN(h + done * static_cast<std::size_t>(nch), f, count);
+        gather(static_cast<const float*>(f), nch, map, n - done, rgba + 4 * done);
         return;
     }
     }
@@ -352,6 +361,15 @@ void fromRgba(const float* rgba, std::size_t n, void* dst, PixelType type, int n
         if (nch == 4 && rgb && map.a == 3) { // every channel written: straight from RGBA
             floatToHalfN(rgba, static_cast<std::uint16_t*>(dst), 4 * n);
             return;
+        }
+        std::size_t done = 0;
+        if (nch == 3 && rgb && map.a < 0 && hasF16c()) {
+            done = detail::rgbaToHalfRgbF16c(rgba, n, static_cast<std::uint16_t*>(dst));
+            if (done == n)
+                return;
+            rgba += 4 * done;
+            dst = static_cast<std::uint16_t*>(dst) + 3 * done;
+            n -= done;
         }
         // Through floats: the other channels are read, kept and written back unchanged (when
         // R, G, B are all there is, nothing needs reading).
