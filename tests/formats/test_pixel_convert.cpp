@@ -34,7 +34,7 @@ std::vector<float> probes(double max) {
     for (float x : {0.0f, -0.0f, 1.0f, -1.0f, 2.0f, 1e-45f, -1e-45f, 1e30f, -1e30f, inf, -inf,
                     std::numeric_limits<float>::quiet_NaN(), 0.99999994f, 1.0000001f})
         v.push_back(x);
-    const int steps = max > 255 ? 1000 : 256;
+    const int steps = max > 255 ? 65536 : 256; // every rounding boundary
     for (int i = 0; i < steps; ++i) {
         const double k = std::floor(i * (max - 1) / (steps - 1));
         const float mid = static_cast<float>((k + 0.5) / max);
