@@ -26,7 +26,7 @@ inline __m128i unorm4(const float* p, __m256d scale) {
 } // namespace
 
 // n pixels of 8-bit RGB (nch 3) or RGBA (nch 4) to float RGBA; returns how many were done (a
-// multiple of 4; the caller converts the rest). RGB reads 16 bytes for 12: the last 4 pixels
+// multiple of 4; the caller converts the rest). RGB reads 16 bytes for 12: at least 2 pixels
 // are left to the caller so that no read passes the end.
 std::size_t unorm8ToRgbaAvx(const std::uint8_t* src, std::size_t n, float* rgba, int nch) {
     const __m256 scale = _mm256_set1_ps(255.0f);
