@@ -24,10 +24,11 @@ start=$(date +%s)
 echo "fuzz: configuring $build (clang, -fsanitize=fuzzer-no-link,address,undefined)"
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 # Flags go on the command line (not the environment) so a re-run updates an existing tree.
+# LUTKIT_OIIO_PKGCONFIG: OpenImageIO found as ./run.sh finds it on a machine without its tools.
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags -Wno-unknown-warning-option" \
-  -DLUTKIT_FUZZ=ON -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
+  -DLUTKIT_FUZZ=ON -DLUTKIT_OIIO_PKGCONFIG=ON -DLUTKIT_BUILD_TESTS=OFF -DLUTKIT_BUILD_GUI=OFF -DLUTKIT_BUILD_BENCH=OFF >/dev/null
 
 # The harnesses that run when none is named (CI): all ten. image_oiio joined on 27 Nov 2026, once
 # the heap corruption it kept finding (OpenImageIO's IFF decoder writing past a tile) was found and
