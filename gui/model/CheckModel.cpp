@@ -14,9 +14,31 @@ QColor severityColour(CheckStatus s) {
     return s == CheckStatus::Fail ? QColor(255, 0, 255, 200) : QColor(0, 255, 255, 200);
 }
 
+// The check of `lut` (a game LUT judged by what the game shows), over `picture` when not null.
+std::shared_ptr<CheckReport> runCheck(const Lut3D& lut, bool game,
+                                      const std::shared_ptr<const Image>& picture) {
+    LutFile file;
+    file.cube = game ? smashShownEdit(lut) : lut;
+    CheckOptions options;
+    ImageView view;
+    if (picture && !picture->empty()) {
+        view = picture->view();
+        options.image = &view;
+    }
+    auto report = std::make_shared<CheckReport>(checkLut(file, options));
+    if (game)
+        report->description = "Smash Ultimate game LUT, checked as the edit the game shows (" +
+                              report->description + ")";
+    return report;
+}
+
 } // namespace
 
-CheckModel::CheckModel(QObject* parent) : QObject(parent), m_checks(this), m_highlights(this) {}
+CheckModel::CheckModel(QObject* parent) : QObject(parent), m_checks(this), m_highlights(this) {
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(kSettleMs);
+    connect(&m_settle, &QTimer::timeout, this, &CheckModel::startCheck);
+}
 
 void CheckModel::setLut(std::shared_ptr<const Lut3D> lut, bool gameLut) {
     if (lut == m_lut && gameLut == m_game)
@@ -43,28 +65,34 @@ void CheckModel::setOverPicture(bool on) {
 }
 
 void CheckModel::schedule() {
+    if (m_lut)
+        m_settle.start(); // restarted by every change
+}
+
+CheckModel::Subject CheckModel::current() const {
+    return {m_lut, m_game, m_overPicture ? m_picture : nullptr};
+}
+
+void CheckModel::setReport(std::shared_ptr<const CheckReport> report, const Subject& of) {
+    m_report = std::move(report);
+    m_reportOf = of;
+    emit reportChanged();
+    requestHighlight(-1); // the findings changed
+}
+
+void CheckModel::startCheck() {
+    m_settle.stop();
     if (!m_lut)
         return;
-    const std::shared_ptr<const Lut3D> lut = m_lut;
-    const bool game = m_game;
-    const std::shared_ptr<const Image> picture = m_overPicture ? m_picture : nullptr;
-    m_checks.request([this, lut, game, picture]() -> PreviewWorker::Delivery {
-        LutFile file;
-        file.cube = game ? smashShownEdit(*lut) : *lut;
-        CheckOptions options;
-        ImageView view;
-        if (picture && !picture->empty()) {
-            view = picture->view();
-            options.image = &view;
-        }
-        auto report = std::make_shared<CheckReport>(checkLut(file, options));
-        if (game)
-            report->description = "Smash Ultimate game LUT, checked as the edit the game shows (" +
-                                  report->description + ")";
-        return [this, report] {
-            m_report = report;
-            emit reportChanged();
-            requestHighlight(-1); // the findings changed
+    const Subject of = current();
+    m_checks.request([this, of]() -> PreviewWorker::Delivery {
+        auto report = runCheck(*of.lut, of.game, of.picture);
+        return [this, report, of] {
+            // An older LUT's report does not replace the current one's (failingChecks() may
+            // have checked the current LUT meanwhile).
+            if (!(of == current()) && m_reportOf == current())
+                return;
+            setReport(report, of);
         };
     });
 }
@@ -107,14 +135,23 @@ void CheckModel::requestHighlight(int index) {
 }
 
 void CheckModel::waitForIdle() {
+    if (m_settle.isActive())
+        startCheck();
     while (isBusy()) {
         m_checks.waitForIdle();
         m_highlights.waitForIdle();
     }
 }
 
-QStringList CheckModel::failingChecks() const {
+QStringList CheckModel::failingChecks() {
     QStringList lines;
+    if (m_lut && !(m_reportOf == current())) {
+        // The latest report is of an older LUT (still settling or being checked): check this
+        // one now, an export must warn about what it writes.
+        m_settle.stop();
+        const Subject of = current();
+        setReport(runCheck(*of.lut, of.game, of.picture), of);
+    }
     if (!m_report)
         return lines;
     for (const CheckSummary& c : m_report->checks) {
