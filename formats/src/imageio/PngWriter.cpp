@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // The PNG writer (PngCodec.cpp's summary says why it is ours): filtered rows, deflated in strips
 // on several threads into one zlib stream, chunks written through lut::OutputFile with checked
-// writes, the finished file read back (header and end) before it replaces the output.
+// writes, the finished file read back (header and end) before it replaces the output. Levels 1-3
+// (a preview's and apply's defaults) deflate with ISA-L's igzip, levels 0 and 4-9 with zlib.
 #include "imageio/ByteIO.h"
 #include "imageio/ImageCodec.h"
 
 #include "lut/Error.h"
 
+#include <isa-l/igzip_lib.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -40,9 +42,10 @@ struct Strip {
     std::size_t rawBytes = 0;
 };
 
-// One strip as raw deflate data, primed with `dict`, ended with a sync flush (or the final block).
-Strip deflateStrip(const std::vector<unsigned char>& data, const std::vector<unsigned char>& dict,
-                   bool last, int level) {
+// One strip as raw deflate data, primed with `dict`, ended with a sync flush (or the final block),
+// by zlib (levels 0 and 4-9: the same bytes as before ISA-L was used).
+Strip deflateStripZlib(const std::vector<unsigned char>& data,
+                       const std::vector<unsigned char>& dict, bool last, int level) {
     Strip s;
     s.rawBytes = data.size();
     s.adler = static_cast<std::uint32_t>(adler32(1L, data.data(), static_cast<uInt>(data.size())));
@@ -67,6 +70,61 @@ Strip deflateStrip(const std::vector<unsigned char>& data, const std::vector<uns
     if (!ok || z.avail_in != 0)
         throw Error("the PNG compressor failed");
     return s;
+}
+
+// The same with ISA-L's igzip (levels 1-3). Measured on 1 MiB strips of filtered 1080p rows (a
+// noisy screenshot-like frame, a photo, a smooth gradient), one thread: igzip level 1 against zlib
+// level 1 (Z_RLE) 2.1x / 5.1x / 7.6x faster, files 9% / 8% / 41% larger; igzip level 2 against
+// zlib level 3, 4.7x / 10x / 5.8x faster, files -2.5% / +0.5% / +16%. zlib levels 2-3 map to
+// igzip level 2, level 1 to level 1 (docs/architecture.md, formats/imageio).
+Strip deflateStripIsal(const std::vector<unsigned char>& data,
+                       const std::vector<unsigned char>& dict, bool last, int level) {
+    Strip s;
+    s.rawBytes = data.size();
+    s.adler = isal_adler32(1, data.data(), data.size());
+    const int igzipLevel = level <= 1 ? 1 : 2;
+    std::vector<std::uint8_t> levelBuf(igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT
+                                                       : ISAL_DEF_LVL2_DEFAULT);
+    auto z = std::make_unique<isal_zstream>(); // ~ 100 KiB of state: not on a thread's stack
+    isal_deflate_init(z.get());
+    z->level = static_cast<std::uint32_t>(igzipLevel);
+    z->level_buf = levelBuf.data();
+    z->level_buf_size = static_cast<std::uint32_t>(levelBuf.size());
+    z->gzip_flag = IGZIP_DEFLATE; // raw deflate: the zlib header and Adler-32 are written here
+    if (!dict.empty() && isal_deflate_set_dict(z.get(), const_cast<std::uint8_t*>(dict.data()),
+                                               static_cast<std::uint32_t>(dict.size())) != COMP_OK)
+        throw Error("cannot start the PNG compressor");
+    z->end_of_stream = last ? 1 : 0;
+    z->flush = last ? NO_FLUSH : SYNC_FLUSH;
+    z->next_in = const_cast<std::uint8_t*>(data.data());
+    z->avail_in = static_cast<std::uint32_t>(data.size());
+    // Stored blocks bound the output: 5 bytes per 64 KiB block over the input, plus the flush.
+    s.deflated.resize(data.size() + data.size() / 8192 + 1024);
+    std::size_t done = 0;
+    for (;;) {
+        z->next_out = reinterpret_cast<std::uint8_t*>(s.deflated.data()) + done;
+        z->avail_out = static_cast<std::uint32_t>(s.deflated.size() - done);
+        if (isal_deflate(z.get()) != COMP_OK)
+            throw Error("the PNG compressor failed");
+        done = s.deflated.size() - z->avail_out;
+        const bool finished =
+            last ? z->internal_state.state == ZSTATE_END : z->avail_in == 0 && z->avail_out > 0;
+        if (finished)
+            break;
+        if (z->avail_out > 0) // stopped with room left and work undone: never expected
+            throw Error("the PNG compressor failed");
+        s.deflated.resize(s.deflated.size() * 2); // rare: more room, and go on
+    }
+    s.deflated.resize(done);
+    if (z->avail_in != 0)
+        throw Error("the PNG compressor failed");
+    return s;
+}
+
+Strip deflateStrip(const std::vector<unsigned char>& data, const std::vector<unsigned char>& dict,
+                   bool last, int level) {
+    return level >= 1 && level <= 3 ? deflateStripIsal(data, dict, last, level)
+                                    : deflateStripZlib(data, dict, last, level);
 }
 
 // Appends filter byte + filtered row to `out` (the filter with the smallest sum of |signed
