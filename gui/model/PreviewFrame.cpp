@@ -10,15 +10,21 @@ namespace lut::gui {
 
 QImage toDisplayImage(const Image& image) {
     QImage out(image.width(), image.height(), QImage::Format_RGBX8888);
+    const int w = image.width();
+    uchar* const bits = out.bits(); // detached once here, not per row from the threads
+    const std::size_t stride = static_cast<std::size_t>(out.bytesPerLine());
     parallelFor(image.height(), 0, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const float* src = image.pixel(0, y);
-            uchar* dst = out.scanLine(y);
-            for (int x = 0; x < image.width(); ++x) {
-                dst[4 * x + 0] = toUnorm8(src[4 * x + 0]);
-                dst[4 * x + 1] = toUnorm8(src[4 * x + 1]);
-                dst[4 * x + 2] = toUnorm8(src[4 * x + 2]);
-                dst[4 * x + 3] = 255;
+            uchar* dst = bits + stride * static_cast<std::size_t>(y);
+            // lut::toUnorm8 written without branches, so the loop vectorizes: NaN and values
+            // <= 0 give 0, values >= 1 give 255, the rest round half up in double as it does.
+            for (int i = 0; i < 4 * w; ++i) {
+                const float v = src[i];
+                const float c = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+                dst[i] = (i & 3) == 3 ? uchar(255)
+                                      : static_cast<uchar>(
+                                            static_cast<int>(static_cast<double>(c) * 255.0 + 0.5));
             }
         }
     });

@@ -217,11 +217,14 @@ QImage clipOverlay(const QImage& display) {
     }
     const QRgb high = qPremultiply(qRgba(255, 0, 60, 200));
     const QRgb low = qPremultiply(qRgba(0, 90, 255, 200));
+    const int w = display.width(); // not a call per pixel
+    uchar* const outBits = out.bits();
+    const std::size_t outStride = static_cast<std::size_t>(out.bytesPerLine());
     parallelFor(display.height(), 0, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const uchar* p = display.constScanLine(y);
-            auto* o = reinterpret_cast<QRgb*>(out.scanLine(y));
-            for (int x = 0; x < display.width(); ++x, p += 4)
+            auto* o = reinterpret_cast<QRgb*>(outBits + outStride * static_cast<std::size_t>(y));
+            for (int x = 0; x < w; ++x, p += 4)
                 o[x] = (p[0] == 255 || p[1] == 255 || p[2] == 255) ? high
                        : (p[0] == 0 || p[1] == 0 || p[2] == 0)     ? low
                                                                    : 0u;
