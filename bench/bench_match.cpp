@@ -8,6 +8,7 @@
 // picture graded by a formula (channel mix, curves, saturation), flipped and shuffled.
 // Run: build/bin/lutkit_bench --benchmark_filter=Match
 // Counters: mean_steps and p99_steps, the LUT applied to the source against the true grade.
+#include "TestPaths.h"
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/match/LutQuality.h"

@@ -3,6 +3,7 @@
 // the output is -o; an existing output is replaced only with -y; -n skips; - is standard input
 // and output; special files are written in place; frame sequences; no command writes over any
 // of its inputs, the LUT included; an interrupted batch leaves no partial output.
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"

@@ -5,6 +5,7 @@
 // processors, bad names refused as bad usage, and --cccid applying to the files after it.
 #include "CliTableSupport.h"
 #include "OcioTestUtil.h"
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include <gmock/gmock.h>

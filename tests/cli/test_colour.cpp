@@ -4,6 +4,7 @@
 // whole chain (the LUT included, as a FileTransform); values outside the LUT's domain are
 // reported, never clamped silently; Hald sizes named as ImageMagick names them.
 #include "OcioTestUtil.h"
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"

@@ -4,6 +4,7 @@
 // through lutkit_cli, not a copied list), render (man -l) or parse (bash -n, zsh -n, fish -n when
 // the shell is installed), and the bash completion completes.
 #include "CliTableSupport.h"
+#include "TestPaths.h"
 
 #include "TestSupport.h"
 

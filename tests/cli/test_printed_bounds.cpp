@@ -5,6 +5,7 @@
 // the kind where probing only lattice points and cell centres understated the error (issue 22):
 // random (steep) tables, posterisation, a steep grade to invert, a config's conversion.
 #include "OcioTestUtil.h"
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include <glm/exponential.hpp>

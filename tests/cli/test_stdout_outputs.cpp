@@ -3,6 +3,7 @@
 // every note, report, JSON and "wrote" line on standard error. Each row pipes the command into a
 // reader that takes standard input -- `lutkit info -` for LUTs (`lutkit convert a.cube - --format
 // cube | lutkit info -`), OpenImageIO for pictures -- and checks that the report went to stderr.
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include "lut/Image.h"

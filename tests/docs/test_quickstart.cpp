@@ -7,6 +7,7 @@
 // (docs/specs/smash-pipeline.md) in float64, OpenColorIO's reading of the .3dl, an affine grade
 // that every interpolation reproduces exactly.
 #include "OcioTestUtil.h"
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include "lut/formats/Registry.h"

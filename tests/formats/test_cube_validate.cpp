@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `lutkit validate` and lut::formats::validateCube: ok lines, strict departures, errors with
 // file:line:col, exit codes (0 ok, 1 bad input or departures with --strict, 2 bad usage).
+#include "TestPaths.h"
 #include "TestSupport.h"
 
 #include "lut/formats/Cube.h"

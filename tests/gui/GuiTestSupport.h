@@ -2,6 +2,7 @@
 #pragma once
 // Shared bits of the editor tests: sample paths, the float64 reference for an exposure edit, a
 // tiny PNG that holds a huge picture.
+#include "TestPaths.h"
 #include "lut/Lut3D.h"
 
 #include <QByteArray>
@@ -16,7 +17,7 @@
 namespace lut::gui::test {
 
 inline QString samplePath(const char* name) {
-    return QStringLiteral(LUTKIT_SAMPLES_DIR "/") + QString::fromLatin1(name);
+    return QString::fromUtf8(LUTKIT_SAMPLES_DIR) + QLatin1Char('/') + QString::fromLatin1(name);
 }
 
 // Exposure in stops on an encoded value, written out independently of lutlib:

@@ -3,6 +3,7 @@
 // exported LUT with a float64 expectation, and check the preview pixels against the pipeline and
 // (when it exists) `lutkit preview`.
 #include "GuiTestSupport.h"
+#include "TestPaths.h"
 
 #include "AdjustmentsPanel.h"
 #include "Document.h"
@@ -422,12 +423,12 @@ private slots:
         const QString preview = dir.filePath("preview.png");
         const QString shot = dir.filePath("shot.png");
         QString err;
-        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+        QVERIFY2(runsOk(QString::fromUtf8(LUTKIT_EDITOR),
                         {QStringLiteral("--save-preview"), preview, samplePath("sample_scene.png"),
                          samplePath("sample_grade.cube")},
                         &err),
                  qPrintable(err));
-        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+        QVERIFY2(runsOk(QString::fromUtf8(LUTKIT_EDITOR),
                         {QStringLiteral("--screenshot"), shot, QStringLiteral("--window-size"),
                          QStringLiteral("1200x800"), samplePath("sample_scene.png"),
                          samplePath("sample_grade.cube")},
@@ -459,7 +460,7 @@ private slots:
         // A LUT named first (or alone, as a file manager's "Open with" passes it) is still the
         // LUT: the same preview bytes as IMAGE LUT (it used to be opened as a picture and fail).
         const QString swapped = dir.filePath("swapped.png");
-        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+        QVERIFY2(runsOk(QString::fromUtf8(LUTKIT_EDITOR),
                         {QStringLiteral("--save-preview"), swapped, samplePath("sample_grade.cube"),
                          samplePath("sample_scene.png")},
                         &err),
@@ -467,7 +468,7 @@ private slots:
         QFile a(preview), b(swapped);
         QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
         QCOMPARE(a.readAll(), b.readAll());
-        QVERIFY2(runsOk(QStringLiteral(LUTKIT_EDITOR),
+        QVERIFY2(runsOk(QString::fromUtf8(LUTKIT_EDITOR),
                         {QStringLiteral("--screenshot"), dir.filePath("lut-only.png"),
                          samplePath("sample_grade.cube")},
                         &err),
@@ -558,7 +559,7 @@ private slots:
         QString out, err;
         auto run = [&out, &err](const QStringList& args) {
             QProcess p;
-            p.start(QStringLiteral(LUTKIT_EDITOR), args);
+            p.start(QString::fromUtf8(LUTKIT_EDITOR), args);
             if (!p.waitForFinished(120000))
                 return -1;
             out = QString::fromLocal8Bit(p.readAllStandardOutput());

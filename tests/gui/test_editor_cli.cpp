@@ -8,6 +8,7 @@
 //     shortcuts, a slider drag is one undo step, dropped files open, the default export and a
 //     screenshot are written.
 #include "GuiTestSupport.h"
+#include "TestPaths.h"
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
@@ -152,7 +153,7 @@ private slots:
             writeScript(dir, "s.txt",
                         QStringList{"set saturation 1.3", "set exposure 0.2"} + setup +
                             QStringList{"wait", "export", "save-preview " + mine});
-        const Run e = run(QStringLiteral(LUTKIT_EDITOR), {"--script", script, in, grade});
+        const Run e = run(QString::fromUtf8(LUTKIT_EDITOR), {"--script", script, in, grade});
         QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
         const QString exported = exportedPath(e.out);
         QVERIFY2(exported.endsWith(extension), qPrintable(e.out));
@@ -163,11 +164,12 @@ private slots:
         QString cliIn = in;
         if (viaDisplayOnly) { // the display-encoded scene, as a float file
             cliIn = dir.filePath("display.exr");
-            const Run d = run(QStringLiteral(LUTKIT_CLI), {"preview", "-q", "--preset", "none",
-                                                           "--bit-depth", "32", in, "-o", cliIn});
+            const Run d =
+                run(QString::fromUtf8(LUTKIT_CLI),
+                    {"preview", "-q", "--preset", "none", "--bit-depth", "32", in, "-o", cliIn});
             QVERIFY2(d.code == 0, qPrintable(d.err));
         }
-        const Run c = run(QStringLiteral(LUTKIT_CLI),
+        const Run c = run(QString::fromUtf8(LUTKIT_CLI),
                           cli + QStringList{"--lut", exported, cliIn, "-o", theirs});
         QVERIFY2(c.code == 0, qPrintable(c.err));
         const formats::LoadedImage a = formats::readImage(mine.toStdString());
@@ -210,12 +212,12 @@ private slots:
             formats::writeLut(cube.toStdString(), f);
         }
         const QString script = writeScript(dir, "s.txt", {"target smash", "wait", "export"});
-        const Run e = run(QStringLiteral(LUTKIT_EDITOR), {"--script", script, cube});
+        const Run e = run(QString::fromUtf8(LUTKIT_EDITOR), {"--script", script, cube});
         QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
         const QString exported = exportedPath(e.out);
         QVERIFY2(exported.endsWith(".nutexb"), qPrintable(e.out));
         const QString converted = dir.filePath("convert.nutexb");
-        const Run c = run(QStringLiteral(LUTKIT_CLI), {"convert", "-q", cube, converted});
+        const Run c = run(QString::fromUtf8(LUTKIT_CLI), {"convert", "-q", cube, converted});
         QVERIFY2(c.code == 0, qPrintable(c.err));
         QFile a(exported), b(converted);
         QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
@@ -233,14 +235,14 @@ private slots:
         env.remove(QStringLiteral("DISPLAY"));
         env.remove(QStringLiteral("WAYLAND_DISPLAY"));
         env.remove(QStringLiteral("QT_QPA_PLATFORM"));
-        const Run help = run(QStringLiteral(LUTKIT_EDITOR), {"--help"}, env);
+        const Run help = run(QString::fromUtf8(LUTKIT_EDITOR), {"--help"}, env);
         QCOMPARE(help.code, 0);
         QVERIFY2(help.out.contains(QStringLiteral("Usage: lutkit-editor")), qPrintable(help.out));
         QVERIFY(help.out.contains(QStringLiteral("--target")));
-        const Run version = run(QStringLiteral(LUTKIT_EDITOR), {"--version"}, env);
+        const Run version = run(QString::fromUtf8(LUTKIT_EDITOR), {"--version"}, env);
         QCOMPARE(version.code, 0);
         QVERIFY2(version.out.startsWith(QStringLiteral("lutkit-editor ")), qPrintable(version.out));
-        const Run bad = run(QStringLiteral(LUTKIT_EDITOR), {"--no-such-option"}, env);
+        const Run bad = run(QString::fromUtf8(LUTKIT_EDITOR), {"--no-such-option"}, env);
         QCOMPARE(bad.code, 2);
     }
 
@@ -250,7 +252,7 @@ private slots:
         env.remove(QStringLiteral("DISPLAY"));
         env.remove(QStringLiteral("WAYLAND_DISPLAY"));
         env.remove(QStringLiteral("QT_QPA_PLATFORM"));
-        const Run all = run(QStringLiteral(LUTKIT_EDITOR), {"--help-all"}, env);
+        const Run all = run(QString::fromUtf8(LUTKIT_EDITOR), {"--help-all"}, env);
         QCOMPARE(all.code, 0);
         QVERIFY2(all.out.contains(QStringLiteral("Usage: lutkit-editor")), qPrintable(all.err));
         const QList<QStringList> bad = {
@@ -259,7 +261,7 @@ private slots:
             {"--zoom", "-5"},         {"--window-size", "huge"}, {"--window-size", "0x0"},
             {"--adjust", "exposure"}, {"--adjust", "warmth=1"},  {"a.png", "b.cube", "c.png"}};
         for (const QStringList& args : bad) {
-            const Run r = run(QStringLiteral(LUTKIT_EDITOR), args, env);
+            const Run r = run(QString::fromUtf8(LUTKIT_EDITOR), args, env);
             QVERIFY2(r.code == 2, qPrintable(args.join(' ') + ": exit " + QString::number(r.code) +
                                              " " + r.err));
             // One line saying what is wrong, naming the value, then where to look.
@@ -319,7 +321,7 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
         const Run r = run(xvfb,
-                          {"-a", "-s", "-screen 0 1600x1000x24", QStringLiteral(LUTKIT_EDITOR),
+                          {"-a", "-s", "-screen 0 1600x1000x24", QString::fromUtf8(LUTKIT_EDITOR),
                            "--script", script},
                           env);
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
@@ -379,7 +381,7 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
         const Run r = run(xvfb,
-                          {"-a", "-s", "-screen 0 1600x1000x24", QStringLiteral(LUTKIT_EDITOR),
+                          {"-a", "-s", "-screen 0 1600x1000x24", QString::fromUtf8(LUTKIT_EDITOR),
                            "--script", script},
                           env);
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));

@@ -4,6 +4,7 @@
 // while the sliders move (strength 0: the neutral LUT; 1: near the true grade), Cancel gives the
 // document's LUT back, OK makes the match the document's LUT (exported like every other edit).
 #include "GuiTestSupport.h"
+#include "TestPaths.h"
 
 #include "Document.h"
 #include "MainWindow.h"

@@ -6,6 +6,7 @@
 //   - compare of the sample grade with itself reports ΔE 0; with a neutral LUT the same max
 //     ΔE2000 as `lutkit diff --json`.
 #include "GuiTestSupport.h"
+#include "TestPaths.h"
 
 #include "lut/formats/ImageIO.h"
 
@@ -49,7 +50,7 @@ Run runScript(const QTemporaryDir& dir, const QStringList& lines, const QStringL
     if (f.open(QIODevice::WriteOnly | QIODevice::Text))
         f.write(lines.join('\n').toUtf8() + "\n");
     f.close();
-    return run(QStringLiteral(LUTKIT_EDITOR), QStringList{"--script", path} + files);
+    return run(QString::fromUtf8(LUTKIT_EDITOR), QStringList{"--script", path} + files);
 }
 
 QString readText(const QString& path) {
@@ -112,12 +113,12 @@ private slots:
             dir, {"target " + target, "wait", "export " + exported, "plot-save " + mine}, {grade});
         QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
         QVERIFY(QFileInfo::exists(exported));
-        const Run c = run(QStringLiteral(LUTKIT_CLI), {"plot", "-q", exported, theirs});
+        const Run c = run(QString::fromUtf8(LUTKIT_CLI), {"plot", "-q", exported, theirs});
         QVERIFY2(c.code == 0, qPrintable(c.out + c.err));
         QVERIFY(samePixels(mine, theirs));
         if (target == "cube") { // the cube export holds the table exactly: the source plots alike
             const QString source = dir.filePath("cli_source_plot.png");
-            const Run s = run(QStringLiteral(LUTKIT_CLI), {"plot", "-q", grade, source});
+            const Run s = run(QString::fromUtf8(LUTKIT_CLI), {"plot", "-q", grade, source});
             QVERIFY2(s.code == 0, qPrintable(s.err));
             QVERIFY(samePixels(mine, source));
         }
@@ -132,7 +133,7 @@ private slots:
         const QString grade = dir.filePath("sample_grade.cube");
         QVERIFY(QFile::copy(samplePath("sample_grade.cube"), grade));
         const QString neutral = dir.filePath("neutral.cube");
-        const Run n = run(QStringLiteral(LUTKIT_CLI), {"neutral", "-q", neutral});
+        const Run n = run(QString::fromUtf8(LUTKIT_CLI), {"neutral", "-q", neutral});
         QVERIFY2(n.code == 0, qPrintable(n.out + n.err));
         const QString self = dir.filePath("self.txt");
         const QString other = dir.filePath("neutral.txt");
@@ -154,7 +155,7 @@ private slots:
         const double mine = reportedMax(text);
         QVERIFY2(mine > 0.1, qPrintable(text));
 
-        const Run d = run(QStringLiteral(LUTKIT_CLI), {"diff", "--json", grade, neutral});
+        const Run d = run(QString::fromUtf8(LUTKIT_CLI), {"diff", "--json", grade, neutral});
         QVERIFY2(d.code == 0, qPrintable(d.err));
         const QJsonDocument json = QJsonDocument::fromJson(d.out.toUtf8());
         QVERIFY2(json.isObject(), qPrintable(d.out));

@@ -2,6 +2,7 @@
 #pragma once
 // Pictures and plain float64 grades shared by the match tests (tests/match). The grades are the
 // oracles: a look written as a formula here, never a map built by lutlib's match.
+#include "TestPaths.h"
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "FullDisk.h"
 
+#include "TestPaths.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>

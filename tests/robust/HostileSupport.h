@@ -3,6 +3,7 @@
 // Helpers for the hostile-file tests (issue 29): oiiotool to make real files, OpenImageIO's own
 // reader as the oracle for pixels, /usr/bin/time for a command's peak memory, crafted bytes.
 #include "RobustSupport.h"
+#include "TestPaths.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -4,6 +4,7 @@
 // through a symbolic link), and transforms that refer to each other in a cycle are refused
 // naming the cycle instead of exhausting OCIO's stack.
 #include "HostileSupport.h"
+#include "TestPaths.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 // any write; a new output is created exclusively, so a second writer of the same new file fails
 // naming it instead of replacing the first one's result.
 #include "HostileSupport.h"
+#include "TestPaths.h"
 
 #include "lut/Error.h"
 #include "lut/io/AtomicFile.h"

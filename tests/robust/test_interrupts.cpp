@@ -4,6 +4,7 @@
 // 130 (README "Exit codes"). Each test signals at a moment it has seen (an output or a temporary
 // file on the disk), not after a guessed delay.
 #include "RobustSupport.h"
+#include "TestPaths.h"
 
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"

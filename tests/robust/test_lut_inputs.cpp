@@ -4,6 +4,7 @@
 // fail. Each case ends in one line naming the file, never a hang, a signal or a raw
 // std::bad_alloc, and memory follows what the file holds.
 #include "RobustSupport.h"
+#include "TestPaths.h"
 
 #include "lut/Error.h"
 #include "lut/Limits.h"

@@ -3,6 +3,7 @@
 // command overwrites its own input (same path, symlink or hard link); a kill -9 in the middle of
 // a write leaves the target either as it was or complete.
 #include "RobustSupport.h"
+#include "TestPaths.h"
 
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"

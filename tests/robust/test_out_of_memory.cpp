@@ -4,6 +4,7 @@
 // limit is injected (the fault shim's malloc refuses requests over 100 MB), so the test means
 // the same on any machine.
 #include "RobustSupport.h"
+#include "TestPaths.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

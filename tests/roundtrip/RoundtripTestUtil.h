@@ -2,6 +2,7 @@
 #pragma once
 // Shared helpers of the round-trip tests: known global edits written out in plain double
 // precision (the oracles), image quantisation, a synthetic screenshot, a private temp folder.
+#include "TestPaths.h"
 #include "lut/Image.h"
 #include "lut/Quantize.h"
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "TestSupport.h"
 
+#include "TestPaths.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
