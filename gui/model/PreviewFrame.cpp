@@ -17,14 +17,11 @@ QImage toDisplayImage(const Image& image) {
         for (int y = y0; y < y1; ++y) {
             const float* src = image.pixel(0, y);
             uchar* dst = bits + stride * static_cast<std::size_t>(y);
-            // lut::toUnorm8 written without branches, so the loop vectorizes: NaN and values
-            // <= 0 give 0, values >= 1 give 255, the rest round half up in double as it does.
-            for (int i = 0; i < 4 * w; ++i) {
-                const float v = src[i];
-                const float c = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-                dst[i] = (i & 3) == 3 ? uchar(255)
-                                      : static_cast<uchar>(
-                                            static_cast<int>(static_cast<double>(c) * 255.0 + 0.5));
+            for (int x = 0; x < w; ++x) {
+                dst[4 * x + 0] = toUnorm8(src[4 * x + 0]);
+                dst[4 * x + 1] = toUnorm8(src[4 * x + 1]);
+                dst[4 * x + 2] = toUnorm8(src[4 * x + 2]);
+                dst[4 * x + 3] = 255;
             }
         }
     });
