@@ -261,6 +261,27 @@ void OiioSource::open(const SourceOpen& req) {
             config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
         }
     }
+    // OpenImageIO's open() tries every other reader when the one the name picks cannot open the
+    // file, and some of those abort the process on bytes meant for another format (2.4's RLA
+    // reader asserts on a damaged PSD: found by fuzz_image_oiio, `lutkit apply` died with
+    // SIGABRT). So the reader the name picks opens the file alone; only a name that no reader
+    // claims is left to that probing. The reader is created from the extension alone: created
+    // from the file's name, OpenImageIO 2.4 asks that reader's valid_file() and probes the
+    // others already there.
+    const std::string ext = OIIO::Filesystem::extension(name, false);
+    auto byName = ext.empty() ? nullptr : OIIO::ImageInput::create(ext, false, &config);
+    if (byName) {
+        OIIO::ImageSpec opened;
+        if (!byName->open(name, opened, config)) {
+            std::string err = withoutScratch(oneLine(byName->geterror()));
+            (void)OIIO::geterror();
+            throw Error(req.path + ": cannot read image: " +
+                        (err.empty() ? "not an image OpenImageIO can read" : err));
+        }
+        m_in = std::move(byName);
+        return;
+    }
+    (void)OIIO::geterror();
     m_in = OIIO::ImageInput::open(name, &config);
     if (!m_in) {
         std::string err = withoutScratch(oneLine(OIIO::geterror()));
