@@ -16,9 +16,9 @@ namespace {
 
 // Asks the kernel to back the 2 MiB-aligned inside of a large, not yet touched buffer with huge
 // pages (transparent huge pages in "madvise" mode, Debian's default). A 1080p float frame is 33 MB:
-// 8,100 page faults of 4 KiB when first written, 16 of 2 MiB with this (a fifth of a 1080p
-// preview's time went to the faults). Only advice: where the kernel has no huge page at hand it
-// uses small ones, and the contents are the same either way.
+// 8,100 page faults of 4 KiB when first written, 16 of 2 MiB with this (a 1080p preview: 0.20 ->
+// 0.18 s wall in paired runs, bench/RESULTS.md). Only advice: where the kernel has no huge page
+// at hand it uses small ones, and the contents are the same either way.
 void adviseHugePages(void* data, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
