@@ -102,33 +102,27 @@ Scopes computeScopes(const QImage& display, int columns) {
         const uchar* bits = display.constBits();
         const std::size_t stride = static_cast<std::size_t>(display.bytesPerLine());
         std::uint32_t* const waveform = s.waveform.data();
-        // A block of 16 parade columns at a time down the whole picture: its counts (48 KiB of
-        // parade, 16 KiB of waveform) stay in the core's cache, where walking every column of
-        // the band row by row spilled them (the band's counts are 0.6 MiB).
-        constexpr int kBlockColumns = 16;
-        for (int cb = c0; cb < c1; cb += kBlockColumns) {
-            const int x0 = firstX[static_cast<std::size_t>(cb)];
-            const int x1 = firstX[static_cast<std::size_t>(std::min(c1, cb + kBlockColumns))];
-            for (int y = 0; y < h; ++y) {
-                const uchar* p = bits + stride * static_cast<std::size_t>(y) + 4 * x0;
-                for (int x = x0; x < x1; ++x, p += 4) {
-                    // The samples in registers first: a count's store could otherwise change
-                    // them (bytes alias everything), and each was read again after each store.
-                    const int r = p[0], g = p[1], b = p[2];
-                    const std::size_t col = static_cast<std::size_t>(columnOf[x]);
-                    ++hist[0][r];
-                    ++hist[1][g];
-                    ++hist[2][b];
-                    ++hist[3][luma8(r, g, b)];
-                    ++counts[col * 256 + static_cast<std::size_t>(r)];
-                    ++counts[(columns + col) * 256 + static_cast<std::size_t>(g)];
-                    ++counts[(2 * static_cast<std::size_t>(columns) + col) * 256 +
-                             static_cast<std::size_t>(b)];
-                    ++waveform[col * 256 + static_cast<std::size_t>(waveformLevelOf(r, g, b))];
-                    ++vector[static_cast<std::size_t>(vectorscopeCellOf(r, g, b))];
-                    high += r == 255 || g == 255 || b == 255;
-                    low += r == 0 || g == 0 || b == 0;
-                }
+        const int x0 = firstX[static_cast<std::size_t>(c0)];
+        const int x1 = firstX[static_cast<std::size_t>(c1)];
+        for (int y = 0; y < h; ++y) {
+            const uchar* p = bits + stride * static_cast<std::size_t>(y) + 4 * x0;
+            for (int x = x0; x < x1; ++x, p += 4) {
+                // The samples in registers first: a count's store could otherwise change them
+                // (bytes alias everything), and each was read again after each store.
+                const int r = p[0], g = p[1], b = p[2];
+                const std::size_t col = static_cast<std::size_t>(columnOf[x]);
+                ++hist[0][r];
+                ++hist[1][g];
+                ++hist[2][b];
+                ++hist[3][luma8(r, g, b)];
+                ++counts[col * 256 + static_cast<std::size_t>(r)];
+                ++counts[(columns + col) * 256 + static_cast<std::size_t>(g)];
+                ++counts[(2 * static_cast<std::size_t>(columns) + col) * 256 +
+                         static_cast<std::size_t>(b)];
+                ++waveform[col * 256 + static_cast<std::size_t>(waveformLevelOf(r, g, b))];
+                ++vector[static_cast<std::size_t>(vectorscopeCellOf(r, g, b))];
+                high += r == 255 || g == 255 || b == 255;
+                low += r == 0 || g == 0 || b == 0;
             }
         }
         std::lock_guard<std::mutex> lock(merge);
