@@ -15,12 +15,15 @@
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
+#include "lut/PixelChain.h"
+#include "lut/formats/ApplyImage.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/PreviewPlan.h"
+#include "lut/pipeline/PreviewPreparation.h"
 #include "lut/pipeline/SceneKind.h"
 
 #include <CLI/CLI.hpp>
@@ -221,13 +224,95 @@ int runPreview(const PreviewOptions& o) {
     bool noted = false;
     std::mutex noteMutex;
 
+    // The recipe (lut/pipeline/PreviewPlan.h) for a file: screenshot or scene by the library's
+    // rule or what the user said, what is undone, which stages run.
+    auto recipeFor = [&](const formats::ImageInfo& info) {
+        PreviewRequest q = request;
+        q.evidence = SceneEvidence{info.isFloat, info.bitDepth, info.colorSpace, info.format};
+        q.forced = o.fromScreenshot          ? std::optional<SceneKind>(SceneKind::Screenshot)
+                   : o.scene || color.before ? std::optional<SceneKind>(SceneKind::Scene)
+                                             : std::nullopt;
+        q.storedEncoded = color.before != nullptr;
+        return planPreview(q, original != nullptr);
+    };
+    auto printNotes = [&](const std::string& input, const Diagnostics& notes) {
+        std::lock_guard<std::mutex> lock(noteMutex);
+        for (const auto& d : notes) {
+            if (!isShown(d, o.verbosity))
+                continue;
+            // The bloom note is the same for every file: say it once.
+            const bool bloomNote = d.message.rfind("bloom cannot be undone", 0) == 0;
+            if (bloomNote && noted)
+                continue;
+            noted = noted || bloomNote;
+            std::cerr << "lutkit: " << severityWord(d.severity) << ": " << input << ": "
+                      << d.message << "\n";
+        }
+    };
+
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         const int inner = ctx.innerThreads();
         if (j.input != "-") {
+            const formats::ImageInfo info = formats::readImageInfo(j.input, o.inFormat, o.subimage);
+            // A picture whose chain works on each pixel alone (no bloom, vignette, grain ...),
+            // written to its own format at its own depth, is streamed: read, undone, run through
+            // the chain and written a few rows at a time, never held as a float frame (a 1080p
+            // screenshot's frame is 33 MB to fill); bit-identical to the frame path below.
+            const bool fileTarget =
+                j.target.kind == OutputKind::NewFile || j.target.kind == OutputKind::ExistingFile;
+            if (!color.before && !color.after && fileTarget && o.format.empty() &&
+                formats::appliedLayoutIsRendered(info, j.output, o.bitDepth)) {
+                const PreviewPlan recipe = recipeFor(info);
+                PipelineSettings settings = recipe.settings;
+                settings.lut = lut;
+                settings.shaper = shaper;
+                auto pipeline = std::make_shared<const Pipeline>(settings);
+                if (pipeline->isPointwise()) {
+                    auto prep = std::make_shared<const PreviewPreparation>(
+                        recipe, original.get(), info.type == formats::PixelType::UInt8);
+                    PixelChain chain;
+                    if (prep->active())
+                        chain.addBefore("undo",
+                                        [prep](float* p, std::size_t n) { prep->apply(p, n); });
+                    RunOptions run;
+                    run.frameIndex = o.frame;
+                    chain.addAfter("chain", [pipeline, run](float* p, std::size_t n) {
+                        pipeline->runPixels(p, n, run);
+                    });
+                    formats::ApplyImageOptions ao;
+                    ao.inFormat = o.inFormat;
+                    ao.threads = inner;
+                    ao.subimage = o.subimage;
+                    // A preview is looked at, then replaced: PNGs are written with the fastest
+                    // level.
+                    if (info.format == "png")
+                        ao.compression = "zip:1";
+                    ao.reserveMemory = [&ctx](std::uint64_t bytes, const std::string& what) {
+                        ctx.reserveMemory(bytes, what);
+                    };
+                    const formats::ApplyImageReport r =
+                        formats::applyToImage(j.input, j.target, chain, ao);
+                    Diagnostics notes = recipe.notes;
+                    const Diagnostics undo = prep->notes();
+                    notes.insert(notes.end(), undo.begin(), undo.end());
+                    notes.insert(notes.end(), r.diagnostics.begin(), r.diagnostics.end());
+                    printNotes(j.input, notes);
+                    if (!o.verbosity.verbose)
+                        return std::string();
+                    std::ostringstream os;
+                    os << j.input << " -> " << j.output << " (" << toString(settings.preset)
+                       << ", streamed: no frame held)\n  stages:";
+                    for (const auto& s : pipeline->stages())
+                        if (s->enabled())
+                            os << " " << s->name();
+                    os << "\n  total " << std::fixed << std::setprecision(3) << r.seconds * 1e3
+                       << " ms (read, undo, chain and write)\n";
+                    return os.str();
+                }
+            }
             // Before anything is decoded (the header checked against the file first): the
             // frame, the blur pyramids of the bloom stages (about one more frame) and what the
             // format's decoder holds.
-            const formats::ImageInfo info = formats::readImageInfo(j.input, o.inFormat, o.subimage);
             ctx.reserveMemory(static_cast<std::uint64_t>(info.width) *
                                       static_cast<std::uint64_t>(info.height) * 16u * 2u +
                                   info.decoderBytes,
@@ -242,22 +327,13 @@ int runPreview(const PreviewOptions& o) {
                         "): pick one with --subimage N (0 to " + std::to_string(e.count() - 1) +
                         ")");
         }
-        // The recipe (lut/pipeline/PreviewPlan.h): screenshot or scene by the library's rule or
-        // what the user said, what is undone, which stages run.
-        PreviewRequest q = request;
-        q.evidence = SceneEvidence{img.info.isFloat, img.info.bitDepth, img.info.colorSpace,
-                                   img.info.format};
-        q.forced = o.fromScreenshot          ? std::optional<SceneKind>(SceneKind::Screenshot)
-                   : o.scene || color.before ? std::optional<SceneKind>(SceneKind::Scene)
-                                             : std::nullopt;
         if (color.before) {
             // --from: OpenColorIO converts the input to sRGB-encoded values first.
             ProcessorChain toSrgb;
             toSrgb.append(color.before);
             toSrgb.apply(img.image.view(), inner);
-            q.storedEncoded = true;
         }
-        const PreviewPlan recipe = planPreview(q, original != nullptr);
+        const PreviewPlan recipe = recipeFor(img.info);
         Diagnostics notes = recipe.notes;
         const Diagnostics undo =
             preparePreviewFrame(recipe, img.image.view(), original.get(),
@@ -285,20 +361,7 @@ int runPreview(const PreviewOptions& o) {
         if (extensionOf(j.output) == ".png" || wo.format == "png")
             wo.compression = "zip:1";
         formats::writeImage(j.target.writePath, img.image, wo);
-        {
-            std::lock_guard<std::mutex> lock(noteMutex);
-            for (const auto& d : notes) {
-                if (!isShown(d, o.verbosity))
-                    continue;
-                // The bloom note is the same for every file: say it once.
-                const bool bloomNote = d.message.rfind("bloom cannot be undone", 0) == 0;
-                if (bloomNote && noted)
-                    continue;
-                noted = noted || bloomNote;
-                std::cerr << "lutkit: " << severityWord(d.severity) << ": " << j.input << ": "
-                          << d.message << "\n";
-            }
-        }
+        printNotes(j.input, notes);
         if (!o.verbosity.verbose)
             return std::string();
         return j.input + " -> " + j.output + " (" + toString(settings.preset) + ")\n" +

@@ -298,3 +298,59 @@ TEST(CliPreview, StrengthBlendsTheLutWithNeutralFirst) {
         runCli("preview '" + dir + "/scene.exr' -o '" + dir + "/x.exr' --strength 0.5").exitCode,
         2);
 }
+
+TEST(CliPreview, AStreamedPreviewIsTheFramePathBitForBit) {
+    // A picture whose chain works pixel by pixel (a screenshot: no bloom) is streamed through the
+    // apply path, never held as a frame; it must write what the frame path writes. A vignette of
+    // strength 0 changes no pixel but needs the frame, so it forces the frame path. 8 and 16-bit
+    // PNG and 8-bit PPM, an odd width, several chains and stage LUTs; the float64 reference of
+    // the other tests checks the pixels themselves.
+    const std::string dir = workDir();
+    const std::string warm = writeCube(dir + "/warm.cube", makeWarmLut(17));
+    Image shot(37, 19);
+    Rng rng(21);
+    for (auto& v : shot.pixels())
+        v = static_cast<float>(rng.uniform());
+    for (std::size_t i = 3; i < shot.pixels().size(); i += 4)
+        shot.pixels()[i] = 1.0f;
+    formats::writeImage(dir + "/s8.png", shot, {8, false, false});
+    formats::writeImage(dir + "/s16.png", shot, {16, false, false});
+    formats::writeImage(dir + "/s8.ppm", shot, {8, false, false});
+    const char* const options[] = {
+        "",
+        " --lut 'WARM'",
+        " --lut 'WARM' --original-lut builtin:smash-default",
+        " --scene --lut 'WARM'",
+        " --preset filmic --lut 'WARM' --interp tetrahedral",
+        " --lut 'WARM' --enable lut --enable exposure --stage exposure.stops=0.3",
+    };
+    int compared = 0;
+    for (const char* in : {"s8.png", "s16.png", "s8.ppm"}) {
+        const std::string ext = std::string(in).substr(std::string(in).rfind('.'));
+        for (std::string opt : options) {
+            const auto at = opt.find("WARM");
+            if (at != std::string::npos)
+                opt.replace(at, 4, warm);
+            const std::string base = "preview -v '" + dir + "/" + in + "' -y" + opt + " -o '" + dir;
+            const RunResult streamed = runCli(base + "/streamed" + ext + "'");
+            ASSERT_EQ(streamed.exitCode, 0) << opt << ": " << streamed.err;
+            EXPECT_NE(streamed.out.find("streamed"), std::string::npos) << in << opt;
+            const RunResult frame =
+                runCli(base + "/frame" + ext + "' --enable vignette --stage vignette.strength=0");
+            ASSERT_EQ(frame.exitCode, 0) << opt << ": " << frame.err;
+            EXPECT_EQ(frame.out.find("streamed"), std::string::npos) << in << opt;
+            const formats::LoadedImage a = formats::readImage(dir + "/streamed" + ext);
+            const formats::LoadedImage b = formats::readImage(dir + "/frame" + ext);
+            EXPECT_EQ(a.info.bitDepth, b.info.bitDepth) << in << opt;
+            EXPECT_EQ(a.info.channels, b.info.channels) << in << opt;
+            EXPECT_TRUE(a.image.pixels() == b.image.pixels()) << in << opt;
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, 18);
+    // What needs the frame is not streamed: an added bloom.
+    const RunResult bloom =
+        runCli("preview -v '" + dir + "/s8.png' -y --enable bloom -o '" + dir + "/bloom.png'");
+    ASSERT_EQ(bloom.exitCode, 0) << bloom.err;
+    EXPECT_EQ(bloom.out.find("streamed"), std::string::npos) << bloom.out;
+}

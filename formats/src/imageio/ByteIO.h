@@ -9,9 +9,24 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace lut::formats {
+
+// An allocator whose resize() leaves new bytes as they come (no zero-fill): for buffers a decoder
+// or a read overwrites whole, where clearing megabytes first only costs time.
+template <class T> struct UninitAllocator : std::allocator<T> {
+    template <class U> struct rebind { using other = UninitAllocator<U>; };
+    UninitAllocator() = default;
+    template <class U> UninitAllocator(const UninitAllocator<U>&) noexcept {}
+    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... A> void construct(U* p, A&&... a) {
+        ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+    }
+};
+using UninitBytes = std::vector<unsigned char, UninitAllocator<unsigned char>>;
 
 class ByteReader {
 public:

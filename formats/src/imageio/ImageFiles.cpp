@@ -72,6 +72,20 @@ ImageWriteOptions renderedImageWriteOptions(const ImageInfo& in, const std::stri
     return w;
 }
 
+bool appliedLayoutIsRendered(const ImageInfo& in, const std::string& outPath, int requested) {
+    const std::string f = canonicalImageFormat(outPath);
+    if (f != canonicalImageFormat(in.format) || (f != "png" && f != "pnm"))
+        return false;
+    if (in.isFloat || (in.bitDepth != 8 && in.bitDepth != 16) || in.bitsPerSample != in.bitDepth ||
+        (requested != 0 && requested != in.bitDepth))
+        return false;
+    if (in.channels != 3 || in.alphaChannel >= 0 || in.subimages != 1 || in.mipLevels != 1)
+        return false;
+    const ImageWriteOptions w = renderedImageWriteOptions(in, outPath, requested);
+    return w.bitDepth == in.bitDepth && !w.alpha &&
+           appliedImageLayout(in, outPath, requested).type == in.type;
+}
+
 RenderedLayout appliedImageLayout(const ImageInfo& in, const std::string& out, int requested) {
     RenderedLayout l;
     const std::string f = canonicalImageFormat(out);

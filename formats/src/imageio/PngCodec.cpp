@@ -171,7 +171,8 @@ private:
     // from the first IDAT (nothing was consumed: pread), so its messages and its tolerance of
     // benign faults are unchanged.
     bool inflateWhole() {
-        std::string z;
+        UninitBytes z; // the IDAT data, read straight in (the file's size bounds it)
+        z.reserve(static_cast<std::size_t>(m_in.size()));
         std::uint64_t at = 8;
         bool sawData = false, sawEnd = false;
         unsigned char hdr[8];
@@ -215,7 +216,7 @@ private:
         for (std::size_t y = 0; ok && y < static_cast<std::size_t>(m_info.height); ++y)
             ok = m_raw[(rb + 1) * y] <= 4;
         if (!ok) {
-            std::vector<unsigned char>().swap(m_raw);
+            UninitBytes().swap(m_raw);
             return false;
         }
         m_prevRow.assign(rb, 0);
@@ -243,7 +244,7 @@ private:
             }
         }
         if (y1 == m_info.height)
-            std::vector<unsigned char>().swap(m_raw);
+            UninitBytes().swap(m_raw);
     }
 
 public:
@@ -371,7 +372,7 @@ private:
     PngError m_error;
     int m_passes = 1;
     bool m_whole = false;                 // inflated at once (inflateWhole)
-    std::vector<unsigned char> m_raw;     // the filtered rows, each with its filter byte
+    UninitBytes m_raw;                    // the filtered rows, each with its filter byte
     std::vector<unsigned char> m_prevRow; // the last row unfiltered (the next one's "up")
     std::vector<unsigned char> m_row;     // a 16-bit row before its bytes are swapped
     png_bytep m_next = nullptr;           // members, not locals: longjmp may clobber locals

@@ -36,10 +36,22 @@ void putBe32(unsigned char* p, std::uint32_t v) {
     p[3] = static_cast<unsigned char>(v);
 }
 
+// A strip's deflate bytes. The buffer is sized for the worst case and not zero-filled: the
+// compressor writes only its first part (a 1 MiB strip's bound was 1 MiB of fresh pages cleared
+// for nothing, each strip on a new thread).
 struct Strip {
-    std::string deflated;
+    std::unique_ptr<unsigned char[]> deflated;
+    std::size_t size = 0;     // bytes written
+    std::size_t capacity = 0; // bytes allocated
     std::uint32_t adler = 1;
     std::size_t rawBytes = 0;
+    void allocate(std::size_t n) {
+        std::unique_ptr<unsigned char[]> more(new unsigned char[n]); // not value-initialised
+        if (size)
+            std::memcpy(more.get(), deflated.get(), size);
+        deflated = std::move(more);
+        capacity = n;
+    }
 };
 
 // One strip as raw deflate data, primed with `dict`, ended with a sync flush (or the final block),
@@ -58,14 +70,14 @@ Strip deflateStripZlib(const std::vector<unsigned char>& data,
         throw Error("cannot start the PNG compressor");
     if (!dict.empty())
         deflateSetDictionary(&z, dict.data(), static_cast<uInt>(dict.size()));
-    s.deflated.resize(deflateBound(&z, static_cast<uLong>(data.size())) + 64);
+    s.allocate(deflateBound(&z, static_cast<uLong>(data.size())) + 64);
     z.next_in = const_cast<unsigned char*>(data.data());
     z.avail_in = static_cast<uInt>(data.size());
-    z.next_out = reinterpret_cast<unsigned char*>(s.deflated.data());
-    z.avail_out = static_cast<uInt>(s.deflated.size());
+    z.next_out = s.deflated.get();
+    z.avail_out = static_cast<uInt>(s.capacity);
     const int rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
     const bool ok = last ? rc == Z_STREAM_END : rc == Z_OK;
-    s.deflated.resize(s.deflated.size() - z.avail_out);
+    s.size = s.capacity - z.avail_out;
     deflateEnd(&z);
     if (!ok || z.avail_in != 0)
         throw Error("the PNG compressor failed");
@@ -83,13 +95,15 @@ Strip deflateStripIsal(const std::vector<unsigned char>& data,
     s.rawBytes = data.size();
     s.adler = isal_adler32(1, data.data(), data.size());
     const int igzipLevel = level <= 1 ? 1 : 2;
-    std::vector<std::uint8_t> levelBuf(igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT
-                                                       : ISAL_DEF_LVL2_DEFAULT);
-    auto z = std::make_unique<isal_zstream>(); // ~ 100 KiB of state: not on a thread's stack
+    // Neither is zero-filled: isal_deflate_init sets up the stream's state and the level buffer's
+    // hash tables (as ISA-L's own tools allocate them: malloc).
+    const std::size_t levelBytes = igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT : ISAL_DEF_LVL2_DEFAULT;
+    std::unique_ptr<std::uint8_t[]> levelBuf(new std::uint8_t[levelBytes]);
+    std::unique_ptr<isal_zstream> z(new isal_zstream); // ~ 100 KiB: not on a thread's stack
     isal_deflate_init(z.get());
     z->level = static_cast<std::uint32_t>(igzipLevel);
-    z->level_buf = levelBuf.data();
-    z->level_buf_size = static_cast<std::uint32_t>(levelBuf.size());
+    z->level_buf = levelBuf.get();
+    z->level_buf_size = static_cast<std::uint32_t>(levelBytes);
     z->gzip_flag = IGZIP_DEFLATE; // raw deflate: the zlib header and Adler-32 are written here
     if (!dict.empty() && isal_deflate_set_dict(z.get(), const_cast<std::uint8_t*>(dict.data()),
                                                static_cast<std::uint32_t>(dict.size())) != COMP_OK)
@@ -99,23 +113,21 @@ Strip deflateStripIsal(const std::vector<unsigned char>& data,
     z->next_in = const_cast<std::uint8_t*>(data.data());
     z->avail_in = static_cast<std::uint32_t>(data.size());
     // Stored blocks bound the output: 5 bytes per 64 KiB block over the input, plus the flush.
-    s.deflated.resize(data.size() + data.size() / 8192 + 1024);
-    std::size_t done = 0;
+    s.allocate(data.size() + data.size() / 8192 + 1024);
     for (;;) {
-        z->next_out = reinterpret_cast<std::uint8_t*>(s.deflated.data()) + done;
-        z->avail_out = static_cast<std::uint32_t>(s.deflated.size() - done);
+        z->next_out = s.deflated.get() + s.size;
+        z->avail_out = static_cast<std::uint32_t>(s.capacity - s.size);
         if (isal_deflate(z.get()) != COMP_OK)
             throw Error("the PNG compressor failed");
-        done = s.deflated.size() - z->avail_out;
+        s.size = s.capacity - z->avail_out;
         const bool finished =
             last ? z->internal_state.state == ZSTATE_END : z->avail_in == 0 && z->avail_out > 0;
         if (finished)
             break;
         if (z->avail_out > 0) // stopped with room left and work undone: never expected
             throw Error("the PNG compressor failed");
-        s.deflated.resize(s.deflated.size() * 2); // rare: more room, and go on
+        s.allocate(s.capacity * 2); // rare: more room, and go on
     }
-    s.deflated.resize(done);
     if (z->avail_in != 0)
         throw Error("the PNG compressor failed");
     return s;
@@ -263,6 +275,8 @@ public:
         for (int y = y0; y < y1; ++y) {
             const unsigned char* cur = s + m_rowBytes * static_cast<std::size_t>(y - y0);
             const std::size_t at = m_raw->bytes.size();
+            if (at == 0) // a strip's rows, without a reallocation's copy as it grows
+                m_raw->bytes.reserve((kStripBytes / (m_rowBytes + 1) + 1) * m_rowBytes);
             m_raw->bytes.resize(at + m_rowBytes);
             unsigned char* row = m_raw->bytes.data() + at;
             if (m_bytesPerSample == 2) { // host order to big-endian
@@ -292,16 +306,22 @@ public:
     }
 
 private:
-    void chunk(const char* type, const void* data, std::size_t n) {
+    // A chunk of `prefixBytes` of `prefix`, then n bytes of data.
+    void chunk(const char* type, const void* data, std::size_t n, std::size_t prefixBytes = 0,
+               const unsigned char* prefix = nullptr) {
         unsigned char head[8];
-        putBe32(head, static_cast<std::uint32_t>(n));
+        putBe32(head, static_cast<std::uint32_t>(prefixBytes + n));
         std::memcpy(head + 4, type, 4);
         uLong crc = crc32(0L, head + 4, 4);
+        if (prefixBytes)
+            crc = crc32(crc, prefix, static_cast<uInt>(prefixBytes));
         if (n)
             crc = crc32(crc, static_cast<const Bytef*>(data), static_cast<uInt>(n));
         unsigned char tail[4];
         putBe32(tail, static_cast<std::uint32_t>(crc));
         m_out.write(head, 8);
+        if (prefixBytes)
+            m_out.write(prefix, prefixBytes);
         if (n)
             m_out.write(data, n);
         m_out.write(tail, 4);
@@ -397,15 +417,11 @@ private:
     void emitOldest() {
         Strip s = m_jobs.front().get();
         m_jobs.pop_front();
-        std::string data;
-        if (!m_headerDone) {
-            data = std::string("\x78\x9c", 2); // zlib header: deflate, 32K window
-            m_headerDone = true;
-        }
-        data += s.deflated;
+        static const unsigned char kZlibHeader[2] = {0x78, 0x9c}; // deflate, 32K window
         m_adler = static_cast<std::uint32_t>(
             adler32_combine(m_adler, s.adler, static_cast<z_off_t>(s.rawBytes)));
-        chunk("IDAT", data.data(), data.size());
+        chunk("IDAT", s.deflated.get(), s.size, m_headerDone ? 0 : 2, kZlibHeader);
+        m_headerDone = true;
     }
 
     ByteWriter m_out;

@@ -18,6 +18,7 @@ namespace {
 class SanitizeStage final : public Stage {
 public:
     const char* name() const override { return "sanitize"; }
+    bool pointwise() const override { return true; }
     const char* description() const override {
         return "NaN -> 0, +-Inf and |x| > 65504 -> +-65504 (half-float range), always first";
     }
@@ -40,6 +41,12 @@ public:
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
+            // The branch-free scan vectorizes; rows without a bad value (nearly all) end there.
+            int bad = 0;
+            for (int i = 0; i < 4 * f.width; ++i)
+                bad |= !(std::fabs(p[i]) <= limits::kMaxColorValue);
+            if (!bad)
+                continue;
             for (int i = 0; i < 4 * f.width; ++i)
                 if (!(std::fabs(p[i]) <= limits::kMaxColorValue))
                     p[i] = sanitizeValue(p[i], limits::kMaxColorValue);
@@ -53,6 +60,7 @@ public:
         addParam(&m_stops, "stops", 0.0f, -20.0f, 20.0f, "exposure in stops: x * 2^stops");
     }
     const char* name() const override { return "exposure"; }
+    bool pointwise() const override { return true; }
     const char* description() const override {
         return "exposure control: x * 2^stops (before bloom)";
     }
@@ -84,6 +92,7 @@ public:
         addParam(&m_white, "white", 11.2f, 0.01f, 1.0e4f, "hable: linear white point");
     }
     const char* name() const override { return "tonemap"; }
+    bool pointwise() const override { return true; }
     const char* description() const override { return "tone mapping: reinhard | aces | hable"; }
     bool canChange(const ImageView&, int) const override { return true; }
     static float hable(float x) {
@@ -275,6 +284,7 @@ public:
         addParam(&m_gamma, "gamma", 2.2f, 0.1f, 10.0f, "gamma of the pure power curve");
     }
     const char* name() const override { return "display"; }
+    bool pointwise() const override { return true; }
     const char* description() const override {
         return "display encode: piecewise sRGB or pure gamma, last";
     }

@@ -43,6 +43,7 @@ class SmashGradeStage final : public LutStage {
 public:
     SmashGradeStage() { setLut(nullptr, Interpolation::Trilinear, nullptr); }
     const char* name() const override { return "smash-grade"; }
+    bool pointwise() const override { return true; }
     const char* description() const override {
         return "Smash grading: gamma 2.2 encode, LUT, brighten (0.99961, 1.3703), decode, alpha "
                "mix";
@@ -66,8 +67,8 @@ public:
     bool canChange(const ImageView& f, int nthreads) const override {
         return anyPixel(f, nthreads, [](const float* p) { return p[3] > 0.0f; });
     }
-    void setFusedDisplay(bool on) { m_fusedDisplay = on; }
-    void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
+    void processRows(const ImageView& f, int y0, int y1, const StageContext& ctx) const override {
+        const bool fused = ctx.fusedDisplay;
         // Chunks of 64 pixels: encode (SIMD), the sampler's own kernel on the encoded copy, then
         // brighten + decode + mix (+ display) (SIMD); the scratch stays in L1.
         constexpr int kChunk = 64;
@@ -81,13 +82,13 @@ public:
                 for (int i = 0; i < n; ++i)
                     graded |= p[4 * i + 3] > 0.0f;
                 if (!graded) { // alpha <= 0 everywhere: at most the display encode
-                    if (m_fusedDisplay)
+                    if (fused)
                         smashFinishPixels(p, p, p, static_cast<std::size_t>(n), true);
                     continue;
                 }
                 smashEncodePixels(p, s, l, static_cast<std::size_t>(n));
                 m_sampler->applyPixels(l, static_cast<std::size_t>(n));
-                smashFinishPixels(p, s, l, static_cast<std::size_t>(n), m_fusedDisplay);
+                smashFinishPixels(p, s, l, static_cast<std::size_t>(n), fused);
             }
         }
     }
@@ -98,7 +99,6 @@ private:
     std::shared_ptr<const Lut1D> m_shaper;
     Interpolation m_method = Interpolation::Trilinear;
     std::unique_ptr<Sampler> m_sampler;
-    bool m_fusedDisplay = false;
 };
 
 // Any 3D LUT with any interpolation, on linear or encoded values as the preset places it. An
@@ -108,6 +108,7 @@ class GenericLutStage final : public LutStage {
 public:
     GenericLutStage() { setLut(nullptr, Interpolation::Trilinear, nullptr); }
     const char* name() const override { return "lut"; }
+    bool pointwise() const override { return true; }
     const char* description() const override { return "a 3D LUT (any size, any interpolation)"; }
     void setLut(std::shared_ptr<const Lut3D> lut, Interpolation method,
                 std::shared_ptr<const Lut1D> shaper) override {
@@ -171,9 +172,8 @@ std::unique_ptr<Stage> makeLutStage() {
     return std::make_unique<GenericLutStage>();
 }
 
-void setSmashGradeFusedDisplay(Stage& grade, bool on) {
-    if (auto* g = dynamic_cast<SmashGradeStage*>(&grade))
-        g->setFusedDisplay(on);
+bool isSmashGrade(const Stage& s) {
+    return dynamic_cast<const SmashGradeStage*>(&s) != nullptr;
 }
 
 } // namespace lut::detail

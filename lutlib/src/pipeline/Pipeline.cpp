@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 #include <sstream>
 
@@ -301,6 +302,21 @@ std::string PipelineReport::str() const {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+
+// How run() groups the stages into passes over the frame, and the one fusion (written once for
+// run() and runPixels()): a stage that inspects the colour or needs the whole frame first starts
+// a new pass; sanitize ends its pass (it changes alpha, which later stages may base their
+// decision on); sRGB display right after smash-grade in the same pass is encoded inside the
+// grading loop while the pixel is in registers (StageContext::fusedDisplay).
+bool startsPass(const Stage& s) {
+    return s.inspectsColor() || s.needsPrepare();
+}
+bool endsPass(const Stage& s) {
+    return std::string_view(s.name()) == "sanitize";
+}
+bool fusesInto(const Stage& passBack, const Stage& s) {
+    return detail::isSmashGrade(passBack) && detail::isSrgbDisplay(s);
+}
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -354,16 +370,14 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
             m_stages[pass[k]]->finish();
         }
         pass.clear();
+        ctx.fusedDisplay = false;
     };
 
-    Stage* grade = find("smash-grade");
-    if (grade)
-        detail::setSmashGradeFusedDisplay(*grade, false);
     for (std::size_t i = first; i < last; ++i) {
         Stage& s = *m_stages[i];
         if (!s.enabled())
             continue;
-        if (s.inspectsColor() || s.needsPrepare())
+        if (startsPass(s))
             flush(); // timed as the earlier stages' work
         const auto t0 = Clock::now();
         const bool run = options.forceAll || s.canChange(frame, options.nthreads);
@@ -371,23 +385,18 @@ PipelineReport Pipeline::run(const ImageView& frame, const RunOptions& options) 
             report.stages[i].ran = true;
             if (s.needsPrepare())
                 s.prepare(frame, ctx);
-            // sRGB display right after smash-grade in the same pass: encode inside the grading
-            // loop while the pixel is in registers.
-            if (!pass.empty() && m_stages[pass.back()].get() == grade && detail::isSrgbDisplay(s)) {
-                detail::setSmashGradeFusedDisplay(*grade, true);
+            if (!pass.empty() && fusesInto(*m_stages[pass.back()], s)) {
+                ctx.fusedDisplay = true;
                 report.stages[i].fused = true;
             } else {
                 pass.push_back(i);
             }
         }
         report.stages[i].milliseconds += msSince(t0);
-        // The sanitize stage changes alpha, which later stages may base their decision on.
-        if (std::string_view(s.name()) == "sanitize")
+        if (endsPass(s))
             flush();
     }
     flush();
-    if (grade)
-        detail::setSmashGradeFusedDisplay(*grade, false);
     report.totalMilliseconds = msSince(tStart);
     return report;
 }
@@ -398,6 +407,54 @@ Image Pipeline::run(const Image& frame, const RunOptions& options, PipelineRepor
     if (report)
         *report = std::move(r);
     return out;
+}
+
+bool Pipeline::isPointwise() const {
+    for (const auto& s : m_stages)
+        if (s->enabled() && !s->pointwise())
+            return false;
+    return true;
+}
+
+void Pipeline::runPixels(float* rgba, std::size_t count, const RunOptions& options) const {
+    if (!isPointwise())
+        throw Error("the pipeline has a stage that needs the whole frame (runPixels)");
+    if (count == 0)
+        return;
+    if (count > static_cast<std::size_t>(std::numeric_limits<int>::max() / 4))
+        throw Error("runPixels: too many pixels in one run");
+    // run() with forceAll, on a 1-row frame: skipping a stage never changes a pixel (Stage.h), so
+    // running every enabled stage gives run()'s result; the passes only decide the fusion.
+    const std::size_t split = firstLutStage();
+    const std::size_t first = options.part == PipelinePart::FromLut ? split : 0;
+    const std::size_t last = options.part == PipelinePart::BeforeLut ? split : m_stages.size();
+    const ImageView row{rgba, static_cast<int>(count), 1, static_cast<std::ptrdiff_t>(4 * count)};
+    std::size_t order[32];
+    bool fused[32] = {};
+    std::size_t n = 0;
+    const Stage* passBack = nullptr;
+    for (std::size_t i = first; i < last && n < 32; ++i) {
+        const Stage& s = *m_stages[i];
+        if (!s.enabled())
+            continue;
+        if (startsPass(s))
+            passBack = nullptr;
+        if (passBack && n > 0 && fusesInto(*passBack, s)) {
+            fused[n - 1] = true;
+        } else {
+            order[n++] = i;
+            passBack = &s;
+        }
+        if (endsPass(s))
+            passBack = nullptr;
+    }
+    StageContext ctx;
+    ctx.nthreads = 1;
+    ctx.frameIndex = options.frameIndex;
+    for (std::size_t k = 0; k < n; ++k) {
+        ctx.fusedDisplay = fused[k];
+        m_stages[order[k]]->processRows(row, 0, 1, ctx);
+    }
 }
 
 Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The preview recipe, once for both programs; see lut/pipeline/PreviewPlan.h.
 #include "lut/pipeline/PreviewPlan.h"
+#include "lut/pipeline/PreviewPreparation.h"
 
 #include "lut/Parallel.h"
 #include "lut/pipeline/Transfer.h"
@@ -22,31 +23,6 @@ Diagnostic info(std::string message) {
     d.severity = Diagnostic::Severity::Info;
     d.message = std::move(message);
     return d;
-}
-
-// lut::srgbDecode of every R, G, B of a frame read from an 8-bit file, by table: the values are
-// exactly k / 255 (lut/formats/ImageIO.h), so the table gives the same floats as the per-value
-// call at a fraction of the cost (the power function ran 6 million times for a 1080p frame). The
-// code's own float k / 255 is tabled too (a division per value was most of this pass), and the
-// rows are shared among the threads (one thread took 10-19 ms of a 1080p preview).
-void decodeSrgbCodes8(const ImageView& frame, int nthreads) {
-    float table[256];
-    float codes[256];
-    for (int k = 0; k < 256; ++k) {
-        codes[k] = static_cast<float>(k) / 255.0f;
-        table[k] = srgbDecode(codes[k]);
-    }
-    parallelFor(frame.height, nthreads, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            float* p = frame.row(y);
-            for (int x = 0; x < frame.width; ++x, p += 4)
-                for (int c = 0; c < 3; ++c) {
-                    const float v = p[c];
-                    const int k = static_cast<int>(v * 255.0f + 0.5f);
-                    p[c] = k >= 0 && k < 256 && codes[k] == v ? table[k] : srgbDecode(v);
-                }
-        }
-    });
 }
 
 } // namespace
@@ -136,31 +112,96 @@ PreviewPlan planPreview(const PreviewRequest& q, bool stageLutGiven) {
     return p;
 }
 
+// The 8-bit decode goes by table: the values are exactly k / 255 (lut/formats/ImageIO.h), so the
+// table gives the same floats as the per-value call at a fraction of the cost (the power function
+// ran 6 million times for a 1080p frame), and the code's own float k / 255 is tabled too (a
+// division per value was most of this pass). A value that is not a code takes the function.
+PreviewPreparation::PreviewPreparation(const PreviewPlan& p, const Lut3D* stageLut, bool stored8Bit)
+    : m_decode(p.decode), m_table(stored8Bit), m_quietBloom(p.bloomLeftToTheScreenshot) {
+    for (int k = 0; k < 256; ++k) {
+        m_codes[k] = static_cast<float>(k) / 255.0f;
+        m_linear[k] = srgbDecode(m_codes[k]);
+    }
+    if (p.undoGrading)
+        m_ungrader.emplace(stageLut, p.settings.interpolation);
+    // A screenshot taken with the neutral stage LUT (the default): an 8-bit code's decode and
+    // undo together are one table per channel (what the decode, then SmashUngrader::apply give).
+    m_undoneTable = m_decode && m_table && m_ungrader && m_ungrader->neutral();
+    if (m_undoneTable)
+        for (int k = 0; k < 256; ++k)
+            m_undone[k] = SmashUngrader::neutralChannel(m_linear[k]);
+    if (p.displayEncode)
+        m_display.emplace(Preset::None);
+}
+
+PreviewPreparation::~PreviewPreparation() = default;
+
+void PreviewPreparation::apply(float* rgba, std::size_t count) const {
+    if (m_undoneTable) {
+        std::size_t unconverged = 0;
+        float* p = rgba;
+        for (std::size_t i = 0; i < count; ++i, p += 4) {
+            int k[3];
+            bool codes = p[3] >= 1.0f; // clamp01(alpha) >= 1, as the ungrader tests it
+            for (int c = 0; c < 3; ++c) {
+                k[c] = std::clamp(static_cast<int>(p[c] * 255.0f + 0.5f), 0, 255);
+                codes = codes && m_codes[k[c]] == p[c];
+            }
+            if (codes) {
+                for (int c = 0; c < 3; ++c)
+                    p[c] = m_undone[k[c]];
+                continue;
+            }
+            for (int c = 0; c < 3; ++c)  // not all 8-bit codes (or alpha < 1): step by step
+                p[c] = srgbDecode(p[c]); // m_linear[k] for a code, by construction
+            unconverged += m_ungrader->apply(p, 1);
+        }
+        m_unconverged += unconverged;
+        return;
+    }
+    if (m_decode) {
+        float* p = rgba;
+        if (m_table) {
+            for (std::size_t i = 0; i < count; ++i, p += 4)
+                for (int c = 0; c < 3; ++c) {
+                    const float v = p[c];
+                    const int k = static_cast<int>(v * 255.0f + 0.5f);
+                    p[c] = k >= 0 && k < 256 && m_codes[k] == v ? m_linear[k] : srgbDecode(v);
+                }
+        } else {
+            for (std::size_t i = 0; i < count; ++i, p += 4)
+                for (int c = 0; c < 3; ++c)
+                    p[c] = srgbDecode(p[c]);
+        }
+    }
+    if (m_ungrader)
+        m_unconverged += m_ungrader->apply(rgba, count);
+    if (m_display)
+        m_display->runPixels(rgba, count);
+}
+
+Diagnostics PreviewPreparation::notes() const {
+    if (!m_ungrader)
+        return {};
+    Diagnostics d = ungradeNotes(m_unconverged.load());
+    if (m_quietBloom) // said in the reason: no bloom added to the shot's own
+        d.erase(std::remove_if(
+                    d.begin(), d.end(),
+                    [](const Diagnostic& x) { return x.message.rfind(kBloomNotUndone, 0) == 0; }),
+                d.end());
+    return d;
+}
+
 Diagnostics preparePreviewFrame(const PreviewPlan& p, const ImageView& frame, const Lut3D* stageLut,
                                 bool stored8Bit, int nthreads) {
-    Diagnostics d;
-    if (p.decode) {
-        if (stored8Bit)
-            decodeSrgbCodes8(frame, nthreads); // exact: 8-bit values are k/255
-        else
-            srgbDecode(frame, nthreads);
-    }
-    if (p.undoGrading) {
-        d = prepareSceneFrame(frame, true, true, stageLut, p.settings.interpolation, nthreads);
-        if (p.bloomLeftToTheScreenshot) // said in the reason: no bloom added to the shot's own
-            d.erase(std::remove_if(d.begin(), d.end(),
-                                   [](const Diagnostic& x) {
-                                       return x.message.rfind(kBloomNotUndone, 0) == 0;
-                                   }),
-                    d.end());
-    }
-    if (p.displayEncode) {
-        Pipeline none(Preset::None);
-        RunOptions run;
-        run.nthreads = nthreads;
-        none.run(frame, run);
-    }
-    return d;
+    const PreviewPreparation prep(p, stageLut, stored8Bit);
+    if (!prep.active() || frame.empty())
+        return prep.notes();
+    parallelFor(frame.height, nthreads, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            prep.apply(frame.row(y), static_cast<std::size_t>(frame.width));
+    });
+    return prep.notes();
 }
 
 int preparationKey(const PreviewPlan& p) {

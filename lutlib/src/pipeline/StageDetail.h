@@ -215,8 +215,9 @@ std::unique_ptr<Stage> makeSmashGradeStage();
 std::unique_ptr<Stage> makeLutStage();
 std::unique_ptr<Stage> makeDisplayStage();
 
-// Set by the pipeline when display (sRGB) directly follows smash-grade in one pass.
-void setSmashGradeFusedDisplay(Stage& grade, bool on);
+// The fusion rule's two kinds (Pipeline::run: sRGB display directly after smash-grade in one
+// pass runs inside smash-grade's loop, StageContext::fusedDisplay).
+bool isSmashGrade(const Stage& s);
 bool isSrgbDisplay(const Stage& s);
 
 } // namespace lut::detail

@@ -3,6 +3,7 @@
 // polynomial pows for speed (pipeline/GradeStages.cpp, core/FastMath.h) and is tested against
 // these and a float64 reference.
 #include "lut/smash/SmashGrading.h"
+#include "lut/smash/SmashUngrader.h"
 
 #include "core/FastMath.h"
 #include "lut/Limits.h"
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <optional>
 #include <vector>
 
 namespace lut {
@@ -242,55 +242,77 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
     return toLinear(s);
 }
 
+SmashUngrader::SmashUngrader(const Lut3D* stageLut, Interpolation interp) {
+    const Lut3D neutral = Lut3D::identity(kSmashLutSize);
+    const Lut3D& lut = stageLut ? *stageLut : neutral;
+    m_sampler = makeSampler(lut, interp); // its own copy of the table
+    m_identity = lut.hasDefaultDomain() && lut.isIdentity(1e-6f);
+}
+
+SmashUngrader::~SmashUngrader() = default;
+
+float SmashUngrader::neutralChannel(float linear) {
+    return neutralUngradeChannel(linear);
+}
+SmashUngrader::SmashUngrader(SmashUngrader&&) noexcept = default;
+SmashUngrader& SmashUngrader::operator=(SmashUngrader&&) noexcept = default;
+
+std::size_t SmashUngrader::apply(float* p, std::size_t count) const {
+    // The memo holds a pure function of the value (the neutral ungrade), so one per thread serves
+    // every ungrader and every call.
+    thread_local NeutralUngradeMemo memo;
+    std::size_t bad = 0;
+    for (std::size_t i = 0; i < count; ++i, p += 4) {
+        if (m_identity && detail::clamp01(p[3]) >= 1.0f) { // the same as smashGradeInverse
+            p[0] = memo(p[0]);
+            p[1] = memo(p[1]);
+            p[2] = memo(p[2]);
+            continue;
+        }
+        bool ok = true;
+        const glm::vec3 v =
+            smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3], *m_sampler, m_identity, &ok);
+        p[0] = v.x;
+        p[1] = v.y;
+        p[2] = v.z;
+        bad += ok ? 0 : 1;
+    }
+    return bad;
+}
+
+Diagnostics ungradeNotes(std::size_t unconverged) {
+    Diagnostics notes;
+    Diagnostic note;
+    note.severity = Diagnostic::Severity::Info;
+    note.message = "bloom cannot be undone: the screenshot's bloom stays in the recovered frame "
+                   "(and is added again unless bloom is disabled)";
+    notes.push_back(note);
+    if (unconverged > 0) {
+        Diagnostic w;
+        w.severity = Diagnostic::Severity::Warning;
+        w.message = std::to_string(unconverged) +
+                    " pixel(s) have colours the original LUT cannot produce; kept the closest";
+        notes.push_back(w);
+    }
+    return notes;
+}
+
 UngradeResult smashUngrade(const ImageView& frame, const Lut3D* originalLut, Interpolation interp,
                            int nthreads) {
     UngradeResult result;
-    const Lut3D neutral = Lut3D::identity(kSmashLutSize);
-    const Lut3D& lut = originalLut ? *originalLut : neutral;
-    const auto sampler = makeSampler(lut, interp);
-    const bool identity = lut.hasDefaultDomain() && lut.isIdentity(1e-6f);
+    const SmashUngrader ungrader(originalLut, interp);
     std::atomic<std::size_t> bad{0};
     if (!frame.empty()) {
         parallelFor(frame.height, nthreads, [&](int y0, int y1) {
             std::size_t localBad = 0;
-            std::optional<NeutralUngradeMemo> memo;
-            if (identity)
-                memo.emplace();
-            for (int y = y0; y < y1; ++y) {
-                float* p = frame.row(y);
-                for (int x = 0; x < frame.width; ++x, p += 4) {
-                    if (memo && detail::clamp01(p[3]) >= 1.0f) { // the same as smashGradeInverse
-                        p[0] = (*memo)(p[0]);
-                        p[1] = (*memo)(p[1]);
-                        p[2] = (*memo)(p[2]);
-                        continue;
-                    }
-                    bool ok = true;
-                    const glm::vec3 v = smashGradeInverse(glm::vec3(p[0], p[1], p[2]), p[3],
-                                                          *sampler, identity, &ok);
-                    p[0] = v.x;
-                    p[1] = v.y;
-                    p[2] = v.z;
-                    localBad += ok ? 0 : 1;
-                }
-            }
+            for (int y = y0; y < y1; ++y)
+                localBad += ungrader.apply(frame.row(y), static_cast<std::size_t>(frame.width));
             bad += localBad;
         });
         result.pixels = static_cast<std::size_t>(frame.width) * frame.height;
     }
     result.unconverged = bad.load();
-    Diagnostic note;
-    note.severity = Diagnostic::Severity::Info;
-    note.message = "bloom cannot be undone: the screenshot's bloom stays in the recovered frame "
-                   "(and is added again unless bloom is disabled)";
-    result.diagnostics.push_back(note);
-    if (result.unconverged > 0) {
-        Diagnostic w;
-        w.severity = Diagnostic::Severity::Warning;
-        w.message = std::to_string(result.unconverged) +
-                    " pixel(s) have colours the original LUT cannot produce; kept the closest";
-        result.diagnostics.push_back(w);
-    }
+    result.diagnostics = ungradeNotes(result.unconverged);
     return result;
 }
 

@@ -144,6 +144,17 @@ public:
     // The result-returning form.
     Image run(const Image& frame, const RunOptions& options = {}, PipelineReport* report = nullptr);
 
+    // Whether every enabled stage is pointwise (Stage::pointwise: no bloom, chromatic
+    // aberration, vignette or grain): the pipeline can then run on runs of pixels streamed from a
+    // file (runPixels), never holding a frame.
+    bool isPointwise() const;
+    // A pointwise pipeline on count RGBA pixels in place (the part options.part names; nthreads
+    // and forceAll are not used): run()'s result for those pixels, bit for bit, as every enabled
+    // stage runs (skipping never changes a pixel) and the display encode is fused into
+    // smash-grade as run() fuses it. Const and thread-safe: concurrent calls on disjoint runs.
+    // Throws lut::Error when the pipeline is not pointwise.
+    void runPixels(float* rgba, std::size_t count, const RunOptions& options = {}) const;
+
 private:
     Preset m_preset = Preset::None;
     std::vector<std::unique_ptr<Stage>> m_stages;

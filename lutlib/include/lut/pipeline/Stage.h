@@ -46,6 +46,9 @@ struct StageParam {
 struct StageContext {
     int nthreads = 0;                  // 0 = all cores
     unsigned long long frameIndex = 0; // film grain changes per frame, reproducibly
+    // The pipeline fused the sRGB display encode into smash-grade's loop (Pipeline::run decides;
+    // only smash-grade reads it).
+    bool fusedDisplay = false;
 };
 
 class Stage {
@@ -62,6 +65,10 @@ public:
     // inspectsColor(), so the pipeline asks them on the frame as it is when they run.
     virtual bool canChange(const ImageView& frame, int nthreads) const = 0;
     virtual bool inspectsColor() const { return false; }
+    // Whether each pixel's result depends only on that pixel and the settings (not on its
+    // position, its neighbours or the rest of the frame), with no prepare(): processRows then
+    // gives the same result on any run of pixels (a 1-row view), as Pipeline::runPixels uses it.
+    virtual bool pointwise() const { return false; }
 
     virtual bool needsPrepare() const { return false; }
     virtual void prepare(const ImageView& frame, const StageContext& ctx) {}
