@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -243,4 +244,99 @@ TEST(PngRead, DamagedFilesKeepLibpngsMessages) {
     const std::string cut = lut::test::tempDir() + "/png_read_cut.png";
     std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 40);
     EXPECT_THROW(readAll(cut), lut::Error);
+}
+
+namespace {
+
+// The chunks of a PNG file's bytes: {type, data}.
+std::vector<std::pair<std::string, Bytes>> chunksOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const Bytes b((std::istreambuf_iterator<char>(in)), {});
+    std::vector<std::pair<std::string, Bytes>> v;
+    for (std::size_t at = 8; at + 12 <= b.size();) {
+        const std::size_t len = std::size_t(b[at]) << 24 | std::size_t(b[at + 1]) << 16 |
+                                std::size_t(b[at + 2]) << 8 | b[at + 3];
+        v.emplace_back(std::string(b.begin() + long(at) + 4, b.begin() + long(at) + 8),
+                       Bytes(b.begin() + long(at) + 8, b.begin() + long(at + 8 + len)));
+        at += 12 + len;
+    }
+    return v;
+}
+
+std::string writeChunks(const std::string& path,
+                        const std::vector<std::pair<std::string, Bytes>>& chunks) {
+    Bytes png{137, 'P', 'N', 'G', 13, 10, 26, 10};
+    for (const auto& [type, data] : chunks)
+        chunk(png, type.c_str(), data);
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    return path;
+}
+
+// Our reader, `rows` rows per call (the fast path streams: a fault can show after rows were given).
+Bytes readInStrips(const std::string& path, int rows) {
+    auto src = lut::formats::openImageSource(path);
+    const std::size_t rb = lut::formats::rowBytes(src->info());
+    Bytes buf(rb * static_cast<std::size_t>(src->info().height));
+    for (int y = 0; y < src->info().height; y += rows)
+        src->readRows(y, std::min(src->info().height, y + rows),
+                      buf.data() + rb * static_cast<std::size_t>(y));
+    src->finish();
+    return buf;
+}
+
+} // namespace
+
+TEST(PngRead, AFaultAfterRowsWereGivenIsLibpngsToJudge) {
+    // The fast path inflates as rows are asked for, so it can meet a fault after it gave rows:
+    // libpng then reads the file from its start (the given rows again, dropped) and judges it as
+    // it judged the whole file before. A CRC error in the second IDAT is libpng's error; bytes
+    // after the zlib stream's end, which libpng reads past, give libpng's (and OIIO's) samples.
+    const int w = 300, h = 200;
+    const Bytes s = randomSamples(std::size_t(w) * h * 3, 19);
+    // tempDir() empties the test's folder (writePng calls it): our files go to a sibling.
+    const std::string written = writePng("png_read_two_idat.png", w, h, 3, 8, s, false);
+    const std::string dir = written.substr(0, written.rfind('/')) + ".work";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string good = dir + "/two_idat.png";
+    std::filesystem::copy_file(written, good);
+    const std::vector<std::uint32_t> want = truth(s, 8);
+    ASSERT_EQ(readOiio(good, 8), want);
+    for (int rows : {1, 7, h}) {
+        const Bytes got = readInStrips(good, rows);
+        EXPECT_EQ(std::vector<std::uint32_t>(got.begin(), got.end()), want) << rows;
+    }
+
+    auto chunks = chunksOf(good);
+    ASSERT_EQ(chunks.size(), 4u); // IHDR, IDAT, IDAT, IEND
+    {
+        const std::string path = dir + "/png_read_crc2.png";
+        {
+            std::ifstream in(good, std::ios::binary);
+            std::string bytes((std::istreambuf_iterator<char>(in)), {});
+            ASSERT_GT(bytes.size(), 100u);
+            bytes[bytes.size() - 12 - 1] ^= 0x33; // the second IDAT's CRC (IEND is the last 12)
+            std::ofstream(path, std::ios::binary) << bytes;
+        }
+        try {
+            readInStrips(path, 1);
+            FAIL() << "a CRC error in the second IDAT was not reported";
+        } catch (const lut::Error& e) {
+            EXPECT_NE(std::string(e.what()).find("png_read_crc2.png: cannot read PNG: IDAT: CRC "
+                                                 "error"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    {
+        auto extra = chunks;
+        extra[2].second.insert(extra[2].second.end(), {0, 1, 2, 3, 'x', 'y'});
+        const std::string path = writeChunks(dir + "/png_read_extra.png", extra);
+        ASSERT_EQ(readOiio(path, 8), want) << "libpng reads past the stream's end";
+        for (int rows : {1, 13, h}) {
+            const Bytes got = readInStrips(path, rows);
+            EXPECT_EQ(std::vector<std::uint32_t>(got.begin(), got.end()), want) << rows;
+        }
+    }
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // PNG, natively. Reading: the common files (8/16-bit grey, grey + alpha, RGB, RGBA, not
-// interlaced, no tRNS, up to 64 MiB of samples) are inflated in one call by libdeflate (about
-// twice zlib's speed) and unfiltered here (PngUnfilter.h); the others are libpng's, row by row
+// interlaced, no tRNS) are inflated by ISA-L as their rows are asked for (streamed: reading
+// overlaps the rest; as fast as libdeflate's one call over the whole image, twice zlib's speed)
+// and unfiltered here (PngUnfilter.h); the others are libpng's, row by row
 // (transforms: palette and low-depth grey expanded to 8 bits, tRNS to alpha, 16-bit samples in
 // host order; no gamma), and so are the common files the fast path finds anything unusual in. Both
 // give the same samples (tests/formats/test_png_read.cpp). Writing is ours, because libpng
@@ -21,6 +22,7 @@
 
 #include "imageio/PngUnfilter.h"
 
+#include <isa-l/igzip_lib.h>
 #include <libdeflate.h>
 #include <png.h>
 #include <zlib.h>
@@ -37,9 +39,6 @@ namespace lut::formats {
 namespace {
 
 constexpr unsigned char kSignature[8] = {137, 'P', 'N', 'G', 13, 10, 26, 10};
-// Filtered rows up to this size are inflated at once (a 4K RGBA 16-bit frame is 66 MB: libpng
-// streams it instead).
-constexpr double kMaxWholeBytes = 64.0 * (1 << 20);
 
 std::uint32_t be32(const unsigned char* p) {
     return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
@@ -160,91 +159,169 @@ private:
         const bool plainLayout = colour == PNG_COLOR_TYPE_GRAY || colour == PNG_COLOR_TYPE_RGB ||
                                  colour == PNG_COLOR_TYPE_GRAY_ALPHA ||
                                  colour == PNG_COLOR_TYPE_RGB_ALPHA;
-        const double samples = static_cast<double>(rowBytes(m_info) + 1) * m_info.height;
         m_whole = plainLayout && (depth == 8 || depth == 16) && interlace == PNG_INTERLACE_NONE &&
-                  !png_get_valid(m_png, m_pngInfo, PNG_INFO_tRNS) && samples <= kMaxWholeBytes;
+                  !png_get_valid(m_png, m_pngInfo, PNG_INFO_tRNS);
     }
 
-    // The fast path: every IDAT's bytes (each chunk's CRC checked), inflated at once, checked to
-    // be exactly the filtered rows the header declares, every filter byte known, IEND after the
-    // data. False on anything else (a damaged or unusual file): libpng's path then reads the file
-    // from the first IDAT (nothing was consumed: pread), so its messages and its tolerance of
-    // benign faults are unchanged.
-    bool inflateWhole() {
-        UninitBytes z; // the IDAT data, read straight in (the file's size bounds it)
-        z.reserve(static_cast<std::size_t>(m_in.size()));
-        std::uint64_t at = 8;
-        bool sawData = false, sawEnd = false;
+    // The fast path, streamed: the IDAT chunks are read one at a time as rows are asked for (each
+    // chunk's CRC checked before its bytes are used) and inflated by ISA-L straight into the rows
+    // asked for (its stateful inflate keeps the 32 KiB window itself); every filter byte must be
+    // known, and after the last row the zlib stream must end there (its Adler-32 checked), with
+    // IEND after the data and no critical chunk between. Anything else (a damaged or unusual
+    // file) hands the file to libpng from its first IDAT (nothing was consumed: pread), the rows
+    // already given read again and dropped, so libpng's messages and its tolerance of benign
+    // faults are unchanged. (It was one libdeflate call over the whole image: a 1080p frame's
+    // 20-30 ms before the first row, on the reading thread alone.)
+    void startStream() {
+        m_inflate.reset(new inflate_state); // ~ 90 KiB, set up by isal_inflate_init
+        isal_inflate_init(m_inflate.get());
+        m_inflate->crc_flag = ISAL_ZLIB; // the zlib header parsed, the Adler-32 verified
+        m_chunkAt = 8;
+        m_sawData = false;
+        m_rowsDone = 0;
+        m_prevRow.assign(rowBytes(m_info), 0);
+    }
+
+    enum class Feed { Data, End, Bad };
+    // The next IDAT's data as the inflater's input (Data); End at IEND; Bad for a damaged chunk,
+    // a critical chunk after the data, or a file that ends without IEND.
+    Feed nextIdat() {
         unsigned char hdr[8];
-        while (at + 8 <= m_in.size() && m_in.pread(hdr, 8, at) == 8) {
+        while (m_chunkAt + 8 <= m_in.size() && m_in.pread(hdr, 8, m_chunkAt) == 8) {
             const std::uint32_t len = be32(hdr);
             const char* type = reinterpret_cast<const char*>(hdr + 4);
-            if (len > 0x7fffffffu || at + 12 + static_cast<std::uint64_t>(len) > m_in.size())
-                return false; // the chunk runs past the end of the file
+            if (len > 0x7fffffffu || m_chunkAt + 12 + static_cast<std::uint64_t>(len) > m_in.size())
+                return Feed::Bad; // the chunk runs past the end of the file
+            if (isType(type, "IEND"))
+                return Feed::End;
             if (isType(type, "IDAT")) {
-                const std::size_t old = z.size();
-                z.resize(old + len + 4);
-                if (m_in.pread(z.data() + old, len + 4, at + 8) != len + 4)
-                    return false;
-                const auto* d = reinterpret_cast<const unsigned char*>(z.data() + old);
+                m_idat.resize(static_cast<std::size_t>(len) + 4);
+                if (m_in.pread(m_idat.data(), len + 4, m_chunkAt + 8) != len + 4)
+                    return Feed::Bad;
                 const std::uint32_t crc = static_cast<std::uint32_t>(
-                    libdeflate_crc32(libdeflate_crc32(0, hdr + 4, 4), d, len));
-                if (crc != be32(d + len))
-                    return false;
-                z.resize(old + len);
-                sawData = true;
-            } else if (isType(type, "IEND")) {
-                sawEnd = true;
-                break;
-            } else if (sawData && (type[0] & 0x20) == 0) {
-                return false; // a critical chunk after the data
+                    libdeflate_crc32(libdeflate_crc32(0, hdr + 4, 4), m_idat.data(), len));
+                if (crc != be32(m_idat.data() + len))
+                    return Feed::Bad;
+                m_chunkAt += 12 + static_cast<std::uint64_t>(len);
+                m_sawData = true;
+                if (len == 0)
+                    continue;
+                m_inflate->next_in = m_idat.data();
+                m_inflate->avail_in = len;
+                return Feed::Data;
             }
-            at += 12 + static_cast<std::uint64_t>(len);
+            if (m_sawData && (type[0] & 0x20) == 0)
+                return Feed::Bad; // a critical chunk after the data
+            m_chunkAt += 12 + static_cast<std::uint64_t>(len);
         }
-        if (!sawData || !sawEnd)
-            return false;
-        const std::size_t rb = rowBytes(m_info);
-        m_raw.resize((rb + 1) * static_cast<std::size_t>(m_info.height));
-        libdeflate_decompressor* d = libdeflate_alloc_decompressor();
-        if (!d)
-            return false;
-        std::size_t got = 0;
-        const libdeflate_result rc =
-            libdeflate_zlib_decompress(d, z.data(), z.size(), m_raw.data(), m_raw.size(), &got);
-        libdeflate_free_decompressor(d);
-        bool ok = rc == LIBDEFLATE_SUCCESS && got == m_raw.size();
-        for (std::size_t y = 0; ok && y < static_cast<std::size_t>(m_info.height); ++y)
-            ok = m_raw[(rb + 1) * y] <= 4;
-        if (!ok) {
-            UninitBytes().swap(m_raw);
-            return false;
+        return Feed::Bad;
+    }
+
+    // Exactly n inflated bytes into out; false if the stream is damaged or ends first.
+    bool inflateTo(unsigned char* out, std::size_t n) {
+        inflate_state* s = m_inflate.get();
+        s->next_out = out;
+        s->avail_out = static_cast<std::uint32_t>(n);
+        while (s->avail_out > 0) {
+            const std::uint32_t outBefore = s->avail_out, inBefore = s->avail_in;
+            if (isal_inflate(s) != ISAL_DECOMP_OK)
+                return false;
+            if (s->avail_out == 0)
+                break;
+            if (s->block_state == ISAL_BLOCK_FINISH)
+                return false; // the stream ended before the rows did
+            if (s->avail_out != outBefore || s->avail_in != inBefore)
+                continue;
+            if (s->avail_in > 0 || nextIdat() != Feed::Data)
+                return false; // stuck, or the data ends before the rows do
         }
-        m_prevRow.assign(rb, 0);
         return true;
     }
 
-    void unfilterRows(int y0, int y1, unsigned char* out) {
+    // After the last row: the stream ends (Adler-32 checked by the inflater), nothing follows it
+    // in the data, and IEND comes with no critical chunk before it.
+    bool endOfStream() {
+        inflate_state* s = m_inflate.get();
+        unsigned char extra = 0;
+        while (s->block_state != ISAL_BLOCK_FINISH) {
+            s->next_out = &extra;
+            s->avail_out = 1;
+            const std::uint32_t inBefore = s->avail_in;
+            if (isal_inflate(s) != ISAL_DECOMP_OK || s->avail_out == 0)
+                return false; // damaged, or more data than the rows
+            if (s->block_state == ISAL_BLOCK_FINISH)
+                break;
+            if (s->avail_in == inBefore && (s->avail_in > 0 || nextIdat() != Feed::Data))
+                return false;
+        }
+        if (s->avail_in != 0)
+            return false; // bytes after the zlib stream
+        for (;;) {
+            const Feed f = nextIdat();
+            if (f != Feed::Data)
+                return f == Feed::End;
+            if (m_inflate->avail_in > 0)
+                return false; // more data after the stream's end
+        }
+    }
+
+    // Rows [y0, y1) by the fast path into out; false if anything is not as expected.
+    bool streamRows(int y0, int y1, unsigned char* out) {
+        if (y0 != m_rowsDone)
+            return false;
         const std::size_t rb = rowBytes(m_info);
         const std::size_t bpp =
             static_cast<std::size_t>(m_info.channels * bytesPerSample(m_info.type));
+        const std::size_t rows = static_cast<std::size_t>(y1 - y0);
+        m_filtered.resize((rb + 1) * rows);
+        if (!inflateTo(m_filtered.data(), m_filtered.size()))
+            return false;
+        for (std::size_t r = 0; r < rows; ++r)
+            if (m_filtered[(rb + 1) * r] > 4)
+                return false; // an unknown filter
         const bool wide = m_info.type == PixelType::UInt16;
         if (wide)
             m_row.resize(rb);
-        for (int y = y0; y < y1; ++y) {
-            const unsigned char* f = m_raw.data() + (rb + 1) * static_cast<std::size_t>(y);
-            unsigned char* o = wide ? m_row.data() : out + rb * static_cast<std::size_t>(y - y0);
-            unfilterRow(f[0], f + 1, m_prevRow.data(), o, rb, bpp); // f[0] <= 4: inflateWhole
+        for (std::size_t r = 0; r < rows; ++r) {
+            const unsigned char* f = m_filtered.data() + (rb + 1) * r;
+            unsigned char* o = wide ? m_row.data() : out + rb * r;
+            unfilterRow(f[0], f + 1, m_prevRow.data(), o, rb, bpp);
             std::memcpy(m_prevRow.data(), o, rb);
             if (wide) { // big-endian samples to host order, as png_set_swap does
-                unsigned char* w = out + rb * static_cast<std::size_t>(y - y0);
+                unsigned char* w = out + rb * r;
                 for (std::size_t i = 0; i < rb; i += 2) {
                     w[i] = o[i + 1];
                     w[i + 1] = o[i];
                 }
             }
         }
+        if (y1 == m_info.height && !endOfStream())
+            return false;
+        m_rowsDone = y1;
         if (y1 == m_info.height)
-            UninitBytes().swap(m_raw);
+            releaseStream();
+        return true;
+    }
+
+    void releaseStream() {
+        m_inflate.reset();
+        UninitBytes().swap(m_idat);
+        UninitBytes().swap(m_filtered);
+    }
+
+    // The fast path gives up at row `rows`: libpng reads the file from its first IDAT, and the
+    // rows already given are read again and dropped (libpng says what is wrong, or reads on).
+    void handToLibpng(int rows) {
+        m_whole = false;
+        releaseStream();
+        if (rows <= 0)
+            return;
+        m_skip.resize(rowBytes(m_info));
+        m_skipped = 0;
+        if (setjmp(png_jmpbuf(m_png)))
+            fail();
+        for (; m_skipped < rows; ++m_skipped)
+            png_read_row(m_png, m_skip.data(), nullptr);
     }
 
 public:
@@ -253,11 +330,12 @@ public:
             checkImageSize(m_in.path(), m_info.width, m_info.height, m_info.channels, m_in.size(),
                            1032.0);
         const std::size_t rb = rowBytes(m_info);
-        if (m_whole && y0 == 0)
-            m_whole = inflateWhole(); // else libpng's path, from the start
+        if (m_whole && y0 == 0 && !m_inflate)
+            startStream();
         if (m_whole) {
-            unfilterRows(y0, y1, static_cast<unsigned char*>(dst));
-            return;
+            if (streamRows(y0, y1, static_cast<unsigned char*>(dst)))
+                return;
+            handToLibpng(y0);
         }
         readRowsAt(y0, y1, static_cast<png_bytep>(dst), rb);
     }
@@ -287,7 +365,7 @@ public:
     }
 
     void finish() override {
-        if (m_whole) // the data and IEND were checked by inflateWhole
+        if (m_whole) // the data and IEND were checked by endOfStream
             return;
         if (setjmp(png_jmpbuf(m_png)))
             fail();
@@ -371,8 +449,15 @@ private:
     png_infop m_pngInfo = nullptr;
     PngError m_error;
     int m_passes = 1;
-    bool m_whole = false;                 // inflated at once (inflateWhole)
-    UninitBytes m_raw;                    // the filtered rows, each with its filter byte
+    bool m_whole = false;                     // the fast path (streamRows)
+    std::unique_ptr<inflate_state> m_inflate; // ISA-L's inflater, once rows are asked for
+    UninitBytes m_idat;                       // the IDAT chunk being inflated (and its CRC)
+    std::uint64_t m_chunkAt = 8;              // the next chunk's header
+    bool m_sawData = false;
+    int m_rowsDone = 0;                   // rows given by the fast path
+    UninitBytes m_filtered;               // the rows being unfiltered, with filter bytes
+    std::vector<unsigned char> m_skip;    // a row libpng reads again and drops
+    int m_skipped = 0;                    // members, not locals: longjmp may clobber locals
     std::vector<unsigned char> m_prevRow; // the last row unfiltered (the next one's "up")
     std::vector<unsigned char> m_row;     // a 16-bit row before its bytes are swapped
     png_bytep m_next = nullptr;           // members, not locals: longjmp may clobber locals
