@@ -285,7 +285,7 @@ int runPreview(const PreviewOptions& o) {
                     ao.subimage = o.subimage;
                     // A preview is looked at, then replaced: PNGs are written with the fastest
                     // level.
-                    if (info.format == "png")
+                    if (extensionOf(j.output) == ".png")
                         ao.compression = "zip:1";
                     ao.reserveMemory = [&ctx](std::uint64_t bytes, const std::string& what) {
                         ctx.reserveMemory(bytes, what);

@@ -74,7 +74,7 @@ ImageWriteOptions renderedImageWriteOptions(const ImageInfo& in, const std::stri
 
 bool appliedLayoutIsRendered(const ImageInfo& in, const std::string& outPath, int requested) {
     const std::string f = canonicalImageFormat(outPath);
-    if (f != canonicalImageFormat(in.format) || (f != "png" && f != "pnm"))
+    if (f != "png" && f != "pnm")
         return false;
     if (in.isFloat || (in.bitDepth != 8 && in.bitDepth != 16) || in.bitsPerSample != in.bitDepth ||
         (requested != 0 && requested != in.bitDepth))

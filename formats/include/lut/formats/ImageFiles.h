@@ -43,9 +43,9 @@ RenderedLayout appliedImageLayout(const ImageInfo& input, const std::string& out
                                   int requestedBitDepth = 0);
 
 // Whether writing through `apply`'s layout (appliedImageLayout, the streamed applyToImage) gives
-// the very file content renderedImageWriteOptions asks for: an 8/16-bit input of R, G, B only,
-// written to its own format (PNG or PNM: formats without a compression choice to keep) at its own
-// depth. `lutkit preview` then streams the picture instead of holding a float frame.
+// the very file content renderedImageWriteOptions asks for: an 8/16-bit input of R, G, B only (a
+// single image), written at its own depth to PNG or PNM (formats without a compression of the
+// input's to keep). `lutkit preview` then streams the picture instead of holding a float frame.
 bool appliedLayoutIsRendered(const ImageInfo& input, const std::string& outPath,
                              int requestedBitDepth = 0);
 
