@@ -115,6 +115,27 @@ TEST(Pointwise, RunsOfPixelsGiveTheFrameBitForBit) {
     }
 }
 
+TEST(Pointwise, EveryStageThatSaysPointwiseIs) {
+    // A stage that says pointwise() alone in a pipeline, with settings that make it work: runs
+    // of pixels give the frame (a stage whose pixels depended on their position or neighbours
+    // would differ between runs of 1 pixel and the frame).
+    const auto warm = std::make_shared<const Lut3D>(makeWarmLut(9));
+    int pointwise = 0;
+    for (const auto& name : stageNames()) {
+        PipelineSettings s;
+        s.preset = Preset::None;
+        s.lut = warm;
+        s.enable = {name};
+        s.assignments = {"exposure.stops=-0.7"};
+        Pipeline p(s);
+        if (!p.find(name)->pointwise())
+            continue;
+        ++pointwise;
+        expectRunsAreTheFrame(std::move(p), name);
+    }
+    EXPECT_EQ(pointwise, 6); // sanitize, exposure, tonemap, smash-grade, lut, display
+}
+
 TEST(Pointwise, StagesThatNeedTheFrameAreNotPointwise) {
     EXPECT_FALSE(Pipeline(Preset::Smash).isPointwise()); // its bloom
     PipelineSettings s;
