@@ -255,9 +255,9 @@ int runPreview(const PreviewOptions& o) {
         if (j.input != "-") {
             const formats::ImageInfo info = formats::readImageInfo(j.input, o.inFormat, o.subimage);
             // A picture whose chain works on each pixel alone (no bloom, vignette, grain ...),
-            // written to its own format at its own depth, is streamed: read, undone, run through
-            // the chain and written a few rows at a time, never held as a float frame (a 1080p
-            // screenshot's frame is 33 MB to fill); bit-identical to the frame path below.
+            // written to PNG or PNM at its own depth, is streamed: read, undone, run through the
+            // chain and written a few rows at a time, never held as a float frame (a 1080p
+            // screenshot's frame is 33 MB to fill); the same file as the frame path below.
             const bool fileTarget =
                 j.target.kind == OutputKind::NewFile || j.target.kind == OutputKind::ExistingFile;
             if (!color.before && !color.after && fileTarget && o.format.empty() &&
