@@ -235,6 +235,13 @@ int runPreview(const PreviewOptions& o) {
         q.storedEncoded = color.before != nullptr;
         return planPreview(q, original != nullptr);
     };
+    // The chain a recipe runs, with the LUT (and its shaper) made above.
+    auto chainSettings = [&](const PreviewPlan& recipe) {
+        PipelineSettings settings = recipe.settings;
+        settings.lut = lut;
+        settings.shaper = shaper;
+        return settings;
+    };
     auto printNotes = [&](const std::string& input, const Diagnostics& notes) {
         std::lock_guard<std::mutex> lock(noteMutex);
         for (const auto& d : notes) {
@@ -263,9 +270,7 @@ int runPreview(const PreviewOptions& o) {
             if (!color.before && !color.after && fileTarget && o.format.empty() &&
                 formats::appliedLayoutIsRendered(info, j.output, o.bitDepth)) {
                 const PreviewPlan recipe = recipeFor(info);
-                PipelineSettings settings = recipe.settings;
-                settings.lut = lut;
-                settings.shaper = shaper;
+                const PipelineSettings settings = chainSettings(recipe);
                 auto pipeline = std::make_shared<const Pipeline>(settings);
                 if (pipeline->isPointwise()) {
                     auto prep = std::make_shared<const PreviewPreparation>(
@@ -339,9 +344,7 @@ int runPreview(const PreviewOptions& o) {
             preparePreviewFrame(recipe, img.image.view(), original.get(),
                                 !color.before && img.info.type == formats::PixelType::UInt8, inner);
         notes.insert(notes.end(), undo.begin(), undo.end());
-        PipelineSettings settings = recipe.settings;
-        settings.lut = lut;
-        settings.shaper = shaper;
+        const PipelineSettings settings = chainSettings(recipe);
         Pipeline pipeline(settings); // one per job: stages keep per-run buffers
         RunOptions run;
         run.nthreads = inner;

@@ -36,22 +36,13 @@ void putBe32(unsigned char* p, std::uint32_t v) {
     p[3] = static_cast<unsigned char>(v);
 }
 
-// A strip's deflate bytes. The buffer is sized for the worst case and not zero-filled: the
-// compressor writes only its first part (a 1 MiB strip's bound was 1 MiB of fresh pages cleared
-// for nothing, each strip on a new thread).
+// A strip's deflate bytes. The buffer is sized for the worst case and not zero-filled
+// (UninitBytes): the compressor writes only its first part (a 1 MiB strip's bound was 1 MiB of
+// fresh pages cleared for nothing, each strip on a new thread).
 struct Strip {
-    std::unique_ptr<unsigned char[]> deflated;
-    std::size_t size = 0;     // bytes written
-    std::size_t capacity = 0; // bytes allocated
+    UninitBytes deflated;
     std::uint32_t adler = 1;
     std::size_t rawBytes = 0;
-    void allocate(std::size_t n) {
-        std::unique_ptr<unsigned char[]> more(new unsigned char[n]); // not value-initialised
-        if (size)
-            std::memcpy(more.get(), deflated.get(), size);
-        deflated = std::move(more);
-        capacity = n;
-    }
 };
 
 // One strip as raw deflate data, primed with `dict`, ended with a sync flush (or the final block),
@@ -70,14 +61,14 @@ Strip deflateStripZlib(const std::vector<unsigned char>& data,
         throw Error("cannot start the PNG compressor");
     if (!dict.empty())
         deflateSetDictionary(&z, dict.data(), static_cast<uInt>(dict.size()));
-    s.allocate(deflateBound(&z, static_cast<uLong>(data.size())) + 64);
+    s.deflated.resize(deflateBound(&z, static_cast<uLong>(data.size())) + 64);
     z.next_in = const_cast<unsigned char*>(data.data());
     z.avail_in = static_cast<uInt>(data.size());
-    z.next_out = s.deflated.get();
-    z.avail_out = static_cast<uInt>(s.capacity);
+    z.next_out = s.deflated.data();
+    z.avail_out = static_cast<uInt>(s.deflated.size());
     const int rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
     const bool ok = last ? rc == Z_STREAM_END : rc == Z_OK;
-    s.size = s.capacity - z.avail_out;
+    s.deflated.resize(s.deflated.size() - z.avail_out);
     deflateEnd(&z);
     if (!ok || z.avail_in != 0)
         throw Error("the PNG compressor failed");
@@ -97,13 +88,12 @@ Strip deflateStripIsal(const std::vector<unsigned char>& data,
     const int igzipLevel = level <= 1 ? 1 : 2;
     // Neither is zero-filled: isal_deflate_init sets up the stream's state and the level buffer's
     // hash tables (as ISA-L's own tools allocate them: malloc).
-    const std::size_t levelBytes = igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT : ISAL_DEF_LVL2_DEFAULT;
-    std::unique_ptr<std::uint8_t[]> levelBuf(new std::uint8_t[levelBytes]);
+    UninitBytes levelBuf(igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT : ISAL_DEF_LVL2_DEFAULT);
     std::unique_ptr<isal_zstream> z(new isal_zstream); // ~ 100 KiB: not on a thread's stack
     isal_deflate_init(z.get());
     z->level = static_cast<std::uint32_t>(igzipLevel);
-    z->level_buf = levelBuf.get();
-    z->level_buf_size = static_cast<std::uint32_t>(levelBytes);
+    z->level_buf = levelBuf.data();
+    z->level_buf_size = static_cast<std::uint32_t>(levelBuf.size());
     z->gzip_flag = IGZIP_DEFLATE; // raw deflate: the zlib header and Adler-32 are written here
     if (!dict.empty() && isal_deflate_set_dict(z.get(), const_cast<std::uint8_t*>(dict.data()),
                                                static_cast<std::uint32_t>(dict.size())) != COMP_OK)
@@ -113,21 +103,23 @@ Strip deflateStripIsal(const std::vector<unsigned char>& data,
     z->next_in = const_cast<std::uint8_t*>(data.data());
     z->avail_in = static_cast<std::uint32_t>(data.size());
     // Stored blocks bound the output: 5 bytes per 64 KiB block over the input, plus the flush.
-    s.allocate(data.size() + data.size() / 8192 + 1024);
+    s.deflated.resize(data.size() + data.size() / 8192 + 1024);
+    std::size_t done = 0;
     for (;;) {
-        z->next_out = s.deflated.get() + s.size;
-        z->avail_out = static_cast<std::uint32_t>(s.capacity - s.size);
+        z->next_out = s.deflated.data() + done;
+        z->avail_out = static_cast<std::uint32_t>(s.deflated.size() - done);
         if (isal_deflate(z.get()) != COMP_OK)
             throw Error("the PNG compressor failed");
-        s.size = s.capacity - z->avail_out;
+        done = s.deflated.size() - z->avail_out;
         const bool finished =
             last ? z->internal_state.state == ZSTATE_END : z->avail_in == 0 && z->avail_out > 0;
         if (finished)
             break;
         if (z->avail_out > 0) // stopped with room left and work undone: never expected
             throw Error("the PNG compressor failed");
-        s.allocate(s.capacity * 2); // rare: more room, and go on
+        s.deflated.resize(s.deflated.size() * 2); // rare: more room, and go on
     }
+    s.deflated.resize(done);
     if (z->avail_in != 0)
         throw Error("the PNG compressor failed");
     return s;
@@ -420,7 +412,7 @@ private:
         static const unsigned char kZlibHeader[2] = {0x78, 0x9c}; // deflate, 32K window
         m_adler = static_cast<std::uint32_t>(
             adler32_combine(m_adler, s.adler, static_cast<z_off_t>(s.rawBytes)));
-        chunk("IDAT", s.deflated.get(), s.size, m_headerDone ? 0 : 2, kZlibHeader);
+        chunk("IDAT", s.deflated.data(), s.deflated.size(), m_headerDone ? 0 : 2, kZlibHeader);
         m_headerDone = true;
     }
 

@@ -144,8 +144,8 @@ void PreviewPreparation::apply(float* rgba, std::size_t count) const {
             int k[3];
             bool codes = p[3] >= 1.0f; // clamp01(alpha) >= 1, as the ungrader tests it
             for (int c = 0; c < 3; ++c) {
-                k[c] = std::clamp(static_cast<int>(p[c] * 255.0f + 0.5f), 0, 255);
-                codes = codes && m_codes[k[c]] == p[c];
+                k[c] = code(p[c]);
+                codes = codes && k[c] >= 0;
             }
             if (codes) {
                 for (int c = 0; c < 3; ++c)
@@ -164,9 +164,8 @@ void PreviewPreparation::apply(float* rgba, std::size_t count) const {
         if (m_table) {
             for (std::size_t i = 0; i < count; ++i, p += 4)
                 for (int c = 0; c < 3; ++c) {
-                    const float v = p[c];
-                    const int k = static_cast<int>(v * 255.0f + 0.5f);
-                    p[c] = k >= 0 && k < 256 && m_codes[k] == v ? m_linear[k] : srgbDecode(v);
+                    const int k = code(p[c]);
+                    p[c] = k >= 0 ? m_linear[k] : srgbDecode(p[c]);
                 }
         } else {
             for (std::size_t i = 0; i < count; ++i, p += 4)

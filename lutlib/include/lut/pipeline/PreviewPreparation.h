@@ -35,6 +35,12 @@ public:
     Diagnostics notes() const;
 
 private:
+    // The 8-bit code k a value is exactly (k / 255 as a file's code reads), else -1.
+    int code(float v) const {
+        const int k = static_cast<int>(v * 255.0f + 0.5f);
+        return k >= 0 && k < 256 && m_codes[k] == v ? k : -1;
+    }
+
     bool m_decode = false;
     bool m_table = false;
     float m_codes[256] = {}; // k / 255 as a file's 8-bit code k reads
