@@ -31,10 +31,7 @@ inline double q8(double v) { // 8-bit storage: round to nearest, clamp
 // A known global grade on display values: channel mix, then per-channel curves (a lift and gamma
 // on red, an S-curve on green, a gain on blue), then saturation 1.25 about Rec.709 luma.
 inline void knownGrade(const double in[3], double out[3]) {
-    const double k = getenv("MIXK") ? atof(getenv("MIXK")) : 1.0;
-    const double m[3][3] = {{1 - 0.14 * k, 0.10 * k, 0.04 * k},
-                            {0.06 * k, 1 - 0.16 * k, 0.10 * k},
-                            {0.02 * k, 0.14 * k, 1 - 0.16 * k}};
+    const double m[3][3] = {{0.86, 0.10, 0.04}, {0.06, 0.84, 0.10}, {0.02, 0.14, 0.84}};
     double mixed[3];
     for (int i = 0; i < 3; ++i)
         mixed[i] = m[i][0] * in[0] + m[i][1] * in[1] + m[i][2] * in[2];
@@ -44,7 +41,7 @@ inline void knownGrade(const double in[3], double out[3]) {
     c[2] = 0.92 * mixed[2] + 0.02;
     const double luma = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
     for (int i = 0; i < 3; ++i)
-        out[i] = luma + (getenv("SAT") ? atof(getenv("SAT")) : 1.25) * (c[i] - luma);
+        out[i] = luma + 1.25 * (c[i] - luma);
 }
 
 // A deterministic photo-like landscape, display-encoded (8-bit values): a sky gradient with
