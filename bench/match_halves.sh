@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# lutkit match on real pictures (issue 23's acceptance cases), with outside tools for everything
+# but the match: for each picture given, in every method,
+#   same scene:  SOURCE = the picture, REFERENCE = the picture graded and flipped upside down;
+#   halves:      SOURCE = one half (left, then right), REFERENCE = the other half graded;
+# and the mean distance, in 8-bit steps, of `lutkit match`'s LUT applied to SOURCE from SOURCE
+# truly graded. The grade is the float64 formula of tests/match/MatchTestUtil.h (channel mix,
+# per-channel curves, saturation 1.25), written here by Python as a 65^3 .cube and applied by
+# ffmpeg's lut3d filter (tetrahedral); the halves are cut and flipped by oiiotool, the distance
+# measured by idiff. Prints a Markdown table.
+#
+#   bench/match_halves.sh [--build DIR] PICTURE...     (any picture oiiotool reads; 8-bit RGB used)
+#
+# Needs oiiotool and idiff (openimageio-tools), ffmpeg and python3 (scripts/install-deps.sh).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+BUILD="$ROOT/build"
+if [ "${1:-}" = "--build" ]; then BUILD="$2"; shift 2; fi
+LUTKIT="$BUILD/bin/lutkit"
+[ -x "$LUTKIT" ] || { echo "no $LUTKIT: build lutkit first" >&2; exit 1; }
+[ $# -gt 0 ] || { echo "usage: bench/match_halves.sh [--build DIR] PICTURE..." >&2; exit 2; }
+for t in oiiotool idiff ffmpeg python3; do
+  command -v "$t" >/dev/null || { echo "$t missing (scripts/install-deps.sh)" >&2; exit 1; }
+done
+
+W="$(mktemp -d /tmp/lutkit-match.XXXXXX)"
+trap 'rm -rf "$W"' EXIT
+
+# The grade as a 65^3 .cube (red fastest), from the formula.
+python3 - "$W/grade.cube" <<'EOF'
+import math, sys
+def grade(r, g, b):
+    m = ((0.86, 0.10, 0.04), (0.06, 0.84, 0.10), (0.02, 0.14, 0.84))
+    x = [m[i][0] * r + m[i][1] * g + m[i][2] * b for i in range(3)]
+    c = [0.04 + 0.96 * max(x[0], 0.0) ** 0.85,
+         0.5 + 0.5 * math.tanh(2.4 * (x[1] - 0.5)) / math.tanh(1.2),
+         0.92 * x[2] + 0.02]
+    luma = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+    return [luma + 1.25 * (v - luma) for v in c]
+n = 65
+with open(sys.argv[1], "w") as f:
+    f.write("LUT_3D_SIZE %d\n" % n)
+    for b in range(n):
+        for g in range(n):
+            for r in range(n):
+                f.write("%.7f %.7f %.7f\n" % tuple(grade(r / (n - 1), g / (n - 1), b / (n - 1))))
+EOF
+
+graded() { # IN OUT: the grade by ffmpeg, 8-bit RGB PNG
+  ffmpeg -v error -y -i "$1" -vf "lut3d=file=$W/grade.cube:interp=tetrahedral" -pix_fmt rgb24 \
+    -frames:v 1 -update 1 "$2"
+}
+steps() { # A B: mean absolute difference over every channel value, in 8-bit steps
+  idiff -a "$1" "$2" 2>/dev/null | awk '/Mean error/ {printf "%.2f", $4 * 255}'
+}
+METHODS=(auto hm mkl hm-mkl-hm regularised)
+
+printf '| picture | case | none |'
+printf ' %s |' "${METHODS[@]}"
+printf '\n|---|---|---|'
+printf -- '---|%.0s' "${METHODS[@]}"
+printf '\n'
+for pic in "$@"; do
+  name="$(basename "$pic")"
+  oiiotool "$pic" --ch R,G,B -d uint8 -o "$W/full.png"
+  read -r w h < <(oiiotool --info "$W/full.png" | sed -E 's/.*: *([0-9]+) x +([0-9]+).*/\1 \2/')
+  half=$((w / 2))
+  oiiotool "$W/full.png" --cut "${half}x${h}+0+0" -o "$W/left.png"
+  oiiotool "$W/full.png" --cut "$((w - half))x${h}+${half}+0" -o "$W/right.png"
+  for f in full left right; do graded "$W/$f.png" "$W/$f-graded.png"; done
+  oiiotool "$W/full-graded.png" --flip -o "$W/full-reference.png"
+  for c in "same scene:full:full-reference" "left half:left:right-graded" "right half:right:left-graded"; do
+    IFS=: read -r label src ref <<<"$c"
+    printf '| %s | %s | %s |' "$name" "$label" "$(steps "$W/$src.png" "$W/$src-graded.png")"
+    for m in "${METHODS[@]}"; do
+      "$LUTKIT" match -q -y --method "$m" "$W/$src.png" "$W/$ref.png" "$W/look.cube" >/dev/null 2>>"$W/warnings.log"
+      "$LUTKIT" apply -q -y --lut "$W/look.cube" "$W/$src.png" -o "$W/got.png" >/dev/null 2>>"$W/warnings.log"
+      printf ' %s |' "$(steps "$W/got.png" "$W/$src-graded.png")"
+    done
+    printf '\n'
+  done
+done
