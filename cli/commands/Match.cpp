@@ -74,7 +74,9 @@ void printJson(const MatchCommandOptions& o, const MatchReport& r, const Diagnos
     for (std::size_t i = 0; i < r.candidates.size(); ++i)
         s << (i ? ", " : "") << "{\"method\": " << json::quote(toString(r.candidates[i].method))
           << ", \"after\": " << distanceJson(r.candidates[i].after)
-          << ", \"seconds\": " << json::number(r.candidates[i].seconds) << "}";
+          << ", \"seconds\": " << json::number(r.candidates[i].seconds)
+          << ", \"eligible\": " << (r.candidates[i].shapeProblem.empty() ? "true" : "false")
+          << ", \"shape_problem\": " << json::quote(r.candidates[i].shapeProblem) << "}";
     s << "],\n \"before\": " << distanceJson(r.before) << ", \"after\": " << distanceJson(r.after)
       << ",\n \"interpolation_steps\": " << gameErrorJson(r.interpolation)
       << ", \"interpolation_colours\": " << r.interpolationColours

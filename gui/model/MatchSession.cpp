@@ -52,8 +52,11 @@ QString MatchSession::reportText() const {
             .arg(d.quantileDeltaE, 0, 'g', 3);
     };
     for (const auto& c : r.candidates)
-        s += QStringLiteral("         %1: %2\n")
-                 .arg(QString::fromLatin1(toString(c.method)), distance(c.after));
+        s += QStringLiteral("         %1: %2%3\n")
+                 .arg(QString::fromLatin1(toString(c.method)), distance(c.after),
+                      c.shapeProblem.empty()
+                          ? QString()
+                          : "; not eligible: its LUT " + QString::fromStdString(c.shapeProblem));
     s += QStringLiteral("before   %1\n").arg(distance(r.before));
     for (const auto& c : r.candidates)
         if (c.method == r.method)

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <numeric>
 #include <random>
@@ -178,4 +179,77 @@ TEST(CliMatch, ReportPictureAndTheGamesLut) {
     const lut::LutFile f = lut::formats::readLut(game);
     ASSERT_TRUE(f.cube.has_value());
     EXPECT_EQ(f.cube->size(), 16);
+}
+
+TEST(CliMatch, EachCandidateSaysWhyItIsNotEligibleAndTheFigureHolds) {
+    // A reference of two flat colours: auto's closer candidates make LUTs that go down along grey
+    // (or fold). For every candidate, its own LUT (written with --method) is read by OpenColorIO
+    // and its largest drop along grey measured at 4097 points: a candidate said to go down by X
+    // steps does (within a tenth), and one said to be eligible goes down by no more than the
+    // quarter step auto allows (between the points the report sampled too).
+    const std::string dir = tempDir() + "-eligible";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const int w = 320, h = 200;
+    lut::Image src(w, h, 1.0f), ref(w, h, 1.0f);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> noise(0.0, 0.05);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double u = x / (w - 1.0), v = y / (h - 1.0);
+            const double c[3] = {0.1 + 0.8 * u - 0.1 * v, 0.2 + 0.2 * u + 0.6 * v,
+                                 0.3 - 0.2 * u + 0.3 * v};
+            const bool first = ((x / 16) + (y / 16)) % 2 == 0;
+            const double r[3] = {first ? 0.9 : 0.1, first ? 0.3 : 0.2, first ? 0.1 : 0.7};
+            for (int k = 0; k < 3; ++k) {
+                src.pixel(x, y)[k] = static_cast<float>(q8(c[k] + noise(rng)));
+                ref.pixel(x, y)[k] = static_cast<float>(q8(r[k]));
+            }
+        }
+    const std::string s = dir + "/source.png", rf = dir + "/two-colours.png";
+    lut::formats::writeImage(s, src, lut::formats::ImageWriteOptions(8, false, false));
+    lut::formats::writeImage(rf, ref, lut::formats::ImageWriteOptions(8, false, false));
+    const auto r = runCli("match " + shellQuoted(s) + " " + shellQuoted(rf) + " " +
+                          shellQuoted(dir + "/auto.cube") + " -y --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    int notEligible = 0, checked = 0;
+    for (const char* m : {"hm", "mkl", "hm-mkl-hm", "regularised"}) {
+        const std::string key = std::string("{\"method\": \"") + m + "\"";
+        const auto at = r.out.find(key);
+        ASSERT_NE(at, std::string::npos) << m << "\n" << r.out;
+        const std::string entry =
+            r.out.substr(at, r.out.find('}', r.out.find("shape_problem", at)) - at);
+        const bool eligible = entry.find("\"eligible\": true") != std::string::npos;
+        const auto grey = entry.find("goes down along grey by ");
+        double said = 0.0;
+        if (grey != std::string::npos)
+            said = std::stod(entry.substr(grey + std::strlen("goes down along grey by ")));
+        notEligible += eligible ? 0 : 1;
+
+        const std::string lutPath = dir + "/" + m + ".cube";
+        ASSERT_EQ(runCli("match " + shellQuoted(s) + " " + shellQuoted(rf) + " " +
+                         shellQuoted(lutPath) + " -y -q --method " + m)
+                      .exitCode,
+                  0);
+        const auto p = ocioFileProcessor(lutPath);
+        double drop = 0.0;
+        glm::dvec3 peak(-INFINITY);
+        for (int i = 0; i <= 4096; ++i) {
+            const float t = static_cast<float>(i / 4096.0);
+            const glm::vec3 o = ocioEval(p, glm::vec3(t));
+            for (int c = 0; c < 3; ++c) {
+                peak[c] = std::max(peak[c], static_cast<double>(o[c]));
+                drop = std::max(drop, (peak[c] - o[c]) * 255.0);
+            }
+        }
+        if (grey != std::string::npos) {
+            EXPECT_FALSE(eligible) << m;
+            EXPECT_NEAR(drop, said, std::max(0.1, 0.01 * said)) << m << ": " << entry;
+            ++checked;
+        } else {
+            EXPECT_LE(drop, 0.25 + 0.05) << m << ": " << entry;
+        }
+    }
+    EXPECT_GE(notEligible, 1) << r.out;
+    EXPECT_GE(checked, 1) << r.out;
 }

@@ -116,17 +116,30 @@ std::array<ChannelCurve, 3> matchChannels(const detail::ChannelStats& src,
     return curves;
 }
 
-// Whether the transfer tabulates (the size asked for, full strength) into a LUT that does not
-// fold colours over and never goes down along a channel's own axis or along grey, as the report
-// will measure it.
-bool cleanShape(const MatchTransfer& t, const MatchOptions& o) {
+// What keeps the transfer, tabulated (the size asked for, full strength), from being a LUT that
+// never folds colours over and never goes down along a channel's own axis or along grey, as the
+// report will measure it: "" when nothing does.
+std::string shapeProblem(const MatchTransfer& t, const MatchOptions& o) {
     MatchOptions q;
     q.size = o.size;
     q.nthreads = o.nthreads;
     const LutQuality shape = measureLutQuality(bakeMatch(t, q), t.linear, t.domainMin, t.domainMax,
                                                Interpolation::Tetrahedral);
+    std::string problem;
+    auto add = [&problem](const std::string& p) { problem += (problem.empty() ? "" : ", ") + p; };
+    if (shape.foldedCells > 0)
+        add(fmt("folds colours over in %zu of %zu cells", shape.foldedCells, shape.cells));
+    if (shape.decreasingSteps > 0)
+        add(fmt("goes down along a channel's own axis at %zu of %zu steps", shape.decreasingSteps,
+                shape.steps));
     // Along grey, a drop of a quarter of an 8-bit step is invisible; more is a reversal.
-    return shape.foldedCells == 0 && shape.decreasingSteps == 0 && shape.largestGreyDrop <= 0.25;
+    if (shape.largestGreyDrop > 0.25)
+        add(fmt("goes down along grey by %.3g 8-bit steps", shape.largestGreyDrop));
+    return problem;
+}
+
+bool cleanShape(const MatchTransfer& t, const MatchOptions& o) {
+    return shapeProblem(t, o).empty();
 }
 
 struct Fitted {
@@ -344,7 +357,8 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
         std::vector<bool> clean(rep.candidates.size());
         bool anyClean = false;
         for (std::size_t i = 0; i < rep.candidates.size(); ++i) {
-            clean[i] = cleanShape(fitted[i].transfer, o);
+            rep.candidates[i].shapeProblem = shapeProblem(fitted[i].transfer, o);
+            clean[i] = rep.candidates[i].shapeProblem.empty();
             anyClean = anyClean || clean[i];
         }
         double best = INFINITY;
