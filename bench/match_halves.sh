@@ -5,7 +5,10 @@
 #   same scene:  SOURCE = the picture, REFERENCE = the picture graded and flipped upside down;
 #   halves:      SOURCE = one half (left, then right), REFERENCE = the other half graded;
 # and the mean distance, in 8-bit steps, of `lutkit match`'s LUT applied to SOURCE from SOURCE
-# truly graded. The grade is the float64 formula of tests/match/MatchTestUtil.h (channel mix,
+# truly graded. Two columns frame it: "no LUT" (SOURCE itself against the truth: how far the grade
+# moves the picture) and "content alone" (the auto match with no grade on either side, against
+# SOURCE itself: how far the two pictures' different content moves a match that should change
+# nothing; a match of distributions cannot tell that from a look). The grade is the float64 formula of tests/match/MatchTestUtil.h (channel mix,
 # per-channel curves, saturation 1.25), written here by Python as a 65^3 .cube and applied by
 # ffmpeg's lut3d filter (tetrahedral); the halves are cut and flipped by oiiotool, the distance
 # measured by idiff. Prints a Markdown table.
@@ -53,13 +56,14 @@ graded() { # IN OUT: the grade by ffmpeg, 8-bit RGB PNG
     -frames:v 1 -update 1 "$2"
 }
 steps() { # A B: mean absolute difference over every channel value, in 8-bit steps
-  idiff -a "$1" "$2" 2>/dev/null | awk '/Mean error/ {printf "%.2f", $4 * 255}'
+  # (idiff prints no error figures for identical pictures)
+  idiff -a "$1" "$2" 2>/dev/null | awk '/Mean error/ {m = $4} END {printf "%.2f", m * 255}'
 }
 METHODS=(auto hm mkl hm-mkl-hm regularised)
 
-printf '| picture | case | none |'
+printf '| picture | case | no LUT | content alone |'
 printf ' %s |' "${METHODS[@]}"
-printf '\n|---|---|---|'
+printf '\n|---|---|---|---|'
 printf -- '---|%.0s' "${METHODS[@]}"
 printf '\n'
 for pic in "$@"; do
@@ -71,9 +75,15 @@ for pic in "$@"; do
   oiiotool "$W/full.png" --cut "$((w - half))x${h}+${half}+0" -o "$W/right.png"
   for f in full left right; do graded "$W/$f.png" "$W/$f-graded.png"; done
   oiiotool "$W/full-graded.png" --flip -o "$W/full-reference.png"
-  for c in "same scene:full:full-reference" "left half:left:right-graded" "right half:right:left-graded"; do
-    IFS=: read -r label src ref <<<"$c"
-    printf '| %s | %s | %s |' "$name" "$label" "$(steps "$W/$src.png" "$W/$src-graded.png")"
+  oiiotool "$W/full.png" --flip -o "$W/full-flipped.png"
+  for c in "same scene:full:full-reference:full-flipped" "left half:left:right-graded:right" \
+    "right half:right:left-graded:left"; do
+    IFS=: read -r label src ref plain <<<"$c"
+    # content alone: the same match with no grade on either side, against SOURCE itself
+    "$LUTKIT" match -q -y "$W/$src.png" "$W/$plain.png" "$W/plain.cube" >/dev/null 2>>"$W/warnings.log"
+    "$LUTKIT" apply -q -y --lut "$W/plain.cube" "$W/$src.png" -o "$W/plain.png" >/dev/null 2>>"$W/warnings.log"
+    printf '| %s | %s | %s | %s |' "$name" "$label" "$(steps "$W/$src.png" "$W/$src-graded.png")" \
+      "$(steps "$W/plain.png" "$W/$src.png")"
     for m in "${METHODS[@]}"; do
       "$LUTKIT" match -q -y --method "$m" "$W/$src.png" "$W/$ref.png" "$W/look.cube" >/dev/null 2>>"$W/warnings.log"
       "$LUTKIT" apply -q -y --lut "$W/look.cube" "$W/$src.png" -o "$W/got.png" >/dev/null 2>>"$W/warnings.log"
