@@ -133,6 +133,8 @@ TEST(MatchStiff, AlmostGreySource) {
         expectSmooth(r);
         if (m == MatchMethod::Mkl) {
             EXPECT_THAT(allText(r.diagnostics), HasSubstr("almost flat in some colour direction"));
+            // the limits said are the options' (both ends), not whatever the stack held
+            EXPECT_THAT(allText(r.diagnostics), HasSubstr("limited to [1/4, 4]"));
         }
     }
 }

@@ -27,7 +27,8 @@ double secondsSince(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-std::string fmt(const char* f, ...) {
+// printf-checked: the compiler matches the arguments to the format.
+[[gnu::format(printf, 1, 2)]] std::string fmt(const char* f, ...) {
     char buf[768];
     va_list args;
     va_start(args, f);
@@ -235,7 +236,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
             warn(d, n.sourceSpread * 255.0 < 2.0 ? source.name : "",
                  fmt("the MKL map asks for colour gains from %.3g to %.3g; limited to [1/%.3g, "
                      "%.3g]",
-                     n.smallestGain, n.largestGain, o.maxGain) +
+                     n.smallestGain, n.largestGain, o.maxGain, o.maxGain) +
                      (n.sourceSpread * 255.0 < 2.0
                           ? fmt(" (the source is almost flat in some colour direction: spread "
                                 "%.2g 8-bit steps; its noise would become colour)",

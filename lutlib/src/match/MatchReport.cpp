@@ -10,7 +10,8 @@ namespace lut {
 
 namespace {
 
-std::string fmt(const char* f, ...) {
+// printf-checked: the compiler matches the arguments to the format.
+[[gnu::format(printf, 1, 2)]] std::string fmt(const char* f, ...) {
     char buf[768];
     va_list args;
     va_start(args, f);
