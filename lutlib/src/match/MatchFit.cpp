@@ -8,12 +8,12 @@
 #include "match/MatchColours.h"
 #include "match/MatchContext.h"
 #include "match/MatchSamples.h"
+#include "match/MatchText.h"
 #include "match/TransportFit.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 
 namespace lut {
@@ -27,15 +27,7 @@ double secondsSince(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// printf-checked: the compiler matches the arguments to the format.
-[[gnu::format(printf, 1, 2)]] std::string fmt(const char* f, ...) {
-    char buf[768];
-    va_list args;
-    va_start(args, f);
-    std::vsnprintf(buf, sizeof buf, f, args);
-    va_end(args);
-    return buf;
-}
+using detail::fmt;
 
 void warn(Diagnostics& d, const std::string& path, const std::string& message) {
     Diagnostic w;

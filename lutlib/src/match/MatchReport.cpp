@@ -1,24 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The text of a match report: see lut/match/MatchReport.h.
 #include "lut/match/MatchReport.h"
+#include "match/MatchText.h"
 
 #include <algorithm>
-#include <cstdarg>
 #include <cstdio>
 
 namespace lut {
 
 namespace {
 
-// printf-checked: the compiler matches the arguments to the format.
-[[gnu::format(printf, 1, 2)]] std::string fmt(const char* f, ...) {
-    char buf[768];
-    va_list args;
-    va_start(args, f);
-    std::vsnprintf(buf, sizeof buf, f, args);
-    va_end(args);
-    return buf;
-}
+using detail::fmt;
 
 std::string distance(const DistributionDistance& d) {
     return fmt("sliced Wasserstein %.3g (CIELAB), quantile ΔE2000 %.3g", d.slicedWasserstein,
