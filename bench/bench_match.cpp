@@ -2,8 +2,9 @@
 // lutkit match on a 1080p source and a 1080p reference, to a 33^3 LUT (issue 23: under 1 s on
 // both cores), against a plain HM-MKL-HM written here the way a numpy script does it (sort,
 // unique values and counts, linear interpolation of the distribution functions, the MKL matrix
-// from eigen-decompositions; float64, one thread): python3 here has no numpy, so this stands in
-// for it and is the ratio's reference. The pictures: the sample scene scaled to 1920x1080 with a
+// from eigen-decompositions; float64, one thread), the library's figure beside the C++ written
+// the numpy way; bench/compare_numpy.sh runs numpy itself (bench/match_numpy.py) against the whole
+// command. The pictures: the sample scene scaled to 1920x1080 with a
 // fine deterministic grain (a screenshot has more than the sample's 1730 colours), and the same
 // picture graded by a formula (channel mix, curves, saturation), flipped and shuffled.
 // Run: build/bin/lutkit_bench --benchmark_filter=Match

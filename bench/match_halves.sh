@@ -9,7 +9,7 @@
 # moves the picture) and "content alone" (the auto match with no grade on either side, against
 # SOURCE itself: how far the two pictures' different content moves a match that should change
 # nothing; a match of distributions cannot tell that from a look). The grade is the float64 formula of tests/match/MatchTestUtil.h (channel mix,
-# per-channel curves, saturation 1.25), written here by Python as a 65^3 .cube and applied by
+# per-channel curves, saturation 1.25), written by bench/grade_cube.py as a 65^3 .cube and applied by
 # ffmpeg's lut3d filter (tetrahedral); the halves are cut and flipped by oiiotool, the distance
 # measured by idiff. Prints a Markdown table.
 #
@@ -31,25 +31,8 @@ done
 W="$(mktemp -d /tmp/lutkit-match.XXXXXX)"
 trap 'rm -rf "$W"' EXIT
 
-# The grade as a 65^3 .cube (red fastest), from the formula.
-python3 - "$W/grade.cube" <<'EOF'
-import math, sys
-def grade(r, g, b):
-    m = ((0.86, 0.10, 0.04), (0.06, 0.84, 0.10), (0.02, 0.14, 0.84))
-    x = [m[i][0] * r + m[i][1] * g + m[i][2] * b for i in range(3)]
-    c = [0.04 + 0.96 * max(x[0], 0.0) ** 0.85,
-         0.5 + 0.5 * math.tanh(2.4 * (x[1] - 0.5)) / math.tanh(1.2),
-         0.92 * x[2] + 0.02]
-    luma = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
-    return [luma + 1.25 * (v - luma) for v in c]
-n = 65
-with open(sys.argv[1], "w") as f:
-    f.write("LUT_3D_SIZE %d\n" % n)
-    for b in range(n):
-        for g in range(n):
-            for r in range(n):
-                f.write("%.7f %.7f %.7f\n" % tuple(grade(r / (n - 1), g / (n - 1), b / (n - 1))))
-EOF
+# The grade as a 65^3 .cube, from the formula.
+python3 "$ROOT/bench/grade_cube.py" "$W/grade.cube"
 
 graded() { # IN OUT: the grade by ffmpeg, 8-bit RGB PNG
   ffmpeg -v error -y -i "$1" -vf "lut3d=file=$W/grade.cube:interp=tetrahedral" -pix_fmt rgb24 \
@@ -57,7 +40,7 @@ graded() { # IN OUT: the grade by ffmpeg, 8-bit RGB PNG
 }
 steps() { # A B: mean absolute difference over every channel value, in 8-bit steps
   # (idiff prints no error figures for identical pictures)
-  idiff -a "$1" "$2" 2>/dev/null | awk '/Mean error/ {m = $4} END {printf "%.2f", m * 255}'
+  { idiff -a "$1" "$2" 2>/dev/null || true; } | awk '/Mean error/ {m = $4} END {printf "%.2f", m * 255}'
 }
 METHODS=(auto hm mkl hm-mkl-hm regularised)
 
