@@ -75,7 +75,7 @@ void printJson(const MatchCommandOptions& o, const MatchReport& r, const Diagnos
         s << (i ? ", " : "") << "{\"method\": " << json::quote(toString(r.candidates[i].method))
           << ", \"after\": " << distanceJson(r.candidates[i].after)
           << ", \"seconds\": " << json::number(r.candidates[i].seconds)
-          << ", \"eligible\": " << (r.candidates[i].shapeProblem.empty() ? "true" : "false")
+          << ", \"eligible\": " << (r.candidates[i].eligible ? "true" : "false")
           << ", \"shape_problem\": " << json::quote(r.candidates[i].shapeProblem) << "}";
     s << "],\n \"before\": " << distanceJson(r.before) << ", \"after\": " << distanceJson(r.after)
       << ",\n \"interpolation_steps\": " << gameErrorJson(r.interpolation)

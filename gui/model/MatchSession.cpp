@@ -56,7 +56,8 @@ QString MatchSession::reportText() const {
                  .arg(QString::fromLatin1(toString(c.method)), distance(c.after),
                       c.shapeProblem.empty()
                           ? QString()
-                          : "; not eligible: its LUT " + QString::fromStdString(c.shapeProblem));
+                          : (c.eligible ? "; its LUT " : "; not eligible: its LUT ") +
+                                QString::fromStdString(c.shapeProblem));
     s += QStringLiteral("before   %1\n").arg(distance(r.before));
     for (const auto& c : r.candidates)
         if (c.method == r.method)

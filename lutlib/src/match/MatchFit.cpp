@@ -354,6 +354,8 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
             clean[i] = rep.candidates[i].shapeProblem.empty();
             anyClean = anyClean || clean[i];
         }
+        for (std::size_t i = 0; i < rep.candidates.size(); ++i)
+            rep.candidates[i].eligible = clean[i] || !anyClean;
         double best = INFINITY;
         for (std::size_t i = 0; i < rep.candidates.size(); ++i)
             if (clean[i] || !anyClean)
@@ -364,9 +366,14 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
                 chosen = i;
                 break;
             }
-        rep.choice = fmt("auto: the closest to the reference (sliced Wasserstein %.3g) of the "
-                         "methods whose LUT does not fold, or a simpler one within 5%% of it",
-                         best);
+        rep.choice =
+            anyClean ? fmt("auto: the closest to the reference (sliced Wasserstein %.3g) of the "
+                           "methods whose LUT does not fold, or a simpler one within 5%% of it",
+                           best)
+                     : fmt("auto: no method's LUT is free of fold-overs and reversals; the "
+                           "closest to the reference (sliced Wasserstein %.3g), or a simpler "
+                           "one within 5%% of it",
+                           best);
     } else {
         for (std::size_t i = 0; i < fitted.size(); ++i)
             if (fitted[i].transfer.method == o.method)

@@ -18,9 +18,11 @@ struct MatchCandidate {
     MatchMethod method = MatchMethod::HmMklHm;
     DistributionDistance after; // the method's transfer applied to SOURCE vs REFERENCE
     double seconds = 0.0;       // its fit
-    // auto: why its LUT was not eligible ("folds colours over in 12 of 32768 cells", "goes down
-    // along grey by 0.8 8-bit steps"...), "" when it never folds nor goes down
+    // auto: what keeps its LUT from being free of fold-overs and reversals ("folds colours over
+    // in 12 of 32768 cells", "goes down along grey by 0.8 8-bit steps"...), "" when nothing does;
+    // such a method is not eligible unless no method is free of them.
     std::string shapeProblem;
+    bool eligible = true;
 };
 
 struct MatchReport {
