@@ -54,10 +54,7 @@ QString MatchSession::reportText() const {
     for (const auto& c : r.candidates)
         s += QStringLiteral("         %1: %2%3\n")
                  .arg(QString::fromLatin1(toString(c.method)), distance(c.after),
-                      c.shapeProblem.empty()
-                          ? QString()
-                          : (c.eligible ? "; its LUT " : "; not eligible: its LUT ") +
-                                QString::fromStdString(c.shapeProblem));
+                      QString::fromStdString(c.shapeNote()));
     s += QStringLiteral("before   %1\n").arg(distance(r.before));
     for (const auto& c : r.candidates)
         if (c.method == r.method)

@@ -347,21 +347,19 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
     constexpr double kSimpler = 1.05;
     std::size_t chosen = 0;
     if (all) {
-        std::vector<bool> clean(rep.candidates.size());
         bool anyClean = false;
         for (std::size_t i = 0; i < rep.candidates.size(); ++i) {
             rep.candidates[i].shapeProblem = shapeProblem(fitted[i].transfer, o);
-            clean[i] = rep.candidates[i].shapeProblem.empty();
-            anyClean = anyClean || clean[i];
+            anyClean = anyClean || rep.candidates[i].shapeProblem.empty();
         }
-        for (std::size_t i = 0; i < rep.candidates.size(); ++i)
-            rep.candidates[i].eligible = clean[i] || !anyClean;
+        for (auto& c : rep.candidates)
+            c.eligible = c.shapeProblem.empty() || !anyClean;
         double best = INFINITY;
+        for (const auto& c : rep.candidates)
+            if (c.eligible)
+                best = std::min(best, c.after.slicedWasserstein);
         for (std::size_t i = 0; i < rep.candidates.size(); ++i)
-            if (clean[i] || !anyClean)
-                best = std::min(best, rep.candidates[i].after.slicedWasserstein);
-        for (std::size_t i = 0; i < rep.candidates.size(); ++i)
-            if ((clean[i] || !anyClean) &&
+            if (rep.candidates[i].eligible &&
                 rep.candidates[i].after.slicedWasserstein <= kSimpler * best + 1e-9) {
                 chosen = i;
                 break;

@@ -28,13 +28,8 @@ std::string MatchReport::str() const {
     s += fmt("method   %s (%s)\n", toString(method), choice.c_str());
     if (candidates.size() > 1)
         for (const auto& c : candidates)
-            s += fmt(
-                "         %-11s %s; fitted in %.3g s%s\n", toString(c.method),
-                distance(c.after).c_str(), c.seconds,
-                c.shapeProblem.empty()
-                    ? ""
-                    : ((c.eligible ? "; its LUT " : "; not eligible: its LUT ") + c.shapeProblem)
-                          .c_str());
+            s += fmt("         %-11s %s; fitted in %.3g s%s\n", toString(c.method),
+                     distance(c.after).c_str(), c.seconds, c.shapeNote().c_str());
     s += fmt("pixels   source: %zu of %zu counted; reference%s: %zu of %zu\n", sourceUsed,
              sourcePixels, references == 1 ? "" : "s", referenceUsed, referencePixels);
     s += fmt("before   %s\n", distance(before).c_str());

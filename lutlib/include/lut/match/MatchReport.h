@@ -23,6 +23,13 @@ struct MatchCandidate {
     // such a method is not eligible unless no method is free of them.
     std::string shapeProblem;
     bool eligible = true;
+    // "; not eligible: its LUT folds colours over in 12 of 32768 cells" (or "; its LUT ..." when
+    // no method was free of it), "" when shapeProblem is: the report's and the editor's wording.
+    std::string shapeNote() const {
+        if (shapeProblem.empty())
+            return {};
+        return (eligible ? "; its LUT " : "; not eligible: its LUT ") + shapeProblem;
+    }
 };
 
 struct MatchReport {
