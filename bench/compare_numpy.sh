@@ -33,11 +33,12 @@ done
 
 W="$(mktemp -d /tmp/lutkit-numpy.XXXXXX)"
 trap 'rm -rf "$W"' EXIT
-python3 "$ROOT/bench/grade_cube.py" "$W/grade.cube"
+# graded, steps: the grade by ffmpeg, the distance by idiff
+. "$ROOT/bench/match_oracles.sh"
+write_grade_cube
 oiiotool "$PICTURE" --ch R,G,B --resize 1920x1080 \
   --pattern noise:type=uniform:min=-0.006:max=0.006:seed=3 1920x1080 3 --add -d uint8 -o "$W/source.png"
-ffmpeg -v error -y -i "$W/source.png" -vf "lut3d=file=$W/grade.cube:interp=tetrahedral" \
-  -pix_fmt rgb24 -frames:v 1 -update 1 "$W/truth.png"
+graded "$W/source.png" "$W/truth.png"
 oiiotool "$W/truth.png" --flip -o "$W/reference.png"
 for f in source truth reference; do oiiotool "$W/$f.png" -o "$W/$f.ppm"; done
 
@@ -52,9 +53,7 @@ for _ in $(seq "$RUNS"); do
   awk '{print $2}' "$W/np" >> "$W/numpy.txt"
 done
 "$LUTKIT" apply -q -y --lut "$W/look.cube" "$W/source.png" -o "$W/got.png" >/dev/null 2>&1
-# (idiff exits non-zero when the pictures differ, and prints no figures when they do not)
-lutkit_steps="$({ idiff -a "$W/got.png" "$W/truth.png" 2>/dev/null || true; } |
-  awk '/Mean error/ {m = $4} END {printf "%.2f", m * 255}')"
+lutkit_steps="$(steps "$W/got.png" "$W/truth.png")"
 lk="$(median < "$W/lutkit.txt")"
 np="$(median < "$W/numpy.txt")"
 echo "| 1080p source + reference -> LUT | wall s (median of $RUNS) | mean steps from the true grade |"

@@ -31,17 +31,9 @@ done
 W="$(mktemp -d /tmp/lutkit-match.XXXXXX)"
 trap 'rm -rf "$W"' EXIT
 
-# The grade as a 65^3 .cube, from the formula.
-python3 "$ROOT/bench/grade_cube.py" "$W/grade.cube"
-
-graded() { # IN OUT: the grade by ffmpeg, 8-bit RGB PNG
-  ffmpeg -v error -y -i "$1" -vf "lut3d=file=$W/grade.cube:interp=tetrahedral" -pix_fmt rgb24 \
-    -frames:v 1 -update 1 "$2"
-}
-steps() { # A B: mean absolute difference over every channel value, in 8-bit steps
-  # (idiff prints no error figures for identical pictures)
-  { idiff -a "$1" "$2" 2>/dev/null || true; } | awk '/Mean error/ {m = $4} END {printf "%.2f", m * 255}'
-}
+# graded, steps: the grade by ffmpeg, the distance by idiff
+. "$ROOT/bench/match_oracles.sh"
+write_grade_cube
 METHODS=(auto hm mkl hm-mkl-hm regularised)
 
 printf '| picture | case | no LUT | content alone |'
