@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # What lutkit's two libraries need wherever they are linked: lutkit::lutlib needs GLM and
-# Threads, lutkit::formats OpenColorIO and the native image codecs' libpng, zlib, libdeflate, ISA-L
+# Threads, lutkit::formats OpenColorIO and the native image codecs' libpng, zlib, libjpeg, ISA-L
 # and OpenEXR. Included by LutkitDependencies.cmake when lutkit itself is built and, installed next
 # to lutkitConfig.cmake, by that config when another project links the installed libraries, so
 # both find these the same way (with the same Debian 12 quirks).
@@ -25,19 +25,14 @@ if(NOT TARGET OpenColorIO::OpenColorIO)
   add_library(OpenColorIO::OpenColorIO ALIAS PkgConfig::OCIO)
 endif()
 
-# The native image codecs (formats/src/imageio): PNG, OpenEXR scanline files. libdeflate
-# inflates the PNG reader's common files at once (about twice zlib's speed); Debian ships only a
-# pkg-config file for it.
+# The native image codecs (formats/src/imageio): PNG, JPEG, OpenEXR scanline files. ISA-L's
+# assembly inflates the PNG reader's common files as their rows are asked for (Debian's
+# libisal-dev has a pkg-config file only); its deflate is compiled from source
+# (cmake/LutkitThirdParty.cmake) so that a PNG is written the same on every platform.
 find_package(PNG REQUIRED)
 find_package(ZLIB REQUIRED)
+find_package(JPEG REQUIRED)
 find_package(OpenEXR CONFIG REQUIRED)
-if(NOT TARGET PkgConfig::LIBDEFLATE)
-  find_package(PkgConfig REQUIRED)
-  pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
-endif()
-# ISA-L's igzip deflates the PNG writer's strips at levels 1-3 (2-10x zlib's speed for files
-# within a few percent, formats/src/imageio/PngWriter.cpp); Debian's libisal-dev has a pkg-config
-# file only.
 if(NOT TARGET PkgConfig::ISAL)
   find_package(PkgConfig REQUIRED)
   pkg_check_modules(ISAL REQUIRED IMPORTED_TARGET libisal)

@@ -32,8 +32,14 @@ public:
     std::shared_ptr<const void> exrHeader; // an Imf::Header (ExrCodec.cpp)
     std::string oiioAttributes;            // OpenImageIO's ParamValueList, serialised
     // Across formats:
-    std::string icc;                                       // ICC profile
-    std::string exif;                                      // TIFF-structured EXIF block
+    std::string icc;            // ICC profile
+    std::string exif;           // TIFF-structured EXIF block
+    std::string xmp;            // XMP packet (a JPEG's APP1)
+    std::string iptc;           // IPTC block (a JPEG's APP13, 8BIM)
+    bool iptcBeforeXmp = false; // the order they came in (decoding the second may add to the first)
+    std::string jpegSubsampling;                           // "4:2:0", ... (a JPEG read natively)
+    double xResolution = 0, yResolution = 0;               // pixels per resolutionUnit, 0 = none
+    std::string resolutionUnit;                            // "in", "cm"
     std::vector<std::pair<std::string, std::string>> text; // key, value
     // OpenImageIO's files: the data window's origin and the display window, kept by writers of
     // the same format.
@@ -137,6 +143,7 @@ std::unique_ptr<ImageSource> openExrSource(const std::string& path, std::string 
 std::unique_ptr<ImageSink> createExrSink(const OutputTarget& target, const SinkSpec& spec);
 bool exrIsNative(const std::string& path, const std::string& memory); // single-part scanline
 std::unique_ptr<ImageSource> openPnmSource(const std::string& path, std::string memory);
+std::unique_ptr<ImageSource> openJpegSource(const std::string& path, std::string memory);
 std::unique_ptr<ImageSink> createPnmSink(const OutputTarget& target, const SinkSpec& spec);
 // OpenImageIO through the module.
 std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string memory,

@@ -151,6 +151,7 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         }
         if (tail.find("\xff\xd9") == std::string::npos)
             throw Error(path + ": JPEG file ends before its end-of-image marker (truncated)");
+        return openJpegSource(path, std::move(memory));
     }
     // OpenImageIO reads memory through the reader it is told (a file's it would find from the
     // bytes when the extension's reader refuses them): the format the bytes declare, else the

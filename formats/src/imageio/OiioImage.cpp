@@ -5,18 +5,13 @@
 // attributes (EXIF and TIFF tags, the ICC profile, IPTC, XMP, format-specific ones) are kept as
 // exact bytes and given back to the writer.
 #include "imageio/OiioImage.h"
+#include "imageio/OiioAttributes.h"
 
 #include "lut/Limits.h"
 #include "lut/io/TempFiles.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-
-// From OpenImageIO/tiffutils.h, which needs libtiff's headers for the rest of what it declares.
-OIIO_NAMESPACE_BEGIN
-OIIO_API bool decode_exif(string_view exif, ImageSpec& spec);
-OIIO_API void encode_exif(const ImageSpec& spec, std::vector<char>& blob);
-OIIO_NAMESPACE_END
 
 #include <algorithm>
 #include <cerrno>
@@ -68,81 +63,6 @@ OIIO::TypeDesc typeDescOf(PixelType t) {
         return OIIO::TypeDesc::FLOAT;
     }
     return OIIO::TypeDesc::FLOAT;
-}
-
-// ParamValueList <-> bytes: name, type, count, then the values (strings as length + bytes).
-void putInt(std::string& s, std::uint32_t v) {
-    s.append(reinterpret_cast<const char*>(&v), 4);
-}
-std::uint32_t getInt(const std::string& s, std::size_t& at) {
-    std::uint32_t v = 0;
-    if (at + 4 <= s.size())
-        std::memcpy(&v, s.data() + at, 4);
-    at += 4;
-    return v;
-}
-void putBytes(std::string& s, const void* p, std::size_t n) {
-    putInt(s, static_cast<std::uint32_t>(n));
-    s.append(static_cast<const char*>(p), n);
-}
-std::string getBytes(const std::string& s, std::size_t& at) {
-    const std::uint32_t n = getInt(s, at);
-    if (at + n > s.size())
-        return {};
-    std::string v = s.substr(at, n);
-    at += n;
-    return v;
-}
-
-std::string serialize(const OIIO::ParamValueList& list) {
-    std::string s;
-    for (const auto& p : list) {
-        const OIIO::TypeDesc t = p.type();
-        putBytes(s, p.name().c_str(), p.name().size());
-        putInt(s, t.basetype);
-        putInt(s, t.aggregate);
-        putInt(s, t.vecsemantics);
-        putInt(s, static_cast<std::uint32_t>(t.arraylen));
-        putInt(s, static_cast<std::uint32_t>(p.nvalues()));
-        if (t.basetype == OIIO::TypeDesc::STRING) {
-            const auto* strs = static_cast<const OIIO::ustring*>(p.data());
-            for (int i = 0; i < p.nvalues() * static_cast<int>(t.numelements()); ++i)
-                putBytes(s, strs[i].c_str(), strs[i].size());
-        } else {
-            putBytes(s, p.data(), t.size() * static_cast<std::size_t>(p.nvalues()));
-        }
-    }
-    return s;
-}
-
-void deserialize(const std::string& s, OIIO::ImageSpec& spec) {
-    std::size_t at = 0;
-    while (at < s.size()) {
-        const std::string name = getBytes(s, at);
-        OIIO::TypeDesc t;
-        t.basetype = static_cast<unsigned char>(getInt(s, at));
-        t.aggregate = static_cast<unsigned char>(getInt(s, at));
-        t.vecsemantics = static_cast<unsigned char>(getInt(s, at));
-        t.arraylen = static_cast<int>(getInt(s, at));
-        const int n = static_cast<int>(getInt(s, at));
-        if (at > s.size() || name.empty())
-            return;
-        if (t.basetype == OIIO::TypeDesc::STRING) {
-            std::vector<std::string> vals;
-            const int count = n * static_cast<int>(t.numelements());
-            for (int i = 0; i < count && at < s.size(); ++i)
-                vals.push_back(getBytes(s, at));
-            std::vector<const char*> ptrs;
-            for (const auto& v : vals)
-                ptrs.push_back(v.c_str());
-            if (static_cast<int>(ptrs.size()) == count)
-                spec.extra_attribs.emplace_back(name, t, n, ptrs.data());
-        } else {
-            const std::string bytes = getBytes(s, at);
-            if (bytes.size() == t.size() * static_cast<std::size_t>(n))
-                spec.extra_attribs.emplace_back(name, t, n, bytes.data());
-        }
-    }
 }
 
 } // namespace
@@ -445,6 +365,23 @@ OIIO::ImageSpec OiioSink::makeSpec(const SinkSpec& s) const {
             OIIO::decode_exif(OIIO::string_view(s.metadata->exif), spec);
         for (const auto& [k, v] : s.metadata->text)
             spec.attribute(k, v);
+        // What lutkit's own JPEG reader keeps (JpegCodec.cpp), as OpenImageIO's would have read it.
+        // In the file's order, as OpenImageIO's JPEG reader decodes them (the second adds to
+        // the first's repeatable fields).
+        const auto& m = *s.metadata;
+        if (!m.iptc.empty() && m.iptcBeforeXmp)
+            decodePhotoshopIptc(m.iptc, spec);
+        if (!m.xmp.empty())
+            OIIO::decode_xmp(m.xmp, spec);
+        if (!m.iptc.empty() && !m.iptcBeforeXmp)
+            decodePhotoshopIptc(m.iptc, spec);
+        if (!s.metadata->jpegSubsampling.empty())
+            spec.attribute("jpeg:subsampling", s.metadata->jpegSubsampling);
+        if (s.metadata->xResolution > 0 && s.metadata->yResolution > 0) {
+            spec.attribute("XResolution", static_cast<float>(s.metadata->xResolution));
+            spec.attribute("YResolution", static_cast<float>(s.metadata->yResolution));
+            spec.attribute("ResolutionUnit", s.metadata->resolutionUnit);
+        }
     }
     spec.erase_attribute("oiio:subimages");
     spec.channelnames.assign(s.channelNames.begin(), s.channelNames.end());

@@ -22,8 +22,8 @@
 
 #include "imageio/PngUnfilter.h"
 
+#include <isa-l/crc.h>
 #include <isa-l/igzip_lib.h>
-#include <libdeflate.h>
 #include <png.h>
 #include <zlib.h>
 
@@ -79,11 +79,17 @@ struct PngError {
     std::string message;
 };
 
-void onError(png_structp png, png_const_charp msg) {
+// libpng's error leaves through an exception, not a longjmp: one way out on every platform (the
+// browser edition's WebAssembly exceptions do not mix with setjmp). libpng's C frames are unwound
+// without cleanups (its structures are destroyed by png_destroy_read_struct), as they are by a
+// longjmp.
+struct PngAbort {};
+
+[[noreturn]] void onError(png_structp png, png_const_charp msg) {
     auto* e = static_cast<PngError*>(png_get_error_ptr(png));
     if (e && e->message.empty())
         e->message = msg ? msg : "libpng error";
-    png_longjmp(png, 1);
+    throw PngAbort{};
 }
 void onWarning(png_structp, png_const_charp) {} // libpng's warnings are not ours to print
 
@@ -94,6 +100,9 @@ public:
         // error): the reader's structures go here then.
         try {
             open(path);
+        } catch (const PngAbort&) {
+            png_destroy_read_struct(&m_png, &m_pngInfo, nullptr);
+            fail();
         } catch (...) {
             png_destroy_read_struct(&m_png, &m_pngInfo, nullptr);
             throw;
@@ -122,8 +131,6 @@ private:
         });
         // Metadata was collected by scanChunks: libpng need not keep any ancillary chunk.
         png_set_keep_unknown_chunks(m_png, PNG_HANDLE_CHUNK_NEVER, nullptr, 0);
-        if (setjmp(png_jmpbuf(m_png)))
-            fail();
         png_read_info(m_png, m_pngInfo);
         png_uint_32 w = 0, h = 0;
         int depth = 0, colour = 0, interlace = 0;
@@ -199,7 +206,7 @@ private:
                 if (m_in.pread(m_idat.data(), len + 4, m_chunkAt + 8) != len + 4)
                     return Feed::Bad;
                 const std::uint32_t crc = static_cast<std::uint32_t>(
-                    libdeflate_crc32(libdeflate_crc32(0, hdr + 4, 4), m_idat.data(), len));
+                    crc32_gzip_refl(crc32_gzip_refl(0, hdr + 4, 4), m_idat.data(), len));
                 if (crc != be32(m_idat.data() + len))
                     return Feed::Bad;
                 m_chunkAt += 12 + static_cast<std::uint64_t>(len);
@@ -318,10 +325,12 @@ private:
             return;
         m_skip.resize(rowBytes(m_info));
         m_skipped = 0;
-        if (setjmp(png_jmpbuf(m_png)))
+        try {
+            for (; m_skipped < rows; ++m_skipped)
+                png_read_row(m_png, m_skip.data(), nullptr);
+        } catch (const PngAbort&) {
             fail();
-        for (; m_skipped < rows; ++m_skipped)
-            png_read_row(m_png, m_skip.data(), nullptr);
+        }
     }
 
 public:
@@ -348,9 +357,11 @@ public:
                 for (int y = 0; y < m_info.height; ++y)
                     rows[static_cast<std::size_t>(y)] =
                         m_frame.data() + rb * static_cast<std::size_t>(y);
-                if (setjmp(png_jmpbuf(m_png)))
+                try {
+                    png_read_image(m_png, rows.data());
+                } catch (const PngAbort&) {
                     fail();
-                png_read_image(m_png, rows.data());
+                }
             }
             std::memcpy(out, m_frame.data() + rb * static_cast<std::size_t>(y0),
                         rb * static_cast<std::size_t>(y1 - y0));
@@ -358,18 +369,22 @@ public:
         }
         m_next = out;
         m_rowBytes = rb;
-        if (setjmp(png_jmpbuf(m_png)))
+        try {
+            for (int y = y0; y < y1; ++y, m_next += m_rowBytes)
+                png_read_row(m_png, m_next, nullptr);
+        } catch (const PngAbort&) {
             fail();
-        for (int y = y0; y < y1; ++y, m_next += m_rowBytes)
-            png_read_row(m_png, m_next, nullptr);
+        }
     }
 
     void finish() override {
         if (m_whole) // the data and IEND were checked by endOfStream
             return;
-        if (setjmp(png_jmpbuf(m_png)))
+        try {
+            png_read_end(m_png, nullptr); // through IEND: a truncated file is an error here
+        } catch (const PngAbort&) {
             fail();
-        png_read_end(m_png, nullptr); // through IEND: a truncated file is an error here
+        }
     }
 
 private:
@@ -457,10 +472,10 @@ private:
     int m_rowsDone = 0;                   // rows given by the fast path
     UninitBytes m_filtered;               // the rows being unfiltered, with filter bytes
     std::vector<unsigned char> m_skip;    // a row libpng reads again and drops
-    int m_skipped = 0;                    // members, not locals: longjmp may clobber locals
+    int m_skipped = 0;                    // how many of the rows given again were dropped
     std::vector<unsigned char> m_prevRow; // the last row unfiltered (the next one's "up")
     std::vector<unsigned char> m_row;     // a 16-bit row before its bytes are swapped
-    png_bytep m_next = nullptr;           // members, not locals: longjmp may clobber locals
+    png_bytep m_next = nullptr;           // where the next row goes
     std::size_t m_rowBytes = 0;
     std::vector<unsigned char> m_frame;
     std::shared_ptr<ImageMetadata> m_meta;
