@@ -9,8 +9,8 @@
 set -euo pipefail
 # The CLI and its image module: compiler, CMake, OpenImageIO, OpenColorIO, the native codecs,
 # GLM, CLI11, ccache.
-CLI_PACKAGES=(cmake make g++ pkg-config libopenimageio-dev libopenexr-dev libpng-dev zlib1g-dev libdeflate-dev
-  libisal-dev libopencolorio-dev libglm-dev libcli11-dev ccache)
+CLI_PACKAGES=(cmake make g++ pkg-config libopenimageio-dev libopenexr-dev libpng-dev zlib1g-dev libjpeg62-turbo-dev
+  libisal-dev libopencolorio-dev libglm-dev libcli11-dev libfast-float-dev libfmt-dev ccache)
 EDITOR_PACKAGES=(qt6-base-dev libqt6opengl6-dev)
 case "${1:-}" in
   --cli) shift; set -- "${CLI_PACKAGES[@]}" "$@"; ONLY=1 ;;
@@ -18,7 +18,7 @@ case "${1:-}" in
   *) ONLY=0 ;;
 esac
 # desktop-file-utils, libxml2-utils, shared-mime-info: tests/desktop checks the editor's desktop files.
-# libopenexr-dev, libpng-dev, zlib1g-dev, libdeflate-dev, libisal-dev: the native image codecs
+# libopenexr-dev, libpng-dev, zlib1g-dev, libjpeg62-turbo-dev, libisal-dev: the native image codecs
 # (formats/src/imageio).
 # ccache: rebuilds (the four builds of ./test.sh, a fresh clone in CI) reuse unchanged objects.
 # ffmpeg: an outside reader in the tests (its lut3d filter reads the .cube files lutkit writes).
@@ -26,10 +26,11 @@ esac
 # openexr: OpenEXR's own tools (exrstdattr, exrmakepreview, exrmultiview) write the test files
 # that carry every attribute type OpenEXR knows (tests/formats/test_image_plausibility.cpp).
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools openexr libopenexr-dev libpng-dev
-  zlib1g-dev libdeflate-dev libisal-dev libopencolorio-dev
+  zlib1g-dev libjpeg62-turbo-dev libisal-dev libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
-  desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg python3-numpy "$@")
+  desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg python3-numpy
+  libfast-float-dev libfmt-dev emscripten mingw-w64 wine64 chromium chromium-driver python3-selenium "$@")
 if [ "$ONLY" = 1 ]; then
   PACKAGES=("$@")
 fi

@@ -2,13 +2,16 @@
 // The PNG writer (PngCodec.cpp's summary says why it is ours): filtered rows, deflated in strips
 // on several threads into one zlib stream, chunks written through lut::OutputFile with checked
 // writes, the finished file read back (header and end) before it replaces the output. Levels 1-3
-// (a preview's and apply's defaults) deflate with ISA-L's igzip, levels 0 and 4-9 with zlib.
+// (a preview's and apply's defaults) deflate with ISA-L's igzip (its portable C, the same bytes on
+// every platform: Igzip.h), levels 0 and 4-9 with zlib.
+#include "imageio/Igzip.h" // first: it names the igzip lutkit compiles
+
 #include "imageio/ByteIO.h"
 #include "imageio/ImageCodec.h"
 
 #include "lut/Error.h"
+#include "lut/Parallel.h"
 
-#include <isa-l/igzip_lib.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -385,22 +388,24 @@ private:
         const int level = m_level;
         const std::size_t rowBytes = m_rowBytes;
         const std::size_t bpp = static_cast<std::size_t>(m_channels * m_bytesPerSample);
-        m_jobs.push_back(std::async(std::launch::async, [strip, prev, last, level, rowBytes, bpp] {
-            // The dictionary: the last 32 KiB of the filtered stream so far, i.e. of the strip
-            // before (every strip but the last holds at least kStripBytes), refiltered here.
-            std::vector<unsigned char> dict;
-            if (prev && prev->rows > 0) {
-                const std::size_t need = (kWindow + rowBytes) / (rowBytes + 1) + 1;
-                const std::size_t r0 = prev->rows > need ? prev->rows - need : 0;
-                filterRows(*prev, r0, prev->rows, rowBytes, bpp, dict);
-                if (dict.size() > kWindow)
-                    dict.erase(dict.begin(), dict.end() - static_cast<std::ptrdiff_t>(kWindow));
-            }
-            std::vector<unsigned char> data;
-            data.reserve(strip->rows * (rowBytes + 1));
-            filterRows(*strip, 0, strip->rows, rowBytes, bpp, data);
-            return deflateStrip(data, dict, last, level);
-        }));
+        m_jobs.push_back(std::async(
+            threadsAvailable() ? std::launch::async : std::launch::deferred,
+            [strip, prev, last, level, rowBytes, bpp] {
+                // The dictionary: the last 32 KiB of the filtered stream so far, i.e. of the strip
+                // before (every strip but the last holds at least kStripBytes), refiltered here.
+                std::vector<unsigned char> dict;
+                if (prev && prev->rows > 0) {
+                    const std::size_t need = (kWindow + rowBytes) / (rowBytes + 1) + 1;
+                    const std::size_t r0 = prev->rows > need ? prev->rows - need : 0;
+                    filterRows(*prev, r0, prev->rows, rowBytes, bpp, dict);
+                    if (dict.size() > kWindow)
+                        dict.erase(dict.begin(), dict.end() - static_cast<std::ptrdiff_t>(kWindow));
+                }
+                std::vector<unsigned char> data;
+                data.reserve(strip->rows * (rowBytes + 1));
+                filterRows(*strip, 0, strip->rows, rowBytes, bpp, data);
+                return deflateStrip(data, dict, last, level);
+            }));
         const std::size_t inFlight = static_cast<std::size_t>(std::max(1, m_spec.threads)) + 1;
         while (m_jobs.size() > inFlight)
             emitOldest();
