@@ -1,5 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # Finds the Debian-packaged dependencies and papers over their known quirks on Debian 12.
+if(LUTKIT_PORTABLE)
+  include(LutkitPortableDependencies)
+  return()
+endif()
 include(LutkitLibraryDependencies) # Threads, GLM, OpenColorIO
 
 # Debian 12's libopenimageio-dev exports OIIO's command-line tools (iconvert, oiiotool, iv, ...)

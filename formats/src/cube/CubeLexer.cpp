@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cube/CubeLexer.h"
+#include "lut/NumberText.h"
 
 namespace lut::formats::cube {
 
 std::string floatText(float v) {
     char buf[32];
-    auto r = std::to_chars(buf, buf + sizeof buf, v);
+    auto r = lut::toChars(buf, buf + sizeof buf, v);
     return std::string(buf, r.ptr);
 }
 
@@ -20,13 +21,13 @@ NumStatus parseFloat(std::string_view tok, float& out) {
     if (p == e)
         return NumStatus::NotNumber;
     float v = 0.0f;
-    const auto r = std::from_chars(p, e, v);
+    const auto r = lut::fromChars(p, e, v);
     if (r.ptr != e || r.ec == std::errc::invalid_argument)
         return NumStatus::NotNumber;
     if (r.ec == std::errc::result_out_of_range) {
         // Too large or too small for a float: tell which from the double value (or exponent).
         double d = 0.0;
-        const auto r2 = std::from_chars(p, e, d);
+        const auto r2 = lut::fromChars(p, e, d);
         const bool negative = *p == '-';
         if (r2.ec == std::errc{} && std::isfinite(d)) {
             if (std::fabs(d) >= 1.0)

@@ -5,6 +5,7 @@
 // the parser and the parallel row reader share it; anything it does not take goes to the careful
 // path (parseFloat, splitTokens), which tells exactly what is wrong.
 #include "cube/TextLineReader.h"
+#include "lut/NumberText.h"
 
 #include <array>
 #include <charconv>
@@ -120,7 +121,7 @@ inline bool fastRow(const char* p, const char* e, float* out) {
         p = skipSpace(p, e);
         const char* q = fastFloat(p, e, out[i]);
         if (!q) {
-            const auto r = std::from_chars(p, e, out[i]);
+            const auto r = lut::fromChars(p, e, out[i]);
             if (r.ec != std::errc{} || r.ptr == p)
                 return false;
             if (!std::isfinite(out[i]))

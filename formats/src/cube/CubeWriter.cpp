@@ -10,6 +10,7 @@
 // equal on all channels; otherwise the shaper is baked into the cube (Warning). Non-finite
 // entries are written as 0 (NaN) or +-FLT_MAX (Inf) with a Warning. Big tables are formatted on
 // all cores.
+#include "lut/NumberText.h"
 #include "lut/formats/Cube.h"
 
 #include "lut/Limits.h"
@@ -33,8 +34,8 @@ namespace {
 // Appends the shortest round-trip text of v (or fixed decimals).
 inline char* putFloat(char* p, float v, int decimals) {
     if (decimals < 0)
-        return std::to_chars(p, p + 48, v).ptr;
-    return std::to_chars(p, p + 80, v, std::chars_format::fixed, decimals).ptr;
+        return lut::toChars(p, p + 48, v).ptr;
+    return lut::toCharsFixed(p, p + 80, v, decimals).ptr;
 }
 
 // Shortest texts of recently written floats. LUTs repeat values a lot (a neutral N^3 table has N
@@ -52,7 +53,7 @@ public:
         if (s.bits != bits) {
             s.bits = bits;
             s.length = static_cast<std::uint8_t>(
-                std::to_chars(s.text, s.text + sizeof s.text, v).ptr - s.text);
+                lut::toChars(s.text, s.text + sizeof s.text, v).ptr - s.text);
         }
         std::memcpy(p, s.text, sizeof s.text);
         return p + s.length;

@@ -162,7 +162,7 @@ void streamPart(ImageSource& src, ImageSink& sink, const Plan& p, const PixelCha
 
     std::mutex m;
     auto rowsOf = [&](int c) { return std::min(rows, p.in.height - c * rows); };
-    const bool threaded = o.overlap && chunks > 1;
+    const bool threaded = o.overlap && chunks > 1 && threadsAvailable();
     if (!threaded) {
         std::vector<unsigned char> inBuf(inRow * static_cast<std::size_t>(rows));
         std::vector<unsigned char> outBuf(p.unchanged ? 0
@@ -297,7 +297,7 @@ std::uint64_t partMemory(const Plan& p, int srcGranularity, int sinkGranularity,
                          const ApplyImageOptions& o) {
     const int rows = chunkRowsFor(p, srcGranularity, sinkGranularity, o);
     const int chunks = (p.in.height + rows - 1) / rows;
-    const std::uint64_t slots = o.overlap && chunks > 1 ? kSlots : 1;
+    const std::uint64_t slots = o.overlap && chunks > 1 && threadsAvailable() ? kSlots : 1;
     const std::uint64_t perSlot =
         (rowBytes(p.in) + (p.unchanged ? 0 : rowBytes(p.out))) * static_cast<std::uint64_t>(rows);
     return slots * perSlot + p.in.decoderBytes;

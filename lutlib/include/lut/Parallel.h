@@ -4,7 +4,12 @@
 
 namespace lut {
 
-// Number of worker threads for nthreads (0 = all hardware threads).
+// Whether this build can start threads: false in the browser edition (WebAssembly threads need
+// the cross-origin isolation headers most static hosts do not send, docs/portable.md), where
+// everything runs on the calling thread, in the same order of results.
+bool threadsAvailable();
+
+// Number of worker threads for nthreads (0 = all hardware threads); 1 without threads.
 int resolveThreads(int nthreads);
 
 // Runs fn(begin, end) over [0, count) split into contiguous chunks on up to nthreads threads

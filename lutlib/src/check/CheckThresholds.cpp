@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/check/CheckThresholds.h"
+#include "lut/NumberText.h"
 
 #include "lut/Error.h"
 
@@ -42,7 +43,7 @@ bool readNumber(std::string_view line, std::size_t& pos, double& value) {
     const char* end = line.data() + line.size();
     if (*begin == '+')
         ++begin;
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    const auto [ptr, ec] = fromChars(begin, end, value);
     if (ec != std::errc() || !std::isfinite(value))
         return false;
     pos = static_cast<std::size_t>(ptr - line.data());

@@ -54,9 +54,9 @@ constexpr float kMinNormal = 1.17549435e-38f;
 
 // x = 2^e * m with m in [sqrt(1/2), sqrt(2)); returns log2(m) and sets e. x must be > 0, normal.
 inline float log2Mantissa(float x, float& e) {
-    const std::uint32_t b = std::bit_cast<std::uint32_t>(x);
+    const std::uint32_t b = __builtin_bit_cast(std::uint32_t, x);
     int ei = static_cast<int>(b >> 23) - 127;
-    float m = std::bit_cast<float>((b & 0x7FFFFFu) | 0x3F800000u);
+    float m = __builtin_bit_cast(float, (b & 0x7FFFFFu) | 0x3F800000u);
     if (m > poly::kSqrt2) {
         m = m * 0.5f;
         ei = ei + 1;
@@ -84,7 +84,7 @@ inline float exp2Times(float p, float e, float l) {
         q = madd(q, f, poly::kExp2[i]);
     q = madd(q, f, 1.0f);
     const float scale =
-        std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<int>(n) + 127) << 23);
+        __builtin_bit_cast(float, static_cast<std::uint32_t>(static_cast<int>(n) + 127) << 23);
     return q * scale;
 }
 

@@ -9,7 +9,17 @@
 
 namespace lut {
 
+bool threadsAvailable() {
+#ifdef LUTKIT_NO_THREADS
+    return false;
+#else
+    return true;
+#endif
+}
+
 int resolveThreads(int nthreads) {
+    if (!threadsAvailable())
+        return 1;
     if (nthreads > 0)
         return nthreads;
     const unsigned hw = std::thread::hardware_concurrency();

@@ -66,6 +66,13 @@ std::vector<float> packTable(const Lut3D& lut) {
 
 enum class Isa { Scalar, Avx2, Avx512 };
 
+// A kernel of simd/ where it is compiled (x86), else none: the scalar loop (the browser edition).
+#if defined(__x86_64__) || defined(__i386__)
+#define LUTKIT_X86_KERNEL(f) (&f)
+#else
+#define LUTKIT_X86_KERNEL(f) nullptr
+#endif
+
 Isa detectIsa() {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_cpu_init();
@@ -145,7 +152,8 @@ protected:
 
 class NearestSampler final : public SamplerBase {
 public:
-    explicit NearestSampler(const Lut3D& lut) : SamplerBase(lut, &detail::nearestAvx2) {}
+    explicit NearestSampler(const Lut3D& lut)
+        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::nearestAvx2)) {}
     Interpolation method() const override { return Interpolation::Nearest; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -161,7 +169,8 @@ public:
 
 class TrilinearSampler final : public SamplerBase {
 public:
-    explicit TrilinearSampler(const Lut3D& lut) : SamplerBase(lut, &detail::trilinearAvx2) {}
+    explicit TrilinearSampler(const Lut3D& lut)
+        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::trilinearAvx2)) {}
     Interpolation method() const override { return Interpolation::Trilinear; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -186,7 +195,8 @@ public:
 class TetrahedralSampler final : public SamplerBase {
 public:
     explicit TetrahedralSampler(const Lut3D& lut)
-        : SamplerBase(lut, &detail::tetrahedralAvx2, &detail::tetrahedralAvx512) {}
+        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::tetrahedralAvx2),
+                      LUTKIT_X86_KERNEL(detail::tetrahedralAvx512)) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -206,7 +216,8 @@ public:
 class ShapedSampler final : public Sampler {
 public:
     ShapedSampler(const Lut1D& shaper, const Lut3D* cube, Interpolation method)
-        : m_method(method), m_kernel(chosenIsa() != Isa::Scalar ? &detail::shaperAvx2 : nullptr) {
+        : m_method(method),
+          m_kernel(chosenIsa() != Isa::Scalar ? LUTKIT_X86_KERNEL(detail::shaperAvx2) : nullptr) {
         const int n = shaper.size();
         if (n < 2)
             throw Error("cannot sample a shaper of fewer than 2 entries");

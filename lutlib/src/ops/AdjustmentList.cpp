@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/ops/AdjustmentList.h"
+#include "lut/NumberText.h"
 
 #include "lut/Error.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 std::string number(double v) {
     char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v); // shortest exact round trip
+    const auto r = toChars(buf, buf + sizeof buf, v); // shortest exact round trip
     return std::string(buf, r.ptr);
 }
 
@@ -45,7 +46,7 @@ public:
         if (!v.empty() && v.front() == '+')
             v.remove_prefix(1);
         double out = 0.0;
-        const auto r = std::from_chars(v.data(), v.data() + v.size(), out);
+        const auto r = fromChars(v.data(), v.data() + v.size(), out);
         if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size())
             throw ParseError(m_path, m_line, column, "expected a number", std::string(s));
         if (!std::isfinite(out))

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/pipeline/Stage.h"
+#include "lut/NumberText.h"
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
@@ -77,7 +78,7 @@ void Stage::setParam(std::string_view n, std::string_view text) {
         float v = 0.0f;
         const char* b = text.data();
         const char* e = text.data() + text.size();
-        const auto r = std::from_chars(b, e, v);
+        const auto r = fromChars(b, e, v);
         if (r.ec != std::errc() || r.ptr != e)
             throw Error(std::string("stage '") + name() + "' parameter '" + p.name + "': '" +
                         std::string(text) + "' is not a number");

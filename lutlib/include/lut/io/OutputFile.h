@@ -58,7 +58,7 @@ private:
     bool m_ownFd = false;
     std::string m_memory; // OutputKind::Memory: the bytes until commit()
     std::uint64_t m_size = 0;
-    std::uint64_t m_writebackFrom = 0; // bytes before this were handed to the disk early
+    [[maybe_unused]] std::uint64_t m_writebackFrom = 0; // handed to the disk early (Linux)
     bool m_done = false;
 };
 
