@@ -25,7 +25,7 @@ set_target_properties(lutkit_imageio PROPERTIES EXPORT_NAME imageio)
 # Component `dev` (headers, static libraries, the CMake package): what a project building against
 # lutkit needs, left out of the .deb (cmake/LutkitPackage.cmake); everything else is the default
 # component, what users run.
-install(TARGETS lutlib lutkit_formats lutkit_igzip lutkit_imageio EXPORT lutkitTargets
+install(TARGETS lutlib lutkit_math lutkit_formats lutkit_igzip lutkit_imageio EXPORT lutkitTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
         LIBRARY DESTINATION ${LUTKIT_INSTALL_MODULEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lutlib/include/ ${PROJECT_SOURCE_DIR}/formats/include/

@@ -110,6 +110,34 @@ if(NOT LUTKIT_PORTABLE)
 endif()
 target_include_directories(lutkit_igzip INTERFACE "$<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/third-party/include>")
 
+# --- musl's libm functions (every build): lut/Math.h ----------------------------------------
+# The same pow, exp, log, cbrt, sin, cos, atan2, hypot (double and float) on every platform:
+# glibc, Emscripten's musl and MinGW-w64 round some results differently (glibc picks FMA code on
+# CPUs that have it), so a LUT or a picture computed with the system's libm would differ in a
+# few values between the Linux, Windows and browser editions. musl's are portable C (ARM's
+# optimized routines for exp/log/pow, fdlibm for the others), compiled without FMA contraction,
+# under lutkit_ names beside the system's libm.
+lutkit_debian_source(LUTKIT_MUSL_SRC m/musl musl_1.2.3.orig.tar.gz
+  7d5b0b6062521e4627e099e4c9dc8248d32a30285e959b7eecaa780cf8cfd4a4 musl-1.2.3)
+set(_math_files pow exp exp2 log log2 log10 cbrt sin cos atan atan2 hypot powf expf exp2f logf
+  log2f cbrtf sinf cosf atanf atan2f hypotf __sin __cos __rem_pio2 __rem_pio2_large __sindf
+  __cosdf __rem_pio2f __math_oflow __math_uflow __math_invalid __math_divzero __math_xflow
+  __math_oflowf __math_uflowf __math_invalidf __math_divzerof __math_xflowf exp_data pow_data
+  log_data log2_data exp2f_data powf_data logf_data log2f_data)
+list(TRANSFORM _math_files PREPEND "${LUTKIT_MUSL_SRC}/src/math/")
+list(TRANSFORM _math_files APPEND ".c")
+add_library(lutkit_math STATIC ${_math_files})
+lutkit_third_party_target(lutkit_math)
+# Our <math.h> (third_party/musl/include: what the sources use, from compiler builtins), then
+# musl's internal headers; MinGW-w64 lacks <endian.h> and <features.h> (third_party/musl/shim-win).
+target_include_directories(lutkit_math BEFORE PRIVATE ${PROJECT_SOURCE_DIR}/third_party/musl/include
+  ${LUTKIT_MUSL_SRC}/src/internal ${LUTKIT_MUSL_SRC}/arch/generic)
+if(WIN32)
+  target_include_directories(lutkit_math PRIVATE ${PROJECT_SOURCE_DIR}/third_party/musl/shim-win)
+endif()
+target_compile_options(lutkit_math PRIVATE -ffp-contract=off -fno-builtin -fno-math-errno
+  -include "${PROJECT_SOURCE_DIR}/third_party/musl/lutkit_math_prefix.h")
+
 if(NOT LUTKIT_PORTABLE)
   return()
 endif()

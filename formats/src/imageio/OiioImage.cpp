@@ -5,7 +5,7 @@
 // attributes (EXIF and TIFF tags, the ICC profile, IPTC, XMP, format-specific ones) are kept as
 // exact bytes and given back to the writer.
 #include "imageio/OiioImage.h"
-#include "imageio/OiioAttributes.h"
+#include "imageio/OiioMetadata.h"
 
 #include "lut/Limits.h"
 #include "lut/io/TempFiles.h"
@@ -347,14 +347,6 @@ OIIO::ImageSpec OiioSink::makeSpec(const SinkSpec& s) const {
                          typeDescOf(s.type));
     if (s.metadata && !s.metadata->oiioAttributes.empty()) {
         deserialize(s.metadata->oiioAttributes, spec);
-        // OpenImageIO reads IPTC's Creator, Caption and CopyrightNotice into both the IPTC name
-        // and its synonym, and writes both into the IPTC block: keep one, or they double.
-        for (const auto& [iptc, synonym] :
-             {std::pair<const char*, const char*>{"IPTC:Creator", "Artist"},
-              {"IPTC:Caption", "ImageDescription"},
-              {"IPTC:CopyrightNotice", "Copyright"}})
-            if (spec.get_string_attribute(iptc) == spec.get_string_attribute(synonym))
-                spec.erase_attribute(iptc);
     } else if (s.metadata) {
         if (!s.metadata->icc.empty())
             spec.attribute(
@@ -383,6 +375,14 @@ OIIO::ImageSpec OiioSink::makeSpec(const SinkSpec& s) const {
             spec.attribute("ResolutionUnit", s.metadata->resolutionUnit);
         }
     }
+    // OpenImageIO reads IPTC's Creator, Caption and CopyrightNotice into both the IPTC name and
+    // its synonym, and writes both into the IPTC block: keep one, or they double.
+    for (const auto& [iptc, synonym] :
+         {std::pair<const char*, const char*>{"IPTC:Creator", "Artist"},
+          {"IPTC:Caption", "ImageDescription"},
+          {"IPTC:CopyrightNotice", "Copyright"}})
+        if (spec.get_string_attribute(iptc) == spec.get_string_attribute(synonym))
+            spec.erase_attribute(iptc);
     spec.erase_attribute("oiio:subimages");
     spec.channelnames.assign(s.channelNames.begin(), s.channelNames.end());
     spec.alpha_channel = s.alphaChannel;

@@ -9,6 +9,7 @@
 #include "ocio/OcioSession.h"
 
 #include "lut/Limits.h"
+#include "lut/Math.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -57,21 +58,21 @@ ShaperPlan log2Shaper(const ColorSpaceInfo* input) {
     }
     const double off = input && input->lg2Allocation && input->allocationVars.size() >= 3
                            ? input->allocationVars[2]
-                           : std::exp2(mn);
+                           : lut::math::exp2(mn);
     ShaperPlan p;
     p.kind = ShaperPlan::Kind::Curve;
     p.forward = [mn, mx, off](float* rgb, std::size_t n) {
         for (std::size_t i = 0; i < 3 * n; ++i) {
             const double x = std::max(double(rgb[i]) + off, 1e-30);
-            rgb[i] = static_cast<float>((std::log2(x) - mn) / (mx - mn));
+            rgb[i] = static_cast<float>((lut::math::log2(x) - mn) / (mx - mn));
         }
     };
     p.inverse = [mn, mx, off](float* rgb, std::size_t n) {
         for (std::size_t i = 0; i < 3 * n; ++i)
-            rgb[i] = static_cast<float>(std::exp2(mn + double(rgb[i]) * (mx - mn)) - off);
+            rgb[i] = static_cast<float>(lut::math::exp2(mn + double(rgb[i]) * (mx - mn)) - off);
     };
-    p.lo = glm::vec3(static_cast<float>(std::exp2(mn) - off));
-    p.hi = glm::vec3(static_cast<float>(std::exp2(mx) - off));
+    p.lo = glm::vec3(static_cast<float>(lut::math::exp2(mn) - off));
+    p.hi = glm::vec3(static_cast<float>(lut::math::exp2(mx) - off));
     p.text = "log2 (" + from + ": " + num(p.lo.x) + ".." + num(p.hi.x) + ")";
     return p;
 }

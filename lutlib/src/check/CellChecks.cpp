@@ -4,6 +4,7 @@
 // output cube the LUT reaches.
 #include "check/CheckDetail.h"
 
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 
 #include <glm/geometric.hpp>
@@ -31,7 +32,7 @@ constexpr double kStillEdge = 1e-5, kFlatSine = 1e-3;
 void measureInvertibility(const Context& ctx, CheckFigures& figures, glm::vec3& worstFold) {
     const Lut3D& t = ctx.table();
     const int cells = ctx.cellsPerAxis();
-    const double volume = std::pow(1.0 / cells, 3.0); // of a cell in normalised input, cubed
+    const double volume = lut::math::pow(1.0 / cells, 3.0); // of a cell in normalised input, cubed
     std::vector<double> dets(static_cast<std::size_t>(cells) * cells * cells * 6);
     std::vector<double> volumes(dets.size()); // signed, per unit of input volume
     parallelFor(cells, ctx.nthreads(), [&](int b0, int b1) {

@@ -3,6 +3,7 @@
 
 #include "check/CheckDetail.h"
 #include "lut/Error.h"
+#include "lut/Math.h"
 #include "lut/check/StressCharts.h"
 #include "ops/Canvas.h"
 
@@ -55,7 +56,7 @@ void ring(detail::Canvas& cv, double cx, double cy, double radius, glm::vec3 col
     std::vector<glm::dvec2> pts;
     for (int i = 0; i <= 40; ++i) {
         const double a = 2.0 * std::numbers::pi * i / 40.0;
-        pts.emplace_back(cx + radius * std::cos(a), cy + radius * std::sin(a));
+        pts.emplace_back(cx + radius * lut::math::cos(a), cy + radius * lut::math::sin(a));
     }
     cv.polyline(pts, glm::vec3(0.0f), 4.5, false);
     cv.polyline(pts, colour, 2.5, false);

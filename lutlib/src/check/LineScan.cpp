@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "check/LineScan.h"
+#include "lut/Math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -290,7 +291,7 @@ void scanRough(const LineSpec& line, const ClipBounds& bounds, const CheckThresh
                const Segments& s, std::vector<LineEvent>& events) {
     constexpr double kReference = 1.0 / 32.0;
     const int k = std::max(1, static_cast<int>(std::lround(kReference / line.step)));
-    const double scale = std::pow(kReference / (k * line.step), 2.0);
+    const double scale = lut::math::pow(kReference / (k * line.step), 2.0);
     const glm::vec3* v = line.values;
     for (int i = k; i + k < line.count; ++i) {
         bool skip = false;

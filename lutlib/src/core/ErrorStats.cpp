@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/ErrorStats.h"
+#include "lut/Math.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +10,7 @@ namespace lut {
 double roundUpSignificant(double v, int digits) {
     if (!(v > 0.0) || !std::isfinite(v))
         return v;
-    const double scale = std::pow(10.0, std::floor(std::log10(v)) - (digits - 1));
+    const double scale = lut::math::pow(10.0, std::floor(lut::math::log10(v)) - (digits - 1));
     const double up = std::ceil(v / scale) * scale;
     return up < v ? std::nextafter(up, INFINITY) : up;
 }
@@ -17,7 +18,7 @@ double roundUpSignificant(double v, int digits) {
 double roundUpDecimals(double v, int decimals) {
     if (!(v > 0.0) || !std::isfinite(v))
         return v;
-    const double scale = std::pow(10.0, decimals);
+    const double scale = lut::math::pow(10.0, decimals);
     const double up = std::ceil(v * scale) / scale;
     return up < v ? std::nextafter(up, INFINITY) : up;
 }

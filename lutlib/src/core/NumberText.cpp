@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <string>
 
 // GCC's standard library has floating-point from_chars and to_chars (the Linux and Windows
 // builds); Emscripten's libc++ (the browser edition) has neither.
@@ -149,13 +148,14 @@ std::to_chars_result toCharsPortable(char* first, char* last, double value) {
 
 std::to_chars_result toCharsFixedPortable(char* first, char* last, double value, int precision) {
     // printf's %.Nf is correctly rounded in glibc, musl and MinGW-w64's own printf, as
-    // std::to_chars with a precision is.
-    const int n = std::snprintf(nullptr, 0, "%.*f", precision, value);
-    if (n < 0 || last - first < n)
+    // std::to_chars with a precision is. A double has at most 309 digits before the point.
+    if (precision < 0 || precision > 64)
+        return {last, std::errc::invalid_argument};
+    char buf[400];
+    const int n = std::snprintf(buf, sizeof buf, "%.*f", precision, value);
+    if (n < 0 || n >= static_cast<int>(sizeof buf))
         return {last, std::errc::value_too_large};
-    std::string text(static_cast<std::size_t>(n) + 1, '\0');
-    std::snprintf(text.data(), text.size(), "%.*f", precision, value);
-    return put(first, last, text.data(), static_cast<std::size_t>(n));
+    return put(first, last, buf, static_cast<std::size_t>(n));
 }
 
 } // namespace detail

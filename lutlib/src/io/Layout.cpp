@@ -2,6 +2,7 @@
 #include "lut/io/Layout.h"
 
 #include "lut/Error.h"
+#include "lut/Math.h"
 
 #include <cmath>
 
@@ -106,7 +107,8 @@ std::vector<LayoutFit> layoutsForImageSize(int width, int height) {
         fits.push_back({LutLayout::Smush, height});
     }
     if (width == height && width >= 8) {
-        const int level = static_cast<int>(std::lround(std::cbrt(static_cast<double>(width))));
+        const int level =
+            static_cast<int>(std::lround(lut::math::cbrt(static_cast<double>(width))));
         if (level >= 2 && level * level * level == width && level * level <= 256)
             fits.push_back({LutLayout::Hald, level * level});
     }

@@ -3,6 +3,7 @@
 // lut/match/DistributionDistance.h.
 #include "lut/match/DistributionDistance.h"
 
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/ops/ColorDifference.h"
 
@@ -72,7 +73,7 @@ const std::vector<glm::dvec3>& ColourDistribution::directions() {
         for (int i = 0; i < kDirections; ++i) {
             const double z = 1.0 - (i + 0.5) / kDirections; // (0, 1]
             const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-            d.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
+            d.emplace_back(r * lut::math::cos(golden * i), r * lut::math::sin(golden * i), z);
         }
         return d;
     }();

@@ -3,6 +3,7 @@
 #include "lut/match/HistogramMatch.h"
 
 #include "lut/Error.h"
+#include "lut/Math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -255,7 +256,7 @@ ChannelCurve matchHistograms(const ChannelHistogram& source, const ChannelHistog
         double ksum = 0.0;
         for (int i = -radius; i <= radius; ++i)
             ksum += kernel[static_cast<std::size_t>(i + radius)] =
-                std::exp(-0.5 * (i * i) / (sigma * sigma));
+                lut::math::exp(-0.5 * (i * i) / (sigma * sigma));
         for (double& k : kernel)
             k /= ksum;
         const std::ptrdiff_t end = static_cast<std::ptrdiff_t>(count) - 1;

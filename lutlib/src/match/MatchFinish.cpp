@@ -2,6 +2,7 @@
 // Strength and preserve for a matched colour: see lut/match/MatchFinish.h.
 #include "lut/match/MatchFinish.h"
 
+#include "lut/Math.h"
 #include "lut/match/WorkingSpace.h"
 #include "lut/ops/ColorDifference.h"
 #include "lut/ops/Strength.h"
@@ -33,16 +34,16 @@ glm::dvec3 display(const glm::dvec3& c, bool linear) {
 
 double neutralWeight(const glm::dvec3& c) {
     const glm::dvec3 lab = srgbToLab(c);
-    const double chroma = std::hypot(lab.y, lab.z);
+    const double chroma = lut::math::hypot(lab.y, lab.z);
     return 1.0 - smoothstep(6.0, 18.0, chroma);
 }
 
 double skinWeight(const glm::dvec3& c) {
     const glm::dvec3 lab = srgbToLab(c);
-    const double chroma = std::hypot(lab.y, lab.z);
+    const double chroma = lut::math::hypot(lab.y, lab.z);
     if (chroma < 5.0)
         return 0.0;
-    double hue = std::atan2(lab.z, lab.y) * 180.0 / 3.14159265358979323846;
+    double hue = lut::math::atan2(lab.z, lab.y) * 180.0 / 3.14159265358979323846;
     if (hue < 0.0)
         hue += 360.0;
     const double h = smoothstep(15.0, 30.0, hue) * (1.0 - smoothstep(70.0, 85.0, hue));

@@ -2,6 +2,7 @@
 // Sliced transport and the monotone lattice fit of its displacements: see match/TransportFit.h.
 #include "match/TransportFit.h"
 
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/match/HistogramMatch.h"
 
@@ -31,8 +32,8 @@ glm::dmat3 rotation(int k) {
     constexpr double twoPi = 6.283185307179586;
     // Shoemake's uniform quaternion from three numbers in [0, 1)
     const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
-    const double qx = a * std::sin(twoPi * u2), qy = a * std::cos(twoPi * u2);
-    const double qz = b * std::sin(twoPi * u3), qw = b * std::cos(twoPi * u3);
+    const double qx = a * lut::math::sin(twoPi * u2), qy = a * lut::math::cos(twoPi * u2);
+    const double qz = b * lut::math::sin(twoPi * u3), qw = b * lut::math::cos(twoPi * u3);
     glm::dmat3 m;
     m[0] = {1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qz * qw), 2 * (qx * qz - qy * qw)};
     m[1] = {2 * (qx * qy - qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz + qx * qw)};

@@ -3,6 +3,7 @@
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -33,7 +34,7 @@ double sanitizeParam(double v, double lo, double hi, double fallback) {
 
 // Odd extension of pow so negative entries (wide-gamut grades) stay defined.
 double spow(double x, double p) {
-    return x < 0.0 ? -std::pow(-x, p) : std::pow(x, p);
+    return x < 0.0 ? -lut::math::pow(-x, p) : lut::math::pow(x, p);
 }
 glm::dvec3 spow(glm::dvec3 v, glm::dvec3 p) {
     return {spow(v.x, p.x), spow(v.y, p.y), spow(v.z, p.z)};
@@ -126,7 +127,8 @@ glm::dvec3 whiteBalanceGains(double temperature, double tint) {
     const double n = sanitizeParam(tint, -4.0, 4.0, 0.0);
     if (t == 0.0 && n == 0.0)
         return glm::dvec3(1.0);
-    const glm::dvec3 g{std::exp2(0.25 * t), std::exp2(-0.25 * n), std::exp2(-0.25 * t)};
+    const glm::dvec3 g{lut::math::exp2(0.25 * t), lut::math::exp2(-0.25 * n),
+                       lut::math::exp2(-0.25 * t)};
     return g / dot3(g, kLuma);
 }
 
@@ -136,7 +138,7 @@ glm::dvec3 adjustWhiteBalance(glm::dvec3 e, double temperature, double tint) {
 
 glm::dvec3 adjustExposure(glm::dvec3 e, double stops) {
     const double s = sanitizeParam(stops, -32.0, 32.0, 0.0);
-    return applyLinearGains(sanitize(e), glm::dvec3(std::exp2(s)));
+    return applyLinearGains(sanitize(e), glm::dvec3(lut::math::exp2(s)));
 }
 
 glm::dvec3 adjustContrast(glm::dvec3 e, double contrast) {
@@ -231,7 +233,7 @@ glm::dvec3 colorWheelOffset(double hueDegrees, double amount) {
 glm::dvec3 adjustColor(glm::dvec3 e, const Adjustments& a) {
     e = sanitize(e);
     const double stops = sanitizeParam(a.exposure, -32.0, 32.0, 0.0);
-    e = applyLinearGains(e, whiteBalanceGains(a.temperature, a.tint) * std::exp2(stops));
+    e = applyLinearGains(e, whiteBalanceGains(a.temperature, a.tint) * lut::math::exp2(stops));
     e = adjustContrast(e, a.contrast);
     e = adjustLiftGammaGain(e, glm::dvec3(a.liftMaster) + a.lift, a.gammaMaster * a.gamma,
                             a.gainMaster * a.gain);

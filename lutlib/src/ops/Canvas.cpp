@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ops/Canvas.h"
+#include "lut/Math.h"
 
 #include <algorithm>
 #include <cctype>
@@ -87,7 +88,7 @@ double segmentDistance(double px, double py, double x0, double y0, double x1, do
     const double len2 = dx * dx + dy * dy;
     double t = len2 > 0 ? ((px - x0) * dx + (py - y0) * dy) / len2 : 0.0;
     t = std::clamp(t, 0.0, 1.0);
-    return std::hypot(px - (x0 + t * dx), py - (y0 + t * dy));
+    return lut::math::hypot(px - (x0 + t * dx), py - (y0 + t * dy));
 }
 
 } // namespace
@@ -214,7 +215,7 @@ void Canvas::disc(double cx, double cy, double radius, glm::vec3 colour) {
     const int y1 = static_cast<int>(std::ceil(cy + radius + 1));
     for (int y = std::max(0, y0); y <= std::min(height() - 1, y1); ++y)
         for (int x = std::max(0, x0); x <= std::min(width() - 1, x1); ++x) {
-            const double d = std::hypot(x - cx, y - cy);
+            const double d = lut::math::hypot(x - cx, y - cy);
             blend(x, y, colour, static_cast<float>(std::clamp(radius + 0.5 - d, 0.0, 1.0)));
         }
 }

@@ -2,6 +2,7 @@
 #include "lut/ops/ColorDifference.h"
 
 #include "lut/Limits.h"
+#include "lut/Math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,7 @@ double finiteOrZero(double v) {
 
 double decode(double v) {
     const double a = std::fabs(v);
-    const double lin = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    const double lin = a <= 0.04045 ? a / 12.92 : lut::math::pow((a + 0.055) / 1.055, 2.4);
     return v < 0.0 ? -lin : lin;
 }
 
@@ -34,7 +35,7 @@ constexpr double kWhite[3] = {kM[0][0] + kM[0][1] + kM[0][2], kM[1][0] + kM[1][1
 
 double labF(double t) {
     constexpr double d = 6.0 / 29.0;
-    return t > d * d * d ? std::cbrt(t) : t / (3.0 * d * d) + 4.0 / 29.0;
+    return t > d * d * d ? lut::math::cbrt(t) : t / (3.0 * d * d) + 4.0 / 29.0;
 }
 
 double deg(double rad) {
@@ -71,16 +72,16 @@ glm::dvec3 srgbToLab(glm::dvec3 encoded) {
 double deltaE2000(glm::dvec3 lab1, glm::dvec3 lab2) {
     const double L1 = lab1.x, a1 = lab1.y, b1 = lab1.z;
     const double L2 = lab2.x, a2 = lab2.y, b2 = lab2.z;
-    const double C1 = std::hypot(a1, b1), C2 = std::hypot(a2, b2);
+    const double C1 = lut::math::hypot(a1, b1), C2 = lut::math::hypot(a2, b2);
     const double Cbar = 0.5 * (C1 + C2);
-    const double Cbar7 = std::pow(Cbar, 7.0);
-    const double G = 0.5 * (1.0 - std::sqrt(Cbar7 / (Cbar7 + std::pow(25.0, 7.0))));
+    const double Cbar7 = lut::math::pow(Cbar, 7.0);
+    const double G = 0.5 * (1.0 - std::sqrt(Cbar7 / (Cbar7 + lut::math::pow(25.0, 7.0))));
     const double a1p = (1.0 + G) * a1, a2p = (1.0 + G) * a2;
-    const double C1p = std::hypot(a1p, b1), C2p = std::hypot(a2p, b2);
+    const double C1p = lut::math::hypot(a1p, b1), C2p = lut::math::hypot(a2p, b2);
     auto hueAngle = [](double b, double ap) {
         if (b == 0.0 && ap == 0.0)
             return 0.0;
-        const double h = deg(std::atan2(b, ap));
+        const double h = deg(lut::math::atan2(b, ap));
         return h < 0.0 ? h + 360.0 : h;
     };
     const double h1p = hueAngle(b1, a1p), h2p = hueAngle(b2, a2p);
@@ -93,7 +94,7 @@ double deltaE2000(glm::dvec3 lab1, glm::dvec3 lab2) {
         else if (dhp < -180.0)
             dhp += 360.0;
     }
-    const double dHp = 2.0 * std::sqrt(C1p * C2p) * std::sin(rad(dhp) / 2.0);
+    const double dHp = 2.0 * std::sqrt(C1p * C2p) * lut::math::sin(rad(dhp) / 2.0);
     const double Lbarp = 0.5 * (L1 + L2), Cbarp = 0.5 * (C1p + C2p);
     double hbarp = h1p + h2p;
     if (C1p * C2p != 0.0) {
@@ -102,17 +103,18 @@ double deltaE2000(glm::dvec3 lab1, glm::dvec3 lab2) {
         else
             hbarp = hbarp < 360.0 ? 0.5 * (hbarp + 360.0) : 0.5 * (hbarp - 360.0);
     }
-    const double T = 1.0 - 0.17 * std::cos(rad(hbarp - 30.0)) + 0.24 * std::cos(rad(2.0 * hbarp)) +
-                     0.32 * std::cos(rad(3.0 * hbarp + 6.0)) -
-                     0.20 * std::cos(rad(4.0 * hbarp - 63.0));
-    const double dTheta = 30.0 * std::exp(-std::pow((hbarp - 275.0) / 25.0, 2.0));
-    const double Cbarp7 = std::pow(Cbarp, 7.0);
-    const double RC = 2.0 * std::sqrt(Cbarp7 / (Cbarp7 + std::pow(25.0, 7.0)));
+    const double T = 1.0 - 0.17 * lut::math::cos(rad(hbarp - 30.0)) +
+                     0.24 * lut::math::cos(rad(2.0 * hbarp)) +
+                     0.32 * lut::math::cos(rad(3.0 * hbarp + 6.0)) -
+                     0.20 * lut::math::cos(rad(4.0 * hbarp - 63.0));
+    const double dTheta = 30.0 * lut::math::exp(-lut::math::pow((hbarp - 275.0) / 25.0, 2.0));
+    const double Cbarp7 = lut::math::pow(Cbarp, 7.0);
+    const double RC = 2.0 * std::sqrt(Cbarp7 / (Cbarp7 + lut::math::pow(25.0, 7.0)));
     const double l50 = (Lbarp - 50.0) * (Lbarp - 50.0);
     const double SL = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);
     const double SC = 1.0 + 0.045 * Cbarp;
     const double SH = 1.0 + 0.015 * Cbarp * T;
-    const double RT = -std::sin(rad(2.0 * dTheta)) * RC;
+    const double RT = -lut::math::sin(rad(2.0 * dTheta)) * RC;
     const double tL = dLp / SL, tC = dCp / SC, tH = dHp / SH;
     const double sq = tL * tL + tC * tC + tH * tH + RT * tC * tH;
     return std::sqrt(std::max(0.0, sq));

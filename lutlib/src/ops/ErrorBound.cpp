@@ -2,6 +2,7 @@
 // The held-out bound of a lattice approximation's error; see lut/ops/ErrorBound.h.
 #include "lut/ops/ErrorBound.h"
 
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 
@@ -145,8 +146,8 @@ int gridIntervals(const BoundOptions& o, int cells) {
         return cells * o.perCell;
     if (o.greyOnly) // a curve: up to 64 points per entry interval, at most ~2^18 in all
         return cells * std::clamp(static_cast<int>(262144 / std::max(1, cells)), 1, 64);
-    const int perAxis = std::max(
-        1, static_cast<int>(std::cbrt(static_cast<double>(std::max<std::size_t>(o.budget, 1)))));
+    const int perAxis = std::max(1, static_cast<int>(lut::math::cbrt(
+                                        static_cast<double>(std::max<std::size_t>(o.budget, 1)))));
     if (o.constantBetweenBreaks)
         return std::min(cells, perAxis);
     return cells >= perAxis ? perAxis : cells * std::max(1, perAxis / cells);
@@ -447,7 +448,7 @@ ErrorStats boundError(const DifferenceFn& fn, const BoundOptions& o) {
     for (int a = 0; a < (o.greyOnly ? 1 : 3); ++a)
         gridPoints *= intervals + static_cast<double>(o.breaks[static_cast<std::size_t>(a)].size());
     if (gridPoints > 16.0 * static_cast<double>(std::max<std::size_t>(o.budget, 1)) &&
-        gridPoints > std::pow(static_cast<double>(intervals), o.greyOnly ? 1.0 : 3.0)) {
+        gridPoints > lut::math::pow(static_cast<double>(intervals), o.greyOnly ? 1.0 : 3.0)) {
         for (auto& all : opts.breaks)
             all.clear();
         opts.constantBetweenBreaks = false;

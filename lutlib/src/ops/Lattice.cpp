@@ -2,6 +2,7 @@
 #include "lut/ops/Lattice.h"
 
 #include "lut/Error.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 
@@ -57,7 +58,7 @@ LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& q) {
     // Per axis: every cell (at most perAxis of them, evenly spread, on the largest lattices), each
     // at perCell fractions.
     const int cells = size - 1;
-    const int perAxis = static_cast<int>(std::cbrt(kGridPoints));
+    const int perAxis = static_cast<int>(lut::math::cbrt(kGridPoints));
     const int used = std::min(cells, perAxis);
     const int perCell = std::max(1, perAxis / cells);
     const int axis = used * perCell;

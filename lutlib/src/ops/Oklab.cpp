@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/ops/Oklab.h"
 
+#include "lut/Math.h"
 #include "lut/ops/ColorDifference.h"
 
 #include <glm/mat3x3.hpp>
@@ -28,7 +29,7 @@ const glm::dmat3 kM2Inv = glm::inverse(kM2);
 
 double encode(double v) {
     const double a = std::fabs(v);
-    const double e = a <= 0.0031308 ? 12.92 * a : 1.055 * std::pow(a, 1.0 / 2.4) - 0.055;
+    const double e = a <= 0.0031308 ? 12.92 * a : 1.055 * lut::math::pow(a, 1.0 / 2.4) - 0.055;
     return v < 0.0 ? -e : e;
 }
 
@@ -36,7 +37,7 @@ double encode(double v) {
 
 glm::dvec3 linearSrgbToOklab(glm::dvec3 c) {
     const glm::dvec3 lms = kM1 * c;
-    return kM2 * glm::dvec3(std::cbrt(lms.x), std::cbrt(lms.y), std::cbrt(lms.z));
+    return kM2 * glm::dvec3(lut::math::cbrt(lms.x), lut::math::cbrt(lms.y), lut::math::cbrt(lms.z));
 }
 
 glm::dvec3 oklabToLinearSrgb(glm::dvec3 lab) {
@@ -55,17 +56,17 @@ glm::dvec3 oklabToSrgb(glm::dvec3 lab) {
 }
 
 double oklabHue(glm::dvec3 lab) {
-    const double h = std::atan2(lab.z, lab.y) * 180.0 / std::numbers::pi;
+    const double h = lut::math::atan2(lab.z, lab.y) * 180.0 / std::numbers::pi;
     return h < 0.0 ? h + 360.0 : (h >= 360.0 ? h - 360.0 : h);
 }
 
 double oklabChroma(glm::dvec3 lab) {
-    return std::hypot(lab.y, lab.z);
+    return lut::math::hypot(lab.y, lab.z);
 }
 
 glm::dvec3 oklabFromLch(double lightness, double chroma, double hueDegrees) {
     const double h = hueDegrees * std::numbers::pi / 180.0;
-    return {lightness, chroma * std::cos(h), chroma * std::sin(h)};
+    return {lightness, chroma * lut::math::cos(h), chroma * lut::math::sin(h)};
 }
 
 double hueDifference(double from, double to) {

@@ -2,6 +2,7 @@
 #include "lut/ops/Plot.h"
 
 #include "lut/Error.h"
+#include "lut/Math.h"
 #include "lut/interp/Sampler.h"
 #include "ops/Canvas.h"
 #include "ops/OpsDetail.h"
@@ -143,10 +144,12 @@ void drawLattice(detail::Canvas& cv, const Sampler& s, const Lut3D& lut, int poi
     const glm::dvec3 up = glm::dvec3(1, 1, 1) / std::sqrt(3.0);
     const glm::dvec3 e1 = glm::dvec3(1, -1, 0) / std::sqrt(2.0);
     const glm::dvec3 e2 = glm::dvec3(1, 1, -2) / std::sqrt(6.0);
-    const glm::dvec3 right = std::cos(kAzimuth) * e1 + std::sin(kAzimuth) * e2;
-    const glm::dvec3 front = -std::sin(kAzimuth) * e1 + std::cos(kAzimuth) * e2;
-    const glm::dvec3 toViewer = std::cos(kElevation) * front + std::sin(kElevation) * up;
-    const glm::dvec3 screenUp = -std::sin(kElevation) * front + std::cos(kElevation) * up;
+    const glm::dvec3 right = lut::math::cos(kAzimuth) * e1 + lut::math::sin(kAzimuth) * e2;
+    const glm::dvec3 front = -lut::math::sin(kAzimuth) * e1 + lut::math::cos(kAzimuth) * e2;
+    const glm::dvec3 toViewer =
+        lut::math::cos(kElevation) * front + lut::math::sin(kElevation) * up;
+    const glm::dvec3 screenUp =
+        -lut::math::sin(kElevation) * front + lut::math::cos(kElevation) * up;
     const double scale = 0.44 * r.width;
     const double cx = r.x + 0.5 * r.width, cy = r.y + 0.5 * r.height;
     auto project = [&](glm::dvec3 p) {
@@ -194,7 +197,7 @@ void drawLattice(detail::Canvas& cv, const Sampler& s, const Lut3D& lut, int poi
     for (int i = 0; i < 8; ++i) {
         const Projected p = project(corners[i]);
         const Projected c = project(glm::dvec3(0.5));
-        const double dx = p.x - c.x, dy = p.y - c.y, len = std::max(1.0, std::hypot(dx, dy));
+        const double dx = p.x - c.x, dy = p.y - c.y, len = std::max(1.0, lut::math::hypot(dx, dy));
         cv.text(static_cast<int>(p.x + 16 * dx / len) - 5,
                 static_cast<int>(p.y + 16 * dy / len) - 7, names[i], kDim);
     }

@@ -2,6 +2,7 @@
 #include "lut/ops/Smooth.h"
 
 #include "lut/Error.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/ops/CompareLuts.h"
 #include "ops/OpsDetail.h"
@@ -112,7 +113,7 @@ OpResult smooth(const Lut3D& lut, double sigma, int nthreads) {
     std::vector<double> kernel(static_cast<std::size_t>(radius) + 1);
     double sum = 0.0;
     for (int k = 0; k <= radius; ++k) {
-        kernel[static_cast<std::size_t>(k)] = std::exp(-0.5 * k * k / (sigma * sigma));
+        kernel[static_cast<std::size_t>(k)] = lut::math::exp(-0.5 * k * k / (sigma * sigma));
         sum += (k == 0 ? 1.0 : 2.0) * kernel[static_cast<std::size_t>(k)];
     }
     for (double& k : kernel)

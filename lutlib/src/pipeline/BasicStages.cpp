@@ -4,6 +4,7 @@
 #include "ArrayKernels.h"
 #include "StageDetail.h"
 #include "lut/Limits.h"
+#include "lut/Math.h"
 
 #include <cstdint>
 #include <cstring>
@@ -68,7 +69,7 @@ public:
     void processRows(const ImageView& f, int y0, int y1, const StageContext&) const override {
         if (m_stops == 0.0f)
             return;
-        const float k = std::exp2(m_stops);
+        const float k = lut::math::exp2(m_stops);
         for (int y = y0; y < y1; ++y) {
             float* p = f.row(y);
             for (int x = 0; x < f.width; ++x, p += 4) {

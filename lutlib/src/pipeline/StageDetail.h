@@ -5,6 +5,7 @@
 #include "lut/Image.h"
 #include "lut/Lut1D.h"
 #include "lut/Lut3D.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/interp/Sampler.h"
@@ -166,7 +167,7 @@ inline std::vector<float> gaussianWeights(float sigma) {
     std::vector<double> d(r + 1);
     double sum = 0.0;
     for (int k = 0; k <= r; ++k) {
-        d[k] = std::exp(-0.5 * k * k / (static_cast<double>(sigma) * sigma));
+        d[k] = lut::math::exp(-0.5 * k * k / (static_cast<double>(sigma) * sigma));
         sum += k == 0 ? d[k] : 2.0 * d[k];
     }
     std::vector<float> w(r + 1);

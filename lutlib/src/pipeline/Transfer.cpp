@@ -3,6 +3,7 @@
 
 #include "core/FastMath.h"
 #include "lut/Limits.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 
 #include <cmath>
@@ -12,14 +13,14 @@ namespace lut {
 float srgbEncode(float x) {
     x = detail::sanitizeValue(x, limits::kMaxColorValue);
     const float a = std::fabs(x);
-    const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * std::pow(a, 1.0f / 2.4f) - 0.055f;
+    const float e = a <= 0.0031308f ? 12.92f * a : 1.055f * lut::math::pow(a, 1.0f / 2.4f) - 0.055f;
     return x < 0.0f ? -e : e;
 }
 
 float srgbDecode(float x) {
     x = detail::sanitizeValue(x, limits::kMaxColorValue);
     const float a = std::fabs(x);
-    const float d = a <= 0.04045f ? a / 12.92f : std::pow((a + 0.055f) / 1.055f, 2.4f);
+    const float d = a <= 0.04045f ? a / 12.92f : lut::math::pow((a + 0.055f) / 1.055f, 2.4f);
     return x < 0.0f ? -d : d;
 }
 
@@ -27,14 +28,14 @@ float gammaEncode(float x, float gamma) {
     x = detail::sanitizeValue(x, limits::kMaxColorValue);
     if (!(x > 0.0f) || !(gamma > 0.0f))
         return 0.0f;
-    return std::pow(x, 1.0f / gamma);
+    return lut::math::pow(x, 1.0f / gamma);
 }
 
 float gammaDecode(float x, float gamma) {
     x = detail::sanitizeValue(x, limits::kMaxColorValue);
     if (!(x > 0.0f) || !(gamma > 0.0f))
         return 0.0f;
-    return std::pow(x, gamma);
+    return lut::math::pow(x, gamma);
 }
 
 template <class F> static void eachRgb(const ImageView& frame, int nthreads, F f) {

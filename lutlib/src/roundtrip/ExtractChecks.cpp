@@ -4,6 +4,7 @@
 
 #include "smash/GameDisplay.h"
 
+#include "lut/Math.h"
 #include "lut/io/Layout.h"
 #include "lut/roundtrip/EditCause.h"
 #include "roundtrip/MarkerFrame.h"
@@ -107,8 +108,8 @@ void checkGreys(const PatchReading& patch, ExtractResult& res) {
             const double a = patch.axis[i], y = patch.values.at(i, i, i)[c];
             if (a < 0.1 || a > 0.95 || y < 0.01)
                 continue;
-            sxy += std::log(a) * std::log(y);
-            sxx += std::log(a) * std::log(a);
+            sxy += lut::math::log(a) * lut::math::log(y);
+            sxx += lut::math::log(a) * lut::math::log(a);
         }
         if (sxx <= 0.0)
             return;
@@ -117,11 +118,11 @@ void checkGreys(const PatchReading& patch, ExtractResult& res) {
         ++used;
         for (int i = 0; i < n; ++i) {
             const double a = patch.axis[i], y = patch.values.at(i, i, i)[c];
-            worstPowerFit = std::max(worstPowerFit, std::fabs(std::pow(a, gammas[c]) - y));
-            worstSrgbTo22 =
-                std::max(worstSrgbTo22, std::fabs(std::pow(srgbDecodeUnit(a), 1.0 / 2.2) - y));
+            worstPowerFit = std::max(worstPowerFit, std::fabs(lut::math::pow(a, gammas[c]) - y));
+            worstSrgbTo22 = std::max(worstSrgbTo22,
+                                     std::fabs(lut::math::pow(srgbDecodeUnit(a), 1.0 / 2.2) - y));
             worst22ToSrgb =
-                std::max(worst22ToSrgb, std::fabs(srgbEncodeUnit(std::pow(a, 2.2)) - y));
+                std::max(worst22ToSrgb, std::fabs(srgbEncodeUnit(lut::math::pow(a, 2.2)) - y));
         }
     }
     if (used != 3)

@@ -2,6 +2,7 @@
 // The game's display model in double; see GameDisplay.h.
 #include "smash/GameDisplay.h"
 
+#include "lut/Math.h"
 #include "lut/smash/SmashConstants.h"
 
 #include <algorithm>
@@ -22,7 +23,7 @@ double srgbEncodeUnit(double x) {
         return 0.0;
     if (x >= 1.0)
         return 1.0;
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * lut::math::pow(x, 1.0 / 2.4) - 0.055;
 }
 
 double srgbDecodeUnit(double v) {
@@ -30,14 +31,14 @@ double srgbDecodeUnit(double v) {
         return 0.0;
     if (v >= 1.0)
         return 1.0;
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+    return v <= 0.04045 ? v / 12.92 : lut::math::pow((v + 0.055) / 1.055, 2.4);
 }
 
 double srgbEncodeExtended(double x) {
     if (!(x == x))
         return 0.0;
     const double a = std::fabs(x);
-    const double e = a <= 0.0031308 ? 12.92 * a : 1.055 * std::pow(a, 1.0 / 2.4) - 0.055;
+    const double e = a <= 0.0031308 ? 12.92 * a : 1.055 * lut::math::pow(a, 1.0 / 2.4) - 0.055;
     return x < 0 ? -e : e;
 }
 
@@ -45,7 +46,7 @@ double srgbDecodeExtended(double e) {
     if (!(e == e))
         return 0.0;
     const double a = std::fabs(e);
-    const double x = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    const double x = a <= 0.04045 ? a / 12.92 : lut::math::pow((a + 0.055) / 1.055, 2.4);
     return e < 0 ? -x : x;
 }
 
@@ -55,7 +56,7 @@ double clampUnit(double v) {
 
 double gameShown(double lutOut, double s) {
     const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
-    return srgbEncodeUnit(clampUnit(std::pow(std::max(r, 0.0), kGammaDecode)));
+    return srgbEncodeUnit(clampUnit(lut::math::pow(std::max(r, 0.0), kGammaDecode)));
 }
 
 namespace {
@@ -67,7 +68,8 @@ public:
     ShownOfBrightened() : m_v(kSize + 2) {
         for (int i = 0; i <= kSize + 1; ++i) {
             const double r = kMax * i / kSize;
-            m_v[static_cast<std::size_t>(i)] = srgbEncodeUnit(clampUnit(std::pow(r, kGammaDecode)));
+            m_v[static_cast<std::size_t>(i)] =
+                srgbEncodeUnit(clampUnit(lut::math::pow(r, kGammaDecode)));
         }
     }
     double operator()(double r) const {
@@ -95,31 +97,31 @@ double gameShownTabulated(double lutOut, double s) {
 
 double gameShownUnclipped(double lutOut, double s) {
     const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
-    return srgbEncodeExtended(std::pow(std::max(r, 0.0), kGammaDecode));
+    return srgbEncodeExtended(lut::math::pow(std::max(r, 0.0), kGammaDecode));
 }
 
 double gameShownSlope(double lutOut, double s) {
     const double r = ((lutOut - s) * kBrightenMix + s) * kBrightenScale;
     if (!(r > 0.0))
         return 0.0;
-    const double x = std::pow(r, kGammaDecode);
+    const double x = lut::math::pow(r, kGammaDecode);
     if (x >= 1.0)
         return 0.0;
     const double dx =
-        kGammaDecode * std::pow(r, kGammaDecode - 1.0) * kBrightenScale * kBrightenMix;
-    const double de = x <= 0.0031308 ? 12.92 : 1.055 / 2.4 * std::pow(x, 1.0 / 2.4 - 1.0);
+        kGammaDecode * lut::math::pow(r, kGammaDecode - 1.0) * kBrightenScale * kBrightenMix;
+    const double de = x <= 0.0031308 ? 12.92 : 1.055 / 2.4 * lut::math::pow(x, 1.0 / 2.4 - 1.0);
     return de * dx;
 }
 
 double lutForShown(double display, double s) {
     const double t = srgbDecodeExtended(display);
-    const double r = t > 0.0 ? std::pow(t, 1.0 / kGammaDecode) : 0.0;
+    const double r = t > 0.0 ? lut::math::pow(t, 1.0 / kGammaDecode) : 0.0;
     return (r / kBrightenScale - s) / kBrightenMix + s;
 }
 
 double gameDisplayLatticeValue(int index) {
     const double s = index / static_cast<double>(kSmashLutSize - 1);
-    return srgbEncodeUnit(clampUnit(std::pow(s * kBrightenScale, kGammaDecode)));
+    return srgbEncodeUnit(clampUnit(lut::math::pow(s * kBrightenScale, kGammaDecode)));
 }
 
 } // namespace lut::detail

@@ -4,6 +4,7 @@
 #include "lut/smash/PurposeConversion.h"
 
 #include "lut/Error.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 #include "lut/smash/SmashConstants.h"
@@ -23,7 +24,8 @@ namespace {
 // The neutral game's input s for a display value d (per channel): the inverse of
 // srgb(min(1, (s * 1.3703)^2.2)); white is taken where it starts.
 double neutralInputFor(double d) {
-    return std::pow(detail::srgbDecodeUnit(d), 1.0 / static_cast<double>(kSmashDecodeExponent)) /
+    return lut::math::pow(detail::srgbDecodeUnit(d),
+                          1.0 / static_cast<double>(kSmashDecodeExponent)) /
            static_cast<double>(kSmashBrightenScale);
 }
 
@@ -34,8 +36,8 @@ std::vector<double> kinks(int n) {
     for (int i = 1; i < n - 1; ++i) {
         const double s = i / static_cast<double>(n - 1);
         const double d = detail::srgbEncodeUnit(
-            detail::clampUnit(std::pow(s * static_cast<double>(kSmashBrightenScale),
-                                       static_cast<double>(kSmashDecodeExponent))));
+            detail::clampUnit(lut::math::pow(s * static_cast<double>(kSmashBrightenScale),
+                                             static_cast<double>(kSmashDecodeExponent))));
         if (d < 1.0)
             out.push_back(d);
     }

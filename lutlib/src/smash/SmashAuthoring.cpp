@@ -5,6 +5,7 @@
 
 #include "lut/Error.h"
 #include "lut/ErrorStats.h"
+#include "lut/Math.h"
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/QuantizeLut.h"
@@ -80,7 +81,7 @@ glm::dvec3 inputForShown(const glm::dvec3& d, const StageModel& stage, std::size
             if (d[c] >= 1.0 - 1e-7) // white: any input above the clip point showed it
                 s[c] = clipS + (1.0 - clipS) * spread(p, c);
             else
-                s[c] = std::pow(detail::srgbDecodeUnit(d[c]), 1.0 / kSmashDecodeExponent) /
+                s[c] = lut::math::pow(detail::srgbDecodeUnit(d[c]), 1.0 / kSmashDecodeExponent) /
                        kSmashBrightenScale;
         }
         return s;

@@ -7,6 +7,7 @@
 
 #include "core/FastMath.h"
 #include "lut/Limits.h"
+#include "lut/Math.h"
 #include "lut/Parallel.h"
 
 #include <algorithm>
@@ -22,7 +23,7 @@ using detail::sanitizeValue;
 
 float smashEncode(float x) {
     x = sanitizeValue(x, limits::kMaxColorValue);
-    return x > 0.0f ? std::pow(x, kSmashEncodeExponent) : 0.0f;
+    return x > 0.0f ? lut::math::pow(x, kSmashEncodeExponent) : 0.0f;
 }
 
 glm::vec3 smashEncode(glm::vec3 v) {
@@ -31,14 +32,14 @@ glm::vec3 smashEncode(glm::vec3 v) {
 
 float smashEncodeInverse(float s) {
     s = sanitizeValue(s, 1.0e6f);
-    return s > 0.0f
-               ? static_cast<float>(std::pow(static_cast<double>(s), 1.0 / kSmashEncodeExponent))
-               : 0.0f;
+    return s > 0.0f ? static_cast<float>(
+                          lut::math::pow(static_cast<double>(s), 1.0 / kSmashEncodeExponent))
+                    : 0.0f;
 }
 
 float smashDecode(float r) {
     r = sanitizeValue(r, 1.0e6f);
-    return r > 0.0f ? std::pow(r, kSmashDecodeExponent) : 0.0f;
+    return r > 0.0f ? lut::math::pow(r, kSmashDecodeExponent) : 0.0f;
 }
 
 glm::vec3 smashBrighten(glm::vec3 lutOut, glm::vec3 s) {
@@ -69,7 +70,7 @@ glm::vec3 smashLutEntryForTarget(glm::vec3 targetLinear, glm::vec3 s) {
     glm::vec3 r;
     for (int c = 0; c < 3; ++c) {
         const double t = sanitizeValue(targetLinear[c], limits::kMaxColorValue);
-        r[c] = static_cast<float>(t > 0.0 ? std::pow(t, 1.0 / kSmashDecodeExponent) : 0.0);
+        r[c] = static_cast<float>(t > 0.0 ? lut::math::pow(t, 1.0 / kSmashDecodeExponent) : 0.0);
     }
     return smashBrightenInverse(r, s);
 }
@@ -99,10 +100,10 @@ struct GradeMap {
             return glm::dvec3(r);
         glm::dvec3 out;
         for (int c = 0; c < 3; ++c) {
-            const double x = s[c] > 0.0 ? std::pow(s[c], 1.0 / kSmashEncodeExponent) : 0.0;
-            const double g = r[c] > 0.0f ? std::pow(static_cast<double>(r[c]), 2.2) : 0.0;
+            const double x = s[c] > 0.0 ? lut::math::pow(s[c], 1.0 / kSmashEncodeExponent) : 0.0;
+            const double g = r[c] > 0.0f ? lut::math::pow(static_cast<double>(r[c]), 2.2) : 0.0;
             const double f = (1.0 - a) * x + a * g;
-            out[c] = f > 0.0 ? std::pow(f, 1.0 / 2.2) : 0.0;
+            out[c] = f > 0.0 ? lut::math::pow(f, 1.0 / 2.2) : 0.0;
         }
         return out;
     }
@@ -116,7 +117,7 @@ double maxAbs(const glm::dvec3& v) {
 // alone (the brighten pass is per channel), so it can be memoised per value (smashUngrade).
 float neutralUngradeChannel(float v) {
     const float o = std::max(sanitizeValue(v, limits::kMaxColorValue), 0.0f);
-    const double target = o > 0.0f ? std::pow(static_cast<double>(o), 1.0 / 2.2) : 0.0;
+    const double target = o > 0.0f ? lut::math::pow(static_cast<double>(o), 1.0 / 2.2) : 0.0;
     const double k = 1.0 - static_cast<double>(kSmashBrightenMix);
     const double t = target / static_cast<double>(kSmashBrightenScale);
     const double s = t <= 1.0 ? t : (t - static_cast<double>(kSmashBrightenMix)) / k;
@@ -168,7 +169,7 @@ glm::vec3 smashGradeInverse(glm::vec3 outputLinear, float alpha, const Sampler& 
 
     glm::dvec3 target;
     for (int c = 0; c < 3; ++c)
-        target[c] = out[c] > 0.0f ? std::pow(static_cast<double>(out[c]), 1.0 / 2.2) : 0.0;
+        target[c] = out[c] > 0.0f ? lut::math::pow(static_cast<double>(out[c]), 1.0 / 2.2) : 0.0;
     // The neutral solution (exact for an identity LUT with alpha 1: above): the start point.
     const double k = 1.0 - static_cast<double>(kSmashBrightenMix);
     glm::dvec3 s;

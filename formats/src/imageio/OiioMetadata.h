@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// OpenImageIO attribute lists as bytes and a JPEG's IPTC block as attributes (OiioAttributes.cpp),
+// OpenImageIO attribute lists as bytes and a JPEG's IPTC block as attributes (OiioMetadata.cpp),
 // inside lutkit_imageio.so only.
 #include <OpenImageIO/imageio.h>
 

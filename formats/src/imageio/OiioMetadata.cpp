@@ -2,7 +2,7 @@
 // OpenImageIO's attributes as bytes lutkit carries between a source and a sink (ImageMetadata's
 // oiioAttributes), and the metadata blocks lutkit's own readers keep, decoded into attributes.
 // Inside lutkit_imageio.so only.
-#include "imageio/OiioAttributes.h"
+#include "imageio/OiioMetadata.h"
 
 #include <cstdint>
 #include <cstring>
