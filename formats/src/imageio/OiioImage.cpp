@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inside lutkit_imageio.so: OpenImageIO sources and sinks for every format the native codecs do
-// not take (TIFF, JPEG, DPX, BMP, TGA, HDR, WebP, tiled or multi-part EXR ...). No colour
+// not take (TIFF, JPEG, DPX, HDR, WebP, tiled or multi-part EXR ...; BMP and TGA are only written
+// here, BmpCodec.cpp and TgaCodec.cpp read them). No colour
 // conversion is ever applied: stored values in, stored values out. Metadata: OpenImageIO's
 // attributes (EXIF and TIFF tags, the ICC profile, IPTC, XMP, format-specific ones) are kept as
 // exact bytes and given back to the writer.
@@ -70,7 +71,9 @@ OIIO::TypeDesc typeDescOf(PixelType t) {
     return OIIO::TypeDesc::FLOAT;
 }
 
-// ParamValueList <-> bytes: name, type, count, then the values (strings as length + bytes).
+// ParamValueList <-> bytes: name, type, count, then the values (strings as length + bytes). The
+// native BMP and TGA readers write the same layout without OpenImageIO (OiioAttributes.h): a change
+// here is a change there.
 void putInt(std::string& s, std::uint32_t v) {
     s.append(reinterpret_cast<const char*>(&v), 4);
 }
