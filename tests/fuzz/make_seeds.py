@@ -120,6 +120,8 @@ def ocio_seed(name, ext, text, size=0):
 
 data_dir = os.path.join(here, "..", "data", "ocio")
 for f in sorted(os.listdir(data_dir)):
+    if not os.path.isfile(os.path.join(data_dir, f)) or os.path.splitext(f)[1] not in OCIO_EXTS:
+        continue  # configs (.ocio) and the OCIO corpus test's own folder
     with open(os.path.join(data_dir, f), "rb") as fh:
         ocio_seed("data-" + f.replace(".", "-"), os.path.splitext(f)[1], fh.read())
 ocio_seed("cdl-cc", ".cc", '<ColorCorrection id="a"><SOPNode><Slope>1.1 1 0.9</Slope>'
@@ -192,3 +194,60 @@ if oiiotool:
                 with open(out, "rb") as fh:
                     put("patch", "embedded" + ext.replace(".", "-"),
                         bytes([0, PATCH_EXTS.index(ext)]) + fh.read())
+
+# image_apply: the BMP and TGA variants lutkit reads natively (BmpCodec.cpp, TgaCodec.cpp), made
+# by ImageMagick: its RLE8 (an end-of-line before the end-of-bitmap marker), 4- and 1-bit maps,
+# 16-bit masks, 32-bit V5, OS/2 1.x, and a top-down copy; TGA RLE 32-bit, colour-mapped RLE,
+# grey, 16-bit, top-left RLE, and a TGA 2.0 extension area and footer after a file.
+magick = shutil.which("convert")
+if magick:
+    with tempfile.TemporaryDirectory() as tmp:
+        src = os.path.join(tmp, "src.png")
+        subprocess.run([magick, "-seed", "3", "-size", "16x12", "plasma:fractal", "-depth", "8",
+                        src], check=True)
+        alpha = os.path.join(tmp, "alpha.png")
+        subprocess.run([magick, src, "(", "-size", "16x12", "gradient:white-black", ")",
+                        "-alpha", "off", "-compose", "CopyOpacity", "-composite", alpha],
+                       check=True)
+
+        def made(source, args, out):
+            path = os.path.join(tmp, "out")
+            subprocess.run([magick, source, *args, out + path], check=True)
+            with open(path, "rb") as fh:
+                return fh.read()
+
+        def seed(name, ext, data):
+            put("image_apply", name, bytes([IMAGE_EXTS.index(ext)]) + data)
+
+        for name, source, args, prefix in [
+                ("bmp-rle8", src, ["-colors", "200", "-type", "Palette"], "BMP3:"),
+                ("bmp-4", src, ["-colors", "12"], "BMP3:"),
+                ("bmp-1", src, ["-monochrome"], "BMP3:"),
+                ("bmp-565", src, ["-type", "TrueColor", "-define", "bmp:subtype=RGB565"], "BMP:"),
+                ("bmp-32-v5", alpha, [], "BMP:"),
+                ("bmp-os2", src, ["-colors", "200", "-compress", "None"], "BMP2:")]:
+            seed(name, ".bmp", made(source, args, prefix))
+        bmp = bytearray(made(src, ["-type", "TrueColor"], "BMP3:"))
+        off, w, h = (int.from_bytes(bmp[a:a + 4], "little") for a in (10, 18, 22))
+        stride = (w * 24 + 31) // 32 * 4
+        rows = [bytes(bmp[off + r * stride:off + (r + 1) * stride]) for r in range(h)]
+        bmp[off:off + h * stride] = b"".join(reversed(rows))
+        bmp[22:26] = (-h).to_bytes(4, "little", signed=True)
+        seed("bmp-top-down", ".bmp", bytes(bmp))
+        for name, source, args in [
+                ("tga-rle-32", alpha, ["-type", "TrueColorAlpha", "-compress", "RLE"]),
+                ("tga-map-rle", src, ["-colors", "200", "-type", "Palette", "-compress", "RLE"]),
+                ("tga-grey", src, ["-type", "Grayscale"]),
+                ("tga-16", src, ["-type", "TrueColor", "-depth", "5"]),
+                ("tga-top-left-rle", src, ["-orient", "TopLeft", "-compress", "RLE"])]:
+            seed(name, ".tga", made(source, args, "TGA:"))
+        tga = made(alpha, ["-type", "TrueColorAlpha"], "TGA:")
+        ext = bytearray(495)
+        ext[0:2] = (495).to_bytes(2, "little")
+        ext[2:8] = b"author"
+        ext[43:50] = b"comment"
+        ext[426:430] = b"tool"
+        ext[478:482] = (22).to_bytes(2, "little") + (10).to_bytes(2, "little")
+        ext[494] = 3
+        seed("tga-v2", ".tga", tga + bytes(ext) + len(tga).to_bytes(4, "little") + bytes(4)
+             + b"TRUEVISION-XFILE.\0")

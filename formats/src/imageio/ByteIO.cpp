@@ -74,6 +74,15 @@ std::string ByteReader::head(std::size_t n) const {
     return s;
 }
 
+ByteWindow::ByteWindow(const ByteReader& in, std::size_t block) : m_in(in) {
+    m_buf.resize(block);
+}
+
+void ByteWindow::refill() {
+    m_start = m_pos;
+    m_len = m_in.pread(m_buf.data(), m_buf.size(), m_pos);
+}
+
 ByteWriter::ByteWriter(const OutputTarget& target, bool needsSeek)
     : m_file(target), m_buffer(needsSeek && !m_file.seekable()) {}
 

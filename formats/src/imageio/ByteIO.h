@@ -55,6 +55,35 @@ private:
     std::uint64_t m_pos = 0;
 };
 
+// Sequential reads of a ByteReader through a window (one pread per window of `block` bytes): the
+// input of the run-length decoders (BmpCodec.cpp, TgaCodec.cpp), which take a few bytes at a time
+// and jump back to a row's first packet.
+class ByteWindow {
+public:
+    explicit ByteWindow(const ByteReader& in, std::size_t block = std::size_t(1) << 16);
+    std::uint64_t tell() const { return m_pos; }
+    void seek(std::uint64_t pos) { m_pos = pos; }
+    // n bytes (at most the block) at the current position, which moves past them; nullptr when
+    // the file ends before them (the position then stays).
+    const unsigned char* take(std::size_t n) {
+        if (m_pos < m_start || m_pos + n > m_start + m_len)
+            refill();
+        if (m_pos + n > m_start + m_len)
+            return nullptr;
+        const unsigned char* p = m_buf.data() + (m_pos - m_start);
+        m_pos += n;
+        return p;
+    }
+
+private:
+    void refill();
+    const ByteReader& m_in;
+    UninitBytes m_buf;
+    std::uint64_t m_start = 0; // the file offset of m_buf[0]
+    std::size_t m_len = 0;
+    std::uint64_t m_pos = 0;
+};
+
 // Bytes to an output: straight to the OutputFile, or (seekable writes to a stream) kept in
 // memory and written at finish().
 class ByteWriter {

@@ -2,9 +2,9 @@
 #pragma once
 // The streaming seam every image codec implements: an ImageSource hands out rows in the file's
 // own sample type, an ImageSink takes rows in the output's type, both in chunks of whole rows, in
-// order. Native codecs (PNG, OpenEXR scanline files, PNM) are compiled into lutkit_formats; every
-// other format goes through OpenImageIO in the module (ImageIOLoader.cpp loads it and forwards to
-// it; OiioImage.cpp inside it).
+// order. Native codecs (PNG, OpenEXR scanline files, PNM; readers for BMP and TGA) are compiled
+// into lutkit_formats; every other format goes through OpenImageIO in the module
+// (ImageIOLoader.cpp loads it and forwards to it; OiioImage.cpp inside it).
 #include "lut/formats/ImageIO.h"
 #include "lut/io/OutputFile.h"
 
@@ -145,6 +145,9 @@ bool exrIsNative(const std::string& path, const std::string& memory); // single-
 std::unique_ptr<ImageSource> openPnmSource(const std::string& path, std::string memory);
 std::unique_ptr<ImageSource> openJpegSource(const std::string& path, std::string memory);
 std::unique_ptr<ImageSink> createPnmSink(const OutputTarget& target, const SinkSpec& spec);
+// Readers only (OpenImageIO writes these formats).
+std::unique_ptr<ImageSource> openBmpSource(const std::string& path, std::string memory);
+std::unique_ptr<ImageSource> openTgaSource(const std::string& path, std::string memory);
 // OpenImageIO through the module.
 std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string memory,
                                             const std::string& format);

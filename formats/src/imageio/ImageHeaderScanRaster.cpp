@@ -213,8 +213,9 @@ DeclaredImage scanGif(const HeaderBytes& b, const std::string& path) {
 
 // BMP (Windows DIB): the file header's pixel offset, the info header's size, bit count and
 // compression. Rows are padded to 4 bytes and stored whole; RLE8/RLE4 code at most 255 pixels in
-// two bytes (bounded at 128 stored bytes per data byte; a delta or end-of-bitmap escape that
-// skips pixels past that is refused as corrupt).
+// two bytes (bounded at 128 stored bytes per data byte, the declared size against the file's:
+// deltas may skip more, but a file holding less than 1/128 of its pixels is refused). The
+// native reader (BmpCodec.cpp) streams rows and says what it holds itself (ImageInfo).
 DeclaredImage scanBmp(const HeaderBytes& b, const std::string& path) {
     (void)path;
     DeclaredImage d;
@@ -245,7 +246,6 @@ DeclaredImage scanBmp(const HeaderBytes& b, const std::string& path) {
     if (compression == 1 || compression == 2) {
         d.parts.push_back(part(w, h, channels, h * ceilDiv(w * static_cast<std::uint64_t>(bpp), 8),
                                data, 128.0, "RLE"));
-        d.decoderBytes = w * h;
     } else if (compression == 0 || compression == 3 || compression == 6) {
         const std::uint64_t stride = ceilDiv(w * static_cast<std::uint64_t>(bpp), 32) * 4;
         d.parts.push_back(part(w, h, channels, stride * h, data, 1.0, "uncompressed"));
@@ -255,7 +255,8 @@ DeclaredImage scanBmp(const HeaderBytes& b, const std::string& path) {
 
 // TGA (Truevision 2.0): an 18-byte header and no magic number (told by the file's name, the
 // named format or the 2.0 footer). Raw or RLE packets of at most 128 pixels after a 1-byte
-// header (bounded at 128:1). OpenImageIO decodes the whole image at once.
+// header (bounded at 128:1). The native reader (TgaCodec.cpp) streams rows and says what it
+// holds itself (ImageInfo).
 DeclaredImage scanTga(const HeaderBytes& b, const std::string& path) {
     DeclaredImage d;
     d.format = "targa";
@@ -280,7 +281,6 @@ DeclaredImage scanTga(const HeaderBytes& b, const std::string& path) {
     const std::uint64_t data = offset < b.size() ? b.size() - offset : 0;
     d.parts.push_back(
         part(w, h, channels, stored, data, rle ? 128.0 : 1.0, rle ? "RLE" : "uncompressed"));
-    d.decoderBytes = w * h * static_cast<std::uint64_t>(channels);
     return d;
 }
 

@@ -6,7 +6,8 @@
 // DCMTK ...) whose loading, symbol lookup and static initialisers cost ~190 ms of CPU (0.4 s of
 // wall time on a busy machine) before the first pixel, at every start. So the formats OpenImageIO
 // is needed for are behind this module, which ImageIOLoader.cpp dlopen()s on first use; PNG,
-// OpenEXR scanline files and PNM have native codecs in lutkit_formats and never load it.
+// OpenEXR scanline files and PNM have native codecs in lutkit_formats, BMP and TGA native
+// readers, and never load it.
 // Exceptions do not cross the seam: every entry returns a status and a message, and the loader
 // rethrows them as the caller's own types. Images are streamed: a source hands out rows in the
 // file's type, a sink takes rows and writes its bytes through the caller's callbacks (checked

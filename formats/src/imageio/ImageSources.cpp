@@ -130,6 +130,12 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
     if (named == "pnm" || (named.empty() && (starts("P5", 2) || starts("P6", 2))))
         if (head.size() >= 2 && (head[1] == '5' || head[1] == '6'))
             return openPnmSource(path, std::move(memory));
+    // BMP by its "BM"; TGA, which has no magic number, as the header check took it (the name's
+    // extension, the named format or the TGA 2.0 footer).
+    if (named == "bmp" || (named.empty() && starts("BM", 2)))
+        return openBmpSource(path, std::move(memory));
+    if (named == "targa" || named == "tga" || (named.empty() && declared.format == "targa"))
+        return openTgaSource(path, std::move(memory));
     if (named == "openexr" || (named.empty() && starts("\x76\x2f\x31\x01", 4))) {
         std::string copy = memory; // kept for OpenImageIO if the file is not a scanline one
         if (auto src = openExrSource(path, std::move(copy)))

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inside lutkit_imageio.so: OpenImageIO sources and sinks for every format the native codecs do
-// not take (TIFF, JPEG, DPX, BMP, TGA, HDR, WebP, tiled or multi-part EXR ...). No colour
+// not take (TIFF, JPEG, DPX, HDR, WebP, tiled or multi-part EXR ...; BMP and TGA are only written
+// here, BmpCodec.cpp and TgaCodec.cpp read them). No colour
 // conversion is ever applied: stored values in, stored values out. Metadata: OpenImageIO's
 // attributes (EXIF and TIFF tags, the ICC profile, IPTC, XMP, format-specific ones) are kept as
 // exact bytes and given back to the writer.

@@ -14,7 +14,9 @@ namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
-// ParamValueList <-> bytes: name, type, count, then the values (strings as length + bytes).
+// ParamValueList <-> bytes: name, type, count, then the values (strings as length + bytes). The
+// native BMP and TGA readers write the same layout without OpenImageIO (OiioAttributes.h): a change
+// here is a change there.
 void putInt(std::string& s, std::uint32_t v) {
     s.append(reinterpret_cast<const char*>(&v), 4);
 }
