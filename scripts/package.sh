@@ -13,7 +13,10 @@ case "$build" in /*) ;; *) build="$root/$build" ;; esac
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)" --target lutkit lutkit_docs
-if cmake --build "$build" --target help | grep -q 'lutkit-editor$'; then # Qt 6 was found
+# The target list read whole first: `grep -q` stops reading at its first match, and under pipefail
+# the writer's SIGPIPE made the test false (the editor was never built, cpack failed).
+targets="$(cmake --build "$build" --target help)"
+if grep -q 'lutkit-editor$' <<<"$targets"; then # Qt 6 was found
   cmake --build "$build" -j"$(nproc)" --target lutkit-editor
 fi
 (cd "$build" && cpack -G DEB)
