@@ -5,7 +5,9 @@
 # Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),
 # ThreadSanitizer build + the threaded code's tests (build-tsan/, scripts/tsan.sh),
 # each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/, scripts/fuzz.sh;
-# findings land in build-fuzz/findings/). The last line says ALL PASSED or the stage that failed.
+# findings land in build-fuzz/findings/). Between the Release stage and the sanitizers: the browser
+# edition (build-web/, built and run in headless Chromium against the Release CLI:
+# tests/web/run.sh). The last line says ALL PASSED or the stage that failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
 # A final summary line in every case, naming the stage that failed.
@@ -33,6 +35,10 @@ cmake --build "$root/build" -j"$jobs"
 took
 
 if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
+  stage="browser"
+  echo "== The browser edition: built with emscripten, run in headless Chromium (tests/web/run.sh)"
+  "$root/tests/web/run.sh"
+  took
   stage="sanitizers"
   echo "== AddressSanitizer + UBSan build and tests (scripts/sanitize.sh)"
   "$root/scripts/sanitize.sh" "$root/build-asan"
@@ -47,4 +53,4 @@ if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
   took
 fi
 stage="done"
-echo "test.sh: ALL PASSED in $(( $(date +%s) - t0 )) s$([ "${LUTKIT_QUICK:-0}" = "1" ] && echo " (quick: no sanitizers, no fuzzing)")"
+echo "test.sh: ALL PASSED in $(( $(date +%s) - t0 )) s$([ "${LUTKIT_QUICK:-0}" = "1" ] && echo " (quick: no browser edition, sanitizers or fuzzing)")"

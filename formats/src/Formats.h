@@ -10,8 +10,8 @@ namespace lut::formats {
 // .cube, Adobe and Resolve dialects (cube/CubeFormat.cpp).
 std::unique_ptr<Format> makeCubeFormat();
 // OpenColorIO bridge: one reader for every extension OCIO reads but .cube (OcioReader.cpp), and
-// one writer per format OCIO's Baker bakes (OcioWriters.cpp) plus .spi3d, which OCIO reads but
-// cannot bake (Spi3dFormat.cpp; part of the makeOcioBakeFormats list).
+// one writer per format OCIO's Baker bakes (OcioWriters.cpp). .spi3d, which OCIO reads but cannot
+// bake, is read and written by lutkit (Spi3dFormat.cpp), registered before the OCIO reader.
 std::unique_ptr<Format> makeOcioReadFormat();
 std::vector<std::unique_ptr<Format>> makeOcioBakeFormats();
 std::unique_ptr<Format> makeSpi3dFormat();

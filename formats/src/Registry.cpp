@@ -20,6 +20,7 @@ void registerBuiltinFormats() {
         r.add(makeNutexbFormat());
         r.add(makeStripFormat());
         r.add(makeHaldFormat());
+        r.add(makeSpi3dFormat()); // before the OpenColorIO reader: read and written here
         r.add(makeOcioReadFormat());
         for (auto& f : makeOcioBakeFormats())
             r.add(std::move(f));

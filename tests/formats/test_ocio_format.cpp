@@ -15,6 +15,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -226,6 +227,38 @@ TEST(OcioFormat, FormatsWithAShaperKeepTheInputRange) {
     }
 }
 
+// lutkit's .spi3d reader against OpenColorIO's reading of the same files: a table written by
+// lutkit (random values, sizes 2, 17, 33) and the hand-written one, each lattice point evaluated by
+// OpenColorIO's processor (tetrahedral, exact at the points).
+TEST(OcioFormat, Spi3dReadsAsOpenColorIOReadsIt) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(-0.25f, 1.5f);
+    for (const int n : {2, 17, 33}) {
+        lut::LutFile src;
+        src.cube = lut::Lut3D(n);
+        for (auto& e : src.cube->entries())
+            e = glm::vec3(u(rng), u(rng), u(rng));
+        const std::string path = workDir() + "/random" + std::to_string(n) + ".spi3d";
+        lut::formats::writeLut(path, src, {}, "spi3d");
+        for (const std::string& file : {path, dataPath("ocio/affine.spi3d")}) {
+            const lut::LutFile own = lut::formats::readLut(file);
+            EXPECT_EQ(own.format, "spi3d");
+            ASSERT_TRUE(own.cube);
+            const auto p = lut::test::ocioFileProcessor(file);
+            const int m = own.cube->size();
+            for (int b = 0; b < m; ++b)
+                for (int g = 0; g < m; ++g)
+                    for (int r = 0; r < m; ++r) {
+                        const glm::vec3 want =
+                            lut::test::ocioEval(p, glm::vec3(r, g, b) / float(m - 1));
+                        for (int ch = 0; ch < 3; ++ch)
+                            ASSERT_NEAR(own.cube->at(r, g, b)[ch], want[ch], 2e-6)
+                                << file << " at " << r << " " << g << " " << b;
+                    }
+        }
+    }
+}
+
 TEST(OcioFormat, RefusesTablesLargerThanOcioHolds) {
     const std::string path = workDir() + "/big.csp";
     lut::LutFile file;
@@ -250,9 +283,12 @@ TEST_P(OcioHandWritten, ReadsTheValuesComputedHere) {
     const lut::LutFile own = lut::formats::readLut(path);
     ASSERT_TRUE(own.cube);
     EXPECT_EQ(own.cube->size(), c.ownSize);
-    for (const int n : {c.ownSize, 9}) {
+    // OpenColorIO's formats are sampled on the lattice asked for; .spi3d is read by lutkit,
+    // exactly.
+    const bool sampled = std::string(c.file).find(".spi3d") == std::string::npos;
+    for (const int n : {c.ownSize, sampled ? 9 : c.ownSize}) {
         lut::FormatOptions o;
-        o.size = n;
+        o.size = sampled ? n : 0;
         const lut::LutFile f = lut::formats::readLut(path, o);
         ASSERT_EQ(f.cube->size(), n);
         for (int b = 0; b < n; ++b)
@@ -300,7 +336,7 @@ TEST(OcioFormat, ErrorsNameTheFileOnOneLine) {
 TEST(OcioFormat, SizeOptionOutOfRangeIsRefused) {
     lut::FormatOptions o;
     o.size = 257;
-    EXPECT_THROW(lut::formats::readLut(dataPath("ocio/affine.spi3d"), o), lut::Error);
+    EXPECT_THROW(lut::formats::readLut(dataPath("ocio/affine.3dl"), o), lut::Error);
 }
 
 TEST(OcioFormat, OneDimensionalFilesStayOneDimensional) {

@@ -42,9 +42,9 @@ TEST(ReadMemory, EveryWritableFormatRoundTripsThroughMemoryAsThroughAFile) {
     cube.at(1, 2, 3) = {0.25f, 0.5f, 0.75f};
     src.cube = cube;
     // Known entries, so every format has something that could be lost.
-    // {writer, reader}: OCIO's bake formats are read back by the one "ocio" reader.
+    // {writer, reader}: .spi3d is read and written by lutkit (OpenColorIO reads it too).
     const std::pair<const char*, const char*> formats[] = {
-        {"cube", "cube"}, {"nutexb", "nutexb"}, {"strip", "strip"}, {"spi3d", "ocio"}};
+        {"cube", "cube"}, {"nutexb", "nutexb"}, {"strip", "strip"}, {"spi3d", "spi3d"}};
     for (const auto& [name, readerName] : formats) {
         const lut::Format& f = format(name);
         const lut::Format& r = format(readerName);

@@ -185,3 +185,30 @@ TEST(SamplerIsa, ScalarCanBeForcedAndAgrees) {
     for (std::size_t i = 0; i < a.size(); ++i)
         ASSERT_NEAR(a[i], b[i], 2e-6f) << i;
 }
+
+// The portable forms of the kernels (what the browser edition and CPUs without AVX2 run) give the
+// AVX2 kernels' bits, on every input the stress set has (NaN, infinities, the domain's edges,
+// lattice points and between them) and on random LUTs: the editions write the same files.
+TEST(SamplerIsa, PortableKernelsAreBitIdenticalToAvx2) {
+    if (std::strcmp(samplerIsa(), "scalar") == 0)
+        GTEST_SKIP() << "this CPU has no AVX2 + FMA (or LUTKIT_SIMD=scalar is set)";
+    for (const Interpolation method : {Interpolation::Trilinear, Interpolation::Tetrahedral})
+        for (const int size : {2, 5, 17, 33, 65}) {
+            const Lut3D lut = test::randomLut(size);
+            const auto inputs = stressInputs();
+            std::vector<float> a;
+            for (std::size_t i = 0; i < inputs.size(); ++i)
+                a.insert(a.end(), {inputs[i].x, inputs[i].y, inputs[i].z, 0.25f * i});
+            std::vector<float> b = a;
+            const auto simd = makeSampler(lut, method);
+            ::setenv("LUTKIT_SIMD", "scalar", 1);
+            const auto portable = makeSampler(lut, method);
+            ::unsetenv("LUTKIT_SIMD");
+            simd->applyPixels(a.data(), inputs.size());
+            portable->applyPixels(b.data(), inputs.size());
+            for (std::size_t i = 0; i < a.size(); ++i)
+                ASSERT_EQ(std::memcmp(&a[i], &b[i], sizeof(float)), 0)
+                    << toString(method) << " N=" << size << " value " << i << ": " << a[i] << " vs "
+                    << b[i];
+        }
+}

@@ -9,10 +9,45 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <random>
 
 using namespace lut;
 using namespace lut::test;
+
+// madd's emulation (WebAssembly, an x86 without FMA) against the hardware's or the C library's
+// fused multiply-add: random operands, and products that put the sum exactly halfway between two
+// floats (where a plain double sum rounds twice).
+TEST(FastMath, EmulatedFmaIsTheFusedMultiplyAdd) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-4.0f, 4.0f);
+    std::uniform_int_distribution<int> ex(-60, 60);
+    int checked = 0;
+    for (int i = 0; i < 2000000; ++i) {
+        const float a = std::ldexp(u(rng), ex(rng) / 4), b = std::ldexp(u(rng), ex(rng) / 4);
+        float c = std::ldexp(u(rng), ex(rng) / 4);
+        if (i % 3 == 0) // c cancels most of a * b: the sum's low bits decide
+            c = -static_cast<float>(static_cast<double>(a) * b);
+        const float want = std::fma(a, b, c);
+        const float got = lut::detail::fmaEmulated(a, b, c);
+        ASSERT_EQ(std::memcmp(&want, &got, sizeof want), 0)
+            << a << " * " << b << " + " << c << ": " << want << " vs " << got;
+        ++checked;
+    }
+    // Exact halfway sums: 1 + 2^-24 (halfway between 1 and the next float) made inexact by a
+    // tiny product of either sign.
+    for (const float tiny : {1e-30f, -1e-30f, 3e-40f, -3e-40f}) {
+        const float c = 1.0f, a = 0x1p-24f;
+        const float want = std::fma(a + tiny, 1.0f, c),
+                    got = lut::detail::fmaEmulated(a + tiny, 1.0f, c);
+        EXPECT_EQ(want, got) << tiny;
+        const float w2 = std::fma(tiny, 1.0f, 1.0f + 0x1p-23f),
+                    g2 = lut::detail::fmaEmulated(tiny, 1.0f, 1.0f + 0x1p-23f);
+        EXPECT_EQ(w2, g2) << tiny;
+    }
+    EXPECT_EQ(checked, 2000000);
+}
 
 TEST(FastMath, PowFastIsWithin4e7RelativeOfStdPow) {
     for (float p : {0.454545f, 2.2f, 1.0f / 2.4f, 2.2f / 2.4f}) {

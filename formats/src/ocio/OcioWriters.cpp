@@ -6,8 +6,8 @@
 // with cube size = our size (so the baker samples exactly our lattice points), and written
 // atomically. Formats that store integers (.3dl: 12-bit, 0..4095) quantise; the quantisation is
 // reported by callers that read the file back (lutkit convert). Reading goes through the one
-// "ocio" reader (OcioReader.cpp). .spi3d, which OCIO 2.1 reads but cannot bake, is written by
-// hand (Spi3dFormat.cpp).
+// "ocio" reader (OcioReader.cpp). .spi3d, which OCIO 2.1 reads but cannot bake, is written and
+// read by lutkit (spi3d/Spi3dFormat.cpp).
 //
 // Formats that hold a shaper keep it, and keep an input range other than [0,1]: .clf and .ctf are
 // written as the transforms themselves (range Matrix, Lut1D, Lut3D) by OCIO's GroupTransform
@@ -268,7 +268,6 @@ std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
     v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx",
                                                  "Iridas .itx, via OpenColorIO", 0, 2,
                                                  std::vector<FormatAlias>{{"iridas_itx", "", ""}}));
-    v.push_back(makeSpi3dFormat());
     v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut",
                                                  "Houdini .lut, via OpenColorIO", 0));
     return v;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The image formats only OpenImageIO or OpenEXR read and write, in the portable editions
 // (docs/portable.md): PNG, JPEG and PNM are read and written by lutkit's own codecs; anything
-// else (TIFF, OpenEXR, ...) is refused with one line naming the edition.
+// else (TIFF, OpenEXR, ...) is refused with one line naming the edition. BMP and TGA are read
+// natively too (BmpCodec.cpp, TgaCodec.cpp).
 #include "imageio/ImageCodec.h"
 
 #include "lut/Error.h"
@@ -26,7 +27,7 @@ std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string
                                             const std::string& format) {
     throw Error(shown(path) + ": " +
                 notInEdition("reading " + formatWord(format.empty() ? path : format) + " images",
-                             "OpenImageIO", "this edition reads PNG, JPEG and PNM (PPM/PGM)"));
+                             "OpenImageIO", "this edition reads PNG, JPEG, BMP, TGA and PNM (PPM/PGM)"));
 }
 
 std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target,

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The LUT formats only OpenColorIO reads or writes, in the portable editions (docs/portable.md):
 // each is still known by its name and extension, so `lutkit convert look.cube look.3dl` says that
-// this edition cannot write .3dl (and what it can), rather than that .3dl is unknown. The .spi3d
-// writer is lutkit's own and works (ocio/Spi3dFormat.cpp).
+// this edition cannot write .3dl (and what it can), rather than that .3dl is unknown. .spi3d is
+// lutkit's own, read and written in every edition (spi3d/Spi3dFormat.cpp).
 #include "Formats.h"
 
 #include "lut/Error.h"
@@ -77,7 +77,6 @@ std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
         {{"Color Transform Format", "", ""}});
     add("cub", ".cub", "Truelight .cub", {{"truelight", "", ""}});
     add("itx", ".itx", "Iridas .itx", {{"iridas_itx", "", ""}});
-    v.push_back(makeSpi3dFormat());
     add("houdini", ".lut", "Houdini .lut");
     return v;
 }

@@ -19,9 +19,29 @@
 
 namespace lut::detail {
 
-// Multiply-add with one rounding (std::fma) where the CPU has FMA: the bits of the AVX2 + FMA
-// kernels. On an x86-64 without FMA no SIMD path runs at all, and std::fma would be a slow library
-// emulation, so there it is a * b + c (the frame is still the same whatever the tiling).
+// a * b + c with one rounding, as the FMA instruction computes it: the bits of the AVX2 + FMA
+// kernels, on every machine and in every edition (docs/portable.md). Where the CPU has FMA it is
+// that instruction (std::fma); elsewhere (an x86-64 without FMA, WebAssembly) it is computed here:
+// the product of two floats is exact in double, the sum rounds once in double, and only a sum
+// that lands exactly halfway between two floats (and is inexact) needs its last bit moved towards
+// the error, so the float is the one a single rounding gives (musl's fmaf, inlined: a library
+// call cost WebAssembly 41% of a preview).
+inline float fmaEmulated(float a, float b, float c) {
+    const double ab = static_cast<double>(a) * static_cast<double>(b);
+    const double r = ab + static_cast<double>(c);
+    std::uint64_t u = __builtin_bit_cast(std::uint64_t, r);
+    const unsigned e = static_cast<unsigned>(u >> 52) & 0x7FFu;
+    if ((u & 0x1FFFFFFFu) != 0x10000000u || e == 0x7FFu || (r - ab == c && r - c == ab))
+        return static_cast<float>(r);
+    const bool negative = (u >> 63) != 0;
+    const double err = negative == (static_cast<double>(c) > ab) ? ab - r + c : c - r + ab;
+    if (negative == (err < 0))
+        ++u;
+    else
+        --u;
+    return static_cast<float>(__builtin_bit_cast(double, u));
+}
+
 #if defined(__x86_64__) || defined(__i386__)
 inline bool cpuHasFma() {
     static const bool yes = [] {
@@ -30,14 +50,14 @@ inline bool cpuHasFma() {
     }();
     return yes;
 }
+inline float madd(float a, float b, float c) {
+    return cpuHasFma() ? std::fma(a, b, c) : fmaEmulated(a, b, c);
+}
 #else
-constexpr bool cpuHasFma() {
-    return true;
+inline float madd(float a, float b, float c) {
+    return fmaEmulated(a, b, c);
 }
 #endif
-inline float madd(float a, float b, float c) {
-    return cpuHasFma() ? std::fma(a, b, c) : a * b + c;
-}
 
 namespace poly {
 // log2(m) = u * (c0 + c1 u^2 + c2 u^4 + c3 u^6) with u = (m - 1) / (m + 1), the series of

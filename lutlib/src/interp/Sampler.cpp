@@ -66,7 +66,7 @@ std::vector<float> packTable(const Lut3D& lut) {
 
 enum class Isa { Scalar, Avx2, Avx512 };
 
-// A kernel of simd/ where it is compiled (x86), else none: the scalar loop (the browser edition).
+// A kernel of simd/ where it is compiled (x86), else none (the browser edition: the portable forms).
 #if defined(__x86_64__) || defined(__i386__)
 #define LUTKIT_X86_KERNEL(f) (&f)
 #else
@@ -88,7 +88,8 @@ Isa detectIsa() {
 }
 
 // The path new samplers use: the best this CPU has, unless LUTKIT_SIMD asks for a lesser one
-// ("scalar": the reference loop; "avx2": the AVX2 kernels on an AVX-512 CPU), so benchmarks and
+// ("scalar": the portable forms of the kernels, PortableKernels.cpp; "avx2": the AVX2 kernels on
+// an AVX-512 CPU), so benchmarks and
 // tests can compare them. Read on every makeSampler() call so a benchmark can switch between
 // samplers in one run.
 Isa chosenIsa() {
@@ -101,8 +102,9 @@ Isa chosenIsa() {
     return best;
 }
 
-// The kernel for this CPU: the AVX-512 one where there is one and the CPU has it, else AVX2.
-KernelFn pickKernel(KernelFn avx2, KernelFn avx512) {
+// The kernel for this CPU: the AVX-512 one where there is one and the CPU has it, else AVX2,
+// else the portable form of their arithmetic (null: the scalar loop, nearest's).
+KernelFn pickKernel(KernelFn avx2, KernelFn avx512, KernelFn portable) {
     switch (chosenIsa()) {
     case Isa::Avx512:
         return avx512 ? avx512 : avx2;
@@ -111,13 +113,13 @@ KernelFn pickKernel(KernelFn avx2, KernelFn avx512) {
     case Isa::Scalar:
         break;
     }
-    return nullptr;
+    return portable;
 }
 
 class SamplerBase : public Sampler {
 public:
-    SamplerBase(const Lut3D& lut, KernelFn avx2, KernelFn avx512 = nullptr)
-        : m_table(packTable(lut)), m_kernel(pickKernel(avx2, avx512)) {
+    SamplerBase(const Lut3D& lut, KernelFn avx2, KernelFn avx512, KernelFn portable)
+        : m_table(packTable(lut)), m_kernel(pickKernel(avx2, avx512, portable)) {
         m_view.rgb = m_table.data();
         m_view.map = detail::makeLatticeMapping(lut);
     }
@@ -153,7 +155,7 @@ protected:
 class NearestSampler final : public SamplerBase {
 public:
     explicit NearestSampler(const Lut3D& lut)
-        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::nearestAvx2)) {}
+        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::nearestAvx2), nullptr, nullptr) {}
     Interpolation method() const override { return Interpolation::Nearest; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -170,7 +172,8 @@ public:
 class TrilinearSampler final : public SamplerBase {
 public:
     explicit TrilinearSampler(const Lut3D& lut)
-        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::trilinearAvx2)) {}
+        : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::trilinearAvx2), nullptr,
+                      &detail::trilinearPortable) {}
     Interpolation method() const override { return Interpolation::Trilinear; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -196,7 +199,7 @@ class TetrahedralSampler final : public SamplerBase {
 public:
     explicit TetrahedralSampler(const Lut3D& lut)
         : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::tetrahedralAvx2),
-                      LUTKIT_X86_KERNEL(detail::tetrahedralAvx512)) {}
+                      LUTKIT_X86_KERNEL(detail::tetrahedralAvx512), &detail::tetrahedralPortable) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);

@@ -38,6 +38,12 @@ void trilinearAvx2(const KernelTable& table, float* rgba, std::size_t count);
 void tetrahedralAvx2(const KernelTable& table, float* rgba, std::size_t count);
 void shaperAvx2(const ShaperTable& table, float* rgba, std::size_t count);
 
+// The AVX2 kernels' arithmetic one pixel at a time in portable C++ (interp/PortableKernels.cpp),
+// with fused multiply-adds where they have them: the same bits on any machine, where no SIMD
+// kernel runs (the browser edition, a CPU without AVX2). Nearest needs none: its scalar loop
+// already picks the kernel's entry.
+void trilinearPortable(const KernelTable& table, float* rgba, std::size_t count);
+void tetrahedralPortable(const KernelTable& table, float* rgba, std::size_t count);
 // AVX-512 F + DQ (simd/SamplerKernels_avx512.cpp): bit-identical to its AVX2 twin, 16 pixels per
 // iteration. Only call when the CPU has AVX-512 F and DQ (and AVX2 + FMA).
 void tetrahedralAvx512(const KernelTable& table, float* rgba, std::size_t count);

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The browser edition's tests: builds it (scripts/build-web.sh, into build/web unless
+# LUTKIT_WEB_DIR names a built site) and runs every tests/web/test_*.py in headless Chromium
+# (Debian's chromium + chromium-driver through python3-selenium), against the native CLI
+# (build/bin/lutkit, LUTKIT_NATIVE). Exit non-zero on any failure.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+export LUTKIT_WEB_DIR="${LUTKIT_WEB_DIR:-$root/build/web}"
+if [ "${LUTKIT_WEB_SKIP_BUILD:-0}" != "1" ]; then
+  "$root/scripts/build-web.sh" "$LUTKIT_WEB_DIR"
+fi
+# Debian's python3 (with selenium and numpy), whatever python3 comes first on the PATH.
+py=/usr/bin/python3
+[ -x "$py" ] || py=python3
+status=0
+for t in "$root"/tests/web/test_*.py; do
+  echo "== $(basename "$t")"
+  "$py" "$t" || status=1
+done
+exit $status
