@@ -166,7 +166,7 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
         }
         if (j.refused.empty()) {
             try {
-                j.target = checkOutput(j.output, output.rule(), allInputs);
+                j.target = commandOutputs().claim(j.output, output.rule(), allInputs);
                 j.skip = j.target.skip;
             } catch (const OutputExistsError& e) {
                 existing.push_back(e.path());

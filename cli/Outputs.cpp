@@ -53,11 +53,16 @@ std::string existsMessage(const std::string& path, bool batch) {
            (batch ? " (or -n/--no-clobber to skip existing outputs)" : "");
 }
 
+CommandOutputs& commandOutputs() {
+    static CommandOutputs outputs;
+    return outputs;
+}
+
 OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
                            const std::vector<std::string>& inputs) {
     noteOutputPath(path);
     try {
-        return checkOutput(path, options.rule(), inputs);
+        return commandOutputs().claim(path, options.rule(), inputs);
     } catch (const OutputExistsError& e) {
         throw Error(existsMessage(e.path(), false));
     }
