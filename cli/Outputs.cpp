@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Outputs.h"
 
+#include "lut/io/FileNames.h"
+
 #include <CLI/CLI.hpp>
 
 #include <sys/stat.h>
@@ -72,7 +74,7 @@ bool beginOutput(const std::string& path, const OutputOptions& options,
                  const std::vector<std::string>& inputs, bool quiet) {
     if (resolveOutput(path, options, inputs).skip) {
         if (!quiet)
-            std::cerr << "lutkit: " << path << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(path) << " exists; skipped (-n)\n";
         return false;
     }
     return true;

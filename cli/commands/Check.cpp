@@ -236,7 +236,7 @@ int runCheck(const CheckCommandOptions& o) {
         } catch (const UsageError&) {
             throw;
         } catch (const Error& e) {
-            std::cerr << "lutkit: error: " << e.what() << "\n";
+            std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
             failed = true;
         }
     }

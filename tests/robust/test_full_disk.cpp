@@ -107,6 +107,8 @@ void checkFullDisk(const Case& c) {
         const auto lines = errorLines(r.err);
         ASSERT_EQ(lines.size(), 1u) << r.err;
         EXPECT_THAT(lines[0], HasSubstr(out + ": cannot write: No space left on device"));
+        // The path once (an OpenEXR write said "OUT: cannot write: OUT: cannot write: ...").
+        EXPECT_EQ(lines[0].find(out), lines[0].rfind(out)) << lines[0];
         EXPECT_THAT(lines[0], ::testing::Not(HasSubstr(".tmp"))); // never the hidden name
         EXPECT_EQ(fileBytes(out), old);
         EXPECT_EQ(disk.listing(), std::vector<std::string>{name});

@@ -306,6 +306,8 @@ void ImageSink::nextPart() {
 }
 
 std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std::string& format) {
+    if (isStdinName(path) && !isStdStream(path))
+        return openImageSource("-", format); // /dev/stdin is standard input
     DeclaredImage declared;
     const FileState before = fileState(path); // before the header is read
     auto src = openAnySource(path, format, declared, std::nullopt);

@@ -286,7 +286,15 @@ std::string OiioSink::userText(std::string text) const {
 }
 
 void OiioSink::failWrite(const std::string& reason) const {
-    throw Error(m_path + ": cannot write: " + userText(reason));
+    // OpenEXR names the file in its own sentence ("Cannot open image file "OUT". REASON"): the
+    // message names it once, first.
+    std::string why = userText(reason);
+    for (const char* verb : {"Cannot open image file ", "Cannot write image file "}) {
+        const std::string sentence = verb + ("\"" + m_path + "\". ");
+        if (const auto at = why.find(sentence); at != std::string::npos)
+            why.erase(at, sentence.size());
+    }
+    throw Error(m_path + ": cannot write: " + why);
 }
 
 namespace {
