@@ -8,6 +8,7 @@
 
 #include "lut/Error.h"
 #include "lut/Parallel.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/TempFiles.h"
 
 #include <algorithm>
@@ -27,9 +28,19 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// A size in the unit that shows it: "800 bytes", "12.5 KiB", "83 MiB", "4.2 GiB" (a limit of
+// 1e3 bytes was "0 MiB").
 std::string mib(std::uint64_t bytes) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.0f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    char b[48];
+    const double v = static_cast<double>(bytes);
+    if (bytes < 1024)
+        std::snprintf(b, sizeof b, "%llu bytes", static_cast<unsigned long long>(bytes));
+    else if (v < 1024.0 * 1024.0)
+        std::snprintf(b, sizeof b, "%.1f KiB", v / 1024.0);
+    else if (v < 1024.0 * 1024.0 * 1024.0)
+        std::snprintf(b, sizeof b, "%.0f MiB", v / (1024.0 * 1024.0));
+    else
+        std::snprintf(b, sizeof b, "%.1f GiB", v / (1024.0 * 1024.0 * 1024.0));
     return b;
 }
 
@@ -103,12 +114,14 @@ std::uint64_t defaultMaxMemory() {
 }
 
 std::uint64_t parseMemorySize(const std::string& text) {
+    const std::string expected =
+        "bad memory size '" + text + "' (expected a number with K, M, G or T: 4G; B for bytes)";
     std::size_t used = 0;
     double v = 0.0;
     try {
         v = std::stod(text, &used);
     } catch (const std::exception&) {
-        used = 0;
+        throw UsageError(expected);
     }
     std::string unit = text.substr(used);
     for (auto& c : unit)
@@ -127,10 +140,22 @@ std::uint64_t parseMemorySize(const std::string& text) {
     else if (unit == "T")
         scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
     else if (!unit.empty())
-        used = 0;
-    if (used == 0 || !(v > 0.0) || !std::isfinite(v) || v * scale > 1e18)
-        throw Error("bad memory size '" + text + "' (expected a number with K, M, G or T: 4G)");
-    return static_cast<std::uint64_t>(v * scale);
+        throw UsageError(expected);
+    if (!(v > 0.0) || !std::isfinite(v))
+        throw UsageError(expected);
+    const double bytes = v * scale;
+    // Bad usage, not a failed run: a limit no picture fits in (--max-memory 1e3 was 1000 bytes,
+    // then "needs 0 MiB, over the limit of 0 MiB"), and one past any machine's (exit 1 before).
+    if (bytes < 1024.0 * 1024.0)
+        throw UsageError(text + " is " + mib(static_cast<std::uint64_t>(bytes)) +
+                         ", less than any picture needs" +
+                         (unit.empty() && text.back() != 'B' && text.back() != 'b'
+                              ? ": give a unit (" + text + "M, " + text + "G)"
+                              : std::string(" (at least 1M)")));
+    if (bytes > 1e18)
+        throw UsageError(text + " is more than any machine has (at most 1e18 bytes; the default "
+                                "is half the RAM)");
+    return static_cast<std::uint64_t>(bytes);
 }
 
 int runBatch(const BatchPlan& plan, const BatchOptions& options,
@@ -138,7 +163,7 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
     const auto& jobs = plan.jobs;
     const int total = static_cast<int>(jobs.size());
     for (const auto& n : plan.notes)
-        std::cerr << "lutkit: warning: " << n << "\n";
+        std::cerr << "lutkit: warning: " << printable(n) << "\n";
     const int workers = std::max(1, std::min(resolveThreads(options.threads), total));
     const int inner = workers == 1 ? options.threads : 1;
     const bool bar = !options.quiet && total > 1 && isatty(STDERR_FILENO);
@@ -237,9 +262,9 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
             const std::string& msg = failures[i];
             if (msg.rfind(jobs[i].input, 0) == 0 ||
                 (!jobs[i].output.empty() && msg.rfind(jobs[i].output, 0) == 0))
-                std::cerr << "lutkit: error: " << msg << "\n";
+                std::cerr << "lutkit: error: " << printable(msg) << "\n";
             else
-                std::cerr << "lutkit: error: " << jobs[i].input << ": " << msg << "\n";
+                std::cerr << "lutkit: error: " << printable(jobs[i].input + ": " + msg) << "\n";
         }
     if (lut::interrupted()) {
         // One line: what is complete on the disk; everything else was not written (or removed).
@@ -265,7 +290,7 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
             std::cerr << ", " << skipped << " skipped (exist)";
         std::cerr << ", " << failed << " failed\n";
     } else if (skipped && !options.quiet) {
-        std::cerr << "lutkit: " << jobs.front().output << " exists; skipped (-n)\n";
+        std::cerr << "lutkit: " << printable(jobs.front().output) << " exists; skipped (-n)\n";
     }
     return failed > 0 ? kExitFailure : kExitOk;
 }

@@ -68,7 +68,8 @@ struct BatchOptions {
 
 // Half the physical memory (what --max-memory defaults to).
 std::uint64_t defaultMaxMemory();
-// "4G", "512M", "1.5GB", "2000000000": bytes. Throws lut::Error.
+// "4G", "512M", "1.5GB", "2000000000" (a number alone is bytes): bytes. Throws UsageError (exit
+// 2) for anything else, under 1 MiB or over 1e18 bytes.
 std::uint64_t parseMemorySize(const std::string& text);
 
 // Runs fn for every job not skipped, files in parallel (a single file gets every thread), within

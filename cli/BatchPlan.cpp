@@ -6,6 +6,7 @@
 #include "lut/Error.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/io/FrameSequence.h"
+#include "lut/io/InputFile.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -42,17 +43,35 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
         }
         if (isDir(in)) {
             std::vector<fs::path> files;
+            const std::size_t notesBefore = notes.size();
             std::error_code ec;
-            for (const auto& e : fs::directory_iterator(in, ec))
-                if (e.is_regular_file(ec) &&
-                    (folderFiles.accepts ? folderFiles.accepts(e.path().string())
-                                         : formats::isImageExtension(e.path().string())))
+            for (const auto& e : fs::directory_iterator(in, ec)) {
+                const std::string name = e.path().string();
+                if (!(folderFiles.accepts ? folderFiles.accepts(name)
+                                          : formats::isImageExtension(name)))
+                    continue; // not a file of the kind read here
+                std::error_code kind;
+                if (e.is_regular_file(kind)) {
                     files.push_back(e.path());
+                    continue;
+                }
+                // Named as an input but not a file to read (a FIFO, a link to a device, a link
+                // that loops or names nothing, a folder): said, one line each (it was skipped
+                // without a word).
+                try {
+                    checkRegularInput(name);
+                    notes.push_back(name + ": cannot be read; skipped");
+                } catch (const Error& err) {
+                    notes.push_back(std::string(err.what()) + "; skipped");
+                }
+            }
             if (files.empty())
                 throw Error(in + ": folder holds no " +
                             (folderFiles.what.empty()
                                  ? std::string("image files (.png .jpg .tif .exr .dpx ...)")
-                                 : folderFiles.what));
+                                 : folderFiles.what) +
+                            (notes.size() > notesBefore ? " to read (" + notes[notesBefore] + ")"
+                                                        : std::string()));
             std::sort(files.begin(), files.end());
             for (const auto& f : files)
                 out.push_back({f.string(), std::nullopt, {}});
@@ -166,7 +185,7 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
         }
         if (j.refused.empty()) {
             try {
-                j.target = checkOutput(j.output, output.rule(), allInputs);
+                j.target = commandOutputs().claim(j.output, output.rule(), allInputs);
                 j.skip = j.target.skip;
             } catch (const OutputExistsError& e) {
                 existing.push_back(e.path());

@@ -13,6 +13,7 @@
 #include "lut/Version.h"
 #include "lut/formats/ColorConfig.h"
 #include "lut/formats/LibraryMessages.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/TempFiles.h"
 
 #include <cerrno>
@@ -163,7 +164,18 @@ int CommandLine::parseErrorExit(const CLI::ParseError& e) {
     std::string what = e.what();
     if (what.rfind(": ", 0) == 0)
         what.erase(0, 2); // hidden (moved) options have no name in CLI11's messages
-    std::cerr << commandPrefix() << what << "\n";
+    // A file named like an option (`info -zz.cube`): CLI11 takes it for one it does not know and
+    // then says only that the file is missing ("IN is required").
+    if (sub && dynamic_cast<const CLI::RequiredError*>(&e))
+        for (const std::string& extra : sub->remaining())
+            if (extra.size() > 1 && extra[0] == '-' && extra.rfind("--", 0) != 0) {
+                std::cerr << commandPrefix() << printable(extra)
+                          << ": no such option; a file whose name starts with '-' is ./" +
+                                 printable(extra) + " (or put -- before it)\n"
+                          << "Run 'lutkit help " << sub->get_name() << "' for usage.\n";
+                return kExitUsage;
+            }
+    std::cerr << commandPrefix() << printable(what) << "\n";
     // An option name that is nearly one the command has: say which.
     if (sub && dynamic_cast<const CLI::ExtrasError*>(&e)) {
         std::vector<std::string> known;
@@ -193,16 +205,16 @@ int CommandLine::run(const std::vector<std::string>& args) {
                   << "); unfinished outputs removed\n";
         return kExitInterrupted;
     } catch (const formats::ColorOptionError& e) { // a name the config lacks: bad usage
-        std::cerr << commandPrefix() << e.what() << "\n";
+        std::cerr << commandPrefix() << printable(e.what()) << "\n";
         if (!e.value().empty())
             if (const auto guess = closestWord(e.value(), e.known()))
                 std::cerr << commandPrefix() << "did you mean '" << *guess << "'?\n";
         return kExitUsage;
     } catch (const Error& e) { // the library: bad input or a failed operation
-        std::cerr << "lutkit: error: " << e.what() << "\n";
+        std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
         return kExitFailure;
     } catch (const UsageError& e) {
-        std::cerr << commandPrefix() << e.what() << "\n";
+        std::cerr << commandPrefix() << printable(e.what()) << "\n";
         return kExitUsage;
     } catch (const CLI::ParseError& e) {
         return parseErrorExit(e);
@@ -211,11 +223,11 @@ int CommandLine::run(const std::vector<std::string>& args) {
         return kExitFailure;
     } catch (const std::bad_alloc&) {
         const std::string files = positionalFiles(m_app.get_subcommands());
-        std::cerr << "lutkit: error: " << (files.empty() ? "" : files + ": ") << outOfMemoryText()
-                  << "\n";
+        std::cerr << "lutkit: error: " << printable(files.empty() ? "" : files + ": ")
+                  << outOfMemoryText() << "\n";
         return kExitFailure;
     } catch (const std::exception& e) {
-        std::cerr << "lutkit: error: " << e.what() << "\n";
+        std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
         return kExitFailure;
     }
     if (!m_generate.empty()) {

@@ -21,7 +21,7 @@ LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& 
     if (verbosity.verbose)
         if (const std::string d = layoutDetail(file, layout.has_value(), "--lut-layout");
             !d.empty())
-            std::cerr << "lutkit: " << path << ": " << d << "\n";
+            std::cerr << "lutkit: " << printable(path) << ": " << printable(d) << "\n";
     return file;
 }
 

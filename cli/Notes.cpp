@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Notes.h"
 
+#include "lut/io/FileNames.h"
+
 namespace lut::cli {
 
 bool isShown(const Diagnostic& d, const Verbosity& v) {
@@ -11,7 +13,7 @@ void printDiagnostics(std::ostream& os, const Diagnostics& diags, const Verbosit
                       const std::string& prefix) {
     for (const auto& d : diags)
         if (isShown(d, v))
-            os << prefix << d.str() << "\n";
+            os << prefix << printable(d.str()) << "\n";
 }
 
 std::string layoutDetail(const LutFile& file, bool layoutGiven, const std::string& option) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Outputs.h"
 
+#include "lut/io/FileNames.h"
+
 #include <CLI/CLI.hpp>
 
 #include <sys/stat.h>
@@ -53,11 +55,16 @@ std::string existsMessage(const std::string& path, bool batch) {
            (batch ? " (or -n/--no-clobber to skip existing outputs)" : "");
 }
 
+CommandOutputs& commandOutputs() {
+    static CommandOutputs outputs;
+    return outputs;
+}
+
 OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
                            const std::vector<std::string>& inputs) {
     noteOutputPath(path);
     try {
-        return checkOutput(path, options.rule(), inputs);
+        return commandOutputs().claim(path, options.rule(), inputs);
     } catch (const OutputExistsError& e) {
         throw Error(existsMessage(e.path(), false));
     }
@@ -67,7 +74,7 @@ bool beginOutput(const std::string& path, const OutputOptions& options,
                  const std::vector<std::string>& inputs, bool quiet) {
     if (resolveOutput(path, options, inputs).skip) {
         if (!quiet)
-            std::cerr << "lutkit: " << path << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(path) << " exists; skipped (-n)\n";
         return false;
     }
     return true;

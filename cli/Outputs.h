@@ -48,8 +48,12 @@ CLI::Option* addOutputOptions(CLI::App& sub, OutputOptions& target, const std::s
 // it" (with -n/--no-clobber named when several files are written).
 std::string existsMessage(const std::string& path, bool batch);
 
-// checkOutput with the rule of `options`, an existing file reported with existsMessage (as
-// lut::Error: exit code 1). inputs are every file the command reads (the LUT too).
+// The outputs of the command this run executes (lut::CommandOutputs): no two are one file.
+CommandOutputs& commandOutputs();
+
+// checkOutput with the rule of `options` through commandOutputs(), an existing file reported with
+// existsMessage (as lut::Error: exit code 1). inputs are every file the command reads (the LUT
+// too).
 OutputTarget resolveOutput(const std::string& path, const OutputOptions& options,
                            const std::vector<std::string>& inputs);
 

@@ -112,7 +112,7 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
     const bool ambiguous =
         out.decision.source == PurposeSource::Assumed && tableSize == kSmashLutSize;
     if ((ambiguous || out.conversion) && !verbosity.quiet) {
-        std::cerr << "lutkit: note: " << path << " is " << out.decision.text(flag);
+        std::cerr << "lutkit: note: " << printable(path) << " is " << out.decision.text(flag);
         if (out.conversion)
             std::cerr << ": used as " << describe(wanted);
         std::cerr << "\n";
@@ -123,7 +123,7 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
             printConversion(os, *out.conversion, w);
             std::istringstream lines(os.str());
             for (std::string line; std::getline(lines, line);)
-                std::cerr << "lutkit: note: " << path << ": " << line << "\n";
+                std::cerr << "lutkit: note: " << printable(path) << ": " << line << "\n";
         }
     }
     return out;
@@ -197,7 +197,7 @@ Lut3D readStageLut(const std::string& path, const Verbosity& verbosity) {
     }
     const PurposeConversion c = convertPurpose(file, LutPurpose::Raw, LutPurpose::Smash);
     if (!verbosity.quiet)
-        std::cerr << "lutkit: note: " << path << " (--original-lut) is " << d.text("")
+        std::cerr << "lutkit: note: " << printable(path) << " (--original-lut) is " << d.text("")
                   << ": the stage runs the game's LUT that shows it\n";
     return c.lut;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "StrengthOptions.h"
 
+#include "lut/io/FileNames.h"
+
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -63,7 +65,8 @@ Lut3D strengthLut(Lut3D lut, const std::string& name, const StrengthOptions& opt
     if (isFullStrength(options))
         return lut;
     if (verbosity.verbose)
-        std::cerr << "lutkit: " << name << ": at strength " << strengthText(options) << "\n";
+        std::cerr << "lutkit: " << printable(name) << ": at strength " << strengthText(options)
+                  << "\n";
     return applyStrength(lut, options);
 }
 

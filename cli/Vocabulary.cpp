@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Vocabulary.h"
 
+#include "Batch.h"
 #include "Suggest.h"
 
 #include "lut/Error.h"
@@ -392,22 +393,11 @@ CLI::Option* addMaxMemory(CLI::App& sub, std::string& target) {
         ->type_name("SIZE")
         ->check(CLI::Validator(
             [](std::string& v) -> std::string {
-                // The same grammar as cli::parseMemorySize (Batch.h); checked here for exit 2.
-                std::size_t used = 0;
-                double x = 0;
                 try {
-                    x = std::stod(v, &used);
-                } catch (const std::exception&) {
-                    return "bad memory size '" + v + "' (expected a number with K, M, G or T: 4G)";
+                    (void)parseMemorySize(v); // one grammar: checked here for exit 2
+                } catch (const std::exception& e) {
+                    return e.what();
                 }
-                std::string unit = v.substr(used);
-                for (auto& ch : unit)
-                    ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-                static const std::vector<std::string> units = {"",    "B",  "K",   "KB", "KIB",
-                                                               "M",   "MB", "MIB", "G",  "GB",
-                                                               "GIB", "T",  "TB",  "TIB"};
-                if (!(x > 0) || std::find(units.begin(), units.end(), unit) == units.end())
-                    return "bad memory size '" + v + "' (expected a number with K, M, G or T: 4G)";
                 return {};
             },
             "SIZE", "memory-size"));

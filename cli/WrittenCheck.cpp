@@ -3,6 +3,7 @@
 
 #include "lut/Error.h"
 #include "lut/check/CheckLut.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/OutputPolicy.h"
 #include "lut/smash/SmashShownEdit.h"
 
@@ -39,16 +40,17 @@ void checkWrittenLut(const std::string& path, const LutFile& written, const Verb
                 worst = f.text();
                 break;
             }
-        std::cerr << "lutkit: warning: " << name << ": check " << toString(c.kind)
+        std::cerr << "lutkit: warning: " << printable(name) << ": check " << toString(c.kind)
                   << (shownByGame ? " of the edit the game shows" : "") << " fails: " << worst
                   << "\n";
     }
     if (report.status() == CheckStatus::Fail && !shownByGame)
-        std::cerr << "lutkit: " << name << ": 'lutkit check"
-                  << (isStdStream(path) ? "" : " " + path) << " --report check.png' shows where\n";
+        std::cerr << "lutkit: " << printable(name) << ": 'lutkit check"
+                  << (isStdStream(path) ? "" : " " + printable(path))
+                  << " --report check.png' shows where\n";
     else if (report.status() == CheckStatus::Fail)
-        std::cerr << "lutkit: " << name << ": 'lutkit check"
-                  << (isStdStream(path) ? "" : " " + path)
+        std::cerr << "lutkit: " << printable(name) << ": 'lutkit check"
+                  << (isStdStream(path) ? "" : " " + printable(path))
                   << " --target smash --report check.png' shows where\n";
 }
 

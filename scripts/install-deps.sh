@@ -22,7 +22,9 @@ esac
 # (formats/src/imageio).
 # ccache: rebuilds (the four builds of ./test.sh, a fresh clone in CI) reuse unchanged objects.
 # ffmpeg: an outside reader in the tests (its lut3d filter reads the .cube files lutkit writes).
-# python3-numpy: bench/compare_numpy.sh's yardstick for lutkit match (a plain HM-MKL-HM in numpy).
+# python3-numpy: bench/compare_numpy.sh's yardstick for lutkit match (a plain HM-MKL-HM in numpy),
+# and with imagemagick and libtiff-tools the other readers of tests/robust/write_matrix.py (every
+# image lutkit writes read back by oiiotool, ImageMagick, ffmpeg and libtiff, compared in numpy).
 # openexr: OpenEXR's own tools (exrstdattr, exrmakepreview, exrmultiview) write the test files
 # that carry every attribute type OpenEXR knows (tests/formats/test_image_plausibility.cpp).
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools openexr libopenexr-dev libpng-dev
@@ -30,7 +32,7 @@ PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools openexr
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
   desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg python3-numpy
-  libfast-float-dev libfmt-dev emscripten mingw-w64 wine64 chromium chromium-driver python3-selenium "$@")
+  imagemagick libtiff-tools libfast-float-dev libfmt-dev emscripten mingw-w64 wine64 chromium chromium-driver python3-selenium "$@")
 if [ "$ONLY" = 1 ]; then
   PACKAGES=("$@")
 fi

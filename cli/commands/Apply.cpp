@@ -11,6 +11,7 @@
 
 #include "lut/formats/ApplyImage.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/FileNames.h"
 
 #include <CLI/CLI.hpp>
 
@@ -93,18 +94,19 @@ int runApply(const ApplyOptions& o) {
             std::lock_guard<std::mutex> lock(noteMutex);
             const std::string outside = r.domain.str(chain.domainMin(), chain.domainMax());
             if (!outside.empty())
-                std::cerr << "lutkit: warning: " << j.input << ": " << outside
+                std::cerr << "lutkit: warning: " << printable(j.input) << ": " << outside
                           << "; they take the LUT's edge values"
                           << (o.color.any() ? ""
                                             : " (--from/--lut-space put the image in the space "
                                               "the LUT was made for)")
                           << "\n";
             if (r.clamped.outside)
-                std::cerr << "lutkit: warning: " << j.input << ": " << clampedText(r) << "\n";
+                std::cerr << "lutkit: warning: " << printable(j.input) << ": " << clampedText(r)
+                          << "\n";
             for (const auto& d : r.diagnostics)
                 if (isShown(d, o.verbosity))
-                    std::cerr << "lutkit: " << severityWord(d.severity) << ": " << j.input << ": "
-                              << d.message << "\n";
+                    std::cerr << "lutkit: " << severityWord(d.severity) << ": "
+                              << printable(j.input + ": " + d.message) << "\n";
         }
         if (!o.verbosity.verbose)
             return std::string();

@@ -114,7 +114,7 @@ int split(const AtlasCommandOptions& o) {
     for (int k = 0; k < a.shape.rows; ++k) {
         if (skip[static_cast<std::size_t>(k)]) {
             if (!o.verbosity.quiet)
-                std::cerr << "lutkit: " << paths[static_cast<std::size_t>(k)]
+                std::cerr << "lutkit: " << printable(paths[static_cast<std::size_t>(k)])
                           << " exists; skipped (-n)\n";
             continue;
         }

@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -124,14 +125,34 @@ void printText(const std::string& path, const CheckReport& r, CheckStatus verdic
         std::cout << "  ... and " << r.findingsLeftOut << " more (-v lists every one)\n";
 }
 
-// Where each LUT's picture goes: the path itself for one LUT, DIR/<name>.check.png for several.
-std::string picturePath(const CheckCommandOptions& o, const std::string& input) {
+// Where each LUT's picture goes: the path itself for one LUT, DIR/<name>.check.png for several,
+// <name> its file name without the extension, with it where two LUTs share a base name (x.cube,
+// x.3dl), and numbered where two share a file name (a/x.cube, b/x.cube: x.cube-2): never one
+// picture for two LUTs (the second failed "already exists").
+std::vector<std::string> picturePaths(const CheckCommandOptions& o) {
+    std::vector<std::string> paths(o.inputs.size());
     if (o.report.empty())
-        return "";
-    if (o.inputs.size() == 1)
-        return o.report;
-    std::filesystem::path dir(o.report);
-    return (dir / (std::filesystem::path(input).stem().string() + ".check.png")).string();
+        return paths;
+    if (o.inputs.size() == 1) {
+        paths[0] = o.report;
+        return paths;
+    }
+    namespace fs = std::filesystem;
+    std::map<std::string, int> stems, names;
+    for (const auto& in : o.inputs) {
+        ++stems[fs::path(in).stem().string()];
+        ++names[fs::path(in).filename().string()];
+    }
+    std::map<std::string, int> used;
+    for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+        const fs::path in(o.inputs[i]);
+        std::string name =
+            stems[in.stem().string()] > 1 ? in.filename().string() : in.stem().string();
+        if (const int n = ++used[name]; n > 1 || names[in.filename().string()] > 1)
+            name += "-" + std::to_string(n);
+        paths[i] = (fs::path(o.report) / (name + ".check.png")).string();
+    }
+    return paths;
 }
 
 } // namespace
@@ -166,7 +187,9 @@ int runCheck(const CheckCommandOptions& o) {
     }
     bool failed = false;
     std::vector<std::string> jsonReports;
-    for (const std::string& path : o.inputs) {
+    const std::vector<std::string> pictures = picturePaths(o);
+    for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+        const std::string& path = o.inputs[i];
         try {
             FormatOptions read;
             read.layout = o.inLayout;
@@ -191,7 +214,7 @@ int runCheck(const CheckCommandOptions& o) {
             const bool fails =
                 verdict == CheckStatus::Fail || (o.strict && verdict == CheckStatus::Warn);
             failed = failed || fails;
-            const std::string picture = picturePath(o, path);
+            const std::string& picture = pictures[i];
             bool wrote = false;
             if (!picture.empty() && beginOutput(picture, o.overwrite, inputs, o.verbosity.quiet)) {
                 const CheckPicture p =
@@ -213,7 +236,7 @@ int runCheck(const CheckCommandOptions& o) {
         } catch (const UsageError&) {
             throw;
         } catch (const Error& e) {
-            std::cerr << "lutkit: error: " << e.what() << "\n";
+            std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
             failed = true;
         }
     }

@@ -157,7 +157,7 @@ int runConvert(const ConvertOptions& o) {
         o.output, o.overwrite, {o.input, o.originalLut, o.screenshot, o.color.config});
     if (target.skip) {
         if (!o.verbosity.quiet)
-            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
     const std::optional<LutPurpose> outPurpose = purposeOption(o.target);
@@ -248,7 +248,7 @@ int runConvert(const ConvertOptions& o) {
     const bool madeGame =
         report.purpose.conversion && report.purpose.conversion->to == LutPurpose::Smash;
     if (!madeGame && (!o.originalLut.empty() || !o.screenshot.empty() || o.refine))
-        std::cerr << "lutkit: warning: " << o.input
+        std::cerr << "lutkit: warning: " << printable(o.input)
                   << " is already the game's LUT: --original-lut, --screenshot and --refine "
                      "were not used\n";
     checkWrittenLut(o.output, report.readBack ? *report.readBack : report.input, o.verbosity,

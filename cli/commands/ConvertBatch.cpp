@@ -132,9 +132,7 @@ int runConvertBatch(const ConvertOptions& o) {
         return false;
     };
     const BatchPlan plan = planBatch({o.input}, out, {o.originalLut, o.screenshot}, {}, ext, luts);
-    for (const auto& n : plan.notes)
-        if (!o.verbosity.quiet)
-            std::cerr << "lutkit: note: " << n << "\n";
+    // plan.notes (missing frames, skipped folder entries) are printed once, by runBatch.
     BatchOptions bo;
     bo.quiet = o.verbosity.quiet;
     bo.unit = "LUTs";

@@ -27,7 +27,7 @@ int runEmbed(const EmbedOptions& o) {
     const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input, o.originalLut});
     if (target.skip) {
         if (!o.verbosity.quiet)
-            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
     lut::EmbedOptions eo;
@@ -71,12 +71,13 @@ int runEmbed(const EmbedOptions& o) {
               << p.frameWidth << "x" << p.frameHeight << " pixels with its frame) at (" << p.frameX
               << ", " << p.frameY << "), " << wo.bitDepth << "-bit: " << o.output << "\n";
     if (o.scale == 0 && p.scale < kDefaultPatchScale) // the default did not fit
-        std::cerr << "lutkit: warning: " << o.output << ": the screenshot is too small for scale "
-                  << kDefaultPatchScale << "; at scale " << p.scale
+        std::cerr << "lutkit: warning: " << printable(o.output)
+                  << ": the screenshot is too small for scale " << kDefaultPatchScale
+                  << "; at scale " << p.scale
                   << " a JPEG save (4:2:0 chroma) blends the patch's colours: save the graded "
                      "image as PNG or TIFF\n";
     if (ext == ".jpg" || ext == ".jpeg")
-        std::cerr << "lutkit: warning: " << o.output
+        std::cerr << "lutkit: warning: " << printable(o.output)
                   << ": JPEG is lossy: the patch survives a quality-90 save (about 0.7 8-bit "
                      "steps mean in game at scale 8, extract reports it), PNG and TIFF keep it "
                      "exact\n";

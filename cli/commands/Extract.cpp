@@ -53,7 +53,7 @@ int runExtract(const ExtractOptions& o) {
     const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.input, o.originalLut});
     if (target.skip) {
         if (!o.verbosity.quiet)
-            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
     formats::ExtractFileOptions fo;
@@ -130,7 +130,7 @@ int runExtract(const ExtractOptions& o) {
         if (d.severity == Diagnostic::Severity::Info)
             std::cout << d.message << "\n";
         else
-            std::cerr << "lutkit: " << o.input << ": " << d.str() << "\n";
+            std::cerr << "lutkit: " << printable(o.input + ": " + d.str()) << "\n";
     }
     if (res.target == LutPurpose::Smash && res.clampedEntries > 0)
         std::cout << "clamped " << res.clampedEntries << " values (farthest "

@@ -10,6 +10,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/roundtrip/Fit.h"
 
 #include <CLI/CLI.hpp>
@@ -24,7 +25,7 @@ int runFit(const FitOptions& o) {
     const OutputTarget target = resolveOutput(o.output, o.overwrite, {o.before, o.after});
     if (target.skip) {
         if (!o.verbosity.quiet)
-            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
     auto before = formats::readImage(o.before);

@@ -29,7 +29,7 @@ int runNeutral(const NeutralOptions& o) {
     const OutputTarget target = resolveOutput(o.output, o.overwrite, {});
     if (target.skip) {
         if (!o.verbosity.quiet)
-            std::cerr << "lutkit: " << o.output << " exists; skipped (-n)\n";
+            std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
     formats::registerBuiltinFormats();

@@ -252,8 +252,8 @@ int runPreview(const PreviewOptions& o) {
             if (bloomNote && noted)
                 continue;
             noted = noted || bloomNote;
-            std::cerr << "lutkit: " << severityWord(d.severity) << ": " << input << ": "
-                      << d.message << "\n";
+            std::cerr << "lutkit: " << severityWord(d.severity) << ": "
+                      << printable(input + ": " + d.message) << "\n";
         }
     };
 

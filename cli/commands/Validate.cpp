@@ -45,7 +45,8 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
         for (const Diagnostic& d : v.diagnostics) {
             if (d.severity == Diagnostic::Severity::Error) {
                 // Errors without a place already name the file in their message.
-                std::cerr << (d.path.empty() ? "lutkit: error: " + d.message : d.str()) << "\n";
+                std::cerr << printable(d.path.empty() ? "lutkit: error: " + d.message : d.str())
+                          << "\n";
                 continue;
             }
             if (isShown(d, o.verbosity))
@@ -81,7 +82,7 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
             std::cout << path << ": ok (" << describe(f) << ")\n";
         return ok;
     } catch (const Error& e) {
-        std::cerr << "lutkit: error: " << e.what() << "\n";
+        std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
         return false;
     }
 }

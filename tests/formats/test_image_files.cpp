@@ -29,7 +29,7 @@ TEST(ImageFiles, ExtensionsAreImagesInAnyCase) {
 }
 
 TEST(ImageFiles, AlphaOnlyWhereTheFormatHoldsIt) {
-    for (const char* p : {"o.jpg", "o.JPEG", "o.bmp", "o.hdr"}) {
+    for (const char* p : {"o.jpg", "o.JPEG", "o.bmp", "o.hdr", "o.gif"}) {
         EXPECT_FALSE(canHoldAlpha(p)) << p;
         EXPECT_FALSE(renderedImageWriteOptions(info(4, 8, false), p).alpha) << p;
     }

@@ -80,6 +80,12 @@ void checkFullDisk(const Case& c) {
     const std::string dir = lut::test::tempDir();
     writeBytes(dir + "/in.cube", randomCube());
     writeNoisePng(dir + "/in.png");
+    // Tagged sRGB: OpenImageIO's TIFF writer then writes an Exif directory, by name (issue 41).
+    ASSERT_EQ(lut::test::runCommand("oiiotool " + shellQuoted(dir + "/in.png") +
+                                    " --attrib oiio:ColorSpace sRGB -o " +
+                                    shellQuoted(dir + "/in-srgb.png"))
+                  .exitCode,
+              0);
     FullDisk disk(dir + "/disk");
     if (disk.kind() == FullDisk::Kind::None)
         GTEST_SKIP() << "no small file system can be mounted here and no ENOSPC shim: "
@@ -94,12 +100,15 @@ void checkFullDisk(const Case& c) {
         disk.fill(freeKiB);
         std::string args = fill(c.command, "OUT", shellQuoted(out));
         args = fill(args, "IN.cube", shellQuoted(dir + "/in.cube"));
+        args = fill(args, "IN-srgb.png", shellQuoted(dir + "/in-srgb.png"));
         args = fill(args, "IN.png", shellQuoted(dir + "/in.png"));
         const auto r = disk.run(args);
         EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
         const auto lines = errorLines(r.err);
         ASSERT_EQ(lines.size(), 1u) << r.err;
         EXPECT_THAT(lines[0], HasSubstr(out + ": cannot write: No space left on device"));
+        // The path once (an OpenEXR write said "OUT: cannot write: OUT: cannot write: ...").
+        EXPECT_EQ(lines[0].find(out), lines[0].rfind(out)) << lines[0];
         EXPECT_THAT(lines[0], ::testing::Not(HasSubstr(".tmp"))); // never the hidden name
         EXPECT_EQ(fileBytes(out), old);
         EXPECT_EQ(disk.listing(), std::vector<std::string>{name});
@@ -129,6 +138,7 @@ std::vector<Case> imageCases() {
          {".png", ".jpg", ".tif", ".exr", ".bmp", ".tga", ".hdr", ".webp", ".dpx", ".gif"})
         cases.push_back(
             {std::string("apply_") + (e + 1), "apply -y --lut IN.cube IN.png -o OUT", e});
+    cases.push_back({"apply_srgb_tif", "apply -y --lut IN.cube IN-srgb.png -o OUT", ".tif"});
     cases.push_back({"preview_png", "preview -y --lut IN.cube IN.png -o OUT", ".png"});
     cases.push_back({"preview_tif", "preview -y IN.png -o OUT", ".tif"});
     cases.push_back({"embed_png", "embed -y IN.png OUT", ".png"});

@@ -283,36 +283,29 @@ const std::vector<Defect>& table() {
              writeBytes(path, b.substr(0, b.size() / 2));
          }},
         // ---- formats read through OpenColorIO
+        // OpenColorIO's own words, short: the format's reason without its FileTransform wrapper
+        // ("The specified transform file '...' could not be loaded. All formats have been tried
+        // ..."), the path named once, first (issue 41: messages of 482 characters).
         {"garbage.3dl", text("this is not a 3dl file\n"),
-         "garbage.3dl: OpenColorIO cannot read it: The specified transform file 'garbage.3dl' "
-         "could not be loaded. All formats have been tried. (Enable debug log for errors from all "
-         "formats.) The formats for the file's extension gave the errors: 'flame' failed with: "
-         "Error parsing .3dl file. Does not appear to contain a valid shaper LUT or a 3D LUT. "
-         "'flame' failed with: Error parsing .3dl file. Does not appear to contain a valid shaper "
-         "LUT or a 3D LUT."},
+         "garbage.3dl: OpenColorIO cannot read it: flame: Error parsing .3dl file. Does not "
+         "appear to contain a valid shaper LUT or a 3D LUT."},
         {"bad-header.spi3d", text("SPILUT 1.0\n3 3\n2 2\n0 0 0 0 0 0\n"),
-         "bad-header.spi3d: OpenColorIO cannot read it: The specified transform file "
-         "'bad-header.spi3d' could not be loaded. All formats have been tried. (Enable debug log "
-         "for errors from all formats.) The format for the file's extension gave the error: "
-         "'spi3d' failed with: Error parsing .spi3d file (bad-header.spi3d). Error while reading "
-         "LUT size. Found: '2 2'."},
+         "bad-header.spi3d: OpenColorIO cannot read it: spi3d: Error parsing .spi3d file. Error "
+         "while reading LUT size. Found: '2 2'."},
         {"garbage.csp", text("CSPLUTV100\n3D\nnonsense\n"),
-         "garbage.csp: OpenColorIO cannot read it: The specified transform file 'garbage.csp' "
-         "could not be loaded. All formats have been tried. (Enable debug log for errors from all "
-         "formats.) The format for the file's extension gave the error: 'cinespace' failed with: "
-         "Prelut does not specify valid dimension size on channel '0: 'nonsense' in garbage.csp."},
+         "garbage.csp: OpenColorIO cannot read it: cinespace: Prelut does not specify valid "
+         "dimension size on channel '0: 'nonsense'"},
+        // A line number where OpenColorIO gives one: PATH:LINE.
+        {"bad-row.spi1d", text("Version 1\nFrom 0 1\nLength 2\nComponents 3\n{\n0 0 0\nzz\n}\n"),
+         "bad-row.spi1d:7: OpenColorIO cannot read it: spi1d: Malformed LUT line (zz)"},
         // A reader inside OCIO that believes a size in the file fails with a bare C++ library
         // message (std::length_error: "vector::reserve"); it is explained.
         {"huge-size.itx", text("LUT_3D_SIZE 100000\n0 0 0\n"),
-         "huge-size.itx: OpenColorIO cannot read it: The specified transform file 'huge-size.itx' "
-         "could not be loaded. All formats have been tried. (Enable debug log for errors from all "
-         "formats.) The format for the file's extension gave the error: 'iridas_itx' failed with: "
-         "a size declared in the file is too large to allocate (vector::reserve)"},
+         "huge-size.itx: OpenColorIO cannot read it: iridas_itx: a size declared in the file is "
+         "too large to allocate (vector::reserve)"},
         {"empty.clf", text(""),
-         "empty.clf: OpenColorIO cannot read it: The specified transform file 'empty.clf' could "
-         "not be loaded. All formats have been tried. (Enable debug log for errors from all "
-         "formats.) The format for the file's extension gave the error: 'Academy/ASC Common LUT "
-         "Format' failed with: Parsing error: 'empty.clf' is not a CTF/CLF file."},
+         "empty.clf: OpenColorIO cannot read it: Academy/ASC Common LUT Format: Parsing error: "
+         "the file is not a CTF/CLF file."},
     };
     return t;
 }

@@ -229,6 +229,23 @@ private:
     int m_xMin = 0, m_yMin = 0, m_granularity = 1;
 };
 
+// Why a write failed, without the file's name: OpenEXR passes on the stream's own error ("OUT:
+// cannot write: REASON") or names the file itself ("Cannot open image file "OUT". REASON"), and
+// OutputFile::fail names it again ("OUT: cannot write: OUT: cannot write: No space left on
+// device" was printed).
+std::string reasonOnly(std::string text, const std::string& path) {
+    const std::string own = path + ": cannot write: ";
+    if (const auto at = text.find(own); at != std::string::npos)
+        return text.substr(at + own.size());
+    const std::string quoted = "\"" + path + "\".";
+    if (const auto at = text.find(quoted); at != std::string::npos) {
+        text.erase(0, at + quoted.size());
+        while (!text.empty() && text.front() == ' ')
+            text.erase(0, 1);
+    }
+    return text;
+}
+
 class ExrSink : public ImageSink {
 public:
     ExrSink(const OutputTarget& target, const SinkSpec& spec)
@@ -272,7 +289,7 @@ public:
             m_file = std::make_unique<Imf::OutputFile>(m_stream, header,
                                                        threadsFor(header.compression()));
         } catch (const std::exception& e) {
-            m_out.fail(e.what());
+            m_out.fail(reasonOnly(e.what(), m_out.path()));
         }
     }
 
@@ -291,7 +308,7 @@ public:
             m_file->setFrameBuffer(fb);
             m_file->writePixels(y1 - y0);
         } catch (const std::exception& e) {
-            m_out.fail(e.what());
+            m_out.fail(reasonOnly(e.what(), m_out.path()));
         }
     }
 
@@ -299,7 +316,7 @@ public:
         try {
             m_file.reset(); // writes the line offset table
         } catch (const std::exception& e) {
-            m_out.fail(e.what());
+            m_out.fail(reasonOnly(e.what(), m_out.path()));
         }
         m_out.commit();
     }

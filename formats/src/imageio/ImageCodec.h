@@ -41,6 +41,10 @@ public:
     double xResolution = 0, yResolution = 0;               // pixels per resolutionUnit, 0 = none
     std::string resolutionUnit;                            // "in", "cm"
     std::vector<std::pair<std::string, std::string>> text; // key, value
+    // Tagged sRGB (a PNG's sRGB chunk, Exif ColorSpace 1, OpenImageIO's oiio:ColorSpace "sRGB",
+    // which its JPEG reader gives every JPEG): writers of another format tag their file so (PNG's
+    // sRGB chunk where no ICC profile is written, Exif ColorSpace 1 in TIFF and JPEG).
+    bool srgb = false;
     // OpenImageIO's files: the data window's origin and the display window, kept by writers of
     // the same format.
     bool hasWindows = false;

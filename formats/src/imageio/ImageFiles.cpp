@@ -48,7 +48,9 @@ bool isImageExtension(const std::string& path) {
 
 bool canHoldAlpha(const std::string& pathOrFormat) {
     const std::string f = canonicalImageFormat(pathOrFormat);
-    return f != "jpeg" && f != "bmp" && f != "hdr" && f != "pnm";
+    // GIF has a transparent colour, but OpenImageIO 2.4's GIF writer writes every pixel opaque
+    // (gifoutput.cpp, measured in tests/robust/write_matrix.py): alpha is dropped, and said so.
+    return f != "jpeg" && f != "bmp" && f != "hdr" && f != "pnm" && f != "gif";
 }
 
 ImageWriteOptions renderedImageWriteOptions(const ImageInfo& in, const std::string& outPath,
@@ -152,7 +154,10 @@ RenderedLayout appliedImageLayout(const ImageInfo& in, const std::string& out, i
         const auto a = std::find(names.begin(), names.end(), "A");
         if (a != names.end()) {
             names.erase(a);
-            note(Diagnostic::Severity::Info, "alpha dropped: " + name + " has no alpha channel");
+            note(Diagnostic::Severity::Info,
+                 "alpha dropped: " + name +
+                     (f == "gif" ? " is written opaque (OpenImageIO's GIF writer)"
+                                 : " has no alpha channel"));
         }
     }
     const int maxCh = maxChannels(f);
@@ -167,6 +172,13 @@ RenderedLayout appliedImageLayout(const ImageInfo& in, const std::string& out, i
              "channels " + list + " dropped: " + name + " holds R, G, B and alpha only");
         names = kept;
     }
+    // OpenImageIO 2.4's WebP writer takes colour with alpha to a 2.2 power, divides it by alpha
+    // and back, on 8-bit values (webpoutput.cpp): what it stores is not what it was given.
+    if (f == "webp" && std::find(names.begin(), names.end(), "A") != names.end())
+        note(Diagnostic::Severity::Warning,
+             "WEBP with alpha: OpenImageIO's WebP writer changes colour where there is alpha "
+             "(tones below 15/255 become 0, colour under partial alpha shifts): write .png "
+             "or .tif to keep it");
     l.channelNames = names;
     return l;
 }

@@ -167,6 +167,9 @@ public:
         };
         // The writer is picked by the extension of the name it is given.
         const SinkSpec& spec = parts.front();
+        m_format = spec.format.empty() ? target.path : spec.format;
+        m_width = spec.width;
+        m_height = spec.height;
         std::string name = target.path;
         if (!spec.format.empty() && spec.format.find('.') == std::string::npos &&
             (target.inPlace() || canonicalImageFormat(name) != canonicalImageFormat(spec.format)))
@@ -183,8 +186,10 @@ public:
                     ": name a file");
             name = m_out.tempPath();
             cb.pwrite = nullptr;
-            m_temp = name;
         }
+        // A writer that must read back what it writes writes this file by name (OiioSink.cpp).
+        cb.file = m_out.tempPath();
+        m_temp = cb.file;
         std::string error;
         // The call first, then the message: argument order is unspecified.
         const int status = api().openSink(parts.data(), static_cast<int>(parts.size()), name, cb,
@@ -210,10 +215,24 @@ public:
         std::string error;
         const int status = api().finishSink(m_handle, error);
         rethrow(status, userFacing(error));
-        m_out.commit();
+        m_out.commit([this](const std::string& temp) { checkWrittenHeader(temp); });
     }
 
 private:
+    // A written file (before its rename) declares the image written, as lutkit's own header
+    // scanners read it: a writer that leaves a file no reader opens is an error, not exit 0 (issue
+    // 41: OpenImageIO's TIFF writer through a proxy left a first directory of Exif tags only).
+    void checkWrittenHeader(const std::string& temp) const {
+        const DeclaredImage d = checkImageHeader(temp, m_format);
+        if (d.format.empty())
+            return; // a format the scanners do not know
+        if (d.parts.empty() || d.parts.front().width != static_cast<std::uint64_t>(m_width) ||
+            d.parts.front().height != static_cast<std::uint64_t>(m_height))
+            throw Error(temp + ": the file written does not declare the " +
+                        std::to_string(m_width) + "x" + std::to_string(m_height) +
+                        " image written (" + d.format + ")");
+    }
+
     // Messages name the user's path, never the temporary file a multi-part writer was given.
     std::string userFacing(std::string text) const {
         if (!m_temp.empty())
@@ -224,7 +243,9 @@ private:
 
     ByteWriter m_out;
     std::string m_path;
-    std::string m_temp; // the temporary file written by name ("" = through the callbacks)
+    std::string m_temp;   // the temporary file, which a writer may write by name ("" = none)
+    std::string m_format; // the format's name, or the file's name
+    int m_width = 0, m_height = 0; // of the first image
     void* m_handle = nullptr;
     int m_granularity = 1;
 };

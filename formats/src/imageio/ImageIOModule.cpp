@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Entry point of lutkit_imageio.so: OpenImageIO sources and sinks (OiioImage.cpp) behind a
+// Entry point of lutkit_imageio.so: OpenImageIO sources and sinks (OiioImage.cpp,
+// OiioSink.cpp) behind a
 // C-callable table (ImageIOModuleApi.h says why this is a separate module).
 #include "imageio/ImageIOModuleApi.h"
 #include "imageio/OiioImage.h"
+#include "imageio/OiioSink.h"
 
 #include "lut/Error.h"
 #include "lut/io/TempFiles.h"

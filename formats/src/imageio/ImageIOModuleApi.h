@@ -20,8 +20,8 @@
 namespace lut::formats::module {
 
 // 3: ImageInfo has colorSpace and chromaSubsampling; 4: parts (subimages and MIP levels) read
-// and written one after the other, tiles, windows.
-constexpr int kImageIOApiVersion = 4;
+// and written one after the other, tiles, windows; 5: ByteCallbacks::file.
+constexpr int kImageIOApiVersion = 5;
 constexpr const char* kImageIOModuleName = "lutkit_imageio.so";
 constexpr const char* kImageIOEntryPoint = "lutkit_imageio_api";
 
@@ -33,6 +33,11 @@ struct ByteCallbacks {
     // Writes n bytes at offset; returns false with a reason on failure.
     bool (*pwrite)(void* context, const void* data, std::size_t n, std::uint64_t offset,
                    std::string& error) = nullptr;
+    // The output's own temporary file (a regular file, renamed into place by the caller after
+    // the sink finishes), or "" (standard output, a device, memory). A writer that must read back
+    // what it wrote writes this file by name instead of through pwrite (without one: a private
+    // scratch file, copied through pwrite at the end). See OiioSink.
+    std::string file;
 };
 
 struct SourceOpen {

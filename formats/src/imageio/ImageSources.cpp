@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstring>
 #include <optional>
+#include <sys/stat.h>
 
 namespace lut::formats {
 
@@ -167,17 +168,69 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
     return openOiioSource(path, std::move(memory), named.empty() ? format : named);
 }
 
+// A file as it is when its read begins, compared with it after the read (the content check):
+// any write to the file in between moves its change time (ctime, set by the kernel on every
+// write, whatever the writer does to the modification time), its modification time or its size.
+// A rewrite in place at the same size (`dd conv=notrunc` while an uncompressed TIFF was read)
+// gave rows of neither picture, exit 0 (issue 41).
+struct FileState {
+    bool known = false;
+    dev_t dev = 0;
+    ino_t ino = 0;
+    off_t size = 0;
+    timespec mtime{}, ctime{};
+};
+
+FileState fileState(const std::string& path) {
+    FileState f;
+    struct stat st {};
+    if (isStdStream(path) || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        return f;
+    f.known = true;
+    f.dev = st.st_dev;
+    f.ino = st.st_ino;
+    f.size = st.st_size;
+    f.mtime = st.st_mtim;
+    f.ctime = st.st_ctim;
+    return f;
+}
+
+bool sameTime(const timespec& a, const timespec& b) {
+    return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
+}
+
+// Throws "PATH: the file changed while being read (...)" when it did. A file replaced by another
+// (renamed over it: another inode) was read whole as it was: that is no change to what was read.
+void checkUnchanged(const std::string& path, const FileState& before) {
+    if (!before.known)
+        return;
+    const FileState after = fileState(path);
+    if (!after.known || after.dev != before.dev || after.ino != before.ino)
+        return;
+    if (after.size != before.size)
+        throw Error(path + ": the file changed while being read (" + std::to_string(before.size) +
+                    " bytes when opened, " + std::to_string(after.size) + " bytes now)");
+    if (!sameTime(after.ctime, before.ctime) || !sameTime(after.mtime, before.mtime))
+        throw Error(path + ": the file changed while being read (written to by another " +
+                    "program: its change time moved); read it again once it is written");
+}
+
 // Every part of a source within the pixel limit, whatever codec reads it; the header's
-// declaration bounds what the codec's own decoder holds.
+// declaration bounds what the codec's own decoder holds. A file's state is checked after the
+// read (checkUnchanged).
 class CheckedSource : public ImageSource {
 public:
-    CheckedSource(std::string path, std::unique_ptr<ImageSource> inner, std::uint64_t decoder)
-        : m_path(std::move(path)), m_inner(std::move(inner)), m_decoder(decoder) {
+    CheckedSource(std::string path, std::unique_ptr<ImageSource> inner, std::uint64_t decoder,
+                  FileState before = {})
+        : m_path(std::move(path)), m_inner(std::move(inner)), m_decoder(decoder), m_before(before) {
         describe();
     }
     int rowGranularity() const override { return m_inner->rowGranularity(); }
     void readRows(int y0, int y1, void* dst) override { m_inner->readRows(y0, y1, dst); }
-    void finish() override { m_inner->finish(); }
+    void finish() override {
+        m_inner->finish();
+        checkUnchanged(m_path, m_before);
+    }
     int parts() const override { return m_inner->parts(); }
     void selectPart(int index) override {
         m_inner->selectPart(index);
@@ -206,6 +259,7 @@ private:
     std::string m_path;
     std::unique_ptr<ImageSource> m_inner;
     std::uint64_t m_decoder = 0;
+    FileState m_before;
 };
 
 } // namespace
@@ -259,9 +313,12 @@ void ImageSink::nextPart() {
 }
 
 std::unique_ptr<ImageSource> openImageSource(const std::string& path, const std::string& format) {
+    if (isStdinName(path) && !isStdStream(path))
+        return openImageSource("-", format); // /dev/stdin is standard input
     DeclaredImage declared;
+    const FileState before = fileState(path); // before the header is read
     auto src = openAnySource(path, format, declared, std::nullopt);
-    return std::make_unique<CheckedSource>(path, std::move(src), declared.decoderBytes);
+    return std::make_unique<CheckedSource>(path, std::move(src), declared.decoderBytes, before);
 }
 
 std::unique_ptr<ImageSource> openImageMemory(const std::string& name, std::string bytes,

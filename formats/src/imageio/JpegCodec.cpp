@@ -259,6 +259,7 @@ private:
         }
         auto meta = std::make_shared<ImageMetadata>();
         meta->format = "jpeg";
+        meta->srgb = true; // as OpenImageIO said of every JPEG (ImageMetadata::srgb)
         meta->jpegSubsampling = m_info.chromaSubsampling;
         std::vector<std::pair<int, std::string>> iccChunks;
         for (jpeg_saved_marker_ptr m = m_cinfo.marker_list; m; m = m->next) {

@@ -1,134 +1,30 @@
 // SPDX-License-Identifier: Apache-2.0
-// Inside lutkit_imageio.so: OpenImageIO sources and sinks for every format the native codecs do
-// not take (TIFF, JPEG, DPX, HDR, WebP, tiled or multi-part EXR ...; BMP and TGA are only written
-// here, BmpCodec.cpp and TgaCodec.cpp read them). No colour
-// conversion is ever applied: stored values in, stored values out. Metadata: OpenImageIO's
-// attributes (EXIF and TIFF tags, the ICC profile, IPTC, XMP, format-specific ones) are kept as
-// exact bytes and given back to the writer.
+// Inside lutkit_imageio.so: the OpenImageIO source for every format the native codecs do not
+// take (TIFF, JPEG, DPX, BMP, TGA, HDR, WebP, tiled or multi-part EXR ...); the sink is in
+// OiioSink.cpp. No colour conversion is ever applied: stored values in, stored values out.
+// Metadata: OpenImageIO's attributes (EXIF and TIFF tags, the ICC profile, IPTC, XMP,
+// format-specific ones) are kept as exact bytes and given back to the writer.
 #include "imageio/OiioImage.h"
-#include "imageio/OiioMetadata.h"
+
+#include "imageio/OiioCommon.h"
 
 #include "lut/Limits.h"
-#include "lut/io/TempFiles.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
+
+// From OpenImageIO/tiffutils.h, which needs libtiff's headers for the rest of what it declares.
+OIIO_NAMESPACE_BEGIN
+OIIO_API void encode_exif(const ImageSpec& spec, std::vector<char>& blob);
+OIIO_NAMESPACE_END
 
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <unistd.h>
 
 namespace lut::formats::module {
 
 namespace OIIO = OIIO_NAMESPACE;
-
-namespace {
-
-std::string oneLine(std::string s) {
-    s = s.substr(0, s.find('\n')); // OIIO stacks libpng's and libjpeg's own lines: one is ours
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\r'))
-        s.pop_back();
-    return s;
-}
-
-// A writer's error, never empty (OpenImageIO's IFF writer fails without a message).
-std::string writerError(const std::string& s) {
-    const std::string line = oneLine(s);
-    return line.empty() ? "OpenImageIO's writer failed without saying why" : line;
-}
-
-PixelType pixelTypeOf(OIIO::TypeDesc t) {
-    switch (t.basetype) {
-    case OIIO::TypeDesc::UINT8:
-        return PixelType::UInt8;
-    case OIIO::TypeDesc::UINT16:
-        return PixelType::UInt16;
-    case OIIO::TypeDesc::HALF:
-        return PixelType::Half;
-    default:
-        return PixelType::Float; // 32-bit integers, double ...: read as float
-    }
-}
-
-OIIO::TypeDesc typeDescOf(PixelType t) {
-    switch (t) {
-    case PixelType::UInt8:
-        return OIIO::TypeDesc::UINT8;
-    case PixelType::UInt16:
-        return OIIO::TypeDesc::UINT16;
-    case PixelType::Half:
-        return OIIO::TypeDesc::HALF;
-    case PixelType::Float:
-        return OIIO::TypeDesc::FLOAT;
-    }
-    return OIIO::TypeDesc::FLOAT;
-}
-
-} // namespace
-
-// Writes through the caller's callbacks; a failed write is recorded and reported at close, and
-// the codec is told the bytes went out, so no codec can answer it with exit() (libjpeg would).
-class CallbackProxy : public OIIO::Filesystem::IOProxy {
-public:
-    CallbackProxy(const std::string& name, ByteCallbacks cb)
-        : IOProxy(name, IOProxy::Write), m_cb(cb) {}
-    const char* proxytype() const override { return "lutkit"; }
-    size_t write(const void* buf, size_t size) override {
-        pwrite(buf, size, m_pos);
-        m_pos += static_cast<int64_t>(size);
-        return size;
-    }
-    size_t pwrite(const void* buf, size_t size, int64_t offset) override {
-        if (m_failed.empty() && size > 0 &&
-            !m_cb.pwrite(m_cb.context, buf, size, static_cast<std::uint64_t>(offset), m_failed) &&
-            m_failed.empty())
-            m_failed = "write failed";
-        m_end = std::max<int64_t>(m_end, offset + static_cast<int64_t>(size));
-        return size;
-    }
-    size_t size() const override { return static_cast<size_t>(m_end); }
-    const std::string& failure() const { return m_failed; }
-
-private:
-    ByteCallbacks m_cb;
-    std::string m_failed;
-    int64_t m_end = 0;
-};
-
-namespace {
-
-// A private file holding `bytes` (mode 0600, in the temporary folder), registered for removal on
-// an interrupt; its path.
-std::string scratchFile(const std::string& bytes, const std::string& suffix,
-                        TempPathRegistration& registration) {
-    std::string path =
-        (std::filesystem::temp_directory_path() / ("lutkit-stdin-XXXXXX" + suffix)).string();
-    const int fd = ::mkstemps(path.data(), static_cast<int>(suffix.size()));
-    if (fd < 0)
-        throw Error("cannot create a temporary file in " +
-                    std::filesystem::temp_directory_path().string() + ": " + std::strerror(errno));
-    registration = TempPathRegistration(path);
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            const std::string why = std::strerror(errno);
-            ::close(fd);
-            ::unlink(path.c_str());
-            registration.release();
-            throw Error(path + ": cannot write: " + why);
-        }
-        done += static_cast<std::size_t>(n);
-    }
-    ::close(fd);
-    return path;
-}
-
-} // namespace
 
 OiioSource::OiioSource(const SourceOpen& req) : m_path(req.path) {
     try {
@@ -305,7 +201,9 @@ void OiioSource::select(int index, ImageInfo& info, ImageMetadata& meta, int& gr
     granularity = s.tile_width > 0 ? s.tile_height : 1;
     meta = ImageMetadata();
     meta.format = info.format;
-    meta.oiioAttributes = serialize(s.extra_attribs);
+    meta.oiioAttributes = serializeAttributes(s.extra_attribs);
+    meta.srgb = OIIO::Strutil::iequals(info.colorSpace, "sRGB") ||
+                s.get_int_attribute("Exif:ColorSpace", 0) == 1;
     if (const OIIO::ParamValue* icc = s.find_attribute("ICCProfile"))
         meta.icc.assign(static_cast<const char*>(icc->data()), icc->type().size());
     std::vector<char> exif;
@@ -339,173 +237,6 @@ void OiioSource::readRows(int y0, int y1, void* dst) {
     // end of data" (the rest grey) are recorded as the reader's error, not its result.
     if (!ok || m_in->has_error())
         fail("cannot read image data", ok);
-}
-
-OIIO::ImageSpec OiioSink::makeSpec(const SinkSpec& s) const {
-    const std::string fmt = m_out->format_name();
-    const std::string& name = m_path;
-    OIIO::ImageSpec spec(s.width, s.height, static_cast<int>(s.channelNames.size()),
-                         typeDescOf(s.type));
-    if (s.metadata && !s.metadata->oiioAttributes.empty()) {
-        deserialize(s.metadata->oiioAttributes, spec);
-    } else if (s.metadata) {
-        if (!s.metadata->icc.empty())
-            spec.attribute(
-                "ICCProfile",
-                OIIO::TypeDesc(OIIO::TypeDesc::UINT8, static_cast<int>(s.metadata->icc.size())),
-                s.metadata->icc.data());
-        if (!s.metadata->exif.empty())
-            OIIO::decode_exif(OIIO::string_view(s.metadata->exif), spec);
-        for (const auto& [k, v] : s.metadata->text)
-            spec.attribute(k, v);
-        // What lutkit's own JPEG reader keeps (JpegCodec.cpp), as OpenImageIO's would have read it.
-        // In the file's order, as OpenImageIO's JPEG reader decodes them (the second adds to
-        // the first's repeatable fields).
-        const auto& m = *s.metadata;
-        if (!m.iptc.empty() && m.iptcBeforeXmp)
-            decodePhotoshopIptc(m.iptc, spec);
-        if (!m.xmp.empty())
-            OIIO::decode_xmp(m.xmp, spec);
-        if (!m.iptc.empty() && !m.iptcBeforeXmp)
-            decodePhotoshopIptc(m.iptc, spec);
-        if (!s.metadata->jpegSubsampling.empty())
-            spec.attribute("jpeg:subsampling", s.metadata->jpegSubsampling);
-        if (s.metadata->xResolution > 0 && s.metadata->yResolution > 0) {
-            spec.attribute("XResolution", static_cast<float>(s.metadata->xResolution));
-            spec.attribute("YResolution", static_cast<float>(s.metadata->yResolution));
-            spec.attribute("ResolutionUnit", s.metadata->resolutionUnit);
-        }
-    }
-    // OpenImageIO reads IPTC's Creator, Caption and CopyrightNotice into both the IPTC name and
-    // its synonym, and writes both into the IPTC block: keep one, or they double.
-    for (const auto& [iptc, synonym] :
-         {std::pair<const char*, const char*>{"IPTC:Creator", "Artist"},
-          {"IPTC:Caption", "ImageDescription"},
-          {"IPTC:CopyrightNotice", "Copyright"}})
-        if (spec.get_string_attribute(iptc) == spec.get_string_attribute(synonym))
-            spec.erase_attribute(iptc);
-    spec.erase_attribute("oiio:subimages");
-    spec.channelnames.assign(s.channelNames.begin(), s.channelNames.end());
-    spec.alpha_channel = s.alphaChannel;
-    spec.erase_attribute("oiio:BitsPerSample");
-    if (s.bitsPerSample > 0 && s.bitsPerSample != 8 * bytesPerSample(s.type))
-        spec.attribute("oiio:BitsPerSample", s.bitsPerSample);
-    // Our pixels are unassociated (colour not multiplied by alpha): without this OIIO divides
-    // colour by alpha when writing PNG/TIFF, changing every pixel whose alpha is below 1.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    const bool sameFormat = s.metadata && s.metadata->format == fmt;
-    if (!s.compression.empty())
-        spec.attribute("compression", s.compression);
-    else if (!sameFormat)
-        spec.erase_attribute("compression");
-    // The data window's place and the display window, where the file had them and the output is
-    // of the same format (an OpenEXR's overscan, a TIFF's position).
-    if (sameFormat && s.metadata->hasWindows && s.metadata->fullWidth > 0 &&
-        s.metadata->fullHeight > 0) {
-        spec.x = s.metadata->x;
-        spec.y = s.metadata->y;
-        spec.full_x = s.metadata->fullX;
-        spec.full_y = s.metadata->fullY;
-        spec.full_width = s.metadata->fullWidth;
-        spec.full_height = s.metadata->fullHeight;
-    }
-    if (s.tileWidth > 0 && m_out->supports("tiles")) {
-        spec.tile_width = s.tileWidth;
-        spec.tile_height = s.tileHeight;
-        spec.tile_depth = 1;
-    }
-    if (s.type == PixelType::Float && !m_out->supports("floatpixels") && fmt == "png")
-        throw Error(name + ": PNG stores 8 or 16 bits per channel, not float (use .exr or .tif)");
-    if (s.type != PixelType::UInt8 && fmt == "jpeg")
-        throw Error(name + ": JPEG stores 8 bits per channel only");
-    return spec;
-}
-
-OiioSink::OiioSink(const SinkSpec* specs, int count, const std::string& name, ByteCallbacks bytes)
-    : m_path(name), m_parts(specs, specs + count) {
-    // Without a pwrite callback the writer writes the file `name` itself (the caller's temporary
-    // file), picked by the format's name.
-    const bool byName = bytes.pwrite == nullptr;
-    m_out = OIIO::ImageOutput::create(
-        byName && !m_parts.front().format.empty() ? m_parts.front().format : name);
-    if (!m_out)
-        throw Error(name + ": no image writer for this extension");
-    const std::string fmt = m_out->format_name();
-    std::vector<OIIO::ImageSpec> subimages;
-    bool mips = false;
-    for (const SinkSpec& s : m_parts) {
-        m_specs.push_back(makeSpec(s));
-        if (s.mipLevel == 0)
-            subimages.push_back(m_specs.back());
-        mips = mips || s.mipLevel > 0;
-    }
-    if (subimages.size() > 1 && !m_out->supports("multiimage"))
-        throw Error(name + ": the " + fmt + " writer holds one image, not " +
-                    std::to_string(subimages.size()));
-    if (mips && !m_out->supports("mipmap"))
-        throw Error(name + ": the " + fmt + " writer holds no MIP levels");
-    if (!byName) {
-        m_proxy = std::make_unique<CallbackProxy>(name, bytes);
-        if (!m_out->supports("ioproxy"))
-            throw Error(name + ": the " + fmt +
-                        " writer cannot write through lutkit's checked output");
-        m_out->set_ioproxy(m_proxy.get());
-    }
-    const bool ok = subimages.size() > 1
-                        ? m_out->open(name, static_cast<int>(subimages.size()), subimages.data())
-                        : m_out->open(name, m_specs.front());
-    if (!ok)
-        throw Error(name + ": cannot write: " + writerError(m_out->geterror()));
-}
-
-OiioSink::~OiioSink() = default;
-
-bool OiioSink::proxyFailed() const {
-    return m_proxy && !m_proxy->failure().empty();
-}
-
-int OiioSink::granularity() const {
-    const OIIO::ImageSpec& spec = m_specs[m_index];
-    return spec.tile_width > 0 ? spec.tile_height : 1;
-}
-
-void OiioSink::nextPart() {
-    if (m_index + 1 >= m_specs.size())
-        throw Error(m_path + ": cannot write: no part left to start");
-    ++m_index;
-    const auto mode = m_parts[m_index].mipLevel > 0 ? OIIO::ImageOutput::AppendMIPLevel
-                                                    : OIIO::ImageOutput::AppendSubimage;
-    if (!m_out->open(m_path, m_specs[m_index], mode) || proxyFailed())
-        throw Error(m_path + ": cannot write: " +
-                    (proxyFailed() ? m_proxy->failure() : writerError(m_out->geterror())));
-}
-
-void OiioSink::writeRows(int y0, int y1, const void* src) {
-    const SinkSpec& part = m_parts[m_index];
-    const OIIO::ImageSpec& spec = m_specs[m_index];
-    const OIIO::TypeDesc type = typeDescOf(part.type);
-    const bool ok = spec.tile_width > 0
-                        ? m_out->write_tiles(spec.x, spec.x + spec.width, spec.y + y0, spec.y + y1,
-                                             0, 1, type, src)
-                        : m_out->write_scanlines(spec.y + y0, spec.y + y1, 0, type, src);
-    if (!ok || proxyFailed())
-        throw Error(m_path + ": cannot write: " +
-                    (proxyFailed() ? m_proxy->failure() : writerError(m_out->geterror())));
-}
-
-void OiioSink::finish() {
-    if (m_index + 1 != m_specs.size())
-        throw Error(m_path + ": cannot write: " + std::to_string(m_specs.size() - m_index - 1) +
-                    " parts were not written");
-    const bool ok = m_out->close();
-    const std::string error = ok ? std::string() : writerError(m_out->geterror());
-    // A writer that opened the file itself (by name) keeps it open, its last bytes buffered,
-    // until it is destroyed: before the caller checks and renames the file.
-    m_out.reset();
-    if (proxyFailed())
-        throw Error(m_path + ": cannot write: " + m_proxy->failure());
-    if (!ok)
-        throw Error(m_path + ": cannot write: " + error);
 }
 
 } // namespace lut::formats::module

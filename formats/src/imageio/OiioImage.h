@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// OpenImageIO sources and sinks, inside lutkit_imageio.so only (OiioImage.cpp).
+// The OpenImageIO source, inside lutkit_imageio.so only (OiioImage.cpp; the sink: OiioSink.h).
 #include "imageio/ImageIOModuleApi.h"
 
 #include "lut/Error.h"
@@ -44,29 +44,6 @@ private:
     std::vector<Part> m_parts;
     int m_subimages = 1;
     Part m_current;
-};
-
-class CallbackProxy;
-
-class OiioSink {
-public:
-    OiioSink(const SinkSpec* specs, int count, const std::string& name, ByteCallbacks bytes);
-    ~OiioSink();
-    int granularity() const;
-    void nextPart();
-    void writeRows(int y0, int y1, const void* src);
-    void finish();
-
-private:
-    OIIO_NAMESPACE::ImageSpec makeSpec(const SinkSpec& s) const;
-    bool proxyFailed() const;
-
-    std::string m_path;
-    std::vector<SinkSpec> m_parts;
-    std::vector<OIIO_NAMESPACE::ImageSpec> m_specs;
-    std::size_t m_index = 0;
-    std::unique_ptr<CallbackProxy> m_proxy;
-    std::unique_ptr<OIIO_NAMESPACE::ImageOutput> m_out;
 };
 
 } // namespace lut::formats::module

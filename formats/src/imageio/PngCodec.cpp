@@ -439,6 +439,7 @@ private:
                                          d.size() - nul - 2, 16u << 20);
         } else if (isType(c.type, "sRGB")) {
             m_info.colorSpace = "sRGB";
+            m_meta->srgb = true;
         } else if (isType(c.type, "gAMA") && d.size() == 4 && m_info.colorSpace.empty()) {
             const unsigned char* g = reinterpret_cast<const unsigned char*>(d.data());
             const std::uint32_t gamma = (std::uint32_t(g[0]) << 24) | (std::uint32_t(g[1]) << 16) |

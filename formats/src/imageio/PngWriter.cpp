@@ -353,6 +353,9 @@ private:
                 data += z;
                 chunk("iCCP", data.data(), data.size());
             }
+        } else if (meta->srgb) {
+            const char intent = 0; // perceptual
+            chunk("sRGB", &intent, 1);
         }
         if (!meta->exif.empty())
             chunk("eXIf", meta->exif.data(), meta->exif.size());

@@ -111,8 +111,10 @@ ColorConfig ColorConfig::load(const ConfigLocation& location) {
     } catch (const Error&) {
         throw;
     } catch (const std::exception& e) {
-        throw Error(location.path +
-                    ": OpenColorIO cannot read the config: " + ocioMessage(e.what()));
+        const OcioReason r = shortOcioMessage(location.path, ocioMessage(e.what()));
+        throw Error(location.path + (r.line > 0 ? ":" + std::to_string(r.line) : "") +
+                    (r.line > 0 && r.column > 0 ? ":" + std::to_string(r.column) : "") +
+                    ": OpenColorIO cannot read the config: " + r.text);
     }
     session.appendDiagnostics(impl->diagnostics);
     ColorConfig c;

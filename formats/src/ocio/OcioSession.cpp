@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ocio/OcioSession.h"
 
+#include <filesystem>
+#include <regex>
 #include <utility>
+#include <vector>
 
 namespace lut::formats {
 
@@ -95,11 +98,70 @@ std::string ocioMessage(const char* what) {
     return explain(oneLine(what));
 }
 
+namespace {
+
+// The path as OpenColorIO spells it in its messages: the absolute one.
+std::vector<std::string> spellings(const std::string& path) {
+    std::vector<std::string> out{path};
+    std::error_code ec;
+    const std::string abs = std::filesystem::absolute(path, ec).lexically_normal().string();
+    if (!ec && abs != path)
+        out.insert(out.begin(), abs);
+    return out;
+}
+
+} // namespace
+
+OcioReason shortOcioMessage(const std::string& path, std::string text) {
+    // "The specified transform file 'P' could not be loaded. All formats have been tried.
+    // (Enable debug log ...) The format for the file's extension gave the error: 'FMT' failed
+    // with: REASON' in P." -> "FMT: REASON"
+    if (const auto at = text.rfind("' failed with: "); at != std::string::npos) {
+        const auto open = at == 0 ? std::string::npos : text.rfind('\'', at - 1);
+        const std::string format =
+            open == std::string::npos ? std::string() : text.substr(open + 1, at - open - 1);
+        text = text.substr(at + 15);
+        if (!format.empty())
+            text = format + ": " + text;
+    }
+    // "Error: Loading the OCIO profile 'P' failed. yaml-cpp: error at line 8, column 1: ..."
+    if (text.rfind("Error: Loading the OCIO profile", 0) == 0)
+        if (const auto at = text.find(" failed. "); at != std::string::npos)
+            text.erase(0, at + 9);
+    // The file's name, said by OpenColorIO again and again: once, by lutkit, first.
+    for (const std::string& p : spellings(path))
+        for (const auto& [form, by] :
+             std::vector<std::pair<std::string, std::string>>{{" in " + p + ".", ""},
+                                                              {" (" + p + ")", ""},
+                                                              {"'" + p + "'", "the file"},
+                                                              {p, "the file"}})
+            for (std::size_t at; (at = text.find(form)) != std::string::npos;)
+                text.replace(at, form.size(), by);
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+    OcioReason r;
+    // "At line 7: ...", "error at line 8, column 1: ...", "(line 12)".
+    static const std::regex kLine(
+        R"((?:error )?(?:[Aa]t line|[Ll]ine) \(?(\d+)\)?(?:, column (\d+))?:? ?)");
+    std::smatch m;
+    if (std::regex_search(text, m, kLine)) {
+        r.line = std::stoi(m[1].str());
+        if (m[2].matched)
+            r.column = std::stoi(m[2].str());
+        text.erase(static_cast<std::size_t>(m.position(0)), static_cast<std::size_t>(m.length(0)));
+    }
+    r.text = text;
+    return r;
+}
+
 std::string ocioFailure(const std::string& path, const std::string& doing, const char* what) {
-    const std::string text = ocioMessage(what);
+    const OcioReason r = shortOcioMessage(path, ocioMessage(what));
+    const std::string where =
+        path + (r.line > 0 ? ":" + std::to_string(r.line) : std::string()) +
+        (r.line > 0 && r.column > 0 ? ":" + std::to_string(r.column) : std::string());
     if (doing == "loading the file")
-        return path + ": OpenColorIO cannot read it: " + text;
-    return path + ": OpenColorIO failed while " + doing + ": " + text;
+        return where + ": OpenColorIO cannot read it: " + r.text;
+    return where + ": OpenColorIO failed while " + doing + ": " + r.text;
 }
 
 OcioSession::OcioSession(const std::string& path) : m_path(path) {

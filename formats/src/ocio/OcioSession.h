@@ -27,6 +27,19 @@ std::string ocioMessage(const char* what);
 // loading, "PATH: OpenColorIO failed while DOING: ..." later.
 std::string ocioFailure(const std::string& path, const std::string& doing, const char* what);
 
+// An OpenColorIO message about the file `path`, short: the reason alone (the format's own words,
+// without the wrapper of its FileTransform: "The specified transform file '...' could not be
+// loaded. All formats have been tried ..."), the path taken out (lutkit names it first), and the
+// line (and column) where OpenColorIO gives one ("At line 7:", "error at line 8, column 1:") as
+// numbers for "PATH:LINE:COL:". Messages of 482 characters naming the file three times became
+// "bad.spi1d:7: OpenColorIO cannot read it: spi1d: Malformed LUT line (zz)".
+struct OcioReason {
+    std::string text;
+    int line = 0;   // 0: not given
+    int column = 0; // 0: not given
+};
+OcioReason shortOcioMessage(const std::string& path, std::string text);
+
 // Routes OpenColorIO's log to the session in progress (idempotent; see LibraryMessages.h).
 void installOcioLogSink();
 

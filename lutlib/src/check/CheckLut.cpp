@@ -77,7 +77,13 @@ void summarise(CheckReport& report, const CheckThresholds& t, bool oneD) {
         (f.worstFold > 0.0 ? format("; worst fold-over %.2f 8-bit steps, %.2f%% ", f.worstFold,
                                     100.0 * f.foldShare) +
                                  of
-                           : std::string("; every lattice line monotone"));
+                           : std::string("; every lattice line monotone")) +
+        // A line that falls end to end is monotone (a negative LUT's way), and a finding may say
+        // its channel "jumps from 65504 to -65504": the summary says so, not a bare "monotone".
+        (!oneD && f.fallingShare > 0.0
+             ? format(" (%.0f%% of them falling end to end: the table inverts there)",
+                      100.0 * f.fallingShare)
+             : std::string());
     text(CheckKind::Banding) =
         format("steepest %.2f output steps per input step", f.steepest) +
         (f.worstStep > 0.0 ? format("; worst step %.1f 8-bit steps", f.worstStep) : "") +
@@ -88,8 +94,14 @@ void summarise(CheckReport& report, const CheckThresholds& t, bool oneD) {
                                   f.worstHueShift, f.worstHue, f.meanHueShift, f.skinDrift);
     std::string range = f.nonFinite ? std::to_string(f.nonFinite) + " NaN/Inf entries; "
                                     : std::string("no NaN/Inf; ");
-    range += format("output %.3f..%.3f", std::min({f.outputMin.x, f.outputMin.y, f.outputMin.z}),
-                    std::max({f.outputMax.x, f.outputMax.y, f.outputMax.z}));
+    const float lo = std::min({f.outputMin.x, f.outputMin.y, f.outputMin.z});
+    const float hi = std::max({f.outputMax.x, f.outputMax.y, f.outputMax.z});
+    // 1e30 as 1e+30, not 31 digits.
+    const char* spec =
+        std::max(std::fabs(lo), std::fabs(hi)) >= 1e6f ? "output %.4g..%.4g" : "output %.3f..%.3f";
+    range += format(spec, lo, hi);
+    if (lo < -65504.0f || hi > 65504.0f)
+        range += " (the checks take values beyond +-65504 as +-65504, half-float's range)";
     if (f.outOfRangeShare > 0.0)
         range += format(" (%.2f%% outside [0, 1])", 100.0 * f.outOfRangeShare);
     range += format("; clipped R %.2f%% G %.2f%% B %.2f%% ", 100.0 * f.clippedShare[0],

@@ -240,6 +240,7 @@ void scanLattice(const Context& ctx, std::vector<Flag>& flags, CheckFigures& fig
     const int lines = 3 * n * n;
     const double step = 1.0 / (n - 1);
     std::vector<double> variation(static_cast<std::size_t>(lines)), net(variation.size());
+    std::vector<char> falling(variation.size(), 0);
     std::map<int, std::vector<Flag>> chunks;
     std::mutex mutex;
     double worstFold = 0.0, steepest = 0.0;
@@ -271,6 +272,8 @@ void scanLattice(const Context& ctx, std::vector<Flag>& flags, CheckFigures& fig
             scanLine(line, bounds, ctx.thresholds(), events, lf);
             variation[static_cast<std::size_t>(l)] = lf.ownVariation;
             net[static_cast<std::size_t>(l)] = lf.ownNet;
+            falling[static_cast<std::size_t>(l)] =
+                values[static_cast<std::size_t>(n - 1)][axis] < values[0][axis] ? 1 : 0;
             localFold = std::max(localFold, lf.worstFold);
             localSteep = std::max(localSteep, lf.steepest);
             latticeFlags(ctx, axis, start, events, local);
@@ -288,6 +291,8 @@ void scanLattice(const Context& ctx, std::vector<Flag>& flags, CheckFigures& fig
         totalNet += net[i];
     }
     figures.totalVariationRatio = totalNet > 0.0 ? totalVariation / totalNet : 1.0;
+    figures.fallingShare =
+        static_cast<double>(std::count(falling.begin(), falling.end(), 1)) / lines;
     figures.worstFold = std::max(figures.worstFold, worstFold);
     figures.steepest = std::max(figures.steepest, steepest);
     scanRays(ctx, bounds, flags, figures);

@@ -91,6 +91,8 @@ static std::string knownExtensions(const std::vector<std::unique_ptr<Format>>& f
 
 LutFile FormatRegistry::read(const std::string& path, const FormatOptions& options,
                              const std::string& formatName) const {
+    if (isStdinName(path) && !isStdStream(path))
+        return read("-", options, formatName); // /dev/stdin is standard input
     std::vector<const Format*> candidates;
     if (!formatName.empty()) {
         const Format* f = byName(formatName);
@@ -141,8 +143,12 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
                     reasons);
     }
     if (candidates.empty())
-        throw Error(path + ": no format reads '" + extensionOf(path) +
-                    "' files (readable: " + knownExtensions(m_formats, true) + ")");
+        throw Error(path + ": " +
+                    (extensionOf(path).empty()
+                         ? std::string("has no extension to tell its format: name it with "
+                                       "--in-format")
+                         : "no format reads '" + extensionOf(path) + "' files") +
+                    " (readable: " + knownExtensions(m_formats, true) + ")");
     // Once for every candidate: a FIFO, a directory or a device is refused before any reader
     // opens it (each reader checks again when called directly).
     checkRegularInput(path);

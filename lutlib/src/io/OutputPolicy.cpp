@@ -2,6 +2,7 @@
 #include "lut/io/OutputPolicy.h"
 
 #include "lut/io/AtomicFile.h"
+#include "lut/io/ProtectInputs.h"
 
 #include <cerrno>
 #include <climits>
@@ -11,6 +12,7 @@
 #include <mutex>
 #include <set>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -67,6 +69,17 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
     if (path.empty())
         throw Error("no output file named");
     if (isStdStream(path)) {
+        // The shell may have pointed standard output at an input (`-o - 1<> lut.png`): a
+        // regular file that is an input is refused like any output that is an input.
+        struct stat out {};
+        if (::fstat(STDOUT_FILENO, &out) == 0 && S_ISREG(out.st_mode))
+            for (const auto& in : inputs) {
+                struct stat st {};
+                if (!in.empty() && !isStdStream(in) && ::stat(in.c_str(), &st) == 0 &&
+                    st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+                    throw Error("-: standard output is the same file as input " + in +
+                                "; refusing to overwrite it");
+            }
         t.kind = OutputKind::Stdout;
         return t;
     }
@@ -112,6 +125,18 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
         if (::realpath(path.c_str(), buf))
             t.writePath = buf; // replace the file the link names; the link stays
     }
+    return t;
+}
+
+OutputTarget CommandOutputs::claim(const std::string& path, ExistingOutput rule,
+                                   const std::vector<std::string>& inputs) {
+    for (const std::string& other : m_claimed)
+        if (sameFile(path, other))
+            throw Error(path + ": is also another output of this command" +
+                        (other == path ? std::string() : " (" + other + ")") +
+                        "; name another file");
+    OutputTarget t = checkOutput(path, rule, inputs);
+    m_claimed.push_back(path);
     return t;
 }
 

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -36,6 +37,30 @@ void checkNotOverwritingInputs(const std::string& output, const std::vector<std:
 
 void checkNotSameFile(const std::string& input, const std::string& output) {
     checkNotOverwritingInputs(output, {input});
+}
+
+namespace {
+
+bool statOf(const std::string& path, struct stat& st) {
+    return path == "-" ? ::fstat(STDOUT_FILENO, &st) == 0 : ::stat(path.c_str(), &st) == 0;
+}
+
+} // namespace
+
+bool sameFile(const std::string& a, const std::string& b) {
+    if (a.empty() || b.empty())
+        return false;
+    if (a == b)
+        return true;
+    struct stat sa {
+    }, sb{};
+    if (statOf(a, sa) && statOf(b, sb))
+        return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    if (a == "-" || b == "-")
+        return false;
+    std::error_code e1, e2;
+    const fs::path pa = fs::weakly_canonical(a, e1), pb = fs::weakly_canonical(b, e2);
+    return !e1 && !e2 && pa == pb;
 }
 
 } // namespace lut

@@ -16,7 +16,7 @@ namespace lut::formats {
 bool isImageExtension(const std::string& path);
 
 // Whether an image file of this extension (or format name) can store an alpha channel (JPEG, BMP,
-// HDR and PNM cannot).
+// HDR and PNM cannot; GIF's transparency is not written by OpenImageIO 2.4's GIF writer).
 bool canHoldAlpha(const std::string& pathOrFormat);
 
 // The bit depth (8, 16, 32 = float) and alpha to write a rendered display-encoded image with,

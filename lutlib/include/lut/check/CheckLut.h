@@ -57,6 +57,9 @@ struct CheckFigures {
     double worstFold = 0.0;     // 8-bit steps
     double foldShare = 0.0;     // of the cube (or the picture)
     double greyWorstFold = 0.0; // 8-bit steps along the grey axis
+    // Of the lattice lines, those whose own channel falls from end to end: monotone, the table
+    // inverts there (a negative LUT's way); said in the summary beside "monotone".
+    double fallingShare = 0.0;
     // banding
     double worstFlat = 0.0; // 8-bit steps lost
     double worstStep = 0.0; // 8-bit steps

@@ -11,7 +11,11 @@
 //    lutkit's -y/--overwrite); Skip leaves it alone (-n/--no-clobber); Refuse throws
 //    OutputExistsError, and the file's bytes stay as they were.
 //  - An output is never one of the command's inputs: the same path, a symbolic link or a hard
-//    link to it (checkNotSameFile on each input; "-" and "" are skipped).
+//    link to it (checkNotSameFile on each input; "-" and "" are skipped). Standard output ("-")
+//    that the shell pointed at an input (`-o - 1<> in.png`) is refused the same way (same device
+//    and inode).
+//  - No two outputs of one command are one file (CommandOutputs): `match SRC REF OUT.png
+//    --report-image OUT.png` wrote the report over the LUT.
 //  - A symbolic link to a regular file is written through: the file it names is replaced and the
 //    link stays.
 // Regular files are then written through a temporary sibling renamed into place
@@ -62,6 +66,21 @@ private:
 // writing one new file) is kept and the second writer fails naming it.
 OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
                          const std::vector<std::string>& inputs = {});
+
+// The outputs of one command: each one checked by checkOutput and against the outputs claimed
+// before it, so that no two are one file (the same path however spelled, a link to it, the same
+// device and inode, or standard output twice). A program makes one per command (lutkit: one per
+// run, cli/Outputs.cpp); the editor, which saves one file at a time, has none.
+class CommandOutputs {
+public:
+    // checkOutput(path, rule, inputs), then lut::Error "OUT: is also another output of this
+    // command (OTHER); name another file" when it is the same file as an output claimed before.
+    OutputTarget claim(const std::string& path, ExistingOutput rule,
+                       const std::vector<std::string>& inputs = {});
+
+private:
+    std::vector<std::string> m_claimed;
+};
 
 // An output whose bytes go to `bytes` in memory (Format::writeMemory, the editor's export
 // preview): `name` stands for it in messages and its extension picks the format, as a path's

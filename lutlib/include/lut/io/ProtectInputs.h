@@ -18,4 +18,8 @@ void checkNotOverwritingInputs(const std::string& output, const std::vector<std:
 // The same for one input.
 void checkNotSameFile(const std::string& input, const std::string& output);
 
+// Whether two paths name one file: the same device and inode when both exist, else the same
+// path however spelled. "-" is standard output: the file descriptor 1 is compared.
+bool sameFile(const std::string& a, const std::string& b);
+
 } // namespace lut

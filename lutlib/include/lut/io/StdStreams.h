@@ -11,6 +11,13 @@
 
 namespace lut {
 
+// Whether an input path names standard input: "-", or the names the system gives it
+// (/dev/stdin, /dev/fd/0, /proc/self/fd/0), which are read as "-" is (`lutkit info /dev/stdin`
+// said "no format reads '' files").
+inline bool isStdinName(const std::string& path) {
+    return path == "-" || path == "/dev/stdin" || path == "/dev/fd/0" || path == "/proc/self/fd/0";
+}
+
 // All of standard input. Throws lut::LimitError past maxBytes ("-: standard input is over the
 // limit of N bytes") and lut::Error when it cannot be read.
 std::string readStandardInput(std::size_t maxBytes);

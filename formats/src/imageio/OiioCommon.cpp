@@ -1,22 +1,67 @@
 // SPDX-License-Identifier: Apache-2.0
-// OpenImageIO's attributes as bytes lutkit carries between a source and a sink (ImageMetadata's
-// oiioAttributes), and the metadata blocks lutkit's own readers keep, decoded into attributes.
-// Inside lutkit_imageio.so only.
-#include "imageio/OiioMetadata.h"
+// What the OpenImageIO source and sink share (OiioCommon.h).
+#include "imageio/OiioCommon.h"
 
+#include "lut/Error.h"
+
+#include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 #include <vector>
+
+// From OpenImageIO/tiffutils.h, which needs libtiff's headers for the rest of what it declares.
+OIIO_NAMESPACE_BEGIN
+OIIO_API bool decode_iptc_iim(const void* iptc, int length, ImageSpec& spec);
+OIIO_API bool decode_xmp(string_view xml, ImageSpec& spec);
+OIIO_NAMESPACE_END
 
 namespace lut::formats::module {
 
 namespace OIIO = OIIO_NAMESPACE;
 
+std::string oneLine(std::string s) {
+    s = s.substr(0, s.find('\n'));
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\r'))
+        s.pop_back();
+    return s;
+}
+
+std::string writerError(const std::string& s) {
+    const std::string line = oneLine(s);
+    return line.empty() ? "OpenImageIO's writer failed without saying why" : line;
+}
+
+PixelType pixelTypeOf(OIIO::TypeDesc t) {
+    switch (t.basetype) {
+    case OIIO::TypeDesc::UINT8:
+        return PixelType::UInt8;
+    case OIIO::TypeDesc::UINT16:
+        return PixelType::UInt16;
+    case OIIO::TypeDesc::HALF:
+        return PixelType::Half;
+    default:
+        return PixelType::Float; // 32-bit integers, double ...: read as float
+    }
+}
+
+OIIO::TypeDesc typeDescOf(PixelType t) {
+    switch (t) {
+    case PixelType::UInt8:
+        return OIIO::TypeDesc::UINT8;
+    case PixelType::UInt16:
+        return OIIO::TypeDesc::UINT16;
+    case PixelType::Half:
+        return OIIO::TypeDesc::HALF;
+    case PixelType::Float:
+        return OIIO::TypeDesc::FLOAT;
+    }
+    return OIIO::TypeDesc::FLOAT;
+}
+
 namespace {
 
-// ParamValueList <-> bytes: name, type, count, then the values (strings as length + bytes). The
-// native BMP and TGA readers write the same layout without OpenImageIO (OiioAttributes.h): a change
-// here is a change there.
 void putInt(std::string& s, std::uint32_t v) {
     s.append(reinterpret_cast<const char*>(&v), 4);
 }
@@ -42,7 +87,7 @@ std::string getBytes(const std::string& s, std::size_t& at) {
 
 } // namespace
 
-std::string serialize(const OIIO::ParamValueList& list) {
+std::string serializeAttributes(const OIIO::ParamValueList& list) {
     std::string s;
     for (const auto& p : list) {
         const OIIO::TypeDesc t = p.type();
@@ -63,7 +108,7 @@ std::string serialize(const OIIO::ParamValueList& list) {
     return s;
 }
 
-void deserialize(const std::string& s, OIIO::ImageSpec& spec) {
+void deserializeAttributes(const std::string& s, OIIO::ImageSpec& spec) {
     std::size_t at = 0;
     while (at < s.size()) {
         const std::string name = getBytes(s, at);
@@ -93,9 +138,36 @@ void deserialize(const std::string& s, OIIO::ImageSpec& spec) {
     }
 }
 
+std::string scratchFile(const std::string& bytes, const std::string& suffix,
+                        TempPathRegistration& registration) {
+    std::string path =
+        (std::filesystem::temp_directory_path() / ("lutkit-stdin-XXXXXX" + suffix)).string();
+    const int fd = ::mkstemps(path.data(), static_cast<int>(suffix.size()));
+    if (fd < 0)
+        throw Error("cannot create a temporary file in " +
+                    std::filesystem::temp_directory_path().string() + ": " + std::strerror(errno));
+    registration = TempPathRegistration(path);
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            const std::string why = std::strerror(errno);
+            ::close(fd);
+            ::unlink(path.c_str());
+            registration.release();
+            throw Error(path + ": cannot write: " + why);
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    return path;
+}
+
 // A JPEG's APP13 block ("Photoshop 3.0" taken off): its 8BIM resources, of which 0x0404 is the
 // IPTC-IIM record OpenImageIO decodes into attributes.
-void decodePhotoshopIptc(const std::string& block, OIIO::ImageSpec& spec) {
+static void decodePhotoshopIptc(const std::string& block, OIIO::ImageSpec& spec) {
     std::size_t at = 0;
     const auto u8 = [&](std::size_t i) { return static_cast<unsigned char>(block[i]); };
     while (at + 12 <= block.size() && block.compare(at, 4, "8BIM") == 0) {
@@ -113,6 +185,22 @@ void decodePhotoshopIptc(const std::string& block, OIIO::ImageSpec& spec) {
         if (id == 0x0404)
             OIIO::decode_iptc_iim(block.data() + p, static_cast<int>(size), spec);
         at = p + size + (size & 1);
+    }
+}
+
+void applyJpegMetadata(const ImageMetadata& m, OIIO::ImageSpec& spec) {
+    if (!m.iptc.empty() && m.iptcBeforeXmp)
+        decodePhotoshopIptc(m.iptc, spec);
+    if (!m.xmp.empty())
+        OIIO::decode_xmp(m.xmp, spec);
+    if (!m.iptc.empty() && !m.iptcBeforeXmp)
+        decodePhotoshopIptc(m.iptc, spec);
+    if (!m.jpegSubsampling.empty())
+        spec.attribute("jpeg:subsampling", m.jpegSubsampling);
+    if (m.xResolution > 0 && m.yResolution > 0) {
+        spec.attribute("XResolution", static_cast<float>(m.xResolution));
+        spec.attribute("YResolution", static_cast<float>(m.yResolution));
+        spec.attribute("ResolutionUnit", m.resolutionUnit);
     }
 }
 
