@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // lut/Math.h (musl's functions compiled by lutkit) against the C library's (glibc here): both
-// are within about one unit in the last place of the true value, so they agree within two; and
+// are within about one unit in the last place of the true value (musl's float sin, cos, atan2 and
+// hypot within 1.5), so they agree within four; and
 // the overloads are <cmath>'s (float in, float out; mixed or integer arguments in double).
 #include "lut/Math.h"
 
@@ -32,7 +33,7 @@ template <class T> std::int64_t ulps(T a, T b) {
 
 } // namespace
 
-TEST(Math, EveryFunctionIsWithinTwoUlpsOfTheCLibrary) {
+TEST(Math, EveryFunctionIsWithinFourUlpsOfTheCLibrary) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::int64_t worst = 0;
@@ -67,7 +68,7 @@ TEST(Math, EveryFunctionIsWithinTwoUlpsOfTheCLibrary) {
         for (const auto v : d)
             worst = std::max(worst, v);
     }
-    EXPECT_LE(worst, 2);
+    EXPECT_LE(worst, 4);
     // Special values as the C library gives them.
     EXPECT_TRUE(std::isnan(lut::math::log(-1.0)));
     EXPECT_EQ(lut::math::log(0.0), -HUGE_VAL);

@@ -65,7 +65,8 @@ std::to_chars_result put(char* first, char* last, const char* text, std::size_t 
 }
 
 // The shortest digits that read back as `value` (Dragonbox), in printf's %f or %e style,
-// whichever is shorter (%f on a tie), as the standard asks of std::to_chars(first, last, value).
+// whichever is shorter (%f on a tie), as the standard asks of std::to_chars(first, last, value);
+// an integer written in %f style gets its exact digits, as GCC's to_chars gives them.
 template <class T> std::to_chars_result shortest(char* first, char* last, T value) {
     char buf[400];
     std::size_t n = 0;
@@ -93,11 +94,14 @@ template <class T> std::to_chars_result shortest(char* first, char* last, T valu
     const int sciLen = nd + (nd > 1 ? 1 : 0) + 2 + (absExp >= 100 ? 3 : 2);
     const int fixedLen = e >= 0 ? nd + e : nd + e > 0 ? nd + 1 : 2 - (nd + e) + nd;
     if (fixedLen <= sciLen) {
-        if (e >= 0) {
+        if (e > 0) {
+            // An integer past the digits that identify it: GCC's to_chars writes its exact value
+            // (float 123456792, not 123456790); %.0f of the exact double is that value.
+            n += static_cast<std::size_t>(std::snprintf(buf + n, sizeof buf - n, "%.0f",
+                                                        std::fabs(static_cast<double>(value))));
+        } else if (e == 0) {
             std::memcpy(buf + n, digits, static_cast<std::size_t>(nd));
             n += static_cast<std::size_t>(nd);
-            for (int i = 0; i < e; ++i)
-                buf[n++] = '0';
         } else if (nd + e > 0) {
             const int whole = nd + e;
             std::memcpy(buf + n, digits, static_cast<std::size_t>(whole));
