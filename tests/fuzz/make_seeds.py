@@ -251,3 +251,27 @@ if magick:
         ext[494] = 3
         seed("tga-v2", ".tga", tga + bytes(ext) + len(tga).to_bytes(4, "little") + bytes(4)
              + b"TRUEVISION-XFILE.\0")
+
+# image_apply: the damaged JPEGs libjpeg only warns about (issue 41), which lutkit's JPEG reader
+# refuses: a progressive file cut at 30/60/90% with its end-of-image marker put back, a baseline
+# one cut in half the same way, bytes before the end-of-image marker, made by ImageMagick.
+if magick:
+    with tempfile.TemporaryDirectory() as tmp:
+        src = os.path.join(tmp, "src.png")
+        subprocess.run([magick, "-seed", "5", "-size", "48x32", "plasma:fractal", "-depth", "8",
+                        src], check=True)
+        jpegs = {}
+        for name, args in [("prog", ["-interlace", "JPEG", "-quality", "85"]),
+                           ("base", ["-quality", "85"])]:
+            out = os.path.join(tmp, name + ".jpg")
+            subprocess.run([magick, src, *args, out], check=True)
+            with open(out, "rb") as fh:
+                jpegs[name] = fh.read()
+        p, b = jpegs["prog"], jpegs["base"]
+        for percent in (30, 60, 90):
+            put("image_apply", "jpeg-premature-prog%d" % percent,
+                bytes([IMAGE_EXTS.index(".jpg")]) + p[: len(p) * percent // 100] + b"\xff\xd9")
+        put("image_apply", "jpeg-premature-base", bytes([IMAGE_EXTS.index(".jpg")]) +
+            b[: len(b) // 2] + b"\xff\xd9")
+        put("image_apply", "jpeg-extraneous-bytes", bytes([IMAGE_EXTS.index(".jpg")]) +
+            b[:-2] + b"garbage" + b"\xff\xd9")

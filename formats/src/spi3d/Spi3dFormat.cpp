@@ -35,6 +35,11 @@ public:
         skipBlankLines();
         return m_pos < m_text.size();
     }
+    void skipLine() {
+        while (m_pos < m_text.size() && m_text[m_pos] != '\n' && m_text[m_pos] != '\r')
+            ++m_pos;
+        skipBlankLines();
+    }
     void nextLine() {
         skipSpaces();
         if (m_pos < m_text.size() && m_text[m_pos] != '\n' && m_text[m_pos] != '\r')
@@ -116,7 +121,8 @@ public:
                        const FormatOptions&) const override {
         Reader in(bytes, path);
         in.expectWord("SPILUT", "a .spi3d starts with SPILUT 1.0");
-        in.nextLine();
+        in.skipLine(); // the version, as OpenColorIO takes any
+
         if (in.integer("input dimensions") != 3 || in.integer("output dimensions") != 3)
             in.fail("a 3D .spi3d has 3 input and 3 output dimensions (\"3 3\")");
         in.nextLine();
