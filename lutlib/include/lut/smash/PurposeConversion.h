@@ -6,7 +6,9 @@
 //   raw -> smash  the game's 16^3 LUT that makes Smash Ultimate show the edit of its own picture:
 //                 SmashAuthoring.h's exact composition (clamped to what the file can hold) or its
 //                 least-squares refinement, on the picture of a stage LUT when one is given, with
-//                 the rule above white given explicitly;
+//                 the one rule above white (SmashAuthoring.h: the edit of the displayed white; the
+//                 stage's own entry where that is white, so a neutral edit gives the stage LUT
+//                 back and a game LUT exported unchanged is itself);
 //   smash -> raw  the edit the game's LUT makes of the neutral game's picture (editOfGameLut);
 //   same purpose  the table as it is.
 #include "lut/Image.h"
@@ -21,15 +23,8 @@
 
 namespace lut {
 
-// The rule above the edit's white that both programs use for an edit given as a LUT
-// (SmashAuthoring.h's AboveWhite): Continue, so the neutral edit gives the neutral game LUT, and a
-// game LUT opened and exported without a change gives itself back. (The round trip's patch uses
-// Clip: it measures the edit only up to white.)
-constexpr AboveWhite kEditAboveWhite = AboveWhite::Continue;
-
 struct PurposeOptions {
     // raw -> smash:
-    AboveWhite aboveWhite = kEditAboveWhite;
     Interpolation editInterpolation = Interpolation::Tetrahedral; // how the edit is evaluated
     const Lut3D* stageLut = nullptr; // the stage the edit was made on (null: the neutral game)
     // Report what the game shows (SmashAuthoringResult) with the exact composition; `refine` also
