@@ -82,6 +82,15 @@ void finishGameLut(PurposeConversion& c) {
 
 } // namespace
 
+glm::dvec3 gameShownForDisplayed(const Sampler& game, const glm::dvec3& d) {
+    const glm::dvec3 s(neutralInputFor(d.x), neutralInputFor(d.y), neutralInputFor(d.z));
+    const glm::vec3 l = game.sample(glm::vec3(s));
+    glm::dvec3 e;
+    for (int c = 0; c < 3; ++c)
+        e[c] = detail::gameShown(static_cast<double>(l[c]), s[c]);
+    return e;
+}
+
 Lut3D editOfGameLut(const Lut3D& game, int size, GameError* error, int nthreads,
                     std::string* measuredOver) {
     if (game.empty())

@@ -16,6 +16,7 @@
 #include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
 #include "lut/interp/Interpolation.h"
+#include "lut/interp/Sampler.h"
 #include "lut/smash/GameError.h"
 #include "lut/smash/SmashAuthoring.h"
 
@@ -73,5 +74,9 @@ PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpos
 // lattice planes), in 8-bit display steps.
 Lut3D editOfGameLut(const Lut3D& game, int size, GameError* error = nullptr, int nthreads = 0,
                     std::string* measuredOver = nullptr);
+// E(d) of editOfGameLut at one display colour, exactly (no lattice): what the game shows with the
+// game LUT `game` (a trilinear sampler of it, as the game's GPU) where the neutral game showed d,
+// as lutkit preview shows a screenshot with it.
+glm::dvec3 gameShownForDisplayed(const Sampler& game, const glm::dvec3& d);
 
 } // namespace lut
