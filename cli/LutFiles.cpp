@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "LutFiles.h"
 
+#include "PurposeText.h"
+
 #include "lut/Error.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
@@ -29,8 +31,10 @@ Lut3D readLutTable(const std::string& path, const Verbosity& verbosity, PurposeD
                    std::optional<LutPurpose> given) {
     const LutFile file = formats::readLut(path, {});
     printDiagnostics(std::cerr, file.diagnostics, verbosity, "lutkit: ");
-    if (purpose)
+    if (purpose) {
         *purpose = decidePurpose(file, given);
+        warnPurposeFromContent(path, *purpose, "--in-target", verbosity);
+    }
     if (!file.shaper)
         return file.toLut3D();
     // One lattice over the file's input domain, never silently: what it costs between its points.

@@ -95,11 +95,21 @@ std::string conversionJson(const std::optional<PurposeConversion>& c) {
     return js.str();
 }
 
+void warnPurposeFromContent(const std::string& path, const PurposeDecision& d,
+                            const std::string& flag, const Verbosity& verbosity) {
+    if (d.source != PurposeSource::Content || verbosity.quiet)
+        return;
+    std::cerr << "lutkit: warning: " << path
+              << ": taken as the game's LUT although it does not say so: " << d.evidence << "; "
+              << flag << " raw if it is an edit\n";
+}
+
 PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose wanted,
                    std::optional<LutPurpose> given, const std::string& flag,
                    const PurposeOptions& options, const Verbosity& verbosity) {
     PurposedLut out;
     out.decision = decidePurpose(file, given);
+    warnPurposeFromContent(path, out.decision, flag, verbosity);
     if (out.decision.purpose == wanted) {
         out.lut = file.toLut3D();
     } else { // a shaper evaluated exactly (lut/smash/PurposeConversion.h)
@@ -111,7 +121,8 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
     // game's LUTs are all 16^3, so an unsaid 16^3 table may be one (a 33^3 grade is no game's).
     const bool ambiguous =
         out.decision.source == PurposeSource::Assumed && tableSize == kSmashLutSize;
-    if ((ambiguous || out.conversion) && !verbosity.quiet) {
+    if ((ambiguous || out.conversion) && !verbosity.quiet &&
+        out.decision.source != PurposeSource::Content) {
         std::cerr << "lutkit: note: " << printable(path) << " is " << out.decision.text(flag);
         if (out.conversion)
             std::cerr << ": used as " << describe(wanted);

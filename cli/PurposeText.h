@@ -42,6 +42,11 @@ void printConversion(std::ostream& os, const PurposeConversion& c, const Convers
 // The same as a JSON object ("null" for no conversion).
 std::string conversionJson(const std::optional<PurposeConversion>& c);
 
+// When the file's content decided what it is for (PurposeSource::Content: it says nothing, and
+// its table looks like the game's LUT), a warning on stderr: the evidence and `flag` raw.
+void warnPurposeFromContent(const std::string& path, const PurposeDecision& decision,
+                            const std::string& flag, const Verbosity& verbosity);
+
 // The LUT a command reads, turned into `wanted`. A note on stderr says what the file was taken
 // for when that changed the table (and what the conversion cost), or when the file does not say
 // and has the game's size (16^3: it may be the game's LUT) with the flag that chooses. `given` is

@@ -27,7 +27,8 @@ int runAdjust(const AdjustCommandOptions& o) {
         return kExitOk;
     const Adjustments adj = parseAdjustmentList(
         readFile(o.adjustments, kMaxAdjustmentListBytes, "adjustment list"), o.adjustments);
-    const Lut3D lut = readLutTable(o.input, o.verbosity);
+    PurposeDecision purpose; // a game LUT adjusted stays the game's LUT (never compensated twice)
+    const Lut3D lut = readLutTable(o.input, o.verbosity, &purpose);
     const Lut3D out = applyAdjustments(lut, adj);
     std::cout << "adjusted " << o.input << " with " << o.adjustments
               << (adj.isNeutral() ? " (neutral: nothing changes)" : "") << "\n";
@@ -38,7 +39,8 @@ int runAdjust(const AdjustCommandOptions& o) {
         std::cout << "range    " << clip.outside << " of " << clip.entries
                   << " entries leave 0..1 (" << clip.below << " below, " << clip.above
                   << " above): an 8-bit format clips them\n";
-    writeLutTable(std::cout, o.output, out, o.format, {o.input, o.adjustments}, o.verbosity);
+    writeLutTable(std::cout, o.output, out, o.format, {o.input, o.adjustments}, o.verbosity,
+                  knownPurpose(purpose));
     return kExitOk;
 }
 

@@ -55,6 +55,7 @@ int runChart(const ChartCommandOptions& o) {
     formats::ImageWriteOptions w;
     w.bitDepth = o.bitDepth;
     w.alpha = false;
+    w.format = o.format.empty() ? "png" : o.format; // for - and devices
     formats::writeImage(o.output, image, w);
     if (!o.verbosity.quiet)
         std::cout << "wrote    " << o.output << ": " << image.width() << "x" << image.height()
@@ -76,6 +77,8 @@ CLI::App* setupChart(CLI::App& app, std::function<void(const ChartCommandOptions
     sub->add_option("OUT", o->output, "the picture (PNG, TIFF, EXR ...)")
         ->required()
         ->type_name("FILE");
+    addImageOutputFormat(*sub, o->format,
+                         "image format when OUT is - (standard output) (default png)");
     sub->add_option("--width", o->width, "width in pixels (default: the chart's own, 1024)")
         ->check(CLI::Range(16, 16384));
     sub->add_option("--height", o->height, "height in pixels (default: the chart's own)")
@@ -94,6 +97,7 @@ CLI::App* setupChart(CLI::App& app, std::function<void(const ChartCommandOptions
                 "with lutkit apply; lutkit check --report shows them before and after a LUT.\n\n"
                 "Examples:\n"
                 "  lutkit chart all charts.png\n"
+                "  lutkit chart grey - --format png   # the picture on standard output\n"
                 "  lutkit chart hue-saturation sweep.tif --width 2048 --bit-depth 8\n"
                 "  lutkit chart grey ramp.exr --bit-depth 32");
     sub->callback([o, onParsed] { onParsed(*o); });

@@ -19,6 +19,7 @@ struct ChartCommandOptions {
     std::string output;
     int width = 0, height = 0; // 0 = the chart's own
     int bitDepth = 16;
+    std::string format;      // the picture's format when OUT is - (standard output); default png
     OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;
 };

@@ -241,6 +241,7 @@ int runConvert(const ConvertOptions& o) {
             throw UsageError(std::string(e.what()) + ": --size does not apply to --target smash");
         throw;
     }
+    warnPurposeFromContent(o.input, report.purpose.input, "--in-target", o.verbosity);
     if (o.json)
         std::cout << reportJson(o, report);
     else

@@ -5,6 +5,7 @@
 #include "Json.h"
 #include "LutFiles.h"
 #include "Numbers.h"
+#include "PurposeText.h"
 #include "Usage.h"
 #include "Vocabulary.h"
 
@@ -12,6 +13,7 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/ops/Diff.h"
 #include "lut/ops/HeatMap.h"
+#include "lut/smash/PurposeOps.h"
 
 #include <CLI/CLI.hpp>
 
@@ -27,8 +29,10 @@ std::string steps(glm::dvec3 v) {
     return "R " + significant(v.x) + "  G " + significant(v.y) + "  B " + significant(v.z);
 }
 
-void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScale) {
+void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScale,
+               const std::string& compared) {
     std::cout << "{\"a\": " << json::quote(o.a) << ", \"b\": " << json::quote(o.b)
+              << ", \"compared\": " << json::quote(compared)
               << ", \"over\": " << json::quote(o.image.empty() ? "lattice" : o.image)
               << ", \"colors\": " << r.count
               << ", \"identical\": " << (r.identical() ? "true" : "false")
@@ -57,9 +61,10 @@ void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScal
               << ", \"seconds\": " << json::number(r.seconds) << "}\n";
 }
 
-void printText(const DiffCommandOptions& o, const DiffReport& r) {
+void printText(const DiffCommandOptions& o, const DiffReport& r, const std::string& compared) {
     std::cout << "compared " << r.count << " colours "
-              << (o.image.empty() ? "on a lattice over A's domain" : "of " + o.image) << "\n";
+              << (o.image.empty() ? "on a lattice over A's domain" : "of " + o.image) << ": "
+              << compared << "\n";
     if (r.identical()) {
         std::cout << "identical: ΔE2000 0, 0 8-bit steps\n";
         return;
@@ -85,8 +90,10 @@ void printText(const DiffCommandOptions& o, const DiffReport& r) {
 } // namespace
 
 int runDiff(const DiffCommandOptions& o) {
-    const Lut3D a = readLutTable(o.a, o.verbosity);
-    const Lut3D b = readLutTable(o.b, o.verbosity);
+    // What each is for (lut/LutPurpose.h): a game LUT is compared by what the game shows.
+    PurposeDecision pa, pb;
+    const Lut3D a = readLutTable(o.a, o.verbosity, &pa, purposeOption(o.inTarget));
+    const Lut3D b = readLutTable(o.b, o.verbosity, &pb, purposeOption(o.inTarget));
     lut::DiffOptions d;
     d.method = o.interp;
     d.size = o.size;
@@ -94,20 +101,33 @@ int runDiff(const DiffCommandOptions& o) {
     h.maxDeltaE = o.maxDeltaE;
     h.method = o.interp;
     DiffReport report;
+    std::string compared;
     HeatMap heat;
+    // The heat maps draw tables: a game LUT's is the edit it makes (what the game shows).
+    const bool game = pa.purpose == LutPurpose::Smash || pb.purpose == LutPurpose::Smash;
+    auto drawn = [&](const Lut3D& x, const PurposeDecision& p) {
+        return p.purpose == LutPurpose::Smash ? editOfGameLut(x, std::max(x.size(), 65)) : x;
+    };
     // -n with an existing heat map: the comparison is still printed, the picture not rewritten.
     const bool writeHeatmap =
         !o.heatmap.empty() &&
         resolveOutput(o.heatmap, o.overwrite, {o.a, o.b, o.image}).skip == false;
     if (!o.image.empty()) {
         const formats::LoadedImage img = formats::readImage(o.image);
-        report = diffLutsOnImage(a, b, img.image.view(), d);
+        const ImageView view = img.image.view();
+        PurposeDiff pd = diffForPurpose({&a, pa.purpose}, {&b, pb.purpose}, &view, d);
+        report = pd.report;
+        compared = pd.compared;
         if (!o.heatmap.empty())
-            heat = diffHeatMap(a, b, img.image.view(), h);
+            heat = game ? diffHeatMap(drawn(a, pa), drawn(b, pb), view, h)
+                        : diffHeatMap(a, b, view, h);
     } else {
-        report = diffLuts(a, b, d);
+        PurposeDiff pd = diffForPurpose({&a, pa.purpose}, {&b, pb.purpose}, nullptr, d);
+        report = pd.report;
+        compared = pd.compared;
         if (!o.heatmap.empty())
-            heat = diffHeatMapSlices(a, b, h, o.slices);
+            heat = game ? diffHeatMapSlices(drawn(a, pa), drawn(b, pb), h, o.slices)
+                        : diffHeatMapSlices(a, b, h, o.slices);
     }
     if (writeHeatmap) {
         formats::ImageWriteOptions w;
@@ -117,10 +137,12 @@ int runDiff(const DiffCommandOptions& o) {
         formats::writeImage(o.heatmap, heat.image, w);
     }
     if (o.json) {
-        printJson(o, report, heat.maxDeltaE);
+        printJson(o, report, heat.maxDeltaE, compared);
         return kExitOk;
     }
-    printText(o, report);
+    std::cout << "purpose  A: " << pa.text("--in-target")
+              << "\n         B: " << pb.text("--in-target") << "\n";
+    printText(o, report, compared);
     if (writeHeatmap)
         std::cout << "wrote    " << o.heatmap << ": heat map, black = ΔE 0 to pale yellow = ΔE "
                   << significant(heat.maxDeltaE) << " and above\n";
@@ -150,11 +172,16 @@ CLI::App* setupDiff(CLI::App& app, std::function<void(const DiffCommandOptions&)
                     "ΔE2000 at the top of the heat map's ramp (default 10; 0 = the largest)")
         ->check(CLI::Range(0.0, 1000.0));
     addInterp(*sub, o->interp, "interpolation (default tetrahedral)");
+    addPurpose(*sub, "--in-target", o->inTarget,
+               "what A and B are for, over what the files say (raw: an edit; smash: the game's "
+               "LUT, compared by what the game shows; default: what each file says, else raw)");
     sub->add_flag("--json", o->json, "print the report as JSON");
     addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
-    sub->footer("ΔE2000 takes LUT entries as sRGB-encoded display values. Exit code 0 whether "
-                "the LUTs differ or not.\n\n"
+    sub->footer("ΔE2000 takes LUT entries as sRGB-encoded display values. A game LUT (a "
+                ".nutexb, a file that says smash) is compared by what the game shows with it, "
+                "at the colour the neutral game shows for each input (as lutkit preview shows "
+                "a screenshot). Exit code 0 whether the LUTs differ or not.\n\n"
                 "Examples:\n"
                 "  lutkit diff old.cube new.cube\n"
                 "  lutkit diff old.cube new.cube --image screenshot.png --heatmap where.png\n"

@@ -26,6 +26,7 @@ struct DiffCommandOptions {
     int slices = 5;          // heat map of the lattice: slices of the cube
     double maxDeltaE = 10.0; // ΔE at the top of the heat map's ramp (0 = the largest found)
     Interpolation interp = Interpolation::Tetrahedral;
+    std::string inTarget; // what A and B are for ("" = what each file says, else an edit)
     bool json = false;
     OutputOptions overwrite; // -y / -n for --heatmap
     Verbosity verbosity;

@@ -86,6 +86,7 @@ int runExtract(const ExtractOptions& o) {
 
     if (r.source == formats::ExtractSource::LutImage) {
         printDiagnostics(std::cerr, r.image->diagnostics, o.verbosity, "lutkit: ");
+        warnPurposeFromContent(o.input, r.decision, "--in-target", o.verbosity);
         const bool converted = r.conversion.has_value();
         if (!converted && (!o.originalLut.empty() || o.refine))
             throw UsageError("--original-lut and --refine are for the game's LUT made from an "

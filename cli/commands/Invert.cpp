@@ -83,6 +83,8 @@ int runInvert(const InvertCommandOptions& o) {
         return kExitOk;
     const LutFile file = formats::readLut(o.input, {});
     printDiagnostics(std::cerr, file.diagnostics, o.verbosity, "lutkit: ");
+    // The inverse lives where its input does: a game LUT's inverse is written as the game's.
+    const std::optional<LutPurpose> purpose = knownPurpose(decidePurpose(file));
     InvertOptions io;
     io.size = o.size;
     io.outputRangeDomain = o.outputRange;
@@ -92,6 +94,7 @@ int runInvert(const InvertCommandOptions& o) {
         const InvertResult1D r = invert(*file.shaper, io);
         LutFile out;
         out.shaper = r.lut;
+        out.purpose = purpose;
         const WrittenLut w = writeLutFile(o.output, out, o.format, {o.input});
         printReport(o, r.report, true);
         if (!o.json) {
@@ -105,7 +108,7 @@ int runInvert(const InvertCommandOptions& o) {
     if (file.shaper) {
         // Shaper then table: the table inverted, the shaper inverted exactly on its entries.
         const FileInvertResult r = invert(file, io);
-        writeLutTable(written, o.output, r.table.lut, o.format, {o.input}, o.verbosity);
+        writeLutTable(written, o.output, r.table.lut, o.format, {o.input}, o.verbosity, purpose);
         printReport(o, r.table.report, false);
         if (!o.json)
             std::cout << "shaper   A is a 1D shaper then a " << file.cube->size()
@@ -120,7 +123,7 @@ int runInvert(const InvertCommandOptions& o) {
         return kExitOk;
     }
     const InvertResult r = invert(*file.cube, io);
-    writeLutTable(written, o.output, r.lut, o.format, {o.input}, o.verbosity);
+    writeLutTable(written, o.output, r.lut, o.format, {o.input}, o.verbosity, purpose);
     printReport(o, r.report, false);
     if (!o.json)
         std::cout << written.str();

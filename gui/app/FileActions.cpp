@@ -67,7 +67,7 @@ FileActions::FileActions(const EditorContext& context, QObject* parent)
                 std::optional<LutPurpose> answer;
                 if (!file->purpose) {
                     bool cancelled = false;
-                    answer = purposeFor(path, &cancelled);
+                    answer = purposeFor(path, *file, &cancelled);
                     if (cancelled) {
                         showStatus(tr("Not opened: %1").arg(QFileInfo(path).fileName()));
                         return;
@@ -167,14 +167,10 @@ const char* kPurposesKey = "lutPurposes"; // absolute path -> "raw" / "smash"
 
 std::optional<LutPurpose> FileActions::rememberedPurpose(const QString& path) {
     const QVariantMap map = QSettings().value(kPurposesKey).toMap();
-    const auto it = map.find(QFileInfo(path).absoluteFilePath());
-    if (it == map.end())
-        return std::nullopt;
-    try {
-        return parseLutPurpose(it->toString().toStdString());
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
+    const QString said = map.value(QFileInfo(path).absoluteFilePath()).toString();
+    if (said == QLatin1String("raw") || said == QLatin1String("smash")) // else nothing kept
+        return parseLutPurpose(said.toStdString());
+    return std::nullopt;
 }
 
 void FileActions::rememberPurpose(const QString& path, LutPurpose purpose) {
@@ -184,30 +180,35 @@ void FileActions::rememberPurpose(const QString& path, LutPurpose purpose) {
     settings.setValue(kPurposesKey, map);
 }
 
-std::optional<LutPurpose> FileActions::purposeFor(const QString& path, bool* cancelled) {
+std::optional<LutPurpose> FileActions::purposeFor(const QString& path, const LutFile& file,
+                                                  bool* cancelled) {
     *cancelled = false;
     if (const auto p = m_prompts->lutPurposeAnswer()) // said on the command line, by a script
         return p;
-    if (m_prompts->interactive())
-        if (const auto p = rememberedPurpose(path))
-            return p;
     if (!m_prompts->interactive())
-        return std::nullopt; // headless: taken as an edit, with a note
-    // As Open LUT asks a strip's layout: once, and the answer is kept for this file.
+        return std::nullopt; // headless: taken as the library decides, with a note
+    if (const auto p = rememberedPurpose(path))
+        return p;
+    // As Open LUT asks a strip's layout: once, and the answer is kept for this file. Its content
+    // may say it is the game's LUT (lut::gameLutEvidence): said, and that answer pre-selected.
+    const std::string evidence = decidePurpose(file).evidence;
     QMessageBox box(QMessageBox::Question, tr("What is this LUT for?"),
                     tr("\"%1\" does not say what it is for. Is it an edit, the look itself (a "
                        "graded neutral strip, a .cube from a grading app), or the game's LUT, "
                        "already made for Smash Ultimate (what goes into "
                        "color_grading_lut.nutexb: Smush-LUT's output, a .nutexb converted to a "
                        "strip)?\n\nThe game's LUT is not compensated again when exported.")
-                        .arg(QFileInfo(path).fileName()),
+                            .arg(QFileInfo(path).fileName()) +
+                        (evidence.empty() ? QString()
+                                          : tr("\n\nIts content says it is the game's LUT: %1.")
+                                                .arg(QString::fromStdString(evidence))),
                     QMessageBox::NoButton, m_prompts->dialogParent());
     QPushButton* edit = box.addButton(tr("An Edit (the Look)"), QMessageBox::AcceptRole);
     QPushButton* game = box.addButton(tr("The Game's LUT"), QMessageBox::AcceptRole);
     QPushButton* cancel = box.addButton(QMessageBox::Cancel);
     edit->setObjectName(QStringLiteral("purpose.raw"));
     game->setObjectName(QStringLiteral("purpose.smash"));
-    box.setDefaultButton(edit);
+    box.setDefaultButton(evidence.empty() ? edit : game);
     box.setEscapeButton(cancel);
     box.exec();
     if (box.clickedButton() != edit && box.clickedButton() != game) {
@@ -492,15 +493,15 @@ bool FileActions::askStripLayout(const QString& path, FormatOptions& options) {
     const formats::ImageInfo info = formats::readImageInfo(path.toStdString());
     for (const LayoutFit& f : layoutsForImageSize(info.width, info.height))
         items << QString::fromLatin1(toString(f.layout));
-    bool says = false;
+    PurposeDecision read; // a strip is small; unreadable: the read that follows says why
     try {
-        says = formats::readLut(path.toStdString()).purpose.has_value(); // a strip is small
+        read = decidePurpose(formats::readLut(path.toStdString()));
     } catch (const std::exception&) {
-        // unreadable: the read that follows says why
     }
-    const bool askPurpose = !says && !m_prompts->lutPurposeAnswer() && !rememberedPurpose(path);
-    const auto answer =
-        askOpenLut(m_prompts->dialogParent(), QFileInfo(path).fileName(), items, askPurpose);
+    const bool askPurpose =
+        !read.said && !m_prompts->lutPurposeAnswer() && !rememberedPurpose(path);
+    const auto answer = askOpenLut(m_prompts->dialogParent(), QFileInfo(path).fileName(), items,
+                                   askPurpose, QString::fromStdString(read.evidence));
     if (!answer)
         return false;
     options.layout = parseOptionalLayout(answer->layout == items[0] ? std::string()

@@ -98,7 +98,7 @@ public:
     // window's answer (--lut-target, scripts), else the answer remembered for that file, else
     // the user's, asked once (interactive only) and remembered per file; nullopt: taken as an
     // edit with a note. *cancelled: the user cancelled the question (the file is not opened).
-    std::optional<LutPurpose> purposeFor(const QString& path, bool* cancelled);
+    std::optional<LutPurpose> purposeFor(const QString& path, const LutFile& file, bool* cancelled);
     // The answers remembered, by absolute path (none when headless: settings are left alone).
     static std::optional<LutPurpose> rememberedPurpose(const QString& path);
     static void rememberPurpose(const QString& path, LutPurpose purpose);

@@ -12,7 +12,8 @@
 namespace lut::gui {
 
 std::optional<OpenLutAnswer> askOpenLut(QWidget* parent, const QString& fileName,
-                                        const QStringList& layouts, bool askPurpose) {
+                                        const QStringList& layouts, bool askPurpose,
+                                        const QString& gameEvidence) {
     QDialog dialog(parent);
     dialog.setObjectName(QStringLiteral("openLut"));
     dialog.setWindowTitle(QDialog::tr("Open LUT"));
@@ -34,7 +35,11 @@ std::optional<OpenLutAnswer> askOpenLut(QWidget* parent, const QString& fileName
                         "neutral strip), or the game's LUT, already made for Smash Ultimate (what "
                         "goes into color_grading_lut.nutexb: Smush-LUT's output, a .nutexb "
                         "converted to a strip)? The game's LUT is not compensated again when "
-                        "exported."),
+                        "exported.") +
+                (gameEvidence.isEmpty()
+                     ? QString()
+                     : QDialog::tr("\n\nIts content says it is the game's LUT: %1.")
+                           .arg(gameEvidence)),
             &dialog);
         what->setWordWrap(true);
         column->addWidget(what);
@@ -45,7 +50,7 @@ std::optional<OpenLutAnswer> askOpenLut(QWidget* parent, const QString& fileName
         auto* group = new QButtonGroup(&dialog);
         group->addButton(edit);
         group->addButton(game);
-        edit->setChecked(true);
+        (gameEvidence.isEmpty() ? edit : game)->setChecked(true);
         column->addWidget(edit);
         column->addWidget(game);
     }

@@ -21,8 +21,11 @@ struct OpenLutAnswer {
 
 // Shows the dialog (object name "openLut"; the layout list "openLut.layout", the question
 // "openLut.question", the purpose choices "purpose.raw" and "purpose.smash" as in the purpose
-// question of a LUT that is not a strip). nullopt when the user cancelled.
+// question of a LUT that is not a strip). `gameEvidence`: what in the table says it is the game's
+// LUT (lut::gameLutEvidence), said in the question, "the game's LUT" then pre-selected. nullopt
+// when the user cancelled.
 std::optional<OpenLutAnswer> askOpenLut(QWidget* parent, const QString& fileName,
-                                        const QStringList& layouts, bool askPurpose);
+                                        const QStringList& layouts, bool askPurpose,
+                                        const QString& gameEvidence = {});
 
 } // namespace lut::gui

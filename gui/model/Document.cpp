@@ -206,6 +206,11 @@ QStringList Document::adoptLut(const LutFile& file, const QString& path,
     // user's answer only where it says nothing.
     const PurposeDecision purpose =
         decidePurpose(file, file.purpose ? std::nullopt : answer, LutPurpose::Raw);
+    if (purpose.source == PurposeSource::Content)
+        notes << tr("%1 does not say what it is for: taken as the game's LUT, as its content says "
+                    "(%2); open it again and answer, or lutkit-editor --lut-target raw, if it is "
+                    "an edit")
+                     .arg(QFileInfo(path).fileName(), QString::fromStdString(purpose.evidence));
     if (purpose.source == PurposeSource::Assumed)
         notes << tr("%1 does not say what it is for: taken as an edit (raw); open it again and "
                     "answer, or lutkit-editor --lut-target smash, if it is the game's LUT")

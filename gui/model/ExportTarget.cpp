@@ -48,9 +48,9 @@ Lut3D exportTable(const LutSource& source, ExportTarget target, const StrengthOp
     // made for the game, so the game shows that share of the edit.
     auto blended = [&](const Lut3D& edit) { return full ? edit : applyStrength(edit, strength); };
     // The edit is a LUT on display colours, evaluated tetrahedrally (exact for affine edits, the
-    // neutral one included), continued above white (a game LUT exported unchanged is itself).
+    // neutral one included), with lutkit convert's one rule above white (lut/smash/
+    // SmashAuthoring.h: a game LUT exported unchanged is itself).
     PurposeOptions o;
-    o.aboveWhite = kEditAboveWhite;
     o.editInterpolation = Interpolation::Tetrahedral;
     const bool neutralEdit = !source.adjustments || source.adjustments->isNeutral();
     Lut3D table;

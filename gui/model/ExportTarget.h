@@ -70,7 +70,7 @@ struct TargetLut {
 };
 
 // The table a target exports: the source made for the target's purpose by the library's one
-// conversion (lut::convertPurpose with lut::kEditAboveWhite, as lutkit convert makes it), with
+// conversion (lut::convertPurpose, its one rule above white, as lutkit convert makes it), with
 // the adjustments as an edit of the picture. Smash: the 16^3 game LUT, its exact composition
 // before the file clamps it to [0, 1] (as convert's file clamps it: the same .nutexb bytes);
 // others: the edit (a game LUT as the edit it makes). At a partial strength (lut/ops/Strength.h)

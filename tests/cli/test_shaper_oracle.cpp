@@ -195,9 +195,10 @@ TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
 TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
     // convert shaped.cube game.nutexb (the default target: the game shows the edit): every entry
     // is L(s) = (srgb^-1(wanted(s))^(1/2.2) / 1.3703 - s) / 0.99961 + s with shown(s) =
-    // srgb(min(1, (s * 1.3703)^2.2)) (neutral stage LUT) and the edit evaluated by OCIO, continued
-    // above white with slope 1 (lut::kEditAboveWhite, AboveWhite::Continue: wanted = edit(shown)
-    // + (unclipped - shown), at least 0), clamped to [0,1] and rounded to 8 bits.
+    // srgb(min(1, (s * 1.3703)^2.2)) (neutral stage LUT) and the edit evaluated by OCIO on that
+    // displayed, clipped colour (wanted = edit(shown) clamped to [0,1]; where wanted is white, the
+    // neutral stage's own entry s when it shows white too: the one rule above white,
+    // lut/smash/SmashAuthoring.h), clamped to [0,1] and rounded to 8 bits.
     const std::string dir = workDir();
     const std::string cube = writeShapedCube(dir);
     const RunResult r =
@@ -212,21 +213,20 @@ TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
         for (int g = 0; g < 16; ++g)
             for (int rr = 0; rr < 16; ++rr) {
                 const glm::dvec3 s = glm::dvec3(rr, g, b) / 15.0;
-                glm::dvec3 shown, unclipped;
-                for (int c = 0; c < 3; ++c) {
-                    unclipped[c] = std::pow(s[c] * 1.3703, 2.2);
-                    shown[c] = std::min(1.0, unclipped[c]);
-                }
+                glm::dvec3 shown;
+                for (int c = 0; c < 3; ++c)
+                    shown[c] = std::min(1.0, std::pow(s[c] * 1.3703, 2.2));
                 shown = srgbEncode(shown);
-                unclipped = srgbEncode(unclipped);
                 glm::vec3 e(shown);
                 ocio->applyRGB(&e.x);
                 glm::dvec3 wanted;
                 for (int c = 0; c < 3; ++c)
-                    wanted[c] = std::max(0.0, double(e[c]) + (unclipped[c] - shown[c]));
+                    wanted[c] = std::clamp(double(e[c]), 0.0, 1.0);
                 const glm::dvec3 lin = srgbDecode(wanted);
                 for (int c = 0; c < 3; ++c) {
-                    const double l = (std::pow(lin[c], 1.0 / 2.2) / 1.3703 - s[c]) / 0.99961 + s[c];
+                    double l = (std::pow(lin[c], 1.0 / 2.2) / 1.3703 - s[c]) / 0.99961 + s[c];
+                    if (wanted[c] >= 1.0 - 1e-6)
+                        l = std::max(l, s[c]);
                     const double want = std::round(std::clamp(l, 0.0, 1.0) * 255.0);
                     const double have = std::round(back.cube->at(rr, g, b)[c] * 255.0);
                     worst = std::max(worst, std::fabs(have - want));

@@ -105,6 +105,8 @@ std::vector<Row> rows(const Inputs& in) {
         {"bake-json", "bake - --lut " + a + " --format resolve_cube --cubesize 9 --json", false,
          "\"error\""},
         {"plot", "plot " + a + " - --format png", true, "wrote"},
+        {"chart", "chart grey - --bit-depth 8", true, "wrote"},
+        {"atlas", "atlas build " + a + " " + b + " -o -", true, "wrote"},
         {"embed", "embed " + shellQuoted(in.shot) + " - --format png", true, "embedded"},
         {"diff-heatmap", "diff " + a + " " + b + " --heatmap - --format png", true, "ΔE"},
         {"apply", "apply --lut " + a + " " + shellQuoted(in.shot) + " -o - --format png -v", true,

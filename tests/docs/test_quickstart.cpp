@@ -138,21 +138,19 @@ double srgbDecode(double v) {
 
 // The 8-bit entry of the compensated LUT for a neutral edit at lattice index i of 16 (each
 // channel on its own, since a neutral stage LUT and a neutral edit act per channel): the game
-// shows srgb((1.3703 s)^2.2) for s = i/15 (the power segment continued above 1, where the display
-// clips); the modder wants the edit of that colour, continued with slope 1 above white
-// (lut::kEditAboveWhite: the edit of white plus how far above white the colour is), here the
-// colour itself; the entry L that makes the game's grading give it is
+// shows srgb(min(1, (1.3703 s)^2.2)) for s = i/15 (the display clips at white); the modder wants
+// the edit of that colour, here the colour itself; the entry L that makes the game's grading give
+// it is
 //     L = (decode(wanted)^(1/2.2) / 1.3703 - s) / 0.99961 + s,
-// rounded to nearest: L = s, the neutral nutexb (17 i).
+// and where wanted is white, every entry from L up shows white: the neutral stage's own s when it
+// does (the one rule above white, lut/smash/SmashAuthoring.h). Rounded to nearest: L = s, the
+// neutral nutexb (17 i).
 int compensatedNeutralEntry(int i) {
     const double s = i / 15.0;
-    const double x = std::pow(1.3703 * s, 2.2);
-    const double shown = x <= 1.0 ? srgbEncode(x) : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-    const double clipped = std::min(shown, 1.0);
-    const double wanted = clipped + (shown - clipped); // the neutral edit, continued
-    const double decoded =
-        wanted <= 1.0 ? srgbDecode(wanted) : std::pow((wanted + 0.055) / 1.055, 2.4);
-    const double L = (std::pow(decoded, 1 / 2.2) / 1.3703 - s) / 0.99961 + s;
+    const double wanted = srgbEncode(std::min(1.0, std::pow(1.3703 * s, 2.2)));
+    double L = (std::pow(srgbDecode(wanted), 1 / 2.2) / 1.3703 - s) / 0.99961 + s;
+    if (wanted >= 1.0 - 1e-6)
+        L = std::max(L, s);
     return int(std::lround(255 * std::clamp(L, 0.0, 1.0)));
 }
 

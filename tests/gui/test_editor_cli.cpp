@@ -226,7 +226,11 @@ private slots:
         QVERIFY2(ab == bb, "the editor's .nutexb differs from lutkit convert's");
         if (lut == "above") { // the case the rule decides: the entries near white differ
             const Lut3D game = formats::readLut(converted.toStdString()).toLut3D();
-            QVERIFY(game.at(15, 15, 15).x > 0.99f); // bright inputs stay white (continued)
+            // red keeps white (1.35 x clipped): the neutral stage's own entry, the rule above white
+            QVERIFY(game.at(15, 15, 15).x > 0.99f);
+            // green darkens white to 0.87: the brightest input shows 0.87, as the edited
+            // screenshot does (not continued above it: issue 40)
+            QVERIFY(game.at(15, 15, 15).y < 0.7f);
         }
     }
 

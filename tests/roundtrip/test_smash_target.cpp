@@ -91,8 +91,10 @@ Lut3D oracleLut(const Edit& edit) {
                 const glm::dvec3 e = edit(q);
                 for (int c = 0; c < 3; ++c) {
                     const double t = std::pow(srgbDec(clamp01(e[c])), 1 / 2.2);
-                    L.at(r, g, b)[c] =
-                        float(std::clamp((t / 1.3703 - s[c]) / 0.99961 + s[c], 0.0, 1.0));
+                    double l = (t / 1.3703 - s[c]) / 0.99961 + s[c];
+                    if (e[c] >= 1.0 - 1e-6) // white: the neutral entry when it shows white too
+                        l = std::max(l, s[c]);
+                    L.at(r, g, b)[c] = float(std::clamp(l, 0.0, 1.0));
                 }
             }
     return L;
@@ -152,15 +154,15 @@ TEST(SmashTarget, NoEditGivesTheNeutralLut) {
     const ExtractResult r = extractLut(shot.view(), o);
     ASSERT_EQ(r.lut.size(), 16);
     // Below the brighten step's clip point (s < 1/1.3703) the neutral LUT is the answer; above it
-    // the screenshot only says "white", and the LUT holds the value that shows white.
+    // the screenshot only says "white", every entry from the one that shows white up shows it, and
+    // the LUT keeps the neutral stage's own (the rule above white): the neutral LUT everywhere.
     for (int b = 0; b < 16; ++b)
         for (int g = 0; g < 16; ++g)
             for (int rr = 0; rr < 16; ++rr) {
                 const int idx[3] = {rr, g, b};
                 for (int c = 0; c < 3; ++c) {
                     const double s = idx[c] / 15.0;
-                    const double want = s < 0.72 ? s : (1.0 / 1.3703 - s) / 0.99961 + s;
-                    EXPECT_NEAR(r.lut.at(rr, g, b)[c], want, 1e-4) << rr << " " << g << " " << b;
+                    EXPECT_NEAR(r.lut.at(rr, g, b)[c], s, 1e-4) << rr << " " << g << " " << b;
                 }
             }
     EXPECT_FALSE(r.has(RoundtripWarning::OutOfRange));

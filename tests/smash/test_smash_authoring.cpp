@@ -45,7 +45,9 @@ Lut3D displayEdit() {
     return e;
 }
 
-// The exact composition in float64, written from the spec: L = g_s^-1(srgb^-1(E(shown0(s)))).
+// The exact composition in float64, written from the spec: L = g_s^-1(srgb^-1(E(shown0(s)))),
+// and where E is white, the neutral stage's own entry s when it shows white too (the rule above
+// white: every entry from g_s^-1(white) up shows white).
 Lut3D referenceExact(const Lut3D& edit) {
     Lut3D out(16);
     for (int b = 0; b < 16; ++b)
@@ -58,7 +60,10 @@ Lut3D referenceExact(const Lut3D& edit) {
                 refTrilinear(edit, d, e);
                 for (int c = 0; c < 3; ++c) {
                     const double t = std::pow(srgbDec(clampUnit(e[c])), 1.0 / 2.2);
-                    out.at(r, g, b)[c] = static_cast<float>((t / 1.3703 - s[c]) / 0.99961 + s[c]);
+                    double l = (t / 1.3703 - s[c]) / 0.99961 + s[c];
+                    if (e[c] >= 1.0 - 1e-6)
+                        l = std::max(l, s[c]);
+                    out.at(r, g, b)[c] = static_cast<float>(l);
                 }
             }
     return out;
@@ -117,7 +122,8 @@ TEST(SmashAuthoring, ExactCompositionMatchesTheSpecInFloat64) {
             worst =
                 std::max(worst, std::fabs(double(r.exact.entries()[i][c]) - ref.entries()[i][c]));
     EXPECT_LT(worst, 2e-6);
-    // a neutral edit gives the neutral LUT, and the game shows it to within the 8-bit rounding
+    // a neutral edit gives the neutral LUT, above white too (the rule above white keeps the
+    // stage's own entries where the edit keeps white)
     SmashAuthoringOptions m;
     const SmashAuthoringResult id =
         authorSmashLutForEdit(Lut3D::identity(33), Interpolation::Trilinear, m);
@@ -126,9 +132,7 @@ TEST(SmashAuthoring, ExactCompositionMatchesTheSpecInFloat64) {
             for (int rr = 0; rr < 16; ++rr)
                 for (int c = 0; c < 3; ++c) {
                     const double s = (c == 0 ? rr : c == 1 ? g : b) / 15.0;
-                    // above the clip point the LUT holds the value that just shows white
-                    const double want = s < 0.72 ? s : (1.0 / 1.3703 - s) / 0.99961 + s;
-                    EXPECT_NEAR(id.lut.at(rr, g, b)[c], want, 1e-5);
+                    EXPECT_NEAR(id.lut.at(rr, g, b)[c], s, 1e-5);
                 }
     EXPECT_EQ(id.clampedEntries, 0u);
 }

@@ -26,6 +26,8 @@ public:
                 {"iridas_cube", kCubeDialectAttribute, "adobe"}};
     }
     bool holdsShaper() const override { return true; }
+    // "# LUTKIT_PURPOSE smash", a comment line (CubeWriter.cpp).
+    bool keepsPurpose(const std::string&, LutPurpose) const override { return true; }
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         CubeReadOptions o;
         o.strict = options.strict;

@@ -139,7 +139,9 @@ AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::s
         report.rows.push_back(std::move(r.report));
     }
     const Image picture = atlasImage(tables, options.layout);
-    writeImage(output, picture, ImageWriteOptions(8, false, true));
+    ImageWriteOptions wo(8, false, true);
+    wo.format = "png"; // standard output ("-") and devices: a PNG, what MultiLUT reads
+    writeImage(output, picture, wo);
     report.shape = {options.layout, n, static_cast<int>(tables.size())};
     return report;
 }

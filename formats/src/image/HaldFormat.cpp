@@ -50,6 +50,9 @@ public:
                "EXR";
     }
     std::vector<std::string> extensions() const override { return {}; }
+    bool keepsPurpose(const std::string& path, LutPurpose) const override {
+        return lutImageKeepsPurpose(path);
+    }
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {
         checkLayout(path, options);

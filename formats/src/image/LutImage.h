@@ -25,6 +25,10 @@ Diagnostics writeLutImage(const std::string& path, const LutFile& file,
 LutFile readLutImageMemory(std::string_view bytes, const std::string& name,
                            const FormatOptions& options,
                            std::optional<LutLayout> forced = std::nullopt);
+// Whether a LUT image written at `path` keeps its LUTKIT_PURPOSE description: the containers
+// whose description lutkit writes and reads (PNG, TIFF, OpenEXR; a name without extension is a
+// PNG).
+bool lutImageKeepsPurpose(const std::string& path);
 std::string writeLutImageMemory(const std::string& name, const LutFile& file,
                                 const FormatOptions& options, LutLayout layout,
                                 Diagnostics* diagnostics);

@@ -427,6 +427,11 @@ Image lutImage(const std::string& path, const LutFile& source, const FormatOptio
 
 } // namespace
 
+bool lutImageKeepsPurpose(const std::string& path) {
+    const std::string ext = extensionOf(path);
+    return ext.empty() || ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
+}
+
 Diagnostics writeLutImage(const std::string& path, const LutFile& source,
                           const FormatOptions& options, LutLayout layout) {
     Diagnostics diags;
@@ -462,6 +467,9 @@ public:
     }
     std::vector<std::string> extensions() const override {
         return {".png", ".tif", ".tiff", ".exr"};
+    }
+    bool keepsPurpose(const std::string& path, LutPurpose) const override {
+        return lutImageKeepsPurpose(path);
     }
 
     LutFile read(const std::string& path, const FormatOptions& options) const override {

@@ -33,6 +33,10 @@ public:
     // The game's LUTs are 16^3; FormatOptions::size still writes any other N.
     int fixedSize() const override { return kSmashLutSize; }
     int storedBitDepth() const override { return 8; }
+    // A .nutexb is the game's LUT by its format: an edit written as one reads back as the game's.
+    bool keepsPurpose(const std::string&, LutPurpose purpose) const override {
+        return purpose == LutPurpose::Smash;
+    }
 
     LutFile read(const std::string& path, const FormatOptions&) const override {
         // Nothing larger than a 256^3 volume is read; the footer's sizes are then checked against

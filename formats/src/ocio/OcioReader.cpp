@@ -51,6 +51,34 @@ std::optional<LutPurpose> cspMetadataPurpose(const std::string& path) {
     return purposeInText(std::string_view(head).substr(begin, end - begin), path);
 }
 
+// A "#" comment line holding the tag (lutkit writes one at the top of a .3dl and an .itx:
+// OcioWriters.cpp; OpenColorIO skips it). Only the file's head is read.
+std::optional<LutPurpose> commentPurpose(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(16384, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    if (head.find('\0') != std::string::npos)
+        return std::nullopt; // binary (an ICC profile)
+    std::optional<LutPurpose> found;
+    std::size_t start = 0;
+    while (start < head.size()) {
+        std::size_t end = head.find('\n', start);
+        if (end == std::string::npos)
+            end = head.size();
+        const std::string_view line = std::string_view(head).substr(start, end - start);
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first != std::string_view::npos && line[first] == '#')
+            if (const auto p = purposeInText(line.substr(first + 1), path)) {
+                if (found && *found != *p)
+                    throw Error(path + ": two LUTKIT_PURPOSE tags that disagree (raw and smash)");
+                found = p;
+            }
+        start = end + 1;
+    }
+    return found;
+}
+
 std::string lowered(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -142,6 +170,8 @@ public:
             out.purpose = takePurposeTag(described, path);
             if (!out.purpose && extensionOf(path) == ".csp")
                 out.purpose = cspMetadataPurpose(path);
+            if (!out.purpose)
+                out.purpose = commentPurpose(path);
             if (out.cube)
                 (void)takePurposeTag(out.cube->comments(), path);
         } catch (const Error&) {

@@ -48,16 +48,24 @@ OCIO::MatrixTransformRcPtr rangeMatrix(glm::vec3 lo, glm::vec3 hi) {
 class OcioBakeFormat final : public EncodedFormat {
 public:
     enum class Shaper { None, Transforms, Csp };
+    // Where the file says what its LUT is for (lut/LutPurpose.h): OCIO's metadata (.clf, .ctf:
+    // a Description; .csp: its METADATA block), a "#" comment line lutkit adds before the baked
+    // bytes (.3dl, .itx: comments their readers skip, OpenColorIO's too), or nowhere (.cub's
+    // "#" lines are its keywords, Houdini's .lut has no comments).
+    enum class PurposePlace { None, Metadata, Comment };
     OcioBakeFormat(std::string name, std::string ocioName, std::string ext, std::string description,
                    int storedBits, int minSize = 2, std::vector<FormatAlias> aliases = {},
-                   Shaper shaper = Shaper::None)
+                   Shaper shaper = Shaper::None, PurposePlace purposePlace = PurposePlace::None)
         : m_name(std::move(name)), m_ocioName(std::move(ocioName)), m_ext(std::move(ext)),
           m_description(std::move(description)), m_storedBits(storedBits), m_minSize(minSize),
-          m_aliases(std::move(aliases)), m_shaper(shaper) {}
+          m_aliases(std::move(aliases)), m_shaper(shaper), m_purposePlace(purposePlace) {}
 
     std::string name() const override { return m_name; }
     std::vector<FormatAlias> aliases() const override { return m_aliases; }
     bool holdsShaper() const override { return m_shaper != Shaper::None; }
+    bool keepsPurpose(const std::string&, LutPurpose) const override {
+        return m_purposePlace != PurposePlace::None;
+    }
     std::string description() const override { return m_description; }
     std::vector<std::string> extensions() const override { return {m_ext}; }
     // Reading goes through the one "ocio" reader, which detects the variant itself.
@@ -72,6 +80,8 @@ public:
                             const FormatOptions& options, Diagnostics* diagnostics) const override {
         Diagnostics diags;
         std::string bytes = encode(file, path, options, diags);
+        if (file.purpose && m_purposePlace == PurposePlace::Comment)
+            bytes = "# " + purposeTag(*file.purpose) + "\n" + bytes;
         if (diagnostics)
             *diagnostics = std::move(diags);
         return bytes;
@@ -180,6 +190,7 @@ private:
     int m_minSize;
     std::vector<FormatAlias> m_aliases;
     Shaper m_shaper;
+    PurposePlace m_purposePlace;
 };
 
 std::string OcioBakeFormat::transformsBytes(const std::string& path, const LutFile& file,
@@ -245,29 +256,31 @@ std::vector<std::unique_ptr<Format>> makeOcioBakeFormats() {
     std::vector<std::unique_ptr<Format>> v;
     // Order matters where two share an extension: the first is the default writer (.3dl -> flame).
     using S = OcioBakeFormat::Shaper;
+    using P = OcioBakeFormat::PurposePlace;
     v.push_back(std::make_unique<OcioBakeFormat>(
         "flame", "flame", ".3dl", "Autodesk Flame .3dl (12-bit integers), via OpenColorIO", 12, 4,
-        std::vector<FormatAlias>{{"3dl", "", ""}}));
+        std::vector<FormatAlias>{{"3dl", "", ""}}, S::None, P::Comment));
     v.push_back(std::make_unique<OcioBakeFormat>(
         "lustre", "lustre", ".3dl", "Autodesk Lustre .3dl (12-bit integers), via OpenColorIO", 12,
-        4));
+        4, std::vector<FormatAlias>{}, S::None, P::Comment));
     v.push_back(std::make_unique<OcioBakeFormat>(
         "csp", "cinespace", ".csp", "Cinespace .csp (with its prelut), via OpenColorIO", 0, 2,
-        std::vector<FormatAlias>{{"cinespace", "", ""}}, S::Csp));
+        std::vector<FormatAlias>{{"cinespace", "", ""}}, S::Csp, P::Metadata));
     v.push_back(std::make_unique<OcioBakeFormat>(
         "clf", "Academy/ASC Common LUT Format", ".clf",
         "Academy/ASC Common LUT Format .clf (shaper kept), via OpenColorIO", 0, 2,
-        std::vector<FormatAlias>{{"Academy/ASC Common LUT Format", "", ""}}, S::Transforms));
+        std::vector<FormatAlias>{{"Academy/ASC Common LUT Format", "", ""}}, S::Transforms,
+        P::Metadata));
     v.push_back(std::make_unique<OcioBakeFormat>(
         "ctf", "Color Transform Format", ".ctf",
         "Autodesk Color Transform Format .ctf (shaper kept), via OpenColorIO", 0, 2,
-        std::vector<FormatAlias>{{"Color Transform Format", "", ""}}, S::Transforms));
+        std::vector<FormatAlias>{{"Color Transform Format", "", ""}}, S::Transforms, P::Metadata));
     v.push_back(std::make_unique<OcioBakeFormat>("cub", "truelight", ".cub",
                                                  "Truelight .cub, via OpenColorIO", 0, 2,
                                                  std::vector<FormatAlias>{{"truelight", "", ""}}));
-    v.push_back(std::make_unique<OcioBakeFormat>("itx", "iridas_itx", ".itx",
-                                                 "Iridas .itx, via OpenColorIO", 0, 2,
-                                                 std::vector<FormatAlias>{{"iridas_itx", "", ""}}));
+    v.push_back(std::make_unique<OcioBakeFormat>(
+        "itx", "iridas_itx", ".itx", "Iridas .itx, via OpenColorIO", 0, 2,
+        std::vector<FormatAlias>{{"iridas_itx", "", ""}}, S::None, P::Comment));
     v.push_back(std::make_unique<OcioBakeFormat>("houdini", "houdini", ".lut",
                                                  "Houdini .lut, via OpenColorIO", 0));
     return v;

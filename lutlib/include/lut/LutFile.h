@@ -40,8 +40,22 @@ struct LutFile {
 };
 
 // What a command takes the file to be for (lut/LutPurpose.h): `given` (a flag, an answer), else
-// what the file says (its tag; a .nutexb by its format), else `assumed`.
+// what the file says (its tag; a .nutexb by its format), else, when `assumed` is raw, what its
+// table says (gameLutEvidence: PurposeSource::Content, smash), else `assumed`.
 PurposeDecision decidePurpose(const LutFile& file, std::optional<LutPurpose> given = std::nullopt,
                               LutPurpose assumed = LutPurpose::Raw);
+
+// Whether a table's content says it is the game's LUT made for the default brighten pass (what
+// Smush-LUT writes, and any tool that compensates the brighten for the displayed, clipped
+// screenshot): the evidence in words, nullopt when it does not. Both must hold:
+//   - no value above 187/255: the brighten multiplies by 1.3703, so the entry that shows white
+//     is 1/1.3703 = 186.1/255, and no colour the game can show needs more;
+//   - flat above the white point: every input the game shows as white (s > 1/1.3703 + 0.001 on
+//     an axis) shows the same colour, so along every axis each channel stays within 2 codes over
+//     those lattice points (at least two of them: 8^3 lattices and up, over [0,1]).
+// An edit meets both only if it darkens white to 187 or less and flattens every channel above
+// 0.73 (a hard highlight clamp that dark); docs/roundtrip.md, "What the file says it is for",
+// lists the edits measured.
+std::optional<std::string> gameLutEvidence(const Lut3D& table);
 
 } // namespace lut

@@ -7,10 +7,14 @@
 //          graded neutral.png holds;
 //   Smash  "smash": Smash Ultimate's LUT (color_grading_lut.nutexb): what the game applies in its
 //          grading pass, compensated for its brighten step so that the game shows a look.
-// A file says which it is with the tag "LUTKIT_PURPOSE raw|smash": a comment line in a .cube (and
-// every format that keeps comments: .clf, .ctf, .csp), a text field in a LUT image (a PNG tEXt
-// chunk, a TIFF ImageDescription, an OpenEXR comments attribute); a .nutexb is the game's LUT by
-// its format. Other readers ignore the tag (OpenColorIO, ffmpeg, Resolve: a comment).
+// A file says which it is with the tag "LUTKIT_PURPOSE raw|smash": a comment line in a .cube, a
+// .3dl and an .itx ("# LUTKIT_PURPOSE smash" on top), a description in .clf, .ctf and .csp, a
+// text field in a LUT image (a PNG tEXt chunk, a TIFF ImageDescription, an OpenEXR comments
+// attribute); a .nutexb is the game's LUT by its format. Other readers ignore the tag
+// (OpenColorIO, ffmpeg, Resolve: a comment). .cub, .spi3d and Houdini's .lut have no place for it:
+// writing a game LUT there warns with the flag that reads it back (Format::keepsPurpose,
+// lut::writeLutFile). A file that says nothing may still be told by its content
+// (lut/LutFile.h's gameLutEvidence: Smush-LUT's untagged output).
 #include "lut/Error.h"
 
 #include <optional>
@@ -45,16 +49,20 @@ std::optional<LutPurpose> takePurposeTag(std::vector<std::string>& comments,
 
 // Which purpose a command takes for a LUT it reads, and why: what the user gave (a flag, an
 // answer) first, then what the file says (its tag, or its format: a .nutexb is the game's LUT),
-// else `assumed` (lutkit's default: raw). The programs say the text when the file did not say.
-enum class PurposeSource { Given, File, Format, Builtin, Assumed };
+// then what its content says (Content: lut/LutFile.h's gameLutEvidence, for a file that says
+// nothing), else `assumed` (lutkit's default: raw). The programs say the text when the file did
+// not say, and warn when the content decided.
+enum class PurposeSource { Given, File, Format, Builtin, Content, Assumed };
 struct PurposeDecision {
     LutPurpose purpose = LutPurpose::Raw;
     PurposeSource source = PurposeSource::Assumed;
     std::optional<LutPurpose> said; // what the file says (kept when given overrides it)
+    std::string evidence;           // Content: what in the table says so
     // "smash (the file says so: LUTKIT_PURPOSE smash)", "smash (a .nutexb is the game's LUT)",
     // "smash (a built-in game LUT)",
     // "raw (--in-target)", "raw (the file does not say; --in-target smash if it is the game's
-    // LUT)": `how` names what chooses (a flag, the editor's question).
+    // LUT)", "smash (the file does not say; its content does: EVIDENCE; --in-target raw if it is
+    // an edit)": `how` names what chooses (a flag, the editor's question).
     std::string text(const std::string& how) const;
 };
 PurposeDecision decidePurpose(std::optional<LutPurpose> said, bool byFormat,

@@ -118,6 +118,9 @@ std::string PurposeDecision::text(const std::string& how) const {
     case PurposeSource::Builtin:
         return name +
                (purpose == LutPurpose::Smash ? " (a built-in game LUT)" : " (a built-in edit)");
+    case PurposeSource::Content:
+        return name + " (the file does not say; its content does: " + evidence + "; " + how +
+               " raw if it is an edit)";
     case PurposeSource::Assumed:
         break;
     }

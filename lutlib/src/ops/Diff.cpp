@@ -243,4 +243,38 @@ DiffReport diffLutsOnImage(const Lut3D& a, const Lut3D& b, const ImageView& imag
                   p, t0);
 }
 
+DiffReport diffMaps(const ColourMap& a, const ColourMap& b, const DiffOptions& options) {
+    const long long t0 = detail::nowNanos();
+    const int size = options.size > 0 ? options.size : 33;
+    const Lut3D lattice(size); // validates the size; its entries are unused
+    DiffReport r = runDiff(lattice.entryCount(), options.nthreads, options.progress,
+                           [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                               const int n = size, rr = static_cast<int>(i % n),
+                                         g = static_cast<int>((i / n) % n),
+                                         bl = static_cast<int>(i / (n * n));
+                               in = lattice.latticeInput(rr, g, bl);
+                               va = a(in);
+                               vb = b(in);
+                           });
+    return finish(std::move(r), Prepared{}, t0);
+}
+
+DiffReport diffMapsOnImage(const ColourMap& a, const ColourMap& b, const ImageView& image,
+                           const DiffOptions& options) {
+    const long long t0 = detail::nowNanos();
+    if (image.empty())
+        return finish(DiffReport{}, Prepared{}, t0);
+    const std::size_t w = static_cast<std::size_t>(image.width);
+    const std::size_t count = w * static_cast<std::size_t>(image.height);
+    return finish(runDiff(count, options.nthreads, options.progress,
+                          [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                              const float* px =
+                                  image.pixel(static_cast<int>(i % w), static_cast<int>(i / w));
+                              in = glm::vec3(px[0], px[1], px[2]);
+                              va = a(in);
+                              vb = b(in);
+                          }),
+                  Prepared{}, t0);
+}
+
 } // namespace lut

@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
-#include <mutex>
 #include <unordered_set>
 
 namespace lut {
@@ -27,6 +26,8 @@ struct Sample {
 // Offsets of the 27-point stencil: o = (dr+1) + 3(dg+1) + 9(db+1).
 constexpr int kStencil = 27;
 constexpr int kCentre = 13;
+// Samples summed together before their sums are added to the normal equations (fitImpl).
+constexpr std::size_t kAssemblyBlock = 65536;
 
 float sanitize(float v) {
     return std::isfinite(v) ? v : 0.0f;
@@ -403,7 +404,6 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
 
     const int rounds = o.robust ? std::max(1, o.robustRounds + 1) : 1;
     const double delta = o.huberSteps / 255.0;
-    std::mutex mutex;
     for (int round = 0; round < rounds; ++round) {
         System sys(n, o.smoothness, mu);
         std::vector<std::vector<double>> rhs(3, std::vector<double>(sys.count(), 0.0));
@@ -416,35 +416,52 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
                         rhs[c][std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b)] =
                             mu * coord[c] / cells;
                     }
-        parallelFor(static_cast<int>(samples.size()), o.nthreads, [&](int begin, int end) {
-            std::vector<double> local(sys.count() * kStencil, 0.0);
-            std::vector<double> localRhs(sys.count() * 3, 0.0);
-            double w[8];
-            for (int p = begin; p < end; ++p) {
-                const Sample& s = samples[p];
-                const double pw = weights[p];
-                if (pw <= 0.0)
-                    continue;
-                cornerWeights(s.f, w);
-                for (int a = 0; a < 8; ++a) {
-                    if (w[a] == 0.0)
-                        continue;
-                    const std::size_t node = s.base + cornerOffset[a];
-                    double* row = &local[node * kStencil];
-                    for (int b = 0; b < 8; ++b)
-                        row[stencilIndex(a, b)] += pw * w[a] * w[b];
-                    for (int c = 0; c < 3; ++c)
-                        localRhs[node * 3 + c] += pw * w[a] * s.y[c];
+        // The normal equations, summed in one order whatever the threads: the samples in blocks
+        // of a fixed size, each summed on its own, the blocks added in their order (a wave of
+        // blocks at a time, one per thread). The same pictures give the same bytes on every run
+        // and every machine (floating-point addition is not associative).
+        const std::size_t blocks = (samples.size() + kAssemblyBlock - 1) / kAssemblyBlock;
+        const std::size_t wave = std::min<std::size_t>(blocks, resolveThreads(o.nthreads));
+        std::vector<std::vector<double>> local(wave), localRhs(wave);
+        for (std::size_t first = 0; first < blocks; first += wave) {
+            const std::size_t count = std::min(wave, blocks - first);
+            parallelFor(static_cast<int>(count), o.nthreads, [&](int begin, int end) {
+                double w[8];
+                for (int k = begin; k < end; ++k) {
+                    auto& lhs = local[static_cast<std::size_t>(k)];
+                    auto& rhsK = localRhs[static_cast<std::size_t>(k)];
+                    lhs.assign(sys.count() * kStencil, 0.0);
+                    rhsK.assign(sys.count() * 3, 0.0);
+                    const std::size_t p0 = (first + static_cast<std::size_t>(k)) * kAssemblyBlock;
+                    const std::size_t p1 = std::min(samples.size(), p0 + kAssemblyBlock);
+                    for (std::size_t p = p0; p < p1; ++p) {
+                        const Sample& s = samples[p];
+                        const double pw = weights[p];
+                        if (pw <= 0.0)
+                            continue;
+                        cornerWeights(s.f, w);
+                        for (int a = 0; a < 8; ++a) {
+                            if (w[a] == 0.0)
+                                continue;
+                            const std::size_t node = s.base + cornerOffset[a];
+                            double* row = &lhs[node * kStencil];
+                            for (int b = 0; b < 8; ++b)
+                                row[stencilIndex(a, b)] += pw * w[a] * w[b];
+                            for (int c = 0; c < 3; ++c)
+                                rhsK[node * 3 + c] += pw * w[a] * s.y[c];
+                        }
+                    }
                 }
-            }
-            std::lock_guard<std::mutex> lock(mutex);
+            });
             auto& global = sys.data();
-            for (std::size_t i = 0; i < local.size(); ++i)
-                global[i] += local[i];
-            for (std::size_t i = 0; i < sys.count(); ++i)
-                for (int c = 0; c < 3; ++c)
-                    rhs[c][i] += localRhs[i * 3 + c];
-        });
+            for (std::size_t k = 0; k < count; ++k) {
+                for (std::size_t i = 0; i < local[k].size(); ++i)
+                    global[i] += local[k][i];
+                for (std::size_t i = 0; i < sys.count(); ++i)
+                    for (int c = 0; c < 3; ++c)
+                        rhs[c][i] += localRhs[k][i * 3 + c];
+            }
+        }
         sys.finishAssembly();
         const std::vector<double> diag = sys.diagonal();
         int iterations[3] = {0, 0, 0};

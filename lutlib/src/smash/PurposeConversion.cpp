@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -64,7 +65,6 @@ private:
 SmashAuthoringOptions authoringOptions(const PurposeOptions& o) {
     SmashAuthoringOptions a;
     a.gameLut = o.stageLut;
-    a.aboveWhite = o.aboveWhite;
     // Only what is written is computed: the refinement with refine (shipped when it beats the
     // exact composition on colours it was not fitted on), the exact composition's error with
     // measure.
@@ -83,6 +83,15 @@ void finishGameLut(PurposeConversion& c) {
 }
 
 } // namespace
+
+glm::dvec3 gameShownForDisplayed(const Sampler& game, const glm::dvec3& d) {
+    const glm::dvec3 s(neutralInputFor(d.x), neutralInputFor(d.y), neutralInputFor(d.z));
+    const glm::vec3 l = game.sample(glm::vec3(s));
+    glm::dvec3 e;
+    for (int c = 0; c < 3; ++c)
+        e[c] = detail::gameShown(static_cast<double>(l[c]), s[c]);
+    return e;
+}
 
 Lut3D editOfGameLut(const Lut3D& game, int size, GameError* error, int nthreads,
                     std::string* measuredOver) {
@@ -220,12 +229,44 @@ PurposeConversion convertPurpose(const Lut3D& lut, LutPurpose from, LutPurpose t
     return c;
 }
 
+namespace {
+
+// The edit a file holds in integers is known to half a storage step: what the game shows is at
+// most that much farther from the edit the user made than from the file's values (the triangle
+// inequality at every colour), so the printed error includes it.
+void addInputStorage(PurposeConversion& c, int bits) {
+    if (bits <= 0 || bits > 16 || !c.converted() || c.to != LutPurpose::Smash)
+        return;
+    const double half = 0.5 * 255.0 / static_cast<double>((1u << bits) - 1u);
+    for (GameError* e : {&c.authoring.exactError, &c.authoring.refinedError}) {
+        if (e->count == 0)
+            continue;
+        e->maxSteps += half;
+        e->meanSteps += half;
+        e->p99Steps += half;
+    }
+    if (c.authoring.exactError.count == 0)
+        return;
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "; the file holds the edit in %d-bit integers: its half step of storage, %.3g "
+                  "8-bit steps, included",
+                  bits, half);
+    c.authoring.measuredOver += buf;
+    c.measuredOver = c.authoring.measuredOver;
+}
+
+} // namespace
+
 PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpose to,
                                  const PurposeOptions& o) {
     if (!file.cube && !file.shaper)
         throw Error("the LUT file holds no table");
-    if (!file.shaper || from == to || to == LutPurpose::Raw)
-        return convertPurpose(file.toLut3D(), from, to, o);
+    if (!file.shaper || from == to || to == LutPurpose::Raw) {
+        PurposeConversion c = convertPurpose(file.toLut3D(), from, to, o);
+        addInputStorage(c, file.sourceBitDepth);
+        return c;
+    }
     // The shaper, then the table, at every colour the authoring evaluates.
     // Its title, else the stage's (as authorSmashLutForEdit names a table).
     std::string title = file.cube ? file.cube->title() : file.shaper->title();
@@ -240,6 +281,7 @@ PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpos
     c.authoring.exact.setTitle(title);
     c.authoring.lut.setTitle(title);
     finishGameLut(c);
+    addInputStorage(c, file.sourceBitDepth);
     return c;
 }
 

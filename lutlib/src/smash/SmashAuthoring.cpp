@@ -62,6 +62,9 @@ private:
     std::unique_ptr<Sampler> m_sampler;
 };
 
+// A wanted channel at or above this is white (float edits of white give 1 within 1e-7).
+constexpr double kWhite = 1.0 - 1e-6;
+
 // A deterministic number in [0, 1) for pixel p, channel c: where a clipped pixel's input was.
 double spread(std::size_t p, int c) {
     std::uint64_t h = (static_cast<std::uint64_t>(p) << 2 | static_cast<std::uint64_t>(c)) *
@@ -124,7 +127,14 @@ glm::dvec3 smashShownColour(const glm::dvec3& s, const Lut3D* gameLut, bool clip
     return StageModel(gameLut).shown(s, clip);
 }
 
-SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuthoringOptions& o) {
+SmashAuthoringResult authorSmashLut(const WantedDisplay& wantedAsGiven,
+                                    const SmashAuthoringOptions& o) {
+    // What the game can show: the display clips at white (and shows nothing below black).
+    const WantedDisplay wanted = [&wantedAsGiven](const glm::dvec3& s) {
+        const glm::dvec3 w = wantedAsGiven(s);
+        return glm::dvec3(detail::clampUnit(w.x), detail::clampUnit(w.y), detail::clampUnit(w.z));
+    };
+    const StageModel stage(o.gameLut);
     SmashAuthoringResult res;
     const int n = kSmashLutSize;
     res.exact = Lut3D(n);
@@ -136,11 +146,20 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
                 const glm::dvec3 w = wanted(s);
                 glm::vec3 entry, shipped;
                 for (int c = 0; c < 3; ++c) {
-                    const double l = detail::lutForShown(std::max(w[c], 0.0), s[c]);
+                    double l = detail::lutForShown(w[c], s[c]);
+                    // The rule above white (SmashAuthoring.h): every entry from l up shows white;
+                    // the stage's own entry when it does (kept as it is: the file clamps it, and
+                    // the game shows white either way).
+                    bool kept = false;
+                    if (w[c] >= kWhite) {
+                        const double own = stage.lutOut(s)[c];
+                        kept = own > l;
+                        l = kept ? own : l;
+                    }
                     const double lc = detail::clampUnit(l);
                     // The brighten step keeps 0.039% of s: black for a bright input needs L
                     // slightly below 0 (at most 0.1 8-bit steps); counted too.
-                    if (std::fabs(l - lc) > 1e-6) {
+                    if (!kept && std::fabs(l - lc) > 1e-6) {
                         ++res.clampedEntries;
                         res.clampedMax = std::max(res.clampedMax, std::fabs(l - lc));
                     }
@@ -156,7 +175,6 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
     const int k = std::max(1, o.gridSubdivision);
     Lut3D refined;
     if (o.screenshot && !o.screenshot->empty()) {
-        const StageModel stage(o.gameLut);
         const double clipS = o.gameLut ? 0.0 : 1.0 / static_cast<double>(kSmashBrightenScale);
         const detail::ShotColours colours(
             *o.screenshot, wanted,
@@ -229,20 +247,8 @@ SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted, const SmashAuth
 SmashAuthoringResult authorSmashLutForEdit(const DisplayEdit& edit,
                                            const SmashAuthoringOptions& o) {
     const StageModel stage(o.gameLut);
-    const bool clip = o.aboveWhite == AboveWhite::Clip;
     return authorSmashLut(
-        [&](const glm::dvec3& s) {
-            const glm::dvec3 d = stage.shown(s, false);
-            glm::dvec3 dc;
-            for (int c = 0; c < 3; ++c)
-                dc[c] = detail::clampUnit(d[c]);
-            const glm::dvec3 e(edit(glm::vec3(dc)));
-            glm::dvec3 w;
-            for (int c = 0; c < 3; ++c)
-                w[c] = clip ? detail::clampUnit(e[c]) : e[c] + (d[c] - dc[c]);
-            return w;
-        },
-        o);
+        [&](const glm::dvec3& s) { return glm::dvec3(edit(glm::vec3(stage.shown(s, true)))); }, o);
 }
 
 SmashAuthoringResult authorSmashLutForEdit(const Lut3D& edit, Interpolation interp,
@@ -251,19 +257,9 @@ SmashAuthoringResult authorSmashLutForEdit(const Lut3D& edit, Interpolation inte
         throw Error("the edit LUT is empty");
     const StageModel stage(o.gameLut);
     const auto sampler = makeSampler(edit, interp);
-    const glm::dvec3 lo(edit.domainMin()), hi(edit.domainMax());
-    const bool clip = o.aboveWhite == AboveWhite::Clip;
     SmashAuthoringResult res = authorSmashLut(
         [&](const glm::dvec3& s) {
-            const glm::dvec3 d = stage.shown(s, false);
-            glm::dvec3 dc;
-            for (int c = 0; c < 3; ++c)
-                dc[c] = clip ? detail::clampUnit(d[c]) : std::clamp(d[c], lo[c], hi[c]);
-            const glm::dvec3 e(sampler->sample(glm::vec3(dc)));
-            glm::dvec3 w;
-            for (int c = 0; c < 3; ++c)
-                w[c] = clip ? detail::clampUnit(e[c]) : e[c] + (d[c] - dc[c]);
-            return w;
+            return glm::dvec3(sampler->sample(glm::vec3(stage.shown(s, true))));
         },
         o);
     const std::string title =

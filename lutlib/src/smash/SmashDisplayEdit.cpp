@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The editor's Smash LUT for a display edit: the exact composition of lut/smash/SmashAuthoring.h
-// with the edit continued above white; see lut/smash/SmashDisplayEdit.h.
+// (its one rule above white); see lut/smash/SmashDisplayEdit.h.
 #include "lut/smash/SmashDisplayEdit.h"
 
 #include "lut/smash/SmashAuthoring.h"
@@ -11,7 +11,6 @@ Lut3D smashLutForDisplayEdit(const Lut3D& edit, const Lut3D* gameLut,
                              Interpolation editInterpolation) {
     SmashAuthoringOptions o;
     o.gameLut = gameLut;
-    o.aboveWhite = AboveWhite::Continue;
     o.measure = false;
     return authorSmashLutForEdit(edit, editInterpolation, o).exact;
 }

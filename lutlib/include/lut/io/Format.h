@@ -61,6 +61,15 @@ public:
     // Whether the written file keeps a 1D shaper and a 3D table's input range (domain) as they
     // are (.cube's Resolve dialect, .clf, .ctf, .csp), so an HDR or log input needs no resampling.
     virtual bool holdsShaper() const { return false; }
+    // Whether a file this format writes at `path` says what its LUT is for (LutFile::purpose,
+    // lut/LutPurpose.h) so that it reads back with that purpose: its LUTKIT_PURPOSE tag in a
+    // comment or a description, or the format itself (a .nutexb is the game's LUT, and only that).
+    // lut::writeLutFile warns when it does not (docs/roundtrip.md, "What the file says it is for").
+    virtual bool keepsPurpose(const std::string& path, LutPurpose purpose) const {
+        (void)path;
+        (void)purpose;
+        return false;
+    }
 
     // Standard input is read whole before a reader sees it, so each format says how long a
     // stream that starts with `head` (its first 1 MiB, or all of it) can be in this format: 0 when

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -75,6 +76,15 @@ DiffReport diffLutsOnColors(const Lut3D& a, const Lut3D& b, std::span<const glm:
                             const DiffOptions& options = {});
 // Over every pixel of an image (RGB; alpha ignored).
 DiffReport diffLutsOnImage(const Lut3D& a, const Lut3D& b, const ImageView& image,
+                           const DiffOptions& options = {});
+
+// The same for two functions of a colour (what the game shows with a game LUT:
+// lut/smash/PurposeOps.h's diffForPurpose): over a size^3 lattice over [0,1] (options.size;
+// 0 = 33), or every pixel of an image. options.method is not used; the maps must be callable
+// from several threads.
+using ColourMap = std::function<glm::vec3(glm::vec3)>;
+DiffReport diffMaps(const ColourMap& a, const ColourMap& b, const DiffOptions& options = {});
+DiffReport diffMapsOnImage(const ColourMap& a, const ColourMap& b, const ImageView& image,
                            const DiffOptions& options = {});
 
 } // namespace lut

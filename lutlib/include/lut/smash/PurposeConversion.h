@@ -6,7 +6,9 @@
 //   raw -> smash  the game's 16^3 LUT that makes Smash Ultimate show the edit of its own picture:
 //                 SmashAuthoring.h's exact composition (clamped to what the file can hold) or its
 //                 least-squares refinement, on the picture of a stage LUT when one is given, with
-//                 the rule above white given explicitly;
+//                 the one rule above white (SmashAuthoring.h: the edit of the displayed white; the
+//                 stage's own entry where that is white, so a neutral edit gives the stage LUT
+//                 back and a game LUT exported unchanged is itself);
 //   smash -> raw  the edit the game's LUT makes of the neutral game's picture (editOfGameLut);
 //   same purpose  the table as it is.
 #include "lut/Image.h"
@@ -14,6 +16,7 @@
 #include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
 #include "lut/interp/Interpolation.h"
+#include "lut/interp/Sampler.h"
 #include "lut/smash/GameError.h"
 #include "lut/smash/SmashAuthoring.h"
 
@@ -21,15 +24,8 @@
 
 namespace lut {
 
-// The rule above the edit's white that both programs use for an edit given as a LUT
-// (SmashAuthoring.h's AboveWhite): Continue, so the neutral edit gives the neutral game LUT, and a
-// game LUT opened and exported without a change gives itself back. (The round trip's patch uses
-// Clip: it measures the edit only up to white.)
-constexpr AboveWhite kEditAboveWhite = AboveWhite::Continue;
-
 struct PurposeOptions {
     // raw -> smash:
-    AboveWhite aboveWhite = kEditAboveWhite;
     Interpolation editInterpolation = Interpolation::Tetrahedral; // how the edit is evaluated
     const Lut3D* stageLut = nullptr; // the stage the edit was made on (null: the neutral game)
     // Report what the game shows (SmashAuthoringResult) with the exact composition; `refine` also
@@ -78,5 +74,9 @@ PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpos
 // lattice planes), in 8-bit display steps.
 Lut3D editOfGameLut(const Lut3D& game, int size, GameError* error = nullptr, int nthreads = 0,
                     std::string* measuredOver = nullptr);
+// E(d) of editOfGameLut at one display colour, exactly (no lattice): what the game shows with the
+// game LUT `game` (a trilinear sampler of it, as the game's GPU) where the neutral game showed d,
+// as lutkit preview shows a screenshot with it.
+glm::dvec3 gameShownForDisplayed(const Sampler& game, const glm::dvec3& d);
 
 } // namespace lut

@@ -8,14 +8,15 @@
 //
 // For every lattice input s of the game's LUT (s = (i, j, k)/15), in double precision:
 //     shown(s)  = srgb(min(1, (((G(s) - s) * 0.99961 + s) * 1.3703)^2.2))   G = the stage LUT
-//     wanted(s) = edit(shown(s))                                            (display colours)
+//     wanted(s) = clamp(edit(shown(s)))              (display colours: the edited screenshot)
 //     L(s)      = (srgb^-1(wanted)^(1/2.2) / 1.3703 - s) / 0.99961 + s      the exact entry
-// so the game shows wanted(s) at every lattice point. Between lattice points the game interpolates
-// L trilinearly, which is not the composition evaluated there: the refinement chooses the entries
-// that minimise the squared error of what the game shows over colours that occur (three quarters
-// of a screenshot's distinct colours, else the inputs on a grid four times finer than the LUT's),
-// rounds them to the 8-bit values the nutexb stores by a search on the true error, and is shipped
-// only when it beats the exact composition on the colours it was not fitted on (the other
+// and, for a channel where wanted(s) is white, L(s) = max(that entry, G(s)) (the rule above white,
+// below), so the game shows wanted(s) at every lattice point. Between lattice points the game
+// interpolates L trilinearly, which is not the composition evaluated there: the refinement chooses
+// the entries that minimise the squared error of what the game shows over colours that occur (three
+// quarters of a screenshot's distinct colours, else the inputs on a grid four times finer than the
+// LUT's), rounds them to the 8-bit values the nutexb stores by a search on the true error, and is
+// shipped only when it beats the exact composition on the colours it was not fitted on (the other
 // quarter, or the centres between the grid's points; a screenshot's refinement that wins is then
 // fitted again on all its colours). What the game shows is reported where
 // nothing was fitted: over every input (a bound, lut/ops/ErrorBound.h) or every pixel of the
@@ -33,13 +34,16 @@
 
 namespace lut {
 
-// Colours the unedited game displayed as white (every input with s > 1/1.3703 = 0.73 clips):
-//   Clip      the edit of white, edit(1): what the edited screenshot shows there (the default;
-//             the round trip and convert use it);
-//   Continue  edit(1) + (shown - 1) with shown the unclipped display value: the edit continued
-//             with slope 1 above its domain (bright highlights stay brighter than the edit's
-//             white).
-enum class AboveWhite { Clip, Continue };
+// The one rule above white, for every way of making a game LUT (convert of a graded strip or a
+// LUT file, embed/extract, the editor's exports; docs/roundtrip.md, "Above white"). Every input
+// with s > 1/1.3703 = 0.73 showed white in the unedited game, and a screenshot holds white there
+// whatever the scene was: the edited screenshot shows edit(white), and that is what the game
+// should show (wanted is the edit of the displayed, clipped colour, clamped to [0,1]). Where a
+// channel of wanted is white, every entry from the one that reaches white up shows the same
+// white; the entry is then the stage LUT's own (s for the neutral game) when it reaches white
+// too. So a neutral edit gives the stage LUT back (the neutral nutexb for the neutral game), a
+// game LUT opened and exported unchanged gives itself back, and an edit that darkens white (x0.8)
+// shows edit(white) for every bright colour, as the graded screenshot does.
 
 // The display colour the game should show for its LUT input s (gamma space, [0,1]^3).
 using WantedDisplay = std::function<glm::dvec3(const glm::dvec3& s)>;
@@ -48,7 +52,6 @@ using DisplayEdit = std::function<glm::vec3(glm::vec3)>;
 
 struct SmashAuthoringOptions {
     const Lut3D* gameLut = nullptr; // the stage's LUT the picture was made with (null: neutral)
-    AboveWhite aboveWhite = AboveWhite::Clip;
     // Also compute the least-squares refinement, and ship it when it beats the exact composition
     // on the held-out colours. Off: only the exact composition is computed (and measured).
     bool refine = false;
@@ -81,14 +84,15 @@ struct SmashAuthoringResult {
         measuredOver; // "every input (a bound ...)" / "the screenshot's 921600 pixels (...)"
 };
 
-// The general form: any wanted colour per input (the round trip uses it with the patch).
+// The general form: any wanted colour per input (the round trip uses it with the patch), clamped
+// to [0,1]; where it is white the rule above white keeps gameLut's entry.
 SmashAuthoringResult authorSmashLut(const WantedDisplay& wanted,
                                     const SmashAuthoringOptions& options);
-// wanted(s) = edit(shown(s)) with options.aboveWhite.
+// wanted(s) = clamp(edit(shown(s))).
 SmashAuthoringResult authorSmashLutForEdit(const DisplayEdit& edit,
                                            const SmashAuthoringOptions& options);
 // The edit as a LUT file (any size and domain) sampled with `editInterpolation`; outside its
-// domain the edit takes the edge value.
+// domain the edit takes the edge value (the displayed colours it is evaluated at are in [0,1]).
 SmashAuthoringResult authorSmashLutForEdit(const Lut3D& edit, Interpolation editInterpolation,
                                            const SmashAuthoringOptions& options);
 

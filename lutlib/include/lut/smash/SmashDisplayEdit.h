@@ -7,12 +7,14 @@
 //
 //   for every lattice input s = (i/15, j/15, k/15) of the 16^3 game LUT, in double precision:
 //     r  = ((G(s) - s) * 0.99961 + s) * 1.3703      the game's grading + brighten with G = gameLut
-//     d  = srgbEncode(r^2.2)                         the display colour it shows
-//     d' = edit(clamp(d)) + (d - clamp(d))           the edit (sampled with editInterpolation over
-//                                                    its domain, continued with slope 1 beyond it:
-//                                                    the neutral game shows colours above 1 for
-//                                                    s > 0.73, which the display clips)
+//     d  = srgbEncode(min(1, r^2.2))                 the display colour it shows (clipped: what a
+//                                                    screenshot holds; every s > 0.73 of the
+//                                                    neutral game shows white)
+//     d' = clamp(edit(d))                            the edit (sampled with editInterpolation)
 //     L  = ((srgbDecode(d')^(1/2.2)) / 1.3703 - s) / 0.99961 + s     smashBrightenInverse
+//     and where d' is white, L = max(L, G(s))        every entry from L up shows white: G's own
+//                                                    when it does (the one rule above white,
+//                                                    lut/smash/SmashAuthoring.h)
 //
 // so the game shows edit(d) at every lattice point (docs/specs/smash-pipeline.md, "The Smush
 // compensation", composed with the game's own picture). A neutral edit gives gameLut back (the
@@ -22,11 +24,10 @@
 // cannot reach stay outside [0,1] so callers can count them (lut/ops/Clipping.h); the nutexb
 // writer clamps and rounds.
 //
-// This is lut/smash/SmashAuthoring.h's exact composition (authorSmashLutForEdit) with
-// AboveWhite::Continue; use authorSmashLutForEdit directly for the screenshot's rule above white
-// (AboveWhite::Clip, what the round trip and `convert --target smash` ship), the refinement and
-// the error report. It differs from smashGameLut (lut/smash/SmashCompensation.h), which
-// treats the edit as the whole gamma-space picture without the game's brighten step.
+// This is lut/smash/SmashAuthoring.h's exact composition (authorSmashLutForEdit), what the round
+// trip, `convert --target smash` and the editor ship; use authorSmashLutForEdit directly for the
+// refinement and the error report. It differs from smashGameLut (lut/smash/SmashCompensation.h),
+// which treats the edit as the whole gamma-space picture without the game's brighten step.
 #include "lut/Lut3D.h"
 #include "lut/interp/Interpolation.h"
 
