@@ -2,10 +2,12 @@
 # SPDX-License-Identifier: Apache-2.0
 # ./test.sh   install what is missing, build, and run the whole test suite with ctest.
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer builds and fuzzing.
-# Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),
-# ThreadSanitizer build + the threaded code's tests (build-tsan/, scripts/tsan.sh),
-# each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/, scripts/fuzz.sh;
-# findings land in build-fuzz/findings/). The last line says ALL PASSED or the stage that failed.
+# Stages: Release build + ctest (build/), lutkit for the browser built (build-web/, build/web/) and
+# its page driven in headless Chromium (tests/web/run-page-tests.sh), ASan+UBSan build + ctest
+# (build-asan/, scripts/sanitize.sh), ThreadSanitizer build + the threaded code's tests (build-tsan/,
+# scripts/tsan.sh), each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/,
+# scripts/fuzz.sh; findings land in build-fuzz/findings/). The last line says ALL PASSED or the
+# stage that failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
 # A final summary line in every case, naming the stage that failed.
@@ -33,6 +35,11 @@ cmake --build "$root/build" -j"$jobs"
 took
 
 if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
+  stage="web"
+  echo "== lutkit for the browser: the build (scripts/build-web.sh) and the page in headless Chromium"
+  "$root/scripts/build-web.sh" "$root/build/web"
+  "$root/tests/web/run-page-tests.sh" "$root/build/web"
+  took
   stage="sanitizers"
   echo "== AddressSanitizer + UBSan build and tests (scripts/sanitize.sh)"
   "$root/scripts/sanitize.sh" "$root/build-asan"

@@ -47,13 +47,23 @@ class QuietHandler(Handler):
     quiet = True
 
 
+class Server(http.server.ThreadingHTTPServer):
+    daemon_threads = True
+
+    def handle_error(self, request, client_address):
+        # A browser that leaves a page mid-download resets the connection: nothing to report.
+        if isinstance(sys.exc_info()[1], ConnectionError):
+            return
+        super().handle_error(request, client_address)
+
+
 def make_server(folder, port=8000, quiet=False, tries=20):
     """An HTTP server for `folder` on 127.0.0.1 (port 0: any free port)."""
     handler = functools.partial(QuietHandler if quiet else Handler, directory=folder)
     last = None
     for p in ([0] if port == 0 else range(port, port + tries)):
         try:
-            return http.server.ThreadingHTTPServer(("127.0.0.1", p), handler)
+            return Server(("127.0.0.1", p), handler)
         except OSError as e:
             if e.errno != errno.EADDRINUSE:
                 raise

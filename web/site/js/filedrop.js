@@ -7,14 +7,14 @@ import { formatBytes } from './shell.js';
 let dropCount = 0;
 
 export class FileDrop {
-  // options: {id, label, hint, accept, multiple, onFiles(files: [{name, bytes}])}
+  // options: {id, label, hint, accept, multiple, compact (one line), onFiles(files: [{name, bytes}])}
   constructor(options) {
     this.options = options;
     const id = options.id || `drop-${++dropCount}`;
     this.input = el('input', { type: 'file', id, class: 'visually-hidden', accept: options.accept,
                                multiple: options.multiple, 'data-role': 'file-input' });
     this.chosen = el('span', { class: 'drop-chosen', text: options.empty || 'nothing yet' });
-    this.label = el('label', { for: id, class: 'drop' },
+    this.label = el('label', { for: id, class: options.compact ? 'drop compact' : 'drop' },
       el('span', { class: 'drop-title', text: options.label }),
       options.hint ? el('span', { class: 'drop-hint', text: options.hint }) : null,
       el('span', { class: 'drop-action', text: options.multiple ? 'Drop files here or choose them' : 'Drop a file here or choose one' }),

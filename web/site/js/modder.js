@@ -44,7 +44,7 @@ export class Modder {
     const fileChoice = choice('file', "The stage's own color_grading_lut.nutexb", 'drop it below');
     this.stageFileRadio = fileChoice.querySelector('input');
     this.stageResult = new ResultView(el('div', { class: 'result' }));
-    this.stageDrop = new FileDrop({ id: 'stage-file', label: "The stage's .nutexb", accept: '.nutexb',
+    this.stageDrop = new FileDrop({ id: 'stage-file', label: "The stage's .nutexb:", accept: '.nutexb', compact: true,
       onFiles: ([f]) => this.setStageFile(f) });
     mount.append(el('fieldset', { class: 'choices' },
       el('legend', { class: 'visually-hidden', text: "The stage's LUT today" }),
@@ -175,7 +175,8 @@ export class Modder {
   async export(target) {
     const lut = this.grade.file;
     const name = target.name(stem(lut.name));
-    const original = target.game ? this.originalLut() : { args: [], inputs: [] };
+    // The stage's LUT matters when an edit becomes the game's LUT; the game's LUT is copied.
+    const original = target.game && this.grade.purpose !== 'smash' ? this.originalLut() : { args: [], inputs: [] };
     if (original.missing) {
       this.exportResult.clear(original.missing);
       return;
