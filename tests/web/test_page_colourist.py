@@ -48,20 +48,30 @@ class Colourist(unittest.TestCase):
             self.assertEqual(written[name], downloaded, f"{name} vs {command}")
         return code
 
-    def drop_lut(self, path, answer=None):
+    def drop_lut(self, path, answer="raw", asked=True):
+        """Drops a LUT in step 1; answers what it is for if the page asks (asked: it must)."""
         p = self.page
         p.mark("#clut .result")
         p.give_file("clut-file", path)
-        if answer:
-            p.wait(lambda: p.qs('#clut [data-question="purpose"]'), 60, "the purpose question")
+        name = os.path.basename(path)
+        p.wait(lambda: p.qs('#clut [data-question="purpose"]') or (
+            p.q("#clut").get_attribute("data-ready") == "1" and name in p.q("#clut .facts-line").text), 60, "the LUT read")
+        if p.qs('#clut [data-question="purpose"]'):
             p.click(f'#clut input[value="{answer}"]')
-            p.wait(lambda: p.q("#clut").get_attribute("data-ready") == "1", 10, "the LUT ready")
+        else:
+            self.assertFalse(asked, "the page did not ask what the LUT is for")
+        p.wait(lambda: p.q("#clut").get_attribute("data-ready") == "1", 10, "the LUT ready")
 
     def test_1_convert_check_apply_match(self):
         p = self.page
         grade = read(SAMPLE_GRADE)
-        self.drop_lut(SAMPLE_GRADE, "raw")
+        self.drop_lut(SAMPLE_GRADE)
         shot(p, "colourist-1-lut", "#c-lut")
+        # Asked once: the same file again is not asked about, the answer is said to be the earlier one.
+        p.mark("#clut .result")
+        p.give_file("clut-file", SAMPLE_GRADE)
+        p.wait(lambda: "your earlier answer" in p.q("#clut .purpose-line").text, 60, "the answer recalled")
+        self.assertFalse(p.qs('#clut [data-question="purpose"]'))
 
         # Convert into the game's file: the error report, the same bytes as the native CLI.
         p.js("const s = document.querySelector('#convert-format'); s.value = 'nutexb'; s.dispatchEvent(new Event('change'))")
@@ -134,6 +144,7 @@ class Colourist(unittest.TestCase):
 
     def test_2_what_goes_wrong_is_shown(self):
         p = self.page
+        self.drop_lut(SAMPLE_GRADE, asked=False)  # answered once, in test_1 (or now, alone)
         # A format only OpenColorIO reads: lutkit's one line naming the edition.
         p.mark("#clut .result")
         p.give_file("clut-file", os.path.join(ROOT, "tests", "data", "ocio", "affine.3dl"))
@@ -141,14 +152,15 @@ class Colourist(unittest.TestCase):
         self.assertIn("is-error", r["cls"])
         self.assertIn("exit 1", r["status"])
         self.assertRegex(r["text"], r"affine\.3dl: .*OpenColorIO.*lutkit for the browser")
-        self.assertEqual(p.q("#clut").get_attribute("data-ready"), "0")
-        self.assertIsNotNone(p.q("#convert-run").get_attribute("disabled"))
+        # The LUT the slot had stays (test_1's sample grade), as the editor keeps its document.
+        self.assertEqual(p.q("#clut").get_attribute("data-ready"), "1")
+        self.assertIn("sample_grade.cube", p.q("#clut .facts-line").text)
+        self.assertIsNone(p.q("#convert-run").get_attribute("disabled"))
 
         # A 300-byte PNG claiming 100000 x 100000 pixels: refused before anything is allocated,
         # the page lives on.
         huge = os.path.join(self.dir, "huge.png")
         png_claiming(huge, 100000, 100000)
-        self.drop_lut(SAMPLE_GRADE)
         p.mark("#c-apply .live > .result")
         p.give_file("apply-file", huge)
         r = p.result_done("#c-apply .live > .result")
@@ -157,7 +169,9 @@ class Colourist(unittest.TestCase):
         self.assertEqual(code, 1)
         native_line = [l for l in printed.splitlines() if "huge.png" in l][0]
         self.assertIn(native_line, r["text"])
-        shot(p, "colourist-6-hostile", "#c-apply")
+        self.assertFalse(p.js("return document.querySelector('#apply-compare img.before').dataset.ready === '1'"),
+                         "the picture before is still shown")
+        shot(p, "colourist-6-hostile", "#c-apply .strength")
 
         # A worker that dies (the page's self-test: an allocation failing outside lutkit's own
         # checks): the card says so, lutkit is restarted, the next command runs.

@@ -171,13 +171,21 @@ class ModderRoute(unittest.TestCase):
         self.assertEqual(slow, [], f"main-thread tasks over 100 ms while working: {slow}")
         print(f"long tasks while working (all): {p.long_tasks()}", file=sys.stderr)
 
-        # A broken file: lutkit's own line, shown, and nothing else changes.
+        # A broken file: lutkit's own line, shown, and nothing else changes: the grade is the one
+        # the slot had (as the editor keeps its document), the preview stays.
+        runs_before = len(p.js("return window.lutkitPage.runs"))
         bad = os.path.join(ROOT, "tests", "data", "nutexb", "bad_width_huge.nutexb")
         p.give_file("grade-file", bad)
         r = p.result_done("#grade .result")
         self.assertIn("is-error", r["cls"])
         self.assertIn("bad_width_huge.nutexb: nutexb width: found 2147483648", r["text"])
         self.assertIn("exit 1", r["status"])
+        self.assertEqual(p.q("#grade").get_attribute("data-ready"), "1")
+        self.assertIn("color_grading_lut.nutexb", p.q("#grade .facts-line").text)
+        self.assertIn("still color_grading_lut.nutexb", p.q('label[for="grade-file"]').text)
+        self.assertEqual([run["args"] for run in p.js("return window.lutkitPage.runs")[runs_before:]],
+                         [["info", "--json", "bad_width_huge.nutexb"]])
+        self.assertEqual(p.js("return document.querySelector('#preview-compare img.after').dataset.ready"), "1")
         shot(p, "modder-8-error", "#m-grade")
         self.assertEqual(p.console_errors(), [])
 

@@ -32,7 +32,7 @@ export class Colourist {
     this.runner = runner;
     this.lane = runner.lane('main');
     this.lut = new LutSlot({ id: 'clut', lane: this.lane, label: 'A LUT file',
-      hint: '.cube, a LUT image (PNG), .nutexb or .spi3d; other formats need the native lutkit',
+      hint: '.cube, a LUT image (PNG) or .nutexb; other formats need the native lutkit',
       onChange: () => this.lutChanged() });
     root.querySelector('[data-mount="lut"]').append(this.lut.node);
     this.mountConvert(root.querySelector('[data-mount="convert"]'));

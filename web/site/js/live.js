@@ -33,7 +33,10 @@ export class LivePicture {
   }
 
   async setPicture(file) {
-    this.picture = { ...file, proxy: null };
+    const picture = { ...file, proxy: null };
+    this.picture = picture;
+    await this.compare.setImage('before', null);
+    await this.compare.setImage('after', null, '');
     const url = blobUrl(file.bytes, file.name);
     const probe = new Image();
     probe.src = url;
@@ -47,22 +50,28 @@ export class LivePicture {
       await this.compare.setImage('before', url, '');
     } else {
       URL.revokeObjectURL(url);
-      await this.beforeByLutkit(file);
+      // lutkit's refusal of the picture is shown; the same command on it would say it again.
+      if (!await this.beforeByLutkit(file))
+        return;
     }
-    await this.compare.setImage('after', null);
-    this.refresh();
+    if (this.picture === picture)
+      this.refresh();
   }
 
-  // A picture the browser cannot draw (PPM): lutkit writes it as PNG, unchanged (an identity LUT
-  // gives every value back).
+  // A picture the browser cannot draw (PPM, or one it refuses): lutkit writes it as PNG, unchanged
+  // (an identity LUT gives every value back); false when lutkit refuses it too.
   async beforeByLutkit(file) {
     const out = `${stem(file.name)}_before.png`;
     const args = ['apply', '--lut', 'builtin:neutral', fileArg(file.name), '-o', out];
     const record = await this.lane.run(args, { [file.name]: file.bytes }, { label: 'before' });
-    if (record.status === 'done' && record.exitCode === 0 && record.outputs[out])
+    if (record.status === 'done' && record.exitCode === 0 && record.outputs[out]) {
       await this.compare.setImage('before', blobUrl(record.outputs[out], out), '');
-    else
-      this.result.show(record);
+      return true;
+    }
+    this.result.show(record);
+    if (record.status === 'done')
+      this.drop.refused(file.name);
+    return false;
   }
 
   outputName() {

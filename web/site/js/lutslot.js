@@ -62,7 +62,7 @@ export class LutSlot {
     this.facts = el('div', { class: 'lut-facts', 'aria-live': 'polite' });
     this.resultNode = el('div', { class: 'result' });
     this.result = new ResultView(this.resultNode);
-    this.node = el('div', { class: 'lut-slot', id: this.id }, this.drop.node, this.facts, this.resultNode);
+    this.node = el('div', { class: 'lut-slot', id: this.id }, this.drop.node, this.resultNode, this.facts);
   }
 
   get ready() {
@@ -88,47 +88,36 @@ export class LutSlot {
   // Flags for a command that reads this LUT. kind: 'in' (convert, extract: --in-target,
   // --in-layout), 'lut' (apply, preview: --lut-target, --lut-layout), 'check' (--target,
   // --in-layout), 'info' (--in-layout).
-  flags(kind) {
+  flags(kind, lut = this.lut) {
     const args = [];
-    const said = this.lut && this.lut.info && this.lut.info.purpose;
-    if (!said && this.lut && this.lut.answer) {
+    const said = lut && lut.info && lut.info.purpose;
+    if (!said && lut && lut.answer) {
       if (kind === 'in')
-        args.push('--in-target', this.lut.answer);
+        args.push('--in-target', lut.answer);
       else if (kind === 'lut')
-        args.push('--lut-target', this.lut.answer);
+        args.push('--lut-target', lut.answer);
       else if (kind === 'check')
-        args.push('--target', this.lut.answer);
+        args.push('--target', lut.answer);
     }
-    if (this.lut && this.lut.layout)
-      args.push(kind === 'lut' ? '--lut-layout' : '--in-layout', this.lut.layout);
+    if (lut && lut.layout)
+      args.push(kind === 'lut' ? '--lut-layout' : '--in-layout', lut.layout);
     return args;
   }
 
+  // A new file (or the same one read in another layout) becomes the slot's LUT once lutkit has
+  // read it; a file lutkit refuses leaves the LUT the slot had, as the editor leaves its document.
   async setLut(name, bytes, options = {}) {
-    this.lut = { name, bytes, info: null, answer: null, layout: options.layout || null,
-                 origin: options.origin || null, hash: await digest(bytes) };
+    const candidate = { name, bytes, info: null, answer: null, layout: options.layout || null,
+                        origin: options.origin || null, hash: await digest(bytes) };
+    this.pending = candidate;
     if (options.origin)
       this.drop.setChosen(`${name} (${options.origin})`);
-    this.changed();
-    await this.describe();
-  }
-
-  clear() {
-    this.lut = null;
-    this.facts.replaceChildren();
-    this.result.clear();
-    this.drop.setChosen('');
-    this.changed();
-  }
-
-  async describe() {
-    const lut = this.lut;
-    const args = ['info', '--json', fileArg(lut.name), ...this.flags('info')];
-    this.facts.replaceChildren();
-    this.result.running(args, this.lane, `Reading ${lut.name}`);
-    const record = await this.lane.run(args, { [lut.name]: lut.bytes }, { label: 'info' });
-    if (lut !== this.lut)
+    const args = ['info', '--json', fileArg(name), ...this.flags('info', candidate)];
+    this.result.running(args, this.lane, `Reading ${name}`);
+    const record = await this.lane.run(args, { [name]: bytes }, { label: 'info' });
+    if (this.pending !== candidate)
       return;
+    this.pending = null;
     let info = null;
     if (record.status === 'done' && record.exitCode === 0) {
       try {
@@ -138,24 +127,36 @@ export class LutSlot {
       }
     }
     if (!info) {
-      this.drop.refused(lut.name);
+      this.drop.refused(name);
+      if (this.lut)
+        this.drop.setChosen(`${name}: not usable, see lutkit's message below; still ${this.lut.name}`, true);
       this.result.show(record);
-      if (record.status === 'done' && this.isImage)
-        this.facts.append(this.layoutChoice());
-      this.changed();
+      // An image lutkit could not read as it detected it may read in a layout named.
+      if (record.status === 'done' && imageExtensions.has(extension(name)))
+        this.result.node.append(this.layoutChoice(candidate));
       return;
     }
-    lut.info = info;
-    lut.record = record;
+    candidate.info = info;
+    candidate.record = record;
     if (!info.purpose) {
-      const recalled = recalledAnswer(lut.hash);
+      const recalled = recalledAnswer(candidate.hash);
       if (recalled === 'raw' || recalled === 'smash') {
-        lut.answer = recalled;
-        lut.recalled = true;
+        candidate.answer = recalled;
+        candidate.recalled = true;
       }
     }
+    this.lut = candidate;
     this.result.clear();
     this.renderFacts(record);
+    this.changed();
+  }
+
+  clear() {
+    this.lut = null;
+    this.pending = null;
+    this.facts.replaceChildren();
+    this.result.clear();
+    this.drop.setChosen('');
     this.changed();
   }
 
@@ -227,11 +228,10 @@ export class LutSlot {
     this.changed();
   }
 
-  layoutChoice() {
-    const lut = this.lut;
+  layoutChoice(lut = this.lut) {
     const detected = lut.info && lut.info.dialect ? `detected (${lut.info.dialect})` : 'detected';
     const select = el('select', { id: `${this.id}-layout`, 'data-role': 'layout',
-      onchange: () => { lut.layout = select.value || null; lut.info = null; this.changed(); this.describe(); } },
+      onchange: () => this.setLut(lut.name, lut.bytes, { layout: select.value || null, origin: lut.origin }) },
     el('option', { value: '', text: lut.layout ? 'detect it' : detected }),
     layouts.map(([value, text]) => el('option', { value, text, selected: lut.layout === value })));
     return el('p', { class: 'layout-line' },

@@ -11,18 +11,21 @@ import { commandLine } from './shell.js';
 const page = { startedAt: performance.now(), readyAt: null, version: null, runs: [] };
 window.lutkitPage = page;
 
-function setupTabs() {
+// onShow(panelId): a section is built the first time its tab is shown (less work at the start).
+function setupTabs(onShow) {
   const tabs = Array.from(document.querySelectorAll('[role="tab"]'));
-  const select = (tab, focus) => {
+  const select = (tab, focus, remember = true) => {
     for (const t of tabs) {
       const on = t === tab;
       t.setAttribute('aria-selected', on ? 'true' : 'false');
       t.tabIndex = on ? 0 : -1;
       document.getElementById(t.getAttribute('aria-controls')).hidden = !on;
     }
+    onShow(tab.getAttribute('aria-controls'));
     if (focus)
       tab.focus();
-    history.replaceState(null, '', `#${tab.getAttribute('aria-controls')}`);
+    if (remember)
+      history.replaceState(null, '', `#${tab.getAttribute('aria-controls')}`);
   };
   for (const tab of tabs) {
     tab.addEventListener('click', () => select(tab, false));
@@ -35,8 +38,7 @@ function setupTabs() {
     });
   }
   const fromHash = tabs.find((t) => `#${t.getAttribute('aria-controls')}` === location.hash);
-  if (fromHash)
-    select(fromHash, false);
+  select(fromHash || tabs.find((t) => t.getAttribute('aria-selected') === 'true'), false, false);
 }
 
 function setupEngineStatus(runner) {
@@ -95,16 +97,21 @@ function setupLog() {
 }
 
 async function start() {
-  if (location.protocol === 'file:')
-    return;
+  // Opened as a file: Chromium never gets here (it refuses this module); Firefox does, and runs
+  // the page from the folder. The notice comes back if lutkit cannot load (docs/web.md).
+  const fromFile = location.protocol === 'file:';
+  document.documentElement.classList.remove('from-file');
   guardWindowDrops();
-  setupTabs();
   const listeners = [];
   const runner = new Runner((event) => { for (const l of listeners) l(event); });
   listeners.push(setupEngineStatus(runner), setupLog());
   page.runner = runner;
-  page.modder = new Modder(document.getElementById('modder'), runner);
-  page.colourist = new Colourist(document.getElementById('colourist'), runner);
+  setupTabs((panel) => {
+    if (panel === 'modder' && !page.modder)
+      page.modder = new Modder(document.getElementById('modder'), runner);
+    else if (panel === 'colourist' && !page.colourist)
+      page.colourist = new Colourist(document.getElementById('colourist'), runner);
+  });
   page.uiReadyAt = performance.now();
   document.documentElement.dataset.ui = 'ready';
   // The first command proves lutkit runs here, and names its version.
@@ -121,6 +128,8 @@ async function start() {
     node.dataset.state = 'failed';
     node.textContent = `lutkit did not start: ${record.error || record.stderr || `exit ${record.exitCode}`}`;
     document.documentElement.dataset.engine = 'failed';
+    if (fromFile)
+      document.documentElement.classList.add('from-file', 'file-failed');
   }
 }
 
