@@ -196,6 +196,27 @@ class Colourist(unittest.TestCase):
         self.assertEqual(p.js("return document.getElementById('engine').dataset.state"), "ready")
         self.assertEqual(p.console_errors(), [])
 
+    def test_2b_names_a_shell_reads_back(self):
+        """A file name with spaces, quotes or a leading '-' is quoted in the command line shown,
+        and that line, run by a shell's rules, is the same command (the native CLI's bytes)."""
+        import shutil
+        p = self.page
+        for name in ("my grade (v2) 'final'.cube", "-look.cube"):
+            path = os.path.join(self.dir, name)
+            shutil.copyfile(SAMPLE_GRADE, path)
+            self.drop_lut(path, asked=False)
+            p.js("const s = document.querySelector('#convert-format'); s.value = 'nutexb'; s.dispatchEvent(new Event('change'))")
+            p.mark("#convert-result")
+            p.click("#convert-run")
+            r = p.result_done("#convert-result")
+            self.assertIn("is-ok", r["cls"], r["text"])
+            out, data = p.download("#convert-result a.download")
+            self.native(r["command"], {name: read(SAMPLE_GRADE)}, out, data)
+            if name.startswith("-"):
+                self.assertIn(" ./-look.cube ", r["command"])
+            else:
+                self.assertIn("'my grade (v2) '\\''final'\\''.cube'", r["command"])
+
     def test_3_every_control_from_the_keyboard(self):
         """Tab visits every control of both tabs (the tab bar's arrow keys switch tabs)."""
         p = self.page

@@ -80,7 +80,7 @@ export class Colourist {
         let name = `${stem(lut.name)}${f.suffix || ''}.${f.ext}`;
         if (name === lut.name)
           name = `${stem(lut.name)}_converted.${f.ext}`;
-        const args = ['convert', fileArg(lut.name), name, ...f.args, ...this.lut.flags('in')];
+        const args = ['convert', fileArg(lut.name), fileArg(name), ...f.args, ...this.lut.flags('in')];
         if (f.id === 'strip' && layout.value !== 'unreal')
           args.push('--layout', layout.value);
         if (f.image && depth.value)
@@ -104,7 +104,7 @@ export class Colourist {
       onclick: async () => {
         const lut = this.lut.file;
         const report = `${stem(lut.name)}_check.png`;
-        const args = ['check', fileArg(lut.name), '--report', report, ...this.lut.flags('check')];
+        const args = ['check', fileArg(lut.name), '--report', fileArg(report), ...this.lut.flags('check')];
         result.running(args, this.lane, 'Checking');
         const record = await this.lane.run(args, { [lut.name]: lut.bytes }, { label: 'check' });
         const picture = record.outputs[report];
@@ -142,7 +142,7 @@ export class Colourist {
         if (!this.lut.ready)
           return { missing: this.lut.lut ? 'Answer what the LUT is for in step 1.' : 'Drop a LUT in step 1 to apply it.' };
         const { files, names } = placeInputs([this.lut.file], [out, input]);
-        return { files, args: ['apply', '--lut', fileArg(names[0]), ...this.lut.flags('lut'), input, '-o', out,
+        return { files, args: ['apply', '--lut', fileArg(names[0]), ...this.lut.flags('lut'), input, '-o', fileArg(out),
                                ...strengthArgs(this.applyStrength)] };
       } });
     mount.append(this.applyStrength.node, this.apply.node);
@@ -167,7 +167,7 @@ export class Colourist {
         const out = output.value === 'nutexb' ? 'color_grading_lut.nutexb' : `${stem(src.name)}_look.${output.value}`;
         const report = `${stem(src.name)}_match.png`;
         const { files, names } = placeInputs([src, ...this.match.references], [out, report]);
-        const args = ['match', ...names.map(fileArg), out, '--report-image', report, ...strengthArgs(strength)];
+        const args = ['match', ...names.map(fileArg), fileArg(out), '--report-image', fileArg(report), ...strengthArgs(strength)];
         result.running(args, this.lane, 'Matching');
         const record = await this.lane.run(args, files, { label: 'match' });
         const extras = { downloads: [{ name: out }, { name: report }], summary: summaryLines(record) };

@@ -62,7 +62,7 @@ export class LivePicture {
   // (an identity LUT gives every value back); false when lutkit refuses it too.
   async beforeByLutkit(file) {
     const out = `${stem(file.name)}_before.png`;
-    const args = ['apply', '--lut', 'builtin:neutral', fileArg(file.name), '-o', out];
+    const args = ['apply', '--lut', 'builtin:neutral', fileArg(file.name), '-o', fileArg(out)];
     const record = await this.lane.run(args, { [file.name]: file.bytes }, { label: 'before' });
     if (record.status === 'done' && record.exitCode === 0 && record.outputs[out]) {
       await this.compare.setImage('before', blobUrl(record.outputs[out], out), '');
@@ -91,7 +91,7 @@ export class LivePicture {
       if (!proxy || picture !== this.picture || seq < this.shown)
         return;
       const out = `${stem(proxy.name)}${this.options.suffix}.png`;
-      const made = this.options.makeArgs(proxy.name, out);
+      const made = this.options.makeArgs(fileArg(proxy.name), out);
       if (made.missing)
         return;
       const files = { ...made.files, [proxy.name]: proxy.bytes };

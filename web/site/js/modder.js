@@ -150,7 +150,7 @@ export class Modder {
       return original;
     const lut = this.grade.file;
     const { files, names } = placeInputs([lut, ...original.inputs], [out, input]);
-    const args = ['preview', input, '-o', out, '--lut', fileArg(names[0]), ...this.grade.flags('lut'),
+    const args = ['preview', input, '-o', fileArg(out), '--lut', fileArg(names[0]), ...this.grade.flags('lut'),
                   ...original.args, ...names.slice(1).map(fileArg), ...strengthArgs(this.strength)];
     return { args, files };
   }
@@ -184,7 +184,7 @@ export class Modder {
     const { files, names } = placeInputs([lut, ...original.inputs], [name]);
     // The game's file is the game's LUT; the others hold the grade itself (an edit), as the
     // editor's engine and grading-app targets.
-    const args = ['convert', fileArg(names[0]), name, ...target.args, ...(target.game ? [] : ['--target', 'raw']),
+    const args = ['convert', fileArg(names[0]), fileArg(name), ...target.args, ...(target.game ? [] : ['--target', 'raw']),
                   ...this.grade.flags('in'), ...original.args, ...names.slice(1).map(fileArg),
                   ...strengthArgs(this.strength)];
     this.exportResult.running(args, this.lane, `Making ${name}`);
@@ -212,7 +212,7 @@ export class Modder {
     }
     const out = `${stem(file.name)}_patched.png`;
     const { files, names } = placeInputs([file, ...original.inputs], [out]);
-    const args = ['embed', fileArg(names[0]), out, ...original.args, ...names.slice(1).map(fileArg)];
+    const args = ['embed', fileArg(names[0]), fileArg(out), ...original.args, ...names.slice(1).map(fileArg)];
     result.running(args, this.lane, 'Adding the patch');
     const record = await this.lane.run(args, files, { label: 'embed' });
     result.show(record, { downloads: [{ name: out }],
