@@ -49,6 +49,7 @@ class Page:
         self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)
         self.thread.start()
         self.url = f"http://127.0.0.1:{self.server.server_address[1]}/"
+        self.captures = []
         self.profile = tempfile.mkdtemp(prefix="lutkit-page-profile-")
         self.downloads = tempfile.mkdtemp(prefix="lutkit-page-downloads-")
         options = webdriver.ChromeOptions()
@@ -171,8 +172,12 @@ class Page:
             return name, f.read()
 
     def screenshot(self, path):
+        """Saves the viewport; the page's clock before and after is kept in self.captures (a
+        capture makes the browser paint on the page's thread: a long task of the test's own)."""
         os.makedirs(os.path.dirname(path), exist_ok=True)
+        before = self.js("return performance.now()")
         self.driver.save_screenshot(path)
+        self.captures.append((before, self.js("return performance.now()"), os.path.basename(path)))
 
     def long_tasks(self):
         return self.js("return window.__longTasks || []")

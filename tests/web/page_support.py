@@ -93,5 +93,11 @@ def shot(page, name, css=None):
 
 
 def work_periods_long_tasks(page, since_ms, limit_ms=100):
-    """Long tasks after `since_ms` (the page's clock) over `limit_ms`."""
-    return [t for t in page.long_tasks() if t["start"] >= since_ms and t["duration"] > limit_ms]
+    """Long tasks after `since_ms` (the page's clock) over `limit_ms`, each with the screenshot it
+    overlaps, if any."""
+    slow = [dict(t) for t in page.long_tasks() if t["start"] >= since_ms and t["duration"] > limit_ms]
+    for t in slow:
+        for start, end, name in page.captures:
+            if t["start"] < end and t["start"] + t["duration"] > start:
+                t["capture"] = name
+    return slow
