@@ -5,10 +5,18 @@
 #                       converted, each with the error it cost.
 # ./run.sh ARGS...      the same set-up, then run the CLI: ./run.sh convert a.cube b.nutexb
 # ./run.sh editor ARGS  build the editor instead and start it: ./run.sh editor shot.png grade.cube
+# ./run.sh web [PORT]   build lutkit for the browser into build/web/ (scripts/build-web.sh) and
+#                       serve the page on http://127.0.0.1:PORT/ (default 8000; docs/web.md)
 # Only what the job needs is installed and built: the CLI and its image module (the editor and
 # Qt 6 when asked). The tests and benchmarks are ./test.sh's.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
+if [ "${1:-}" = "web" ]; then
+  shift
+  "$root/scripts/install-deps.sh" --web
+  "$root/scripts/build-web.sh" "$root/build/web"
+  exec python3 "$root/scripts/serve-web.py" "$root/build/web" --port "${1:-8000}"
+fi
 editor=0
 if [ "${1:-}" = "editor" ]; then
   editor=1

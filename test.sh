@@ -2,12 +2,13 @@
 # SPDX-License-Identifier: Apache-2.0
 # ./test.sh   install what is missing, build, and run the whole test suite with ctest.
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer builds and fuzzing.
-# Stages: Release build + ctest (build/), ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh),
-# ThreadSanitizer build + the threaded code's tests (build-tsan/, scripts/tsan.sh),
-# each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/, scripts/fuzz.sh;
-# findings land in build-fuzz/findings/). Between the Release stage and the sanitizers: the browser
-# edition (build-web/, built and run in headless Chromium against the Release CLI:
-# tests/web/run.sh). The last line says ALL PASSED or the stage that failed.
+# Stages: Release build + ctest (build/), lutkit for the browser built (build-web/, build/web/),
+# each command against the native CLI and its page driven in headless Chromium (tests/web/run.sh),
+# ASan+UBSan build + ctest
+# (build-asan/, scripts/sanitize.sh), ThreadSanitizer build + the threaded code's tests (build-tsan/,
+# scripts/tsan.sh), each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/,
+# scripts/fuzz.sh; findings land in build-fuzz/findings/). The last line says ALL PASSED or the
+# stage that failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
 # A final summary line in every case, naming the stage that failed.
@@ -35,8 +36,8 @@ cmake --build "$root/build" -j"$jobs"
 took
 
 if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
-  stage="browser"
-  echo "== The browser edition: built with emscripten, run in headless Chromium (tests/web/run.sh)"
+  stage="web"
+  echo "== lutkit for the browser: the build, each command against the native CLI and the page, in headless Chromium (tests/web/run.sh)"
   "$root/tests/web/run.sh"
   took
   stage="sanitizers"

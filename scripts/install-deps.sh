@@ -6,15 +6,19 @@
 #                                     sanitizers, fuzzing and the checks (./test.sh, CI)
 #   scripts/install-deps.sh --cli     only what building the CLI needs (./run.sh)
 #   scripts/install-deps.sh --editor  the CLI's and Qt 6 for the editor (./run.sh editor)
+#   scripts/install-deps.sh --web     what building and serving the browser edition needs
+#                                     (./run.sh web: emscripten, CMake, python3)
 set -euo pipefail
 # The CLI and its image module: compiler, CMake, OpenImageIO, OpenColorIO, the native codecs,
 # GLM, CLI11, ccache.
 CLI_PACKAGES=(cmake make g++ pkg-config libopenimageio-dev libopenexr-dev libpng-dev zlib1g-dev libjpeg62-turbo-dev
   libisal-dev libopencolorio-dev libglm-dev libcli11-dev libfast-float-dev libfmt-dev ccache)
 EDITOR_PACKAGES=(qt6-base-dev libqt6opengl6-dev)
+WEB_PACKAGES=(cmake make emscripten ccache python3)
 case "${1:-}" in
   --cli) shift; set -- "${CLI_PACKAGES[@]}" "$@"; ONLY=1 ;;
   --editor) shift; set -- "${CLI_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" "$@"; ONLY=1 ;;
+  --web) shift; set -- "${WEB_PACKAGES[@]}" "$@"; ONLY=1 ;;
   *) ONLY=0 ;;
 esac
 # desktop-file-utils, libxml2-utils, shared-mime-info: tests/desktop checks the editor's desktop files.

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The browser edition's tests: builds it (scripts/build-web.sh, into build/web unless
-# LUTKIT_WEB_DIR names a built site) and runs every tests/web/test_*.py in headless Chromium
-# (Debian's chromium + chromium-driver through python3-selenium), against the native CLI
-# (build/bin/lutkit, LUTKIT_NATIVE). Exit non-zero on any failure.
+# LUTKIT_WEB_DIR names a built site), then in headless Chromium (Debian's chromium +
+# chromium-driver through python3-selenium), against the native CLI (build/bin/lutkit,
+# LUTKIT_NATIVE): every command's output files and messages (test_same_bytes.py), and the page
+# driven like a user (run-page-tests.sh). Exit non-zero on any failure.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 export LUTKIT_WEB_DIR="${LUTKIT_WEB_DIR:-$root/build/web}"
@@ -14,8 +15,8 @@ fi
 py=/usr/bin/python3
 [ -x "$py" ] || py=python3
 status=0
-for t in "$root"/tests/web/test_*.py; do
-  echo "== $(basename "$t")"
-  "$py" "$t" || status=1
-done
+echo "== tests/web/test_same_bytes.py"
+"$py" "$root/tests/web/test_same_bytes.py" || status=1
+echo "== tests/web/run-page-tests.sh"
+"$root/tests/web/run-page-tests.sh" "$LUTKIT_WEB_DIR" || status=1
 exit $status
