@@ -27,7 +27,8 @@ std::unique_ptr<ImageSource> openOiioSource(const std::string& path, std::string
                                             const std::string& format) {
     throw Error(shown(path) + ": " +
                 notInEdition("reading " + formatWord(format.empty() ? path : format) + " images",
-                             "OpenImageIO", "this edition reads PNG, JPEG, BMP, TGA and PNM (PPM/PGM)"));
+                             "OpenImageIO",
+                             "this edition reads PNG, JPEG, BMP, TGA and PNM (PPM/PGM)"));
 }
 
 std::unique_ptr<ImageSink> createOiioSink(const OutputTarget& target,

@@ -66,7 +66,8 @@ std::vector<float> packTable(const Lut3D& lut) {
 
 enum class Isa { Scalar, Avx2, Avx512 };
 
-// A kernel of simd/ where it is compiled (x86), else none (the browser edition: the portable forms).
+// A kernel of simd/ where it is compiled (x86), else none (the browser edition: the portable
+// forms).
 #if defined(__x86_64__) || defined(__i386__)
 #define LUTKIT_X86_KERNEL(f) (&f)
 #else
