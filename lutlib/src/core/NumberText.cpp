@@ -151,7 +151,7 @@ std::to_chars_result toCharsFixedPortable(char* first, char* last, double value,
     // printf's %.Nf is correctly rounded in glibc, musl and MinGW-w64's own printf, as
     // std::to_chars with a precision is.
     const int n = std::snprintf(nullptr, 0, "%.*f", precision, value);
-    if (n < 0 || last - first < n)
+    if (n < 1 || last - first < n) // n >= 1 said for GCC's -Wformat-truncation
         return {last, std::errc::value_too_large};
     std::string text(static_cast<std::size_t>(n) + 1, '\0');
     std::snprintf(text.data(), text.size(), "%.*f", precision, value);
