@@ -6,13 +6,14 @@
 #include "lut/Error.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/io/FrameSequence.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
-#include <sys/stat.h>
 
 namespace lut::cli {
 
@@ -26,11 +27,6 @@ struct Source {
     std::string refused;       // a frame asked for by --frames that is missing
 };
 
-bool isDir(const std::string& p) {
-    struct stat st {};
-    return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
 std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const std::string& frames,
                                  std::vector<std::string>& notes, const FolderFiles& folderFiles) {
     std::vector<Source> out;
@@ -40,13 +36,13 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
             out.push_back({in, std::nullopt, {}});
             continue;
         }
-        if (isDir(in)) {
+        if (os::isDirectory(in)) {
             std::vector<fs::path> files;
             std::error_code ec;
-            for (const auto& e : fs::directory_iterator(in, ec))
+            for (const auto& e : fs::directory_iterator(os::toPath(in), ec))
                 if (e.is_regular_file(ec) &&
-                    (folderFiles.accepts ? folderFiles.accepts(e.path().string())
-                                         : formats::isImageExtension(e.path().string())))
+                    (folderFiles.accepts ? folderFiles.accepts(os::fromPath(e.path()))
+                                         : formats::isImageExtension(os::fromPath(e.path()))))
                     files.push_back(e.path());
             if (files.empty())
                 throw Error(in + ": folder holds no " +
@@ -55,7 +51,7 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
                                  : folderFiles.what));
             std::sort(files.begin(), files.end());
             for (const auto& f : files)
-                out.push_back({f.string(), std::nullopt, {}});
+                out.push_back({os::fromPath(f), std::nullopt, {}});
             continue;
         }
         if (const auto pattern = parseFramePattern(in)) {
@@ -64,8 +60,7 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
                 std::vector<long> missing;
                 for (const long f : parseFrameRange(frames)) {
                     Source s{pattern->path(f), f, {}};
-                    struct stat st {};
-                    if (::stat(s.path.c_str(), &st) != 0) {
+                    if (!os::exists(s.path)) {
                         s.refused =
                             "frame " + std::to_string(f) + " is missing (--frames " + frames + ")";
                         missing.push_back(f);
@@ -123,18 +118,19 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
 
     noteOutputPath(o); // data on stdout: every note on stderr
     const auto outPattern = o == "-" ? std::nullopt : parseFramePattern(o);
-    const bool folder = !outPattern && o != "-" && (o.back() == '/' || isDir(o));
-    const bool singleFile = inputs.size() == 1 && sources.size() == 1 && !isDir(inputs[0]) &&
-                            !parseFramePattern(inputs[0]);
+    const bool folder =
+        !outPattern && o != "-" && (os::isPathSeparator(o.back()) || os::isDirectory(o));
+    const bool singleFile = inputs.size() == 1 && sources.size() == 1 &&
+                            !os::isDirectory(inputs[0]) && !parseFramePattern(inputs[0]);
     if (!outPattern && !folder && !singleFile)
         throw UsageError(std::to_string(sources.size()) + " inputs need -o DIR/ (a folder: " +
                          "existing, or ending in /) or a frame pattern (out.%04d.png), not '" + o +
                          "'");
     if (folder && stdinUsed)
         throw UsageError("standard input (-) has no name to write into a folder: -o FILE");
-    if (folder && !isDir(o)) {
+    if (folder && !os::isDirectory(o)) {
         std::error_code ec;
-        fs::create_directories(o, ec); // a trailing slash says it is a folder
+        fs::create_directories(os::toPath(o), ec); // a trailing slash says it is a folder
         if (ec)
             throw Error(o + ": cannot create the folder: " + ec.message());
     }
@@ -151,10 +147,10 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
             out = outPattern->path(s.frame ? *s.frame : next);
             ++next;
         } else if (folder) {
-            fs::path name = fs::path(s.path).filename();
+            fs::path name = os::toPath(s.path).filename();
             if (!outExtension.empty())
-                name.replace_extension(outExtension);
-            out = (fs::path(o) / name).string();
+                name.replace_extension(os::toPath(outExtension));
+            out = os::fromPath(os::toPath(o) / name);
         } else {
             out = o;
         }

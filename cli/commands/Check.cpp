@@ -16,6 +16,8 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 #include "lut/smash/SmashShownEdit.h"
 
 #include <CLI/CLI.hpp>
@@ -130,8 +132,8 @@ std::string picturePath(const CheckCommandOptions& o, const std::string& input) 
         return "";
     if (o.inputs.size() == 1)
         return o.report;
-    std::filesystem::path dir(o.report);
-    return (dir / (std::filesystem::path(input).stem().string() + ".check.png")).string();
+    return os::fromPath(os::toPath(o.report) /
+                        os::toPath(os::fromPath(os::toPath(input).stem()) + ".check.png"));
 }
 
 } // namespace
@@ -145,12 +147,12 @@ int runCheck(const CheckCommandOptions& o) {
     if (o.verbosity.verbose)
         options.maxFindings = static_cast<std::size_t>(-1);
     if (!o.report.empty() && o.inputs.size() > 1) {
-        const bool folder = o.report.back() == '/' || std::filesystem::is_directory(o.report);
+        const bool folder = os::isPathSeparator(o.report.back()) || os::isDirectory(o.report);
         if (!folder)
             throw UsageError("--report " + o.report +
                              ": with several LUTs, name a folder (ending "
                              "in /) for their pictures");
-        std::filesystem::create_directories(o.report);
+        std::filesystem::create_directories(os::toPath(o.report));
     }
     std::vector<std::string> inputs = o.inputs;
     if (!o.image.empty())
@@ -195,7 +197,7 @@ int runCheck(const CheckCommandOptions& o) {
             bool wrote = false;
             if (!picture.empty() && beginOutput(picture, o.overwrite, inputs, o.verbosity.quiet)) {
                 const CheckPicture p =
-                    drawCheckReport(file, report, std::filesystem::path(path).filename().string());
+                    drawCheckReport(file, report, os::fromPath(os::toPath(path).filename()));
                 formats::ImageWriteOptions w;
                 w.bitDepth = 8;
                 w.alpha = false;

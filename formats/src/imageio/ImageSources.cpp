@@ -10,8 +10,11 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
 #include "lut/io/StdStreams.h"
+#include "lut/os/Files.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 
@@ -111,7 +114,7 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         head = memory.substr(0, 16);
     } else {
         checkRegularInput(path); // a FIFO or device is refused before it is opened
-        std::FILE* f = std::fopen(path.c_str(), "rb");
+        std::FILE* f = os::openStream(path, "rb");
         if (!f)
             throw Error(path + ": cannot open: " + std::strerror(errno));
         char buf[16];
@@ -141,7 +144,7 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         std::string tail;
         if (!memory.empty()) {
             tail = memory.substr(memory.size() > 4096 ? memory.size() - 4096 : 0);
-        } else if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+        } else if (std::FILE* f = os::openStream(path, "rb")) {
             std::fseek(f, 0, SEEK_END);
             const long size = std::ftell(f);
             std::fseek(f, size > 4096 ? size - 4096 : 0, SEEK_SET);
