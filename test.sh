@@ -2,13 +2,14 @@
 # SPDX-License-Identifier: Apache-2.0
 # ./test.sh   install what is missing, build, and run the whole test suite with ctest.
 # Exits non-zero on any failure. Set LUTKIT_QUICK=1 to skip the sanitizer builds and fuzzing.
-# Stages: Release build + ctest (build/), lutkit for the browser built (build-web/, build/web/),
+# Stages: Release build + ctest (build/), then (unless LUTKIT_QUICK=1): the Windows edition
+# cross-built and run under Wine against it (build-windows/, build/windows/, tests/windows/run.sh;
+# when mingw-w64 and wine are installed), lutkit for the browser built (build-web/, build/web/),
 # each command against the native CLI and its page driven in headless Chromium (tests/web/run.sh),
-# ASan+UBSan build + ctest
-# (build-asan/, scripts/sanitize.sh), ThreadSanitizer build + the threaded code's tests (build-tsan/,
-# scripts/tsan.sh), each libFuzzer harness for LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/,
-# scripts/fuzz.sh; findings land in build-fuzz/findings/). The last line says ALL PASSED or the
-# stage that failed.
+# ASan+UBSan build + ctest (build-asan/, scripts/sanitize.sh), ThreadSanitizer build + the
+# threaded code's tests (build-tsan/, scripts/tsan.sh), each libFuzzer harness for
+# LUTKIT_FUZZ_SECONDS (default 30) s (build-fuzz/, scripts/fuzz.sh; findings land in
+# build-fuzz/findings/). The last line says ALL PASSED or the stage that failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")" && pwd)"
 # A final summary line in every case, naming the stage that failed.
@@ -36,6 +37,16 @@ cmake --build "$root/build" -j"$jobs"
 took
 
 if [ "${LUTKIT_QUICK:-0}" != "1" ]; then
+  # The Windows edition (docs/windows.md): lutkit.exe cross-built with MinGW-w64 and run under Wine
+  # against the Linux build just made, outputs compared byte for byte (tests/windows/run.sh).
+  if command -v x86_64-w64-mingw32-g++-posix >/dev/null && command -v wine >/dev/null; then
+    stage="windows"
+    echo "== Windows edition: cross-built, run under Wine against the Linux build (tests/windows)"
+    "$root/scripts/build-windows.sh" "$root/build/windows"
+    "$root/tests/windows/run.sh" "$root/build/bin/lutkit" "$root/build/windows/lutkit.exe" \
+      "$root/build/windows-tests"
+    took
+  fi
   stage="web"
   echo "== lutkit for the browser: the build, each command against the native CLI and the page, in headless Chromium (tests/web/run.sh)"
   "$root/tests/web/run.sh"

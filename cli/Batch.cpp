@@ -10,6 +10,8 @@
 #include "lut/Parallel.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/TempFiles.h"
+#include "lut/os/Console.h"
+#include "lut/os/Memory.h"
 
 #include <algorithm>
 #include <atomic>
@@ -20,7 +22,6 @@
 #include <iostream>
 #include <mutex>
 #include <thread>
-#include <unistd.h>
 
 namespace lut::cli {
 
@@ -106,11 +107,8 @@ private:
 } // namespace
 
 std::uint64_t defaultMaxMemory() {
-    const long pages = ::sysconf(_SC_PHYS_PAGES);
-    const long size = ::sysconf(_SC_PAGE_SIZE);
-    if (pages <= 0 || size <= 0)
-        return std::uint64_t(4) << 30;
-    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size) / 2;
+    const std::uint64_t physical = os::physicalMemoryBytes();
+    return physical > 0 ? physical / 2 : std::uint64_t(4) << 30;
 }
 
 std::uint64_t parseMemorySize(const std::string& text) {
@@ -166,7 +164,7 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
         std::cerr << "lutkit: warning: " << printable(n) << "\n";
     const int workers = std::max(1, std::min(resolveThreads(options.threads), total));
     const int inner = workers == 1 ? options.threads : 1;
-    const bool bar = !options.quiet && total > 1 && isatty(STDERR_FILENO);
+    const bool bar = !options.quiet && total > 1 && os::terminalTakesEscapes(2);
     Budget budget(options.maxMemory ? options.maxMemory : defaultMaxMemory());
     std::mutex m;
     std::vector<std::string> failures(jobs.size());

@@ -7,13 +7,14 @@
 #include "lut/formats/ImageFiles.h"
 #include "lut/io/FrameSequence.h"
 #include "lut/io/InputFile.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
-#include <sys/stat.h>
 
 namespace lut::cli {
 
@@ -27,11 +28,6 @@ struct Source {
     std::string refused;       // a frame asked for by --frames that is missing
 };
 
-bool isDir(const std::string& p) {
-    struct stat st {};
-    return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
 std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const std::string& frames,
                                  std::vector<std::string>& notes, const FolderFiles& folderFiles) {
     std::vector<Source> out;
@@ -41,12 +37,12 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
             out.push_back({in, std::nullopt, {}});
             continue;
         }
-        if (isDir(in)) {
+        if (os::isDirectory(in)) {
             std::vector<fs::path> files;
             const std::size_t notesBefore = notes.size();
             std::error_code ec;
-            for (const auto& e : fs::directory_iterator(in, ec)) {
-                const std::string name = e.path().string();
+            for (const auto& e : fs::directory_iterator(os::toPath(in), ec)) {
+                const std::string name = os::fromPath(e.path());
                 if (!(folderFiles.accepts ? folderFiles.accepts(name)
                                           : formats::isImageExtension(name)))
                     continue; // not a file of the kind read here
@@ -74,7 +70,7 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
                                                         : std::string()));
             std::sort(files.begin(), files.end());
             for (const auto& f : files)
-                out.push_back({f.string(), std::nullopt, {}});
+                out.push_back({os::fromPath(f), std::nullopt, {}});
             continue;
         }
         if (const auto pattern = parseFramePattern(in)) {
@@ -83,8 +79,7 @@ std::vector<Source> expandInputs(const std::vector<std::string>& inputs, const s
                 std::vector<long> missing;
                 for (const long f : parseFrameRange(frames)) {
                     Source s{pattern->path(f), f, {}};
-                    struct stat st {};
-                    if (::stat(s.path.c_str(), &st) != 0) {
+                    if (!os::exists(s.path)) {
                         s.refused =
                             "frame " + std::to_string(f) + " is missing (--frames " + frames + ")";
                         missing.push_back(f);
@@ -142,18 +137,19 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
 
     noteOutputPath(o); // data on stdout: every note on stderr
     const auto outPattern = o == "-" ? std::nullopt : parseFramePattern(o);
-    const bool folder = !outPattern && o != "-" && (o.back() == '/' || isDir(o));
-    const bool singleFile = inputs.size() == 1 && sources.size() == 1 && !isDir(inputs[0]) &&
-                            !parseFramePattern(inputs[0]);
+    const bool folder =
+        !outPattern && o != "-" && (os::isPathSeparator(o.back()) || os::isDirectory(o));
+    const bool singleFile = inputs.size() == 1 && sources.size() == 1 &&
+                            !os::isDirectory(inputs[0]) && !parseFramePattern(inputs[0]);
     if (!outPattern && !folder && !singleFile)
         throw UsageError(std::to_string(sources.size()) + " inputs need -o DIR/ (a folder: " +
                          "existing, or ending in /) or a frame pattern (out.%04d.png), not '" + o +
                          "'");
     if (folder && stdinUsed)
         throw UsageError("standard input (-) has no name to write into a folder: -o FILE");
-    if (folder && !isDir(o)) {
+    if (folder && !os::isDirectory(o)) {
         std::error_code ec;
-        fs::create_directories(o, ec); // a trailing slash says it is a folder
+        fs::create_directories(os::toPath(o), ec); // a trailing slash says it is a folder
         if (ec)
             throw Error(o + ": cannot create the folder: " + ec.message());
     }
@@ -170,10 +166,10 @@ BatchPlan planBatch(const std::vector<std::string>& inputs, const OutputOptions&
             out = outPattern->path(s.frame ? *s.frame : next);
             ++next;
         } else if (folder) {
-            fs::path name = fs::path(s.path).filename();
+            fs::path name = os::toPath(s.path).filename();
             if (!outExtension.empty())
-                name.replace_extension(outExtension);
-            out = (fs::path(o) / name).string();
+                name.replace_extension(os::toPath(outExtension));
+            out = os::fromPath(os::toPath(o) / name);
         } else {
             out = o;
         }

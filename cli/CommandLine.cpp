@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "CommandLine.h"
 
+#include "Drop.h"
 #include "Generators.h"
 #include "Interrupts.h"
 #include "OptionTable.h"
@@ -15,7 +16,11 @@
 #include "lut/formats/LibraryMessages.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/TempFiles.h"
+#include "lut/os/Console.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -57,7 +62,10 @@ std::string positionalFiles(const std::vector<CLI::App*>& parsed) {
 } // namespace
 
 CommandLine::CommandLine(const RunHooks& hooks)
-    : m_app("lutkit: author and convert colour grading LUTs", "lutkit") {
+    : m_hooks(hooks), m_app("lutkit: author and convert colour grading LUTs", "lutkit") {
+    // Options are -x and --xx everywhere: CLI11 would take "/x" for an option on Windows, and
+    // "/mods/lut.png" is a path there too. Set first: subcommands inherit it.
+    m_app.allow_windows_style_options(false);
     m_app.set_version_flag("-V,--version", std::string("lutkit ") + LUTKIT_VERSION,
                            "print the version and exit");
     m_app.set_help_flag("-h,--help", "print this help and exit");
@@ -111,9 +119,10 @@ CommandLine::CommandLine(const RunHooks& hooks)
 }
 
 int CommandLine::run(int argc, const char* const* argv) {
+    os::prepareStandardStreams();      // bytes as they are (Windows: binary mode, UTF-8 console)
     installInterruptHandlers();        // the program's own run: Ctrl-C removes what is half-written
     formats::captureLibraryMessages(); // OpenColorIO logs nothing to the terminal
-    const int code = run(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+    int code = run(os::programArguments(argc, argv));
     // What went to standard output (reports, --json, lists) is output the user asked for: a
     // full disk or a closed pipe is a failed write like any other (`info --json > /dev/full`).
     errno = 0;
@@ -123,8 +132,45 @@ int CommandLine::run(int argc, const char* const* argv) {
         const int err = errno;
         std::cerr << "lutkit: error: -: cannot write standard output"
                   << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
-        return code == kExitOk ? kExitFailure : code;
+        code = code == kExitOk ? kExitFailure : code;
     }
+    // Started by a double click or a drop (Windows): the window would close with the report.
+    if (os::consoleIsOwnWindow())
+        os::waitForKey("\nPress a key to close this window.\n");
+    return code;
+}
+
+int CommandLine::runDrop(const std::vector<std::string>& files) {
+    int code = kExitOk;
+    std::size_t written = 0;
+    for (const std::string& in : files) {
+        if (&in != &files.front())
+            std::cout << "\n";
+        const DropTarget t = dropTarget(in);
+        if (!t.refused.empty()) {
+            std::cout.flush();
+            std::cerr << "lutkit: error: " << t.refused << "\n";
+            code = std::max<int>(code, kExitFailure);
+            continue;
+        }
+        std::cout << "lutkit: " << in << " -> " << t.output;
+        if (t.output != t.usual)
+            std::cout << " (" << t.usual << " is there already and is kept; rename the new one "
+                      << "for the game)";
+        std::cout << "\n";
+        std::cout.flush();
+        // Exactly `lutkit convert IN OUT`: its options, its checks, its report, its exit code.
+        const int c = CommandLine(m_hooks).run(std::vector<std::string>{"convert", in, t.output});
+        if (c == kExitInterrupted)
+            return c;
+        if (c == kExitOk)
+            ++written;
+        else
+            code = std::max(code, c);
+    }
+    if (files.size() > 1)
+        std::cout << "\nlutkit: " << written << " of " << files.size()
+                  << " dropped files written as the game's LUT\n";
     return code;
 }
 
@@ -144,7 +190,14 @@ CommandLine::unknownCommandMessage(const std::vector<std::string>& args) const {
         if (std::find(names.begin(), names.end(), a) != names.end())
             return std::nullopt;
         std::string msg = "lutkit: unknown command '" + a + "'";
-        if (const auto guess = closestWord(a, names))
+        if (os::exists(a)) // files with an option: not a drop (Drop.h)
+            msg += " (files alone make color_grading_lut.nutexb beside each; with options: "
+                   "lutkit convert FILE OUT [OPTIONS])";
+        else if (a.find('.') != std::string::npos ||
+                 a.find_first_of(os::pathSeparators()) != std::string::npos)
+            msg += ", and no file of that name (lutkit FILE... makes color_grading_lut.nutexb "
+                   "beside each LUT file named)";
+        else if (const auto guess = closestWord(a, names))
             msg += "; did you mean '" + *guess + "'?";
         return msg + "\nRun 'lutkit help' for the list of commands.\n";
     }
@@ -193,6 +246,12 @@ int CommandLine::parseErrorExit(const CLI::ParseError& e) {
 }
 
 int CommandLine::run(const std::vector<std::string>& args) {
+    {
+        std::vector<std::string> names = commandNames(m_app);
+        names.push_back("help");
+        if (isDrop(args, names))
+            return runDrop(args);
+    }
     if (const auto msg = unknownCommandMessage(args)) {
         std::cerr << *msg;
         return kExitUsage;
@@ -243,6 +302,7 @@ int CommandLine::run(const std::vector<std::string>& args) {
         return kExitOk;
     }
     if (m_app.get_subcommands().empty()) {
+        std::cerr << howToUse() << "\n";
         std::cerr << "lutkit: A subcommand is required: one of";
         for (const auto& n : commandNames(m_app))
             std::cerr << " " << n;

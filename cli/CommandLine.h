@@ -6,7 +6,8 @@
 //
 // main() is `return lut::cli::CommandLine().run(argc, argv);`. Tests and the CLI fuzzer build the
 // same command line with hooks in place of the run functions, so they see exactly the options,
-// validators and conversions users get.
+// validators and conversions users get. Files with no command are a drop (Drop.h): each is
+// converted into color_grading_lut.nutexb beside it.
 #include "commands/Adjust.h"
 #include "commands/Apply.h"
 #include "commands/Atlas.h"
@@ -82,17 +83,21 @@ public:
     // The exit code the last run subcommand returned (after app().parse()).
     int exitCode() const { return m_exitCode; }
 
-    // Everything main does: parses the arguments (after the program name), runs the subcommand,
-    // prints help, usage errors ("did you mean") and library errors; returns the exit code:
-    // 0 ok, 1 bad input or failed operation, 2 bad usage, 130 interrupted.
+    // Everything main does: parses the arguments (after the program name; UTF-8 from the wide
+    // command line on Windows), runs the subcommand, prints help, usage errors ("did you mean")
+    // and library errors; returns the exit code: 0 ok, 1 bad input or failed operation, 2 bad
+    // usage, 130 interrupted. Where the console window is the program's own (Windows: a double
+    // click or files dropped on lutkit.exe), it waits for a key before it returns.
     int run(int argc, const char* const* argv);
     int run(const std::vector<std::string>& args);
 
 private:
+    int runDrop(const std::vector<std::string>& files);
     int parseErrorExit(const CLI::ParseError& e);
     std::optional<std::string> unknownCommandMessage(const std::vector<std::string>& args) const;
     std::string commandPrefix() const; // "lutkit convert: " (the parsed subcommand)
 
+    RunHooks m_hooks;
     CLI::App m_app;
     int m_exitCode = 0;
     std::string m_generate;       // --generate KIND

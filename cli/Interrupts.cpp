@@ -4,11 +4,12 @@
 #include "Usage.h"
 
 #include "lut/io/TempFiles.h"
+#include "lut/os/Files.h"
+#include "lut/os/Signals.h"
 
 #include <atomic>
 #include <csignal>
 #include <cstring>
-#include <unistd.h>
 
 namespace lut::cli {
 
@@ -18,11 +19,12 @@ std::atomic<int> g_cooperative{0};
 std::atomic<int> g_signals{0};
 
 void say(const char* text) {
-    const ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
+    const std::ptrdiff_t ignored = os::writeBytes(2, text, std::strlen(text));
     (void)ignored;
 }
 
-// Async-signal-safe only: atomics, unlink/rmdir (inside removeTempFilesInFlight), write, _exit.
+// Async-signal-safe only: atomics, unlink/rmdir (inside removeTempFilesInFlight), write, _exit
+// (lut/os/Signals.h: on Windows it runs on the console's own thread).
 extern "C" void onSignal(int sig) {
     lut::removeTempFilesInFlight();
     lut::markInterrupted(sig);
@@ -30,26 +32,13 @@ extern "C" void onSignal(int sig) {
         return; // the batch runner stops and reports
     say(sig == SIGTERM ? "\nlutkit: interrupted (SIGTERM); unfinished outputs removed\n"
                        : "\nlutkit: interrupted (SIGINT); unfinished outputs removed\n");
-    ::_exit(kExitInterrupted);
+    os::exitNow(kExitInterrupted);
 }
 
 } // namespace
 
 void installInterruptHandlers() {
-    static std::atomic<bool> installed{false};
-    if (installed.exchange(true))
-        return;
-    struct sigaction sa {};
-    sa.sa_handler = onSignal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESTART;
-    for (int sig : {SIGINT, SIGTERM}) {
-        struct sigaction old {};
-        // A signal the caller chose to ignore (nohup, a background job) stays ignored.
-        if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN)
-            continue;
-        ::sigaction(sig, &sa, nullptr);
-    }
+    os::installInterruptHandler(onSignal);
 }
 
 CooperativeInterrupts::CooperativeInterrupts() {

@@ -2,11 +2,9 @@
 #include "Outputs.h"
 
 #include "lut/io/FileNames.h"
+#include "lut/os/Files.h"
 
 #include <CLI/CLI.hpp>
-
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <iostream>
 
@@ -15,12 +13,11 @@ namespace lut::cli {
 bool writesToStdout(const std::string& path) {
     if (path == "-" || path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1")
         return true;
-    struct stat p {
-    }, out{};
+    os::FileInfo p, out;
     // A special file that is our standard output (a terminal, a pipe): the same device and inode.
-    return !path.empty() && ::stat(path.c_str(), &p) == 0 && !S_ISREG(p.st_mode) &&
-           !S_ISDIR(p.st_mode) && ::fstat(STDOUT_FILENO, &out) == 0 && p.st_dev == out.st_dev &&
-           p.st_ino == out.st_ino;
+    return !path.empty() && os::fileInfo(path, p) == 0 && p.type != os::FileType::Regular &&
+           p.type != os::FileType::Directory && os::openFileInfo(1, out) == 0 &&
+           p.device == out.device && p.inode == out.inode;
 }
 
 void reserveStdoutForData() {

@@ -4,6 +4,8 @@
 #include "CommandLine.h"
 #include "OutOfMemory.h"
 
+#include "lut/os/Memory.h"
+
 #include <cstdlib>
 #include <new>
 
@@ -35,8 +37,8 @@ void* allocate(std::size_t n, std::size_t align) {
         void* p = nullptr;
         if (align <= alignof(std::max_align_t))
             p = std::malloc(n);
-        else if (::posix_memalign(&p, align, n) != 0)
-            p = nullptr;
+        else
+            p = lut::os::allocateAligned(n, align);
         if (p)
             return p;
         if (std::new_handler handler = std::get_new_handler()) {
@@ -58,6 +60,14 @@ void* allocateNoThrow(std::size_t n, std::size_t align) noexcept {
 
 constexpr std::size_t kPlain = alignof(std::max_align_t);
 
+// What allocate() took from malloc goes back to free, the rest to its aligned allocator.
+void deallocate(void* p, std::size_t align) noexcept {
+    if (align <= kPlain)
+        std::free(p);
+    else
+        lut::os::freeAligned(p);
+}
+
 } // namespace
 
 // clang-format off
@@ -73,13 +83,13 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t a) noexcept { deallocate(p, static_cast<std::size_t>(a)); }
+void operator delete[](void* p, std::align_val_t a) noexcept { deallocate(p, static_cast<std::size_t>(a)); }
+void operator delete(void* p, std::size_t, std::align_val_t a) noexcept { deallocate(p, static_cast<std::size_t>(a)); }
+void operator delete[](void* p, std::size_t, std::align_val_t a) noexcept { deallocate(p, static_cast<std::size_t>(a)); }
 void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t a, const std::nothrow_t&) noexcept { deallocate(p, static_cast<std::size_t>(a)); }
+void operator delete[](void* p, std::align_val_t a, const std::nothrow_t&) noexcept { deallocate(p, static_cast<std::size_t>(a)); }
 // clang-format on
 #endif

@@ -9,6 +9,8 @@
 #include "lut/formats/Atlas.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <CLI/CLI.hpp>
 
@@ -22,7 +24,7 @@ namespace lut::cli {
 namespace {
 
 std::string stem(const std::string& path) {
-    return std::filesystem::path(path).stem().string();
+    return os::fromPath(os::toPath(path).stem());
 }
 
 std::string rowLabel(const formats::AtlasRowReport& r) {
@@ -36,7 +38,7 @@ std::string multiLutText(const std::string& output, const formats::AtlasBuildRep
         items += (row.source.empty() ? std::string("Neutral") : stem(row.source)) + "\\0";
     const std::string n = std::to_string(r.shape.size);
     return "MultiLUT.fx: #define fLUT_TextureName \"" +
-           std::filesystem::path(output).filename().string() + "\", fLUT_TileSizeXY " + n +
+           os::fromPath(os::toPath(output).filename()) + "\", fLUT_TileSizeXY " + n +
            ", fLUT_TileAmount " + n + ", fLUT_LutAmount " + std::to_string(r.shape.rows) +
            "; ui_items=\"" + items + "\"";
 }
@@ -91,8 +93,8 @@ int split(const AtlasCommandOptions& o) {
     if (o.output.output.empty())
         throw UsageError("atlas split needs -o DIR/ (the folder for one strip per row)");
     const std::string& in = o.inputs.front();
-    const std::filesystem::path dir(o.output.output);
-    if (!std::filesystem::is_directory(dir))
+    const std::filesystem::path dir = os::toPath(o.output.output);
+    if (!os::isDirectory(o.output.output))
         throw Error(o.output.output + ": not a folder (split writes one strip per row into it)");
     formats::registerBuiltinFormats();
     const formats::AtlasReading a = formats::readAtlas(in, o.inLayout);
@@ -105,7 +107,7 @@ int split(const AtlasCommandOptions& o) {
     for (int k = 0; k < a.shape.rows; ++k) {
         char num[16];
         std::snprintf(num, sizeof num, "%02d", k);
-        paths.push_back((dir / (base + "-" + num + ext)).string());
+        paths.push_back(os::fromPath(dir / os::toPath(base + "-" + num + ext)));
         skip.push_back(resolveOutput(paths.back(), o.output, {in}).skip);
     }
     FormatOptions wo;

@@ -16,6 +16,8 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 #include "lut/smash/SmashShownEdit.h"
 
 #include <CLI/CLI.hpp>
@@ -140,17 +142,18 @@ std::vector<std::string> picturePaths(const CheckCommandOptions& o) {
     namespace fs = std::filesystem;
     std::map<std::string, int> stems, names;
     for (const auto& in : o.inputs) {
-        ++stems[fs::path(in).stem().string()];
-        ++names[fs::path(in).filename().string()];
+        ++stems[os::fromPath(os::toPath(in).stem())];
+        ++names[os::fromPath(os::toPath(in).filename())];
     }
     std::map<std::string, int> used;
     for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-        const fs::path in(o.inputs[i]);
+        const fs::path in = os::toPath(o.inputs[i]);
         std::string name =
-            stems[in.stem().string()] > 1 ? in.filename().string() : in.stem().string();
-        if (const int n = ++used[name]; n > 1 || names[in.filename().string()] > 1)
+            stems[os::fromPath(in.stem())] > 1 ? os::fromPath(in.filename())
+                                                   : os::fromPath(in.stem());
+        if (const int n = ++used[name]; n > 1 || names[os::fromPath(in.filename())] > 1)
             name += "-" + std::to_string(n);
-        paths[i] = (fs::path(o.report) / (name + ".check.png")).string();
+        paths[i] = os::fromPath(os::toPath(o.report) / os::toPath(name + ".check.png"));
     }
     return paths;
 }
@@ -166,12 +169,12 @@ int runCheck(const CheckCommandOptions& o) {
     if (o.verbosity.verbose)
         options.maxFindings = static_cast<std::size_t>(-1);
     if (!o.report.empty() && o.inputs.size() > 1) {
-        const bool folder = o.report.back() == '/' || std::filesystem::is_directory(o.report);
+        const bool folder = os::isPathSeparator(o.report.back()) || os::isDirectory(o.report);
         if (!folder)
             throw UsageError("--report " + o.report +
                              ": with several LUTs, name a folder (ending "
                              "in /) for their pictures");
-        std::filesystem::create_directories(o.report);
+        std::filesystem::create_directories(os::toPath(o.report));
     }
     std::vector<std::string> inputs = o.inputs;
     if (!o.image.empty())
@@ -218,7 +221,7 @@ int runCheck(const CheckCommandOptions& o) {
             bool wrote = false;
             if (!picture.empty() && beginOutput(picture, o.overwrite, inputs, o.verbosity.quiet)) {
                 const CheckPicture p =
-                    drawCheckReport(file, report, std::filesystem::path(path).filename().string());
+                    drawCheckReport(file, report, os::fromPath(os::toPath(path).filename()));
                 formats::ImageWriteOptions w;
                 w.bitDepth = 8;
                 w.alpha = false;

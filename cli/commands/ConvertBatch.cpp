@@ -17,8 +17,8 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
+#include "lut/os/Files.h"
 
-#include <filesystem>
 #include <iostream>
 #include <mutex>
 #include <sstream>
@@ -28,8 +28,7 @@ namespace lut::cli {
 namespace {
 
 bool isDirectory(const std::string& p) {
-    std::error_code ec;
-    return std::filesystem::is_directory(p, ec);
+    return os::isDirectory(p);
 }
 
 FormatOptions writeOptions(const ConvertOptions& o) {

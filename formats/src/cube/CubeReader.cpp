@@ -5,8 +5,8 @@
 
 #include "lut/Limits.h"
 #include "lut/io/InputFile.h"
-
-#include <sys/stat.h>
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <cstdint>
 #include <fstream>
@@ -21,11 +21,11 @@ FileBytes readCubeFile(const std::string& path) {
 }
 
 void checkCubeFileHeader(const std::string& path, const CubeReadOptions& options) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) ||
-        static_cast<std::uint64_t>(st.st_size) <= kHeaderPrefixBytes)
+    os::FileInfo st;
+    if (os::fileInfo(path, st) != 0 || st.type != os::FileType::Regular ||
+        st.size <= kHeaderPrefixBytes)
         return; // readFileBytes says what is wrong with it, or reads it whole anyway
-    std::ifstream in(path, std::ios::binary);
+    std::ifstream in(os::toPath(path), std::ios::binary);
     std::string prefix(kHeaderPrefixBytes, '\0');
     in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
     prefix.resize(static_cast<std::size_t>(in.gcount()));

@@ -3,13 +3,11 @@
 
 #include "lut/Error.h"
 #include "lut/io/InputFile.h"
+#include "lut/os/Files.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace lut::formats {
 
@@ -21,21 +19,21 @@ ByteReader::ByteReader(const std::string& path, std::string memory) : m_path(pat
         return;
     }
     checkRegularInput(path);
-    m_fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    m_fd = os::openFile(path, os::OpenFor::Read);
     if (m_fd < 0)
         throw Error(path + ": cannot open: " + std::strerror(errno));
-    struct stat st {};
-    if (::fstat(m_fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(m_fd);
+    os::FileInfo st;
+    if (os::openFileInfo(m_fd, st) != 0 || st.type != os::FileType::Regular) {
+        os::closeFile(m_fd);
         m_fd = -1;
         throw Error(path + ": is not a regular file");
     }
-    m_size = static_cast<std::uint64_t>(st.st_size);
+    m_size = st.size;
 }
 
 ByteReader::~ByteReader() {
     if (m_fd >= 0)
-        ::close(m_fd);
+        os::closeFile(m_fd);
 }
 
 std::size_t ByteReader::pread(void* dst, std::size_t n, std::uint64_t offset) const {
@@ -48,8 +46,8 @@ std::size_t ByteReader::pread(void* dst, std::size_t n, std::uint64_t offset) co
     }
     std::size_t done = 0;
     while (done < n) {
-        const ssize_t r = ::pread(m_fd, static_cast<char*>(dst) + done, n - done,
-                                  static_cast<off_t>(offset + done));
+        const std::ptrdiff_t r =
+            os::readBytesAt(m_fd, static_cast<char*>(dst) + done, n - done, offset + done);
         if (r < 0) {
             if (errno == EINTR)
                 continue;

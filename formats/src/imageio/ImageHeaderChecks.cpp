@@ -9,15 +9,13 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/os/Files.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fcntl.h>
 #include <limits>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace lut::formats {
 
@@ -431,20 +429,20 @@ std::uint64_t plausibleFileBytes(const DeclaredImage& image) {
 }
 
 DeclaredImage checkImageHeader(const std::string& path, const std::string& nameOrFormat) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    const int fd = os::openFile(path, os::OpenFor::Read);
     if (fd < 0)
         return {}; // the reader says why it cannot open it
-    struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(fd);
+    os::FileInfo st;
+    if (os::openFileInfo(fd, st) != 0 || st.type != os::FileType::Regular) {
+        os::closeFile(fd);
         return {};
     }
     const HeaderBytes bytes(
         [fd](std::uint64_t offset, void* dst, std::size_t n) {
             std::size_t got = 0;
             while (got < n) {
-                const ssize_t r = ::pread(fd, static_cast<char*>(dst) + got, n - got,
-                                          static_cast<off_t>(offset + got));
+                const std::ptrdiff_t r =
+                    os::readBytesAt(fd, static_cast<char*>(dst) + got, n - got, offset + got);
                 if (r < 0 && errno == EINTR)
                     continue;
                 if (r <= 0)
@@ -453,16 +451,16 @@ DeclaredImage checkImageHeader(const std::string& path, const std::string& nameO
             }
             return got;
         },
-        static_cast<std::uint64_t>(st.st_size));
+        st.size);
     DeclaredImage d;
     try {
         d = scanImageHeader(bytes, sniffImageFormat(bytes, nameOrFormat), path);
         checkDeclaredImage(path, d);
     } catch (...) {
-        ::close(fd);
+        os::closeFile(fd);
         throw;
     }
-    ::close(fd);
+    os::closeFile(fd);
     return d;
 }
 

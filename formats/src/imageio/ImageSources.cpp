@@ -10,11 +10,13 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
 #include "lut/io/StdStreams.h"
+#include "lut/os/Files.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <optional>
-#include <sys/stat.h>
 
 namespace lut::formats {
 
@@ -112,7 +114,7 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         head = memory.substr(0, 16);
     } else {
         checkRegularInput(path); // a FIFO or device is refused before it is opened
-        std::FILE* f = std::fopen(path.c_str(), "rb");
+        std::FILE* f = os::openStream(path, "rb");
         if (!f)
             throw Error(path + ": cannot open: " + std::strerror(errno));
         char buf[16];
@@ -148,7 +150,7 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         std::string tail;
         if (!memory.empty()) {
             tail = memory.substr(memory.size() > 4096 ? memory.size() - 4096 : 0);
-        } else if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+        } else if (std::FILE* f = os::openStream(path, "rb")) {
             std::fseek(f, 0, SEEK_END);
             const long size = std::ftell(f);
             std::fseek(f, size > 4096 ? size - 4096 : 0, SEEK_SET);
@@ -175,28 +177,16 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
 // gave rows of neither picture, exit 0 (issue 41).
 struct FileState {
     bool known = false;
-    dev_t dev = 0;
-    ino_t ino = 0;
-    off_t size = 0;
-    timespec mtime{}, ctime{};
+    os::FileInfo info;
 };
 
 FileState fileState(const std::string& path) {
     FileState f;
-    struct stat st {};
-    if (isStdStream(path) || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+    if (isStdStream(path) || os::fileInfo(path, f.info) != 0 ||
+        f.info.type != os::FileType::Regular)
         return f;
     f.known = true;
-    f.dev = st.st_dev;
-    f.ino = st.st_ino;
-    f.size = st.st_size;
-    f.mtime = st.st_mtim;
-    f.ctime = st.st_ctim;
     return f;
-}
-
-bool sameTime(const timespec& a, const timespec& b) {
-    return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
 }
 
 // Throws "PATH: the file changed while being read (...)" when it did. A file replaced by another
@@ -205,12 +195,13 @@ void checkUnchanged(const std::string& path, const FileState& before) {
     if (!before.known)
         return;
     const FileState after = fileState(path);
-    if (!after.known || after.dev != before.dev || after.ino != before.ino)
+    const os::FileInfo &a = after.info, &b = before.info;
+    if (!after.known || a.device != b.device || a.inode != b.inode)
         return;
-    if (after.size != before.size)
-        throw Error(path + ": the file changed while being read (" + std::to_string(before.size) +
-                    " bytes when opened, " + std::to_string(after.size) + " bytes now)");
-    if (!sameTime(after.ctime, before.ctime) || !sameTime(after.mtime, before.mtime))
+    if (a.size != b.size)
+        throw Error(path + ": the file changed while being read (" + std::to_string(b.size) +
+                    " bytes when opened, " + std::to_string(a.size) + " bytes now)");
+    if (a.changedNs != b.changedNs || a.modifiedNs != b.modifiedNs)
         throw Error(path + ": the file changed while being read (written to by another " +
                     "program: its change time moved); read it again once it is written");
 }

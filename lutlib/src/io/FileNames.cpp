@@ -1,27 +1,24 @@
 // SPDX-License-Identifier: Apache-2.0
-// File-name rules: the running program's folder, a path's extension; see lut/io/FileNames.h.
+// File-name rules: the running program's folder, a path's extension, a free name; see
+// lut/io/FileNames.h.
 #include "lut/io/FileNames.h"
 
-#include <unistd.h>
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <algorithm>
 #include <cctype>
-#include <vector>
 
 namespace lut {
 
 std::string executableDir() {
-    std::vector<char> buf(4096);
-    const ssize_t n = ::readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-    if (n <= 0)
-        return {};
-    std::string p(buf.data(), static_cast<std::size_t>(n));
-    const auto slash = p.find_last_of('/');
+    const std::string p = os::executablePath();
+    const auto slash = p.find_last_of(os::pathSeparators());
     return slash == std::string::npos ? std::string() : p.substr(0, slash);
 }
 
 std::string extensionOf(const std::string& path) {
-    const auto slash = path.find_last_of('/');
+    const auto slash = path.find_last_of(os::pathSeparators());
     const auto dot = path.find_last_of('.');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return {};
@@ -59,6 +56,20 @@ std::string printable(std::string_view text) {
         }
     }
     return out;
+}
+
+std::string firstFreeName(const std::string& path) {
+    os::FileInfo info;
+    if (os::linkInfo(path, info) != 0)
+        return path;
+    const std::size_t stemEnd = path.size() - extensionOf(path).size();
+    const std::string stem = path.substr(0, stemEnd);
+    for (int n = 2; n < 10000; ++n) {
+        std::string candidate = stem + " (" + std::to_string(n) + ")" + path.substr(stemEnd);
+        if (os::linkInfo(candidate, info) != 0)
+            return candidate;
+    }
+    return path; // ten thousand copies: the write refuses the name taken
 }
 
 } // namespace lut

@@ -7,10 +7,11 @@
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/os/Memory.h"
+#include "lut/os/Paths.h"
 
 #include <filesystem>
 #include <random>
-#include <unistd.h>
 
 namespace lut {
 
@@ -26,14 +27,14 @@ public:
         const auto base = std::filesystem::temp_directory_path();
         for (int attempt = 0; attempt < 16; ++attempt) {
             const auto p =
-                base / ("lutkit-" + std::to_string(::getpid()) + "-" + std::to_string(rd()));
+                base / ("lutkit-" + std::to_string(os::processId()) + "-" + std::to_string(rd()));
             std::error_code ec;
             if (std::filesystem::create_directory(p, ec)) {
                 m_path = p;
                 return;
             }
         }
-        throw Error("cannot create a temporary folder in " + base.string());
+        throw Error("cannot create a temporary folder in " + os::fromPath(base));
     }
     ~TempDir() {
         std::error_code ec;
@@ -41,7 +42,7 @@ public:
     }
     // A file name inside the folder that keeps `name`'s extension.
     std::string file(const std::string& name) const {
-        return (m_path / ("data" + extensionOf(name))).string();
+        return os::fromPath(m_path / os::toPath("data" + extensionOf(name)));
     }
 
 private:

@@ -2,11 +2,12 @@
 #include "lut/io/FrameSequence.h"
 
 #include "lut/Error.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <sys/stat.h>
 
 namespace fs = std::filesystem;
 
@@ -15,11 +16,6 @@ namespace lut {
 namespace {
 
 constexpr long kMaxFrames = 10'000'000;
-
-bool exists(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0;
-}
 
 // The placeholder starting at i, if any: its length and padding.
 bool placeholderAt(const std::string& s, std::size_t i, std::size_t& len, int& padding) {
@@ -93,7 +89,7 @@ std::optional<long> FramePattern::frameOf(const std::string& p) const {
 }
 
 std::optional<FramePattern> parseFramePattern(const std::string& path) {
-    if (exists(path))
+    if (os::exists(path))
         return std::nullopt;
     // Only the file name may hold the placeholder.
     const std::size_t nameStart =
@@ -153,15 +149,16 @@ std::vector<long> parseFrameRange(const std::string& text) {
 
 std::vector<long> findFrames(const FramePattern& pattern) {
     std::vector<long> frames;
-    const fs::path folder = fs::path(pattern.prefix).parent_path();
+    const fs::path folder = os::toPath(pattern.prefix).parent_path();
+    // Compare as the pattern spells the folder (its separators too).
+    const std::size_t cut = pattern.prefix.find_last_of(os::pathSeparators());
+    const std::string spelled = cut == std::string::npos ? "" : pattern.prefix.substr(0, cut + 1);
     std::error_code ec;
     const fs::path dir = folder.empty() ? fs::path(".") : folder;
     for (const auto& e : fs::directory_iterator(dir, ec)) {
         if (!e.is_regular_file(ec))
             continue;
-        // Compare as the pattern spells the folder.
-        const std::string name =
-            folder.empty() ? e.path().filename().string() : (folder / e.path().filename()).string();
+        const std::string name = spelled + os::fromPath(e.path().filename());
         if (const auto f = pattern.frameOf(name))
             frames.push_back(*f);
     }

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/io/InputFile.h"
 
+#include "lut/os/Files.h"
+#include "lut/os/Memory.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <utility>
 
 namespace lut {
@@ -15,22 +14,25 @@ namespace lut {
 namespace {
 
 // "a FIFO", "a directory", ... for anything but a regular file.
-const char* kindOf(mode_t mode) {
-    if (S_ISFIFO(mode))
+const char* kindOf(os::FileType type) {
+    switch (type) {
+    case os::FileType::Fifo:
         return "a FIFO";
-    if (S_ISSOCK(mode))
+    case os::FileType::Socket:
         return "a socket";
-    if (S_ISDIR(mode))
+    case os::FileType::Directory:
         return "a directory";
-    if (S_ISCHR(mode))
+    case os::FileType::CharacterDevice:
         return "a character device";
-    if (S_ISBLK(mode))
+    case os::FileType::BlockDevice:
         return "a block device";
-    return "not a regular file";
+    default:
+        return "not a regular file";
+    }
 }
 
-[[noreturn]] void refuse(const std::string& path, mode_t mode) {
-    const char* kind = kindOf(mode);
+[[noreturn]] void refuse(const std::string& path, os::FileType type) {
+    const char* kind = kindOf(type);
     if (std::strcmp(kind, "not a regular file") == 0)
         throw Error(path + ": is not a regular file");
     throw Error(path + ": is " + kind + ", not a regular file");
@@ -41,7 +43,7 @@ public:
     explicit Fd(int fd) : m_fd(fd) {}
     ~Fd() {
         if (m_fd >= 0)
-            ::close(m_fd);
+            os::closeFile(m_fd);
     }
     Fd(const Fd&) = delete;
     Fd& operator=(const Fd&) = delete;
@@ -55,23 +57,19 @@ private:
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
 constexpr std::size_t kHugeThreshold = std::size_t(1) << 20;
 
-bool sameTime(const struct stat& a, const struct stat& b) {
-    return a.st_mtim.tv_sec == b.st_mtim.tv_sec && a.st_mtim.tv_nsec == b.st_mtim.tv_nsec;
-}
-
 } // namespace
 
 void checkRegularInput(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
-        throw Error(path + ": cannot open: " + std::strerror(errno));
-    if (!S_ISREG(st.st_mode))
-        refuse(path, st.st_mode);
+    os::FileInfo st;
+    if (const int err = os::fileInfo(path, st); err != 0)
+        throw Error(path + ": cannot open: " + std::strerror(err));
+    if (st.type != os::FileType::Regular)
+        refuse(path, st.type);
 }
 
 FileBytes::~FileBytes() {
     if (m_mapped)
-        ::munmap(m_data, m_capacity);
+        os::freePages(m_data, m_capacity);
     else
         delete[] m_data;
 }
@@ -94,19 +92,16 @@ FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
 
 FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const char* limitName) {
     checkRegularInput(path);
-    const Fd fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC));
+    // Opened without waiting for a writer: a path swapped for a FIFO in between cannot block.
+    const Fd fd(os::openFile(path, os::OpenFor::Read));
     if (fd.get() < 0)
         throw Error(path + ": cannot open: " + std::strerror(errno));
-    struct stat before {};
-    if (::fstat(fd.get(), &before) != 0)
-        throw Error(path + ": cannot read: " + std::strerror(errno));
-    if (!S_ISREG(before.st_mode))
-        refuse(path, before.st_mode);
-    // Regular files ignore O_NONBLOCK; cleared anyway so reads behave as documented.
-    const int flags = ::fcntl(fd.get(), F_GETFL);
-    if (flags >= 0)
-        ::fcntl(fd.get(), F_SETFL, flags & ~O_NONBLOCK);
-    const auto size = static_cast<std::uint64_t>(before.st_size);
+    os::FileInfo before;
+    if (const int err = os::openFileInfo(fd.get(), before); err != 0)
+        throw Error(path + ": cannot read: " + std::strerror(err));
+    if (before.type != os::FileType::Regular)
+        refuse(path, before.type);
+    const std::uint64_t size = before.size;
     if (size > maxBytes)
         throw LimitError(path + ": file is " + std::to_string(size) + " bytes, over the limit of " +
                          std::to_string(maxBytes) + " bytes" +
@@ -117,10 +112,9 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
     const std::size_t want = static_cast<std::size_t>(size) + 1;
     if (want >= kHugeThreshold) {
         const std::size_t len = (want + kHugePage - 1) / kHugePage * kHugePage;
-        void* p = ::mmap(nullptr, len, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (p == MAP_FAILED)
+        void* p = os::allocatePages(len);
+        if (!p)
             throw outOfMemory(path, "reading the file", want);
-        ::madvise(p, len, MADV_HUGEPAGE);
         out.m_data = static_cast<char*>(p);
         out.m_capacity = len;
         out.m_mapped = true;
@@ -130,7 +124,7 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
     }
     std::size_t done = 0;
     while (done < want) {
-        const ssize_t n = ::read(fd.get(), out.m_data + done, want - done);
+        const std::ptrdiff_t n = os::readBytes(fd.get(), out.m_data + done, want - done);
         if (n < 0 && errno == EINTR)
             continue;
         if (n < 0)
@@ -139,15 +133,14 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
             break;
         done += static_cast<std::size_t>(n);
     }
-    struct stat after {};
-    if (::fstat(fd.get(), &after) != 0)
-        throw Error(path + ": cannot read: " + std::strerror(errno));
-    if (done != size || after.st_size != before.st_size || !sameTime(before, after))
+    os::FileInfo after;
+    if (const int err = os::openFileInfo(fd.get(), after); err != 0)
+        throw Error(path + ": cannot read: " + std::strerror(err));
+    if (done != size || after.size != before.size || after.modifiedNs != before.modifiedNs)
         throw Error(path + ": the file changed while being read (" +
-                    (after.st_size != before.st_size
-                         ? std::to_string(size) + " bytes when opened, " +
-                               std::to_string(after.st_size) + " bytes now)"
-                         : std::string("written to by another program)")));
+                    (after.size != before.size ? std::to_string(size) + " bytes when opened, " +
+                                                     std::to_string(after.size) + " bytes now)"
+                                               : std::string("written to by another program)")));
     out.m_size = done;
     return out;
 }

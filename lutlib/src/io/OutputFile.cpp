@@ -2,31 +2,30 @@
 #include "lut/io/OutputFile.h"
 
 #include "lut/io/AtomicFile.h"
+#include "lut/os/Files.h"
 
 #include <cerrno>
-#include <climits>
 #include <cstring>
-#include <fcntl.h>
 #include <string_view>
-#include <unistd.h>
 
 namespace lut {
 
 namespace {
 
+constexpr int kStdout = 1;
+constexpr int kStderr = 2;
+
 // The descriptor a path names when it is one of the process's own streams (/dev/stdout,
 // /dev/fd/1, /proc/self/fd/1): reopening those would start at offset 0 of whatever the stream is
 // (a file the shell opened with >>, say), so they are written through the open descriptor.
 int ownStreamFd(const std::string& path) {
-    std::string p = path;
-    char buf[PATH_MAX];
-    const ssize_t n = ::readlink(path.c_str(), buf, sizeof buf - 1);
-    if (n > 0)
-        p.assign(buf, static_cast<std::size_t>(n));
+    std::string p = os::linkTarget(path);
+    if (p.empty())
+        p = path;
     if (p == "/dev/stdout")
-        return STDOUT_FILENO;
+        return kStdout;
     if (p == "/dev/stderr")
-        return STDERR_FILENO;
+        return kStderr;
     for (const char* prefix : {"/proc/self/fd/", "/dev/fd/"}) {
         const std::string_view pre(prefix);
         if (p.size() > pre.size() && p.compare(0, pre.size(), pre) == 0) {
@@ -51,7 +50,7 @@ OutputFile::OutputFile(const OutputTarget& target) : m_target(target) {
         return;
     }
     if (m_target.kind == OutputKind::Stdout) {
-        m_fd = STDOUT_FILENO;
+        m_fd = kStdout;
         return;
     }
     if (m_target.kind == OutputKind::Special) {
@@ -60,14 +59,14 @@ OutputFile::OutputFile(const OutputTarget& target) : m_target(target) {
             return;
         }
         // No O_CREAT, no O_TRUNC: a device or FIFO is written as it is.
-        m_fd = ::open(m_target.writePath.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+        m_fd = os::openFile(m_target.writePath, os::OpenFor::WriteInPlace);
         if (m_fd < 0)
             throw Error(m_target.path + ": cannot write: " + std::strerror(errno));
         m_ownFd = true;
         return;
     }
     m_atomic = std::make_unique<AtomicFile>(m_target.writePath);
-    m_fd = ::open(m_atomic->tempPath().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    m_fd = os::openFile(m_atomic->tempPath(), os::OpenFor::WriteInPlace); // created empty
     if (m_fd < 0)
         throw Error(m_target.path + ": cannot write: " + std::strerror(errno));
     m_ownFd = true;
@@ -75,7 +74,7 @@ OutputFile::OutputFile(const OutputTarget& target) : m_target(target) {
 
 OutputFile::~OutputFile() {
     if (m_ownFd && m_fd >= 0)
-        ::close(m_fd);
+        os::closeFile(m_fd);
     // m_atomic's destructor removes the temporary file unless it was committed.
 }
 
@@ -87,7 +86,7 @@ const std::string& OutputFile::tempPath() const {
 void OutputFile::fail(const std::string& reason) {
     m_done = true;
     if (m_ownFd && m_fd >= 0) {
-        ::close(m_fd);
+        os::closeFile(m_fd);
         m_fd = -1;
     }
     m_atomic.reset(); // removes the temporary file
@@ -111,10 +110,10 @@ void OutputFile::checkedWrite(const void* data, std::size_t bytes, std::int64_t 
     const char* p = static_cast<const char*>(data);
     std::size_t done = 0;
     while (done < bytes) {
-        const ssize_t n =
-            offset < 0 ? ::write(m_fd, p + done, bytes - done)
-                       : ::pwrite(m_fd, p + done, bytes - done,
-                                  static_cast<off_t>(offset + static_cast<std::int64_t>(done)));
+        const std::ptrdiff_t n = offset < 0
+                                     ? os::writeBytes(m_fd, p + done, bytes - done)
+                                     : os::writeBytesAt(m_fd, p + done, bytes - done,
+                                                        static_cast<std::uint64_t>(offset) + done);
         if (n < 0) {
             if (errno == EINTR)
                 continue;
@@ -127,19 +126,16 @@ void OutputFile::checkedWrite(const void* data, std::size_t bytes, std::int64_t 
 }
 
 // A regular output's bytes are handed to the disk as they come, every 8 MiB (Linux's
-// sync_file_range, which starts the writeback and does not wait for it): commit()'s fsync then
-// waits for the last few megabytes only instead of the whole file. A 50 MB frame's final fsync
-// took 35-67 ms after plain writes, 2-10 ms after these (bench/RESULTS.md, issue 27). Advisory:
-// an error here shows again at the fsync, which is what decides.
+// sync_file_range, which starts the writeback and does not wait for it: os::startWriteback):
+// commit()'s fsync then waits for the last few megabytes only instead of the whole file. A 50 MB
+// frame's final fsync took 35-67 ms after plain writes, 2-10 ms after these (bench/RESULTS.md,
+// issue 27). Advisory: an error here shows again at the fsync, which is what decides.
 void OutputFile::startWriteback() {
-#if defined(__linux__)
     constexpr std::uint64_t kStep = std::uint64_t(8) << 20;
     if (!m_atomic || m_fd < 0 || m_size < m_writebackFrom + kStep)
         return;
-    ::sync_file_range(m_fd, static_cast<off_t>(m_writebackFrom),
-                      static_cast<off_t>(m_size - m_writebackFrom), SYNC_FILE_RANGE_WRITE);
+    os::startWriteback(m_fd, m_writebackFrom, m_size - m_writebackFrom);
     m_writebackFrom = m_size;
-#endif
 }
 
 void OutputFile::write(const void* data, std::size_t bytes) {
@@ -177,16 +173,16 @@ void OutputFile::commit(const std::function<void(const std::string&)>& verify) {
         if (m_ownFd) {
             const int fd = m_fd;
             m_fd = -1;
-            if (::close(fd) != 0 && errno != EINTR)
+            if (os::closeFile(fd) != 0 && errno != EINTR)
                 throw Error(m_target.path + ": cannot write: " + std::strerror(errno));
         }
         return;
     }
-    if (::fsync(m_fd) != 0 && errno != EINVAL)
+    if (os::syncFile(m_fd) != 0 && errno != EINVAL)
         fail(std::strerror(errno));
     const int fd = m_fd;
     m_fd = -1;
-    if (::close(fd) != 0)
+    if (os::closeFile(fd) != 0)
         fail(std::strerror(errno));
     if (verify) {
         try {

@@ -3,16 +3,14 @@
 
 #include "lut/io/AtomicFile.h"
 #include "lut/io/ProtectInputs.h"
+#include "lut/os/Files.h"
+#include "lut/os/Paths.h"
 
 #include <cerrno>
-#include <climits>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <set>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -25,18 +23,18 @@ namespace {
 
 bool underDevOrProc(const std::string& path) {
     std::error_code ec;
-    const std::string abs = fs::absolute(path, ec).lexically_normal().string();
+    const std::string abs = os::fromPath(fs::absolute(os::toPath(path), ec).lexically_normal());
     return abs.rfind("/dev/", 0) == 0 || abs.rfind("/proc/", 0) == 0;
 }
 
 std::string folderOf(const std::string& path) {
-    const fs::path parent = fs::path(path).parent_path();
-    return parent.empty() ? std::string(".") : parent.string();
+    const fs::path parent = os::toPath(path).parent_path();
+    return parent.empty() ? std::string(".") : os::fromPath(parent);
 }
 
 std::string keyOf(const std::string& path) {
     std::error_code ec;
-    return fs::absolute(path, ec).lexically_normal().string();
+    return os::fromPath(fs::absolute(os::toPath(path), ec).lexically_normal());
 }
 
 std::mutex& exclusiveMutex() {
@@ -71,36 +69,34 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
     if (isStdStream(path)) {
         // The shell may have pointed standard output at an input (`-o - 1<> lut.png`): a
         // regular file that is an input is refused like any output that is an input.
-        struct stat out {};
-        if (::fstat(STDOUT_FILENO, &out) == 0 && S_ISREG(out.st_mode))
+        os::FileInfo out;
+        if (os::openFileInfo(1, out) == 0 && out.type == os::FileType::Regular)
             for (const auto& in : inputs) {
-                struct stat st {};
-                if (!in.empty() && !isStdStream(in) && ::stat(in.c_str(), &st) == 0 &&
-                    st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+                os::FileInfo st;
+                if (!in.empty() && !isStdStream(in) && os::fileInfo(in, st) == 0 &&
+                    st.device == out.device && st.inode == out.inode)
                     throw Error("-: standard output is the same file as input " + in +
                                 "; refusing to overwrite it");
             }
         t.kind = OutputKind::Stdout;
         return t;
     }
-    if (path.back() == '/')
+    if (os::isPathSeparator(path.back()))
         throw Error(path + ": is a folder name, not a file");
     for (const auto& in : inputs)
         if (!in.empty() && !isStdStream(in))
             checkNotSameFile(in, path);
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        const int err = errno;
+    os::FileInfo st;
+    if (const int err = os::fileInfo(path, st); err != 0) {
         if (err != ENOENT)
             throw Error(path + ": cannot write: " + std::strerror(err));
-        struct stat lst {};
-        if (::lstat(path.c_str(), &lst) == 0) // a dangling symbolic link: never write through it
+        os::FileInfo lst;
+        if (os::linkInfo(path, lst) == 0) // a dangling symbolic link: never write through it
             throw Error(path + ": is a symbolic link to a missing file; not written");
         if (underDevOrProc(path))
             throw Error(path + ": no such device");
         const std::string dir = folderOf(path);
-        struct stat dst {};
-        if (::stat(dir.c_str(), &dst) != 0 || !S_ISDIR(dst.st_mode))
+        if (!os::isDirectory(dir))
             throw Error(path + ": folder " + dir + " does not exist");
         t.kind = OutputKind::NewFile;
         if (rule != ExistingOutput::Replace) {
@@ -109,9 +105,9 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
         }
         return t;
     }
-    if (S_ISDIR(st.st_mode))
+    if (st.type == os::FileType::Directory)
         throw Error(path + ": is a folder, not a file");
-    if (!S_ISREG(st.st_mode) || underDevOrProc(path)) {
+    if (st.type != os::FileType::Regular || underDevOrProc(path)) {
         t.kind = OutputKind::Special;
         return t;
     }
@@ -119,11 +115,10 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
         throw OutputExistsError(path);
     t.kind = OutputKind::ExistingFile;
     t.skip = rule == ExistingOutput::Skip;
-    struct stat lst {};
-    if (::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
-        char buf[PATH_MAX];
-        if (::realpath(path.c_str(), buf))
-            t.writePath = buf; // replace the file the link names; the link stays
+    os::FileInfo lst;
+    if (os::linkInfo(path, lst) == 0 && lst.type == os::FileType::SymbolicLink) {
+        if (std::string real = os::realPath(path); !real.empty())
+            t.writePath = real; // replace the file the link names; the link stays
     }
     return t;
 }

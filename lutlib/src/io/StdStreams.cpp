@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/io/StdStreams.h"
 
+#include "lut/os/Files.h"
+
 #include <cerrno>
 #include <cstring>
-#include <unistd.h>
 
 namespace lut {
 
@@ -33,7 +34,7 @@ std::string readStandardInput(std::size_t maxBytes,
         }
     };
     for (;;) {
-        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+        const std::ptrdiff_t n = os::readBytes(0, buf, sizeof buf); // standard input
         if (n < 0) {
             if (errno == EINTR)
                 continue;

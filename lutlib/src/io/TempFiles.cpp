@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/io/TempFiles.h"
 
+#include "lut/os/Files.h"
+
 #include <atomic>
 #include <cstdint>
 #include <cstring>
-#include <unistd.h>
 
 namespace lut {
 
@@ -43,9 +44,9 @@ void removeTempFilesInFlight() noexcept {
             if (!p || p[0] != (pass == 0 ? 'f' : 'd'))
                 continue;
             if (pass == 0)
-                ::unlink(p + 1);
+                os::removeFile(p + 1);
             else
-                ::rmdir(p + 1);
+                os::removeFolder(p + 1);
         }
     r.walking.fetch_sub(1);
 }

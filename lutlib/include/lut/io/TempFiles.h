@@ -2,9 +2,10 @@
 #pragma once
 // Temporary files in flight and interrupts, in one place. Every temporary file (AtomicFile's
 // hidden sibling of an output, a private scratch folder) is listed here while it lives, so a
-// SIGINT/SIGTERM handler can remove them all with async-signal-safe calls. The library installs
-// no handler and never exits: the program does (lutkit's CommandLine), calling
-// removeTempFilesInFlight() and markInterrupted() from its handler. After markInterrupted(),
+// SIGINT/SIGTERM handler (Windows: the console's Ctrl-C handler; lut/os/Signals.h) can remove
+// them all with async-signal-safe calls. The library installs no handler and never exits: the
+// program does (lutkit's CommandLine), calling removeTempFilesInFlight() and markInterrupted()
+// from its handler. After markInterrupted(),
 // AtomicFile refuses to start or commit a write (InterruptedError), so a file is either complete
 // under its final name or gone.
 #include "lut/Error.h"
@@ -20,7 +21,8 @@ public:
 };
 
 // Removes every registered temporary file, then every registered temporary folder (empty by
-// then). Async-signal-safe: only atomic loads, unlink() and rmdir(). Safe to call repeatedly.
+// then). Async-signal-safe: only atomic loads, os::removeFile and os::removeFolder (unlink() and
+// rmdir()). Safe to call repeatedly.
 void removeTempFilesInFlight() noexcept;
 
 // Records that signal sig arrived (async-signal-safe). interrupted() is true from then on.
