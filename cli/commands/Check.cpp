@@ -148,9 +148,8 @@ std::vector<std::string> picturePaths(const CheckCommandOptions& o) {
     std::map<std::string, int> used;
     for (std::size_t i = 0; i < o.inputs.size(); ++i) {
         const fs::path in = os::toPath(o.inputs[i]);
-        std::string name =
-            stems[os::fromPath(in.stem())] > 1 ? os::fromPath(in.filename())
-                                                   : os::fromPath(in.stem());
+        std::string name = stems[os::fromPath(in.stem())] > 1 ? os::fromPath(in.filename())
+                                                              : os::fromPath(in.stem());
         if (const int n = ++used[name]; n > 1 || names[os::fromPath(in.filename())] > 1)
             name += "-" + std::to_string(n);
         paths[i] = os::fromPath(os::toPath(o.report) / os::toPath(name + ".check.png"));

@@ -122,7 +122,8 @@ TEST_P(OcioBake, WritesAndReadsBackWithinTheFormatsPrecision) {
         file.cube = gradeLut(n);
         lut::formats::writeLut(path, file, {}, c.format);
         const lut::LutFile back = lut::formats::readLut(path);
-        EXPECT_EQ(back.format, "ocio");
+        // lutkit's own reader takes .spi3d (Spi3dReadsAsOpenColorIOReadsIt), OpenColorIO the rest.
+        EXPECT_EQ(back.format, std::string(c.format) == "spi3d" ? "spi3d" : "ocio");
         ASSERT_TRUE(back.cube);
         ASSERT_EQ(back.cube->size(), n) << c.format;
         EXPECT_LE(maxEntryDiff(*file.cube, *back.cube), c.tolerance) << c.format << " size " << n;

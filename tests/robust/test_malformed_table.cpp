@@ -290,8 +290,8 @@ const std::vector<Defect>& table() {
          "garbage.3dl: OpenColorIO cannot read it: flame: Error parsing .3dl file. Does not "
          "appear to contain a valid shaper LUT or a 3D LUT."},
         {"bad-header.spi3d", text("SPILUT 1.0\n3 3\n2 2\n0 0 0 0 0 0\n"),
-         "bad-header.spi3d: OpenColorIO cannot read it: spi3d: Error parsing .spi3d file. Error "
-         "while reading LUT size. Found: '2 2'."},
+         // lutkit's own reader: the place, as in the editions without OpenColorIO.
+         "bad-header.spi3d:3:4: expected the lattice size (an integer)"},
         {"garbage.csp", text("CSPLUTV100\n3D\nnonsense\n"),
          "garbage.csp: OpenColorIO cannot read it: cinespace: Prelut does not specify valid "
          "dimension size on channel '0: 'nonsense'"},

@@ -107,9 +107,11 @@ bool startsWith(const jpeg_saved_marker_ptr m, const char* tag, std::size_t n) {
     return m->data_length >= n && std::memcmp(m->data, tag, n) == 0;
 }
 
-// OpenImageIO's names for a file's chroma subsampling (jpeg:subsampling); "" for another.
+// OpenImageIO's names for a file's chroma subsampling (jpeg:subsampling), from the first three
+// components' sampling factors as OpenImageIO reads them (a CMYK file's too); "" for another or
+// for fewer than three components.
 std::string subsamplingOf(const jpeg_decompress_struct& c) {
-    if (c.num_components != 3)
+    if (c.num_components < 3)
         return {};
     const jpeg_component_info* k = c.comp_info;
     for (int i = 1; i < 3; ++i)

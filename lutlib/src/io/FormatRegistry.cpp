@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <new>
+#include <optional>
 
 namespace lut {
 
@@ -156,15 +157,24 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
         if (candidates.size() == 1)
             return candidates.front()->read(path, options);
         // Several formats claim the extension: the first that succeeds wins; otherwise report
-        // all.
+        // all, unless one of them recognised the file and says where in it it failed (a
+        // ParseError with a line): that reader's line alone, the same in every edition (the
+        // portable ones lack OpenColorIO's reader).
         std::string reasons;
+        std::optional<ParseError> placed;
         for (const Format* f : candidates) {
             try {
                 return f->read(path, options);
+            } catch (const ParseError& e) {
+                if (!placed && e.line() > 0)
+                    placed = e;
+                reasons += (reasons.empty() ? "" : "; ") + f->name() + ": " + e.what();
             } catch (const Error& e) {
                 reasons += (reasons.empty() ? "" : "; ") + f->name() + ": " + e.what();
             }
         }
+        if (placed)
+            throw *placed;
         throw Error(path + ": no format could read it (" + reasons + ")");
     } catch (const std::bad_alloc&) {
         // Readers name the size they asked for (lut::allocating); this is for any other

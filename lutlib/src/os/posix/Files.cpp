@@ -37,8 +37,7 @@ void fill(const struct stat& st, FileInfo& info) {
     info.size = static_cast<std::uint64_t>(st.st_size);
     info.modifiedNs =
         static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
-    info.changedNs =
-        static_cast<std::int64_t>(st.st_ctim.tv_sec) * 1000000000 + st.st_ctim.tv_nsec;
+    info.changedNs = static_cast<std::int64_t>(st.st_ctim.tv_sec) * 1000000000 + st.st_ctim.tv_nsec;
     info.device = static_cast<std::uint64_t>(st.st_dev);
     info.inode = static_cast<std::uint64_t>(st.st_ino);
     info.permissions = static_cast<unsigned>(st.st_mode & 07777);
