@@ -92,7 +92,9 @@ set(_isal_files igzip/igzip.c igzip/hufftables_c.c igzip/igzip_base.c igzip/igzi
   igzip/igzip_base_aliases.c igzip/proc_heap_base.c igzip/huff_codes.c igzip/igzip_inflate.c
   crc/crc_base.c crc/crc_base_aliases.c crc/crc64_base.c)
 list(TRANSFORM _isal_files PREPEND "${LUTKIT_ISAL_SRC}/")
-add_library(lutkit_igzip STATIC ${_isal_files})
+# lutkit_isal_level_state_bytes: the level buffer's state size, so a 32-bit build (WebAssembly)
+# compresses in the 64-bit build's blocks (PngWriter.cpp).
+add_library(lutkit_igzip STATIC ${_isal_files} "${PROJECT_SOURCE_DIR}/third_party/isal/lutkit_isal_level.c")
 lutkit_third_party_target(lutkit_igzip)
 target_include_directories(lutkit_igzip PRIVATE ${LUTKIT_ISAL_SRC}/include ${LUTKIT_ISAL_SRC}/igzip ${LUTKIT_ISAL_SRC})
 # The header lutkit includes, <isa-l/igzip_lib.h>, from these sources (not the system's).

@@ -39,6 +39,10 @@ def normalise(text):
     number = r"[0-9]+(\.[0-9]+)?(e[+-][0-9]+)?"
     text = re.sub(number + r" ?ms\b", "N ms", text)
     text = re.sub(number + r" s\b", "N s", text)
+    text = re.sub(r'"seconds": ' + number, '"seconds": N', text)
+    # A step that took less than the browser's clock tick measures 0 s, and a time of 0 is not
+    # printed (ErrorStats::str): the time's presence is the clock's, not lutkit's.
+    text = text.replace(", N ms", "")
     return text
 
 
@@ -145,7 +149,17 @@ class SameBytes(unittest.TestCase):
         for src in ("look.cube", "shaper.cube", "graded.png"):
             for out in outs:
                 self.same(["convert", src] + out, i.pick(src))
-        self.same(["convert", "look.cube", "out.3dl"], i.pick("look.cube"), expect_exit=1)
+        # What only OpenColorIO writes: the native CLI writes it, this edition refuses it in one
+        # line naming the edition, and writes nothing.
+        n = self.native.run(["convert", "look.cube", "out.3dl"], i.pick("look.cube"))
+        self.assertEqual(n.exit_code, 0, n.stderr)
+        w = self.web.run(["convert", "look.cube", "out.3dl"], i.pick("look.cube"))
+        self.assertEqual(w.exit_code, 1, w.stderr)
+        self.assertEqual(w.files, {})
+        self.assertEqual(len(w.stderr.strip().splitlines()), 1, w.stderr)
+        self.assertIn("out.3dl", w.stderr)
+        self.assertIn("OpenColorIO", w.stderr)
+        self.assertIn("for the browser", w.stderr)
 
     def test_every_command(self):
         i = self.inputs

@@ -14,9 +14,8 @@ set -uo pipefail
 # A case listed here is still run and compared: when it differs, it is reported with how much
 # (tests/windows/diffstat.py) and does not fail the stage; when it matches, the stage says so, so
 # the line can go. Remove a line once its reason is gone.
-#   The math layer: MinGW-w64's libm (pow, exp, log, cbrt, sin, cos, powf ...) rounds some results
-#   differently from glibc's; lutkit's deterministic math layer (the lead's, in progress) will make
-#   them the same. Until then the game's model, preview and match may differ in the last bits.
+#   (none: the one reason there was, MinGW-w64's libm rounding differently from glibc's, is gone
+#   since every build calls musl's maths compiled in: lut/Math.h, docs/portable.md)
 KNOWN_DIVERGENT=(
 )
 

@@ -10,3 +10,9 @@
 #include "lutkit_prefix.h"
 #endif
 #include <isa-l/igzip_lib.h>
+
+#include <cstddef>
+
+// The bytes of the level buffer ISA-L's state takes before the tokens of a block, for an igzip
+// level (third_party/isal/lutkit_isal_level.c): smaller on a 32-bit machine.
+extern "C" std::size_t lutkit_isal_level_state_bytes(int level);

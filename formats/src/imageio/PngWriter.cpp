@@ -31,6 +31,9 @@ constexpr unsigned char kSignature[8] = {137, 'P', 'N', 'G', 13, 10, 26, 10};
 constexpr std::size_t kStripBytes = std::size_t(1) << 20; // deflated as one job
 constexpr std::size_t kWindow = 32768;
 constexpr int kDefaultLevel = 3;
+// lutkit_isal_level_state_bytes(1) and (2) on x86-64 (third_party/isal/lutkit_isal_level.c).
+constexpr std::size_t kIsalLevel1State64 = 21096;
+constexpr std::size_t kIsalLevel2State64 = 70248;
 
 void putBe32(unsigned char* p, std::uint32_t v) {
     p[0] = static_cast<unsigned char>(v >> 24);
@@ -91,7 +94,13 @@ Strip deflateStripIsal(const std::vector<unsigned char>& data,
     const int igzipLevel = level <= 1 ? 1 : 2;
     // Neither is zero-filled: isal_deflate_init sets up the stream's state and the level buffer's
     // hash tables (as ISA-L's own tools allocate them: malloc).
-    UninitBytes levelBuf(igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT : ISAL_DEF_LVL2_DEFAULT);
+    // The level buffer holds ISA-L's state, then the tokens of a block: a block ends when that
+    // room is full. The state holds pointers, so on a 32-bit machine (WebAssembly) it is smaller
+    // and the same buffer would hold a few more tokens, ending blocks elsewhere: other bytes than
+    // the native build's. The buffer is sized so the token room is the 64-bit build's everywhere.
+    const std::size_t state64 = igzipLevel == 1 ? kIsalLevel1State64 : kIsalLevel2State64;
+    UninitBytes levelBuf((igzipLevel == 1 ? ISAL_DEF_LVL1_DEFAULT : ISAL_DEF_LVL2_DEFAULT) -
+                         state64 + lutkit_isal_level_state_bytes(igzipLevel));
     std::unique_ptr<isal_zstream> z(new isal_zstream); // ~ 100 KiB: not on a thread's stack
     isal_deflate_init(z.get());
     z->level = static_cast<std::uint32_t>(igzipLevel);
