@@ -111,9 +111,13 @@ void printText(const std::string& path, const CheckReport& r, CheckStatus verdic
     std::snprintf(head, sizeof head, " (%s, %zu finding%s, %.2f s)", r.description.c_str(),
                   r.findings.size() + r.findingsLeftOut,
                   r.findings.size() + r.findingsLeftOut == 1 ? "" : "s", r.seconds);
-    std::cout << path << ": " << toString(verdict) << head << "\n";
-    if (v.quiet)
+    if (v.quiet) { // nothing but warnings and errors (Notes.h): a verdict other than pass
+        if (verdict != CheckStatus::Pass)
+            std::cerr << "lutkit: " << (verdict == CheckStatus::Fail ? "error: " : "warning: ")
+                      << printable(path) << ": " << toString(verdict) << head << "\n";
         return;
+    }
+    std::cout << path << ": " << toString(verdict) << head << "\n";
     for (const CheckSummary& c : r.checks) {
         const std::string name = toString(c.kind);
         std::cout << "  " << name << std::string(15 - name.size(), ' ')
@@ -148,9 +152,8 @@ std::vector<std::string> picturePaths(const CheckCommandOptions& o) {
     std::map<std::string, int> used;
     for (std::size_t i = 0; i < o.inputs.size(); ++i) {
         const fs::path in = os::toPath(o.inputs[i]);
-        std::string name =
-            stems[os::fromPath(in.stem())] > 1 ? os::fromPath(in.filename())
-                                                   : os::fromPath(in.stem());
+        std::string name = stems[os::fromPath(in.stem())] > 1 ? os::fromPath(in.filename())
+                                                              : os::fromPath(in.stem());
         if (const int n = ++used[name]; n > 1 || names[os::fromPath(in.filename())] > 1)
             name += "-" + std::to_string(n);
         paths[i] = os::fromPath(os::toPath(o.report) / os::toPath(name + ".check.png"));
