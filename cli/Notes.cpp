@@ -56,7 +56,7 @@ void printDiagnostic(std::ostream& os, const Diagnostic& d, const Verbosity& v,
                      const std::string& prefix) {
     if (!isShown(d, v))
         return;
-    if (v.quiet) // the report is silenced: the warnings go to standard error
+    if (v.quiet && &os != &std::cerr) // the report is silenced: the warnings go to stderr
         std::cerr << (d.path.empty() ? "lutkit: " : "") << printable(d.str()) << "\n";
     else
         os << prefix << printable(d.str()) << "\n";

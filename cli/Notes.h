@@ -56,11 +56,12 @@ void redirectReport(std::streambuf* to);
 bool isShown(const Diagnostic& d, const Verbosity& v);
 
 // Every shown diagnostic of diags as `prefix + d.str()`, one per line; under -q (warnings and
-// errors only) on standard error as "lutkit: " + d.str(), since the report is silenced.
+// errors only) a diagnostic meant for the report (os is not std::cerr) goes to standard error
+// instead, since the report is silenced.
 void printDiagnostics(std::ostream& os, const Diagnostics& diags, const Verbosity& v,
                       const std::string& prefix = "  ");
-// One diagnostic the same way (nothing when it is not shown); under -q a diagnostic that names
-// no file is said as "lutkit: " + d.str().
+// One diagnostic the same way (nothing when it is not shown); moved to standard error under -q,
+// as "lutkit: " + d.str() when it names no file.
 void printDiagnostic(std::ostream& os, const Diagnostic& d, const Verbosity& v,
                      const std::string& prefix = "  ");
 
