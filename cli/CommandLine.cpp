@@ -4,6 +4,7 @@
 #include "Drop.h"
 #include "Generators.h"
 #include "Interrupts.h"
+#include "Notes.h"
 #include "OptionTable.h"
 #include "OutOfMemory.h"
 #include "Suggest.h"
@@ -31,12 +32,16 @@ namespace lut::cli {
 
 namespace {
 
-// The subcommand's callback: the hook (or the real run function) with its exit code kept.
+// The subcommand's callback: the hook (or the real run function) with its exit code kept, its
+// report silenced by -q (Notes.h: the one place -q takes the report away).
 template <class Options>
 std::function<void(const Options&)> runner(const RunFn<Options>& hook, int (*real)(const Options&),
                                            int& exitCode) {
     RunFn<Options> run = hook ? hook : RunFn<Options>(real);
-    return [run, &exitCode](const Options& o) { exitCode = run(o); };
+    return [run, &exitCode](const Options& o) {
+        const QuietReport quiet(reportSilenced(o));
+        exitCode = run(o);
+    };
 }
 
 std::vector<std::string> commandNames(CLI::App& app) {
@@ -57,6 +62,43 @@ std::string positionalFiles(const std::vector<CLI::App*>& parsed) {
             for (const auto& r : o->results())
                 files += (files.empty() ? "" : ", ") + r;
     return files;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string s;
+    for (std::size_t i = 0; i < words.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+    return s;
+}
+
+// What to say about an unknown option `--name` of sub (lutkit never abbreviates options): that it
+// is ambiguous when it starts several long names or is one letter (`--v`: a short option takes
+// one dash), else the option it is nearly; "" when nothing is close.
+std::string unknownOptionAdvice(const CLI::App& sub, const std::string& name) {
+    std::vector<std::string> longs, started;
+    for (const CLI::Option* o : sub.get_options())
+        for (const auto& n : o->get_lnames()) {
+            if (o->get_group().empty()) // hidden: an old spelling
+                continue;
+            longs.push_back("--" + n);
+            if (longs.back().rfind(name, 0) == 0)
+                started.push_back(longs.back());
+        }
+    const std::string quoted = "'" + printable(name) + "'";
+    if (name.size() == 3) { // --v
+        const std::string shortName = "-" + name.substr(2);
+        const CLI::Option* s = sub.get_option_no_throw(shortName);
+        std::string msg =
+            quoted + " is ambiguous: a short option takes one dash (" +
+            (s ? shortName + " is " + s->get_name() : sub.get_name() + " has no " + shortName) +
+            "), a long one is written in full";
+        return msg + (started.empty() ? "" : " (" + joined(started) + ")");
+    }
+    if (started.size() > 1)
+        return quoted + " is ambiguous: " + joined(started) + " (options are written in full)";
+    if (const auto guess = closestWord(name, longs))
+        return "did you mean '" + *guess + "'?";
+    return {};
 }
 
 } // namespace
@@ -101,7 +143,8 @@ CommandLine::CommandLine(const RunHooks& hooks)
     auto* help = m_app.add_subcommand("help", "Show the help of lutkit or of one command");
     Choices topics{"command", "command", commands, {}, {}};
     topics.accept = [commands](const std::string& s) {
-        if (std::find(commands.begin(), commands.end(), s) == commands.end())
+        // `help help` is help's own help (its error said "Run 'lutkit help help'": a loop).
+        if (s != "help" && std::find(commands.begin(), commands.end(), s) == commands.end())
             throw Error("unknown command '" + s + "'");
     };
     help->add_option("COMMAND", m_helpTopic, "the command to explain")
@@ -228,19 +271,26 @@ int CommandLine::parseErrorExit(const CLI::ParseError& e) {
                           << "Run 'lutkit help " << sub->get_name() << "' for usage.\n";
                 return kExitUsage;
             }
-    std::cerr << commandPrefix() << printable(what) << "\n";
-    // An option name that is nearly one the command has: say which.
-    if (sub && dynamic_cast<const CLI::ExtrasError*>(&e)) {
-        std::vector<std::string> known;
-        for (const CLI::Option* o : sub->get_options())
-            for (const auto& n : o->get_lnames())
-                known.push_back("--" + n);
+    // An unknown long option makes CLI11 say only that a required one is missing when that
+    // one was misspelt (`apply --lutt x.cube`: "--lut is required"): name the typo instead.
+    if (sub && dynamic_cast<const CLI::RequiredError*>(&e))
         for (const std::string& extra : sub->remaining())
-            if (extra.rfind("--", 0) == 0)
-                if (const auto guess = closestWord(extra.substr(0, extra.find('=')), known))
-                    std::cerr << "lutkit " << sub->get_name() << ": did you mean '" << *guess
-                              << "'?\n";
-    }
+            if (extra.size() > 2 && extra.rfind("--", 0) == 0) {
+                const std::string name = extra.substr(0, extra.find('='));
+                std::cerr << commandPrefix() << printable(name) << ": no such option\n";
+                std::cerr << commandPrefix() << unknownOptionAdvice(*sub, name) << "\n";
+                std::cerr << "Run 'lutkit help " << sub->get_name() << "' for usage.\n";
+                return kExitUsage;
+            }
+    std::cerr << commandPrefix() << printable(what) << "\n";
+    // An option name that is nearly one the command has: say which, or that it is ambiguous.
+    if (sub && dynamic_cast<const CLI::ExtrasError*>(&e))
+        for (const std::string& extra : sub->remaining())
+            if (extra.size() > 2 && extra.rfind("--", 0) == 0)
+                if (const std::string advice =
+                        unknownOptionAdvice(*sub, extra.substr(0, extra.find('=')));
+                    !advice.empty())
+                    std::cerr << commandPrefix() << advice << "\n";
     std::cerr << "Run 'lutkit help" << (sub ? " " + sub->get_name() : "") << "' for usage.\n";
     return kExitUsage;
 }

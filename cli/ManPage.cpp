@@ -105,8 +105,26 @@ std::string manPage(const ProgramEntry& p) {
        << ".TP\n0\nSuccess.\n"
        << ".TP\n1\nBad input or failed operation (unreadable or malformed file, a limit hit, "
           "output refused because it is the input, write failed; in batch mode: any file "
-          "failed).\n"
+          "failed); check: a check failed; diff \\-\\-fail\\-above DE: the LUTs differ by "
+          "more than DE (as cmp exits 1 when files differ).\n"
        << ".TP\n2\nBad usage (unknown command or option, missing or invalid argument).\n"
+       << ".TP\n130\nInterrupted by SIGINT (Ctrl\\-C) or SIGTERM: unfinished outputs are "
+          "removed, nothing half\\-written is left; a batch first lists the files it "
+          "finished.\n"
+       << ".SH ENVIRONMENT\n"
+       << ".TP\n.B OCIO\nThe OpenColorIO config used when \\fB\\-\\-config\\fR names none "
+          "(colour spaces, looks, displays and views of \\-\\-from, \\-\\-to, bake ...); "
+          "unset or empty: lutkit's own, share/lutkit/ocio/config.ocio next to the "
+          "program.\n"
+       << ".TP\n.B LUTKIT_SIMD\nThe LUT kernels' instruction set: \\fBscalar\\fR (the "
+          "portable kernels) or \\fBavx2\\fR (on an AVX\\-512 CPU) asks for a lesser one "
+          "than the CPU has; the results are the same bits. Unset: the best the CPU has.\n"
+       << ".TP\n.B LUTKIT_IMAGEIO_MODULE\nThe path of the image module (lutkit_imageio.so, "
+          "OpenImageIO's formats: TIFF, JPEG, BMP and TGA writing ...), tried before the "
+          "program's folder and ../lib/lutkit/ next to it.\n"
+       << ".TP\n.B TMPDIR\nWhere standard input is kept while a format that only reads files "
+          "(through OpenColorIO or OpenImageIO) reads it; outputs are written beside "
+          "themselves, never here.\n"
        << ".SH FILES\n";
     // The installed docs (cmake/LutkitInstall.cmake); tests/install checks each path exists.
     const std::pair<const char*, const char*> docs[] = {
@@ -126,8 +144,10 @@ std::string manPage(const ProgramEntry& p) {
         os << ".TP\n"
            << roff(std::string(LUTKIT_DOC_DIR) + "/" + path) << "\n"
            << roff(what) << ".\n";
+    // Pages that exist: Debian's opencolorio-tools and openimageio-tools install these (the
+    // editor has no page: lutkit-editor --help and docs/editor.md).
     os << ".SH SEE ALSO\n"
-       << ".BR lutkit\\-editor (1)\n";
+       << ".BR ociobakelut (1),\n.BR ocioconvert (1),\n.BR oiiotool (1)\n";
     return os.str();
 }
 

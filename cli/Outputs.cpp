@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Outputs.h"
 
+#include "Notes.h"
+
 #include "lut/io/FileNames.h"
 #include "lut/os/Files.h"
 
@@ -26,7 +28,7 @@ void reserveStdoutForData() {
         return;
     done = true;
     std::cout.flush();
-    std::cout.rdbuf(std::cerr.rdbuf());
+    redirectReport(std::cerr.rdbuf()); // under -q: after the command (Notes.h)
 }
 
 void noteOutputPath(const std::string& path) {

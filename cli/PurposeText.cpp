@@ -97,7 +97,8 @@ std::string conversionJson(const std::optional<PurposeConversion>& c) {
 
 void warnPurposeFromContent(const std::string& path, const PurposeDecision& d,
                             const std::string& flag, const Verbosity& verbosity) {
-    if (d.source != PurposeSource::Content || verbosity.quiet)
+    (void)verbosity; // a warning: -q keeps it (Notes.h)
+    if (d.source != PurposeSource::Content)
         return;
     std::cerr << "lutkit: warning: " << path
               << ": taken as the game's LUT although it does not say so: " << d.evidence << "; "

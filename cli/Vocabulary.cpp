@@ -469,7 +469,8 @@ void addColorOptions(CLI::App& sub, formats::ColorSpec& t, ColorOptionSet set) {
 }
 
 void addVerbosity(CLI::App& sub, Verbosity& target, const std::string& verboseHelp) {
-    sub.add_flag("-q,--quiet", target.quiet, "no notes and no progress bar (warnings stay)");
+    sub.add_flag("-q,--quiet", target.quiet,
+                 "nothing but warnings and errors (no report, notes or progress bar)");
     if (!verboseHelp.empty())
         sub.add_flag("-v,--verbose", target.verbose, verboseHelp);
 }

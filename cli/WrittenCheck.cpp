@@ -14,7 +14,8 @@ namespace lut::cli {
 
 void checkWrittenLut(const std::string& path, const LutFile& written, const Verbosity& verbosity,
                      bool shownByGame) {
-    if (verbosity.quiet || (!written.cube && !written.shaper))
+    (void)verbosity; // -q keeps warnings (Notes.h)
+    if (!written.cube && !written.shaper)
         return;
     CheckOptions options;
     options.measureNeutral = false; // informational only, and the slowest part

@@ -4,6 +4,8 @@
 # editor, the image module, the man page and completions) and make it with CPack
 # (cmake/LutkitPackage.cmake): BUILD_DIR/lutkit_<version>_<arch>.deb, default build/ (the tree
 # ./run.sh and ./test.sh use). Then: sudo apt install ./build/lutkit_0.1.0_amd64.deb
+# `lintian --info build/lutkit_*.deb` reports no error (docs/packaging.md: what it checks, and the
+# two warnings that stay).
 # scripts/package.sh --windows [OUTDIR]   the Windows zip (docs/windows.md): lutkit.exe
 # (scripts/build-windows.sh), README-windows.txt (the README's Windows section), LICENSE.txt and
 # the neutral strips to grade, made by the Linux lutkit of build/:

@@ -94,10 +94,16 @@ int split(const AtlasCommandOptions& o) {
         throw UsageError("atlas split needs -o DIR/ (the folder for one strip per row)");
     const std::string& in = o.inputs.front();
     const std::filesystem::path dir = os::toPath(o.output.output);
-    if (!os::isDirectory(o.output.output))
+    if (os::exists(o.output.output) && !os::isDirectory(o.output.output))
         throw Error(o.output.output + ": not a folder (split writes one strip per row into it)");
     formats::registerBuiltinFormats();
     const formats::AtlasReading a = formats::readAtlas(in, o.inLayout);
+    if (!os::isDirectory(o.output.output)) { // made as apply -o DIR/ makes it, once the atlas read
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        if (ec)
+            throw Error(o.output.output + ": cannot create the folder: " + ec.message());
+    }
     printDiagnostics(std::cerr, a.diagnostics, o.verbosity, "lutkit: ");
     const std::string ext = extensionOf(in).empty() ? ".png" : extensionOf(in);
     const std::string base = stem(in);
@@ -189,7 +195,8 @@ CLI::App* setupAtlas(CLI::App& app, std::function<void(const AtlasCommandOptions
                     "build: the LUTs (any format), one row each, top to bottom; split and info: "
                     "atlas pictures")
         ->type_name("FILE");
-    addOutputOptions(*sub, o->output, "build: the atlas picture (.png); split: the folder");
+    addOutputOptions(*sub, o->output,
+                     "build: the atlas picture (.png); split: the folder (made when missing)");
     addLayout(*sub, "--layout", o->layout,
               "build: the rows' layout (default reshade, 1024x32 rows as MultiLUT.fx reads)");
     addLayout(*sub, "--in-layout", o->inLayout,

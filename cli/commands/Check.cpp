@@ -111,9 +111,13 @@ void printText(const std::string& path, const CheckReport& r, CheckStatus verdic
     std::snprintf(head, sizeof head, " (%s, %zu finding%s, %.2f s)", r.description.c_str(),
                   r.findings.size() + r.findingsLeftOut,
                   r.findings.size() + r.findingsLeftOut == 1 ? "" : "s", r.seconds);
-    std::cout << path << ": " << toString(verdict) << head << "\n";
-    if (v.quiet)
+    if (v.quiet) { // nothing but warnings and errors (Notes.h): a verdict other than pass
+        if (verdict != CheckStatus::Pass)
+            std::cerr << "lutkit: " << (verdict == CheckStatus::Fail ? "error: " : "warning: ")
+                      << printable(path) << ": " << toString(verdict) << head << "\n";
         return;
+    }
+    std::cout << path << ": " << toString(verdict) << head << "\n";
     for (const CheckSummary& c : r.checks) {
         const std::string name = toString(c.kind);
         std::cout << "  " << name << std::string(15 - name.size(), ' ')

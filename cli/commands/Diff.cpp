@@ -11,6 +11,7 @@
 
 #include "lut/formats/ImageIO.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/ops/Diff.h"
 #include "lut/ops/HeatMap.h"
 #include "lut/smash/PurposeOps.h"
@@ -138,14 +139,22 @@ int runDiff(const DiffCommandOptions& o) {
     }
     if (o.json) {
         printJson(o, report, heat.maxDeltaE, compared);
-        return kExitOk;
+    } else {
+        std::cout << "purpose  A: " << pa.text("--in-target")
+                  << "\n         B: " << pb.text("--in-target") << "\n";
+        printText(o, report, compared);
+        if (writeHeatmap)
+            std::cout << "wrote    " << o.heatmap << ": heat map, black = ΔE 0 to pale yellow = ΔE "
+                      << significant(heat.maxDeltaE) << " and above\n";
     }
-    std::cout << "purpose  A: " << pa.text("--in-target")
-              << "\n         B: " << pb.text("--in-target") << "\n";
-    printText(o, report, compared);
-    if (writeHeatmap)
-        std::cout << "wrote    " << o.heatmap << ": heat map, black = ΔE 0 to pale yellow = ΔE "
-                  << significant(heat.maxDeltaE) << " and above\n";
+    // --fail-above: the answer of a script (cmp-like), said even with -q.
+    if (o.failAbove && report.maxDeltaE > *o.failAbove) {
+        std::cout.flush();
+        std::cerr << "lutkit: error: " << printable(o.a) << " and " << printable(o.b)
+                  << " differ by up to ΔE2000 " << significant(report.maxDeltaE)
+                  << ", above --fail-above " << significant(*o.failAbove) << "\n";
+        return kExitFailure;
+    }
     return kExitOk;
 }
 
@@ -176,16 +185,24 @@ CLI::App* setupDiff(CLI::App& app, std::function<void(const DiffCommandOptions&)
                "what A and B are for, over what the files say (raw: an edit; smash: the game's "
                "LUT, compared by what the game shows; default: what each file says, else raw)");
     sub->add_flag("--json", o->json, "print the report as JSON");
+    sub->add_option("--fail-above", o->failAbove,
+                    "exit 1 when the largest ΔE2000 is above this (0: any difference), as cmp "
+                    "exits 1 when files differ")
+        ->check(CLI::Range(0.0, 1000.0));
     addOverwriteOptions(*sub, o->overwrite);
     addVerbosity(*sub, o->verbosity, "");
-    sub->footer("ΔE2000 takes LUT entries as sRGB-encoded display values. A game LUT (a "
-                ".nutexb, a file that says smash) is compared by what the game shows with it, "
-                "at the colour the neutral game shows for each input (as lutkit preview shows "
-                "a screenshot). Exit code 0 whether the LUTs differ or not.\n\n"
-                "Examples:\n"
-                "  lutkit diff old.cube new.cube\n"
-                "  lutkit diff old.cube new.cube --image screenshot.png --heatmap where.png\n"
-                "  lutkit diff a.cube b.3dl --heatmap slices.png --slices 9 --json");
+    sub->footer(
+        "ΔE2000 takes LUT entries as sRGB-encoded display values. A game LUT (a "
+        ".nutexb, a file that says smash) is compared by what the game shows with it, "
+        "at the colour the neutral game shows for each input (as lutkit preview shows "
+        "a screenshot). Exit code 0 whether the LUTs differ or not; with --fail-above DE, 1 "
+        "when the largest ΔE2000 is above DE (2 for bad usage, and 1 for a file it "
+        "cannot read, as always).\n\n"
+        "Examples:\n"
+        "  lutkit diff old.cube new.cube\n"
+        "  lutkit diff expected.cube built.cube --fail-above 0.5 -q   # a test in a script\n"
+        "  lutkit diff old.cube new.cube --image screenshot.png --heatmap where.png\n"
+        "  lutkit diff a.cube b.3dl --heatmap slices.png --slices 9 --json");
     sub->callback([o, onParsed] { onParsed(*o); });
     return sub;
 }

@@ -9,6 +9,7 @@
 #include "lut/interp/Interpolation.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -28,11 +29,13 @@ struct DiffCommandOptions {
     Interpolation interp = Interpolation::Tetrahedral;
     std::string inTarget; // what A and B are for ("" = what each file says, else an edit)
     bool json = false;
-    OutputOptions overwrite; // -y / -n for --heatmap
+    std::optional<double> failAbove; // exit 1 when the largest ΔE2000 is above this
+    OutputOptions overwrite;         // -y / -n for --heatmap
     Verbosity verbosity;
 };
 
-// Exit code 0 whether or not the LUTs differ (1 is for bad input).
+// Exit code 0 whether or not the LUTs differ (1 is for bad input); with --fail-above DE, 1 when
+// the largest ΔE2000 found is above DE (as cmp exits 1 when files differ), said on stderr.
 int runDiff(const DiffCommandOptions& options);
 
 CLI::App* setupDiff(CLI::App& app, std::function<void(const DiffCommandOptions&)> onParsed);

@@ -49,8 +49,7 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
                           << "\n";
                 continue;
             }
-            if (isShown(d, o.verbosity))
-                std::cout << d.str() << "\n";
+            printDiagnostic(std::cout, d, o.verbosity, "");
         }
         if (!v.parsed())
             return false;
@@ -69,8 +68,7 @@ bool validateOne(const std::string& path, const ValidateOptions& o) {
         const LutFile f = formats::readLut(path, options, o.inFormat);
         bool ok = true;
         for (const Diagnostic& d : f.diagnostics) {
-            if (isShown(d, o.verbosity))
-                std::cout << d.str() << "\n";
+            printDiagnostic(std::cout, d, o.verbosity, "");
             if (o.strict && d.severity != Diagnostic::Severity::Info)
                 ok = false;
         }

@@ -242,6 +242,36 @@ TEST(CliAtlas, BadUsageExitsTwo) {
     EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
 
+// `atlas split -o rows/` makes the folder when it is missing, as `apply -o DIR/` does (issue 43:
+// it refused it); a file in the way is refused, and a bad atlas leaves no folder behind.
+TEST(CliAtlas, SplitMakesAMissingFolder) {
+    const std::string dir = workDir();
+    writeCube(dir + "/warm.cube", 8, warm);
+    writeCube(dir + "/cool.cube", 8, cool);
+    ASSERT_EQ(runCli("atlas build " + shellQuoted(dir + "/warm.cube") + " " +
+                     shellQuoted(dir + "/cool.cube") + " -o " + shellQuoted(dir + "/atlas.png"))
+                  .exitCode,
+              0);
+    for (const std::string out : {"rows/", "more/rows"}) {
+        SCOPED_TRACE(out);
+        const RunResult r = runCli("atlas split " + shellQuoted(dir + "/atlas.png") + " -o " +
+                                   shellQuoted(dir + "/" + out));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(std::filesystem::is_directory(dir + "/" + out));
+        EXPECT_TRUE(std::filesystem::exists(dir + "/" + out + "/atlas-00.png"));
+        EXPECT_TRUE(std::filesystem::exists(dir + "/" + out + "/atlas-01.png"));
+    }
+    std::ofstream(dir + "/file") << "x";
+    RunResult r = runCli("atlas split " + shellQuoted(dir + "/atlas.png") + " -o " +
+                         shellQuoted(dir + "/file"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("not a folder"), std::string::npos) << r.err;
+    r = runCli("atlas split " + shellQuoted(dir + "/missing.png") + " -o " +
+               shellQuoted(dir + "/none/"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_FALSE(std::filesystem::exists(dir + "/none"));
+}
+
 // A row from the game's LUT (a .nutexb, builtin:smash-default) is stored as it is, with a warning
 // naming it: an engine applies an atlas row to its picture, where the game's compensation for
 // its brighten pass would show brighter than the edit. An edit's row says nothing of the kind.

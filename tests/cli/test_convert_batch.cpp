@@ -65,7 +65,7 @@ TEST(CliConvertBatch, AFolderOfEditedStripsBecomesTheGamesLuts) {
                     c == 3 ? 1.0f : static_cast<float>((x * 13 + y * 29 + c * 71) % 256) / 255.0f;
     formats::writeImage(dir + "/shot.png", shot, {8, false, false});
     const std::string measured = " --screenshot '" + dir + "/shot.png'";
-    const RunResult r = runCli("convert '" + dir + "/strips' -o '" + dir + "/out/' -q" + measured);
+    const RunResult r = runCli("convert '" + dir + "/strips' -o '" + dir + "/out/'" + measured);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* name : {"arena", "beach"}) {
         const std::string out = dir + "/out/" + name + ".nutexb";
@@ -102,7 +102,7 @@ TEST(CliConvertBatch, OtherFormatsKeepNamesAndABadFileIsListed) {
     writeStrip(dir + "/in/a.png", 0.1);
     std::filesystem::copy_file(samplePath("sample_grade.cube"), dir + "/in/b.cube");
     std::ofstream(dir + "/in/c.cube") << "LUT_3D_SIZE 2\n0 0 0\n"; // truncated
-    const RunResult r = runCli("convert '" + dir + "/in/' -o '" + dir + "/out/' --format cube -q");
+    const RunResult r = runCli("convert '" + dir + "/in/' -o '" + dir + "/out/' --format cube");
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find("c.cube"), std::string::npos) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir + "/out/a.cube"));

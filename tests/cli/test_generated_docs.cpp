@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -116,6 +117,54 @@ TEST(GeneratedDocs, ManPageNamesEveryCommandAndOptionAndRenders) {
     EXPECT_EQ(r.out, "") << "warnings from man/groff";
     const Shell text = sh("MANWIDTH=100 man -l '" + path + "' 2>/dev/null");
     EXPECT_THAT(text.out, HasSubstr("lutkit convert [OPTIONS] IN [OUT]"));
+}
+
+// The man page's ENVIRONMENT names every variable lutkit reads (each std::getenv("NAME") in the
+// sources of the libraries and the CLI, found here by reading them), EXIT STATUS every code, and
+// SEE ALSO only pages man finds (issue 43: it named a missing lutkit-editor(1)).
+TEST(GeneratedDocs, ManPageEnvironmentExitCodesAndSeeAlso) {
+    const std::string man = fileBytes(generated("lutkit.1"));
+    const auto env = man.find(".SH ENVIRONMENT\n");
+    ASSERT_NE(env, std::string::npos);
+    const std::string environment = man.substr(env, man.find(".SH ", env + 1) - env);
+    std::set<std::string> read;
+    for (const char* dir : {"lutlib/src", "formats/src", "cli"})
+        for (const auto& f :
+             fs::recursive_directory_iterator(std::string(LUTKIT_SOURCE_DIR) + "/" + dir)) {
+            if (f.path().extension() != ".cpp" ||
+                f.path().string().find("/os/windows/") != std::string::npos)
+                continue;
+            const std::string text = fileBytes(f.path().string());
+            for (std::size_t at = 0; (at = text.find("getenv(\"", at)) != std::string::npos;) {
+                at += 8;
+                read.insert(text.substr(at, text.find('"', at) - at));
+            }
+        }
+    EXPECT_TRUE(read.count("OCIO") && read.count("LUTKIT_SIMD") &&
+                read.count("LUTKIT_IMAGEIO_MODULE"))
+        << "the scan found what the sources read";
+    for (const std::string& name : read)
+        EXPECT_THAT(environment, HasSubstr(".B " + name + "\n")) << name;
+    EXPECT_THAT(environment, HasSubstr(".B TMPDIR\n")); // std::filesystem's temp_directory_path
+
+    const auto exit = man.find(".SH EXIT STATUS\n");
+    ASSERT_NE(exit, std::string::npos);
+    for (const char* code : {"0", "1", "2", "130"})
+        EXPECT_THAT(man.substr(exit), HasSubstr(".TP\n" + std::string(code) + "\n")) << code;
+
+    const auto see = man.find(".SH SEE ALSO\n");
+    ASSERT_NE(see, std::string::npos);
+    const std::string seeAlso = man.substr(see);
+    EXPECT_EQ(seeAlso.find("lutkit\\-editor"), std::string::npos);
+    if (!have("man"))
+        GTEST_SKIP() << "man is not installed";
+    int pages = 0;
+    for (std::size_t at = 0; (at = seeAlso.find(".BR ", at)) != std::string::npos; ++pages) {
+        at += 4;
+        const std::string page = seeAlso.substr(at, seeAlso.find(' ', at) - at);
+        EXPECT_EQ(sh("man -w '" + page + "' >/dev/null 2>&1").exitCode, 0) << page << "(1)";
+    }
+    EXPECT_GT(pages, 0);
 }
 
 TEST(GeneratedDocs, CompletionScriptsNameEveryCommandAndOption) {

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 
 namespace fs = std::filesystem;
 using namespace lut::test;
@@ -227,6 +228,51 @@ TEST(LutMaths, DiffOfTwoKnownLutsEqualsTheFloat64Reference) {
     for (float v : heat.image.pixels())
         brightest = std::max(brightest, double(v));
     EXPECT_GT(brightest, 0.5);
+}
+
+// diff --fail-above DE (issue 43: diff always exited 0): exit 1 when the largest ΔE2000 is above
+// DE, judged against the float64 reference's largest over the lattice (diff compares A's 5^3
+// lattice: the same colours); 0 at or under it; the answer said on stderr, even with -q.
+TEST(LutMaths, DiffFailAboveExitsOneAboveTheLargestDifference) {
+    const std::string dir = workDir();
+    const std::string a = writeCube(dir + "/a.cube", 5, [](glm::vec3 x) { return x; });
+    const std::string b = writeCube(dir + "/b.cube", 5, gradeB);
+    double maxDe = 0;
+    for (int bb = 0; bb < 5; ++bb)
+        for (int g = 0; g < 5; ++g)
+            for (int r = 0; r < 5; ++r) {
+                const glm::vec3 x = glm::vec3(r, g, bb) / 4.0f;
+                const glm::vec3 y = gradeB(x);
+                maxDe = std::max(maxDe, ciede2000(toLab({x.x, x.y, x.z}), toLab({y.x, y.y, y.z})));
+            }
+    ASSERT_GT(maxDe, 1.0);
+    const std::string ab = "diff " + shellQuoted(a) + " " + shellQuoted(b);
+    auto above = [&](double x) {
+        std::ostringstream s;
+        s.precision(9);
+        s << " --fail-above " << x;
+        return s.str();
+    };
+    auto r = runCli(ab + above(maxDe * 1.001));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("ΔE2000   max"));
+    r = runCli(ab + above(maxDe * 0.999));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.out, HasSubstr("ΔE2000   max")) << "the report still printed";
+    EXPECT_THAT(r.err, HasSubstr("differ by up to ΔE2000 "));
+    EXPECT_THAT(r.err, HasSubstr("above --fail-above"));
+    r = runCli(ab + above(maxDe * 0.999) + " -q");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out, "");
+    EXPECT_THAT(r.err, HasSubstr("lutkit: error: "));
+    r = runCli(ab + above(maxDe * 0.999) + " --json");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NEAR(jsonNumber(r.out, "max"), maxDe, 1e-6 * maxDe);
+    // 0: any difference fails; none passes.
+    EXPECT_EQ(runCli(ab + " --fail-above 0 -q").exitCode, 1);
+    EXPECT_EQ(
+        runCli("diff " + shellQuoted(a) + " " + shellQuoted(a) + " --fail-above 0 -q").exitCode, 0);
+    EXPECT_EQ(runCli(ab + " --fail-above -1").exitCode, 2);
 }
 
 TEST(LutMaths, InvertThenComposeIsCloseToNeutral) {

@@ -367,4 +367,30 @@ TEST(Vocabulary, VersionAndHelp) {
     EXPECT_THAT(r.err, HasSubstr("unknown command 'nuetral'; did you mean 'neutral'?"));
     r = runInProcess("conv a.cube b.cube");
     EXPECT_THAT(r.err, HasSubstr("did you mean 'convert'?"));
+    // `help help` is help's help (it said "unknown command 'help'. Run 'lutkit help help'").
+    r = runInProcess("help help");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("lutkit help [OPTIONS] [COMMAND]"));
+}
+
+// A misspelt option is named (issue 43): `apply --lutt` said only "--lut is required"; `--v`
+// could be -v or any long option starting with v, and lutkit does not abbreviate: said so, where
+// it suggested --view.
+TEST(Vocabulary, MisspeltOptionsAreNamed) {
+    auto r = runInProcess("apply --lutt a.cube shot.png -o out.png");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_THAT(r.err, HasSubstr("lutkit apply: --lutt: no such option"));
+    EXPECT_THAT(r.err, HasSubstr("did you mean '--lut'?"));
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("required")));
+    r = runInProcess("bake out.cube --v foo --lut a.cube");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_THAT(r.err, HasSubstr("'--v' is ambiguous: a short option takes one dash (bake has no "
+                                 "-v), a long one is written in full (--view)"));
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("did you mean")));
+    r = runInProcess("convert a.cube b.cube --v");
+    EXPECT_THAT(r.err, HasSubstr("(-v is --verbose)"));
+    r = runInProcess("convert a.cube b.cube --in");
+    EXPECT_THAT(r.err, HasSubstr("'--in' is ambiguous: --in-format, --in-layout, --interp, "));
+    r = runInProcess("convert a.cube b.cube --layuot unreal");
+    EXPECT_THAT(r.err, HasSubstr("did you mean '--layout'?"));
 }

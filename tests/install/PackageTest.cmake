@@ -3,10 +3,12 @@
 # extracted with dpkg-deb -x into a fresh root (no dpkg database, no root needed):
 #   - its control fields: name, version, the runtime dependencies dpkg-shlibdeps found
 #     (OpenImageIO, OpenColorIO; Qt 6 and its platform plugins with the editor);
-#   - what it holds: the programs, the image module, the man page, the completions, the editor's
+#   - what it holds: the programs, the image module, the man pages (gzip -9n), the changelog,
+#     the completions, the editor's
 #     desktop entry, MIME types and icon, the OCIO config, the docs with their pictures, the
 #     licence and Debian's copyright file, and no headers, static libraries or CMake package
 #     (the `dev` component);
+#   - the binaries stripped, the Maintainer an address (what lintian checks, docs/packaging.md);
 #   - the extracted lutkit and lutkit-editor run (--version), and the README's quick starts run
 #     as written with that lutkit first on PATH (docs_tests with LUTKIT_QUICKSTART_BIN).
 # Variables: BUILD_DIR, WORK_DIR, VERSION, DOCS_TESTS, EDITOR (ON/OFF).
@@ -29,7 +31,7 @@ if(NOT n EQUAL 1)
 endif()
 set(deb "${debs}")
 
-run(dpkg-deb -f "${deb}" Package Version Depends Section)
+run(dpkg-deb -f "${deb}" Package Version Depends Section Maintainer)
 set(control "${RUN_OUT}")
 foreach(want "Package: lutkit" "Version: ${VERSION}" "libopenimageio" "libopencolorio"
              "Section: graphics")
@@ -38,6 +40,9 @@ foreach(want "Package: lutkit" "Version: ${VERSION}" "libopenimageio" "libopenco
     message(FATAL_ERROR "the control fields lack '${want}':\n${control}")
   endif()
 endforeach()
+if(control MATCHES "Maintainer: [^\n]*@localhost")
+  message(FATAL_ERROR "the Maintainer field is not an address (lintian: bogus-mail-host):\n${control}")
+endif()
 if(EDITOR)
   foreach(want "libqt6widgets6" "qt6-qpa-plugins")
     string(FIND "${control}" "${want}" at)
@@ -49,14 +54,16 @@ endif()
 
 set(root "${WORK_DIR}/root")
 run(dpkg-deb -x "${deb}" "${root}")
-set(files usr/bin/lutkit usr/lib/lutkit/lutkit_imageio.so usr/share/man/man1/lutkit.1
+set(files usr/bin/lutkit usr/lib/lutkit/lutkit_imageio.so usr/share/man/man1/lutkit.1.gz
+          usr/share/doc/lutkit/changelog.gz
           usr/share/bash-completion/completions/lutkit usr/share/zsh/site-functions/_lutkit
           usr/share/fish/vendor_completions.d/lutkit.fish usr/share/lutkit/ocio/config.ocio
           usr/share/doc/lutkit/README.md usr/share/doc/lutkit/docs/specs/strip-layouts.md
           usr/share/doc/lutkit/docs/colour.md usr/share/doc/lutkit/docs/images/check-report.png
           usr/share/doc/lutkit/LICENSE usr/share/doc/lutkit/copyright)
 if(EDITOR)
-  list(APPEND files usr/bin/lutkit-editor usr/share/applications/lutkit-editor.desktop
+  list(APPEND files usr/bin/lutkit-editor usr/share/man/man1/lutkit-editor.1.gz
+       usr/share/applications/lutkit-editor.desktop
        usr/share/mime/packages/lutkit.xml usr/share/icons/hicolor/scalable/apps/lutkit-editor.svg)
 endif()
 foreach(f ${files})
@@ -69,6 +76,28 @@ foreach(dev usr/include usr/lib/cmake usr/lib/liblutlib.a usr/lib/liblutkit_form
     message(FATAL_ERROR "the package holds /${dev}: that is the dev component")
   endif()
 endforeach()
+
+# What lintian asks of a package (docs/packaging.md): man pages gzip -9n (no name, no time
+# stamp: gzip's header flags byte 0, its time 0), binaries stripped (no .symtab).
+foreach(f usr/share/man/man1/lutkit.1.gz usr/share/doc/lutkit/changelog.gz)
+  file(READ "${root}/${f}" head LIMIT 10 HEX)
+  if(NOT head MATCHES "^1f8b08000000000002")
+    message(FATAL_ERROR "/${f} is not gzip -9n (header ${head})")
+  endif()
+endforeach()
+find_program(READELF readelf)
+if(READELF)
+  set(binaries usr/bin/lutkit usr/lib/lutkit/lutkit_imageio.so)
+  if(EDITOR)
+    list(APPEND binaries usr/bin/lutkit-editor)
+  endif()
+  foreach(b ${binaries})
+    run(${READELF} -S "${root}/${b}")
+    if(RUN_OUT MATCHES "\\.symtab|\\.debug_")
+      message(FATAL_ERROR "/${b} is not stripped")
+    endif()
+  endforeach()
+endif()
 
 run("${root}/usr/bin/lutkit" --version)
 if(NOT RUN_OUT STREQUAL "lutkit ${VERSION}\n")
