@@ -106,3 +106,36 @@ TEST(HostileOcio, CtfReferencingItselfIsRefused) {
 }
 
 } // namespace
+
+namespace {
+
+std::string manySpaces(int n) {
+    std::string s;
+    for (int i = 0; i < n; ++i)
+        s += "  - !<ColorSpace>\n    name: s" + std::to_string(i) + "\n    isdata: true\n";
+    return s;
+}
+
+} // namespace
+
+// OpenColorIO 2.1's load is quadratic in the colour spaces (20,000 in a 2.1 MB config: over 15
+// minutes): past the limit of 1,000 the config is refused before OpenColorIO parses it, in one
+// line naming the file and the count; at the limit it loads and works.
+TEST(HostileOcio, ConfigWithTooManyColourSpacesIsRefusedBeforeLoading) {
+    const std::string dir = lut::test::tempDir();
+    writeBytes(dir + "/many.ocio", config(manySpaces(20000)));
+    writeBytes(dir + "/limit.ocio", config(manySpaces(999))); // + raw: 1,000
+    const auto refused =
+        lut::test::runCli("bake " + shellQuoted(dir + "/a.cube") + " --config " +
+                          shellQuoted(dir + "/many.ocio") + " --inputspace raw --outputspace s1");
+    EXPECT_EQ(refused.exitCode, 1) << refused.err;
+    EXPECT_THAT(stripDir(refused.err, dir),
+                HasSubstr("many.ocio: the OpenColorIO config defines 20001 colour spaces, named "
+                          "transforms and looks, over the limit of 1000"));
+    EXPECT_FALSE(std::filesystem::exists(dir + "/a.cube"));
+    const auto loaded = lut::test::runCli("bake " + shellQuoted(dir + "/b.cube") + " --config " +
+                                          shellQuoted(dir + "/limit.ocio") +
+                                          " --inputspace raw --outputspace s998");
+    EXPECT_EQ(loaded.exitCode, 0) << loaded.err;
+    EXPECT_TRUE(std::filesystem::exists(dir + "/b.cube"));
+}
