@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 
@@ -58,6 +59,40 @@ void applyDarkTheme(QApplication& app) {
     p.setColor(QPalette::Disabled, QPalette::ButtonText, QColor(0x80, 0x80, 0x80));
     p.setColor(QPalette::Disabled, QPalette::WindowText, QColor(0x80, 0x80, 0x80));
     app.setPalette(p);
+}
+
+QtMessageHandler g_previousHandler = nullptr;
+
+// Until the QApplication exists: the platform plugin's messages are held back, and its fatal
+// one ("no Qt platform plugin could be initialized") becomes one line and exit code 1.
+void installNoDisplayHandler() {
+    g_previousHandler = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext& context,
+                                                  const QString& message) {
+        const bool platform =
+            QByteArray(context.category ? context.category : "").startsWith("qt.qpa") ||
+            message.contains(QStringLiteral("platform plugin"));
+        if (type == QtFatalMsg && platform) {
+            const QByteArray display = qgetenv("DISPLAY"), wayland = qgetenv("WAYLAND_DISPLAY");
+            const QByteArray where =
+                display.isEmpty() && wayland.isEmpty()
+                    ? QByteArray("no display found (neither DISPLAY nor WAYLAND_DISPLAY is set)")
+                    : "cannot open the display " +
+                          (display.isEmpty() ? "WAYLAND_DISPLAY=" + wayland : "DISPLAY=" + display);
+            std::fprintf(stderr,
+                         "lutkit-editor: error: %s: run it in a desktop session, or with "
+                         "QT_QPA_PLATFORM=offscreen for scripts (--save and --screenshot "
+                         "need no display)\n",
+                         where.constData());
+            std::fflush(stderr);
+            std::_Exit(1);
+        }
+        if (platform && type != QtFatalMsg)
+            return; // said above if it comes to the fatal one
+        if (g_previousHandler)
+            g_previousHandler(type, context, message);
+        else
+            std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, message)));
+    });
 }
 
 } // namespace
@@ -282,7 +317,12 @@ int main(int argc, char** argv) {
     const bool headless = parser.isSet(shotOpt) || parser.isSet(saveOpt);
     if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
+    // No display to open (no DISPLAY or WAYLAND_DISPLAY, or a server that does not answer): Qt
+    // reports it as a fatal message and aborts (exit 134, a paragraph about reinstalling). One
+    // line instead, saying how to run the editor, and exit 1.
+    installNoDisplayHandler();
     QApplication app(argc, argv);
+    qInstallMessageHandler(g_previousHandler);
     lut::gui::clearUpperVectorState(); // threads started from here inherit it (CpuState.h)
     // The desktop entry and icon installed from gui/desktop (window grouping, taskbar icon).
     QGuiApplication::setDesktopFileName(QStringLiteral("lutkit-editor"));

@@ -3,6 +3,7 @@
 
 #include "Document.h"
 #include "FineSlider.h"
+#include "FocusWheel.h"
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -53,6 +54,7 @@ AdjustmentsPanel::AdjustmentsPanel(Document* doc, QWidget* parent) : QWidget(par
         spin->setObjectName(QString::fromStdString("spin." + info.key));
         spin->setKeyboardTracking(false);
         spin->setFixedWidth(80);
+        takeWheelOnlyWhenFocused(spin);
         grid->addWidget(label, row, 0);
         grid->addWidget(spin, row, 1);
         grid->addWidget(slider, row + 1, 0, 1, 2);

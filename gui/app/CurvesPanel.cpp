@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "CurvesPanel.h"
+#include "FocusWheel.h"
 
 #include "CurveEditor.h"
 #include "HueRanges.h"
@@ -87,6 +88,7 @@ CurvesPanel::CurvesPanel(Document* doc, QWidget* parent)
     m_pointLabel = new QLabel(m_hueRow);
     m_pointLabel->setObjectName("hueRange.point");
     m_amount = new QDoubleSpinBox(m_hueRow);
+    takeWheelOnlyWhenFocused(m_amount);
     m_amount->setObjectName("hueRange.amount");
     m_amount->setKeyboardTracking(false);
     m_amount->setToolTip(tr("The selected point's value: hue shift in degrees, or the saturation "

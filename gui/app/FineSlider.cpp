@@ -12,7 +12,9 @@
 namespace lut::gui {
 
 FineSlider::FineSlider(Qt::Orientation orientation, QWidget* parent)
-    : QSlider(orientation, parent) {}
+    : QSlider(orientation, parent) {
+    setFocusPolicy(Qt::StrongFocus); // focus by click or Tab, never by the wheel
+}
 
 double FineSlider::valuePerPixel() const {
     QStyleOptionSlider opt;
@@ -81,7 +83,7 @@ void FineSlider::mouseReleaseEvent(QMouseEvent* e) {
 
 void FineSlider::wheelEvent(QWheelEvent* e) {
     const double steps = e->angleDelta().y() / 120.0;
-    if (steps == 0) {
+    if (steps == 0 || !hasFocus()) { // unfocused: the wheel scrolls the dock behind it
         e->ignore();
         return;
     }

@@ -2,7 +2,8 @@
 #pragma once
 // A slider for precise values on a short track: a click jumps to the position, a drag follows
 // the mouse relative to where it was (no jump), ten times finer while Shift is held; the wheel
-// steps by the single step (Shift: a tenth of it, accumulated). Emits QSlider's signals
+// steps by the single step (Shift: a tenth of it, accumulated) once the slider has the focus
+// (a click or Tab: FocusWheel.h), else it scrolls what is behind. Emits QSlider's signals
 // (sliderPressed/valueChanged/sliderReleased), so undo merging per drag works as with QSlider.
 #include <QSlider>
 

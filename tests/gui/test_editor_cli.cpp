@@ -250,6 +250,32 @@ private slots:
         QCOMPARE(bad.code, 2);
     }
 
+    void withoutADisplayOneLineAndExitOne() {
+        // Issue 43: started without a display it aborted (exit 134) with Qt's paragraph about
+        // reinstalling. Now one line saying so and how to run it, exit 1: with no display named,
+        // and with one named that does not answer.
+        for (const QString& display : {QString(), QStringLiteral(":987")}) {
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.remove(QStringLiteral("DISPLAY"));
+            env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+            env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+            if (!display.isEmpty())
+                env.insert(QStringLiteral("DISPLAY"), display);
+            const Run r =
+                run(QString::fromUtf8(LUTKIT_EDITOR), {samplePath("sample_scene.png")}, env);
+            QCOMPARE(r.code, 1);
+            const QStringList lines = r.err.trimmed().split('\n');
+            QVERIFY2(lines.size() == 1, qPrintable(r.err));
+            QVERIFY2(lines[0].startsWith(QStringLiteral("lutkit-editor: error: ")),
+                     qPrintable(r.err));
+            QVERIFY2(r.err.contains(display.isEmpty() ? QStringLiteral("no display found")
+                                                      : QStringLiteral("DISPLAY=:987")),
+                     qPrintable(r.err));
+            QVERIFY2(r.err.contains(QStringLiteral("QT_QPA_PLATFORM=offscreen")),
+                     qPrintable(r.err));
+        }
+    }
+
     void helpAllAndBadOptionValuesExitTwoWithoutADisplay() {
         // Issue 28: --help-all and a bad option value aborted (exit 134) looking for a display.
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
