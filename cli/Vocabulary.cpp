@@ -299,7 +299,11 @@ CLI::Validator stageSettingValidator() {
 }
 
 CLI::Option* addOutputFormat(CLI::App& sub, std::string& target) {
-    return sub.add_option("--format", target, "output format (default: from OUT's extension)")
+    return sub
+        .add_option("--format", target,
+                    "output format (default: from OUT's extension); for .cube also resolve_cube "
+                    "(a 1D shaper and a 3D table where the LUT has a shaper) or iridas_cube (one "
+                    "3D table, the form ffmpeg, Photoshop and game engines read)")
         ->type_name("NAME")
         ->check(choicesValidator(writeFormatChoices()));
 }

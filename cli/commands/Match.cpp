@@ -215,6 +215,17 @@ int runMatch(const MatchCommandOptions& o) {
     wo.layout = o.layout;
     const Diagnostics wd = formats::writeLut(o.output, out, wo, o.format);
     diags.insert(diags.end(), wd.begin(), wd.end());
+    // A .cube with a shaper is Resolve's form, which ffmpeg's lut3d ("Invalid data found"),
+    // Photoshop's Color Lookup and most engines refuse: said, with the form they read.
+    if (!smash && out.shaper && o.format.empty() && extensionOf(o.output) == ".cube") {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.path = o.output;
+        d.message = "a 1D shaper then a 3D table (DaVinci Resolve's .cube, which OpenColorIO "
+                    "reads too); ffmpeg's lut3d, Photoshop's Color Lookup and most game engines "
+                    "read a 3D table alone: --format iridas_cube writes one (the shaper baked in)";
+        diags.push_back(d);
+    }
     if (writeReport) {
         MatchReportPicture a{src.pixels, src.linear};
         MatchReportPicture b{references.front().pixels, references.front().linear};

@@ -253,3 +253,32 @@ TEST(CliMatch, EachCandidateSaysWhyItIsNotEligibleAndTheFigureHolds) {
     EXPECT_GE(notEligible, 1) << r.out;
     EXPECT_GE(checked, 1) << r.out;
 }
+
+// Issue 42: the default .cube (Resolve's form: a 1D shaper, then the 3D table) is refused by
+// ffmpeg's lut3d ("Invalid data found") and nothing said so. Now a warning names the form that
+// every tool reads, and --format iridas_cube writes it: ffmpeg, the oracle here, applies it.
+TEST(CliMatch, TheCubeFormEveryToolReadsIsNamedAndWritten) {
+    if (!haveProgram("ffmpeg"))
+        GTEST_SKIP() << "ffmpeg is not installed";
+    const Scene& s = scene();
+    const std::string resolve = s.dir + "/resolve.cube", iridas = s.dir + "/iridas.cube";
+    const auto r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+                          shellQuoted(resolve) + " -y --method hm-mkl-hm");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_THAT(fileBytes(resolve), HasSubstr("LUT_1D_SIZE")) << "the shaper form, as asked";
+    EXPECT_THAT(r.out + r.err, HasSubstr("--format iridas_cube"));
+    const auto ffmpeg = [&](const std::string& cube) {
+        return runCommand("ffmpeg -v error -nostdin -y -i " + shellQuoted(s.source) +
+                          " -vf lut3d=file=" + shellQuoted(cube) + " -frames:v 1 " +
+                          shellQuoted(s.dir + "/ff.png"));
+    };
+    EXPECT_NE(ffmpeg(resolve).exitCode, 0)
+        << "ffmpeg now reads the shaper form: the warning can go";
+    const auto w = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
+                          shellQuoted(iridas) + " -y --method hm-mkl-hm --format iridas_cube");
+    ASSERT_EQ(w.exitCode, 0) << w.err;
+    EXPECT_THAT(w.out + w.err, ::testing::Not(HasSubstr("--format iridas_cube")));
+    EXPECT_THAT(fileBytes(iridas), ::testing::Not(HasSubstr("LUT_1D_SIZE")));
+    const auto f = ffmpeg(iridas);
+    EXPECT_EQ(f.exitCode, 0) << f.err;
+}
