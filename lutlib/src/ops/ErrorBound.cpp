@@ -10,7 +10,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <vector>
 
 namespace lut {
@@ -469,17 +468,21 @@ ErrorStats boundError(const DifferenceFn& fn, const BoundOptions& o) {
             o.values->assign(3 * points, NAN);
         const Grid3 grid(fn, opts, std::move(axes));
         const int mz = grid.planes();
-        std::mutex mutex;
         // Slabs of at least 8 planes: the halo (up to 4 planes) is recomputed by both neighbours.
-        const int slabPlanes = std::max(8, mz / (4 * resolveThreads(o.nthreads)));
+        // The slabs and the order their tallies are merged in are the same whatever the threads
+        // (the boxes' order decides which the refinement takes first among equal bounds, and the
+        // sum's order its last bits): the printed figures are the same on every run, machine
+        // and edition (they varied from run to run: 3.58e-07, 3.88e-07, 4.18e-07).
+        const int slabPlanes = std::max(8, mz / 16);
         const int slabs = (mz + slabPlanes - 1) / slabPlanes;
+        std::vector<Tally> parts(static_cast<std::size_t>(slabs));
         parallelForDynamic(slabs, o.nthreads, 1, [&](int s0, int s1) {
-            for (int s = s0; s < s1; ++s) {
-                Tally t = grid.slab(s * slabPlanes, std::min(mz, (s + 1) * slabPlanes));
-                std::lock_guard lock(mutex);
-                total.merge(std::move(t));
-            }
+            for (int s = s0; s < s1; ++s)
+                parts[static_cast<std::size_t>(s)] =
+                    grid.slab(s * slabPlanes, std::min(mz, (s + 1) * slabPlanes));
         });
+        for (Tally& t : parts)
+            total.merge(std::move(t));
     }
     std::size_t refinedPoints = 0;
     const double refined = refineBoxes(fn, opts, total, refinedPoints);

@@ -8,6 +8,9 @@
 
 #include <immintrin.h>
 #define LUTKIT_X86 1
+#elif defined(__wasm_simd128__)
+#include "core/FastMathWasm.h"
+#define LUTKIT_WASM_SIMD 1
 #endif
 
 namespace lut::detail {
@@ -321,8 +324,70 @@ bool haveAvx2() {
     return yes;
 }
 #else
-bool haveAvx2() {
+[[maybe_unused]] bool haveAvx2() {
     return false;
+}
+#endif
+
+#ifdef LUTKIT_WASM_SIMD
+// WebAssembly SIMD (FastMathWasm.h): the scalar definitions four lanes at a time; a pixel's R, G,
+// B (and A, computed and not kept) are one vector, so the per-pixel branches are the scalar ones.
+
+void powWasm(float p, const float* in, float* out, std::size_t n) {
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4)
+        wasm_v128_store(out + i, wasm::powFast4(wasm_v128_load(in + i), p));
+    for (; i < n; ++i)
+        out[i] = powFast(in[i], p);
+}
+
+void srgbWasm(const float* in, float* out, std::size_t n) {
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4)
+        wasm_v128_store(out + i, wasm::srgbEncode4(wasm_v128_load(in + i)));
+    for (; i < n; ++i)
+        out[i] = srgbEncodeFast(in[i]);
+}
+
+// lanes 0-2 of v, lane 3 of keep
+inline v128_t rgbOf(v128_t v, v128_t keep) {
+    return wasm_i32x4_shuffle(v, keep, 0, 1, 2, 7);
+}
+
+void smashEncodeWasm(const float* x, float* s, float* l, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const v128_t px = wasm_v128_load(x + 4 * i);
+        const v128_t v = rgbOf(wasm::powFast4(px, kSmashEncodeExponent), px);
+        wasm_v128_store(s + 4 * i, v);
+        wasm_v128_store(l + 4 * i, v);
+    }
+}
+
+void smashFinishWasm(float* x, const float* s, const float* l, std::size_t count, bool fused) {
+    for (std::size_t i = 0; i < count; ++i) {
+        float* p = x + 4 * i;
+        const v128_t px = wasm_v128_load(p);
+        const float a = clamp01(p[3]);
+        if (a <= 0.0f) {
+            if (fused)
+                wasm_v128_store(p, rgbOf(wasm::srgbEncode4(px), px));
+            continue;
+        }
+        const v128_t sv = wasm_v128_load(s + 4 * i), lv = wasm_v128_load(l + 4 * i);
+        const v128_t r =
+            wasm_f32x4_mul(wasm::madd4(wasm_f32x4_sub(lv, sv), wasm::splat(kSmashBrightenMix), sv),
+                           wasm::splat(kSmashBrightenScale));
+        v128_t out;
+        if (a >= 1.0f) {
+            out = fused ? wasm::smashDisplay4(r) : wasm::powFast4(r, kSmashDecodeExponent);
+        } else {
+            const v128_t g = wasm::powFast4(r, kSmashDecodeExponent);
+            const v128_t m =
+                wasm::madd4(g, wasm::splat(a), wasm_f32x4_mul(px, wasm::splat(1.0f - a)));
+            out = fused ? wasm::srgbEncode4(m) : m;
+        }
+        wasm_v128_store(p, rgbOf(out, px));
+    }
 }
 #endif
 
@@ -332,6 +397,8 @@ void powArray(float p, const float* in, float* out, std::size_t n) {
 #ifdef LUTKIT_X86
     if (haveAvx2())
         return powAvx2(p, in, out, n);
+#elif defined(LUTKIT_WASM_SIMD)
+    return powWasm(p, in, out, n);
 #endif
     for (std::size_t i = 0; i < n; ++i)
         out[i] = powFast(in[i], p);
@@ -341,6 +408,8 @@ void srgbEncodeArray(const float* in, float* out, std::size_t n) {
 #ifdef LUTKIT_X86
     if (haveAvx2())
         return srgbAvx2(in, out, n);
+#elif defined(LUTKIT_WASM_SIMD)
+    return srgbWasm(in, out, n);
 #endif
     for (std::size_t i = 0; i < n; ++i)
         out[i] = srgbEncodeFast(in[i]);
@@ -350,6 +419,8 @@ void smashEncodePixels(const float* x, float* s, float* l, std::size_t count) {
 #ifdef LUTKIT_X86
     if (haveAvx2())
         return smashEncodeAvx2(x, s, l, count);
+#elif defined(LUTKIT_WASM_SIMD)
+    return smashEncodeWasm(x, s, l, count);
 #endif
     for (std::size_t i = 0; i < count; ++i)
         smashEncodePixel(x + 4 * i, s + 4 * i, l + 4 * i);
@@ -360,6 +431,8 @@ void smashFinishPixels(float* x, const float* s, const float* l, std::size_t cou
 #ifdef LUTKIT_X86
     if (haveAvx2())
         return smashFinishAvx2(x, s, l, count, fusedDisplay);
+#elif defined(LUTKIT_WASM_SIMD)
+    return smashFinishWasm(x, s, l, count, fusedDisplay);
 #endif
     for (std::size_t i = 0; i < count; ++i)
         smashFinishPixel(x + 4 * i, s + 4 * i, l + 4 * i, fusedDisplay);
@@ -376,7 +449,11 @@ void addBloomRow(float* rgba, int width, const float* row4, const int* i0, const
 }
 
 const char* arrayKernelIsa() {
+#ifdef LUTKIT_WASM_SIMD
+    return "wasm-simd128";
+#else
     return haveAvx2() ? "avx2" : "scalar";
+#endif
 }
 
 } // namespace lut::detail
