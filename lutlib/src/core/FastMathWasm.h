@@ -16,7 +16,18 @@ inline v128_t splat(float v) {
     return wasm_f32x4_splat(v);
 }
 
-inline v128_t madd4(v128_t a, v128_t b, v128_t c) {
+// The scalar form lane by lane, for the rare sums that land halfway between two floats.
+__attribute__((noinline)) inline v128_t madd4Scalar(v128_t a, v128_t b, v128_t c) {
+    float fa[4], fb[4], fc[4], out[4];
+    wasm_v128_store(fa, a);
+    wasm_v128_store(fb, b);
+    wasm_v128_store(fc, c);
+    for (int i = 0; i < 4; ++i)
+        out[i] = fmaEmulated(fa[i], fb[i], fc[i]);
+    return wasm_v128_load(out);
+}
+
+__attribute__((always_inline)) inline v128_t madd4(v128_t a, v128_t b, v128_t c) {
     const v128_t ahi = wasm_i32x4_shuffle(a, a, 2, 3, 0, 1);
     const v128_t bhi = wasm_i32x4_shuffle(b, b, 2, 3, 0, 1);
     const v128_t chi = wasm_i32x4_shuffle(c, c, 2, 3, 0, 1);
@@ -29,15 +40,8 @@ inline v128_t madd4(v128_t a, v128_t b, v128_t c) {
     const v128_t mask = wasm_i64x2_splat(0x1FFFFFFF), half = wasm_i64x2_splat(0x10000000);
     const v128_t tie = wasm_v128_or(wasm_i64x2_eq(wasm_v128_and(rLo, mask), half),
                                     wasm_i64x2_eq(wasm_v128_and(rHi, mask), half));
-    if (wasm_v128_any_true(tie)) { // a lane may need its last bit moved: the scalar form
-        float fa[4], fb[4], fc[4], out[4];
-        wasm_v128_store(fa, a);
-        wasm_v128_store(fb, b);
-        wasm_v128_store(fc, c);
-        for (int i = 0; i < 4; ++i)
-            out[i] = fmaEmulated(fa[i], fb[i], fc[i]);
-        return wasm_v128_load(out);
-    }
+    if (wasm_v128_any_true(tie)) [[unlikely]] // a lane may need its last bit moved
+        return madd4Scalar(a, b, c);
     return wasm_i32x4_shuffle(wasm_f32x4_demote_f64x2_zero(rLo), wasm_f32x4_demote_f64x2_zero(rHi),
                               0, 1, 4, 5);
 }
