@@ -36,7 +36,7 @@ PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools openexr
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
   desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg python3-numpy
-  imagemagick libtiff-tools libfast-float-dev libfmt-dev emscripten mingw-w64 wine64 chromium chromium-driver python3-selenium "$@")
+  imagemagick libtiff-tools libfast-float-dev libfmt-dev emscripten mingw-w64 nasm wine64 chromium chromium-driver python3-selenium "$@")
 if [ "$ONLY" = 1 ]; then
   PACKAGES=("$@")
 fi
