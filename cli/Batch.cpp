@@ -82,8 +82,9 @@ private:
 
 class Context : public JobContext {
 public:
-    Context(Budget& budget, int inner, const std::string& input)
-        : m_budget(budget), m_inner(inner), m_input(input) {}
+    Context(Budget& budget, int inner, const std::string& input,
+            const std::function<void(const std::string&)>& warn)
+        : m_budget(budget), m_inner(inner), m_input(input), m_warn(warn) {}
     ~Context() override {
         if (m_held)
             m_budget.give(m_held);
@@ -96,11 +97,13 @@ public:
         m_held += bytes;
     }
     int innerThreads() const override { return m_inner; }
+    void warn(const std::string& text) override { m_warn(text); }
 
 private:
     Budget& m_budget;
     int m_inner;
     const std::string& m_input;
+    const std::function<void(const std::string&)>& m_warn;
     std::uint64_t m_held = 0;
 };
 
@@ -193,6 +196,22 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
                      done, total, clockText(t).c_str(), eta.c_str(), name.c_str());
         std::fflush(stderr);
     };
+    // Lines for standard error while jobs run: on the bar's line, cleared first, the bar drawn
+    // again below them.
+    const std::function<void(const std::string&)> warn = [&](const std::string& text) {
+        if (text.empty())
+            return;
+        std::lock_guard<std::mutex> lock(m);
+        std::cout.flush();
+        if (bar)
+            std::fprintf(stderr, "\r\033[K");
+        std::fputs(text.c_str(), stderr);
+        if (text.back() != '\n')
+            std::fputc('\n', stderr);
+        if (bar)
+            drawBar();
+        std::fflush(stderr);
+    };
     auto work = [&] {
         for (int i; !lut::interrupted() && (i = next++) < total;) {
             const BatchJob& j = jobs[static_cast<std::size_t>(i)];
@@ -207,7 +226,7 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
                 try {
                     if (!j.refused.empty())
                         throw Error(j.refused);
-                    Context ctx(budget, inner, j.input);
+                    Context ctx(budget, inner, j.input, warn);
                     text = fn(j, ctx);
                 } catch (const InterruptedError&) {
                     stopped = true;
@@ -251,6 +270,8 @@ int runBatch(const BatchPlan& plan, const BatchOptions& options,
         t.join();
     if (bar)
         std::fprintf(stderr, "\r\033[K");
+    if (options.afterJobs && !lut::interrupted())
+        options.afterJobs();
     int failed = 0;
     for (std::size_t i = 0; i < jobs.size(); ++i)
         if (!failures[i].empty()) {

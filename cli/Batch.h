@@ -57,6 +57,9 @@ public:
     // ends; throws lut::Error when one file alone needs more than the whole budget.
     virtual void reserveMemory(std::uint64_t bytes, const std::string& what) = 0;
     virtual int innerThreads() const = 0; // threads this job may use
+    // Prints text (whole lines) to standard error above the progress bar: the bar's line is
+    // cleared first and drawn again after, so a warning never lands in the middle of it.
+    virtual void warn(const std::string& text) = 0;
 };
 
 struct BatchOptions {
@@ -64,6 +67,9 @@ struct BatchOptions {
     bool quiet = false;          // no progress bar, no summary
     std::uint64_t maxMemory = 0; // 0 = defaultMaxMemory()
     std::string unit = "files";  // for the summary
+    // Called once every job is done, the bar cleared, before the failures and the summary: for
+    // what is said once per batch (apply's values outside the LUT's domain, over every frame).
+    std::function<void()> afterJobs;
 };
 
 // Half the physical memory (what --max-memory defaults to).

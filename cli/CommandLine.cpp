@@ -156,6 +156,11 @@ CommandLine::CommandLine(const RunHooks& hooks)
     m_app.add_option("--generate", m_generate, "print the man page or a shell completion script")
         ->check(CLI::IsMember(generatorKinds()))
         ->group("");
+    // What the shell completions (Completions.cpp) offer after --from, --look, --display, --view:
+    // the active config's names, one a line; nothing on standard output when there is no config.
+    m_app.add_option("--names", m_names, "print the active config's names, one a line")
+        ->type_name("KIND")
+        ->group("");
     m_app.footer("Run 'lutkit help COMMAND' (or lutkit COMMAND --help) for a command's options "
                  "and examples.\nExit codes: 0 success, 1 bad input or failed operation, 2 bad "
                  "usage, 130 interrupted (Ctrl-C, SIGTERM; nothing half-written is left).");
@@ -221,7 +226,7 @@ std::optional<std::string>
 CommandLine::unknownCommandMessage(const std::vector<std::string>& args) const {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if (a == "--generate") {
+        if (a == "--generate" || a == "--names") {
             ++i; // its value
             continue;
         }
@@ -341,6 +346,16 @@ int CommandLine::run(const std::vector<std::string>& args) {
     }
     if (!m_generate.empty()) {
         std::cout << generate(describeProgram(m_app), m_generate);
+        return kExitOk;
+    }
+    if (!m_names.empty()) {
+        try {
+            for (const auto& n : formats::configNames(m_names))
+                std::cout << n << "\n";
+        } catch (const Error& e) {
+            std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
+            return kExitFailure;
+        }
         return kExitOk;
     }
     if (m_helpRequested) {

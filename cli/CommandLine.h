@@ -2,7 +2,9 @@
 #pragma once
 // The lutkit command line: every subcommand (commands/X.{h,cpp}: its options, CLI11 set-up, help
 // with examples, and run function), plus `help [COMMAND]`, -V/--version and the hidden
-// `--generate man|bash|zsh|fish` the build uses to write the man page and shell completions.
+// `--generate man|bash|zsh|fish` the build uses to write the man page and shell completions, and
+// the hidden `--names spaces|looks|displays|views[:DISPLAY]` those completions call: the active
+// config's names ($OCIO, else lutkit's own), one a line.
 //
 // main() is `return lut::cli::CommandLine().run(argc, argv);`. Tests and the CLI fuzzer build the
 // same command line with hooks in place of the run functions, so they see exactly the options,
@@ -101,6 +103,7 @@ private:
     CLI::App m_app;
     int m_exitCode = 0;
     std::string m_generate;       // --generate KIND
+    std::string m_names;          // --names KIND: the active config's names, for completion
     bool m_helpRequested = false; // `help` was given
     std::string m_helpTopic;      // `help COMMAND`
 };

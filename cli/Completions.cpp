@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Shell completion scripts for bash, zsh and fish, generated from the option tables: command
-// names, option names, the fixed values of an option (layouts, formats, presets ...), files
-// where a file is expected and folders where a folder is.
+// names, option names, the fixed values of an option (layouts, formats, presets ...) and of a
+// command's first argument (atlas build|split|info, chart NAME), files where a file or an output
+// path (-o) is expected and folders where a folder is, and the names of the active OpenColorIO
+// config after --from, --to, --look, --display, --view ...: the scripts ask `lutkit --names KIND`
+// (CommandLine.h), with OCIO set to the --config/--iconfig given on the line.
 #include "Generators.h"
 
 #include <algorithm>
@@ -11,18 +14,40 @@ namespace lut::cli {
 
 namespace {
 
-enum class Value { None, Flag, Files, Dirs, Fixed };
+enum class Value { None, Flag, Files, Dirs, Fixed, Names };
 
 Value valueOf(const OptionEntry& o) {
     if (o.valueName.empty())
         return Value::Flag;
     if (!o.values.empty())
         return Value::Fixed;
-    if (o.valueName == "FILE")
+    if (o.valueName == "FILE" || o.valueName == "PATH") // PATH: -o, a file or a folder
         return Value::Files;
     if (o.valueName == "DIR")
         return Value::Dirs;
+    if (o.valueName == "SPACE" || o.valueName == "LOOKS" || o.valueName == "DISPLAY" ||
+        o.valueName == "VIEW")
+        return Value::Names;
     return Value::None; // numbers, free text
+}
+
+// The kind `lutkit --names` takes for an option of Value::Names.
+std::string namesKind(const OptionEntry& o) {
+    if (o.valueName == "LOOKS")
+        return "looks";
+    if (o.valueName == "DISPLAY")
+        return "displays";
+    if (o.valueName == "VIEW")
+        return "views";
+    return "spaces";
+}
+
+// The fixed values of a command's first argument (atlas's ACTION), or none.
+std::vector<std::string> firstArgumentValues(const CommandEntry& c) {
+    for (const auto& o : c.options)
+        if (!o.positional.empty())
+            return o.values;
+    return {};
 }
 
 std::string joined(const std::vector<std::string>& words, const char* sep = " ") {
@@ -59,15 +84,19 @@ std::vector<std::string> commandNames(const ProgramEntry& p) {
     return n;
 }
 
-void bashOptions(std::ostringstream& os, const std::vector<OptionEntry>& options) {
-    std::vector<std::string> words;
+void bashOptions(std::ostringstream& os, const CommandEntry& c) {
+    std::vector<std::string> words, takes;
     os << "            case \"$prev\" in\n";
-    for (const auto& o : options) {
-        if (o.hidden || !o.positional.empty())
+    for (const auto& o : c.options) {
+        if (!o.positional.empty())
             continue;
         const auto n = names(o);
-        words.insert(words.end(), n.begin(), n.end());
         const Value v = valueOf(o);
+        if (v != Value::Flag)
+            takes.insert(takes.end(), n.begin(), n.end());
+        if (o.hidden)
+            continue;
+        words.insert(words.end(), n.begin(), n.end());
         if (v == Value::Flag)
             continue;
         os << "                " << joined(n, "|") << ")\n                    ";
@@ -77,11 +106,15 @@ void bashOptions(std::ostringstream& os, const std::vector<OptionEntry>& options
             os << "_lutkit_files";
         else if (v == Value::Dirs)
             os << "_lutkit_dirs";
+        else if (v == Value::Names)
+            os << "_lutkit_names " << namesKind(o);
         else
             os << "COMPREPLY=()";
         os << "\n                    return 0 ;;\n";
     }
-    os << "            esac\n            opts=" << quoted(joined(words)) << " ;;\n";
+    os << "            esac\n            opts=" << quoted(joined(words))
+       << "\n            takes=" << quoted(joined(takes))
+       << "\n            first=" << quoted(joined(firstArgumentValues(c))) << " ;;\n";
 }
 
 std::string zshEscape(const std::string& s) {
@@ -102,6 +135,8 @@ std::string zshAction(const OptionEntry& o) {
         return "_files";
     case Value::Dirs:
         return "_files -/";
+    case Value::Names:
+        return "_lutkit_names " + namesKind(o);
     default:
         return " ";
     }
@@ -134,6 +169,93 @@ void zshOptions(std::ostringstream& os, const std::vector<OptionEntry>& options)
     }
 }
 
+// bash: the active config's names of a kind (lutkit --names: spaces, looks, displays, views),
+// the config being the line's --config/--iconfig, else $OCIO, else lutkit's own; a look list
+// ("a, +b") has its last item completed; names with blanks come back escaped.
+constexpr const char* kBashNames = R"SH(_lutkit_names() {
+    local kind=$1 cfg="" display="" word prefix="" q w j
+    local -a found
+    for ((j = 1; j < COMP_CWORD; j++)); do
+        case "${COMP_WORDS[j]}" in
+            --config|--iconfig) cfg=${COMP_WORDS[j+1]} ;;
+            --display) display=${COMP_WORDS[j+1]} ;;
+        esac
+    done
+    cfg=${cfg//[\\\"\']/}; cfg=${cfg/#\~/$HOME}
+    display=${display//[\\\"\']/}
+    [[ $kind == views && -n $display ]] && kind="views:$display"
+    if [[ -n $cfg ]]; then
+        mapfile -t found < <(OCIO="$cfg" "${COMP_WORDS[0]}" --names "$kind" 2>/dev/null)
+    else
+        mapfile -t found < <("${COMP_WORDS[0]}" --names "$kind" 2>/dev/null)
+    fi
+    word=${cur//[\\\"\']/}
+    if [[ $kind == looks ]]; then
+        if [[ $word == *,* ]]; then
+            prefix="${word%,*},"; word=${word##*,}
+        fi
+        w=${word%%[!\ +-]*}; prefix+=$w; word=${word#"$w"}
+    fi
+    COMPREPLY=()
+    for w in "${found[@]}"; do
+        [[ $w == "$word"* ]] || continue
+        printf -v q %q "$prefix$w"
+        COMPREPLY+=("$q")
+    done
+}
+)SH";
+
+// zsh: the same, through compadd (which quotes what it inserts).
+constexpr const char* kZshNames = R"SH(_lutkit_names() {
+    local kind=$1 cfg= i
+    local -a found
+    i=${words[(I)--config]}
+    (( i )) || i=${words[(I)--iconfig]}
+    (( i )) && cfg=${(Q)words[i+1]}
+    cfg=${cfg/#\~/$HOME}
+    i=${words[(I)--display]}
+    [[ $kind == views ]] && (( i )) && kind="views:${(Q)words[i+1]}"
+    if [[ -n $cfg ]]; then
+        found=(${(f)"$(OCIO=$cfg $_lutkit_prog --names $kind 2>/dev/null)"})
+    else
+        found=(${(f)"$($_lutkit_prog --names $kind 2>/dev/null)"})
+    fi
+    if [[ $kind == looks ]]; then
+        compset -P '*,'
+        compset -P '[ +-]##'
+    fi
+    compadd -a found
+}
+)SH";
+
+// fish: the same, from the command line's tokens.
+constexpr const char* kFishNames = R"SH(function __lutkit_names
+    set -l kind $argv[1]
+    set -l words (commandline -opc)
+    set -l cfg
+    set -l display
+    set -l n (count $words)
+    for i in (seq $n)
+        if test $i -lt $n
+            switch $words[$i]
+                case --config --iconfig
+                    set cfg $words[(math $i + 1)]
+                case --display
+                    set display $words[(math $i + 1)]
+            end
+        end
+    end
+    if test "$kind" = views; and test -n "$display"
+        set kind views:$display
+    end
+    if test -n "$cfg"
+        env OCIO=$cfg $words[1] --names $kind 2>/dev/null
+    else
+        $words[1] --names $kind 2>/dev/null
+    end
+end
+)SH";
+
 } // namespace
 
 std::string bashCompletion(const ProgramEntry& p) {
@@ -148,11 +270,18 @@ std::string bashCompletion(const ProgramEntry& p) {
           "    compopt -o filenames 2>/dev/null\n"
           "    COMPREPLY=($(compgen -d -- \"$cur\"))\n"
           "}\n"
-          "_lutkit() {\n"
-          "    local cur prev cmd opts i\n"
+       << kBashNames
+       << "_lutkit() {\n"
+          "    local cur prev cmd opts takes first i j n\n"
           "    cur=\"${COMP_WORDS[COMP_CWORD]}\"\n"
           "    prev=\"\"\n"
           "    (( COMP_CWORD > 0 )) && prev=\"${COMP_WORDS[COMP_CWORD-1]}\"\n"
+          "    # --opt=value: bash splits the word at '='.\n"
+          "    if [[ $cur == = ]]; then\n"
+          "        prev=\"${COMP_WORDS[COMP_CWORD-1]}\"; cur=\"\"\n"
+          "    elif [[ $prev == = ]] && (( COMP_CWORD > 1 )); then\n"
+          "        prev=\"${COMP_WORDS[COMP_CWORD-2]}\"\n"
+          "    fi\n"
           "    cmd=\"\"\n"
           "    for ((i = 1; i < COMP_CWORD; i++)); do\n"
           "        case \"${COMP_WORDS[i]}\" in\n"
@@ -180,7 +309,7 @@ std::string bashCompletion(const ProgramEntry& p) {
           "            return 0 ;;\n";
     for (const auto& c : p.commands) {
         os << "        " << c.name << ")\n";
-        bashOptions(os, c.options);
+        bashOptions(os, c);
     }
     os << "        *) return 0 ;;\n"
           "    esac\n"
@@ -191,7 +320,23 @@ std::string bashCompletion(const ProgramEntry& p) {
        << quoted(joined(commandNames(p)))
        << " -- \"$cur\"))\n"
           "    else\n"
-          "        _lutkit_files\n"
+          "        # The command's arguments before this one (option values skipped): its first\n"
+          "        # may be one of a fixed set (atlas build|split|info).\n"
+          "        n=0\n"
+          "        for ((j = i + 1; j < COMP_CWORD; j++)); do\n"
+          "            case \"${COMP_WORDS[j]}\" in\n"
+          "                -*) if [[ \" $takes \" == *\" ${COMP_WORDS[j]} \"* ]]; then\n"
+          "                        ((j++)); [[ ${COMP_WORDS[j]} == = ]] && ((j++))\n"
+          "                    fi ;;\n"
+          "                =) ;;\n"
+          "                *) ((n++)) ;;\n"
+          "            esac\n"
+          "        done\n"
+          "        if [[ -n $first ]] && (( n == 0 )); then\n"
+          "            COMPREPLY=($(compgen -W \"$first\" -- \"$cur\"))\n"
+          "        else\n"
+          "            _lutkit_files\n"
+          "        fi\n"
           "    fi\n"
           "    return 0\n"
           "}\n"
@@ -204,8 +349,10 @@ std::string zshCompletion(const ProgramEntry& p) {
     os << "#compdef lutkit\n"
           "# zsh completion for lutkit. Generated by lutkit --generate zsh from its option "
           "tables; do not edit.\n"
-          "_lutkit() {\n"
+       << kZshNames
+       << "_lutkit() {\n"
           "    local curcontext=\"$curcontext\" state line\n"
+          "    local _lutkit_prog=${words[1]/#\\~/$HOME}\n"
           "    typeset -A opt_args\n"
           "    local -a commands\n"
           "    commands=(\n";
@@ -238,7 +385,8 @@ std::string fishCompletion(const ProgramEntry& p) {
     std::ostringstream os;
     os << "# fish completion for lutkit. Generated by lutkit --generate fish from its option "
           "tables; do not edit.\n"
-          "complete -c lutkit -f\n";
+          "complete -c lutkit -f\n"
+       << kFishNames;
     const std::string commands = joined(commandNames(p));
     for (const auto& c : p.commands)
         os << "complete -c lutkit -n " << quoted("not __fish_seen_subcommand_from " + commands)
@@ -262,9 +410,12 @@ std::string fishCompletion(const ProgramEntry& p) {
             const Value v = valueOf(o);
             if (!o.positional.empty()) {
                 files = files || v == Value::Files || v == Value::Dirs;
+                // The first argument's fixed values (atlas build|split|info), until one is given.
                 if (v == Value::Fixed)
-                    os << "complete -c lutkit -n " << when << " -a " << quoted(joined(o.values))
-                       << "\n";
+                    os << "complete -c lutkit -n "
+                       << quoted("__fish_seen_subcommand_from " + c.name +
+                                 "; and not __fish_seen_subcommand_from " + joined(o.values))
+                       << " -a " << quoted(joined(o.values)) << "\n";
                 continue;
             }
             os << "complete -c lutkit -n " << when;
@@ -278,6 +429,8 @@ std::string fishCompletion(const ProgramEntry& p) {
                 os << " -r -F";
             else if (v == Value::Dirs)
                 os << " -x -a '(__fish_complete_directories)'";
+            else if (v == Value::Names)
+                os << " -x -a " << quoted("(__lutkit_names " + namesKind(o) + ")");
             else if (v != Value::Flag)
                 os << " -x";
             os << " -d " << quoted(shortHelp(o.help)) << "\n";

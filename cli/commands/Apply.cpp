@@ -10,11 +10,13 @@
 #include "Vocabulary.h"
 
 #include "lut/formats/ApplyImage.h"
+#include "lut/formats/ColorConfig.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <mutex>
@@ -23,17 +25,88 @@ namespace lut::cli {
 
 namespace {
 
-// "12 of 4096 pixels (0.29%) have values outside [0, 1] after the LUT (worst 1.25), clamped by
-// the 8-bit output: ..."
-std::string clampedText(const formats::ApplyImageReport& r) {
-    std::string s = r.clamped.str(glm::vec3(0.0f), glm::vec3(1.0f));
-    const std::string from = "outside the LUT's domain [0, 1]"; // str() names the domain given
-    if (const auto at = s.find(from); at != std::string::npos)
-        s.replace(at, from.size(), "have values outside [0, 1] after the LUT");
-    const bool eight = r.output.type == formats::PixelType::UInt8;
-    return s + ", clamped by the " + (eight ? "8" : "16") +
-           "-bit output (--bit-depth 32 or a float format such as EXR keeps them)";
-}
+// What the LUT saw outside its domain, and what the integer outputs clamped, over a batch: said
+// once after it (a sequence of 240 frames said it 240 times, 230 characters each), with the
+// colour spaces of the config whose images hold such values.
+class OutsideTally {
+public:
+    void add(const std::string& input, const formats::ApplyImageReport& r) {
+        ++m_files;
+        m_domain.merge(r.domain);
+        if (r.domain.outside) {
+            ++m_filesOutside;
+            m_firstOutside = m_firstOutside.empty() ? input : std::min(m_firstOutside, input);
+        }
+        m_clamped.merge(r.clamped);
+        if (r.clamped.outside) {
+            ++m_filesClamped;
+            m_firstClamped = m_firstClamped.empty() ? input : std::min(m_firstClamped, input);
+            m_eightBit = m_eightBit || r.output.type == formats::PixelType::UInt8;
+        }
+    }
+
+    // The warnings, whole lines; "" when nothing was outside.
+    std::string text(glm::vec3 domainMin, glm::vec3 domainMax,
+                     const formats::ColorSpec& color) const {
+        std::string out;
+        if (m_domain.outside) {
+            out += "lutkit: warning: " + printable(which(m_filesOutside, m_firstOutside)) +
+                   m_domain.str(domainMin, domainMax) + "; they take the LUT's edge values" +
+                   (color.any() ? "" : spacesHint(m_domain.worst, color.config)) + "\n";
+        }
+        if (m_clamped.outside) {
+            // "12 of 4096 pixels (0.29%) have values outside [0, 1] after the LUT (worst 1.25)"
+            std::string s = m_clamped.str(glm::vec3(0.0f), glm::vec3(1.0f));
+            const std::string from = "outside the LUT's domain [0, 1]"; // str()'s wording
+            if (const auto at = s.find(from); at != std::string::npos)
+                s.replace(at, from.size(), "have values outside [0, 1] after the LUT");
+            out += "lutkit: warning: " + printable(which(m_filesClamped, m_firstClamped)) + s +
+                   ", clamped by the " + (m_eightBit ? "8" : "16") +
+                   "-bit output (--bit-depth 32 or a float format such as EXR keeps them)\n";
+        }
+        return out;
+    }
+
+private:
+    // "a.exr: " for one file, "3 of 24 files (f.0001.exr ...): " for a batch (the first name in
+    // order, whichever thread finished first).
+    std::string which(int files, const std::string& first) const {
+        if (m_files == 1)
+            return first + ": ";
+        return std::to_string(files) + " of " + std::to_string(m_files) + " files (" + first +
+               (files > 1 ? " ..." : "") + "): ";
+    }
+
+    // " (scene-linear values: --from one of 'ACEScg', ... (lutkit's own config), with
+    // --lut-space the LUT's space)": the config's spaces whose images hold the worst value.
+    static std::string spacesHint(float worst, const std::string& config) {
+        const std::string generic =
+            " (--from/--lut-space put the image in the space the LUT was made for)";
+        std::vector<std::string> spaces;
+        std::string where;
+        try {
+            spaces = formats::spacesHolding(worst, config);
+            const formats::ConfigLocation at = formats::locateConfig(config);
+            where =
+                at.source == formats::ConfigSource::Shipped ? "lutkit's own config" : at.describe();
+        } catch (const std::exception&) { // no config (or the portable edition): no names
+            return generic;
+        }
+        if (spaces.empty())
+            return generic;
+        std::string list;
+        for (std::size_t i = 0; i < spaces.size(); ++i)
+            list += (i ? ", " : "") + ("'" + spaces[i] + "'");
+        return std::string(" (scene-linear values: --from ") +
+               (spaces.size() > 1 ? "one of " : "") + list + " (" + where +
+               "), with --lut-space the LUT's space)";
+    }
+
+    int m_files = 0, m_filesOutside = 0, m_filesClamped = 0;
+    DomainStats m_domain, m_clamped;
+    std::string m_firstOutside, m_firstClamped;
+    bool m_eightBit = false;
+};
 
 } // namespace
 
@@ -68,6 +141,8 @@ int runApply(const ApplyOptions& o) {
         : used.conversion ? formats::lutPixelChain(colour, std::move(used.lut), o.interp)
                           : formats::lutPixelChain(colour, file, o.interp);
     std::mutex noteMutex;
+    OutsideTally tally;
+    bo.afterJobs = [&] { std::cerr << tally.text(chain.domainMin(), chain.domainMax(), o.color); };
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         formats::ApplyImageOptions ao;
         ao.bitDepth = o.bitDepth;
@@ -91,23 +166,17 @@ int runApply(const ApplyOptions& o) {
                         std::to_string(e.count() - 1) + ")");
         }
         {
+            // Values outside the LUT's domain and values clamped by the output: counted over the
+            // batch, said once after it (afterJobs); the file's own notes now, above the bar.
             std::lock_guard<std::mutex> lock(noteMutex);
-            const std::string outside = r.domain.str(chain.domainMin(), chain.domainMax());
-            if (!outside.empty())
-                std::cerr << "lutkit: warning: " << printable(j.input) << ": " << outside
-                          << "; they take the LUT's edge values"
-                          << (o.color.any() ? ""
-                                            : " (--from/--lut-space put the image in the space "
-                                              "the LUT was made for)")
-                          << "\n";
-            if (r.clamped.outside)
-                std::cerr << "lutkit: warning: " << printable(j.input) << ": " << clampedText(r)
-                          << "\n";
-            for (const auto& d : r.diagnostics)
-                if (isShown(d, o.verbosity))
-                    std::cerr << "lutkit: " << severityWord(d.severity) << ": "
-                              << printable(j.input + ": " + d.message) << "\n";
+            tally.add(j.input, r);
         }
+        std::string notes;
+        for (const auto& d : r.diagnostics)
+            if (isShown(d, o.verbosity))
+                notes += std::string("lutkit: ") + severityWord(d.severity) + ": " +
+                         printable(j.input + ": " + d.message) + "\n";
+        ctx.warn(notes);
         if (!o.verbosity.verbose)
             return std::string();
         return j.input + " -> " + j.output + " (" + formats::toString(r.output.type) +

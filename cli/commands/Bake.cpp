@@ -164,7 +164,9 @@ CLI::App* setupBake(CLI::App& app, std::function<void(const BakeCommandOptions&)
     const std::string baking = "Baking";
     addOutputFormat(*sub, o->bake.format)->group(baking);
     sub->add_option("--cubesize", o->bake.cubeSize,
-                    "lattice size (default: the format's fixed size, else 33)")
+                    "lattice size (default: ociobakelut's for the format: flame 17, lustre 33, "
+                    "iridas_cube, cinespace, truelight 32, resolve_cube, iridas_itx, houdini, clf, "
+                    "ctf 64; a fixed size where the format has one; else 33)")
         ->check(CLI::Range(2, 256))
         ->group(baking);
     sub->add_option("--size", o->bake.cubeSize, "the same as --cubesize")

@@ -135,12 +135,14 @@ int runConvertBatch(const ConvertOptions& o) {
     BatchOptions bo;
     bo.quiet = o.verbosity.quiet;
     bo.unit = "LUTs";
-    std::mutex noteMutex;
-    return runBatch(plan, bo, [&](const BatchJob& j, JobContext&) {
+    return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
         Diagnostics notes;
         const std::string line = convertOne(writer->name(), j, base, notes);
-        std::lock_guard<std::mutex> lock(noteMutex);
-        printDiagnostics(std::cerr, notes, o.verbosity, "lutkit: ");
+        std::string lines; // above the progress bar
+        for (const auto& d : notes)
+            if (isShown(d, o.verbosity))
+                lines += "lutkit: " + printable(d.str()) + "\n";
+        ctx.warn(lines);
         return line;
     });
 }

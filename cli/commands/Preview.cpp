@@ -242,7 +242,9 @@ int runPreview(const PreviewOptions& o) {
         settings.shaper = shaper;
         return settings;
     };
-    auto printNotes = [&](const std::string& input, const Diagnostics& notes) {
+    // Above the progress bar (JobContext::warn).
+    auto printNotes = [&](JobContext& ctx, const std::string& input, const Diagnostics& notes) {
+        std::string lines;
         std::lock_guard<std::mutex> lock(noteMutex);
         for (const auto& d : notes) {
             if (!isShown(d, o.verbosity))
@@ -252,9 +254,10 @@ int runPreview(const PreviewOptions& o) {
             if (bloomNote && noted)
                 continue;
             noted = noted || bloomNote;
-            std::cerr << "lutkit: " << severityWord(d.severity) << ": "
-                      << printable(input + ": " + d.message) << "\n";
+            lines += std::string("lutkit: ") + severityWord(d.severity) + ": " +
+                     printable(input + ": " + d.message) + "\n";
         }
+        ctx.warn(lines);
     };
 
     return runBatch(plan, bo, [&](const BatchJob& j, JobContext& ctx) {
@@ -301,7 +304,7 @@ int runPreview(const PreviewOptions& o) {
                     const Diagnostics undo = prep->notes();
                     notes.insert(notes.end(), undo.begin(), undo.end());
                     notes.insert(notes.end(), r.diagnostics.begin(), r.diagnostics.end());
-                    printNotes(j.input, notes);
+                    printNotes(ctx, j.input, notes);
                     if (!o.verbosity.verbose)
                         return std::string();
                     std::ostringstream os;
@@ -364,7 +367,7 @@ int runPreview(const PreviewOptions& o) {
         if (extensionOf(j.output) == ".png" || wo.format == "png")
             wo.compression = "zip:1";
         formats::writeImage(j.target.writePath, img.image, wo);
-        printNotes(j.input, notes);
+        printNotes(ctx, j.input, notes);
         if (!o.verbosity.verbose)
             return std::string();
         return j.input + " -> " + j.output + " (" + toString(settings.preset) + ")\n" +

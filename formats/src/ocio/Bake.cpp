@@ -10,6 +10,7 @@
 
 #include "lut/Limits.h"
 #include "lut/Math.h"
+#include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -35,6 +36,28 @@ std::string num(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
+}
+
+// ociobakelut's default lattice for a format (OpenColorIO 2.1's bakers, each format's
+// DEFAULT_CUBE_SIZE in src/OpenColorIO/fileformats/FileFormat*.cpp), so `lutkit bake` and
+// `ociobakelut` with the same --format write the same lattice: flame 17, lustre 33, cinespace,
+// truelight and iridas_cube 32, resolve_cube, iridas_itx, houdini, CLF and CTF 64. A .cube named
+// without a dialect (lutkit picks it), .spi3d (OCIO cannot bake it) and lutkit's own formats: 33.
+// (Shapers stay at kDefaultShaperSize: lutkit's .csp prelut is its shaper's knots, not OCIO's
+// 1024 samples, and Resolve's and CLF's 4096 are OCIO's 1D size too.)
+int ociobakelutCubeSize(const Format& writer, const FormatOptions& write) {
+    const std::string name = writer.name();
+    if (name == "cube") {
+        const auto dialect = write.attribute(kCubeDialectAttribute);
+        return dialect == "resolve" ? 64 : dialect == "adobe" ? 32 : kDefaultBakeSize;
+    }
+    if (name == "flame")
+        return 17;
+    if (name == "csp" || name == "cub")
+        return 32;
+    if (name == "itx" || name == "houdini" || name == "clf" || name == "ctf")
+        return 64;
+    return kDefaultBakeSize; // lustre's 33 too
 }
 
 // A per-channel shaper: input -> [0,1] (forward) and back (inverse), over [lo, hi].
@@ -242,7 +265,10 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
     }
     report.shaper = shaper.text;
     const int fixed = writer->fixedSizeFor(o.write);
-    const int n = o.cubeSize ? o.cubeSize : (fixed ? fixed : kDefaultBakeSize);
+    FormatOptions named = o.write; // with the dialect --format names (resolve_cube ...)
+    if (!o.format.empty())
+        registry.applyAlias(o.format, named);
+    const int n = o.cubeSize ? o.cubeSize : (fixed ? fixed : ociobakelutCubeSize(*writer, named));
     report.cubeSize = n;
 
     // A conversion that mixes no channels is per-channel curves: a 1D table holds it exactly at

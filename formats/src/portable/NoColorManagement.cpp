@@ -44,6 +44,14 @@ ColorConfig ColorConfig::load(const ConfigLocation&) {
     refuse("colour management (an OpenColorIO config)");
 }
 
+std::vector<std::string> configNames(const std::string&, const std::string&) {
+    refuse("colour management (an OpenColorIO config)");
+}
+
+std::vector<std::string> spacesHolding(float, const std::string&) {
+    refuse("colour management (an OpenColorIO config)");
+}
+
 bool ColorSpec::any() const {
     return !config.empty() || !from.empty() || !lutSpace.empty() || !lutOutputSpace.empty() ||
            !to.empty() || !looks.empty() || !display.empty() || !view.empty();

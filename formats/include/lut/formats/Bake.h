@@ -59,7 +59,11 @@ struct BakeOptions {
     std::string shaperSpace; // a colour space of the config to shape the input with
     ShaperChoice shaper = ShaperChoice::Auto;
     int shaperSize = 0; // shaper (or 1D table) entries; 0 = kDefaultShaperSize
-    int cubeSize = 0;   // 0 = the format's fixed size, else 33 (or a 1D table: see above)
+    // 0 = the format's fixed size, else ociobakelut's for the format (OpenColorIO 2.1's bakers):
+    // flame 17, lustre 33, cinespace, truelight and iridas_cube 32, resolve_cube, iridas_itx,
+    // houdini, clf and ctf 64; 33 for a .cube named without a dialect, .spi3d and lutkit's own
+    // formats (or a 1D table: see above).
+    int cubeSize = 0;
     std::string format; // output format name or alias ("" = by the output's extension)
     FormatOptions write;
     int nthreads = 0;

@@ -105,4 +105,18 @@ private:
     std::shared_ptr<const Impl> m_impl;
 };
 
+// The names of the active config (`given`, else $OCIO, else lutkit's own) a shell completes for a
+// colour-management option, one kind at a time: "spaces" (colour spaces, then their aliases, then
+// the roles), "looks", "displays", "views" (every display's, each once) or "views:DISPLAY" (that
+// display's). Throws lut::Error when there is no config or it cannot be read, and for another kind.
+std::vector<std::string> configNames(const std::string& kind, const std::string& given = {});
+
+// The colour spaces of the active config whose images hold `value`, a value outside the [0, 1] a
+// LUT is usually made for (DomainStats::worst of lutkit apply): above 1 or below 0 are scene-linear
+// values, so its scene-linear spaces (encoding scene-linear, or an lg2 allocation), above 1 those
+// whose allocation reaches `value` (or that give none) when there are some. In the config's order;
+// empty for a value in [0, 1] or NaN, and for a config without a scene-linear space. Throws
+// lut::Error when there is no config or it cannot be read.
+std::vector<std::string> spacesHolding(float value, const std::string& given = {});
+
 } // namespace lut::formats
