@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Document.h"
 
+#include "ReplaceLutCommand.h"
 #include "SetAdjustmentsCommand.h"
 
 #include "lut/Error.h"
@@ -228,6 +229,43 @@ void Document::startFrom(Lut3D base, const QString& origin) {
         throw Error("the LUT is empty");
     replaceLut(std::move(base), {}, origin, {}, true, LutPurpose::Raw, {});
     m_purposeKnown = true; // made here as an edit
+}
+
+void Document::replaceLutUndoable(Lut3D base, const QString& origin, const QString& text) {
+    if (base.empty())
+        throw Error("the LUT is empty");
+    LutState after;
+    after.base = std::make_shared<const Lut3D>(std::move(base));
+    after.purposeKnown = true; // made here as an edit
+    after.origin = origin;
+    after.unsavedOrigin = true; // it exists only in memory until saved
+    ++m_gesture;
+    m_undo->push(new ReplaceLutCommand(this, lutState(), std::move(after), text));
+}
+
+Document::LutState Document::lutState() const {
+    return LutState{m_base,   m_adjustments, m_purpose, m_purposeKnown,  m_lutPath,
+                    m_origin, m_format,      m_notes,   m_unsavedOrigin, m_savedOnce};
+}
+
+void Document::restoreLutState(const LutState& s) {
+    m_base = s.base;
+    m_adjustments = s.adjustments;
+    m_adjustmentsShared = std::make_shared<const Adjustments>(s.adjustments);
+    rebuildEffective();
+    m_purpose = s.purpose;
+    m_purposeKnown = s.purposeKnown;
+    m_lutPath = s.path;
+    m_origin = s.origin;
+    m_format = s.format;
+    m_notes = s.notes;
+    m_unsavedOrigin = s.unsavedOrigin;
+    m_savedOnce = s.savedOnce;
+    emit lutReplaced();
+    emit adjustmentsChanged();
+    emit effectiveLutChanged();
+    emit pathChanged();
+    emitModifiedIfChanged();
 }
 
 QStringList Document::startFromScreenshot(const QString& path) {

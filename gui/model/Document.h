@@ -74,6 +74,24 @@ public:
     // (lut/roundtrip/Extract.h, raw target). Returns the extractor's warnings to show. Throws
     // lut::Error (document unchanged) when the image cannot be read or holds no patch.
     QStringList startFromScreenshot(const QString& path);
+    // Replaces the LUT by one made from the document (Tools > Match to Reference) as one undo
+    // step: the LUT becomes an untitled, modified edit with neutral adjustments; Undo gives back
+    // the LUT, adjustments, file and purpose it had. `origin` names where it came from, `text`
+    // the undo step. Throws lut::Error (an empty LUT), document unchanged.
+    void replaceLutUndoable(Lut3D base, const QString& origin, const QString& text);
+
+    // Everything a LUT replacement changes (ReplaceLutCommand keeps one before and one after).
+    struct LutState {
+        std::shared_ptr<const Lut3D> base;
+        Adjustments adjustments;
+        LutPurpose purpose = LutPurpose::Raw;
+        bool purposeKnown = false;
+        QString path, origin, format;
+        QStringList notes;
+        bool unsavedOrigin = false, savedOnce = false;
+    };
+    LutState lutState() const;
+    void restoreLutState(const LutState& state); // no undo entry (the command's undo and redo)
 
     // ---- what the document is made for ------------------------------------------------------
     // The export target (ExportTarget.h): the game's LUT, an engine strip or a grading .cube.
