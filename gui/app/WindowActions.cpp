@@ -2,10 +2,12 @@
 #include "WindowActions.h"
 
 #include "BackgroundTask.h"
+#include "BuiltinNames.h"
 #include "CompareDialog.h"
 #include "Document.h"
 #include "ErrorText.h"
 #include "FileActions.h"
+#include "HelpDialogs.h"
 #include "MatchDialog.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
@@ -115,8 +117,9 @@ void WindowActions::buildFileMenu() {
         const QString name = QString::fromLatin1(kBuiltinLutPrefix.data(),
                                                  static_cast<int>(kBuiltinLutPrefix.size())) +
                              QString::fromStdString(b.name);
-        QAction* a = builtins->addAction(name);
-        a->setToolTip(QString::fromStdString(b.description));
+        QAction* a = builtins->addAction(builtinLutTitle(name));
+        a->setObjectName(QStringLiteral("open.") + name);
+        a->setToolTip(name + QStringLiteral(": ") + QString::fromStdString(b.description));
         a->setStatusTip(QString::fromStdString(b.description));
         connect(a, &QAction::triggered, files, [files, name] { files->startOpenLut(name); });
     }
@@ -375,6 +378,14 @@ void WindowActions::startCompare(const QString& path) {
 
 void WindowActions::buildHelpMenu() {
     QMenu* help = m_window->menuBar()->addMenu(tr("&Help"));
+    QMainWindow* window = m_window;
+    QAction* quick =
+        help->addAction(tr("&Quick Start"), this, [window] { showQuickStart(window); });
+    quick->setObjectName("help.quickStartAction");
+    quick->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("&Keyboard Shortcuts"), this, [window] { showShortcuts(window); })
+        ->setObjectName("help.shortcutsAction");
+    help->addSeparator();
     help->addAction(tr("&About lutkit editor"), this, [this] {
         QMessageBox::about(m_window, tr("About lutkit editor"),
                            tr("<b>lutkit editor</b><br>Preview colour grading LUTs on screenshots "
