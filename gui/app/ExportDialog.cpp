@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ExportDialog.h"
 
+#include "Document.h"
+
 #include "lut/formats/Registry.h"
 #include "lut/io/Layout.h"
 
@@ -49,6 +51,15 @@ QList<ExportChoice> exportChoices() {
         } else {
             out.push_back({name, {}, QStringLiteral("%1 (%2)").arg(desc, ext), ext});
         }
+    }
+    // Atlases: the LUT as a row of a MultiLUT-style picture (AtlasExport.h, lutkit atlas build).
+    for (LutLayout l : {LutLayout::Reshade, LutLayout::Unity32}) {
+        const QString ln = QString::fromLatin1(toString(l));
+        out.push_back({QString::fromLatin1(kAtlasFormat), ln,
+                       l == LutLayout::Reshade
+                           ? QObject::tr("LUT atlas — a row added, ReShade MultiLUT.fx (.png)")
+                           : QObject::tr("LUT atlas — a row added, Unity 1024x32 rows (.png)"),
+                       QStringLiteral(".png")});
     }
     return out;
 }
@@ -160,6 +171,7 @@ void ExportDialog::choiceChanged() {
     n.format = c.format;
     n.layout = c.layout;
     n.extension = c.extension;
+    n.gameLut = exportTargetInfo(m_target).purpose == LutPurpose::Smash;
     m_path->setText(suggestedExportPath(n));
     // Strips at their natural size (16^3 = 256x16; reshade and unity-32 are 32^3 only), the
     // game's at its own; else as edited.
@@ -192,6 +204,9 @@ void ExportDialog::updateNote() {
                        ? tr("the Smash Ultimate game LUT that shows your edit (16³), "
                             "marked as the game's (LUTKIT_PURPOSE smash)")
                        : tr("the LUT as edited, marked as an edit (LUTKIT_PURPOSE raw)");
+    if (choice().format == QLatin1String(kAtlasFormat))
+        what += tr(", as the last row of the atlas: a file that is an atlas keeps its rows, a new "
+                   "one starts with the neutral row (MultiLUT's \"Neutral\")");
     const StrengthAmounts a = strengthAmounts(strength());
     if (a.luma != 1.0 || a.chroma != 1.0)
         what += a.luma == a.chroma

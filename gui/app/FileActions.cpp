@@ -2,6 +2,7 @@
 #include "FileActions.h"
 
 #include "BackgroundTask.h"
+#include "BuiltinNames.h"
 #include "Document.h"
 #include "ErrorText.h"
 #include "ExportDialog.h"
@@ -149,9 +150,12 @@ void FileActions::updateRecentMenus() {
         menu->clear();
         const QStringList list = settings.value(key).toStringList();
         for (const QString& p : list) {
+            const QString shown = builtinLutTitle(p); // a built-in LUT by its name, else p
             menu->addAction(
-                QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() + ')', this,
-                [this, p, lut] { lut ? (void)openLutAsking(p) : (void)startOpenImage(p); });
+                shown != p
+                    ? shown
+                    : QFileInfo(p).fileName() + QStringLiteral("  (") + QFileInfo(p).path() + ')',
+                this, [this, p, lut] { lut ? (void)openLutAsking(p) : (void)startOpenImage(p); });
         }
         menu->setEnabled(!list.isEmpty());
     };
@@ -191,32 +195,13 @@ std::optional<LutPurpose> FileActions::purposeFor(const QString& path, const Lut
         return p;
     // As Open LUT asks a strip's layout: once, and the answer is kept for this file. Its content
     // may say it is the game's LUT (lut::gameLutEvidence): said, and that answer pre-selected.
-    const std::string evidence = decidePurpose(file).evidence;
-    QMessageBox box(QMessageBox::Question, tr("What is this LUT for?"),
-                    tr("\"%1\" does not say what it is for. Is it an edit, the look itself (a "
-                       "graded neutral strip, a .cube from a grading app), or the game's LUT, "
-                       "already made for Smash Ultimate (what goes into "
-                       "color_grading_lut.nutexb: Smush-LUT's output, a .nutexb converted to a "
-                       "strip)?\n\nThe game's LUT is not compensated again when exported.")
-                            .arg(QFileInfo(path).fileName()) +
-                        (evidence.empty() ? QString()
-                                          : tr("\n\nIts content says it is the game's LUT: %1.")
-                                                .arg(QString::fromStdString(evidence))),
-                    QMessageBox::NoButton, m_prompts->dialogParent());
-    QPushButton* edit = box.addButton(tr("An Edit (the Look)"), QMessageBox::AcceptRole);
-    QPushButton* game = box.addButton(tr("The Game's LUT"), QMessageBox::AcceptRole);
-    QPushButton* cancel = box.addButton(QMessageBox::Cancel);
-    edit->setObjectName(QStringLiteral("purpose.raw"));
-    game->setObjectName(QStringLiteral("purpose.smash"));
-    box.setDefaultButton(evidence.empty() ? edit : game);
-    box.setEscapeButton(cancel);
-    box.exec();
-    if (box.clickedButton() != edit && box.clickedButton() != game) {
+    const auto answer = askLutPurpose(m_prompts->dialogParent(), QFileInfo(path).fileName(),
+                                      QString::fromStdString(decidePurpose(file).evidence));
+    if (!answer) {
         *cancelled = true;
         return std::nullopt;
     }
-    const LutPurpose answer = box.clickedButton() == game ? LutPurpose::Smash : LutPurpose::Raw;
-    rememberPurpose(path, answer);
+    rememberPurpose(path, *answer);
     return answer;
 }
 
@@ -301,7 +286,9 @@ bool FileActions::isOpenedLut(const QString& path) const {
 bool FileActions::exportLut(const QString& path, const QString& format,
                             const FormatOptions& options, ExportTarget target, bool overwrite,
                             const StrengthOptions& strength) {
-    if (QFileInfo::exists(path) && !overwrite && !confirmReplace(path, isOpenedLut(path))) {
+    const bool addsRow = format == QLatin1String(kAtlasFormat); // keeps the atlas's rows
+    if (QFileInfo::exists(path) && !overwrite && !addsRow &&
+        !confirmReplace(path, isOpenedLut(path))) {
         m_prompts->reportError(
             tr("Export"), tr("%1 exists and was not replaced.")
                               .arg(QDir::toNativeSeparators(QFileInfo(path).absoluteFilePath())));
@@ -550,10 +537,10 @@ void FileActions::exportDialog() {
     // choose another name or folder.
     while (dlg.exec() == QDialog::Accepted && !dlg.path().isEmpty()) {
         const QString path = dlg.path();
-        if (QFileInfo::exists(path) && !confirmReplace(path, isOpenedLut(path)))
+        // An atlas that exists gets a row (its rows kept): nothing to replace.
+        const bool addsRow = dlg.choice().format == QLatin1String(kAtlasFormat);
+        if (QFileInfo::exists(path) && !addsRow && !confirmReplace(path, isOpenedLut(path)))
             continue;
-        exportLut(path, dlg.choice().format, dlg.options(), dlg.target(), true);
-        return;
         exportLut(path, dlg.choice().format, dlg.options(), dlg.target(), true, dlg.strength());
         return;
     }

@@ -82,6 +82,14 @@ LutView::LutView(QWidget* parent) : QWidget(parent) {
     connect(m_layout, &QComboBox::currentIndexChanged, this, [this] { refresh(); });
 }
 
+void LutView::setFileLayout(std::optional<LutLayout> layout) {
+    if (!layout)
+        return;
+    const int i = m_layout->findData(int(layoutPlacement(*layout)));
+    if (i >= 0)
+        m_layout->setCurrentIndex(i);
+}
+
 LutLayout LutView::layout() const {
     return static_cast<LutLayout>(m_layout->currentData().toInt());
 }

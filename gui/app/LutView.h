@@ -9,6 +9,8 @@
 
 #include <QWidget>
 
+#include <optional>
+
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -23,6 +25,9 @@ public:
     explicit LutView(QWidget* parent = nullptr);
     void setLut(const Lut3D& lut, const QString& origin, const QString& extraHtml = {});
     LutLayout layout() const;
+    // Shows the slices in the layout the LUT's strip file has (Document::lutLayout; reshade and
+    // unity-32 as the unreal and unity placements they are); none keeps the current choice.
+    void setFileLayout(std::optional<LutLayout> layout);
     const QImage& stripImage() const;
     // Strip layouts (N^2 x N) shown as a grid of their N slices, so a dock can show them large;
     // the layout itself (slice order, orientation within a slice) is unchanged.

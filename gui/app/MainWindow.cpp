@@ -72,6 +72,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_doc, &Document::modifiedChanged, this, [this] { updateTitle(); });
     connect(m_doc, &Document::pathChanged, this, [this] { updateTitle(); });
     connect(m_doc, &Document::lutReplaced, this, [this] {
+        m_lutView->setFileLayout(m_doc->lutLayout()); // a smush strip's slices as smush
         if (m_doc->lutNotes().isEmpty())
             m_notesBar->hide();
     });

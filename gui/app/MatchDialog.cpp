@@ -14,21 +14,35 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QSlider>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace lut::gui {
 
-namespace {
-
-QSlider* amountSlider(QWidget* parent, const char* name, int value) {
-    auto* s = new QSlider(Qt::Horizontal, parent);
+QSlider* MatchDialog::addAmount(QFormLayout* form, const QString& label, const char* name) {
+    // percent: 0 = neutral, 100 = the match, 200 = twice; the number box shows and takes it
+    auto* s = new QSlider(Qt::Horizontal, this);
     s->setObjectName(QString::fromLatin1(name));
-    s->setRange(0, 200); // percent: 0 = neutral, 100 = the match, 200 = twice
-    s->setValue(value);
+    s->setRange(0, 200);
+    s->setValue(100);
+    auto* box = new QSpinBox(this);
+    box->setObjectName(QString::fromLatin1(name) + QStringLiteral(".value"));
+    box->setRange(0, 200);
+    box->setSuffix(QStringLiteral(" %"));
+    box->setValue(100);
+    connect(s, &QSlider::valueChanged, box, &QSpinBox::setValue);
+    connect(box, &QSpinBox::valueChanged, s, &QSlider::setValue);
+    auto* row = new QHBoxLayout;
+    row->addWidget(s, 1);
+    row->addWidget(box);
+    form->addRow(label, row);
     return s;
 }
 
-} // namespace
+void MatchDialog::keepAmount(QSlider* slider) {
+    (slider == m_luma ? m_lumaOwn : m_chromaOwn) = true;
+    apply();
+}
 
 MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
                          std::unique_ptr<MatchSession> session)
@@ -42,12 +56,13 @@ MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
                                      .arg(QFileInfo(m_session->referencePath()).fileName()),
                                  this));
     auto* form = new QFormLayout;
-    m_strength = amountSlider(this, "matchStrength", 100);
-    m_luma = amountSlider(this, "matchLuma", 100);
-    m_chroma = amountSlider(this, "matchChroma", 100);
-    form->addRow(tr("Strength"), m_strength);
-    form->addRow(tr("Lightness share"), m_luma);
-    form->addRow(tr("Colour share"), m_chroma);
+    m_strength = addAmount(form, tr("Strength"), "matchStrength");
+    m_luma = addAmount(form, tr("Lightness share"), "matchLuma");
+    m_chroma = addAmount(form, tr("Colour share"), "matchChroma");
+    m_luma->setToolTip(tr("How much of the match's lightness change: follows Strength until "
+                          "you move it"));
+    m_chroma->setToolTip(tr("How much of the match's colour change: follows Strength until you "
+                            "move it"));
     auto* keep = new QHBoxLayout;
     const char* names[3] = {"matchPreserveLuma", "matchPreserveNeutrals", "matchPreserveSkin"};
     const QString labels[3] = {tr("Lightness"), tr("Neutrals"), tr("Skin tones")};
@@ -66,38 +81,35 @@ MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
     m_report->setMinimumSize(560, 160);
     layout->addWidget(m_report);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    connect(buttons, &QDialogButtonBox::accepted, this, [this] {
-        try {
-            m_doc->startFrom(
-                m_session->table(),
-                tr("matched to %1").arg(QFileInfo(m_session->referencePath()).fileName()));
-            accept();
-        } catch (const std::exception& e) {
-            m_prompts->reportError(tr("Cannot match"),
-                                   QString::fromStdString(humanErrorText(e.what())));
-        }
-    });
+    connect(buttons, &QDialogButtonBox::accepted, this, &MatchDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &MatchDialog::reject);
     layout->addWidget(buttons);
-    // The second slider's value while the first moves: luma and chroma follow strength until
-    // moved on their own.
+    // Lightness and Colour share show Strength's value while they follow it (their number boxes
+    // too: the signal is blocked for the slider only); once moved on their own they keep theirs.
     connect(m_strength, &QSlider::valueChanged, this, [this](int v) {
-        for (QSlider* s : {m_luma, m_chroma}) {
-            const QSignalBlocker block(s);
-            s->setValue(v);
-        }
+        for (QSlider* s : {m_luma, m_chroma})
+            if (!(s == m_luma ? m_lumaOwn : m_chromaOwn)) {
+                const QSignalBlocker block(s);
+                s->setValue(v);
+                if (auto* box = findChild<QSpinBox*>(s->objectName() + QStringLiteral(".value")))
+                    box->setValue(v);
+            }
         apply();
     });
-    connect(m_luma, &QSlider::valueChanged, this, &MatchDialog::apply);
-    connect(m_chroma, &QSlider::valueChanged, this, &MatchDialog::apply);
+    connect(m_luma, &QSlider::valueChanged, this, [this] { keepAmount(m_luma); });
+    connect(m_chroma, &QSlider::valueChanged, this, [this] { keepAmount(m_chroma); });
     apply();
 }
 
 void MatchDialog::apply() {
     MatchOptions o = m_session->options();
     o.strength = m_strength->value() / 100.0;
-    o.lumaStrength = m_luma->value() / 100.0;
-    o.chromaStrength = m_chroma->value() / 100.0;
+    o.lumaStrength.reset(); // following Strength: unset, as lutkit match without the option
+    o.chromaStrength.reset();
+    if (m_lumaOwn)
+        o.lumaStrength = m_luma->value() / 100.0;
+    if (m_chromaOwn)
+        o.chromaStrength = m_chroma->value() / 100.0;
     o.preserve.clear();
     const MatchPreserve kinds[3] = {MatchPreserve::Luma, MatchPreserve::Neutrals,
                                     MatchPreserve::Skin};
@@ -109,6 +121,18 @@ void MatchDialog::apply() {
         LutSource source;
         source.effective = std::make_shared<const Lut3D>(m_session->table());
         m_preview->setSource(source);
+    } catch (const std::exception& e) {
+        m_prompts->reportError(tr("Cannot match"),
+                               QString::fromStdString(humanErrorText(e.what())));
+    }
+}
+
+void MatchDialog::accept() {
+    try {
+        const QString ref = QFileInfo(m_session->referencePath()).fileName();
+        m_doc->replaceLutUndoable(m_session->table(), tr("matched to %1").arg(ref),
+                                  tr("Match to %1").arg(ref));
+        QDialog::accept();
     } catch (const std::exception& e) {
         m_prompts->reportError(tr("Cannot match"),
                                QString::fromStdString(humanErrorText(e.what())));

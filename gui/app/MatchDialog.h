@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Tools > Match to Reference…: the match of the open picture to a reference picture
-// (MatchSession), shown live in the window while its sliders move: strength, lightness and
-// colour amounts, what to keep. OK keeps the matched LUT as the document's LUT (exported through
-// the same target choice as every other edit); Cancel puts the LUT back as it was.
+// (MatchSession, fitted on a worker before the dialog opens: WindowActions), shown live in the
+// window while its sliders move: strength, lightness and colour amounts (each with its value in
+// a number box beside it), what to keep. Lightness and Colour share follow Strength (lutkit
+// match's rule: unset, they are the strength) until one is moved on its own; from then on it
+// keeps its value. OK keeps the matched LUT as the document's LUT in one undo step (exported
+// through the same target choice as every other edit); Cancel puts the LUT back as it was.
 #include "MatchSession.h"
 
 #include <QDialog>
@@ -11,8 +14,10 @@
 #include <memory>
 
 class QCheckBox;
+class QFormLayout;
 class QPlainTextEdit;
 class QSlider;
+class QSpinBox;
 
 namespace lut::gui {
 
@@ -32,6 +37,7 @@ public:
     const MatchSession& session() const { return *m_session; }
 
 public slots:
+    void accept() override; // the match becomes the document's LUT, one undo step
     void reject() override;
 
 private:
@@ -41,9 +47,13 @@ private:
     PreviewController* m_preview;
     Prompts* m_prompts;
     std::unique_ptr<MatchSession> m_session;
+    QSlider* addAmount(QFormLayout* form, const QString& label, const char* name);
+    void keepAmount(QSlider* slider); // moved on its own: no longer follows Strength
+
     QSlider* m_strength = nullptr;
     QSlider* m_luma = nullptr;
     QSlider* m_chroma = nullptr;
+    bool m_lumaOwn = false, m_chromaOwn = false; // moved on their own
     QCheckBox* m_preserve[3] = {nullptr, nullptr, nullptr};
     QPlainTextEdit* m_report = nullptr;
 };

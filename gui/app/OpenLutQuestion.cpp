@@ -6,6 +6,8 @@
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QRadioButton>
 #include <QVBoxLayout>
 
@@ -65,6 +67,34 @@ std::optional<OpenLutAnswer> askOpenLut(QWidget* parent, const QString& fileName
     if (askPurpose)
         answer.purpose = game->isChecked() ? LutPurpose::Smash : LutPurpose::Raw;
     return answer;
+}
+
+std::optional<LutPurpose> askLutPurpose(QWidget* parent, const QString& fileName,
+                                        const QString& gameEvidence) {
+    QMessageBox box(
+        QMessageBox::Question, QDialog::tr("What is this LUT for?"),
+        QDialog::tr("\"%1\" does not say what it is for. Is it an edit, the look "
+                    "itself (a graded neutral strip, a .cube from a grading app), or "
+                    "the game's LUT, already made for Smash Ultimate (what goes into "
+                    "color_grading_lut.nutexb: Smush-LUT's output, a .nutexb "
+                    "converted to a strip)?\n\nThe game's LUT is not compensated "
+                    "again when exported.")
+                .arg(fileName) +
+            (gameEvidence.isEmpty()
+                 ? QString()
+                 : QDialog::tr("\n\nIts content says it is the game's LUT: %1.").arg(gameEvidence)),
+        QMessageBox::NoButton, parent);
+    QPushButton* edit = box.addButton(QDialog::tr("An Edit (the Look)"), QMessageBox::AcceptRole);
+    QPushButton* game = box.addButton(QDialog::tr("The Game's LUT"), QMessageBox::AcceptRole);
+    QPushButton* cancel = box.addButton(QMessageBox::Cancel);
+    edit->setObjectName(QStringLiteral("purpose.raw"));
+    game->setObjectName(QStringLiteral("purpose.smash"));
+    box.setDefaultButton(gameEvidence.isEmpty() ? edit : game);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() != edit && box.clickedButton() != game)
+        return std::nullopt;
+    return box.clickedButton() == game ? LutPurpose::Smash : LutPurpose::Raw;
 }
 
 } // namespace lut::gui

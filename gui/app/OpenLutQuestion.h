@@ -28,4 +28,10 @@ std::optional<OpenLutAnswer> askOpenLut(QWidget* parent, const QString& fileName
                                         const QStringList& layouts, bool askPurpose,
                                         const QString& gameEvidence = {});
 
+// The purpose question alone, for a LUT that is no strip with several layouts: a message box
+// (buttons "purpose.raw", "purpose.smash", Cancel), `gameEvidence` said and "The Game's LUT" the
+// default button when there is some. nullopt when the user cancelled.
+std::optional<LutPurpose> askLutPurpose(QWidget* parent, const QString& fileName,
+                                        const QString& gameEvidence);
+
 } // namespace lut::gui

@@ -11,6 +11,11 @@
 
 namespace lut::gui {
 
+namespace {
+// The After side while its frame is being graded: the window's background, a shade lighter.
+const QColor kPendingColour(0x33, 0x33, 0x36);
+} // namespace
+
 PreviewView::PreviewView(QWidget* parent) : QWidget(parent) {
     setMouseTracking(true);
     setMinimumSize(320, 240);
@@ -163,10 +168,18 @@ void PreviewView::paintEvent(QPaintEvent*) {
         p.drawImage(r, img);
         p.restore();
     };
-    const QImage& after = m_after.isNull() ? m_before : m_after;
+    // Until the graded frame is there (a picture just opened), the After side is a plain
+    // placeholder, never the ungraded picture: it would flash the wrong look for a moment.
+    const QImage& after = m_after;
     const QImage& clip = m_showClipping && !m_after.isNull() ? m_clip : QImage();
+    auto placeholder = [&](const QRectF& area) {
+        if (!m_after.isNull() || area.isEmpty())
+            return;
+        p.fillRect(area.intersected(QRectF(rect())), kPendingColour);
+    };
     switch (m_mode) {
     case Mode::After:
+        placeholder(r);
         drawClipped(after, r);
         drawClipped(clip, r);
         drawClipped(m_highlight, r);
@@ -178,6 +191,7 @@ void PreviewView::paintEvent(QPaintEvent*) {
     case Mode::Split: {
         const double dx = dividerX();
         drawClipped(m_before, QRectF(r.topLeft(), QPointF(dx, r.bottom())));
+        placeholder(QRectF(QPointF(dx, r.top()), r.bottomRight()));
         drawClipped(after, QRectF(QPointF(dx, r.top()), r.bottomRight()));
         drawClipped(clip, QRectF(QPointF(dx, r.top()), r.bottomRight()));
         drawClipped(m_highlight, r);

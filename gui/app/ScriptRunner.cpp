@@ -8,6 +8,7 @@
 #include "CompareDialog.h"
 #include "CurveEditor.h"
 #include "CurvesPanel.h"
+#include "DialogResponder.h"
 #include "Document.h"
 #include "ExportDialog.h"
 #include "FileActions.h"
@@ -53,42 +54,6 @@ namespace lut::gui {
 
 namespace {
 
-// Answers the modal dialogs a command opens (an export dialog, a question), as the user would
-// with Return (accept: the default button) or Escape (reject), and remembers what they said, so
-// a script never waits for a person.
-class DialogResponder : public QObject {
-public:
-    explicit DialogResponder(QObject* parent) : QObject(parent) {
-        m_timer.setInterval(25);
-        connect(&m_timer, &QTimer::timeout, this, &DialogResponder::poll);
-        m_timer.start();
-    }
-    bool accept = false;
-    QStringList seen;
-
-private:
-    void poll() {
-        QWidget* modal = QApplication::activeModalWidget();
-        if (!modal)
-            for (QWidget* top : QApplication::topLevelWidgets())
-                if (auto* d = qobject_cast<QDialog*>(top); d && d->isVisible() && d->isModal())
-                    modal = d;
-        auto* dialog = qobject_cast<QDialog*>(modal);
-        if (!dialog || !dialog->isVisible())
-            return;
-        QString text = dialog->windowTitle();
-        if (auto* box = qobject_cast<QMessageBox*>(dialog))
-            text += QStringLiteral(": ") + box->text();
-        seen << text;
-        QKeyEvent key(QEvent::KeyPress, accept ? Qt::Key_Return : Qt::Key_Escape, Qt::NoModifier);
-        QApplication::sendEvent(dialog->focusWidget() ? dialog->focusWidget() : dialog, &key);
-        QApplication::processEvents();
-        if (dialog->isVisible()) // the key did not close it (a button without focus policy)
-            accept ? dialog->accept() : dialog->reject();
-    }
-    QTimer m_timer;
-};
-
 DialogResponder* g_responder = nullptr;
 RepaintProbe* g_probe = nullptr;
 
@@ -112,12 +77,23 @@ bool onOff(const QString& v) {
 void settle(MainWindow& w) {
     w.waitForLoads();
     w.windowActions()->compareTask()->waitForIdle();
+    w.windowActions()->matchTask()->waitForIdle();
     w.fileActions()->saveTask()->waitForIdle();
     w.waitForPreview();
     QApplication::processEvents();
 }
 
-// The long tasks by the names scripts use: load, compare, save-preview.
+// The long tasks by the names scripts use: load, compare, match, save-preview.
+BackgroundTask* taskByName(MainWindow& w, const QString& name) {
+    BackgroundTask* t = name == "compare"        ? w.windowActions()->compareTask()
+                        : name == "match"        ? w.windowActions()->matchTask()
+                        : name == "save-preview" ? w.fileActions()->saveTask()
+                                                 : nullptr;
+    need(t != nullptr,
+         QStringLiteral("unknown task '%1' (load, compare, match, save-preview)").arg(name));
+    return t;
+}
+
 QString taskState(MainWindow& w, const QString& name) {
     auto state = [](bool busy, double fraction, const QString& idle) {
         return busy ? QStringLiteral("busy %1 %").arg(static_cast<int>(fraction * 100)) : idle;
@@ -138,10 +114,7 @@ QString taskState(MainWindow& w, const QString& name) {
     if (name == "load")
         return state(w.fileActions()->loader()->isBusy(), w.fileActions()->loader()->fraction(),
                      QStringLiteral("idle"));
-    BackgroundTask* t = name == "compare"        ? w.windowActions()->compareTask()
-                        : name == "save-preview" ? w.fileActions()->saveTask()
-                                                 : nullptr;
-    need(t != nullptr, QStringLiteral("unknown task '%1' (load, compare, save-preview)").arg(name));
+    BackgroundTask* t = taskByName(w, name);
     return state(t->isBusy(), t->fraction(), outcome(t));
 }
 
@@ -354,6 +327,9 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
     } else if (cmd == "start-compare") {
         settle(w);
         w.windowActions()->startCompare(arg(0));
+    } else if (cmd == "start-match") { // the dialog opens when done: `dialogs` answers it
+        settle(w);
+        w.windowActions()->startMatch(arg(0));
     } else if (cmd == "start-save-preview") {
         settle(w);
         noNewError(w.fileActions()->startSavePreview(arg(0)));
@@ -371,15 +347,10 @@ void runLine(MainWindow& w, const QString& cmd, QStringList args, QTextStream& o
         QApplication::processEvents();
     } else if (cmd == "wait-task") {
         // Processes events until the task is done (the window stays live meanwhile).
-        const QString name = arg(0);
-        if (name == "load")
+        if (arg(0) == "load")
             w.waitForLoads();
-        else if (name == "compare")
-            w.windowActions()->compareTask()->waitForIdle();
-        else if (name == "save-preview")
-            w.fileActions()->saveTask()->waitForIdle();
         else
-            throw Failure("unknown task '" + name.toStdString() + "'");
+            taskByName(w, arg(0))->waitForIdle();
     } else if (cmd == "probe") {
         if (onOff(arg(0))) {
             if (!g_probe) {

@@ -18,7 +18,9 @@
 //                              reds..magentas, AMOUNT typed in Amount: one undo step)
 //   save-preview PATH   screenshot PATH   wait   sleep MS   close
 //   start-open-image PATH   start-compare FILE   start-save-preview PATH   (return at once)
-//   cancel load|compare|save-preview   (the status bar's Cancel)   wait-task NAME
+//   start-match REFERENCE      (Tools > Match to Reference; its dialog, once the fit is done, is
+//                               answered as `dialogs` says: accept = OK at the default amounts)
+//   cancel load|compare|match|save-preview   (the status bar's Cancel)   wait-task NAME
 //   probe on|off               (the repaint probe, RepaintProbe.h; off prints the longest gap)
 //   check [N]                  (the Check panel raised and current, its verdict printed; with N,
 //                               finding N clicked: its colours highlighted on the picture)

@@ -2,10 +2,12 @@
 #include "WindowActions.h"
 
 #include "BackgroundTask.h"
+#include "BuiltinNames.h"
 #include "CompareDialog.h"
 #include "Document.h"
 #include "ErrorText.h"
 #include "FileActions.h"
+#include "HelpDialogs.h"
 #include "MatchDialog.h"
 #include "PlotDialog.h"
 #include "PreviewController.h"
@@ -72,8 +74,11 @@ WindowActions::WindowActions(QMainWindow* window, const EditorContext& context, 
                              PreviewView* view)
     : QObject(window), m_window(window), m_doc(context.document), m_preview(context.preview),
       m_prompts(context.prompts), m_files(files), m_view(view),
-      m_compareTask(new BackgroundTask(this)) {
+      m_compareTask(new BackgroundTask(this)), m_matchTask(new BackgroundTask(this)) {
     m_prompts->watchTask(m_compareTask, QStringLiteral("task.compare"));
+    m_prompts->watchTask(m_matchTask, QStringLiteral("task.match"));
+    // A match is of the picture that was open when it started.
+    connect(m_doc, &Document::imageChanged, m_matchTask, &BackgroundTask::cancel);
     buildFileMenu();
     buildEditMenu();
     buildViewMenu();
@@ -112,8 +117,9 @@ void WindowActions::buildFileMenu() {
         const QString name = QString::fromLatin1(kBuiltinLutPrefix.data(),
                                                  static_cast<int>(kBuiltinLutPrefix.size())) +
                              QString::fromStdString(b.name);
-        QAction* a = builtins->addAction(name);
-        a->setToolTip(QString::fromStdString(b.description));
+        QAction* a = builtins->addAction(builtinLutTitle(name));
+        a->setObjectName(QStringLiteral("open.") + name);
+        a->setToolTip(name + QStringLiteral(": ") + QString::fromStdString(b.description));
         a->setStatusTip(QString::fromStdString(b.description));
         connect(a, &QAction::triggered, files, [files, name] { files->startOpenLut(name); });
     }
@@ -287,20 +293,41 @@ void WindowActions::matchToReference() {
     const QString path = QFileDialog::getOpenFileName(m_window, tr("Match to Reference"),
                                                       QFileInfo(doc->imagePath()).absolutePath(),
                                                       FileActions::imageFilter());
-    if (path.isEmpty())
-        return;
-    try {
-        QApplication::setOverrideCursor(Qt::WaitCursor);
-        auto session =
-            std::make_unique<MatchSession>(doc->storedImage(), doc->imageInfo().isFloat, path);
-        QApplication::restoreOverrideCursor();
-        MatchDialog dlg(m_window, EditorContext{m_doc, m_preview, m_prompts}, std::move(session));
-        dlg.exec();
-    } catch (const std::exception& e) {
-        QApplication::restoreOverrideCursor();
+    if (!path.isEmpty())
+        startMatch(path);
+}
+
+MatchDialog* WindowActions::matchDialog() const {
+    return m_matchDialog;
+}
+
+void WindowActions::startMatch(const QString& path) {
+    // Reading the reference and fitting take seconds at 1080p: on a worker, the window live, the
+    // status bar showing the progress with Cancel; the dialog opens when the fit is done.
+    if (!m_doc->hasImage()) {
         m_prompts->reportError(tr("Cannot match"),
-                               QString::fromStdString(humanErrorText(e.what())));
+                               tr("Open a picture first: its look is matched to the reference."));
+        return;
     }
+    const std::shared_ptr<const Image> image = m_doc->storedImage();
+    const bool isFloat = m_doc->imageInfo().isFloat;
+    m_matchTask->start(
+        tr("Matching to %1…").arg(QFileInfo(path).fileName()),
+        [this, image, isFloat, path](const Progress& progress) -> BackgroundTask::Delivery {
+            auto session = std::make_shared<std::unique_ptr<MatchSession>>(
+                std::make_unique<MatchSession>(image, isFloat, path, MatchOptions{}, &progress));
+            return [this, session] {
+                auto* dlg = new MatchDialog(m_window, EditorContext{m_doc, m_preview, m_prompts},
+                                            std::move(*session));
+                dlg->setAttribute(Qt::WA_DeleteOnClose);
+                m_matchDialog = dlg;
+                dlg->open(); // window-modal; returns at once
+            };
+        },
+        [this](const QString& message) {
+            m_prompts->reportError(tr("Cannot match"),
+                                   QString::fromStdString(humanErrorText(message.toStdString())));
+        });
 }
 
 void WindowActions::showPlot() {
@@ -351,6 +378,14 @@ void WindowActions::startCompare(const QString& path) {
 
 void WindowActions::buildHelpMenu() {
     QMenu* help = m_window->menuBar()->addMenu(tr("&Help"));
+    QMainWindow* window = m_window;
+    QAction* quick =
+        help->addAction(tr("&Quick Start"), this, [window] { showQuickStart(window); });
+    quick->setObjectName("help.quickStartAction");
+    quick->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("&Keyboard Shortcuts"), this, [window] { showShortcuts(window); })
+        ->setObjectName("help.shortcutsAction");
+    help->addSeparator();
     help->addAction(tr("&About lutkit editor"), this, [this] {
         QMessageBox::about(m_window, tr("About lutkit editor"),
                            tr("<b>lutkit editor</b><br>Preview colour grading LUTs on screenshots "

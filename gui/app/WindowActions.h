@@ -28,6 +28,7 @@ class CompareDialog;
 struct Comparison;
 class Document;
 class FileActions;
+class MatchDialog;
 class PreviewController;
 class PreviewView;
 class Prompts;
@@ -60,6 +61,12 @@ public:
     BackgroundTask* compareTask() const { return m_compareTask; }
     std::shared_ptr<const Comparison> lastComparison() const { return m_lastComparison; }
     CompareDialog* compareDialog() const; // the last report, while it is open
+    // Tools > Match to Reference with `referencePath`: the reference read and the match fitted on
+    // a worker (progress and Cancel in the status bar, the window repainting), then the dialog
+    // opens (window-modal) to set its amounts. Opening another picture cancels it.
+    void startMatch(const QString& referencePath);
+    BackgroundTask* matchTask() const { return m_matchTask; }
+    MatchDialog* matchDialog() const; // while it is open
 
 private:
     void buildFileMenu();
@@ -84,6 +91,8 @@ private:
     FileActions* m_files;
     PreviewView* m_view;
     BackgroundTask* m_compareTask;
+    BackgroundTask* m_matchTask;
+    QPointer<MatchDialog> m_matchDialog;
     std::shared_ptr<const Comparison> m_lastComparison;
     QPointer<CompareDialog> m_compareDialog;
     // For the toolbars.

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "Document.h"
 
+#include "AtlasExport.h"
+#include "BuiltinNames.h"
+#include "ReplaceLutCommand.h"
 #include "SetAdjustmentsCommand.h"
 
 #include "lut/Error.h"
@@ -121,6 +124,8 @@ void Document::setTarget(ExportTarget target) {
 }
 
 QString Document::displayName() const {
+    if (m_lutPath.isEmpty() && m_format == QLatin1String("builtin"))
+        return m_origin; // a built-in LUT by its name (BuiltinNames.h); Save asks where
     return m_lutPath.isEmpty() ? tr("Untitled") : QFileInfo(m_lutPath).fileName();
 }
 
@@ -173,6 +178,7 @@ void Document::replaceLut(Lut3D base, const QString& path, const QString& origin
 
 void Document::newNeutral(int size) {
     Lut3D lut = Lut3D::identity(size); // throws for a bad size before anything changes
+    m_layout.reset();
     replaceLut(std::move(lut), {}, tr("neutral %1^3").arg(size), {}, false, LutPurpose::Raw, {});
     m_purposeKnown = false;
 }
@@ -217,7 +223,8 @@ QStringList Document::adoptLut(const LutFile& file, const QString& path,
                      .arg(QFileInfo(path).fileName());
     // A built-in LUT is no file: the document is untitled (Save asks where), named by its origin.
     const bool builtin = file.format == "builtin";
-    replaceLut(std::move(lut), builtin ? QString() : path, path,
+    m_layout = file.format == "strip" ? parseOptionalLayout(file.dialect) : std::nullopt;
+    replaceLut(std::move(lut), builtin ? QString() : path, builtin ? builtinLutTitle(path) : path,
                QString::fromStdString(file.format), false, purpose.purpose, notes);
     m_purposeKnown = purpose.source != PurposeSource::Assumed;
     return notes;
@@ -226,8 +233,47 @@ QStringList Document::adoptLut(const LutFile& file, const QString& path,
 void Document::startFrom(Lut3D base, const QString& origin) {
     if (base.empty())
         throw Error("the LUT is empty");
+    m_layout.reset();
     replaceLut(std::move(base), {}, origin, {}, true, LutPurpose::Raw, {});
     m_purposeKnown = true; // made here as an edit
+}
+
+void Document::replaceLutUndoable(Lut3D base, const QString& origin, const QString& text) {
+    if (base.empty())
+        throw Error("the LUT is empty");
+    LutState after;
+    after.base = std::make_shared<const Lut3D>(std::move(base));
+    after.purposeKnown = true; // made here as an edit
+    after.origin = origin;
+    after.unsavedOrigin = true; // it exists only in memory until saved
+    ++m_gesture;
+    m_undo->push(new ReplaceLutCommand(this, lutState(), std::move(after), text));
+}
+
+Document::LutState Document::lutState() const {
+    return LutState{m_base,   m_adjustments, m_purpose,       m_purposeKnown, m_lutPath, m_origin,
+                    m_format, m_notes,       m_unsavedOrigin, m_savedOnce,    m_layout};
+}
+
+void Document::restoreLutState(const LutState& s) {
+    m_base = s.base;
+    m_adjustments = s.adjustments;
+    m_adjustmentsShared = std::make_shared<const Adjustments>(s.adjustments);
+    rebuildEffective();
+    m_purpose = s.purpose;
+    m_purposeKnown = s.purposeKnown;
+    m_lutPath = s.path;
+    m_origin = s.origin;
+    m_format = s.format;
+    m_notes = s.notes;
+    m_unsavedOrigin = s.unsavedOrigin;
+    m_savedOnce = s.savedOnce;
+    m_layout = s.layout;
+    emit lutReplaced();
+    emit adjustmentsChanged();
+    emit effectiveLutChanged();
+    emit pathChanged();
+    emitModifiedIfChanged();
 }
 
 QStringList Document::startFromScreenshot(const QString& path) {
@@ -314,6 +360,10 @@ Diagnostics Document::exportLut(const QString& path, const QString& formatName,
     LutFile file;
     file.cube = exportTable(lutSource(), target, strength);
     file.purpose = exportTargetInfo(target).purpose; // the file says what it is for
+    if (formatName == QLatin1String(kAtlasFormat))   // a row of an atlas (AtlasExport.h)
+        return exportAtlasRow(*file.cube, *file.purpose, path,
+                              options.layout.value_or(LutLayout::Reshade))
+            .diagnostics;
     return formats::writeLut(path.toStdString(), file, options, formatName.toStdString());
 }
 

@@ -48,6 +48,9 @@ enum class CurveId { Master, Red, Green, Blue, HueVsHue, HueVsSat, HueVsLum };
 Curve& curveOf(Adjustments& a, CurveId id);
 const Curve& curveOf(const Adjustments& a, CurveId id);
 
+// The export "format" that adds the LUT as a row of an atlas (not a registered format).
+inline constexpr const char* kAtlasFormat = "atlas";
+
 class Document : public QObject {
     Q_OBJECT
 public:
@@ -74,6 +77,25 @@ public:
     // (lut/roundtrip/Extract.h, raw target). Returns the extractor's warnings to show. Throws
     // lut::Error (document unchanged) when the image cannot be read or holds no patch.
     QStringList startFromScreenshot(const QString& path);
+    // Replaces the LUT by one made from the document (Tools > Match to Reference) as one undo
+    // step: the LUT becomes an untitled, modified edit with neutral adjustments; Undo gives back
+    // the LUT, adjustments, file and purpose it had. `origin` names where it came from, `text`
+    // the undo step. Throws lut::Error (an empty LUT), document unchanged.
+    void replaceLutUndoable(Lut3D base, const QString& origin, const QString& text);
+
+    // Everything a LUT replacement changes (ReplaceLutCommand keeps one before and one after).
+    struct LutState {
+        std::shared_ptr<const Lut3D> base;
+        Adjustments adjustments;
+        LutPurpose purpose = LutPurpose::Raw;
+        bool purposeKnown = false;
+        QString path, origin, format;
+        QStringList notes;
+        bool unsavedOrigin = false, savedOnce = false;
+        std::optional<LutLayout> layout;
+    };
+    LutState lutState() const;
+    void restoreLutState(const LutState& state); // no undo entry (the command's undo and redo)
 
     // ---- what the document is made for ------------------------------------------------------
     // The export target (ExportTarget.h): the game's LUT, an engine strip or a grading .cube.
@@ -89,10 +111,13 @@ public:
     LutPurpose lutPurpose() const { return m_purpose; }
     // What exports and the preview are made from (ExportTarget.h).
     LutSource lutSource() const;
-    QString lutPath() const { return m_lutPath; }    // "" = untitled
-    QString lutOrigin() const { return m_origin; }   // "neutral 33^3", the file, "extracted ..."
-    QString displayName() const;                     // file name or "Untitled"
-    QString lutFormat() const { return m_format; }   // registry name of the format read
+    QString lutPath() const { return m_lutPath; }  // "" = untitled
+    QString lutOrigin() const { return m_origin; } // "neutral 33^3", the file, "extracted ..."
+    QString displayName() const;                   // file name or "Untitled"
+    QString lutFormat() const { return m_format; } // registry name of the format read
+    // The strip layout the LUT was read in (a strip file: the layout named or detected), else
+    // none: the LUT dock shows the slices in it.
+    std::optional<LutLayout> lutLayout() const { return m_layout; }
     QStringList lutNotes() const { return m_notes; } // what the reader said about the file
 
     // ---- adjustments (undoable) --------------------------------------------------------------
@@ -122,7 +147,8 @@ public:
 
     // ---- saving ---------------------------------------------------------------------------
     // Writes the table `target` exports (exportTable) with a registered format ("" = by
-    // extension); throws lut::Error. Never changes the document's path or modified state.
+    // extension), or as a row of an atlas (format kAtlasFormat, options.layout its rows' layout:
+    // AtlasExport.h); throws lut::Error. Never changes the document's path or modified state.
     // `strength`: the edit blended with neutral first (lut/ops/Strength.h, lutkit --strength).
     Diagnostics exportLut(const QString& path, const QString& formatName,
                           const FormatOptions& options, ExportTarget target,
@@ -169,6 +195,7 @@ private:
     QString m_origin;
     QString m_format;
     QStringList m_notes;
+    std::optional<LutLayout> m_layout;
     bool m_unsavedOrigin = false; // a LUT that came from memory counts as modified until saved
     bool m_savedOnce = false;     // saved to m_lutPath in this session
     bool m_lastModified = false;

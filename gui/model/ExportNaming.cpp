@@ -45,7 +45,7 @@ QString suggestedExportPath(const ExportNameInput& in) {
     QString base = !in.lutPath.isEmpty()     ? QFileInfo(in.lutPath).completeBaseName()
                    : !in.imagePath.isEmpty() ? QFileInfo(in.imagePath).completeBaseName()
                                              : QStringLiteral("grade");
-    QString key = in.format;
+    QString key = in.gameLut ? QStringLiteral("game_") + in.format : in.format;
     if (!in.layout.isEmpty())
         key += QLatin1Char('_') + in.layout;
     QString path = QDir(folders.front()).filePath(base + QLatin1Char('_') + key + in.extension);

@@ -8,7 +8,9 @@
 //                     beside it;
 //   any other format  <name>_<format>[_<layout>]<extension>, <name> the LUT's file name (else the
 //                     picture's, else "grade"): one name per format and layout, so flame and
-//                     lustre .3dl, or two strip layouts, never share a file.
+//                     lustre .3dl, or two strip layouts, never share a file; the game's LUT in
+//                     such a format (the Smash target's .cube) is <name>_game_<format>..., so
+//                     it never shares a name with the edit the Grading target writes.
 // The export still asks before replacing a file that exists (FileActions).
 #include <QString>
 
@@ -21,6 +23,7 @@ struct ExportNameInput {
     QString lutPath;        // the opened LUT ("" = untitled)
     QString imagePath;      // the opened picture ("")
     QString fallbackFolder; // when neither has a folder
+    bool gameLut = false;   // the file holds the game's LUT (purpose smash), not an edit
 };
 
 QString suggestedExportPath(const ExportNameInput& in);

@@ -9,11 +9,15 @@
 namespace lut::gui {
 
 MatchSession::MatchSession(std::shared_ptr<const Image> source, bool sourceIsFloat,
-                           const QString& referencePath, const MatchOptions& options)
+                           const QString& referencePath, const MatchOptions& options,
+                           const Progress* progress)
     : m_source(std::move(source)), m_referencePath(referencePath), m_options(options) {
     if (!m_source || m_source->empty())
         throw Error("match: open a picture first: it is the source the look is matched on");
-    const formats::LoadedImage ref = formats::readImage(referencePath.toStdString());
+    const Progress none;
+    const Progress& whole = progress ? *progress : none;
+    const Progress reading(whole, 0.0, 0.3), fitting(whole, 0.3, 1.0);
+    const formats::LoadedImage ref = formats::readImage(referencePath.toStdString(), {}, &reading);
     const auto& i = ref.info;
     const SceneDecision refKind =
         decideSceneKind(SceneEvidence{i.isFloat, i.bitDepth, i.colorSpace, i.format});
@@ -29,7 +33,7 @@ MatchSession::MatchSession(std::shared_ptr<const Image> source, bool sourceIsFlo
     r.linear = refKind.storedIsLinear;
     r.bitDepth = i.isFloat ? 0 : i.bitDepth;
     r.name = QFileInfo(referencePath).fileName().toStdString();
-    m_fit = fitMatch(src, {r}, m_options);
+    m_fit = fitMatch(src, {r}, m_options, &fitting);
 }
 
 LutFile MatchSession::lutFile() const {

@@ -7,6 +7,7 @@
 // into it by sampling (lut::LutFile::toLut3D).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
+#include "lut/Progress.h"
 #include "lut/match/Match.h"
 
 #include <QString>
@@ -19,9 +20,12 @@ class MatchSession {
 public:
     // Reads the reference (lut::formats::readImage: the same checks as the CLI) and fits the
     // match of `source` (the document's stored picture; float = scene-linear by lutkit's rule)
-    // to it with `options`. Throws lut::Error.
+    // to it with `options`. Seconds at 1080p: the window runs it on a worker (BackgroundTask)
+    // with `progress` (the read its first 30 %, the fit the rest; a cancel throws
+    // lut::CancelledError). Throws lut::Error.
     MatchSession(std::shared_ptr<const Image> source, bool sourceIsFloat,
-                 const QString& referencePath, const MatchOptions& options = {});
+                 const QString& referencePath, const MatchOptions& options = {},
+                 const Progress* progress = nullptr);
 
     const QString& referencePath() const { return m_referencePath; }
     const MatchOptions& options() const { return m_options; }

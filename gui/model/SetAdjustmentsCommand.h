@@ -3,7 +3,8 @@
 // Undo step for any edit of the adjustments: a slider, a spin box, a curve point, a colour wheel,
 // reset, a loaded adjustment list. Consecutive edits with the same merge key within one gesture
 // (press .. release) merge into one step, so undo returns to where the drag started; a drag that
-// ends where it started leaves no step. Key -1 never merges.
+// ends where it started leaves no step. Key -1 never merges. Its text names the values before
+// and after (EditText.h), as the History dock lists it.
 #include "lut/ops/Adjust.h"
 
 #include <QUndoCommand>
@@ -27,6 +28,7 @@ private:
     Adjustments m_after;
     int m_key;
     int m_gesture;
+    QString m_action; // "Set Exposure (stops)": the step's text is it with the values (EditText.h)
 };
 
 } // namespace lut::gui

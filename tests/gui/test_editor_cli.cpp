@@ -388,6 +388,81 @@ private slots:
         QVERIFY2(std::abs(z[1] / z[0] - 1.25) < 0.01, qPrintable(r.out));
     }
 
+    void theMatchInARealWindowUnderXvfb() {
+        // Issue 42 under a real X server, scripted: Tools > Match to Reference on a 1080p
+        // screenshot fits on a worker while the repaint probe sees no gap over 100 ms, a Cancel
+        // stops it, and OK is one undo step.
+        const QString xvfb = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
+        if (xvfb.isEmpty())
+            QSKIP("xvfb-run is not installed");
+        QTemporaryDir dir;
+        const QString shot = dir.filePath("shot.png");
+        const QString ref = dir.filePath("look.png");
+        {
+            Image img(1920, 1080), look(1920, 1080);
+            for (int y = 0; y < 1080; ++y)
+                for (int x = 0; x < 1920; ++x) {
+                    float* p = img.pixel(x, y);
+                    p[0] = float((x * 255) / 1919) / 255.0f;
+                    p[1] = float((y * 255) / 1079) / 255.0f;
+                    p[2] = float(((x ^ y) * 7) & 255) / 255.0f;
+                    p[3] = 1.0f;
+                    // the look: warmer and darker, its pixels in another order
+                    float* q = look.pixel(1919 - x, (y * 7) % 1080);
+                    q[0] = std::min(1.0f, 0.1f + 0.9f * p[0]);
+                    q[1] = 0.85f * p[1];
+                    q[2] = 0.7f * p[2];
+                    q[3] = 1.0f;
+                }
+            formats::writeImage(shot.toStdString(), img,
+                                formats::ImageWriteOptions(8, false, false));
+            formats::writeImage(ref.toStdString(), look,
+                                formats::ImageWriteOptions(8, false, false));
+        }
+        const QString script = writeScript(
+            dir, "match.txt",
+            {"open-image " + shot, "wait", "print undo-count",
+             // started, then cancelled: nothing changes
+             "probe on", "start-match " + ref, "sleep 300", "print task:match", "cancel match",
+             "print task:match", "sleep 100", "probe off", "print undo-count",
+             // to the end, the dialog answered with OK
+             "dialogs accept", "probe on", "start-match " + ref, "wait-task match", "sleep 300",
+             "probe off", "print task:match", "print dialogs", "print undo-count", "print title"});
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+        const Run r = run(xvfb,
+                          {"-a", "-s", "-screen 0 1600x1000x24", QString::fromUtf8(LUTKIT_EDITOR),
+                           "--script", script},
+                          env);
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        qInfo("%s", qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("task:match busy")), qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("task:match idle cancelled")));
+        QVERIFY(r.out.contains(QStringLiteral("task:match idle done")));
+        QVERIFY2(r.out.contains(QStringLiteral("Match to Reference")), qPrintable(r.out));
+        // No step after the cancel, one after OK (undoable: index 1).
+        const auto undo = QRegularExpression(QStringLiteral("undo-count ([0-9]+) index ([0-9]+)"))
+                              .globalMatch(r.out);
+        QStringList counts;
+        for (auto it = undo; it.hasNext();)
+            counts << it.next().captured(0);
+        QCOMPARE(counts, QStringList({"undo-count 0 index 0", "undo-count 0 index 0",
+                                      "undo-count 1 index 1"}));
+        QVERIFY2(r.out.contains(QStringLiteral("title Untitled[*] — shot.png")), qPrintable(r.out));
+        // Both probes: the window's own longest gap under 100 ms.
+        const auto probes =
+            QRegularExpression(QStringLiteral("probe longest-gap ([0-9.]+) ms own ([0-9.]+) ms"))
+                .globalMatch(r.out);
+        int count = 0;
+        for (auto it = probes; it.hasNext();) {
+            const auto m = it.next();
+            ++count;
+            QVERIFY2(m.captured(2).toDouble() < 100.0 && m.captured(1).toDouble() < 1000.0,
+                     qPrintable(m.captured(0)));
+        }
+        QCOMPARE(count, 2);
+    }
+
     void aRealWindowUnderXvfb() {
         const QString xvfb = QStandardPaths::findExecutable(QStringLiteral("xvfb-run"));
         if (xvfb.isEmpty())

@@ -3,14 +3,19 @@
 // the scene graded by a formula written here and shuffled. The preview takes the matched LUT
 // while the sliders move (strength 0: the neutral LUT; 1: near the true grade), Cancel gives the
 // document's LUT back, OK makes the match the document's LUT (exported like every other edit).
+// Issue 42: the match fitted on a worker (progress, Cancel, the window repainting: the repaint
+// probe), the sliders' values shown, Lightness and Colour share kept once moved, OK undoable.
 #include "GuiTestSupport.h"
+#include "ProbeSupport.h"
 #include "TestPaths.h"
 
+#include "BackgroundTask.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "MatchDialog.h"
 #include "MatchSession.h"
 #include "PreviewController.h"
+#include "WindowActions.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/interp/Sampler.h"
@@ -21,7 +26,9 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QUndoStack>
 #include <QtTest>
 
 #include <algorithm>
@@ -32,6 +39,7 @@
 using namespace lut;
 using namespace lut::gui;
 using lut::gui::test::samplePath;
+using namespace lut::gui::test;
 
 namespace {
 
@@ -60,6 +68,52 @@ double stepsToGrade(const Lut3D& table, const Image& scene) {
             sum += std::fabs(q8(got[c]) - q8(want[c])) * 255.0;
     }
     return sum / (3.0 * n);
+}
+
+// The picture graded by grade() and its pixels shuffled: a reference with the look and no
+// correspondence, written as an 8-bit PNG.
+QString writeReference(const Image& scene, const char* name) {
+    Image ref(scene.width(), scene.height(), 1.0f);
+    std::vector<int> order(static_cast<std::size_t>(scene.width() * scene.height()));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937(5));
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const float* p = scene.data() + 4 * order[i];
+        const glm::dvec3 g = grade(glm::dvec3(p[0], p[1], p[2]));
+        for (int c = 0; c < 3; ++c)
+            ref.data()[4 * i + c] = static_cast<float>(q8(g[c]));
+    }
+    const QString path =
+        QString::fromStdString(std::string(LUTKIT_BINARY_DIR) + "/test-tmp-" + name + ".png");
+    formats::writeImage(path.toStdString(), ref, formats::ImageWriteOptions(8));
+    return path;
+}
+
+// A 1080p screenshot-like picture: gradients and noise in 8-bit values.
+formats::LoadedImage noisyPicture(int w, int h) {
+    formats::LoadedImage l;
+    l.image = Image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = l.image.pixel(x, y);
+            const unsigned n = (unsigned(x) * 73856093u) ^ (unsigned(y) * 19349663u);
+            const unsigned k = (n ^ (n >> 13)) * 0x5bd1e995u;
+            p[0] = float(std::min(255u, x * 240u / unsigned(w) + (k & 15))) / 255.0f;
+            p[1] = float(std::min(255u, y * 240u / unsigned(h) + ((k >> 4) & 15))) / 255.0f;
+            p[2] = float((k >> 8) & 255) / 255.0f;
+            p[3] = 1.0f;
+        }
+    l.info.width = w;
+    l.info.height = h;
+    l.info.channels = 3;
+    l.info.bitDepth = 8;
+    l.info.format = "png";
+    return l;
+}
+
+int boxValue(const QDialog& dlg, const char* slider) {
+    auto* box = dlg.findChild<QSpinBox*>(QString::fromLatin1(slider) + QStringLiteral(".value"));
+    return box ? box->value() : -1;
 }
 
 } // namespace
@@ -121,9 +175,132 @@ private slots:
         again.show();
         auto* buttons = again.findChild<QDialogButtonBox*>();
         QVERIFY(buttons);
+        QVERIFY(!w.windowActions()->undoAction()->isEnabled()); // nothing to undo yet
         buttons->button(QDialogButtonBox::Ok)->click();
         QVERIFY(stepsToGrade(w.document()->baseLut(), scene) < 1.5);
         QVERIFY(w.document()->lutOrigin().contains("matched to"));
+        QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
+        // ... as one undo step: Undo gives back the LUT that was there, Redo the match.
+        QVERIFY(w.windowActions()->undoAction()->isEnabled());
+        QVERIFY(w.document()->isModified());
+        const Lut3D matched = w.document()->baseLut();
+        w.windowActions()->undoAction()->trigger();
+        QVERIFY(w.document()->baseLut().entries() == before.entries());
+        QVERIFY(!w.document()->lutOrigin().contains("matched to"));
+        QVERIFY(!w.document()->isModified());
+        QCOMPARE(w.preview()->source(), w.document()->lutSource());
+        w.windowActions()->redoAction()->trigger();
+        QVERIFY(w.document()->baseLut().entries() == matched.entries());
+        QVERIFY(w.document()->isModified());
+    }
+
+    void slidersShowTheirValuesAndStayIndependent() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        const QString refPath = writeReference(*w.document()->storedImage(), "editor-match-sl");
+        MatchDialog dlg(
+            &w, EditorContext{w.document(), w.preview(), &w},
+            std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath));
+        dlg.show();
+        auto* strength = dlg.findChild<QSlider*>("matchStrength");
+        auto* luma = dlg.findChild<QSlider*>("matchLuma");
+        auto* chroma = dlg.findChild<QSlider*>("matchChroma");
+        QVERIFY(strength && luma && chroma);
+        // Every slider shows its value.
+        QCOMPARE(boxValue(dlg, "matchStrength"), 100);
+        QCOMPARE(boxValue(dlg, "matchLuma"), 100);
+        QCOMPARE(boxValue(dlg, "matchChroma"), 100);
+        // Untouched, the shares follow Strength (unset: lutkit match's rule).
+        strength->setValue(80);
+        QCOMPARE(boxValue(dlg, "matchStrength"), 80);
+        QCOMPARE(luma->value(), 80);
+        QCOMPARE(boxValue(dlg, "matchLuma"), 80);
+        QVERIFY(!dlg.session().options().lumaStrength);
+        QCOMPARE(dlg.session().options().strength, 0.8);
+        // Lightness moved on its own keeps its value when Strength moves; Colour still follows.
+        luma->setValue(30);
+        QCOMPARE(boxValue(dlg, "matchLuma"), 30);
+        strength->setValue(150);
+        QCOMPARE(luma->value(), 30);
+        QCOMPARE(boxValue(dlg, "matchLuma"), 30);
+        QCOMPARE(chroma->value(), 150);
+        QCOMPARE(dlg.session().options().lumaStrength.value_or(-1), 0.3);
+        QVERIFY(!dlg.session().options().chromaStrength);
+        QCOMPARE(dlg.session().options().strength, 1.5);
+        // A value typed in the number box moves its slider, and that share is kept too.
+        auto* chromaBox = dlg.findChild<QSpinBox*>("matchChroma.value");
+        chromaBox->setValue(60);
+        QCOMPARE(chroma->value(), 60);
+        strength->setValue(10);
+        QCOMPARE(chroma->value(), 60);
+        QCOMPARE(luma->value(), 30);
+        QCOMPARE(dlg.session().options().chromaStrength.value_or(-1), 0.6);
+        // The preview shows those amounts: lightness 0 and colour 0 is the neutral LUT.
+        luma->setValue(0);
+        chroma->setValue(0);
+        strength->setValue(200);
+        QCOMPARE(luma->value(), 0);
+        QVERIFY(w.preview()->source().effective->maxDeviationFromIdentity() < 1e-5f);
+        dlg.reject();
+    }
+
+    void matchRunsOnAWorkerWithProgressAndCancel() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.resize(1200, 800);
+        w.show();
+        formats::LoadedImage shot = noisyPicture(1920, 1080);
+        const QString refPath = writeReference(shot.image, "editor-match-1080");
+        w.document()->adoptImage(std::move(shot), QStringLiteral("shot.png"));
+        w.waitForPreview();
+        RepaintProbe* probe = probeIn(w);
+        BackgroundTask* task = w.windowActions()->matchTask();
+        TaskStatus* status = statusOf(w, "task.match");
+        QVERIFY(task && status);
+
+        // Started, the call returns at once; the status bar shows it; Cancel stops it.
+        probe->start();
+        w.windowActions()->startMatch(refPath);
+        QVERIFY(task->isBusy());
+        QVERIFY(status->isVisible());
+        QVERIFY(status->text().contains(QStringLiteral("editor-match-1080")));
+        QVERIFY(waitFor([&] { return task->fraction() > 0.05; }, 60000));
+        status->cancelButton()->click();
+        QVERIFY(!task->isBusy());
+        QCOMPARE(task->lastOutcome(), BackgroundTask::Outcome::Cancelled);
+        QVERIFY(waitFor([&] { return task->threadsRunning() == 0; }, 30000)); // it stopped
+        QTest::qWait(100);
+        probe->stop();
+        QVERIFY(!w.windowActions()->matchDialog());
+        QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
+        qInfo("match cancelled: %s", qPrintable(stallText(*probe)));
+        QVERIFY2(noStall(*probe), qPrintable(stallText(*probe)));
+
+        // To the end: the window repaints throughout, the progress rises, the dialog opens.
+        double lastFraction = 0.0;
+        int rises = 0;
+        connect(task, &BackgroundTask::progressChanged, this, [&](double f) {
+            if (f > lastFraction + 1e-9)
+                ++rises;
+            lastFraction = std::max(lastFraction, f);
+        });
+        probe->start();
+        w.windowActions()->startMatch(refPath);
+        task->waitForIdle();
+        probe->stop();
+        QCOMPARE(task->lastOutcome(), BackgroundTask::Outcome::Done);
+        qInfo("match to the end: %s, progress rose %d times", qPrintable(stallText(*probe)), rises);
+        QVERIFY2(noStall(*probe), qPrintable(stallText(*probe)));
+        QVERIFY(rises >= 2);
+        MatchDialog* dlg = w.windowActions()->matchDialog();
+        QVERIFY(dlg && dlg->isVisible());
+        auto* buttons = dlg->findChild<QDialogButtonBox*>();
+        buttons->button(QDialogButtonBox::Ok)->click();
+        QVERIFY(w.document()->lutOrigin().contains("editor-match-1080"));
+        QVERIFY(w.document()->baseLut().maxDeviationFromIdentity() > 0.02f);
+        QVERIFY(w.windowActions()->undoAction()->isEnabled());
         QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
     }
 };

@@ -585,7 +585,7 @@ private slots:
         Document doc;
         doc.openLut(QStringLiteral("builtin:smash-default"));
         QVERIFY(doc.lutPath().isEmpty());
-        QCOMPARE(doc.lutOrigin(), QStringLiteral("builtin:smash-default"));
+        QCOMPARE(doc.lutOrigin(), QStringLiteral("Smash Ultimate's default stage LUT")); // issue 43
         QCOMPARE(doc.lutPurpose(), LutPurpose::Smash);
         QCOMPARE(doc.baseLut().size(), 16);
         QCOMPARE(doc.baseLut().at(7, 0, 15), glm::vec3(121.0f, 0.0f, 255.0f) / 255.0f);

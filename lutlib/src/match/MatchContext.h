@@ -14,6 +14,7 @@ struct MatchContext {
 };
 
 MatchFitResult fitMatch(const MatchPicture& source, const std::vector<MatchPicture>& references,
-                        const MatchOptions& options, MatchContext* context);
+                        const MatchOptions& options, MatchContext* context,
+                        const Progress* progress = nullptr);
 
 } // namespace lut::detail

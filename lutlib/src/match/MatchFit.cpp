@@ -143,14 +143,20 @@ struct Fitted {
 } // namespace
 
 MatchFitResult fitMatch(const MatchPicture& source, const std::vector<MatchPicture>& references,
-                        const MatchOptions& o) {
-    return detail::fitMatch(source, references, o, nullptr);
+                        const MatchOptions& o, const Progress* progress) {
+    return detail::fitMatch(source, references, o, nullptr, progress);
 }
 
 MatchFitResult detail::fitMatch(const MatchPicture& source,
                                 const std::vector<MatchPicture>& references, const MatchOptions& o,
-                                MatchContext* context) {
+                                MatchContext* context, const Progress* progress) {
     const auto start = Clock::now();
+    // Between steps: the fraction done, and a cancel stops the fit (the results never depend on
+    // it).
+    auto step = [progress](double fraction) {
+        checkCancelled(progress, "match");
+        reportProgress(progress, fraction);
+    };
     if (references.empty())
         throw Error("match: no reference picture");
     if (o.size < 2 || o.size > 129)
@@ -169,12 +175,14 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
 
     std::vector<detail::PictureFacts> srcFacts, refFacts;
     SampleSet src = detail::collectSamples({&source}, linear, kMaxPerPicture, srcFacts, o.nthreads);
+    step(0.1);
     std::vector<const MatchPicture*> refPtrs;
     for (const auto& r : references)
         refPtrs.push_back(&r);
     const SampleSet ref = detail::collectSamples(
         refPtrs, linear, std::max<std::size_t>(kMaxPerPicture / references.size(), 1 << 16),
         refFacts, o.nthreads);
+    step(0.2);
     rep.sourcePixels = srcFacts[0].pixels;
     rep.sourceUsed = srcFacts[0].used;
     for (const auto& f : refFacts) {
@@ -204,6 +212,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
         detail::channelStats(ref.values, ref.weights, ref.codeAligned, o.nthreads);
     const ColourMoments refMoments = detail::colourMoments(ref.values, ref.weights, o.nthreads);
 
+    step(0.3);
     const bool all = o.method == MatchMethod::Auto;
     auto wants = [&](MatchMethod m) {
         return all || o.method == m ||
@@ -235,6 +244,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
                                 n.sourceSpread * 255.0)
                           : std::string()));
     };
+    step(0.35);
     if (wants(MatchMethod::Mkl)) {
         const auto t = Clock::now();
         MklNotes notes;
@@ -248,6 +258,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
         fitted.push_back(std::move(f));
     }
     std::vector<glm::vec3> lattice; // u = h1(w) of the source samples
+    step(0.4);
     if (wants(MatchMethod::HmMklHm)) {
         const auto t = Clock::now();
         Fitted f{shape, 0.0};
@@ -271,6 +282,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
         f.seconds = secondsSince(t) + (fitted.empty() ? 0.0 : fitted.front().seconds);
         fitted.push_back(std::move(f));
     }
+    step(0.5);
     if (wants(MatchMethod::Regularised)) {
         const auto t = Clock::now();
         const MatchTransfer& baseTransfer = fitted.back().transfer; // HM-MKL-HM
@@ -314,6 +326,7 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
     }
 
     // Every candidate against the reference (auto chooses by it; otherwise it is the report's).
+    step(0.8);
     const SampleSet srcThin = detail::thinSamples(src, 1 << 15);
     const SampleSet refThin = detail::thinSamples(ref, 1 << 15);
     const ColourDistribution refDist(detail::labOfWorking(refThin.values, linear, o.nthreads),
@@ -322,6 +335,8 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
                                      srcThin.weights, o.nthreads);
     rep.before = distributionDistance(srcDist, refDist);
     for (const Fitted& f : fitted) {
+        step(0.85 + 0.15 * static_cast<double>(rep.candidates.size()) /
+                        static_cast<double>(fitted.size()));
         MatchCandidate c;
         c.method = f.transfer.method;
         c.seconds = f.seconds;

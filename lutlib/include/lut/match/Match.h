@@ -13,6 +13,7 @@
 #include "lut/Error.h"
 #include "lut/Image.h"
 #include "lut/LutFile.h"
+#include "lut/Progress.h"
 #include "lut/match/MatchOptions.h"
 #include "lut/match/MatchReport.h"
 #include "lut/match/MatchTransfer.h"
@@ -42,8 +43,10 @@ struct MatchFitResult {
 
 // Throws lut::Error for no reference, an empty picture, a mask of another size, a picture with
 // no usable pixel (all masked or NaN), a size outside 2..129 or a bad strength.
+// With `progress` (lut/Progress.h; the editor's worker), the fraction done is reported between
+// the fit's steps and a cancel throws CancelledError at the next one; the result is the same.
 MatchFitResult fitMatch(const MatchPicture& source, const std::vector<MatchPicture>& references,
-                        const MatchOptions& options);
+                        const MatchOptions& options, const Progress* progress = nullptr);
 
 // The LUT file for a transfer with options' size, strength and preserve: a shaper of the
 // transfer's x -> u (4096 entries; 1021 = 4 per 8-bit code for display data) when it has one,

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The scripted mode's (ScriptRunner.h) answer to the modal dialogs a command opens (an export
+// dialog, a question, the match's amounts), as the user would with Return (accept: the default
+// button) or Escape (reject); it remembers what they said, so a script never waits for a person.
+#include <QObject>
+#include <QStringList>
+#include <QTimer>
+
+namespace lut::gui {
+
+class DialogResponder : public QObject {
+public:
+    explicit DialogResponder(QObject* parent);
+    bool accept = false;
+    QStringList seen;
+
+private:
+    void poll();
+    QTimer m_timer;
+};
+
+} // namespace lut::gui
