@@ -101,6 +101,7 @@ private:
     CLI::App m_app;
     int m_exitCode = 0;
     std::string m_generate;       // --generate KIND
+    std::string m_maxMemory;      // --max-memory of the commands that only set the limit
     bool m_helpRequested = false; // `help` was given
     std::string m_helpTopic;      // `help COMMAND`
 };
