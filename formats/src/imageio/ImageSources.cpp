@@ -98,6 +98,11 @@ std::string readImageStream(const std::string& named) {
                 throw Error("-: standard input does not start as a " + named +
                             " file does (--in-format " + named +
                             "): no such signature in its first bytes");
+            // A PNG's IHDR is its first chunk, at byte 8: a stream whose first MiB declares no
+            // image there is no PNG (a signature then zeros was buffered to the limit).
+            if (longer && d.format == "png" && d.parts.empty())
+                throw Error("-: standard input starts with a PNG signature but no valid IHDR "
+                            "chunk follows it: truncated or corrupt");
             const std::uint64_t most = plausibleFileBytes(d);
             if (most == 0)
                 return StreamBound{};
