@@ -9,6 +9,7 @@
 #include "lut/Error.h"
 #include "lut/Parallel.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/MemoryLimit.h"
 #include "lut/io/TempFiles.h"
 #include "lut/os/Console.h"
 #include "lut/os/Memory.h"
@@ -110,8 +111,7 @@ private:
 } // namespace
 
 std::uint64_t defaultMaxMemory() {
-    const std::uint64_t physical = os::physicalMemoryBytes();
-    return physical > 0 ? physical / 2 : std::uint64_t(4) << 30;
+    return defaultMemoryLimit();
 }
 
 std::uint64_t parseMemorySize(const std::string& text) {

@@ -11,11 +11,14 @@
 #include "Usage.h"
 #include "Vocabulary.h"
 
+#include "lut/io/MemoryLimit.h"
+
 #include "lut/Error.h"
 #include "lut/Version.h"
 #include "lut/formats/ColorConfig.h"
 #include "lut/formats/LibraryMessages.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/MemoryLimit.h"
 #include "lut/io/TempFiles.h"
 #include "lut/os/Console.h"
 #include "lut/os/Files.h"
@@ -137,6 +140,13 @@ CommandLine::CommandLine(const RunHooks& hooks)
     setupChart(m_app, runner(hooks.chart, runChart, m_exitCode));
     setupAtlas(m_app, runner(hooks.atlas, runAtlas, m_exitCode));
 
+    // Every command takes --max-memory, with one default (lut/io/MemoryLimit.h); apply and
+    // preview add theirs, which also bounds the files they run at once.
+    for (CLI::App* sub : m_app.get_subcommands({}))
+        if (!sub->get_option_no_throw("--max-memory"))
+            addMaxMemory(*sub, m_maxMemory,
+                         "the most memory the command may hold at once (a picture, standard "
+                         "input): 4G, 512M (default: half the RAM)");
     refuseNonFiniteNumbers(m_app);
 
     const std::vector<std::string> commands = commandNames(m_app);
@@ -301,6 +311,7 @@ int CommandLine::parseErrorExit(const CLI::ParseError& e) {
 }
 
 int CommandLine::run(const std::vector<std::string>& args) {
+    setMemoryLimit(0); // the default, unless this command line sets it
     {
         std::vector<std::string> names = commandNames(m_app);
         names.push_back("help");

@@ -104,6 +104,7 @@ private:
     int m_exitCode = 0;
     std::string m_generate;       // --generate KIND
     std::string m_names;          // --names KIND: the active config's names, for completion
+    std::string m_maxMemory;      // --max-memory of the commands that only set the limit
     bool m_helpRequested = false; // `help` was given
     std::string m_helpTopic;      // `help COMMAND`
 };

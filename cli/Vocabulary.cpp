@@ -8,6 +8,7 @@
 #include "lut/Version.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FrameSequence.h"
+#include "lut/io/MemoryLimit.h"
 #include "lut/match/MatchOptions.h"
 #include "lut/pipeline/Pipeline.h"
 #include "lut/roundtrip/Embed.h"
@@ -390,11 +391,15 @@ CLI::Option* addCompression(CLI::App& sub, std::string& target) {
         ->check(choicesValidator(compressionChoices()));
 }
 
-CLI::Option* addMaxMemory(CLI::App& sub, std::string& target) {
+CLI::Option* addMaxMemory(CLI::App& sub, std::string& target, const std::string& help) {
     return sub
         .add_option("--max-memory", target,
-                    "memory files in parallel may use together: 4G, 512M (default: half the RAM)")
+                    help.empty() ? "memory files in parallel may use together: 4G, 512M "
+                                   "(default: half the RAM)"
+                                 : help)
         ->type_name("SIZE")
+        // The process's limit too (lut/io/MemoryLimit.h): what one file may take.
+        ->each([](const std::string& v) { setMemoryLimit(parseMemorySize(v)); })
         ->check(CLI::Validator(
             [](std::string& v) -> std::string {
                 try {

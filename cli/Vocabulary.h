@@ -83,8 +83,10 @@ void addImageFormats(CLI::App& sub, std::string& inFormat, std::string& outForma
 CLI::Option* addImageOutputFormat(CLI::App& sub, std::string& target, const std::string& help);
 // --compression NAME (default: the input's).
 CLI::Option* addCompression(CLI::App& sub, std::string& target);
-// --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together.
-CLI::Option* addMaxMemory(CLI::App& sub, std::string& target);
+// --max-memory SIZE (4G, 512M; default half the RAM): what files in parallel may use together,
+// and what one command may hold at once (lut::setMemoryLimit: a frame, standard input). Every
+// command has it (CommandLine gives it to those that do not add it themselves).
+CLI::Option* addMaxMemory(CLI::App& sub, std::string& target, const std::string& help = {});
 // --subimage INT: which image of a file holding several (an OpenEXR part, a TIFF page, a GIF
 // frame; from 0). Unset: -1.
 CLI::Option* addSubimage(CLI::App& sub, int& target, const std::string& help);

@@ -119,19 +119,20 @@ int split(const AtlasCommandOptions& o) {
     FormatOptions wo;
     wo.layout = a.shape.layout;
     wo.bitDepth = 8;
-    for (int k = 0; k < a.shape.rows; ++k) {
+    // The rows read again one at a time, each written as it comes (none is kept).
+    formats::forEachAtlasRow(in, a, [&](int k, const Lut3D& row) {
         if (skip[static_cast<std::size_t>(k)]) {
             if (!o.verbosity.quiet)
                 std::cerr << "lutkit: " << printable(paths[static_cast<std::size_t>(k)])
                           << " exists; skipped (-n)\n";
-            continue;
+            return;
         }
         LutFile f;
-        f.cube = a.rows[static_cast<std::size_t>(k)];
+        f.cube = row;
         (void)formats::writeLut(paths[static_cast<std::size_t>(k)], f, wo, "strip");
         std::cout << "row " << k << "  " << paths[static_cast<std::size_t>(k)]
                   << (a.neutral[static_cast<std::size_t>(k)] ? " (neutral)" : "") << "\n";
-    }
+    });
     std::cout << "split    " << in << ": " << a.shape.rows << " rows of " << a.shape.size
               << "^3 in the " << toString(a.shape.layout) << " layout (" << a.layoutReason << ")\n";
     return kExitOk;

@@ -16,12 +16,14 @@
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/InputFile.h"
+#include "lut/io/StdStreams.h"
 #include "lut/os/Files.h"
 #include "lut/os/Paths.h"
 #include "lut/smash/SmashShownEdit.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -187,9 +189,46 @@ int runCheck(const CheckCommandOptions& o) {
     std::optional<formats::LoadedImage> image;
     ImageView view;
     if (!o.image.empty()) {
-        image = formats::readImage(o.image);
-        view = image->image.view();
-        options.image = &view;
+        // A picture whose float frame would pass 256 MiB (16 megapixels) is weighed as it is
+        // read, again for each LUT, and never held whole (the weights are counts of pixels: the
+        // same figures either way). Standard input is read once, whole.
+        constexpr std::uint64_t kWholeFrameBytes = std::uint64_t(256) << 20;
+        const bool stream = !isStdinName(o.image) && [&] {
+            const formats::ImageInfo info = formats::readImageInfo(o.image);
+            return static_cast<std::uint64_t>(info.width) *
+                       static_cast<std::uint64_t>(info.height) * 16u >
+                   kWholeFrameBytes;
+        }();
+        if (stream) {
+            // Bands of about 4 megapixels (64 MiB) are weighed at a time: the weighing's
+            // per-thread tables cost as much as a few rows of pixels.
+            options.imageRows = [path =
+                                     o.image](const std::function<void(const ImageView&)>& feed) {
+                Image band;
+                int filled = 0;
+                (void)formats::readImageRows(path, [&](const ImageView& rows, int) {
+                    if (band.width() != rows.width)
+                        band = Image(rows.width, std::max(1, (4 << 20) / rows.width));
+                    for (int y = 0; y < rows.height; ++y) {
+                        std::copy_n(rows.row(y), 4 * static_cast<std::size_t>(rows.width),
+                                    band.pixel(0, filled));
+                        if (++filled == band.height()) {
+                            feed(band.view());
+                            filled = 0;
+                        }
+                    }
+                });
+                if (filled > 0) {
+                    ImageView rest = band.view();
+                    rest.height = filled;
+                    feed(rest);
+                }
+            };
+        } else {
+            image = formats::readImage(o.image);
+            view = image->image.view();
+            options.image = &view;
+        }
     }
     bool failed = false;
     std::vector<std::string> jsonReports;

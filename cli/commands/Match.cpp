@@ -12,6 +12,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
+#include "lut/io/StdStreams.h"
 #include "lut/match/Match.h"
 #include "lut/match/MatchReportImage.h"
 #include "lut/pipeline/Pipeline.h"
@@ -29,24 +30,44 @@ namespace lut::cli {
 namespace {
 
 struct ReadPicture {
-    formats::LoadedImage image;
+    formats::LoadedImage image; // every step-th pixel of a large file (info: the whole file's)
     SceneDecision scene;
+    int step = 1;
 };
 
-ReadPicture readPicture(const std::string& path) {
+// The grid the fit samples (lut::matchSampleStep) is all that is read of a large picture: a
+// 16384^2 PNG is a 2048^2 frame, not a 4 GiB one. Standard input is read whole.
+int pictureStep(const std::string& path, bool source, std::size_t references) {
+    if (isStdinName(path))
+        return 1;
+    const formats::ImageInfo info = formats::readImageInfo(path);
+    return matchSampleStep(info.width, info.height, source, references);
+}
+
+ReadPicture readPicture(const std::string& path, int step) {
     ReadPicture p;
-    p.image = formats::readImage(path);
+    p.step = step;
+    p.image = formats::readImageSampled(path, step);
     const auto& i = p.image.info;
     p.scene = decideSceneKind(SceneEvidence{i.isFloat, i.bitDepth, i.colorSpace, i.format});
     return p;
 }
 
-MatchPicture matchPicture(const ReadPicture& p, const std::string& name) {
+MatchPicture matchPicture(const ReadPicture& p, const std::string& name,
+                          const formats::LoadedImage* mask) {
     MatchPicture m;
     m.pixels = p.image.image.view();
     m.linear = p.scene.storedIsLinear;
     m.bitDepth = p.image.info.isFloat ? 0 : p.image.info.bitDepth;
     m.name = name;
+    m.step = p.step;
+    m.fullWidth = p.image.info.width;
+    m.fullHeight = p.image.info.height;
+    if (mask) {
+        m.mask = mask->image.view();
+        m.maskFullWidth = mask->info.width;
+        m.maskFullHeight = mask->info.height;
+    }
     return m;
 }
 
@@ -130,16 +151,18 @@ int runMatch(const MatchCommandOptions& o) {
     const bool writeReport =
         !o.reportImage.empty() && resolveOutput(o.reportImage, o.overwrite, inputs).skip == false;
 
-    ReadPicture source = readPicture(o.source);
+    const std::size_t nrefs = o.references.size();
+    ReadPicture source = readPicture(o.source, pictureStep(o.source, true, nrefs));
     std::vector<ReadPicture> refs;
     for (const auto& r : o.references)
-        refs.push_back(readPicture(r));
+        refs.push_back(readPicture(r, pictureStep(r, false, nrefs)));
+    // A mask is read on its picture's grid.
     formats::LoadedImage maskSource;
     std::vector<formats::LoadedImage> maskRefs;
     if (!o.maskSource.empty())
-        maskSource = formats::readImage(o.maskSource);
-    for (const auto& m : o.maskReferences)
-        maskRefs.push_back(formats::readImage(m));
+        maskSource = formats::readImageSampled(o.maskSource, source.step);
+    for (std::size_t i = 0; i < o.maskReferences.size(); ++i)
+        maskRefs.push_back(formats::readImageSampled(o.maskReferences[i], refs[i].step));
 
     std::ostringstream text;
     Lut3D stage;
@@ -163,16 +186,11 @@ int runMatch(const MatchCommandOptions& o) {
         }
     }
 
-    MatchPicture src = matchPicture(source, o.source);
-    if (!o.maskSource.empty())
-        src.mask = maskSource.image.view();
+    MatchPicture src = matchPicture(source, o.source, o.maskSource.empty() ? nullptr : &maskSource);
     std::vector<MatchPicture> references;
-    for (std::size_t i = 0; i < refs.size(); ++i) {
-        MatchPicture r = matchPicture(refs[i], o.references[i]);
-        if (i < maskRefs.size())
-            r.mask = maskRefs[i].image.view();
-        references.push_back(r);
-    }
+    for (std::size_t i = 0; i < refs.size(); ++i)
+        references.push_back(
+            matchPicture(refs[i], o.references[i], i < maskRefs.size() ? &maskRefs[i] : nullptr));
     MatchOptions mo;
     mo.method = o.method;
     mo.size = o.size;
@@ -190,11 +208,10 @@ int runMatch(const MatchCommandOptions& o) {
         // (lut/smash/PurposeConversion.h), measured over the screenshot's colours.
         PurposeOptions po;
         po.stageLut = o.originalLut.empty() ? nullptr : &stage;
-        Image shot;
+        // The screenshot as read (what the fit sampled: every step-th pixel of a large one).
         ImageView shotView;
         if (source.scene.kind == SceneKind::Screenshot) {
-            shot = formats::readImage(o.source).image;
-            shotView = shot.view();
+            shotView = source.image.image.view();
             po.screenshot = &shotView;
         }
         po.measure = true;

@@ -3,8 +3,10 @@
 #include "lut/formats/ExtractFile.h"
 
 #include "lut/Error.h"
+#include "lut/Limits.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/io/StdStreams.h"
 #include "lut/ops/Resample.h"
 #include "lut/ops/Strength.h"
 #include "lut/roundtrip/PatchFinder.h"
@@ -17,6 +19,19 @@ namespace lut::formats {
 
 ExtractFileResult extractLutFromFile(const std::string& path, const ExtractFileOptions& o) {
     ExtractFileResult out;
+    // The patch may be anywhere: the search needs the whole picture, so its size is bounded
+    // before any pixel is read (issue 41: a 16384^2 PNG of 826 KB took 4.1 GB).
+    if (!isStdinName(path)) {
+        const ImageInfo info = readImageInfo(path);
+        const std::uint64_t pixels =
+            static_cast<std::uint64_t>(info.width) * static_cast<std::uint64_t>(info.height);
+        if (pixels > limits::kMaxPatchSearchPixels)
+            throw LimitError(path + ": " + std::to_string(info.width) + "x" +
+                             std::to_string(info.height) +
+                             " pixels, more than extract searches for a patch (at most 7680x4320, "
+                             "an 8K screenshot: the search holds the whole picture); crop it "
+                             "around the patch");
+    }
     LoadedImage loaded = readImage(path);
     const ImageView view = loaded.image.view();
     const FindResult found = findPatch(view);

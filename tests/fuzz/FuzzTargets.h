@@ -101,8 +101,7 @@ inline Outcome readAtlasChecked(const std::string& path) {
         invariant(a.shape.rows >= 1 && a.height == a.shape.rows * a.shape.size &&
                       a.width == a.shape.size * a.shape.size,
                   "atlas shape differs from the picture");
-        invariant(a.rows.size() == static_cast<std::size_t>(a.shape.rows) &&
-                      a.neutral.size() == a.rows.size(),
+        invariant(a.neutral.size() == static_cast<std::size_t>(a.shape.rows),
                   "atlas rows differ from its shape");
         for (const auto& [later, earlier] : a.duplicates)
             invariant(earlier < later && later < a.shape.rows, "atlas repeat out of range");

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace lut::formats {
 
@@ -146,6 +147,44 @@ AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::s
     return report;
 }
 
+namespace {
+
+// The picture's atlas rows in order, each an n-row band of float RGBA (the codec's chunks of
+// rows gathered), to `band`: the memory of one row of the atlas, not of the picture.
+void forEachBand(const std::string& path, const AtlasShape& shape,
+                 const std::function<void(int k, const ImageView& band)>& band) {
+    const int n = shape.size;
+    Image rows(n * n, n);
+    int filled = 0, k = 0;
+    (void)readImageRows(path, [&](const ImageView& chunk, int) {
+        for (int y = 0; y < chunk.height; ++y) {
+            if (chunk.width != rows.width())
+                throw Error(path + ": the picture changed while it was read");
+            std::copy_n(chunk.row(y), 4 * static_cast<std::size_t>(chunk.width),
+                        rows.pixel(0, filled));
+            if (++filled == n) {
+                band(k++, rows.view());
+                filled = 0;
+            }
+        }
+    });
+    if (k != shape.rows || filled != 0)
+        throw Error(path + ": the picture changed while it was read");
+}
+
+// Two 64-bit FNV-1a hashes (different offsets) of a row's stored bytes.
+std::pair<std::uint64_t, std::uint64_t> rowHash(const std::vector<std::uint8_t>& bytes) {
+    std::uint64_t a = 14695981039346656037ull, b = 0x9e3779b97f4a7c15ull;
+    for (const std::uint8_t v : bytes) {
+        a = (a ^ v) * 1099511628211ull;
+        b = (b ^ (v + 0x5bu)) * 0x100000001b3ull;
+        b ^= b >> 29;
+    }
+    return {a, b};
+}
+
+} // namespace
+
 AtlasReading readAtlas(const std::string& path, std::optional<LutLayout> layout) {
     checkRegularInput(path);
     const ImageInfo header = readImageInfo(path);
@@ -157,7 +196,6 @@ AtlasReading readAtlas(const std::string& path, std::optional<LutLayout> layout)
     } catch (const Error& e) {
         throw Error(path + ": " + e.what());
     }
-    const LoadedImage img = readImage(path);
     const int n = out.shape.size, rows = out.shape.rows;
     if (layout) {
         out.layoutReason = "given";
@@ -168,15 +206,15 @@ AtlasReading readAtlas(const std::string& path, std::optional<LutLayout> layout)
             if (f.layout != LutLayout::Hald)
                 fits.push_back(f);
         std::vector<int> votes(fits.size(), 0);
-        std::string table;
-        for (std::size_t i = 0; i < fits.size(); ++i) {
-            for (int k = 0; k < rows; ++k)
-                if (axisScore(atlasRow(img.image.view(), {fits[i].layout, n, rows}, k))
-                        .followsAxes())
+        forEachBand(path, out.shape, [&](int, const ImageView& band) {
+            for (std::size_t i = 0; i < fits.size(); ++i)
+                if (axisScore(atlasRow(band, {fits[i].layout, n, 1}, 0)).followsAxes())
                     ++votes[i];
+        });
+        std::string table;
+        for (std::size_t i = 0; i < fits.size(); ++i)
             table += (table.empty() ? "" : ", ") + std::string(toString(fits[i].layout)) + " " +
                      std::to_string(votes[i]);
-        }
         const int best = *std::max_element(votes.begin(), votes.end());
         const long winners = std::count(votes.begin(), votes.end(), best);
         const std::string counted = "rows whose output channels follow their own inputs, of " +
@@ -201,17 +239,23 @@ AtlasReading readAtlas(const std::string& path, std::optional<LutLayout> layout)
         }
         out.shape.layout = chosen;
     }
-    std::vector<std::vector<std::uint8_t>> stored;
-    for (int k = 0; k < rows; ++k) {
-        out.rows.push_back(atlasRow(img.image.view(), out.shape, k));
+    // Each row's stored values by their hash, and the first row that held them.
+    std::map<std::pair<std::uint64_t, std::uint64_t>, int> seen;
+    forEachAtlasRow(path, out, [&](int k, const Lut3D& row) {
         AtlasRowReport scratch;
-        stored.push_back(stored8(out.rows.back(), scratch));
-        out.neutral.push_back(out.rows.back().maxDeviationFromIdentity() <= 0.5f / 255.0f + 1e-6f);
-        for (int j = 0; j < k; ++j)
-            if (stored[static_cast<std::size_t>(j)] == stored.back())
-                out.duplicates.emplace_back(k, j);
-    }
+        const auto [first, fresh] = seen.emplace(rowHash(stored8(row, scratch)), k);
+        if (!fresh)
+            out.duplicates.emplace_back(k, first->second);
+        out.neutral.push_back(row.maxDeviationFromIdentity() <= 0.5f / 255.0f + 1e-6f);
+    });
     return out;
+}
+
+void forEachAtlasRow(const std::string& path, const AtlasReading& atlas,
+                     const std::function<void(int index, const Lut3D& row)>& row) {
+    const AtlasShape one{atlas.shape.layout, atlas.shape.size, 1};
+    forEachBand(path, atlas.shape,
+                [&](int k, const ImageView& band) { row(k, atlasRow(band, one, 0)); });
 }
 
 } // namespace lut::formats

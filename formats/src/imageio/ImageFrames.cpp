@@ -77,6 +77,74 @@ LoadedImage readFrame(ImageSource& source, const std::string& path, const Progre
     return out;
 }
 
+ImageInfo readImageRows(const std::string& path,
+                        const std::function<void(const ImageView& rows, int y0)>& fn,
+                        const std::string& format, const Progress* progress, int subimage) {
+    checkCancelled(progress, path);
+    auto src = openImageSource(path, format);
+    selectSubimage(*src, path, subimage);
+    const ImageInfo info = src->info();
+    const RgbaMap map = rgbaMapOf(info);
+    const int rows = chunkRows(info.width, info.channels, src->rowGranularity());
+    const std::size_t rb = rowBytes(info);
+    std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
+    Image rgba(info.width, rows);
+    for (int y0 = 0; y0 < info.height; y0 += rows) {
+        checkCancelled(progress, path);
+        const int y1 = std::min(info.height, y0 + rows);
+        src->readRows(y0, y1, chunk.data());
+        toRgba(chunk.data(), info.type, info.channels, map,
+               static_cast<std::size_t>(info.width) * static_cast<std::size_t>(y1 - y0),
+               rgba.pixel(0, 0));
+        ImageView view = rgba.view();
+        view.height = y1 - y0;
+        fn(view, y0);
+        reportProgress(progress, static_cast<double>(y1) / info.height);
+    }
+    src->finish();
+    return info;
+}
+
+LoadedImage readImageSampled(const std::string& path, int step, const std::string& format,
+                             const Progress* progress, int subimage) {
+    if (step <= 1)
+        return readImage(path, format, progress, subimage);
+    LoadedImage out;
+    checkCancelled(progress, path);
+    auto src = openImageSource(path, format);
+    selectSubimage(*src, path, subimage);
+    out.info = src->info();
+    out.metadata = src->metadata();
+    const ImageInfo& info = out.info;
+    const int w = (info.width + step - 1) / step, h = (info.height + step - 1) / step;
+    allocating(path,
+               "a " + std::to_string(w) + "x" + std::to_string(h) + " float RGBA frame (every " +
+                   std::to_string(step) + "th pixel)",
+               static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * 16u,
+               [&] { out.image = Image(w, h); });
+    const RgbaMap map = rgbaMapOf(info);
+    const int rows = chunkRows(info.width, info.channels, src->rowGranularity());
+    const std::size_t rb = rowBytes(info);
+    std::vector<unsigned char> chunk(rb * static_cast<std::size_t>(rows));
+    std::vector<float> row(static_cast<std::size_t>(info.width) * 4u);
+    for (int y0 = 0; y0 < info.height; y0 += rows) {
+        checkCancelled(progress, path);
+        const int y1 = std::min(info.height, y0 + rows);
+        src->readRows(y0, y1, chunk.data());
+        for (int y = (y0 + step - 1) / step * step; y < y1; y += step) {
+            toRgba(chunk.data() + rb * static_cast<std::size_t>(y - y0), info.type, info.channels,
+                   map, static_cast<std::size_t>(info.width), row.data());
+            float* dst = out.image.pixel(0, y / step);
+            for (int x = 0; x < info.width; x += step)
+                std::copy_n(&row[4 * static_cast<std::size_t>(x)], 4,
+                            dst + 4 * static_cast<std::size_t>(x / step));
+        }
+        reportProgress(progress, static_cast<double>(y1) / info.height);
+    }
+    src->finish();
+    return out;
+}
+
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
     if (image.empty())
         throw Error(path + ": cannot write an empty image");

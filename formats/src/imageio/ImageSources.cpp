@@ -67,19 +67,42 @@ namespace {
 
 // Standard input, bounded by what its header declares: a stream that is no image stops after
 // its first MiB, one that is stops at what its pixels can take (plausibleFileBytes).
+// A stream whose header is wrong is refused as soon as its head has arrived, not buffered to
+// the limit (issue 41: a PNG signature then zeros took 4 GB, `--in-format png < /dev/zero` 2 GB).
 std::string readImageStream(const std::string& named) {
     return readStandardInput(
         static_cast<std::size_t>(limits::kMaxLutFileBytes), [&](const std::string& head) {
+            // A stream shorter than the head is refused with its reason once it is whole, as a
+            // file is. A longer one: the header scanners read its head as a head (a field past
+            // it is not an error), and what they refuse in it is refused at once.
+            const bool longer = head.size() >= kStreamHeadBytes;
             DeclaredImage d;
             try {
                 d = checkImageBytes("-", head, named, false);
             } catch (const Error&) {
-                return StreamBound{}; // refused with its reason once it is whole
+                if (!longer)
+                    return StreamBound{};
+                throw;
             }
             if (d.format.empty() && named.empty())
                 throw Error("-: standard input is not an image lutkit reads (no PNG, JPEG, TIFF, "
                             "OpenEXR, DPX, PSD, GIF, BMP, HDR, WebP, IFF or PNM header; name the "
                             "format of a TGA or another one with --in-format)");
+            // A format named with --in-format whose files start with a signature: a stream
+            // without it is not one.
+            static const char* const kSigned[] = {"png", "jpeg", "gif", "tiff", "openexr",
+                                                  "psd", "dpx",  "hdr", "webp", "iff",
+                                                  "bmp", "pnm",  "dds", "fits"};
+            if (longer && d.format.empty() &&
+                std::find(std::begin(kSigned), std::end(kSigned), named) != std::end(kSigned))
+                throw Error("-: standard input does not start as a " + named +
+                            " file does (--in-format " + named +
+                            "): no such signature in its first bytes");
+            // A PNG's IHDR is its first chunk, at byte 8: a stream whose first MiB declares no
+            // image there is no PNG (a signature then zeros was buffered to the limit).
+            if (longer && d.format == "png" && d.parts.empty())
+                throw Error("-: standard input starts with a PNG signature but no valid IHDR "
+                            "chunk follows it: truncated or corrupt");
             const std::uint64_t most = plausibleFileBytes(d);
             if (most == 0)
                 return StreamBound{};

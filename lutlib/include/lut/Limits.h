@@ -15,6 +15,10 @@ constexpr int kMax1DSize = 65536;
 constexpr std::size_t kMaxTextLineBytes = 1 << 16;
 // Largest image (width*height) any reader accepts: guards allocations on hostile headers.
 constexpr std::uint64_t kMaxImagePixels = 1ull << 28;
+// Largest picture extract searches whole for a round-trip patch: an 8K UHD screenshot
+// (7680x4320). The search needs the whole picture as a float frame (16 bytes a pixel, 506 MiB
+// here); a larger one is refused before it is read, with advice to crop it.
+constexpr std::uint64_t kMaxPatchSearchPixels = 7680ull * 4320ull;
 // Largest LUT file a reader will open (a 256^3 .cube with long lines is ~600 MB).
 constexpr std::uint64_t kMaxLutFileBytes = 2ull << 30;
 

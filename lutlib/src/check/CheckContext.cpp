@@ -77,8 +77,11 @@ Context::Context(const LutFile& file, const CheckOptions& options) : m_options(&
     m_hueWeight.fill(1.0 / 72.0);
     for (auto& ch : m_chanWeight)
         ch.fill(1.0 / 256.0);
-    if (options.image && !options.image->empty())
-        weighFromImage(*options.image);
+    if (options.imageRows)
+        weighFromImage(options.imageRows);
+    else if (options.image && !options.image->empty())
+        weighFromImage(
+            [&](const std::function<void(const ImageView&)>& chunk) { chunk(*options.image); });
 }
 
 glm::vec3 Context::evaluate(glm::vec3 input) const {
@@ -136,54 +139,58 @@ glm::vec3 Context::tableCoordinates(glm::vec3 input) const {
     return out;
 }
 
-void Context::weighFromImage(const ImageView& image) {
+void Context::weighFromImage(const ImageRows& feed) {
     const int cells = m_n > 1 ? m_n - 1 : 0;
     std::vector<double> cellCount(m_cellWeight.size(), 0.0);
     std::vector<double> colourBins(32 * 32 * 32, 0.0);
     std::array<std::array<double, 256>, 3> chan{};
     double outside = 0.0, total = 0.0;
     std::mutex mutex;
-    parallelFor(image.height, nthreads(), [&](int y0, int y1) {
-        std::vector<double> localCells(cellCount.size(), 0.0);
-        std::vector<double> localBins(colourBins.size(), 0.0);
-        std::array<std::array<double, 256>, 3> localChan{};
-        double localOutside = 0.0, localTotal = 0.0;
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < image.width; ++x) {
-                const float* p = image.pixel(x, y);
-                const glm::vec3 in(p[0], p[1], p[2]);
-                localTotal += 1.0;
-                bool out = false;
-                for (int c = 0; c < 3; ++c)
-                    out = out || !(in[c] >= m_inMin[c] && in[c] <= m_inMax[c]);
-                localOutside += out ? 1.0 : 0.0;
-                const glm::vec3 v = (in - m_inMin) / (m_inMax - m_inMin);
-                int bin[3];
-                for (int c = 0; c < 3; ++c) {
-                    const float f = std::isnan(v[c]) ? 0.0f : std::clamp(v[c], 0.0f, 1.0f);
-                    bin[c] = std::min(31, static_cast<int>(f * 32.0f));
-                    localChan[static_cast<std::size_t>(c)][static_cast<std::size_t>(
-                        std::min(255, static_cast<int>(f * 256.0f)))] += 1.0;
-                }
-                localBins[static_cast<std::size_t>(bin[0] + 32 * (bin[1] + 32 * bin[2]))] += 1.0;
-                if (cells > 0) {
-                    const glm::vec3 u = tableCoordinates(in);
-                    int idx[3];
+    // Counts of whole pixels, exact in double: the same sums whatever the chunks and threads.
+    feed([&](const ImageView& image) {
+        parallelFor(image.height, nthreads(), [&](int y0, int y1) {
+            std::vector<double> localCells(cellCount.size(), 0.0);
+            std::vector<double> localBins(colourBins.size(), 0.0);
+            std::array<std::array<double, 256>, 3> localChan{};
+            double localOutside = 0.0, localTotal = 0.0;
+            for (int y = y0; y < y1; ++y)
+                for (int x = 0; x < image.width; ++x) {
+                    const float* p = image.pixel(x, y);
+                    const glm::vec3 in(p[0], p[1], p[2]);
+                    localTotal += 1.0;
+                    bool out = false;
                     for (int c = 0; c < 3; ++c)
-                        idx[c] = std::min(cells - 1, static_cast<int>(u[c] * cells));
-                    localCells[cellIndex(idx[0], idx[1], idx[2])] += 1.0;
+                        out = out || !(in[c] >= m_inMin[c] && in[c] <= m_inMax[c]);
+                    localOutside += out ? 1.0 : 0.0;
+                    const glm::vec3 v = (in - m_inMin) / (m_inMax - m_inMin);
+                    int bin[3];
+                    for (int c = 0; c < 3; ++c) {
+                        const float f = std::isnan(v[c]) ? 0.0f : std::clamp(v[c], 0.0f, 1.0f);
+                        bin[c] = std::min(31, static_cast<int>(f * 32.0f));
+                        localChan[static_cast<std::size_t>(c)][static_cast<std::size_t>(
+                            std::min(255, static_cast<int>(f * 256.0f)))] += 1.0;
+                    }
+                    localBins[static_cast<std::size_t>(bin[0] + 32 * (bin[1] + 32 * bin[2]))] +=
+                        1.0;
+                    if (cells > 0) {
+                        const glm::vec3 u = tableCoordinates(in);
+                        int idx[3];
+                        for (int c = 0; c < 3; ++c)
+                            idx[c] = std::min(cells - 1, static_cast<int>(u[c] * cells));
+                        localCells[cellIndex(idx[0], idx[1], idx[2])] += 1.0;
+                    }
                 }
-            }
-        std::lock_guard<std::mutex> lock(mutex);
-        for (std::size_t i = 0; i < cellCount.size(); ++i)
-            cellCount[i] += localCells[i];
-        for (std::size_t i = 0; i < colourBins.size(); ++i)
-            colourBins[i] += localBins[i];
-        for (std::size_t c = 0; c < 3; ++c)
-            for (std::size_t i = 0; i < 256; ++i)
-                chan[c][i] += localChan[c][i];
-        outside += localOutside;
-        total += localTotal;
+            std::lock_guard<std::mutex> lock(mutex);
+            for (std::size_t i = 0; i < cellCount.size(); ++i)
+                cellCount[i] += localCells[i];
+            for (std::size_t i = 0; i < colourBins.size(); ++i)
+                colourBins[i] += localBins[i];
+            for (std::size_t c = 0; c < 3; ++c)
+                for (std::size_t i = 0; i < 256; ++i)
+                    chan[c][i] += localChan[c][i];
+            outside += localOutside;
+            total += localTotal;
+        });
     });
     if (total <= 0.0)
         return;

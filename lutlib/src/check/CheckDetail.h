@@ -53,7 +53,7 @@ public:
     }
     float cellWeight(std::uint32_t cell) const { return m_cellWeight[cell]; }
     const std::vector<float>& cellWeights() const { return m_cellWeight; }
-    bool image() const { return m_options->image != nullptr; }
+    bool image() const { return m_options->image != nullptr || bool(m_options->imageRows); }
     double imageOutsideDomain() const { return m_outsideDomain; }
     // The picture's share of pixels per 5-degree Oklab hue bin (uniform without a picture).
     const std::array<double, 72>& hueWeights() const { return m_hueWeight; }
@@ -61,7 +61,7 @@ public:
     const std::array<std::array<double, 256>, 3>& channelWeights() const { return m_chanWeight; }
 
 private:
-    void weighFromImage(const ImageView& image);
+    void weighFromImage(const ImageRows& feed);
 
     const CheckOptions* m_options;
     std::optional<Lut3D> m_table;

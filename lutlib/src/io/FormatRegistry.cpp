@@ -17,6 +17,31 @@
 
 namespace lut {
 
+namespace {
+
+// Whether text is lines that are blank or start with '#' (after blanks), and nothing else.
+bool onlyCommentLines(const std::string& text) {
+    bool lineStart = true, comment = false;
+    for (const char c : text) {
+        if (c == '\n' || c == '\r') {
+            lineStart = true;
+            comment = false;
+        } else if (comment) {
+            continue;
+        } else if (lineStart && (c == ' ' || c == '\t')) {
+            continue;
+        } else if (lineStart && c == '#') {
+            comment = true;
+            lineStart = false;
+        } else {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
 FormatRegistry& FormatRegistry::instance() {
     static FormatRegistry registry;
     return registry;
@@ -121,6 +146,11 @@ LutFile FormatRegistry::read(const std::string& path, const FormatOptions& optio
         // its first MiB (`lutkit info - < /dev/zero` took 2 GB).
         const std::string bytes =
             readStandardInput(limits::kMaxLutFileBytes, [&](const std::string& head) {
+                // A first MiB of comment lines alone (`yes '# c' | lutkit info -` took 4 GB
+                // before the limit stopped it): no LUT file is so, refused at once.
+                if (head.size() >= kStreamHeadBytes && onlyCommentLines(head))
+                    throw Error("-: standard input is no LUT file lutkit reads (its first MiB "
+                                "is comment and blank lines only)");
                 std::uint64_t most = 0;
                 for (const Format* f : candidates)
                     most = std::max(most, f->maxStreamBytes(head));

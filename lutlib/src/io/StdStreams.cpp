@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/io/StdStreams.h"
 
+#include "lut/io/MemoryLimit.h"
 #include "lut/os/Files.h"
+
+#include <algorithm>
 
 #include <cerrno>
 #include <cstring>
@@ -16,8 +19,10 @@ std::string readStandardInput(std::size_t maxBytes,
                               const std::function<StreamBound(const std::string& head)>& bound) {
     std::string bytes;
     char buf[1 << 16];
-    std::uint64_t limit = maxBytes;
-    std::string why;
+    // The memory limit (--max-memory) holds standard input too.
+    const std::uint64_t memory = memoryLimit();
+    std::uint64_t limit = std::min<std::uint64_t>(maxBytes, memory);
+    std::string why = limit < maxBytes ? "of the memory limit (--max-memory)" : "";
     bool judged = !bound;
     auto over = [&] {
         throw LimitError(

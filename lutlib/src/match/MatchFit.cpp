@@ -142,6 +142,11 @@ struct Fitted {
 
 } // namespace
 
+int matchSampleStep(int width, int height, bool source, std::size_t references) {
+    const double pixels = static_cast<double>(std::max(width, 0)) * std::max(height, 0);
+    return detail::sampleStep(pixels, detail::maxSamples(source, references));
+}
+
 MatchFitResult fitMatch(const MatchPicture& source, const std::vector<MatchPicture>& references,
                         const MatchOptions& o, const Progress* progress) {
     return detail::fitMatch(source, references, o, nullptr, progress);
@@ -171,17 +176,15 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
     rep.linear = source.linear;
     rep.references = static_cast<int>(references.size());
     const bool linear = source.linear;
-    constexpr std::size_t kMaxPerPicture = std::size_t(1) << 22;
-
     std::vector<detail::PictureFacts> srcFacts, refFacts;
-    SampleSet src = detail::collectSamples({&source}, linear, kMaxPerPicture, srcFacts, o.nthreads);
+    SampleSet src = detail::collectSamples({&source}, linear, detail::maxSamples(true, 1), srcFacts,
+                                           o.nthreads);
     step(0.1);
     std::vector<const MatchPicture*> refPtrs;
     for (const auto& r : references)
         refPtrs.push_back(&r);
     const SampleSet ref = detail::collectSamples(
-        refPtrs, linear, std::max<std::size_t>(kMaxPerPicture / references.size(), 1 << 16),
-        refFacts, o.nthreads);
+        refPtrs, linear, detail::maxSamples(false, references.size()), refFacts, o.nthreads);
     step(0.2);
     rep.sourcePixels = srcFacts[0].pixels;
     rep.sourceUsed = srcFacts[0].used;

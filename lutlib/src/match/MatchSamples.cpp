@@ -23,6 +23,12 @@ float sanitize(float v) {
 
 } // namespace
 
+int sampleStep(double total, std::size_t maxPerPicture) {
+    return total > static_cast<double>(maxPerPicture)
+               ? static_cast<int>(std::ceil(std::sqrt(total / static_cast<double>(maxPerPicture))))
+               : 1;
+}
+
 SampleSet collectSamples(const std::vector<const MatchPicture*>& pictures, bool sourceLinear,
                          std::size_t maxPerPicture, std::vector<PictureFacts>& facts,
                          int nthreads) {
@@ -33,23 +39,31 @@ SampleSet collectSamples(const std::vector<const MatchPicture*>& pictures, bool 
         const ImageView& img = pic->pixels;
         if (img.empty())
             throw Error(pic->name + ": the picture has no pixels");
-        if (!pic->mask.empty() && (pic->mask.width != img.width || pic->mask.height != img.height))
-            throw Error(pic->name + ": the mask is " + std::to_string(pic->mask.width) + "x" +
-                        std::to_string(pic->mask.height) + ", the picture " +
-                        std::to_string(img.width) + "x" + std::to_string(img.height) +
-                        " (a mask must be the size of its picture)");
+        // A picture read in part: its whole size, and the grid's step within what was read.
+        const bool part = pic->step > 1;
+        const int fullW = part ? pic->fullWidth : img.width;
+        const int fullH = part ? pic->fullHeight : img.height;
+        const int maskW = part ? pic->maskFullWidth : pic->mask.width;
+        const int maskH = part ? pic->maskFullHeight : pic->mask.height;
+        if (!pic->mask.empty() && (maskW != fullW || maskH != fullH))
+            throw Error(pic->name + ": the mask is " + std::to_string(maskW) + "x" +
+                        std::to_string(maskH) + ", the picture " + std::to_string(fullW) + "x" +
+                        std::to_string(fullH) + " (a mask must be the size of its picture)");
         const bool convert = pic->linear != sourceLinear;
         if (convert || pic->bitDepth != 8)
             set.codeAligned = false;
         PictureFacts f;
         f.name = pic->name;
         f.converted = convert;
-        f.pixels = static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height);
-        const double total = static_cast<double>(f.pixels);
-        const int stride =
-            total > static_cast<double>(maxPerPicture)
-                ? static_cast<int>(std::ceil(std::sqrt(total / static_cast<double>(maxPerPicture))))
-                : 1;
+        f.pixels = static_cast<std::size_t>(fullW) * static_cast<std::size_t>(fullH);
+        const int fullStride = sampleStep(static_cast<double>(f.pixels), maxPerPicture);
+        if (part &&
+            (fullStride % pic->step != 0 || (img.width != (fullW + pic->step - 1) / pic->step) ||
+             img.height != (fullH + pic->step - 1) / pic->step))
+            throw Error(pic->name + ": read every " + std::to_string(pic->step) +
+                        "th pixel, which is not the grid the match samples (every " +
+                        std::to_string(fullStride) + "th)");
+        const int stride = part ? fullStride / pic->step : fullStride;
         const int rows = (img.height + stride - 1) / stride;
         const int cols = (img.width + stride - 1) / stride;
         // Fixed places per sampled pixel, compacted in order afterwards: the same samples on

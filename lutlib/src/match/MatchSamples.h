@@ -42,6 +42,17 @@ struct PictureFacts {
     std::size_t distinct = 0; // distinct colours (10 bits per channel), up to 256 counted
 };
 
+// The pixels the fit takes of each picture at most: 4 megapixels of the source, a share of them
+// of each of `references` (at least 65536).
+inline std::size_t maxSamples(bool source, std::size_t references) {
+    constexpr std::size_t kMaxPerPicture = std::size_t(1) << 22;
+    return source ? kMaxPerPicture
+                  : std::max<std::size_t>(kMaxPerPicture / std::max<std::size_t>(references, 1),
+                                          std::size_t(1) << 16);
+}
+// The step of the regular grid that keeps a picture of `pixels` within maxPerPicture.
+int sampleStep(double pixels, std::size_t maxPerPicture);
+
 // The pictures' counted pixels as working-space samples of the source's kind. At most
 // maxPerPicture pixels of each (a regular grid beyond). Throws lut::Error for an empty picture,
 // a mask of another size, or a picture with no counted pixel.

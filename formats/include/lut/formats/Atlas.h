@@ -11,6 +11,7 @@
 #include "lut/io/Atlas.h"
 #include "lut/io/FormatOptions.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,9 +54,9 @@ AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::s
 struct AtlasReading {
     AtlasShape shape;
     int width = 0, height = 0;
-    std::vector<Lut3D> rows;
     std::vector<bool> neutral; // the row is a neutral LUT (within half an 8-bit step)
-    // (later row, earlier row) pairs that store the same values
+    // (later row, earlier row) pairs that store the same values: each repeat with the first
+    // row that held them (a row repeated 8192 times is 8191 pairs, not 33 million)
     std::vector<std::pair<int, int>> duplicates;
     std::string layoutReason; // how the layout was chosen ("given", or what detection saw)
     Diagnostics diagnostics;
@@ -65,7 +66,14 @@ struct AtlasReading {
 // each output channel following its own input (the rule of lut::formats' strip reader, row by
 // row; a tie or no such row reads the default, reshade for 32^3 rows and unreal for others, with
 // a warning). Throws lut::Error naming the file for a picture that is no atlas (width not N^2,
-// height not whole rows).
+// height not whole rows). The picture is read a row of the atlas at a time, once to choose the
+// layout (when not given) and once for the rows, none of which is kept: an atlas of 8192 rows
+// takes the memory of one. Repeats are found by a 128-bit hash of each row's 8-bit values.
 AtlasReading readAtlas(const std::string& path, std::optional<LutLayout> layout = std::nullopt);
+
+// Another pass over an atlas readAtlas read: each row as a LUT, in order, to `row` (atlas
+// split writes each as it comes). The same errors as readAtlas (the file may have changed).
+void forEachAtlasRow(const std::string& path, const AtlasReading& atlas,
+                     const std::function<void(int index, const Lut3D& row)>& row);
 
 } // namespace lut::formats

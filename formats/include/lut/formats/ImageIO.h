@@ -10,6 +10,7 @@
 #include "lut/Progress.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -108,6 +109,21 @@ LoadedImage readImage(const std::string& path, const std::string& format = {},
 LoadedImage readImageMemory(std::string_view bytes, const std::string& name,
                             const std::string& format = {}, const Progress* progress = nullptr,
                             int subimage = kOnlyImage);
+// The same image without its frame: the rows as float RGBA (as readImage converts them), a
+// chunk at a time, handed to `rows` with the first row's index, in order, in a buffer reused
+// for the next chunk (a few MiB at most). For a caller that needs one pass over a picture or a
+// part of it (check --image, atlas info/split, match's subsample of a large picture): memory
+// stays the decoder's, whatever the picture's size. The same errors as readImage. Returns the
+// file's ImageInfo.
+ImageInfo readImageRows(const std::string& path,
+                        const std::function<void(const ImageView& rows, int y0)>& rows,
+                        const std::string& format = {}, const Progress* progress = nullptr,
+                        int subimage = kOnlyImage);
+// Every `step`-th column and row of an image, from the first (x, y multiples of step): a
+// ceil(width / step) x ceil(height / step) float RGBA frame, read through readImageRows (the
+// whole frame never exists). info is the file's (its full size). step 1 is readImage.
+LoadedImage readImageSampled(const std::string& path, int step, const std::string& format = {},
+                             const Progress* progress = nullptr, int subimage = kOnlyImage);
 // Describes subimage `subimage` (kOnlyImage: the first; info.subimages says how many there are).
 ImageInfo readImageInfo(const std::string& path, const std::string& format = {},
                         int subimage = kOnlyImage);

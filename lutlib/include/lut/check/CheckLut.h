@@ -37,15 +37,22 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace lut {
 
+// A picture given a chunk of rows at a time: feed(chunk) for each chunk, in any order.
+using ImageRows = std::function<void(const std::function<void(const ImageView& chunk)>& feed)>;
+
 struct CheckOptions {
     CheckThresholds thresholds;
     const ImageView* image = nullptr; // check over this picture's colours (RGB; alpha ignored)
-    std::size_t maxFindings = 40;     // findings listed, worst first (the rest are counted)
+    // Or the picture a chunk of rows at a time (a large file weighed as it is read, never held
+    // whole): called once with the function each chunk is to be given to. Takes image's place.
+    ImageRows imageRows;
+    std::size_t maxFindings = 40; // findings listed, worst first (the rest are counted)
     bool measureNeutral =
         true;         // the distance from neutral (ΔE2000 over the lattice: the slowest part)
     int nthreads = 0; // 0 = all cores

@@ -10,6 +10,7 @@
 //  - Sizes are checked before anything is allocated, and an allocation that fails names the file
 //    and the size asked for instead of escaping as std::bad_alloc.
 #include "lut/Error.h"
+#include "lut/io/MemoryLimit.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -63,10 +64,12 @@ std::string readFile(const std::string& path, std::size_t maxBytes,
 // "PATH: out of memory: WHAT needs N bytes (X MiB)".
 Error outOfMemory(const std::string& path, const std::string& what, std::uint64_t bytes);
 
-// Runs fn(); a std::bad_alloc it throws becomes outOfMemory(path, what, bytes).
+// Runs fn(), once bytes were checked against the memory limit (lut/io/MemoryLimit.h: a
+// LimitError past it); a std::bad_alloc it throws becomes outOfMemory(path, what, bytes).
 template <class Fn>
 decltype(auto) allocating(const std::string& path, const std::string& what, std::uint64_t bytes,
                           Fn&& fn) {
+    checkMemoryLimit(path, what, bytes);
     try {
         return fn();
     } catch (const std::bad_alloc&) {

@@ -33,7 +33,18 @@ struct MatchPicture {
     // (R + G + B) / 3 * A is at least 0.5 (white and opaque = use, black or transparent = ignore).
     ImageView mask;
     std::string name; // names the picture in messages
+    // A large picture read in part (matchSampleStep): pixels and mask hold every step-th column
+    // and row, from the first, of a picture (and mask) of fullWidth x fullHeight; the fit takes
+    // the same pixels it would take of the whole. 1: pixels is the whole picture.
+    int step = 1;
+    int fullWidth = 0, fullHeight = 0;
+    int maskFullWidth = 0, maskFullHeight = 0;
 };
+
+// The step of the regular grid the fit samples a width x height picture on (1: every pixel):
+// at most 4 megapixels of the source, 4 / references of each reference (at least 65536). A
+// caller may read only that grid of a large file (MatchPicture::step).
+int matchSampleStep(int width, int height, bool source, std::size_t references);
 
 struct MatchFitResult {
     MatchTransfer transfer;
