@@ -35,10 +35,11 @@ AtlasExportResult exportAtlasRow(const Lut3D& table, LutPurpose purpose, const Q
     if (exists) {
         // The rows it holds, as they are stored (8-bit values: they round-trip exactly), then
         // the new one; the atlas's N and layout stay.
-        formats::AtlasReading a = formats::readAtlas(out, layout);
+        const formats::AtlasReading a = formats::readAtlas(out, layout);
         o.size = a.shape.size;
-        for (std::size_t k = 0; k < a.rows.size(); ++k)
-            inputs.push_back(writeRow(a.rows[k], LutPurpose::Raw, static_cast<int>(k)));
+        formats::forEachAtlasRow(out, a, [&](int k, const Lut3D& row) {
+            inputs.push_back(writeRow(row, LutPurpose::Raw, k));
+        });
     } else {
         o.neutralFirst = true;
     }
