@@ -219,6 +219,15 @@ Choices shaperChoices() {
     return c;
 }
 
+Choices matchShaperChoices() {
+    Choices c{"match-shaper", "shaper choice", {"auto", "always", "never"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "auto" && s != "always" && s != "never")
+            throw Error("unknown shaper choice '" + s + "' (expected auto, always or never)");
+    };
+    return c;
+}
+
 std::optional<Choices> choicesForValidator(const std::string& name) {
     const std::string prefix = kChoicesValidatorPrefix;
     if (name.compare(0, prefix.size(), prefix) != 0)
@@ -228,7 +237,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
           imageFormatChoices, compressionChoices, shaperChoices, matchMethodChoices,
-          preserveChoices, atlasActionChoices}) {
+          preserveChoices, matchShaperChoices, atlasActionChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;
