@@ -284,8 +284,9 @@ CLI::App* setupMatch(CLI::App& app, std::function<void(const MatchCommandOptions
     sub->add_option("--size", o->size, "LUT size (default 33)")->check(CLI::Range(2, 129));
     sub->add_option_function<std::string>(
            "--method", [o](const std::string& v) { o->method = parseMatchMethod(v); },
-           "auto (default: hm-mkl-hm, or another whose LUT is clean and 10% closer to the "
-           "reference), hm (per-channel histograms), mkl (Monge-Kantorovich 3x3 + offset), "
+           "auto (default: hm-mkl-hm, or regularised or gradient-map when its LUT is clean and "
+           "10% closer to the reference), hm (per-channel histograms), mkl (Monge-Kantorovich 3x3 "
+           "+ offset), "
            "hm-mkl-hm, regularised (smooth monotone lattice for looks the others miss), "
            "gradient-map (a colour per luma: palettes, gradient maps, duotones, sepia)")
         ->check(choicesValidator(matchMethodChoices()))

@@ -390,29 +390,37 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
         rep.candidates.push_back(c);
         candidateOf.push_back(i);
     }
-    // The choice. HM-MKL-HM is the floor: eligible with a dip along grey of up to kFloorDip
-    // 8-bit steps (reported: a small dip is no reason to fall back to a method 2-3x further from
-    // the reference); a LUT that folds or drops further is not. Another candidate replaces it
-    // only when its LUT is clean (or a gradient map) and closer to the reference by a margin
-    // (kCloser): the distance is a sampled measure of the distributions, and a method that only
-    // ties it is not worth the risk. When nothing is eligible, every candidate is.
+    // The choice. HM-MKL-HM is the floor: eligible with a dip along grey (reported: a dip is no
+    // reason to fall back to a method 2-3x further from the reference, as measured on outside
+    // looks, bench/match_looks.py); a LUT that folds or goes down along a channel's axis is not.
+    // Another candidate replaces it only when its LUT is clean (or a gradient map) and closer to
+    // the reference by a margin (kCloser): the distance is a sampled measure of the distributions,
+    // and a method that only ties it is not worth the risk. When nothing is eligible, every
+    // candidate is.
     constexpr double kCloser = 0.9;
-    constexpr double kFloorDip = 2.0;
     std::size_t chosen = 0;
     if (all) {
         bool any = false;
         for (std::size_t i = 0; i < rep.candidates.size(); ++i) {
             auto& c = rep.candidates[i];
             c.eligible = c.shapeProblem.empty() ||
-                         (c.method == MatchMethod::HmMklHm && floorDip[i] <= kFloorDip);
+                         (c.method == MatchMethod::HmMklHm && std::isfinite(floorDip[i]));
             any = any || c.eligible;
         }
         if (!any)
             for (auto& c : rep.candidates)
                 c.eligible = true;
+        // hm and mkl are special cases of HM-MKL-HM (identity curves, identity matrix): a
+        // sampled distance that favours them over an eligible floor is not worth its risk
+        // (measured: mkl 10% closer by the distance, p99 twice the floor's from the truth).
+        bool floorEligible = false;
+        for (const auto& c : rep.candidates)
+            floorEligible = floorEligible || (c.method == MatchMethod::HmMklHm && c.eligible);
         double best = INFINITY;
         for (std::size_t i = 0; i < rep.candidates.size(); ++i) {
             const auto& c = rep.candidates[i];
+            if (floorEligible && (c.method == MatchMethod::Hm || c.method == MatchMethod::Mkl))
+                continue;
             const double d = c.method == MatchMethod::HmMklHm ? c.after.slicedWasserstein * kCloser
                                                               : c.after.slicedWasserstein;
             if (c.eligible && d < best) {
@@ -420,9 +428,9 @@ MatchFitResult detail::fitMatch(const MatchPicture& source,
                 chosen = i;
             }
         }
-        rep.choice = fmt("auto: hm-mkl-hm (the floor) unless another method's LUT is clean and "
-                         "at least %.0f%% closer to the reference; chosen at sliced "
-                         "Wasserstein %.3g",
+        rep.choice = fmt("auto: hm-mkl-hm (the floor) unless the regularised or gradient-map "
+                         "LUT is clean and at least %.0f%% closer to the reference; chosen at "
+                         "sliced Wasserstein %.3g",
                          100.0 * (1.0 - kCloser), rep.candidates[chosen].after.slicedWasserstein);
     } else {
         rep.choice = "asked for";

@@ -12,8 +12,9 @@
 namespace lut {
 
 // How the transfer is computed (docs/match.md, "Methods"):
-//   Auto         every method below, the one whose result is closest to the reference (sliced
-//                Wasserstein distance in CIELAB) unless a simpler one is within 5% of it;
+//   Auto         every method below, each judged by its LUT applied to the source: HM-MKL-HM
+//                (the floor) unless regularised or gradient-map is clean and 10% closer to the
+//                reference (sliced Wasserstein distance in CIELAB); docs/match.md has the rule;
 //   Hm           per-channel histogram matching: three 1D curves, no colour mixing;
 //   Mkl          the linear Monge-Kantorovich map (Pitié & Kokaram 2007): a 3x3 matrix and an
 //                offset taking the source's colour covariance to the reference's;
