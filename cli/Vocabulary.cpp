@@ -220,10 +220,10 @@ Choices shaperChoices() {
 }
 
 Choices matchShaperChoices() {
-    Choices c{"match-shaper", "shaper choice", {"auto", "always", "never"}, {}, {}};
+    Choices c{"lut-form", "LUT form", {"auto", "shaper", "table"}, {}, {}};
     c.accept = [](const std::string& s) {
-        if (s != "auto" && s != "always" && s != "never")
-            throw Error("unknown shaper choice '" + s + "' (expected auto, always or never)");
+        if (s != "auto" && s != "shaper" && s != "table")
+            throw Error("unknown LUT form '" + s + "' (expected auto, shaper or table)");
     };
     return c;
 }

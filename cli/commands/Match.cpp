@@ -292,17 +292,17 @@ CLI::App* setupMatch(CLI::App& app, std::function<void(const MatchCommandOptions
         ->check(choicesValidator(matchMethodChoices()))
         ->type_name("NAME");
     sub->add_option_function<std::string>(
-           "--shaper",
+           "--lut-form",
            [o](const std::string& v) {
-               o->form = v == "always"  ? MatchLutForm::ShaperTable
-                         : v == "never" ? MatchLutForm::Table
+               o->form = v == "shaper"  ? MatchLutForm::ShaperTable
+                         : v == "table" ? MatchLutForm::Table
                                         : MatchLutForm::Auto;
            },
            "auto (default: a 3D table alone, which every program reads, unless the look needs a "
-           "1D shaper before it; the report gives both errors), always (a shaper and the table: "
-           "DaVinci Resolve's .cube), never")
+           "1D shaper before it; the report gives both errors), shaper (a 1D shaper and the table: "
+           "DaVinci Resolve's .cube), table (the table alone)")
         ->check(choicesValidator(matchShaperChoices()))
-        ->type_name("WHEN");
+        ->type_name("NAME");
     addStrengthOptions(*sub, o->strength); // as convert, apply, preview and extract
     sub->add_option_function<std::vector<std::string>>(
            "--preserve",

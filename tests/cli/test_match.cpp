@@ -237,7 +237,7 @@ TEST(CliMatch, EachCandidateSaysWhyItIsNotEligibleAndTheFigureHolds) {
 
         const std::string lutPath = dir + "/" + m + ".cube";
         ASSERT_EQ(runCli("match " + shellQuoted(s) + " " + shellQuoted(rf) + " " +
-                         shellQuoted(lutPath) + " -y -q --shaper always --method " + m)
+                         shellQuoted(lutPath) + " -y -q --lut-form shaper --method " + m)
                       .exitCode,
                   0);
         if (std::string(m) == "gradient-map")
@@ -278,7 +278,7 @@ TEST(CliMatch, TheCubeFormEveryToolReadsIsNamedAndWritten) {
     const Scene& s = scene();
     const std::string resolve = s.dir + "/resolve.cube", iridas = s.dir + "/iridas.cube";
     const auto r = runCli("match " + shellQuoted(s.source) + " " + shellQuoted(s.reference) + " " +
-                          shellQuoted(resolve) + " -y --method hm-mkl-hm --shaper always");
+                          shellQuoted(resolve) + " -y --method hm-mkl-hm --lut-form shaper");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_THAT(fileBytes(resolve), HasSubstr("LUT_1D_SIZE")) << "the shaper form, as asked";
     const auto ffmpeg = [&](const std::string& cube) {
