@@ -220,6 +220,15 @@ Choices shaperChoices() {
     return c;
 }
 
+Choices matchShaperChoices() {
+    Choices c{"lut-form", "LUT form", {"auto", "shaper", "table"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "auto" && s != "shaper" && s != "table")
+            throw Error("unknown LUT form '" + s + "' (expected auto, shaper or table)");
+    };
+    return c;
+}
+
 std::optional<Choices> choicesForValidator(const std::string& name) {
     const std::string prefix = kChoicesValidatorPrefix;
     if (name.compare(0, prefix.size(), prefix) != 0)
@@ -229,7 +238,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
           imageFormatChoices, compressionChoices, shaperChoices, matchMethodChoices,
-          preserveChoices, atlasActionChoices}) {
+          preserveChoices, matchShaperChoices, atlasActionChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;

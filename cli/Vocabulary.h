@@ -47,6 +47,7 @@ Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip,
 Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
 Choices matchMethodChoices(); // lutkit match --method: auto, hm, mkl, hm-mkl-hm, regularised
 Choices preserveChoices();    // lutkit match --preserve: luma, neutrals, skin
+Choices matchShaperChoices(); // lutkit match --lut-form: auto, shaper, table
 Choices atlasActionChoices(); // lutkit atlas ACTION: build, split, info
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);

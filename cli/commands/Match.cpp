@@ -91,7 +91,14 @@ void printJson(const MatchCommandOptions& o, const MatchReport& r, const Diagnos
       << ", \"target\": " << json::quote(smash ? "smash" : "raw")
       << ",\n \"method\": " << json::quote(toString(r.method))
       << ", \"asked\": " << json::quote(toString(r.asked))
-      << ", \"choice\": " << json::quote(r.choice) << ",\n \"candidates\": [";
+      << ", \"choice\": " << json::quote(r.choice)
+      << ",\n \"look\": {\"kind\": " << json::quote(r.look)
+      << ", \"curve_rms_steps\": " << json::number(r.lookRmsSteps)
+      << "},\n \"form\": {\"shaper\": " << (r.shaper ? "true" : "false");
+    if (r.bothForms)
+        s << ", \"table_alone_steps\": " << gameErrorJson(r.tableAloneError)
+          << ", \"shaper_steps\": " << gameErrorJson(r.shaperError);
+    s << "},\n \"candidates\": [";
     for (std::size_t i = 0; i < r.candidates.size(); ++i)
         s << (i ? ", " : "") << "{\"method\": " << json::quote(toString(r.candidates[i].method))
           << ", \"after\": " << distanceJson(r.candidates[i].after)
@@ -193,6 +200,7 @@ int runMatch(const MatchCommandOptions& o) {
             matchPicture(refs[i], o.references[i], i < maskRefs.size() ? &maskRefs[i] : nullptr));
     MatchOptions mo;
     mo.method = o.method;
+    mo.form = o.form;
     mo.size = o.size;
     mo.strength = o.strength.strength;
     mo.lumaStrength = o.strength.luma;
@@ -234,13 +242,19 @@ int runMatch(const MatchCommandOptions& o) {
     diags.insert(diags.end(), wd.begin(), wd.end());
     // A .cube with a shaper is Resolve's form, which ffmpeg's lut3d ("Invalid data found"),
     // Photoshop's Color Lookup and most engines refuse: said, with the form they read.
-    if (!smash && out.shaper && o.format.empty() && extensionOf(o.output) == ".cube") {
+    if (!smash && out.shaper && o.format.empty() && o.form == MatchLutForm::Auto &&
+        extensionOf(o.output) == ".cube") {
         Diagnostic d;
         d.severity = Diagnostic::Severity::Warning;
         d.path = o.output;
-        d.message = "a 1D shaper then a 3D table (DaVinci Resolve's .cube, which OpenColorIO "
-                    "reads too); ffmpeg's lut3d, Photoshop's Color Lookup and most game engines "
-                    "read a 3D table alone: --format iridas_cube writes one (the shaper baked in)";
+        d.message =
+            "a 1D shaper then a 3D table (DaVinci Resolve's .cube, which OpenColorIO "
+            "reads too), kept because the look needs it" +
+            (res.report.bothForms ? " (the table alone would be " +
+                                        res.report.tableAloneError.str() + " from the match)"
+                                  : std::string()) +
+            "; ffmpeg's lut3d, Photoshop's Color Lookup and most game engines read a 3D "
+            "table alone: --format iridas_cube writes one (the shaper baked in)";
         diags.push_back(d);
     }
     if (writeReport) {
@@ -287,10 +301,24 @@ CLI::App* setupMatch(CLI::App& app, std::function<void(const MatchCommandOptions
     sub->add_option("--size", o->size, "LUT size (default 33)")->check(CLI::Range(2, 129));
     sub->add_option_function<std::string>(
            "--method", [o](const std::string& v) { o->method = parseMatchMethod(v); },
-           "auto (default: the closest of the others, a simpler one within 5%), hm "
-           "(per-channel histograms), mkl (Monge-Kantorovich 3x3 + offset), hm-mkl-hm, "
-           "regularised (smooth monotone lattice for looks the others miss)")
+           "auto (default: hm-mkl-hm, or regularised or gradient-map when its LUT is clean and "
+           "10% closer to the reference), hm (per-channel histograms), mkl (Monge-Kantorovich 3x3 "
+           "+ offset), "
+           "hm-mkl-hm, regularised (smooth monotone lattice for looks the others miss), "
+           "gradient-map (a colour per luma: palettes, gradient maps, duotones, sepia)")
         ->check(choicesValidator(matchMethodChoices()))
+        ->type_name("NAME");
+    sub->add_option_function<std::string>(
+           "--lut-form",
+           [o](const std::string& v) {
+               o->form = v == "shaper"  ? MatchLutForm::ShaperTable
+                         : v == "table" ? MatchLutForm::Table
+                                        : MatchLutForm::Auto;
+           },
+           "auto (default: a 3D table alone, which every program reads, unless the look needs a "
+           "1D shaper before it; the report gives both errors), shaper (a 1D shaper and the table: "
+           "DaVinci Resolve's .cube), table (the table alone)")
+        ->check(choicesValidator(matchShaperChoices()))
         ->type_name("NAME");
     addStrengthOptions(*sub, o->strength); // as convert, apply, preview and extract
     sub->add_option_function<std::vector<std::string>>(

@@ -26,6 +26,7 @@ struct MatchCommandOptions {
     std::string output;
     int size = 33;
     MatchMethod method = MatchMethod::Auto;
+    MatchLutForm form = MatchLutForm::Auto; // --lut-form auto|shaper|table
     StrengthOptions strength; // --strength, --luma-strength, --chroma-strength (StrengthOptions.h)
     std::vector<MatchPreserve> preserve;
     std::string maskSource;

@@ -69,7 +69,16 @@ TEST(MatchStiff, TwoFlatColours) {
         MatchOptions o;
         o.method = m;
         const MatchResult r = matchLook(picture(src, "src"), {picture(ref, "flat.png")}, o);
-        expectSmooth(r);
+        // Two colours are a look with steps (issue 42): auto keeps them with the gradient map,
+        // a colour per luma, flat on each side of the step by design (every cell "folds").
+        EXPECT_EQ(r.report.look, "posterised palette of 2 colours");
+        if (r.report.method == MatchMethod::GradientMap) {
+            for (const auto& e : r.lut.cube->entries())
+                for (int c = 0; c < 3; ++c)
+                    ASSERT_TRUE(std::isfinite(e[c]));
+        } else {
+            expectSmooth(r);
+        }
         EXPECT_THAT(allText(r.diagnostics), HasSubstr("flat.png: warning: the picture has only 2"));
     }
 }

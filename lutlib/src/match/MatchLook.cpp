@@ -8,12 +8,14 @@
 #include "match/MatchColours.h"
 #include "match/MatchContext.h"
 #include "match/MatchSamples.h"
+#include "match/TableFit.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 
 namespace lut {
 
@@ -146,7 +148,8 @@ LutFile bakeMatch(const MatchTransfer& t, const MatchOptions& o) {
     glm::dvec3 uMin = t.domainMin, uMax = t.domainMax;
     const double lo = std::min({t.domainMin.x, t.domainMin.y, t.domainMin.z});
     const double hi = std::max({t.domainMax.x, t.domainMax.y, t.domainMax.z});
-    if (t.hasShaper()) {
+    const bool useShaper = t.hasShaper() && o.form != MatchLutForm::Table;
+    if (useShaper) {
         const int n = codeAlignedShaper(t) ? 1021 : 4096;
         Lut1D shaper(n);
         shaper.setDomain(glm::vec3(static_cast<float>(lo)), glm::vec3(static_cast<float>(hi)));
@@ -163,7 +166,7 @@ LutFile bakeMatch(const MatchTransfer& t, const MatchOptions& o) {
         }
         file.shaper = std::move(shaper);
     }
-    const bool normalised = t.hasShaper();
+    const bool normalised = useShaper;
     Lut3D cube(o.size);
     if (!normalised)
         cube.setDomain(glm::vec3(static_cast<float>(lo)), glm::vec3(static_cast<float>(hi)));
@@ -175,9 +178,11 @@ LutFile bakeMatch(const MatchTransfer& t, const MatchOptions& o) {
                 for (int r = 0; r < n; ++r) {
                     const glm::dvec3 s = cubeLo + (cubeHi - cubeLo) * (glm::dvec3(r, g, b) /
                                                                        static_cast<double>(n - 1));
-                    const glm::dvec3 u = normalised ? uMin + (uMax - uMin) * s : s;
+                    // With a shaper the table's input is u; alone, the stored value x.
+                    const glm::dvec3 u = normalised ? uMin + (uMax - uMin) * s : t.toLattice(s);
                     const glm::dvec3 y = t.latticeOutput(u);
-                    const glm::dvec3 e = finish.isIdentity() ? y : finish(t.fromLattice(u), y);
+                    const glm::dvec3 e =
+                        finish.isIdentity() ? y : finish(normalised ? t.fromLattice(u) : s, y);
                     cube.at(r, g, b) = glm::vec3(e);
                 }
     });
@@ -203,7 +208,17 @@ MatchResult matchLook(const MatchPicture& source, const std::vector<MatchPicture
     const bool linear = t.linear;
 
     auto start = Clock::now();
-    res.lut = bakeMatch(t, o);
+    // Auto: the shaper form when the transfer has curves, and the table alone to compare.
+    MatchOptions shaperOptions = o;
+    if (o.form == MatchLutForm::Auto)
+        shaperOptions.form = MatchLutForm::ShaperTable;
+    res.lut = bakeMatch(t, shaperOptions);
+    std::optional<LutFile> tableAlone;
+    if (o.form == MatchLutForm::Auto && res.lut.shaper) {
+        MatchOptions q = o;
+        q.form = MatchLutForm::Table;
+        tableAlone = bakeMatch(t, q);
+    }
     rep.secondsBake = secondsSince(start);
 
     start = Clock::now();
@@ -215,25 +230,59 @@ MatchResult matchLook(const MatchPicture& source, const std::vector<MatchPicture
     std::vector<std::uint32_t> counts;
     distinctColours(src, linear, colours, counts);
     rep.interpolationColours = colours.size();
-
-    // The LUT as baked, on those colours.
-    const LutFileSampler sampler(res.lut, Interpolation::Tetrahedral);
-    const std::vector<glm::vec3> got = applyLut(sampler, colours, o.nthreads);
-    std::vector<double> steps(colours.size() * 3);
+    std::vector<glm::dvec3> wanted(colours.size());
     parallelFor(static_cast<int>(colours.size()), o.nthreads, [&](int a, int b) {
         for (int i = a; i < b; ++i) {
-            const std::size_t k = static_cast<std::size_t>(i);
-            const glm::dvec3 x(colours[k]);
+            const glm::dvec3 x(colours[static_cast<std::size_t>(i)]);
             const glm::dvec3 y = t(x);
-            const glm::dvec3 want = finish.isIdentity() ? y : finish(x, y);
-            for (int c = 0; c < 3; ++c) {
-                const double d = encodeWorking(got[k][c], linear) - encodeWorking(want[c], linear);
-                steps[3 * k + static_cast<std::size_t>(c)] =
-                    std::isfinite(d) ? std::fabs(d) * 255.0 : INFINITY;
-            }
+            wanted[static_cast<std::size_t>(i)] = finish.isIdentity() ? y : finish(x, y);
         }
     });
-    rep.interpolation = summariseSteps(steps);
+
+    // A LUT file on those colours, against the transfer.
+    auto measure = [&](const LutFile& lut, std::vector<glm::vec3>& got) {
+        const LutFileSampler sampler(lut, Interpolation::Tetrahedral);
+        got = applyLut(sampler, colours, o.nthreads);
+        std::vector<double> steps(colours.size() * 3);
+        parallelFor(static_cast<int>(colours.size()), o.nthreads, [&](int a, int b) {
+            for (int i = a; i < b; ++i) {
+                const std::size_t k = static_cast<std::size_t>(i);
+                for (int c = 0; c < 3; ++c) {
+                    const double d =
+                        encodeWorking(got[k][c], linear) - encodeWorking(wanted[k][c], linear);
+                    steps[3 * k + static_cast<std::size_t>(c)] =
+                        std::isfinite(d) ? std::fabs(d) * 255.0 : INFINITY;
+                }
+            }
+        });
+        return summariseSteps(steps);
+    };
+    std::vector<glm::vec3> got;
+    rep.interpolation = measure(res.lut, got);
+    rep.shaper = res.lut.shaper.has_value();
+    if (tableAlone) {
+        // The table alone unless the look needs the shaper to be held (MatchOptions.h).
+        std::vector<glm::vec3> gotTable;
+        const GameError e = measure(*tableAlone, gotTable);
+        rep.bothForms = true;
+        rep.shaperError = rep.interpolation;
+        rep.tableAloneError = e;
+        // A scene-linear source keeps its shaper: it carries the ACEScct curve and the range.
+        if (!linear && e.p99Steps <= 8.0 && e.meanSteps <= 1.0) {
+            res.lut = std::move(*tableAlone);
+            got = std::move(gotTable);
+            rep.interpolation = e;
+            rep.shaper = false;
+        }
+    }
+    // A look with steps: the table's values fitted over the source's colours, so each step
+    // falls where the pixels put it rather than across a whole cell (match/TableFit.h).
+    if (t.method == MatchMethod::GradientMap && !res.lut.shaper && res.lut.cube) {
+        detail::fitTableToColours(*res.lut.cube, colours, counts, wanted);
+        rep.interpolation = measure(res.lut, got);
+        rep.tableFitted = true;
+    }
+    const LutFileSampler sampler(res.lut, Interpolation::Tetrahedral);
 
     // What the LUT clips, per pixel: display values beyond half an 8-bit step outside [0, 1]
     // (closer ones round to 0 or 255 as they are), scene-linear values below -0.5/255.

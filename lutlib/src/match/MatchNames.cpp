@@ -17,14 +17,16 @@ const char* toString(MatchMethod m) {
         return "hm-mkl-hm";
     case MatchMethod::Regularised:
         return "regularised";
+    case MatchMethod::GradientMap:
+        return "gradient-map";
     }
     return "auto";
 }
 
 const std::vector<MatchMethod>& allMatchMethods() {
-    static const std::vector<MatchMethod> all = {MatchMethod::Auto, MatchMethod::Hm,
-                                                 MatchMethod::Mkl, MatchMethod::HmMklHm,
-                                                 MatchMethod::Regularised};
+    static const std::vector<MatchMethod> all = {
+        MatchMethod::Auto,    MatchMethod::Hm,          MatchMethod::Mkl,
+        MatchMethod::HmMklHm, MatchMethod::Regularised, MatchMethod::GradientMap};
     return all;
 }
 
@@ -43,7 +45,7 @@ MatchMethod parseMatchMethod(std::string_view name) {
                 return m;
     }
     throw Error("unknown match method '" + std::string(name) +
-                "' (expected auto, hm, mkl, hm-mkl-hm or regularised)");
+                "' (expected auto, hm, mkl, hm-mkl-hm, regularised or gradient-map)");
 }
 
 const char* toString(MatchPreserve p) {

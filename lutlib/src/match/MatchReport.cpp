@@ -30,12 +30,26 @@ std::string MatchReport::str() const {
         for (const auto& c : candidates)
             s += fmt("         %-11s %s; fitted in %.3g s%s\n", toString(c.method),
                      distance(c.after).c_str(), c.seconds, c.shapeNote().c_str());
+    if (!look.empty())
+        s += fmt("look     the reference is a colour per lightness: %s (its colours within %.2g "
+                 "8-bit steps of that curve, root mean square)\n",
+                 look.c_str(), lookRmsSteps);
     s += fmt("pixels   source: %zu of %zu counted; reference%s: %zu of %zu\n", sourceUsed,
              sourcePixels, references == 1 ? "" : "s", referenceUsed, referencePixels);
     s += fmt("before   %s\n", distance(before).c_str());
     s += fmt("after    %s\n", distance(after).c_str());
-    s += fmt("LUT      against the transfer it tabulates, over the source's %zu colours: %s%s\n",
-             interpolationColours, interpolation.str().c_str(), linear ? " (ACEScct steps)" : "");
+    s += fmt("LUT      against the transfer it tabulates, over the source's %zu colours: %s%s%s\n",
+             interpolationColours, interpolation.str().c_str(), linear ? " (ACEScct steps)" : "",
+             tableFitted ? " (the table's values fitted over these colours, so its steps fall "
+                           "where the pixels put them)"
+                         : "");
+    if (bothForms)
+        s += shaper ? fmt("form     a 1D shaper then the table: the look needs it (the table alone "
+                          "would be %s)\n",
+                          tableAloneError.str().c_str())
+                    : fmt("form     the table alone, which every program reads (with a 1D shaper "
+                          "before it: %s)\n",
+                          shaperError.str().c_str());
     s += fmt("shape    %s\n", quality.str().c_str());
     if (clippedValues > 0 || tableValuesOutside > 0)
         s += fmt("clipped  %.3g%% of the source's channel values land %s (up to %.3g 8-bit steps "

@@ -66,6 +66,16 @@ glm::dvec3 MatchTransfer::residualAt(const glm::dvec3& u) const {
 }
 
 glm::dvec3 MatchTransfer::workingOutput(const glm::dvec3& u) const {
+    if (!tone.empty()) {
+        const double l = lumaMatch(0.2126 * u.x + 0.7152 * u.y + 0.0722 * u.z);
+        const double n = static_cast<double>(tone.size() - 1);
+        double p = toneMax > toneMin ? (l - toneMin) / (toneMax - toneMin) * n : 0.0;
+        p = std::clamp(std::isnan(p) ? 0.0 : p, 0.0, n);
+        const std::size_t k = std::min(static_cast<std::size_t>(p), tone.size() - 1);
+        const std::size_t k1 = std::min(k + 1, tone.size() - 1);
+        const double f = p - static_cast<double>(k);
+        return tone[k] * (1.0 - f) + tone[k1] * f;
+    }
     const glm::dvec3 a = affine(u);
     glm::dvec3 v;
     for (int c = 0; c < 3; ++c)

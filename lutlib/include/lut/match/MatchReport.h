@@ -38,6 +38,11 @@ struct MatchReport {
     std::string choice;                        // why: "asked for", or auto's reason
     std::vector<MatchCandidate> candidates;    // auto: every method tried, in the order tried
     bool linear = false;                       // SOURCE is scene-linear (working encoding ACEScct)
+    // The kind of look the reference is when its colours lie on a curve of lightness
+    // ("posterised palette of 4 colours", "gradient map or duotone ..."); "" otherwise; and how
+    // far its colours are from that curve (root mean square, 8-bit steps).
+    std::string look;
+    double lookRmsSteps = 0.0;
 
     // SOURCE vs REFERENCE, and the LUT (as baked: shaper, table, tetrahedral) applied to SOURCE
     // vs REFERENCE, over a regular subsample of up to 32768 pixels of each.
@@ -46,6 +51,12 @@ struct MatchReport {
     // distinct colour of SOURCE's counted pixels: 8-bit steps of the working encoding.
     GameError interpolation;
     std::size_t interpolationColours = 0;
+    // The LUT's form: a 1D shaper then the table, or the table alone; where both were measured
+    // (MatchLutForm::Auto and a transfer with curves), each one's error as `interpolation`.
+    bool shaper = false;
+    bool bothForms = false;
+    bool tableFitted = false; // gradient map: the table's values fitted over SOURCE's colours
+    GameError tableAloneError, shaperError;
     LutQuality quality;
 
     // What the LUT does to SOURCE's counted pixels: channel values more than half an 8-bit step

@@ -10,6 +10,11 @@
 //                                     its own lattice on u's range)
 //   y = E^-1(v)                       the matched colour, a stored value of the source's kind
 //
+// The gradient-map method replaces the middle line by
+//   v = tone(lumaMatch(0.2126 u.r + 0.7152 u.g + 0.0722 u.b))
+// (lumaMatch the source's luma histogram-matched to the reference's, steps kept; tone the
+// reference's mean colour at each luma, linear between knots): not separable, so the file is a
+// table alone.
 // Each method leaves out what it does not use (identity curves, A = I and b = 0, no residual).
 // The shaper of the exported file is x -> u, the table u -> y: HM-MKL-HM is exact in that form
 // up to the table's interpolation of post(A u + b).
@@ -35,6 +40,9 @@ struct MatchTransfer {
     int residualSize = 0;             // 0 = no residual
     glm::dvec3 residualMin{0.0}, residualMax{1.0}; // its lattice's range of u
     std::vector<glm::vec3> residual;               // residualSize^3, red fastest (as Lut3D)
+    ChannelCurve lumaMatch;                        // gradient map: empty otherwise
+    std::vector<glm::dvec3> tone;                  // its colours at knots over [toneMin, toneMax]
+    double toneMin = 0.0, toneMax = 1.0;
 
     // Whether the file needs a shaper: pre is not the identity, or E is not.
     bool hasShaper() const;
