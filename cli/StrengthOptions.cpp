@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "StrengthOptions.h"
 
+#include "Vocabulary.h"
+
 #include "lut/io/FileNames.h"
 
 #include <CLI/CLI.hpp>
@@ -53,7 +55,8 @@ void addStrengthOptions(CLI::App& sub, StrengthOptions& t) {
            "how the strengths blend: oklab (default: lightness and chroma in a perceptual space) "
            "or reshade (as ReShade's LUT.fx sliders: the RGB vector's length and direction, for "
            "strips made for ReShade)")
-        ->check(CLI::IsMember({"oklab", "reshade"}))
+        ->type_name("BLEND")
+        ->check(choicesValidator(strengthBlendChoices()))
         ->group(group);
 }
 
