@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "StrengthOptions.h"
 
+#include "Vocabulary.h"
+
 #include "lut/io/FileNames.h"
 
 #include <CLI/CLI.hpp>
@@ -35,15 +37,26 @@ void addStrengthOptions(CLI::App& sub, StrengthOptions& t) {
         ->group(group);
     sub.add_option_function<double>(
            "--luma-strength", [&t](const double& v) { t.luma = v; },
-           "the lightness part only (Oklab L), 0..2 (default: --strength), as ReShade's "
-           "\"LUT luma amount\"")
+           "the lightness part only (Oklab L; with --strength-blend reshade the RGB length, "
+           "ReShade's \"LUT luma amount\"), 0..2 (default: --strength)")
         ->check(amountRange())
         ->group(group);
     sub.add_option_function<double>(
            "--chroma-strength", [&t](const double& v) { t.chroma = v; },
-           "the colour part only (Oklab a, b), 0..2 (default: --strength), as ReShade's "
-           "\"LUT chroma amount\"")
+           "the colour part only (Oklab a, b; with --strength-blend reshade the RGB direction, "
+           "ReShade's \"LUT chroma amount\"), 0..2 (default: --strength)")
         ->check(amountRange())
+        ->group(group);
+    sub.add_option_function<std::string>(
+           "--strength-blend",
+           [&t](const std::string& v) {
+               t.blend = v == "reshade" ? StrengthBlend::ReShade : StrengthBlend::Oklab;
+           },
+           "how the strengths blend: oklab (default: lightness and chroma in a perceptual space) "
+           "or reshade (as ReShade's LUT.fx sliders: the RGB vector's length and direction, for "
+           "strips made for ReShade)")
+        ->type_name("BLEND")
+        ->check(choicesValidator(strengthBlendChoices()))
         ->group(group);
 }
 
@@ -56,7 +69,9 @@ std::string strengthText(const StrengthOptions& options) {
         s << a.luma;
     else
         s << "luma " << a.luma << ", chroma " << a.chroma;
-    s << " (blended with neutral in Oklab)";
+    s << (a.blend == StrengthBlend::ReShade
+              ? " (blended with neutral as ReShade's LUT.fx: RGB length and direction)"
+              : " (blended with neutral in Oklab)");
     return s.str();
 }
 

@@ -159,6 +159,15 @@ Choices atlasActionChoices() {
     return c;
 }
 
+Choices strengthBlendChoices() {
+    Choices c{"strength-blend", "strength blend", {"oklab", "reshade"}, {}, {}};
+    c.accept = [](const std::string& s) {
+        if (s != "oklab" && s != "reshade")
+            throw Error("unknown strength blend '" + s + "'");
+    };
+    return c;
+}
+
 Choices cornerChoices() {
     Choices c{"corner",
               "corner",
@@ -238,7 +247,7 @@ std::optional<Choices> choicesForValidator(const std::string& name) {
          {layoutChoices, interpChoices, presetChoices, stageChoices, readFormatChoices,
           writeFormatChoices, latticeChoices, targetChoices, cornerChoices, bitDepthChoices,
           imageFormatChoices, compressionChoices, shaperChoices, matchMethodChoices,
-          preserveChoices, matchShaperChoices, atlasActionChoices}) {
+          preserveChoices, matchShaperChoices, atlasActionChoices, strengthBlendChoices}) {
         Choices c = make();
         if (c.kind == kind)
             return c;

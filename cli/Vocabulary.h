@@ -42,13 +42,14 @@ Choices latticeChoices();
 Choices targetChoices();
 Choices cornerChoices();
 Choices bitDepthChoices();
-Choices imageFormatChoices(); // image files apply and preview read and write: png, exr, tif ...
-Choices compressionChoices(); // --compression: the names OpenImageIO uses (zip, piz, lzw ...)
-Choices shaperChoices();      // lutkit bake --shaper: auto, none, log2
-Choices matchMethodChoices(); // lutkit match --method: auto, hm, mkl, hm-mkl-hm, regularised
-Choices preserveChoices();    // lutkit match --preserve: luma, neutrals, skin
-Choices matchShaperChoices(); // lutkit match --lut-form: auto, shaper, table
-Choices atlasActionChoices(); // lutkit atlas ACTION: build, split, info
+Choices imageFormatChoices();   // image files apply and preview read and write: png, exr, tif ...
+Choices compressionChoices();   // --compression: the names OpenImageIO uses (zip, piz, lzw ...)
+Choices shaperChoices();        // lutkit bake --shaper: auto, none, log2
+Choices matchMethodChoices();   // lutkit match --method: auto, hm, mkl, hm-mkl-hm, regularised
+Choices preserveChoices();      // lutkit match --preserve: luma, neutrals, skin
+Choices matchShaperChoices();   // lutkit match --lut-form: auto, shaper, table
+Choices atlasActionChoices();   // lutkit atlas ACTION: build, split, info
+Choices strengthBlendChoices(); // --strength-blend: oklab, reshade
 // The choices a validator name "choices:<kind>" refers to (nullopt for another name).
 std::optional<Choices> choicesForValidator(const std::string& validatorName);
 

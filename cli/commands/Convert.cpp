@@ -76,6 +76,7 @@ std::string reportJson(const ConvertOptions& o, const formats::ConvertReport& r)
     if (r.resample)
         js << "{\"from\": " << r.resample->from << ", \"to\": " << r.resample->to
            << ", \"interp\": " << json::quote(toString(r.resample->interp))
+           << ", \"shaper_sampled\": " << (r.resample->shaper ? "true" : "false")
            << ", \"error\": " << json::stats(r.resample->error) << "}";
     else
         js << "null";
@@ -117,11 +118,21 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
         w.interp = o.interp;
         printConversion(std::cout, *p.conversion, w);
     }
-    if (r.resample)
-        std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
-                  << toString(r.resample->interp) << "): " << r.resample->error.str() << "\n"
-                  << "         max: " << r.resample->error.coverage() << "\n";
-    else
+    if (r.resample) {
+        if (r.resample->shaper)
+            std::cout << "resample "
+                      << (r.resample->from
+                              ? "the 1D shaper and " + std::to_string(r.resample->from) + "^3 table"
+                              : std::string("the 1D table"))
+                      << " sampled at a " << r.resample->to
+                      << "^3 lattice over 0..1 (tetrahedral): ";
+        else
+            std::cout << "resample " << r.resample->from << "^3 -> " << r.resample->to << "^3 ("
+                      << toString(r.resample->interp) << "): ";
+        std::cout << r.resample->error.str() << "\n";
+        if (r.resample->error.bounded)
+            std::cout << "         max: " << r.resample->error.coverage() << "\n";
+    } else
         std::cout << "resample none (same size)\n";
     std::cout << "wrote    " << o.output << ": " << r.outputFormat;
     if (r.readBack)

@@ -3,6 +3,7 @@
 #include "lut/formats/Convert.h"
 
 #include "LutPrep.h"
+#include "StorageError.h"
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
@@ -15,8 +16,6 @@
 #include "lut/ops/Resample.h"
 #include "lut/ops/Strength.h"
 #include "lut/smash/SmashConstants.h"
-
-#include <glm/mat3x3.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -33,72 +32,6 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// The steepest slope of a table's interpolant: [axis][channel] = the largest |change| of the
-// channel along an edge of a cell parallel to the axis, per unit of input. Tetrahedral and
-// trilinear interpolation step along such edges, so no slope of either is steeper.
-glm::dmat3 cubeSlopes(const Lut3D& cube) {
-    glm::dmat3 out(0.0);
-    const int n = cube.size();
-    for (int axis = 0; axis < 3; ++axis) {
-        const double h = (double(cube.domainMax()[axis]) - cube.domainMin()[axis]) / (n - 1);
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    int q[3] = {r, g, b};
-                    if (++q[axis] >= n)
-                        continue;
-                    const glm::vec3 d = cube.at(q[0], q[1], q[2]) - cube.at(r, g, b);
-                    for (int c = 0; c < 3; ++c)
-                        out[axis][c] = std::max(out[axis][c], std::fabs(double(d[c])) / h);
-                }
-    }
-    return out;
-}
-
-// Compares the table handed to the writer with what the file reads back as. When both have the
-// same lattice, domain and shaper shape, entry by entry (exact); otherwise as functions on a probe
-// grid over the written table's domain.
-ErrorStats storageError(const LutFile& written, const LutFile& back) {
-    const bool sameShape =
-        written.cube && back.cube && written.cube->size() == back.cube->size() &&
-        written.cube->domainMin() == back.cube->domainMin() &&
-        written.cube->domainMax() == back.cube->domainMax() &&
-        written.shaper.has_value() == back.shaper.has_value() &&
-        (!written.shaper || (written.shaper->size() == back.shaper->size() &&
-                             written.shaper->domainMin() == back.shaper->domainMin() &&
-                             written.shaper->domainMax() == back.shaper->domainMax()));
-    if (!sameShape)
-        return compareLuts(written.toLut3D(), back.toLut3D(), Interpolation::Tetrahedral);
-    // One lattice: the cubes' interpolants differ by at most their largest entry difference, and
-    // a shaper stored differently moves each lookup in the cube by at most its largest entry
-    // difference per channel, which changes the output by at most the cube's slope times that.
-    ErrorAccumulator acc;
-    const auto& a = written.cube->entries();
-    const auto& b = back.cube->entries();
-    for (std::size_t i = 0; i < a.size(); ++i)
-        for (int c = 0; c < 3; ++c)
-            acc.add(a[i][c], b[i][c]);
-    ErrorStats s = acc.result();
-    if (written.shaper) {
-        glm::dvec3 moved(0.0);
-        for (int i = 0; i < written.shaper->size(); ++i)
-            for (int c = 0; c < 3; ++c)
-                moved[c] = std::max(moved[c], std::fabs(double((*written.shaper)[i][c]) -
-                                                        double((*back.shaper)[i][c])));
-        if (moved != glm::dvec3(0.0)) {
-            const glm::dmat3 slope = cubeSlopes(*written.cube);
-            double worst = 0.0;
-            for (int c = 0; c < 3; ++c)
-                worst = std::max(worst, slope[0][c] * moved[0] + slope[1][c] * moved[1] +
-                                            slope[2][c] * moved[2]);
-            s.maxAbs += worst;
-        }
-    }
-    s.bounded = true;
-    s.sampledMax = s.maxAbs;
-    return s;
 }
 
 const Format* formatNamed(const std::string& name) {
@@ -227,16 +160,21 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
                                  haldSizeText(held) + " (--level L asks for N = L^2)"});
         targetSize = held;
     }
+    FormatOptions writeOptions = options.write;
+    if (!options.outFormat.empty()) // iridas_cube: the Adobe dialect, as OpenColorIO's baker
+        FormatRegistry::instance().applyAlias(options.outFormat, writeOptions);
     LutFile toWrite = in;
-    if (in.shaper && !writer->holdsShaper()) {
-        // Every format without a shaper implies inputs 0..1: the shaper, then the table,
-        // evaluated exactly at the output's lattice there, the error measured between lattice
-        // points (never the two merged over the shaper's range first).
+    if (in.shaper && !writer->holdsShaperFor(writeOptions)) {
+        // Every format without a shaper implies inputs 0..1 (an Adobe .cube could name the
+        // shaper's range, 0..64, but then spends its lattice where display pictures are not:
+        // inputs in 0..1 were off OpenColorIO's reading of the source by mean 85 steps): the
+        // shaper, then the table, evaluated exactly at the output's lattice over 0..1, the error
+        // bounded between lattice points (never the two merged over the shaper's range first).
         const int size = targetSize ? targetSize : kDefaultUnitSize;
         ErrorStats error;
         toWrite.cube = prepareUnitLut(in, size, output, sizeNotes, &error);
         toWrite.shaper.reset();
-        report.resample = ResampleStep{sourceSize, size, options.interp, error};
+        report.resample = ResampleStep{sourceSize, size, options.interp, error, true};
         targetSize = size;
     } else if (targetSize != 0 && targetSize != sourceSize) {
         if (in.shaper && in.cube && writer->holdsShaper()) {
@@ -254,10 +192,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     }
     toWrite.diagnostics.clear();
 
-    FormatOptions writeOptions = options.write;
     writeOptions.size = targetSize;
-    if (!options.outFormat.empty()) // iridas_cube: the Adobe dialect, as OpenColorIO's baker
-        FormatRegistry::instance().applyAlias(options.outFormat, writeOptions);
     t0 = Clock::now();
     std::string inPlaceBytes; // what went to standard output or a device, to read back
     report.writeDiagnostics = writeLutFile(*writer, output, toWrite, writeOptions, &inPlaceBytes);

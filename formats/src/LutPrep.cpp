@@ -52,10 +52,13 @@ Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Dia
             std::string("the 1D shaper") +
                 (file.cube ? " and " + std::to_string(file.cube->size()) + "^3 table" : "") +
                 " sampled at a " + std::to_string(q.size) +
-                "^3 lattice over 0..1 (this format stores no shaper" +
-                (wider ? "; inputs outside 0..1 of the shaper's " + vecStr(lo) + " .. " +
-                             vecStr(hi) + " take the edge value"
-                       : std::string()) +
+                "^3 lattice over 0..1, where display pictures live (this format stores no "
+                "shaper" +
+                (wider
+                     ? "; inputs outside 0..1 of the shaper's " + vecStr(lo) + " .. " + vecStr(hi) +
+                           " take the edge value: a format that keeps the shaper, such as "
+                           "--format resolve_cube, .clf or .csp, keeps them"
+                     : std::string()) +
                 "): " + r.error.str() + " on " + std::to_string(r.heldOut) +
                 " inputs between lattice points"));
         return std::move(r.lut);

@@ -234,3 +234,49 @@ TEST(CliStrength, BadAmountsAreBadUsage) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("--strength"), std::string::npos) << r.err;
 }
+
+// Issue 40: ReShade's LUT.fx sliders of the same names blend the stored RGB by its length and its
+// direction, not in Oklab. --strength-blend reshade writes that blend: each entry against the
+// shader's formula written here in float64 (crosire/reshade-shaders, Shaders/LUT.fx:
+// lerp(normalize(x), normalize(y), chroma) * lerp(length(x), length(y), luma)); the default stays
+// the Oklab blend, and the two are far apart.
+TEST(CliStrength, ReShadeBlendIsTheShadersFormula) {
+    const std::string dir = workDir();
+    const Lut3D lut = writeGradeCube(dir + "/grade.cube", 9);
+    const RunResult r =
+        runCli("convert '" + dir + "/grade.cube' '" + dir +
+               "/rs.cube' --luma-strength 0.5 --chroma-strength 0.3 --strength-blend reshade");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("as ReShade's LUT.fx"), std::string::npos) << r.out;
+    ASSERT_EQ(runCli("convert '" + dir + "/grade.cube' '" + dir +
+                     "/ok.cube' --luma-strength 0.5 --chroma-strength 0.3")
+                  .exitCode,
+              0);
+    const Lut3D rs = readTable(dir + "/rs.cube"), ok = readTable(dir + "/ok.cube");
+    double worst = 0, apart = 0, apartSum = 0;
+    for (int b = 0; b < 9; ++b)
+        for (int g = 0; g < 9; ++g)
+            for (int rr = 0; rr < 9; ++rr) {
+                const glm::dvec3 x(lut.latticeInput(rr, g, b)), y(lut.at(rr, g, b));
+                const double lx = std::sqrt(x.x * x.x + x.y * x.y + x.z * x.z);
+                const double ly = std::sqrt(y.x * y.x + y.y * y.y + y.z * y.z);
+                const glm::dvec3 nx = lx > 0 ? x / lx : glm::dvec3(0.0);
+                const glm::dvec3 ny = ly > 0 ? y / ly : glm::dvec3(0.0);
+                const glm::dvec3 want = (nx + 0.3 * (ny - nx)) * (lx + 0.5 * (ly - lx));
+                for (int c = 0; c < 3; ++c) {
+                    worst = std::max(worst, std::fabs(rs.at(rr, g, b)[c] - want[c]));
+                    const double d = std::fabs(double(rs.at(rr, g, b)[c]) - ok.at(rr, g, b)[c]);
+                    apart = std::max(apart, d);
+                    apartSum += d;
+                }
+            }
+    EXPECT_LT(worst, 2e-6);
+    std::printf("[ measured ] ReShade vs Oklab blend at luma 0.5, chroma 0.3: mean %.2f, max %.1f "
+                "8-bit steps\n",
+                apartSum / (3 * 729) * 255, apart * 255);
+    EXPECT_GT(apart * 255, 4.0);
+    EXPECT_EQ(runCli("convert '" + dir + "/grade.cube' '" + dir +
+                     "/bad.cube' --strength 0.5 --strength-blend lab")
+                  .exitCode,
+              2);
+}

@@ -245,3 +245,23 @@ TEST(CheckDefects, NeutralOfEverySizeHasNoFinding) {
         EXPECT_LT(std::fabs(r.figures.worstHueShift), 0.5) << n;
     }
 }
+
+// Issue 40: a highlight clip followed by a colour matrix (min(1.4 x, 1), then a mixing matrix
+// whose rows sum to 1) holds the colour constant past the clip, away from the output's bounds:
+// the black-to-cyan ray was a "flat run" and banding failed. It is a clip of the input, reported
+// as one (range), and banding passes.
+TEST(CheckDefects, HighlightClipThenAMatrixIsAClipNotBanding) {
+    const CheckReport r = check(lutFrom(kN, [](glm::vec3 x) {
+        const glm::dvec3 y(std::min(1.4 * x.r, 1.0), std::min(1.4 * x.g, 1.0),
+                           std::min(1.4 * x.b, 1.0));
+        return glm::vec3(0.85 * y.r + 0.10 * y.g + 0.05 * y.b, 0.05 * y.r + 0.90 * y.g + 0.05 * y.b,
+                         0.05 * y.r + 0.10 * y.g + 0.85 * y.b);
+    }));
+    SCOPED_TRACE(describe(r));
+    EXPECT_EQ(r.check(CheckKind::Banding).status, CheckStatus::Pass);
+    EXPECT_TRUE(ofKind(r, FindingKind::Flat).empty());
+    EXPECT_FALSE(ofKind(r, FindingKind::Clip).empty());
+    // A posterised band still fails banding (its flats are inside the lines).
+    const CheckReport p = check(lutFrom(kN, posteriseGrade));
+    EXPECT_NE(p.check(CheckKind::Banding).status, CheckStatus::Pass);
+}

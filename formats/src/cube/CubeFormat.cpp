@@ -26,6 +26,10 @@ public:
                 {"iridas_cube", kCubeDialectAttribute, "adobe"}};
     }
     bool holdsShaper() const override { return true; }
+    bool holdsShaperFor(const FormatOptions& options) const override {
+        const auto d = options.attribute(kCubeDialectAttribute);
+        return !(d && *d == "adobe");
+    }
     // "# LUTKIT_PURPOSE smash", a comment line (CubeWriter.cpp).
     bool keepsPurpose(const std::string&, LutPurpose) const override { return true; }
     LutFile read(const std::string& path, const FormatOptions& options) const override {

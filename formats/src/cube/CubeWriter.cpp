@@ -172,10 +172,19 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
         const bool canResolve = uniform(shaper->domainMin()) && uniform(shaper->domainMax()) &&
                                 uniform(cube->domainMin()) && uniform(cube->domainMax());
         if (options.dialect == Dialect::Adobe || !canResolve) {
-            // The shaper, then the table, at the lattice over the shaper's domain, with what
-            // one lattice costs between its points.
+            // The shaper, then the table, at the lattice over the shaper's domain, or over 0..1
+            // (where display pictures live) when the Adobe dialect was asked for and the
+            // shaper's domain holds it (over 0..64 inputs in 0..1 fall in the first cells), with
+            // what one lattice costs between its points (a bound).
             LatticeRequest q;
             q.size = cube->size();
+            const glm::vec3 lo = lut.inputDomainMin(), hi = lut.inputDomainMax();
+            const bool unit = options.dialect == Dialect::Adobe && lo.x <= 0 && lo.y <= 0 &&
+                              lo.z <= 0 && hi.x >= 1 && hi.y >= 1 && hi.z >= 1;
+            if (unit) {
+                q.domainMin = glm::vec3(0.0f);
+                q.domainMax = glm::vec3(1.0f);
+            }
             LatticeResult r = sampleOnLattice(lut, q);
             r.error.seconds = 0.0;
             baked = std::move(r.lut);
@@ -191,6 +200,10 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
                                              : "1D shaper baked into the 3D table: its domain "
                                                "differs per channel, and the Resolve dialect has "
                                                "one input range for all channels") +
+                                 (unit && (lo != glm::vec3(0.0f) || hi != glm::vec3(1.0f))
+                                      ? " over 0..1, where display pictures live (inputs outside "
+                                        "it take the edge value)"
+                                      : std::string()) +
                                  " (" + r.error.str() + " on " + std::to_string(r.heldOut) +
                                  " inputs between lattice points)"});
         } else {

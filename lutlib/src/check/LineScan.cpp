@@ -11,9 +11,10 @@ namespace {
 
 constexpr double kSteps = 255.0; // output value -> 8-bit steps
 constexpr float kFlatTolerance = 1e-6f;
-constexpr double kFlatRatio = 0.1; // a flat segment's slope is under this share of the line's
-constexpr double kStepRatio = 2.5; // a step rises at least this many times its neighbours
-constexpr int kLocalSegments = 3;  // segments either side of a flat run that set its slope
+constexpr double kFlatRatio = 0.1;  // a flat segment's slope is under this share of the line's
+constexpr double kStepRatio = 2.5;  // a step rises at least this many times its neighbours
+constexpr int kLocalSegments = 3;   // segments either side of a flat run that set its slope
+constexpr double kHeldSteps = 0.01; // a colour changing less per segment is held
 
 struct Segments {
     std::vector<float> change; // max over channels of |step|
@@ -226,7 +227,27 @@ void scanBanding(const LineSpec& line, const CheckThresholds& t, Segments& s,
         for (int k = a; k < b; ++k)
             lost += std::max(0.0, local - s.slope[static_cast<std::size_t>(k)]);
         lost *= line.step * kSteps;
-        if (lost >= t.flat.warn) {
+        // A run at an end of the line over which the whole colour is held: the LUT ignores
+        // inputs past a point, a clip of the input (a highlight clip followed by a colour matrix
+        // holds a channel away from the output's bounds), not banding.
+        bool held = a == 0 || b == segs;
+        for (int k = a; k < b && held; ++k)
+            held = double(s.change[static_cast<std::size_t>(k)]) * kSteps <= kHeldSteps;
+        if (lost >= t.flat.warn && held) {
+            LineEvent e;
+            e.kind = FindingKind::Clip;
+            e.channel = mainChannel;
+            e.variant = b == segs ? 0 : 1;
+            e.begin = a;
+            e.end = b;
+            e.size = lost;
+            e.at = static_cast<float>(b == segs ? a : b);
+            e.from = v[a][mainChannel];
+            e.to = v[a][mainChannel];
+            events.push_back(e);
+            for (int k = a; k < b; ++k)
+                s.flagged[static_cast<std::size_t>(k)] = 1;
+        } else if (lost >= t.flat.warn) {
             LineEvent e;
             e.kind = FindingKind::Flat;
             e.channel = mainChannel;

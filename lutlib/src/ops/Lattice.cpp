@@ -5,28 +5,61 @@
 #include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
+#include "lut/ops/ErrorBound.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <mutex>
 #include <vector>
 
 namespace lut {
 
 namespace {
 
-constexpr double kGridPoints = 3.0e5; // about 67 per axis
-constexpr int kRandomPoints = 100000;
+// At most this many planes per axis come from the shaper (its entries inside the domain, then
+// where it crosses the table's planes); past that the slope term covers its kinks.
+constexpr std::size_t kMaxShaperPlanes = 256;
 
-// A fixed sequence in [0, 1): splitmix64.
-double unitRandom(std::uint64_t i) {
-    std::uint64_t z = (i + 1) * 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) / 9007199254740992.0;
+// Per axis: the inputs in (lo, hi) where the file's shaper kinks (its entries) and where it
+// crosses one of its table's lattice planes (the composition kinks there too).
+Breaks shaperBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
+    Breaks out;
+    const Lut1D& sh = *file.shaper;
+    const int n = sh.size();
+    for (int a = 0; a < 3; ++a) {
+        const double d0 = sh.domainMin()[a], d1 = sh.domainMax()[a];
+        auto inputOf = [&](double i) { return d0 + (d1 - d0) * i / (n - 1); };
+        std::vector<double> knots, crossings;
+        for (int i = 0; i < n; ++i) {
+            const double x = inputOf(i);
+            if (x > lo[a] && x < hi[a])
+                knots.push_back(x);
+        }
+        if (file.cube) {
+            const int m = file.cube->size();
+            const double c0 = file.cube->domainMin()[a], c1 = file.cube->domainMax()[a];
+            for (int i = 0; i + 1 < n; ++i) {
+                const double y0 = sh[i][a], y1 = sh[i + 1][a];
+                if (!(y0 != y1))
+                    continue;
+                // planes k with the plane's value strictly between y0 and y1
+                const double p0 = (std::min(y0, y1) - c0) / (c1 - c0) * (m - 1);
+                const double p1 = (std::max(y0, y1) - c0) / (c1 - c0) * (m - 1);
+                for (double k = std::max(0.0, std::floor(p0) + 1); k < p1 && k <= m - 1; ++k) {
+                    const double y = c0 + (c1 - c0) * k / (m - 1);
+                    const double x = inputOf(i + (y - y0) / (y1 - y0));
+                    if (x > lo[a] && x < hi[a])
+                        crossings.push_back(x);
+                }
+            }
+        }
+        auto& v = out[static_cast<std::size_t>(a)];
+        if (knots.size() <= kMaxShaperPlanes)
+            v = knots;
+        if (v.size() + crossings.size() <= kMaxShaperPlanes)
+            v.insert(v.end(), crossings.begin(), crossings.end());
+    }
+    return out;
 }
 
 } // namespace
@@ -53,58 +86,31 @@ LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& q) {
                     out.at(r, g, b) = exact->sample(out.latticeInput(r, g, b));
     });
 
-    // Held-out inputs: a grid inside every cell, then pseudo-random points over the domain.
+    // The cost of reading the lattice instead of the file, bounded over the whole domain
+    // (lut/ops/ErrorBound.h): held-out points between the lattice points, plus the slope between
+    // them. The grid's planes are the lattice's, where the shaper kinks (its entries) and where
+    // the shaper crosses the file's table's planes (where the composition kinks), so that the
+    // difference is linear, or nearly, inside each box.
     const auto read = makeSampler(out, q.readWith);
-    // Per axis: every cell (at most perAxis of them, evenly spread, on the largest lattices), each
-    // at perCell fractions.
-    const int cells = size - 1;
-    const int perAxis = static_cast<int>(lut::math::cbrt(kGridPoints));
-    const int used = std::min(cells, perAxis);
-    const int perCell = std::max(1, perAxis / cells);
-    const int axis = used * perCell;
-    std::vector<float> coord[3];
-    for (int c = 0; c < 3; ++c) {
-        coord[c].resize(static_cast<std::size_t>(axis));
-        for (int i = 0; i < axis; ++i) {
-            const int cell = static_cast<int>(static_cast<long>(i / perCell) * cells / used);
-            const double u = (cell + (i % perCell + 0.5) / perCell) / cells;
-            coord[c][static_cast<std::size_t>(i)] =
-                static_cast<float>(lo[c] + (static_cast<double>(hi[c]) - lo[c]) * u);
-        }
-    }
-    ErrorAccumulator total;
-    std::mutex m;
-    auto compare = [&](ErrorAccumulator& acc, glm::vec3 x) {
-        const glm::vec3 want = exact->sample(x), got = read->sample(x);
-        for (int c = 0; c < 3; ++c)
-            acc.add(got[c], want[c]);
-    };
-    parallelForDynamic(axis, q.nthreads, 1, [&](int b0, int b1) {
-        ErrorAccumulator acc;
-        for (int b = b0; b < b1; ++b)
-            for (int g = 0; g < axis; ++g)
-                for (int r = 0; r < axis; ++r)
-                    compare(acc, glm::vec3(coord[0][static_cast<std::size_t>(r)],
-                                           coord[1][static_cast<std::size_t>(g)],
-                                           coord[2][static_cast<std::size_t>(b)]));
-        std::lock_guard<std::mutex> lock(m);
-        total.merge(acc);
-    });
-    parallelForDynamic(kRandomPoints, q.nthreads, 4096, [&](int i0, int i1) {
-        ErrorAccumulator acc;
-        for (int i = i0; i < i1; ++i) {
-            glm::vec3 x;
-            for (int c = 0; c < 3; ++c)
-                x[c] = static_cast<float>(lo[c] +
-                                          (static_cast<double>(hi[c]) - lo[c]) *
-                                              unitRandom(3 * static_cast<std::uint64_t>(i) + c));
-            compare(acc, x);
-        }
-        std::lock_guard<std::mutex> lock(m);
-        total.merge(acc);
-    });
-    res.error = total.result();
-    res.heldOut = static_cast<std::size_t>(axis) * axis * axis + kRandomPoints;
+    BoundOptions o;
+    o.lo = glm::dvec3(lo);
+    o.hi = glm::dvec3(hi);
+    o.cells = size - 1;
+    o.nthreads = q.nthreads;
+    o.breaks = latticeBreaks(out, q.readWith);
+    if (file.cube && !file.shaper)
+        addBreaks(o.breaks, latticeBreaks(*file.cube, q.fileMethod));
+    if (file.shaper)
+        addBreaks(o.breaks, shaperBreaks(file, lo, hi));
+    res.error = boundError(
+        [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t n) {
+            for (std::size_t i = 0; i < n; ++i) {
+                const glm::vec3 x(in[i]);
+                diff[i] = glm::dvec3(exact->sample(x)) - glm::dvec3(read->sample(x));
+            }
+        },
+        o);
+    res.heldOut = res.error.heldOutPoints;
     res.error.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;

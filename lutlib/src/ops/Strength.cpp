@@ -44,7 +44,7 @@ double checkedAmount(double v, const char* what) {
 StrengthAmounts strengthAmounts(const StrengthOptions& options) {
     checkedAmount(options.strength, "overall");
     return {checkedAmount(options.luma.value_or(options.strength), "luma"),
-            checkedAmount(options.chroma.value_or(options.strength), "chroma")};
+            checkedAmount(options.chroma.value_or(options.strength), "chroma"), options.blend};
 }
 
 bool isFullStrength(const StrengthOptions& options) {
@@ -56,9 +56,18 @@ glm::dvec3 blendStrength(const glm::dvec3& input, const glm::dvec3& graded,
                          const StrengthAmounts& amount) {
     const glm::dvec3 x(sanitize(input.x), sanitize(input.y), sanitize(input.z));
     const glm::dvec3 y(sanitize(graded.x), sanitize(graded.y), sanitize(graded.z));
+    const double tl = amount.luma, tc = amount.chroma;
+    if (amount.blend == StrengthBlend::ReShade) {
+        // LUT.fx: lerp(normalize(x), normalize(y), chroma) * lerp(length(x), length(y), luma)
+        const double nx = std::sqrt(x.x * x.x + x.y * x.y + x.z * x.z);
+        const double ny = std::sqrt(y.x * y.x + y.y * y.y + y.z * y.z);
+        const glm::dvec3 dx = nx > 0.0 ? x / nx : glm::dvec3(0.0);
+        const glm::dvec3 dy = ny > 0.0 ? y / ny : glm::dvec3(0.0);
+        const glm::dvec3 e = (dx + tc * (dy - dx)) * (nx + tl * (ny - nx));
+        return {limited(e.x), limited(e.y), limited(e.z)};
+    }
     const glm::dvec3 lx = srgbToOklab(x);
     const glm::dvec3 ly = srgbToOklab(y);
-    const double tl = amount.luma, tc = amount.chroma;
     const glm::dvec3 lab(lx.x + tl * (ly.x - lx.x), lx.y + tc * (ly.y - lx.y),
                          lx.z + tc * (ly.z - lx.z));
     const glm::dvec3 e = oklabToSrgb(lab);

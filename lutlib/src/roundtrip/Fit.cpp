@@ -250,10 +250,52 @@ std::uint32_t colourKey(const float* a) {
     }
     return key;
 }
+
+// The largest |lut(before) - after| over every pixel (of the held-out colours only, when asked),
+// read trilinearly and tetrahedrally (the two ways readers of a .cube interpolate), in 8-bit
+// steps; sum of squares and values counted from the trilinear read.
+struct PixelError {
+    double worst = 0.0, sumSq = 0.0;
+    std::size_t values = 0;
+    std::unordered_set<std::uint32_t> colours;
+};
+PixelError errorOverPixels(const Lut3D& lut, const ImageView& before, const ImageView& after,
+                           bool heldOutOnly) {
+    const auto tri = makeSampler(lut, Interpolation::Trilinear);
+    const auto tet = makeSampler(lut, Interpolation::Tetrahedral);
+    PixelError r;
+    for (int y = 0; y < before.height; ++y)
+        for (int x = 0; x < before.width; ++x) {
+            const float* a = before.pixel(x, y);
+            const std::uint32_t key = colourKey(a);
+            if (heldOutOnly && !heldOutColour(key))
+                continue;
+            if (heldOutOnly)
+                r.colours.insert(key);
+            glm::vec3 in;
+            for (int c = 0; c < 3; ++c)
+                in[c] = std::clamp(sanitize(a[c]), 0.0f, 1.0f);
+            const glm::vec3 got = tri->sample(in), other = tet->sample(in);
+            const float* b = after.pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double want = std::clamp(sanitize(b[c]), -1.0f, 2.0f);
+                const double e = std::fabs(double(got[c]) - want);
+                r.sumSq += e * e;
+                r.worst = std::max({r.worst, e, std::fabs(double(other[c]) - want)});
+                ++r.values;
+            }
+        }
+    r.worst *= 255.0;
+    return r;
+}
 } // namespace
 
 FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptions& o) {
     FitResult res = fitImpl(before, after, o, nullptr, Colours::All);
+    // The pixels' maximum over every pixel (the fit samples a large picture regularly) and either
+    // interpolation a reader may use (issue 40: 6.22 printed, 13.72 on the full-resolution
+    // screenshot the fit was made from).
+    res.maxSteps8 = std::max(res.maxSteps8, errorOverPixels(res.lut, before, after, false).worst);
     if (!o.heldOut || res.distinctColours < 16)
         return res;
     // The error on colours a fit never saw: a fit on the other seven eighths of the colours,
@@ -261,33 +303,11 @@ FitResult fitLut(const ImageView& before, const ImageView& after, const FitOptio
     FitOptions training = o;
     training.heldOut = false;
     const FitResult part = fitImpl(before, after, training, nullptr, Colours::Training);
-    const auto sampler = makeSampler(part.lut, Interpolation::Trilinear);
-    double sumSq = 0.0, worst = 0.0;
-    std::size_t values = 0;
-    std::unordered_set<std::uint32_t> colours;
-    for (int y = 0; y < before.height; ++y)
-        for (int x = 0; x < before.width; ++x) {
-            const float* a = before.pixel(x, y);
-            const std::uint32_t key = colourKey(a);
-            if (!heldOutColour(key))
-                continue;
-            colours.insert(key);
-            glm::vec3 in;
-            for (int c = 0; c < 3; ++c)
-                in[c] = std::clamp(sanitize(a[c]), 0.0f, 1.0f);
-            const glm::vec3 got = sampler->sample(in);
-            const float* b = after.pixel(x, y);
-            for (int c = 0; c < 3; ++c) {
-                const double e =
-                    std::fabs(double(got[c]) - std::clamp(sanitize(b[c]), -1.0f, 2.0f));
-                sumSq += e * e;
-                worst = std::max(worst, e);
-                ++values;
-            }
-        }
-    res.heldOutColours = colours.size();
-    res.heldOutPixels = values / 3;
-    res.heldOutRmsSteps8 = values ? std::sqrt(sumSq / double(values)) * 255.0 : 0.0;
+    const PixelError held = errorOverPixels(part.lut, before, after, true);
+    const double worst = held.worst / 255.0;
+    res.heldOutColours = held.colours.size();
+    res.heldOutPixels = held.values / 3;
+    res.heldOutRmsSteps8 = held.values ? std::sqrt(held.sumSq / double(held.values)) * 255.0 : 0.0;
     // The largest of a sample is a low estimate of the largest elsewhere: the larger of the
     // held-out and the fitted pixels' maxima, plus half an 8-bit step (every target pixel is
     // rounded; another picture's pixels fall elsewhere in the rounding).

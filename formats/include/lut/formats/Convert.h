@@ -62,6 +62,9 @@ struct ResampleStep {
     int to = 0;   // output lattice size
     Interpolation interp = Interpolation::Tetrahedral;
     ErrorStats error; // against the input on a probe grid (with its time)
+    // The input's 1D shaper and table sampled at one lattice over 0..1 (a format without a
+    // shaper): the error is against the shaper then the table, evaluated exactly.
+    bool shaper = false;
 };
 
 struct ConvertReport {

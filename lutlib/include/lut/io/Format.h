@@ -61,6 +61,12 @@ public:
     // Whether the written file keeps a 1D shaper and a 3D table's input range (domain) as they
     // are (.cube's Resolve dialect, .clf, .ctf, .csp), so an HDR or log input needs no resampling.
     virtual bool holdsShaper() const { return false; }
+    // The same for a write with these options (.cube's Adobe dialect, --format iridas_cube, has
+    // no shaper).
+    virtual bool holdsShaperFor(const FormatOptions& options) const {
+        (void)options;
+        return holdsShaper();
+    }
     // Whether a file this format writes at `path` says what its LUT is for (LutFile::purpose,
     // lut/LutPurpose.h) so that it reads back with that purpose: its LUTKIT_PURPOSE tag in a
     // comment or a description, or the format itself (a .nutexb is the game's LUT, and only that).

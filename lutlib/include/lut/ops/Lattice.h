@@ -3,15 +3,11 @@
 // A LUT file (a 1D shaper, then a 3D table) as one 3D table, where one lattice is truly needed:
 // the game's 16^3 LUT, a format that stores no shaper, a lattice to invert. Each entry is the
 // file evaluated exactly (makeSampler(LutFile): the shaper, then the table) at its lattice input,
-// and the cost of reading the lattice instead of the file is measured on inputs the lattice did
-// not use (never at its own points, where it is exact by construction):
-//   - inside every cell, at the fractions (j + 0.5) / m per axis (m chosen so the grid holds
-//     about 300,000 points, at least one per cell: cell centres; on lattices above 67 points,
-//     67 cells per axis evenly spread);
-//   - 100,000 pseudo-random inputs (a fixed sequence) spread over the whole lattice domain.
-// Both are read with the lattice's interpolation and compared with the exact evaluation; the
-// error is an estimate of the largest difference between lattice points, never a figure taken
-// at the lattice itself.
+// and the cost of reading the lattice instead of the file is bounded over the whole domain
+// (boundError, lut/ops/ErrorBound.h): held-out points between the lattice points (never at them,
+// where the lattice is exact by construction), plus the slope between them, on a grid whose planes
+// include the lattice's, the shaper's entries and where the shaper crosses the table's planes.
+// The maximum is an upper bound over every input of the domain, the mean a mean over it.
 #include "lut/ErrorStats.h"
 #include "lut/Lut3D.h"
 #include "lut/LutFile.h"
@@ -36,7 +32,7 @@ struct LatticeRequest {
 
 struct LatticeResult {
     Lut3D lut;
-    // The lattice read with readWith against the exact file, on held-out inputs (above).
+    // The lattice read with readWith against the exact file: maxAbs bounds it over the domain.
     ErrorStats error;
     std::size_t heldOut = 0; // inputs the error was measured on
 };

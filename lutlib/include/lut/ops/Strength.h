@@ -13,18 +13,29 @@
 
 namespace lut {
 
+// How the LUT's colour and its input are blended:
+// - Oklab (the default): lightness and chroma apart in a perceptual space (below);
+// - ReShade: what ReShade's LUT.fx sliders "LUT luma amount" and "LUT chroma amount" compute
+//   (crosire/reshade-shaders, Shaders/LUT.fx), on the stored (display-encoded) RGB as vectors:
+//       out = lerp(normalize(x), normalize(y), chroma) * lerp(length(x), length(y), luma)
+//   where an RGB of length 0 has direction 0 (the shader's normalize gives NaN there). For
+//   strips made for ReShade that are to look as ReShade's sliders make them look.
+enum class StrengthBlend { Oklab, ReShade };
+
 struct StrengthOptions {
     // Both amounts at once: 0 = neutral, 1 = the LUT; up to 2 exaggerates it.
     double strength = 1;
     // The lightness amount (Oklab L) and the chroma amount (Oklab a and b), each in [0, 2]; when
     // unset, `strength`.
     std::optional<double> luma, chroma;
+    StrengthBlend blend = StrengthBlend::Oklab;
 };
 
 // The lightness and chroma amounts options asks for (luma and chroma, else strength). Throws
 // lut::Error naming the option when an amount is NaN or outside [0, 2].
 struct StrengthAmounts {
     double luma = 1, chroma = 1;
+    StrengthBlend blend = StrengthBlend::Oklab;
 };
 StrengthAmounts strengthAmounts(const StrengthOptions& options);
 

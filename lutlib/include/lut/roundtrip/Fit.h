@@ -40,8 +40,9 @@ struct FitResult {
     Lut3D lut;
     std::size_t pixels = 0;          // pixel pairs used (a regular subsample beyond 8 megapixels)
     std::size_t distinctColours = 0; // distinct input colours (8-bit)
-    // The fit's error over the pixels it was fitted to, 8-bit steps (trilinear): a residual,
-    // smaller than what the LUT does on other pixels.
+    // The fit's error over the pixels it was fitted to, 8-bit steps: a residual, smaller than
+    // what the LUT does on other pixels. rms over the pixels used (trilinear); max over every pixel
+    // of the picture (not only those sampled), read trilinearly and tetrahedrally.
     double rmsSteps8 = 0.0;
     double maxSteps8 = 0.0;
     // With FitOptions::heldOut (and 16 colours or more): the error of a fit on seven eighths of
