@@ -31,6 +31,11 @@ grouped='^Files/OcioAllFiles\.'
 # every neutral size, the 256^3 LUT maths): ~330 s of CPU here, nothing ASan could add.
 studies='^Defaults\.|^EveryEditFileAndTarget/|^SmashTarget\.DefaultPatchIsTheMostAccurate$'
 studies+='|^CheckDefects\.NeutralOfEverySizeHasNoFinding$|^LargeLuts\.Size256$'
+# Peak memory (MemoryBounds: resident sizes under ASan's shadow and quarantine say nothing of the
+# program's own), match against numpy on 1080p pictures (CliMatchLooks, a benchmark's script) and
+# ociobakelut's sizes baked at 64^3 in ten formats (BakeDefaults.LatticeSizes...): the Release
+# stage runs them; the code they reach runs here in smaller tests.
+studies+='|^MemoryBounds\.|^CliMatchLooks\.|^BakeDefaults\.LatticeSizesAreOciobakelutsPerFormat$'
 # The write matrix (tests/robust/write_matrix.py: ~2,000 outside reads, 4 min of the Release
 # stage's test time) runs whole in the Release stage; here two of its groups, the TIFF writer and
 # every compression, which cover the writers' own code paths under ASan and UBSan.
