@@ -31,12 +31,14 @@ esac
 # image lutkit writes read back by oiiotool, ImageMagick, ffmpeg and libtiff, compared in numpy).
 # openexr: OpenEXR's own tools (exrstdattr, exrmakepreview, exrmultiview) write the test files
 # that carry every attribute type OpenEXR knows (tests/formats/test_image_plausibility.cpp).
+# nasm: ISA-L's inflate assembly in lutkit.exe (docs/windows.md); zsh and fish: the completion
+# tests run each shell's own completion (tests/cli/test_completion_names.cpp).
 PACKAGES=(cmake make g++ pkg-config libopenimageio-dev openimageio-tools openexr libopenexr-dev libpng-dev
   zlib1g-dev libjpeg62-turbo-dev libisal-dev libopencolorio-dev
   opencolorio-tools qt6-base-dev libqt6opengl6-dev libglm-dev libgtest-dev libgmock-dev
   libcli11-dev libbenchmark-dev xvfb xauth clang clang-format libclang-rt-14-dev
   desktop-file-utils libxml2-utils shared-mime-info ccache ffmpeg python3-numpy
-  imagemagick libtiff-tools libfast-float-dev libfmt-dev emscripten mingw-w64 nasm wine64 chromium chromium-driver python3-selenium "$@")
+  imagemagick libtiff-tools libfast-float-dev libfmt-dev emscripten mingw-w64 nasm wine64 zsh fish chromium chromium-driver python3-selenium "$@")
 if [ "$ONLY" = 1 ]; then
   PACKAGES=("$@")
 fi
