@@ -5,6 +5,7 @@
 #include <QDialog>
 #include <QKeyEvent>
 #include <QMessageBox>
+#include <QPointer>
 
 namespace lut::gui {
 
@@ -20,7 +21,9 @@ void DialogResponder::poll() {
         for (QWidget* top : QApplication::topLevelWidgets())
             if (auto* d = qobject_cast<QDialog*>(top); d && d->isVisible() && d->isModal())
                 modal = d;
-    auto* dialog = qobject_cast<QDialog*>(modal);
+    // Guarded: the key may close the dialog, and a dialog that deletes itself on close is gone
+    // after processEvents (the match dialog's OK crashed the scripted editor).
+    QPointer<QDialog> dialog = qobject_cast<QDialog*>(modal);
     if (!dialog || !dialog->isVisible())
         return;
     QString text = dialog->windowTitle();
@@ -30,7 +33,7 @@ void DialogResponder::poll() {
     QKeyEvent key(QEvent::KeyPress, accept ? Qt::Key_Return : Qt::Key_Escape, Qt::NoModifier);
     QApplication::sendEvent(dialog->focusWidget() ? dialog->focusWidget() : dialog, &key);
     QApplication::processEvents();
-    if (dialog->isVisible()) // the key did not close it (a button without focus policy)
+    if (dialog && dialog->isVisible()) // the key did not close it (a button without focus policy)
         accept ? dialog->accept() : dialog->reject();
 }
 
