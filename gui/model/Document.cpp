@@ -33,7 +33,12 @@ bool hasPictureExtension(const std::string& path) {
            ext == ".dpx";
 }
 
-const char* curveName(CurveId id) {
+// Merge keys: a parameter's id, a curve's 100 + id (AdjustmentsPanel and the curve editors).
+constexpr int kCurveKeyBase = 100;
+
+} // namespace
+
+const char* curveLabel(CurveId id) {
     switch (id) {
     case CurveId::Master:
         return "master curve";
@@ -52,11 +57,6 @@ const char* curveName(CurveId id) {
     }
     return "curve";
 }
-
-// Merge keys: a parameter's id, a curve's 100 + id (AdjustmentsPanel and the curve editors).
-constexpr int kCurveKeyBase = 100;
-
-} // namespace
 
 bool looksLikeLutFile(const QString& path) {
     formats::registerBuiltinFormats();
@@ -304,7 +304,7 @@ void Document::editCurve(CurveId id, const Curve& curve) {
     Adjustments a = m_adjustments;
     curveOf(a, id) = curve;
     editAdjustments(a, kCurveKeyBase + static_cast<int>(id),
-                    tr("Edit %1").arg(QString::fromLatin1(curveName(id))));
+                    tr("Edit %1").arg(QString::fromLatin1(curveLabel(id))));
 }
 
 void Document::editAdjustments(const Adjustments& after, int mergeKey, const QString& text) {

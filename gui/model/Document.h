@@ -45,6 +45,8 @@ bool stripLayoutIsAmbiguous(const QString& path);
 
 // Which curve of lut::Adjustments a curve editor edits.
 enum class CurveId { Master, Red, Green, Blue, HueVsHue, HueVsSat, HueVsLum };
+// A curve as the undo text and the History name it ("red curve", "hue vs saturation").
+const char* curveLabel(CurveId id);
 Curve& curveOf(Adjustments& a, CurveId id);
 const Curve& curveOf(const Adjustments& a, CurveId id);
 

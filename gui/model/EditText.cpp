@@ -28,26 +28,6 @@ QString curveText(const Curve& c) {
     return s;
 }
 
-const char* curveLabel(CurveId id) {
-    switch (id) {
-    case CurveId::Master:
-        return "master curve";
-    case CurveId::Red:
-        return "red curve";
-    case CurveId::Green:
-        return "green curve";
-    case CurveId::Blue:
-        return "blue curve";
-    case CurveId::HueVsHue:
-        return "hue vs hue";
-    case CurveId::HueVsSat:
-        return "hue vs saturation";
-    case CurveId::HueVsLum:
-        return "hue vs luminance";
-    }
-    return "curve";
-}
-
 } // namespace
 
 QString describeAdjustmentChange(const QString& action, const Adjustments& before,
