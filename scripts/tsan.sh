@@ -61,7 +61,7 @@ runs=(
 start=$(date +%s)
 # -O1 as in scripts/sanitize.sh: readable traces, tests still bearable under the ~5-15x slowdown.
 cmake -S "$root" -B "$build" -DLUTKIT_SANITIZE_THREAD=ON -DLUTKIT_BUILD_BENCH=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" >/dev/null
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" >/dev/null
 targets=()
 for r in "${runs[@]}"; do targets+=("${r%%:*}"); done
 # The editor's tests exist when Qt 6 was found.
