@@ -37,6 +37,10 @@ studies+='|^CheckDefects\.NeutralOfEverySizeHasNoFinding$|^LargeLuts\.Size256$'
 # ociobakelut's sizes baked at 64^3 in ten formats (BakeDefaults.LatticeSizes...): the Release
 # stage runs them; the code they reach runs here in smaller tests.
 studies+='|^MemoryBounds\.|^CliMatchLooks\.|^BakeDefaults\.LatticeSizesAreOciobakelutsPerFormat$'
+# Fit's maxima over every pixel of a full screenshot and its same-LUT-whatever-the-threads check
+# (TSan runs Fit.*), and both authoring routes on a real stage (~140 s of CPU here): the code they
+# reach runs here in Fit's and AboveWhite's smaller tests.
+studies+='|^Fit\.(PrintedMaximaBoundEveryPixelOfTheFittedPicture|TheSamePicturesGiveTheSameLutWhateverTheThreads)$|^AboveWhite\.BothRoutesShowTheEditOfTheScreenshotOnAStage$'
 # The write matrix (tests/robust/write_matrix.py: ~2,000 outside reads, 4 min of the Release
 # stage's test time) runs whole in the Release stage; here two of its groups, the TIFF writer and
 # every compression, which cover the writers' own code paths under ASan and UBSan.
