@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // lutkit apply: stored values through the LUT, alpha and bit depth kept, rounding to nearest;
 // batch with -o DIR keeps going past bad files.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
@@ -17,14 +17,6 @@ using namespace lut;
 using namespace lut::test;
 
 namespace {
-
-// runCli() calls tempDir(), which empties the test's folder: keep our files in a sibling.
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
 
 // An affine map as a 2^3 .cube: every interpolation reproduces it exactly, so the reference is
 // the map itself.

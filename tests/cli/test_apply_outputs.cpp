@@ -3,8 +3,8 @@
 // the output is -o; an existing output is replaced only with -y; -n skips; - is standard input
 // and output; special files are written in place; frame sequences; no command writes over any
 // of its inputs, the LUT included; an interrupted batch leaves no partial output.
+#include "CliTestSupport.h"
 #include "TestPaths.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 
@@ -28,13 +28,6 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 using lut::test::shellQuoted;
 

@@ -3,8 +3,8 @@
 // rows are byte for byte the ReShade strips of those LUTs; sampled with MultiLUT.fx's formula
 // (tests/support/ShaderSamplers.h) each row gives its LUT within half an 8-bit step; repeated
 // rows, rows of another size and pictures that are no atlas are refused naming the row.
+#include "CliTestSupport.h"
 #include "ShaderSamplers.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 
@@ -21,20 +21,8 @@ using namespace lut::test;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
-
-std::string bytes(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
 // An n^3 .cube of f, written with 9 digits (read back as the same floats); the table it holds.
-Lut3D writeCube(const std::string& path, int n, const std::function<glm::dvec3(glm::dvec3)>& f) {
+Lut3D writeTable(const std::string& path, int n, const std::function<glm::dvec3(glm::dvec3)>& f) {
     Lut3D l(n);
     std::ofstream out(path);
     out.precision(9);
@@ -66,9 +54,9 @@ using lut::test::shellQuoted;
 
 TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
     const std::string dir = workDir();
-    const std::vector<Lut3D> luts = {writeCube(dir + "/warm.cube", 32, warm),
-                                     writeCube(dir + "/cool.cube", 32, cool),
-                                     writeCube(dir + "/sepia.cube", 32, sepia)};
+    const std::vector<Lut3D> luts = {writeTable(dir + "/warm.cube", 32, warm),
+                                     writeTable(dir + "/cool.cube", 32, cool),
+                                     writeTable(dir + "/sepia.cube", 32, sepia)};
     const char* names[] = {"warm", "cool", "sepia"};
     for (const char* n : names)
         ASSERT_EQ(runCli("convert " + shellQuoted(dir + "/" + n + ".cube") + " " +
@@ -111,7 +99,7 @@ TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
     for (int k = 0; k < 3; ++k) {
         const std::string row = dir + "/rows/atlas-0" + std::to_string(k) + ".png";
         ASSERT_TRUE(std::filesystem::exists(row)) << r.out;
-        EXPECT_EQ(bytes(row), bytes(dir + "/" + names[k] + ".png")) << row;
+        EXPECT_EQ(fileBytes(row), fileBytes(dir + "/" + names[k] + ".png")) << row;
         EXPECT_EQ(formats::readImage(row).image.pixels(),
                   formats::readImage(dir + "/" + names[k] + ".png").image.pixels());
     }
@@ -134,8 +122,8 @@ TEST(CliAtlas, MultiLutAtlasRowsAreTheReshadeStripsAndSampleAsTheLuts) {
 
 TEST(CliAtlas, NeutralFirstResamplesToTheLayoutsSizeAndSaysTheError) {
     const std::string dir = workDir();
-    writeCube(dir + "/warm.cube", 33, warm);
-    writeCube(dir + "/cool.cube", 17, cool);
+    writeTable(dir + "/warm.cube", 33, warm);
+    writeTable(dir + "/cool.cube", 17, cool);
     RunResult r = runCli("atlas build " + shellQuoted(dir + "/warm.cube") + " " +
                          shellQuoted(dir + "/cool.cube") + " -o " + shellQuoted(dir + "/a.png") +
                          " --neutral-first");
@@ -162,10 +150,10 @@ TEST(CliAtlas, NeutralFirstResamplesToTheLayoutsSizeAndSaysTheError) {
 
 TEST(CliAtlas, RepeatedRowsAndOtherSizesAreRefusedNamingTheRow) {
     const std::string dir = workDir();
-    writeCube(dir + "/a.cube", 16, warm);
-    writeCube(dir + "/b.cube", 16, cool);
-    writeCube(dir + "/c.cube", 17, sepia);
-    writeCube(dir + "/n.cube", 16, [](glm::dvec3 c) { return c; });
+    writeTable(dir + "/a.cube", 16, warm);
+    writeTable(dir + "/b.cube", 16, cool);
+    writeTable(dir + "/c.cube", 17, sepia);
+    writeTable(dir + "/n.cube", 16, [](glm::dvec3 c) { return c; });
     const std::string out = shellQuoted(dir + "/x.png");
     RunResult r =
         runCli("atlas build " + shellQuoted(dir + "/a.cube") + " " + shellQuoted(dir + "/b.cube") +
@@ -212,8 +200,8 @@ TEST(CliAtlas, InfoSaysHowManyRowsAndRefusesPartialRows) {
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("its width must be N^2"), std::string::npos) << r.err;
     // A Unity atlas of two rows is read as unity-32, found from its rows.
-    writeCube(dir + "/a.cube", 32, warm);
-    writeCube(dir + "/b.cube", 32, sepia);
+    writeTable(dir + "/a.cube", 32, warm);
+    writeTable(dir + "/b.cube", 32, sepia);
     ASSERT_EQ(runCli("atlas build " + shellQuoted(dir + "/a.cube") + " " +
                      shellQuoted(dir + "/b.cube") + " -o " + shellQuoted(dir + "/u.png") +
                      " --layout unity-32")
@@ -227,7 +215,7 @@ TEST(CliAtlas, InfoSaysHowManyRowsAndRefusesPartialRows) {
 
 TEST(CliAtlas, BadUsageExitsTwo) {
     const std::string dir = workDir();
-    writeCube(dir + "/a.cube", 4, warm);
+    writeTable(dir + "/a.cube", 4, warm);
     for (const std::string& line : std::vector<std::string>{
              "atlas stack a.cube -o x.png", "atlas build -o " + shellQuoted(dir + "/x.png"),
              "atlas build " + shellQuoted(dir + "/a.cube"),
@@ -246,8 +234,8 @@ TEST(CliAtlas, BadUsageExitsTwo) {
 // it refused it); a file in the way is refused, and a bad atlas leaves no folder behind.
 TEST(CliAtlas, SplitMakesAMissingFolder) {
     const std::string dir = workDir();
-    writeCube(dir + "/warm.cube", 8, warm);
-    writeCube(dir + "/cool.cube", 8, cool);
+    writeTable(dir + "/warm.cube", 8, warm);
+    writeTable(dir + "/cool.cube", 8, cool);
     ASSERT_EQ(runCli("atlas build " + shellQuoted(dir + "/warm.cube") + " " +
                      shellQuoted(dir + "/cool.cube") + " -o " + shellQuoted(dir + "/atlas.png"))
                   .exitCode,
@@ -277,7 +265,7 @@ TEST(CliAtlas, SplitMakesAMissingFolder) {
 // its brighten pass would show brighter than the edit. An edit's row says nothing of the kind.
 TEST(CliAtlas, AGameLutRowIsStoredAsItIsWithAWarning) {
     const std::string dir = workDir();
-    writeCube(dir + "/warm.cube", 32, warm);
+    writeTable(dir + "/warm.cube", 32, warm);
     RunResult r = runCli("atlas build " + shellQuoted(dir + "/warm.cube") +
                          " builtin:smash-default -o " + shellQuoted(dir + "/a.png") + " --size 32");
     ASSERT_EQ(r.exitCode, 0) << r.err;

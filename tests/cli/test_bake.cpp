@@ -4,9 +4,9 @@
 // without $OCIO, $OCIO and --config obeyed, looks and display views equal to OpenColorIO's
 // processors, bad names refused as bad usage, and --cccid applying to the files after it.
 #include "CliTableSupport.h"
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
 #include "TestPaths.h"
-#include "TestSupport.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -22,13 +22,6 @@ using namespace lut::test;
 using ::testing::HasSubstr;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + "-bake";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 using lut::test::shellQuoted;
 

@@ -4,8 +4,8 @@
 // LUT previews closer to the game with --original-lut builtin:smash-default than with the neutral
 // default -- the game's pictures made here with the float64 reference chain of
 // docs/specs/smash-pipeline.md (tests/support/PipelineTestUtil.h).
+#include "CliTestSupport.h"
 #include "PipelineTestUtil.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -19,13 +19,6 @@ using namespace lut;
 using namespace lut::test;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
 
 const int kDefault[16] = {0, 15, 30, 46, 64, 82, 101, 121, 140, 158, 176, 193, 209, 224, 240, 255};
 

@@ -2,7 +2,7 @@
 // lutkit check, lutkit chart and the quiet check after writing a LUT, run as users run them: exit
 // codes, the figures against formulas written here, the JSON read by Python's json module (an
 // independent parser), the pictures read back, and the output rules (-y, a folder for several).
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
@@ -25,29 +25,9 @@ using ::testing::Not;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + "-check";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
 using lut::test::shellQuoted;
 
 using Fn = std::function<glm::vec3(glm::vec3)>;
-
-std::string writeCube(const std::string& path, int n, const Fn& f) {
-    std::ofstream o(path);
-    o.precision(9);
-    o << "LUT_3D_SIZE " << n << "\n";
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 v = f(glm::vec3(r, g, b) / float(n - 1));
-                o << v.x << " " << v.y << " " << v.z << "\n";
-            }
-    return path;
-}
 
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);

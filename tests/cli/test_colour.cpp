@@ -3,9 +3,9 @@
 // with OpenColorIO converting on either side; checked against OCIO's own processors doing the
 // whole chain (the LUT included, as a FileTransform); values outside the LUT's domain are
 // reported, never clamped silently; Hald sizes named as ImageMagick names them.
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
 #include "TestPaths.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -26,13 +26,6 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + "-colour";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 using lut::test::shellQuoted;
 

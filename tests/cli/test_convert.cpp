@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // lutkit convert: exact round trips, the error report checked against float64 references
 // computed here, refusal to overwrite the input, and usage errors.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 #include "test_convert_json.h"
 
 #include "lut/formats/Registry.h"
@@ -20,17 +20,11 @@
 namespace fs = std::filesystem;
 using lut::test::runCli;
 using lut::test::samplePath;
+using lut::test::workDir;
 
 namespace {
 
 // Our own folder: TestSupport's runCli() clears the test's tempDir() on every call.
-std::string workDir() {
-    const std::string d = lut::test::tempDir() + "-convert";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
 using lut::test::shellQuoted;
 
 using lut::test::fileBytes;

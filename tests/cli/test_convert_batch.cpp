@@ -2,7 +2,7 @@
 // lutkit convert DIR/ -o OUTDIR/: every LUT file of a folder (a modder's edited strips), each
 // under its own name, as one convert of that file would write it, with its in-game error; a bad
 // file is listed and the others are still written; existing outputs follow -y/-n.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -19,18 +19,6 @@ using namespace lut;
 using namespace lut::test;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
-
-std::string bytes(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
 
 // A graded 256x16 strip (unreal layout), as an image editor saves it: 8-bit.
 void writeStrip(const std::string& path, double warmth) {
@@ -78,7 +66,7 @@ TEST(CliConvertBatch, AFolderOfEditedStripsBecomesTheGamesLuts) {
     const RunResult one =
         runCli("convert '" + dir + "/strips/beach.png' '" + dir + "/beach_one.nutexb'" + measured);
     ASSERT_EQ(one.exitCode, 0) << one.err;
-    EXPECT_EQ(bytes(dir + "/out/beach.nutexb"), bytes(dir + "/beach_one.nutexb"));
+    EXPECT_EQ(fileBytes(dir + "/out/beach.nutexb"), fileBytes(dir + "/beach_one.nutexb"));
     const std::string key = "exact composition:";
     const std::size_t at = one.out.find(key);
     ASSERT_NE(at, std::string::npos) << one.out;

@@ -4,8 +4,8 @@
 // compared with OpenColorIO's processor of the source with the same id, the written file read
 // back by OCIO; without --cccid the error names the option.
 #include "CliTableSupport.h"
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
-#include "TestSupport.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -20,13 +20,6 @@ using ::testing::HasSubstr;
 namespace {
 
 using lut::test::shellQuoted;
-
-std::string workDir() {
-    const std::string d = tempDir() + "-cccid";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 } // namespace
 

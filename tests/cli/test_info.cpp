@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // lutkit info: the JSON output parsed strictly and its fields checked against values known here.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 #include "test_convert_json.h"
 
 #include <gtest/gtest.h>
@@ -10,15 +10,9 @@
 namespace fs = std::filesystem;
 using lut::test::runCli;
 using lut::test::samplePath;
+using lut::test::workDir;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = lut::test::tempDir() + "-info";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 using lut::test::shellQuoted;
 

@@ -2,7 +2,7 @@
 // The LUT-maths subcommands on files: diff against a float64 CIEDE2000 written here from Sharma,
 // Wu and Dalal (2005); a LUT against itself exactly 0; invert then compose back to neutral; mix,
 // resize and adjust against values computed here; plot and heat-map pictures written.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -22,30 +22,9 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + "-maths";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
 using lut::test::shellQuoted;
 
 using Fn = std::function<glm::vec3(glm::vec3)>;
-
-// An n^3 .cube of f (entries as floats, written with 9 digits: read back exactly).
-std::string writeCube(const std::string& path, int n, const Fn& f) {
-    std::ofstream o(path);
-    o.precision(9);
-    o << "LUT_3D_SIZE " << n << "\n";
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 v = f(glm::vec3(r, g, b) / float(n - 1));
-                o << v.x << " " << v.y << " " << v.z << "\n";
-            }
-    return path;
-}
 
 double jsonNumber(const std::string& text, const std::string& key, std::size_t from = 0) {
     const auto k = text.find("\"" + key + "\": ", from);

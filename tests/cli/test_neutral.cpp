@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // lutkit neutral: default sizes per format and identity contents read back.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/formats/Registry.h"
 
@@ -10,15 +10,9 @@
 
 namespace fs = std::filesystem;
 using lut::test::runCli;
+using lut::test::workDir;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = lut::test::tempDir() + "-neutral";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 using lut::test::shellQuoted;
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // lutkit preview: output pixels against the float64 reference of docs/specs/smash-pipeline.md
 // (shared with the pipeline tests), screenshot regrading, stage switches, batch and usage errors.
+#include "CliTestSupport.h"
 #include "OklabReference.h"
 #include "PipelineTestUtil.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 
@@ -17,23 +17,6 @@ using namespace lut;
 using namespace lut::test;
 
 namespace {
-
-// runCli() calls tempDir(), which empties the test's folder: keep our files in a sibling.
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
-
-std::string writeCube(const std::string& path, const Lut3D& l) {
-    std::ofstream f(path);
-    f.precision(9);
-    f << "LUT_3D_SIZE " << l.size() << "\n";
-    for (const auto& e : l.entries())
-        f << e.r << " " << e.g << " " << e.b << "\n";
-    return path;
-}
 
 Image expectedSmash(const Image& scene, const Lut3D& lut, bool bloom) {
     const RefImg s = toRef(scene);

@@ -4,9 +4,9 @@
 // evaluated by OCIO, unoptimised), and the printed figure must not be below it. The tables are
 // the kind where probing only lattice points and cell centres understated the error (issue 22):
 // random (steep) tables, posterisation, a steep grade to invert, a config's conversion.
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
 #include "TestPaths.h"
-#include "TestSupport.h"
 
 #include <glm/exponential.hpp>
 #include <gtest/gtest.h>
@@ -23,30 +23,9 @@ using namespace lut::test;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + "-bounds";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
 using lut::test::shellQuoted;
 
 using Fn = std::function<glm::vec3(glm::vec3)>;
-
-// An n^3 .cube of f, entries written with 9 digits (read back exactly).
-std::string writeCube(const std::string& path, int n, const Fn& f) {
-    std::ofstream o(path);
-    o.precision(9);
-    o << "LUT_3D_SIZE " << n << "\n";
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r) {
-                const glm::vec3 v = f(glm::vec3(r, g, b) / float(n - 1));
-                o << v.x << " " << v.y << " " << v.z << "\n";
-            }
-    return path;
-}
 
 Fn randomTable(unsigned seed) {
     // a fresh random value per lattice point, from its position (the table is steep everywhere)

@@ -4,7 +4,7 @@
 // time), with a warning naming the evidence and the flag; a dark edit strip stays an edit. The
 // truth is the game's model in float64 written here from docs/specs/smash-pipeline.md, run on the
 // scene's own inputs; the game LUT is made by Smush-LUT's formula, also written here.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
@@ -23,49 +23,10 @@ using namespace lut::test;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + ".content";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
-bool has(const std::string& text, const std::string& what) {
-    return text.find(what) != std::string::npos;
-}
-
-double srgbEnc(double x) {
-    x = std::clamp(x, 0.0, 1.0);
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
-double srgbDec(double v) {
-    v = std::clamp(v, 0.0, 1.0);
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-glm::dvec3 trilinear(const Lut3D& lut, glm::dvec3 in) {
-    const int n = lut.size();
-    int i[3];
-    double f[3];
-    for (int c = 0; c < 3; ++c) {
-        const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
-        i[c] = std::min(static_cast<int>(t), n - 2);
-        f[c] = t - i[c];
-    }
-    glm::dvec3 acc(0.0);
-    for (int k = 0; k < 8; ++k) {
-        const int dr = k & 1, dg = (k >> 1) & 1, db = (k >> 2) & 1;
-        acc += (dr ? f[0] : 1 - f[0]) * (dg ? f[1] : 1 - f[1]) * (db ? f[2] : 1 - f[2]) *
-               glm::dvec3(lut.at(i[0] + dr, i[1] + dg, i[2] + db));
-    }
-    return acc;
-}
-// What the game shows (display-encoded) with LUT g for its LUT input s.
-glm::dvec3 gameShows(const Lut3D& g, const glm::dvec3& s) {
-    const glm::dvec3 l = trilinear(g, s);
-    glm::dvec3 out;
-    for (int c = 0; c < 3; ++c)
-        out[c] = srgbEnc(std::pow(std::max(((l[c] - s[c]) * 0.99961 + s[c]) * 1.3703, 0.0), 2.2));
-    return out;
-}
+// The game's model in float64 (CliTestSupport.h).
+using game::gameShows;
+using game::srgbDecode;
+using game::srgbEncode;
 
 using Edit = std::function<glm::dvec3(glm::dvec3)>;
 // Smush-LUT's game LUT for an edit of the neutral stage's screenshot (its formula), 8-bit.
@@ -77,11 +38,11 @@ Lut3D smushGameLut(const Edit& e) {
                 const glm::dvec3 s = glm::dvec3(r, g, b) / 15.0;
                 glm::dvec3 shown;
                 for (int c = 0; c < 3; ++c)
-                    shown[c] = srgbEnc(std::min(1.0, std::pow(1.3703 * s[c], 2.2)));
+                    shown[c] = srgbEncode(std::min(1.0, std::pow(1.3703 * s[c], 2.2)));
                 const glm::dvec3 w = glm::clamp(e(shown), 0.0, 1.0);
                 for (int c = 0; c < 3; ++c) {
                     const double l =
-                        (std::pow(srgbDec(w[c]), 1 / 2.2) / 1.3703 - s[c]) / 0.99961 + s[c];
+                        (std::pow(srgbDecode(w[c]), 1 / 2.2) / 1.3703 - s[c]) / 0.99961 + s[c];
                     t.at(r, g, b)[c] = fromUnorm8(toUnorm8(static_cast<float>(l)));
                 }
             }
@@ -102,7 +63,7 @@ Scene makeScene(const std::string& dir, int w, int h) {
                                std::round(250.0 * ((x + 2 * y) % w) / (w - 1)));
             glm::dvec3 s;
             for (int c = 0; c < 3; ++c) {
-                s[c] = std::pow(srgbDec(d[c] / 255.0), 1 / 2.2) / 1.3703;
+                s[c] = std::pow(srgbDecode(d[c] / 255.0), 1 / 2.2) / 1.3703;
                 img.pixel(x, y)[c] = static_cast<float>(d[c] / 255.0);
             }
             img.pixel(x, y)[3] = 1.0f;

@@ -5,8 +5,8 @@
 // tag keep it (.3dl and .itx in a "#" comment, which OpenColorIO reads past: the same processor
 // with and without it). diff compares a game LUT by what the game shows. Oracles: the game's
 // model in float64 written here from docs/specs/smash-pipeline.md, OpenColorIO's processor.
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -30,50 +30,10 @@ using namespace lut::test;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + ".writers";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
-bool has(const std::string& text, const std::string& what) {
-    return text.find(what) != std::string::npos;
-}
-
-// ---- the game's model in float64 (docs/specs/smash-pipeline.md, sections 2 and 3) ----
-double srgbEncode(double x) {
-    x = std::clamp(x, 0.0, 1.0);
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
-double srgbDecode(double v) {
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-glm::dvec3 trilinear(const Lut3D& lut, glm::dvec3 in) {
-    const int n = lut.size();
-    int i[3];
-    double f[3];
-    for (int c = 0; c < 3; ++c) {
-        const double t = std::clamp(in[c], 0.0, 1.0) * (n - 1);
-        i[c] = std::min(static_cast<int>(t), n - 2);
-        f[c] = t - i[c];
-    }
-    glm::dvec3 acc(0.0);
-    for (int k = 0; k < 8; ++k) {
-        const int dr = k & 1, dg = (k >> 1) & 1, db = (k >> 2) & 1;
-        acc += (dr ? f[0] : 1 - f[0]) * (dg ? f[1] : 1 - f[1]) * (db ? f[2] : 1 - f[2]) *
-               glm::dvec3(lut.at(i[0] + dr, i[1] + dg, i[2] + db));
-    }
-    return acc;
-}
-// What the game shows with LUT `g` (8-bit, trilinear) for its LUT input s.
-glm::dvec3 gameShows(const Lut3D& g, const glm::dvec3& s) {
-    const glm::dvec3 l = trilinear(g, s);
-    glm::dvec3 out;
-    for (int c = 0; c < 3; ++c)
-        out[c] =
-            srgbEncode(std::pow(std::max(((l[c] - s[c]) * 0.99961 + s[c]) * 1.3703, 0.0), 2.2));
-    return out;
-}
+// The game's model in float64 (CliTestSupport.h).
+using game::gameLut;
+using game::gameShows;
+using game::srgbDecode;
 struct Apart {
     double mean = 0, max = 0;
 };
@@ -95,18 +55,6 @@ Apart inGameApart(const Lut3D& a, const Lut3D& b) {
             }
     r.mean = sum / n;
     return r;
-}
-
-Lut3D gameLut() { // a warm stage, 8-bit as a nutexb holds it
-    Lut3D g(16);
-    for (int b = 0; b < 16; ++b)
-        for (int gi = 0; gi < 16; ++gi)
-            for (int r = 0; r < 16; ++r) {
-                const glm::dvec3 s(r / 15.0, gi / 15.0, b / 15.0);
-                glm::dvec3 v(std::min(1.0, s.x * 1.12), 0.04 + 0.9 * s.y, 0.75 * s.z + 0.1 * s.x);
-                g.at(r, gi, b) = glm::vec3(glm::round(glm::clamp(v, 0.0, 1.0) * 255.0) / 255.0);
-            }
-    return g;
 }
 
 Lut3D readGame(const std::string& path) {

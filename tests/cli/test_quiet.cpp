@@ -3,7 +3,7 @@
 // standard error nothing but warnings and errors. `convert -q` used to print its whole report
 // (1.3 KB), info, validate, diff, check and the writers theirs. --json is asked for by name and
 // stays; a warning stays; the data written to `-` stays.
-#include "TestSupport.h"
+#include "CliTestSupport.h"
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
@@ -23,18 +23,6 @@ using ::testing::HasSubstr;
 
 namespace {
 
-// A small curved .cube of edge n.
-std::string writeCube(const std::string& path, int n, float gamma) {
-    std::ofstream f(path);
-    f << "LUT_3D_SIZE " << n << "\n";
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r)
-                f << std::pow(r / float(n - 1), gamma) << " " << std::pow(g / float(n - 1), gamma)
-                  << " " << std::pow(b / float(n - 1), gamma) << "\n";
-    return path;
-}
-
 // Every line of stderr is a warning or an error ("lutkit: warning: ...", "FILE: warning: ...").
 void expectOnlyWarningsAndErrors(const std::string& err) {
     std::istringstream lines(err);
@@ -45,35 +33,8 @@ void expectOnlyWarningsAndErrors(const std::string& err) {
             << "not a warning or an error: " << line;
 }
 
-struct Inputs {
-    std::string dir, a, b, shot, strip, adjustments;
-};
-
-Inputs makeInputs() {
-    Inputs in;
-    in.dir = tempDir();
-    in.a = writeCube(in.dir + "/a.cube", 9, 0.8f);
-    in.b = writeCube(in.dir + "/b.cube", 5, 1.2f);
-    Image shot(320, 200);
-    for (int y = 0; y < shot.height(); ++y)
-        for (int x = 0; x < shot.width(); ++x) {
-            float* p = shot.pixel(x, y);
-            p[0] = x / 319.0f;
-            p[1] = y / 199.0f;
-            p[2] = 0.3f;
-            p[3] = 1.0f;
-        }
-    in.shot = in.dir + "/shot.png";
-    formats::writeImage(in.shot, shot, formats::ImageWriteOptions(8, false, false));
-    in.strip = in.dir + "/neutral.png";
-    EXPECT_EQ(runCli("neutral " + shellQuoted(in.strip)).exitCode, 0);
-    in.adjustments = in.dir + "/adj.txt";
-    std::ofstream(in.adjustments) << "# lutkit adjustment list 1\ncontrast 0.2\n";
-    return in;
-}
-
 // Every command, its outputs named with `tag`.
-std::vector<std::string> commands(const Inputs& in, const std::string& tag) {
+std::vector<std::string> commands(const CommandInputs& in, const std::string& tag) {
     const std::string a = shellQuoted(in.a), b = shellQuoted(in.b), shot = shellQuoted(in.shot),
                       strip = shellQuoted(in.strip);
     auto out = [&](const std::string& name) { return shellQuoted(in.dir + "/" + tag + name); };
@@ -112,7 +73,7 @@ std::vector<std::string> commands(const Inputs& in, const std::string& tag) {
 } // namespace
 
 TEST(Quiet, EveryCommandSaysNothingButWarningsAndErrors) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(tempDir());
     const std::vector<std::string> loud = commands(in, "loud-"), quiet = commands(in, "quiet-");
     for (std::size_t i = 0; i < quiet.size(); ++i) {
         SCOPED_TRACE("lutkit " + quiet[i] + " -q");
@@ -134,7 +95,7 @@ TEST(Quiet, EveryCommandSaysNothingButWarningsAndErrors) {
 }
 
 TEST(Quiet, JsonAskedForByNameStays) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(tempDir());
     const RunResult r = runCli("convert " + shellQuoted(in.a) + " " +
                                shellQuoted(in.dir + "/j.cube") + " --json -q");
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -143,7 +104,7 @@ TEST(Quiet, JsonAskedForByNameStays) {
 }
 
 TEST(Quiet, WarningsStay) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(tempDir());
     // A keyword the Adobe spec does not have: a warning at its line, from the reader.
     const std::string kw = in.dir + "/keyword.cube";
     std::ofstream(kw) << "LUT_3D_SIZE 2\nFOO bar\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 "
@@ -161,7 +122,7 @@ TEST(Quiet, WarningsStay) {
 }
 
 TEST(Quiet, ErrorsStay) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(tempDir());
     const RunResult r = runCli("info " + shellQuoted(in.dir + "/missing.cube") + " -q");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(r.out, "");

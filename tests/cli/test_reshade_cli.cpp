@@ -2,8 +2,8 @@
 // --layout reshade (and unity-32) through the commands: neutral writes 1024x32, convert resamples
 // to 32^3 and says so, apply and preview read a ReShade strip with --lut-layout, a size the name
 // does not hold is bad usage.
+#include "CliTestSupport.h"
 #include "ShaderSamplers.h"
-#include "TestSupport.h"
 
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
@@ -16,16 +16,7 @@
 using namespace lut;
 using namespace lut::test;
 
-namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
-
-} // namespace
+namespace {} // namespace
 
 TEST(CliReshade, NeutralIs1024x32AndSampledByLutFxAsTheIdentity) {
     const std::string dir = workDir();

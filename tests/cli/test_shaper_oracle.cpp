@@ -9,8 +9,8 @@
 // --original-lut (the note that says what sampling the stage's LUT cost). Before the fix the
 // shaper and table were merged into one 33^3 table over 0..64 first: apply was off OCIO by mean
 // 81 / max 108 8-bit steps on a [0,1] gradient.
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
-#include "TestSupport.h"
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
@@ -36,13 +36,6 @@ using namespace lut::test;
 using ::testing::HasSubstr;
 
 namespace {
-
-std::string workDir() {
-    const std::string d = tempDir() + "-shaper";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 using lut::test::shellQuoted;
 

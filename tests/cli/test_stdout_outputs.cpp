@@ -3,8 +3,8 @@
 // every note, report, JSON and "wrote" line on standard error. Each row pipes the command into a
 // reader that takes standard input -- `lutkit info -` for LUTs (`lutkit convert a.cube - --format
 // cube | lutkit info -`), OpenImageIO for pictures -- and checks that the report went to stderr.
+#include "CliTestSupport.h"
 #include "TestPaths.h"
-#include "TestSupport.h"
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
@@ -26,55 +26,9 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string workDir() {
-    const std::string d = tempDir() + "-stdout";
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
 using lut::test::shellQuoted;
 
 using lut::test::fileBytes;
-
-// A small curved .cube of edge n.
-std::string writeCube(const std::string& path, int n, float gamma) {
-    std::ofstream f(path);
-    f << "LUT_3D_SIZE " << n << "\n";
-    for (int b = 0; b < n; ++b)
-        for (int g = 0; g < n; ++g)
-            for (int r = 0; r < n; ++r)
-                f << std::pow(r / float(n - 1), gamma) << " " << std::pow(g / float(n - 1), gamma)
-                  << " " << std::pow(b / float(n - 1), gamma) << "\n";
-    return path;
-}
-
-struct Inputs {
-    std::string dir, a, b, shot, strip, adjustments;
-};
-
-Inputs makeInputs() {
-    Inputs in;
-    in.dir = workDir();
-    in.a = writeCube(in.dir + "/a.cube", 9, 0.8f);
-    in.b = writeCube(in.dir + "/b.cube", 5, 1.2f);
-    Image shot(320, 200);
-    for (int y = 0; y < shot.height(); ++y)
-        for (int x = 0; x < shot.width(); ++x) {
-            float* p = shot.pixel(x, y);
-            p[0] = x / 319.0f;
-            p[1] = y / 199.0f;
-            p[2] = 0.3f;
-            p[3] = 1.0f;
-        }
-    in.shot = in.dir + "/shot.png";
-    formats::writeImage(in.shot, shot, formats::ImageWriteOptions(8, false, false));
-    in.strip = in.dir + "/neutral.png";
-    EXPECT_EQ(runCli("neutral " + shellQuoted(in.strip)).exitCode, 0);
-    in.adjustments = in.dir + "/adj.txt";
-    std::ofstream(in.adjustments) << "# lutkit adjustment list 1\ncontrast 0.2\n";
-    return in;
-}
 
 struct Row {
     std::string name;
@@ -83,7 +37,7 @@ struct Row {
     std::string report; // a word of the report, expected on stderr
 };
 
-std::vector<Row> rows(const Inputs& in) {
+std::vector<Row> rows(const CommandInputs& in) {
     const std::string a = shellQuoted(in.a), b = shellQuoted(in.b);
     return {
         {"neutral", "neutral - --format cube --size 5", false, "wrote"},
@@ -119,7 +73,7 @@ std::vector<Row> rows(const Inputs& in) {
 } // namespace
 
 TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(workDir());
     for (const Row& row : rows(in)) {
         SCOPED_TRACE(row.name + ": lutkit " + row.args);
         const std::string data = in.dir + "/" + row.name + (row.image ? ".png" : ".cube");
@@ -161,7 +115,7 @@ TEST(StdoutOutputs, EveryCommandWritesItsDataAloneOnStdout) {
 }
 
 TEST(StdoutOutputs, DevStdoutIsStandardOutputToo) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(workDir());
     const RunResult r = runCli("convert " + shellQuoted(in.a) + " /dev/stdout --format cube");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out.substr(0, 200);
@@ -173,7 +127,7 @@ TEST(StdoutOutputs, DevStdoutIsStandardOutputToo) {
 }
 
 TEST(StdoutOutputs, AFileOutputKeepsItsReportOnStdout) {
-    const Inputs in = makeInputs();
+    const CommandInputs in = makeCommandInputs(workDir());
     const RunResult r =
         runCli("convert " + shellQuoted(in.a) + " " + shellQuoted(in.dir + "/x.cube"));
     ASSERT_EQ(r.exitCode, 0) << r.err;

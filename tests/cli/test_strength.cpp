@@ -2,8 +2,8 @@
 // --strength, --luma-strength and --chroma-strength on convert, apply and extract: what they
 // write against the float64 Oklab blend of tests/support/OklabReference.h, the ends (0 = neutral,
 // 1 = the LUT) bit for bit, and bad values as bad usage.
+#include "CliTestSupport.h"
 #include "OklabReference.h"
-#include "TestSupport.h"
 
 #include "lut/Quantize.h"
 #include "lut/formats/ImageIO.h"
@@ -22,14 +22,6 @@ using namespace lut;
 using namespace lut::test;
 
 namespace {
-
-// runCli() calls tempDir(), which empties the test's folder: keep our files in a sibling.
-std::string workDir() {
-    const std::string d = tempDir() + ".work";
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
 
 // A grade that moves lightness, chroma and hue (contrast, saturation, a warm tint).
 glm::dvec3 grade(glm::dvec3 c) {

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -280,5 +281,59 @@ inline std::string refusal(const std::string& path) {
     }
     return {};
 }
+
+// The fixture of both readers' tests: the sources in the test's folder, files made from them by
+// ImageMagick or derived byte by byte, each under its own name (the cases are checked together,
+// at the end), and what a broken file must get.
+class ReaderTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = tempDir();
+        src = makeSources(dir);
+    }
+    // ImageMagick's file NAME written as PREFIX ("BMP3:", "TGA:") with ARGS.
+    std::string madeAs(const std::string& prefix, const std::string& name, const std::string& args,
+                       bool alpha) {
+        const std::string path = unique(name);
+        magick(shellQuoted(alpha ? src.rgba : src.rgb) + " " + args, prefix + path);
+        return path;
+    }
+    std::string derived(const std::string& name, const Bytes& b) {
+        const std::string path = unique(name);
+        writeBytes(path, b);
+        return path;
+    }
+    bool oiioRefuses(const std::string& path) {
+        return runCommand("oiiotool " + shellQuoted(path) + " -o " +
+                          shellQuoted(dir + "/oiio-read.exr"))
+                   .exitCode != 0;
+    }
+    // The file b, written as NAME, is refused in one line naming it that says SAYS (and by
+    // OpenImageIO too when oiioToo); its path.
+    std::string refused(const std::string& name, const Bytes& b, const std::string& says,
+                        bool oiioToo) {
+        SCOPED_TRACE(name);
+        const std::string path = derived(name, b);
+        const std::string why = refusal(path);
+        EXPECT_NE(why.find(says), std::string::npos) << why;
+        if (oiioToo) {
+            EXPECT_TRUE(oiioRefuses(path));
+        }
+        return path;
+    }
+    // The command line on a broken file: exit 1, one line.
+    void expectCliRefuses(const std::string& path) {
+        const RunResult r = runCli("apply --lut builtin:neutral " + shellQuoted(path) + " -o " +
+                                   shellQuoted(dir + "/out.png"));
+        EXPECT_EQ(r.exitCode, 1);
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    std::string unique(const std::string& name) {
+        return dir + "/" + std::to_string(++m_files) + "-" + name;
+    }
+    std::string dir;
+    Sources src;
+    int m_files = 0;
+};
 
 } // namespace lut::test::bmptga

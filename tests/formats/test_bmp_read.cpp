@@ -118,36 +118,13 @@ Bytes unusedFourthByte(Bytes b) {
     return b;
 }
 
-class BmpRead : public ::testing::Test {
+class BmpRead : public ReaderTest {
 protected:
-    void SetUp() override {
-        dir = tempDir();
-        src = makeSources(dir);
-    }
     // ImageMagick's file NAME written as PREFIX (BMP3:, BMP:, BMP2:) with ARGS.
     std::string made(const std::string& name, const std::string& prefix, const std::string& args,
                      bool alpha = false) {
-        const std::string path = unique(name);
-        magick(shellQuoted(alpha ? src.rgba : src.rgb) + " " + args, prefix + path);
-        return path;
+        return madeAs(prefix, name, args, alpha);
     }
-    std::string derived(const std::string& name, const Bytes& b) {
-        const std::string path = unique(name);
-        writeBytes(path, b);
-        return path;
-    }
-    bool oiioRefuses(const std::string& path) {
-        return runCommand("oiiotool " + shellQuoted(path) + " -o " +
-                          shellQuoted(dir + "/oiio-read.exr"))
-                   .exitCode != 0;
-    }
-    // Every file has its own name: the cases are checked together, at the end.
-    std::string unique(const std::string& name) {
-        return dir + "/" + std::to_string(++m_files) + "-" + name;
-    }
-    std::string dir;
-    Sources src;
-    int m_files = 0;
 };
 
 } // namespace
@@ -258,17 +235,6 @@ TEST_F(BmpRead, BrokenAndHostileFilesAreOneLineNamingTheFile) {
     const Bytes rgb = fileBytes(made("rgb.bmp", "BMP3:", "-type TrueColor"));
     const Bytes rle = fileBytes(made("rle.bmp", "BMP3:", "-colors 200 -type Palette"));
     const Bytes four = fileBytes(made("four.bmp", "BMP3:", "-colors 12"));
-    auto refused = [&](const std::string& name, const Bytes& b, const std::string& says,
-                       bool oiioToo) -> std::string {
-        SCOPED_TRACE(name);
-        const std::string path = derived(name, b);
-        const std::string why = refusal(path);
-        EXPECT_NE(why.find(says), std::string::npos) << why;
-        if (oiioToo) {
-            EXPECT_TRUE(oiioRefuses(path));
-        }
-        return path;
-    };
     refused("cut.bmp", rgb.substr(0, rgb.size() - 100), "truncated", true);
     refused("cut-rle.bmp", rle.substr(0, rle.size() / 2), "truncated", true);
     refused("cut-header.bmp", rgb.substr(0, 30), "truncated", true);
@@ -305,9 +271,5 @@ TEST_F(BmpRead, BrokenAndHostileFilesAreOneLineNamingTheFile) {
     put16(b, 28, 8), put32(b, 18, 1), put32(b, 22, 1), put32(b, 46, 256);
     put32(b, 10, 54);
     refused("map-past-end.bmp", b, "colour map of 256 entries", true);
-    // The command line: exit 1, one line.
-    const RunResult r = runCli("apply --lut builtin:neutral " + shellQuoted(pastEnd) + " -o " +
-                               shellQuoted(dir + "/out.png"));
-    EXPECT_EQ(r.exitCode, 1);
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    expectCliRefuses(pastEnd);
 }

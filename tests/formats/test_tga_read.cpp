@@ -107,34 +107,11 @@ Bytes zeroAlpha(Bytes b, int attrAlpha) {
     return b.substr(0, t.data) + px;
 }
 
-class TgaRead : public ::testing::Test {
+class TgaRead : public ReaderTest {
 protected:
-    void SetUp() override {
-        dir = tempDir();
-        src = makeSources(dir);
-    }
     std::string made(const std::string& name, const std::string& args, bool alpha = false) {
-        const std::string path = unique(name);
-        magick(shellQuoted(alpha ? src.rgba : src.rgb) + " " + args, "TGA:" + path);
-        return path;
+        return madeAs("TGA:", name, args, alpha);
     }
-    std::string derived(const std::string& name, const Bytes& b) {
-        const std::string path = unique(name);
-        writeBytes(path, b);
-        return path;
-    }
-    bool oiioRefuses(const std::string& path) {
-        return runCommand("oiiotool " + shellQuoted(path) + " -o " +
-                          shellQuoted(dir + "/oiio-read.exr"))
-                   .exitCode != 0;
-    }
-    // Every file has its own name: the cases are checked together, at the end.
-    std::string unique(const std::string& name) {
-        return dir + "/" + std::to_string(++m_files) + "-" + name;
-    }
-    std::string dir;
-    Sources src;
-    int m_files = 0;
 };
 
 // OpenImageIO 2.4 says 2 bits per sample for an 8-bit colour-mapped file (8 bits / 3 channels):
@@ -273,17 +250,6 @@ TEST_F(TgaRead, BrokenAndHostileFilesAreOneLineNamingTheFile) {
     const Bytes rle = fileBytes(made("rle.tga", "-type TrueColor -compress RLE"));
     const Bytes map = fileBytes(made("map.tga", "-colors 200 -type Palette"));
     const Bytes grey = fileBytes(made("grey.tga", "-type Grayscale"));
-    auto refused = [&](const std::string& name, const Bytes& b, const std::string& says,
-                       bool oiioToo) -> std::string {
-        SCOPED_TRACE(name);
-        const std::string path = derived(name, b);
-        const std::string why = refusal(path);
-        EXPECT_NE(why.find(says), std::string::npos) << why;
-        if (oiioToo) {
-            EXPECT_TRUE(oiioRefuses(path));
-        }
-        return path;
-    };
     refused("short-header.tga", rgb.substr(0, 10), "header is cut short", true);
     Bytes b = rgb;
     b[1] = 2;
@@ -331,8 +297,5 @@ TEST_F(TgaRead, BrokenAndHostileFilesAreOneLineNamingTheFile) {
     const std::size_t ext = get32(b, b.size() - 26);
     put32(b, ext + 486, 1u << 30);
     refused("stamp-past-end.tga", b, "postage stamp", true);
-    const RunResult r = runCli("apply --lut builtin:neutral " + shellQuoted(cutRle) + " -o " +
-                               shellQuoted(dir + "/out.png"));
-    EXPECT_EQ(r.exitCode, 1);
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    expectCliRefuses(cutRle);
 }

@@ -34,17 +34,28 @@ def tool(*args, cwd):
     subprocess.run(list(args), cwd=cwd, check=True, capture_output=True)
 
 
+def timing_rules():
+    """tests/common/timing-rules.sed, the list tests/windows/run.sh reads too: (regex, replacement)."""
+    rules = []
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common",
+                           "timing-rules.sed"), encoding="utf-8") as f:
+        for line in f:
+            line = line.rstrip("\n")
+            if not line or line.startswith("#"):
+                continue
+            command, regex, replacement, flags = line.split("#")
+            assert command == "s" and flags == "g", line
+            rules.append((re.compile(regex, re.MULTILINE), replacement))
+    return rules
+
+
+TIMING_RULES = timing_rules()
+
+
 def normalise(text):
     """What may differ between two runs of the same command: times."""
-    number = r"[0-9]+(\.[0-9]+)?(e[+-][0-9]+)?"
-    text = re.sub(number + r" ?ms\b", "N ms", text)
-    text = re.sub(number + r" s\b", "N s", text)
-    text = re.sub(r'"seconds": ' + number, '"seconds": N', text)
-    # A step that took less than the browser's clock tick measures 0 s, and a time of 0 is not
-    # printed (ErrorStats::str): the time's presence is the clock's, not lutkit's.
-    text = text.replace(", N ms", "")
-    # match's time line: "time     N s (fit 0.333, LUT 0.00169, measures 0.0205)"
-    text = re.sub(r"(?m)^time .*$", "time N", text)
+    for regex, replacement in TIMING_RULES:
+        text = regex.sub(replacement, text)
     return text
 
 

@@ -64,12 +64,13 @@ fail() {
   echo "FAIL  $1"
 }
 
-# What both programs print, comparable: / for \, no drive letter, timings blanked (a number of
-# ms or s, a "time" line's figures, files per second, JSON's "seconds").
+# What both programs print, comparable: / for \, no drive letter, lutkit.exe as lutkit, then the
+# times blanked by the rules tests/web/test_same_bytes.py blanks them by too
+# (tests/common/timing-rules.sed: a number of ms or s, match's "time" line, files per second,
+# JSON's "seconds").
 normalize() {
-  sed -E -e 's#\\#/#g' -e 's#[A-Z]:/#/#g' -e 's#[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)? (ms|s)\b#T \3#g' \
-    -e '/^time /s#[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)?#T#g' -e 's#[0-9.]+ files/s#T files/s#g' \
-    -e 's#"seconds": [0-9.e+-]+#"seconds": T#g' -e 's#lutkit\.exe#lutkit#g' "$1" |
+  sed -E -e 's#\\#/#g' -e 's#[A-Z]:/#/#g' -e 's#lutkit\.exe#lutkit#g' \
+    -f "$here/../common/timing-rules.sed" "$1" |
     if [ -n "${UNORDERED:-}" ]; then sort; else cat; fi
 }
 

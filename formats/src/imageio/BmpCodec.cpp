@@ -36,6 +36,7 @@
 #include "imageio/ByteIO.h"
 #include "imageio/ImageCodec.h"
 #include "imageio/OiioAttributes.h"
+#include "imageio/RowWindowSource.h"
 
 #include "lut/Error.h"
 
@@ -85,46 +86,17 @@ struct MaskField {
     }
 };
 
-class BmpSource : public ImageSource {
+class BmpSource : public RowWindowSource {
 public:
     BmpSource(const std::string& path, std::string memory)
-        : m_in(path, std::move(memory)), m_window(m_in) {
+        : RowWindowSource(path, std::move(memory), "BMP") {
         readHeader();
     }
 
-    void readRows(int y0, int y1, void* dst) override {
-        auto* out = static_cast<unsigned char*>(dst);
-        const std::size_t rb = rowBytes(m_info);
-        const int h = m_info.height;
-        if (m_rle) { // bottom-up: file row r is image row h - 1 - r
-            decodeRle(h - y1, h - y0, [&](std::int64_t r, const unsigned char* idx) {
-                paletteRow(idx, out + static_cast<std::size_t>(h - 1 - r - y0) * rb);
-            });
-            return;
-        }
-        const std::size_t perBlock = std::max<std::size_t>(1, (std::size_t(1) << 20) / m_stride);
-        for (int done = 0; done < y1 - y0;) {
-            const int n = static_cast<int>(std::min<std::size_t>(perBlock, y1 - y0 - done));
-            // Image rows [ya, ya + n): file rows [ya, ya + n) top-down, [h - ya - n, h - ya)
-            // bottom-up (then the block's first row is the image's last).
-            const int ya = y0 + done;
-            const std::uint64_t first = m_bottomUp ? std::uint64_t(h - ya - n) : std::uint64_t(ya);
-            const std::size_t bytes = m_stride * static_cast<std::size_t>(n);
-            m_block.resize(bytes);
-            if (m_in.pread(m_block.data(), bytes, m_dataStart + first * m_stride) != bytes)
-                fail("BMP pixel data ends early (the file was cut short while it was read)");
-            for (int i = 0; i < n; ++i) {
-                const int y = m_bottomUp ? ya + n - 1 - i : ya + i;
-                convertRow(m_block.data() + static_cast<std::size_t>(i) * m_stride,
-                           out + static_cast<std::size_t>(y - y0) * rb);
-            }
-            done += n;
-        }
-    }
-
 private:
-    [[noreturn]] void fail(const std::string& what) const {
-        throw Error(m_in.path() + ": " + what);
+    void readPackedRows(std::int64_t a, std::int64_t b, const RowPlace& place) override {
+        decodeRle(a, b,
+                  [&](std::int64_t r, const unsigned char* idx) { paletteRow(idx, place(r)); });
     }
 
     void readHeader() {
@@ -177,8 +149,8 @@ private:
             fail(std::string("BMP compression ") + (m_compression == kRle8 ? "RLE8" : "RLE4") +
                  " needs " + (m_compression == kRle8 ? "8" : "4") + " bits per pixel, not " +
                  std::to_string(m_bpp));
-        m_rle = m_compression == kRle8 || m_compression == kRle4;
-        m_bottomUp = h >= 0;
+        m_packed = m_compression == kRle8 || m_compression == kRle4;
+        m_topDown = h < 0 && !m_packed; // a top-down RLE file is read bottom-up
         h = h < 0 ? -h : h;
         if (m_bpp <= 8)
             readColourMap(14 + infoSize, colours, infoSize == 12 ? 3 : 4);
@@ -219,7 +191,7 @@ private:
         m_stride = static_cast<std::size_t>(
             (static_cast<std::uint64_t>(m_info.width) * static_cast<std::uint64_t>(m_bpp) + 31) /
             32 * 4);
-        if (m_rle) {
+        if (m_packed) {
             indexRle();
         } else {
             const std::uint64_t need = m_dataStart + m_stride * static_cast<std::uint64_t>(h);
@@ -252,7 +224,7 @@ private:
                                               : 0;
         if (version > 0)
             a.addInt("bmp:version", version);
-        if (m_rle)
+        if (m_packed)
             a.addString("compression", m_info.compression);
         auto meta = std::make_shared<ImageMetadata>();
         meta->format = "bmp";
@@ -310,7 +282,7 @@ private:
             std::memcpy(out, m_palette[std::min<std::size_t>(idx[x], last)].data(), 3);
     }
 
-    void convertRow(const unsigned char* s, unsigned char* out) {
+    void convertRow(const unsigned char* s, unsigned char* out, std::int64_t) override {
         const int w = m_info.width;
         switch (m_bpp) {
         case 24:
@@ -493,22 +465,15 @@ private:
         }
     }
 
-    ByteReader m_in;
-    ByteWindow m_window;
     int m_bpp = 0;
     int m_compression = 0;
-    bool m_rle = false;
-    bool m_bottomUp = true;
     bool m_grey = false;
     bool m_opaque = false;
     int m_bitsPerSample16 = 5;
-    std::uint64_t m_dataStart = 0;
-    std::size_t m_stride = 0;
     std::vector<std::array<unsigned char, 3>> m_palette; // R, G, B
     MaskField m_r, m_g, m_b, m_a;
     std::vector<Mark> m_marks;
     int m_markEvery = 1;
-    UninitBytes m_block;
     std::vector<unsigned char> m_indices, m_zeros;
 };
 

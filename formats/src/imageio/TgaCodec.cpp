@@ -45,6 +45,7 @@
 #include "imageio/ByteIO.h"
 #include "imageio/ImageCodec.h"
 #include "imageio/OiioAttributes.h"
+#include "imageio/RowWindowSource.h"
 
 #include "lut/Error.h"
 
@@ -81,52 +82,22 @@ std::string field(const unsigned char* p, std::size_t n) {
     return std::string(c, static_cast<std::size_t>(std::find(c, c + n, '\0') - c));
 }
 
-class TgaSource : public ImageSource {
+class TgaSource : public RowWindowSource {
 public:
     TgaSource(const std::string& path, std::string memory)
-        : m_in(path, std::move(memory)), m_window(m_in) {
+        : RowWindowSource(path, std::move(memory), "TGA") {
         readHeader();
     }
 
-    void readRows(int y0, int y1, void* dst) override {
-        auto* out = static_cast<unsigned char*>(dst);
-        const std::size_t rb = rowBytes(m_info);
-        const int h = m_info.height;
-        // File rows [a, b) hold image rows [y0, y1): the same rows top-down, mirrored bottom-up.
-        const std::int64_t a = m_topDown ? y0 : h - y1, b = m_topDown ? y1 : h - y0;
-        auto place = [&](std::int64_t r) {
-            const std::int64_t y = m_topDown ? r : h - 1 - r;
-            return out + static_cast<std::size_t>(y - y0) * rb;
-        };
-        if (m_rle) {
-            Mark m = m_marks[static_cast<std::size_t>(a)];
-            m_window.seek(m.offset);
-            m_row.resize(m_pixelBytes * static_cast<std::size_t>(m_info.width));
-            for (std::int64_t r = a; r < b; ++r) {
-                unpack(m, m_row.data(), r);
-                convertRow(m_row.data(), place(r), r);
-            }
-            return;
-        }
-        const std::size_t stride = m_pixelBytes * static_cast<std::size_t>(m_info.width);
-        const std::int64_t perBlock =
-            std::max<std::int64_t>(1, static_cast<std::int64_t>((std::size_t(1) << 20) / stride));
-        for (std::int64_t r0 = a; r0 < b; r0 += perBlock) {
-            const std::int64_t n = std::min(perBlock, b - r0);
-            const std::size_t bytes = stride * static_cast<std::size_t>(n);
-            m_row.resize(bytes);
-            if (m_in.pread(m_row.data(), bytes,
-                           m_dataStart + static_cast<std::uint64_t>(r0) * stride) != bytes)
-                fail("TGA pixel data ends early (the file was cut short while it was read)");
-            for (std::int64_t i = 0; i < n; ++i)
-                convertRow(m_row.data() + static_cast<std::size_t>(i) * stride, place(r0 + i),
-                           r0 + i);
-        }
-    }
-
 private:
-    [[noreturn]] void fail(const std::string& what) const {
-        throw Error(m_in.path() + ": " + what);
+    void readPackedRows(std::int64_t a, std::int64_t b, const RowPlace& place) override {
+        Mark m = m_marks[static_cast<std::size_t>(a)];
+        m_window.seek(m.offset);
+        m_row.resize(m_pixelBytes * static_cast<std::size_t>(m_info.width));
+        for (std::int64_t r = a; r < b; ++r) {
+            unpack(m, m_row.data(), r);
+            convertRow(m_row.data(), place(r), r);
+        }
     }
 
     void readHeader() {
@@ -152,7 +123,7 @@ private:
                  " (header byte 2) is not one lutkit reads (1, 2, 3, 9, 10, 11)");
         m_mapped = m_type == 1 || m_type == 9;
         m_grey = m_type == 3 || m_type == 11;
-        m_rle = m_type >= 9;
+        m_packed = m_type >= 9;
         const bool sizeOk = m_mapped ? m_bpp == 8 || m_bpp == 15 || m_bpp == 16
                             : m_grey ? m_bpp == 8 || m_bpp == 16
                                      : m_bpp == 15 || m_bpp == 16 || m_bpp == 24 || m_bpp == 32;
@@ -170,6 +141,7 @@ private:
             fail("TGA colour-map entry size of " + std::to_string(mapBits) +
                  " bits (header byte 7) is not 15, 16, 24 or 32");
         m_pixelBytes = m_bpp == 15 ? 2 : static_cast<std::size_t>(m_bpp / 8);
+        m_stride = m_pixelBytes * static_cast<std::size_t>(w);
         m_topDown = (attr & 0x20) != 0;
         m_rightToLeft = (attr & 0x10) != 0;
         // OpenImageIO's channel rule: alpha for 32 bits, or for 16-bit grey whose header gives 8
@@ -192,11 +164,11 @@ private:
                               : channels == 3 ? std::vector<std::string>{"R", "G", "B"}
                                               : std::vector<std::string>{"R", "G", "B", "A"};
         m_info.alphaChannel = channels == 2 ? 1 : channels == 4 ? 3 : -1;
-        m_info.compression = m_rle ? "rle" : "";
+        m_info.compression = m_packed ? "rle" : "";
 
         OiioAttributes a;
         a.addInt("oiio:BitsPerSample", m_info.bitsPerSample);
-        if (m_rle)
+        if (m_packed)
             a.addString("compression", "rle");
         std::uint64_t at = 18;
         if (idLength > 0) {
@@ -240,7 +212,7 @@ private:
 
         const std::uint64_t pixels = static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h);
         bool anyAlpha = false;
-        if (m_rle) {
+        if (m_packed) {
             indexRle(anyAlpha);
         } else {
             const std::uint64_t need = m_dataStart + pixels * m_pixelBytes;
@@ -464,7 +436,7 @@ private:
     }
 
     // A stored row (file row r) to the image's channels, right-to-left rows mirrored.
-    void convertRow(const unsigned char* s, unsigned char* out, std::int64_t r) const {
+    void convertRow(const unsigned char* s, unsigned char* out, std::int64_t r) override {
         const int w = m_info.width, ch = m_info.channels;
         const std::size_t pb = m_pixelBytes;
         for (int i = 0; i < w; ++i) {
@@ -489,16 +461,13 @@ private:
         }
     }
 
-    ByteReader m_in;
-    ByteWindow m_window;
     int m_type = 0;
     int m_bpp = 0;
     std::size_t m_pixelBytes = 1;
     std::uint32_t m_mapFirst = 0, m_mapLength = 0;
-    bool m_mapped = false, m_grey = false, m_rle = false;
-    bool m_topDown = false, m_rightToLeft = false;
+    bool m_mapped = false, m_grey = false;
+    bool m_rightToLeft = false;
     bool m_opaque = false;
-    std::uint64_t m_dataStart = 0;
     std::vector<std::array<unsigned char, 3>> m_palette; // R, G, B
     std::vector<Mark> m_marks;
     UninitBytes m_row;

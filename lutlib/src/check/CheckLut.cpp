@@ -3,6 +3,7 @@
 #include "lut/check/CheckLut.h"
 
 #include "check/CheckDetail.h"
+#include "core/Printf.h"
 
 #include "lut/Error.h"
 #include "lut/ops/Diff.h"
@@ -14,13 +15,9 @@
 
 namespace lut {
 
-namespace {
+using detail::fmt;
 
-std::string format(const char* fmt, double a = 0, double b = 0, double c = 0, double d = 0) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
-    return buf;
-}
+namespace {
 
 std::string describe(const LutFile& file) {
     std::string s;
@@ -72,26 +69,26 @@ void summarise(CheckReport& report, const CheckThresholds& t, bool oneD) {
     };
     text(CheckKind::Monotonicity) =
         (oneD ? std::string(f.worstFold > 0.0 ? "curves fold back" : "every curve monotone")
-         : f.greyWorstFold > 0.0 ? format("grey axis folds back %.2f 8-bit steps", f.greyWorstFold)
+         : f.greyWorstFold > 0.0 ? fmt("grey axis folds back %.2f 8-bit steps", f.greyWorstFold)
                                  : std::string("grey axis monotone")) +
-        (f.worstFold > 0.0 ? format("; worst fold-over %.2f 8-bit steps, %.2f%% ", f.worstFold,
-                                    100.0 * f.foldShare) +
+        (f.worstFold > 0.0 ? fmt("; worst fold-over %.2f 8-bit steps, %.2f%% ", f.worstFold,
+                                 100.0 * f.foldShare) +
                                  of
                            : std::string("; every lattice line monotone")) +
         // A line that falls end to end is monotone (a negative LUT's way), and a finding may say
         // its channel "jumps from 65504 to -65504": the summary says so, not a bare "monotone".
         (!oneD && f.fallingShare > 0.0
-             ? format(" (%.0f%% of them falling end to end: the table inverts there)",
-                      100.0 * f.fallingShare)
+             ? fmt(" (%.0f%% of them falling end to end: the table inverts there)",
+                   100.0 * f.fallingShare)
              : std::string());
     text(CheckKind::Banding) =
-        format("steepest %.2f output steps per input step", f.steepest) +
-        (f.worstStep > 0.0 ? format("; worst step %.1f 8-bit steps", f.worstStep) : "") +
-        (f.worstFlat > 0.0 ? format("; worst flat run loses %.1f 8-bit steps", f.worstFlat) : "") +
+        fmt("steepest %.2f output steps per input step", f.steepest) +
+        (f.worstStep > 0.0 ? fmt("; worst step %.1f 8-bit steps", f.worstStep) : "") +
+        (f.worstFlat > 0.0 ? fmt("; worst flat run loses %.1f 8-bit steps", f.worstFlat) : "") +
         (f.worstStep <= 0.0 && f.worstFlat <= 0.0 ? "; no flat runs or steps" : "");
-    text(CheckKind::Hue) = format("worst hue shift %+.1f degrees at Oklab hue %.1f; mean |shift| "
-                                  "%.1f degrees; skin line drift %+.1f degrees",
-                                  f.worstHueShift, f.worstHue, f.meanHueShift, f.skinDrift);
+    text(CheckKind::Hue) = fmt("worst hue shift %+.1f degrees at Oklab hue %.1f; mean |shift| "
+                               "%.1f degrees; skin line drift %+.1f degrees",
+                               f.worstHueShift, f.worstHue, f.meanHueShift, f.skinDrift);
     std::string range = f.nonFinite ? std::to_string(f.nonFinite) + " NaN/Inf entries; "
                                     : std::string("no NaN/Inf; ");
     const float lo = std::min({f.outputMin.x, f.outputMin.y, f.outputMin.z});
@@ -99,36 +96,35 @@ void summarise(CheckReport& report, const CheckThresholds& t, bool oneD) {
     // 1e30 as 1e+30, not 31 digits.
     const char* spec =
         std::max(std::fabs(lo), std::fabs(hi)) >= 1e6f ? "output %.4g..%.4g" : "output %.3f..%.3f";
-    range += format(spec, lo, hi);
+    range += fmt(spec, lo, hi);
     if (lo < -65504.0f || hi > 65504.0f)
         range += " (the checks take values beyond +-65504 as +-65504, half-float's range)";
     if (f.outOfRangeShare > 0.0)
-        range += format(" (%.2f%% outside [0, 1])", 100.0 * f.outOfRangeShare);
-    range += format("; clipped R %.2f%% G %.2f%% B %.2f%% ", 100.0 * f.clippedShare[0],
-                    100.0 * f.clippedShare[1], 100.0 * f.clippedShare[2]) +
-             of + format("; reaches %.0f%% of the output cube", 100.0 * f.gamutCoverage);
+        range += fmt(" (%.2f%% outside [0, 1])", 100.0 * f.outOfRangeShare);
+    range += fmt("; clipped R %.2f%% G %.2f%% B %.2f%% ", 100.0 * f.clippedShare[0],
+                 100.0 * f.clippedShare[1], 100.0 * f.clippedShare[2]) +
+             of + fmt("; reaches %.0f%% of the output cube", 100.0 * f.gamutCoverage);
     if (report.image)
-        range += format("; %.2f%% of the picture outside the domain", 100.0 * f.imageOutsideDomain);
+        range += fmt("; %.2f%% of the picture outside the domain", 100.0 * f.imageOutsideDomain);
     text(CheckKind::Range) = range;
     text(CheckKind::Smoothness) =
-        format("worst second difference %.2f 8-bit steps (33-point spacing); total variation "
-               "%.3fx the net change",
-               f.worstRough, f.totalVariationRatio);
+        fmt("worst second difference %.2f 8-bit steps (33-point spacing); total variation "
+            "%.3fx the net change",
+            f.worstRough, f.totalVariationRatio);
     CheckStatus& inv = report.checks[static_cast<std::size_t>(CheckKind::Invertibility)].status;
     inv = std::max(inv, check::grade(100.0 * f.foldedShare, t.folded));
     text(CheckKind::Invertibility) =
         f.foldedShare <= 0.0 && f.flatShare <= 0.0
             ? std::string("one-to-one everywhere")
-            : format("%.2f%% folded, %.2f%% flat ", 100.0 * f.foldedShare, 100.0 * f.flatShare) +
-                  of + " (no unique inverse there)" +
-                  (f.foldedShare > 0.0
-                       ? format("; worst fold in the cell at RGB (%.3f, %.3f, %.3f)",
-                                f.worstFolded.x, f.worstFolded.y, f.worstFolded.z)
-                       : std::string());
+            : fmt("%.2f%% folded, %.2f%% flat ", 100.0 * f.foldedShare, 100.0 * f.flatShare) + of +
+                  " (no unique inverse there)" +
+                  (f.foldedShare > 0.0 ? fmt("; worst fold in the cell at RGB (%.3f, %.3f, %.3f)",
+                                             f.worstFolded.x, f.worstFolded.y, f.worstFolded.z)
+                                       : std::string());
     text(CheckKind::Neutral) =
         f.neutralMeasured
-            ? format("distance from neutral: max dE2000 %.2f (%.1f 8-bit steps), mean %.2f",
-                     f.neutralMaxDeltaE, f.neutralMaxSteps, f.neutralMeanDeltaE)
+            ? fmt("distance from neutral: max dE2000 %.2f (%.1f 8-bit steps), mean %.2f",
+                  f.neutralMaxDeltaE, f.neutralMaxSteps, f.neutralMeanDeltaE)
             : std::string("not measured");
 }
 

@@ -3,6 +3,7 @@
 // events of one kind that touch along it make one finding.
 #include "check/CheckDetail.h"
 #include "check/LineScan.h"
+#include "core/Printf.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,12 +39,6 @@ double shareOf(const Context& ctx, int c, double a, double b) {
     for (int i = i0; i <= i1; ++i)
         s += w[static_cast<std::size_t>(i)];
     return s;
-}
-
-std::string text(const char* format, double a, double b) {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, format, a, b);
-    return buf;
 }
 
 } // namespace
@@ -188,9 +183,9 @@ void scan1D(const Context& ctx, std::vector<CheckFinding>& findings, CheckFigure
                      : g.kind == FindingKind::NonFinite ? SizeUnit::Entries
                                                         : SizeUnit::Steps8;
             f.share = share;
-            f.detail =
-                text("input %.4f .. %.4f of the curve", ctx.fileInput(glm::vec3(float(a)))[c],
-                     ctx.fileInput(glm::vec3(float(b)))[c]);
+            f.detail = lut::detail::fmt("input %.4f .. %.4f of the curve",
+                                        ctx.fileInput(glm::vec3(float(a)))[c],
+                                        ctx.fileInput(glm::vec3(float(b)))[c]);
             f.region.type = FindingRegion::Type::ChannelRange;
             f.region.channel = c;
             f.region.lo = ctx.fileInput(glm::vec3(float(a)))[c];

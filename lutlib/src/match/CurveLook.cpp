@@ -2,9 +2,9 @@
 // Looks that are a colour per luma, and the gradient-map transfer: see match/CurveLook.h.
 #include "match/CurveLook.h"
 
+#include "core/Printf.h"
 #include "lut/Math.h"
 #include "lut/match/HistogramMatch.h"
-#include "match/MatchText.h"
 
 #include <algorithm>
 #include <cmath>

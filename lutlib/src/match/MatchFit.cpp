@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Fitting the transfer by each method, and auto's choice: see lut/match/Match.h.
+#include "core/Printf.h"
 #include "lut/Error.h"
 #include "lut/match/LutQuality.h"
 #include "lut/match/Match.h"
@@ -9,7 +10,6 @@
 #include "match/MatchColours.h"
 #include "match/MatchContext.h"
 #include "match/MatchSamples.h"
-#include "match/MatchText.h"
 #include "match/TransportFit.h"
 
 #include <algorithm>

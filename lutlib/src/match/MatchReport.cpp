@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The text of a match report: see lut/match/MatchReport.h.
 #include "lut/match/MatchReport.h"
-#include "match/MatchText.h"
+#include "core/Printf.h"
 
 #include <algorithm>
 #include <cstdio>

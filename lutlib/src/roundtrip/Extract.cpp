@@ -25,7 +25,7 @@ namespace lut {
 
 using detail::addNote;
 using detail::addWarning;
-using detail::formatMessage;
+using detail::fmt;
 
 const char* toString(TargetSource s) {
     switch (s) {
@@ -118,11 +118,11 @@ void checkChromaSubsampling(const PatchReading& patch, const ExtractOptions& o,
         how = "the file's metadata says " + meta;
     if (!seen.empty())
         how += std::string(how.empty() ? "" : "; ") + "the patch's pixels show " + seen +
-               formatMessage(" (colour edges %.0f%% as sharp as brightness edges)",
-                             100.0 * std::min(patch.chroma.chromaSharpness[0] /
-                                                  std::max(patch.chroma.lumaSharpness[0], 1e-9),
-                                              patch.chroma.chromaSharpness[1] /
-                                                  std::max(patch.chroma.lumaSharpness[1], 1e-9)));
+               fmt(" (colour edges %.0f%% as sharp as brightness edges)",
+                   100.0 * std::min(patch.chroma.chromaSharpness[0] /
+                                        std::max(patch.chroma.lumaSharpness[0], 1e-9),
+                                    patch.chroma.chromaSharpness[1] /
+                                        std::max(patch.chroma.lumaSharpness[1], 1e-9)));
     const bool aligned = pl.cell >= kDefaultPatchScale && pl.patchX() % kJpegGrid == 0 &&
                          pl.patchY() % kJpegGrid == 0 && pl.cell % 8 == 0;
     if (aligned) {
@@ -160,9 +160,9 @@ void blendEdit(PatchReading& patch, bool stage, const StrengthOptions& strength,
                 patch.values.at(r, g, b) = glm::vec3(
                     blendStrength(glm::dvec3(before), glm::dvec3(patch.values.at(r, g, b)), a));
             }
-    addNote(res, formatMessage("strength: the edit blended with the picture before it, lightness "
-                               "%g, chroma %g (Oklab)",
-                               a.luma, a.chroma));
+    addNote(res, fmt("strength: the edit blended with the picture before it, lightness "
+                     "%g, chroma %g (Oklab)",
+                     a.luma, a.chroma));
 }
 
 } // namespace
@@ -192,13 +192,13 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
     if (pl.cell != pl.scale) {
         const bool whole = pl.cell % pl.scale == 0;
         addWarning(res, RoundtripWarning::Rescaled,
-                   formatMessage(whole ? "the image was scaled by %g after embedding (cells of %g "
-                                         "pixels, embedded at %g); read at the new size"
-                                       : "the image was scaled by %g after embedding (cells of %g "
-                                         "pixels, embedded at %g), not a whole number: only the "
-                                         "block centres were read and may be blended; undo the "
-                                         "resize",
-                                 double(pl.cell) / pl.scale, pl.cell, pl.scale));
+                   fmt(whole ? "the image was scaled by %g after embedding (cells of %g "
+                               "pixels, embedded at %g); read at the new size"
+                             : "the image was scaled by %g after embedding (cells of %g "
+                               "pixels, embedded at %g), not a whole number: only the "
+                               "block centres were read and may be blended; undo the "
+                               "resize",
+                       double(pl.cell) / pl.scale, double(pl.cell), double(pl.scale)));
     }
     const bool lossyFile = !options.fileChromaSubsampling.empty() ||
                            (patch.chroma.measured && patch.chroma.scheme() != "4:4:4");
@@ -302,11 +302,10 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
         // still says how many were clamped).
         if (res.clampedEntries > 0 && res.clampedMax * 255.0 >= 0.5)
             addWarning(res, RoundtripWarning::OutOfRange,
-                       formatMessage("%g LUT values would need to leave [0,1] (by up to %.3g, "
-                                     "%.3g 8-bit steps) to show the edited colours in game; they "
-                                     "were clamped: the game cannot show those colours",
-                                     double(res.clampedEntries), res.clampedMax,
-                                     res.clampedMax * 255.0));
+                       fmt("%g LUT values would need to leave [0,1] (by up to %.3g, "
+                           "%.3g 8-bit steps) to show the edited colours in game; they "
+                           "were clamped: the game cannot show those colours",
+                           double(res.clampedEntries), res.clampedMax, res.clampedMax * 255.0));
         res.expected = detail::smashExpectedError(patch, sub, noise, quantized8(res.lut),
                                                   wantedFast, stage ? nullptr : options.originalLut,
                                                   res.modelError, options.nthreads);
@@ -324,13 +323,12 @@ ExtractResult extractLut(const PatchReading& reading, const ExtractOptions& opti
     addNote(res, "  at the LUT's lattice points: " + res.expected.atLattice.str());
     addNote(res,
             "  over all inputs, between the lattice points too: " + res.expected.overall.str());
-    addNote(res, formatMessage("  made of: read error of the entries up to %.2f steps (storage, "
-                               "blocks, neighbouring entries, marker cells), interpolation "
-                               "between patch entries up to %.2f (sub-lattice check and each "
-                               "entry against its neighbours), the LUT itself up to %.2f at "
-                               "the points measured",
-                               res.readNoiseMax, res.expected.interpolationSteps,
-                               res.modelError.maxSteps));
+    addNote(res, fmt("  made of: read error of the entries up to %.2f steps (storage, "
+                     "blocks, neighbouring entries, marker cells), interpolation "
+                     "between patch entries up to %.2f (sub-lattice check and each "
+                     "entry against its neighbours), the LUT itself up to %.2f at "
+                     "the points measured",
+                     res.readNoiseMax, res.expected.interpolationSteps, res.modelError.maxSteps));
     if (!res.refineDecision.empty())
         addNote(res, "least-squares refinement: " + res.refineDecision);
     return res;

@@ -32,12 +32,6 @@ void addNote(ExtractResult& res, const std::string& message) {
     res.diagnostics.push_back(std::move(d));
 }
 
-std::string formatMessage(const char* f, double a, double b, double c, double d) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, f, a, b, c, d);
-    return buf;
-}
-
 namespace {
 
 // Entries that no smooth or piecewise-smooth (kinked) global edit explains: for each axis, the
@@ -139,11 +133,11 @@ void checkGreys(const PatchReading& patch, ExtractResult& res) {
                    "includes that conversion");
     } else if (worstPowerFit <= tol && spread <= 0.02 && std::fabs(res.gamma - 1.0) >= 0.05) {
         addWarning(res, RoundtripWarning::ProfileChange,
-                   formatMessage("the neutral greys of the patch follow a pure gamma curve "
-                                 "(x^%.3f in all channels): this is what a colour-profile or "
-                                 "gamma conversion does (e.g. 2.2 <-> 1.8 gives 1.22); if you did "
-                                 "not apply a gamma edit, check the editor's colour management",
-                                 res.gamma));
+                   fmt("the neutral greys of the patch follow a pure gamma curve "
+                       "(x^%.3f in all channels): this is what a colour-profile or "
+                       "gamma conversion does (e.g. 2.2 <-> 1.8 gives 1.22); if you did "
+                       "not apply a gamma edit, check the editor's colour management",
+                       res.gamma));
     }
 }
 
@@ -188,10 +182,10 @@ constexpr double kLocalShare = 0.35;
 void diagnoseBlocks(const PatchReading& patch, bool lossyFile, ExtractResult& res) {
     const BlockEvidence& ev = patch.blocks;
     const PatchPlacement& pl = patch.placement;
-    const std::string count = formatMessage(
-        "%g of %g patch blocks are not uniform (up to %.3g "
-        "8-bit steps inside a block)",
-        double(patch.nonUniformBlocks), double(patch.values.entryCount()), patch.blockMaxDeviation);
+    const std::string count = fmt("%g of %g patch blocks are not uniform (up to %.3g "
+                                  "8-bit steps inside a block)",
+                                  double(patch.nonUniformBlocks), double(patch.values.entryCount()),
+                                  patch.blockMaxDeviation);
     if (ev.blocks == 0) {
         res.cause = EditCause::Unknown;
         addWarning(res, RoundtripWarning::NonGlobalEdit,
@@ -203,10 +197,10 @@ void diagnoseBlocks(const PatchReading& patch, bool lossyFile, ExtractResult& re
     const bool chromaOnly = ev.chromaShare > 0.85 && (lossyFile || ev.chromaShare > 0.95);
     if (chromaOnly) {
         res.cause = EditCause::Lossy;
-        addNote(res, count + formatMessage(", in colour only (%.0f%% of the deviation is chroma): "
-                                           "a lossy save (JPEG); the blocks' averages were read "
-                                           "and the expected error includes what is left",
-                                           100.0 * ev.chromaShare));
+        addNote(res, count + fmt(", in colour only (%.0f%% of the deviation is chroma): "
+                                 "a lossy save (JPEG); the blocks' averages were read "
+                                 "and the expected error includes what is left",
+                                 100.0 * ev.chromaShare));
         return;
     }
     if (ev.boxShare < kLocalShare && ev.nonUniform * 4 < ev.blocks) {
@@ -222,36 +216,36 @@ void diagnoseBlocks(const PatchReading& patch, bool lossyFile, ExtractResult& re
     if (ev.interiorSteps > 1.0 && ev.interiorSteps >= 0.5 * ev.borderSteps) {
         res.cause = EditCause::Noise;
         addWarning(res, RoundtripWarning::NonGlobalEdit,
-                   count + formatMessage(": every pixel scatters, the middles of the blocks as "
-                                         "much as their edges (%.2g steps RMS): noise or film "
-                                         "grain was added over the patch. The blocks' averages "
-                                         "take most of it out (the expected error includes the "
-                                         "rest); add grain after extracting, or keep it off the "
-                                         "patch",
-                                         ev.interiorSteps));
+                   count + fmt(": every pixel scatters, the middles of the blocks as "
+                               "much as their edges (%.2g steps RMS): noise or film "
+                               "grain was added over the patch. The blocks' averages "
+                               "take most of it out (the expected error includes the "
+                               "rest); add grain after extracting, or keep it off the "
+                               "patch",
+                               ev.interiorSteps));
         return;
     }
     if (ev.towards > 0.08) {
         res.cause = EditCause::Blur;
         addWarning(res, RoundtripWarning::NonGlobalEdit,
-                   count + formatMessage(": their edges run into the neighbouring blocks' "
-                                         "colours (%.0f%% of the way on average) while their "
-                                         "middles stay: a blur or soften filter (or a smooth "
-                                         "resize) went over the patch. The blocks' middles were "
-                                         "read; blur after extracting, or keep the blur off the "
-                                         "patch",
-                                         100.0 * ev.towards));
+                   count + fmt(": their edges run into the neighbouring blocks' "
+                               "colours (%.0f%% of the way on average) while their "
+                               "middles stay: a blur or soften filter (or a smooth "
+                               "resize) went over the patch. The blocks' middles were "
+                               "read; blur after extracting, or keep the blur off the "
+                               "patch",
+                               100.0 * ev.towards));
         return;
     }
     if (ev.towards < -0.08) {
         res.cause = EditCause::Sharpen;
         addWarning(res, RoundtripWarning::NonGlobalEdit,
-                   count + formatMessage(": their edges overshoot away from the neighbouring "
-                                         "blocks' colours (%.0f%% of the way) while their middles "
-                                         "stay: a sharpen (unsharp mask, clarity) went over the "
-                                         "patch. The blocks' middles were read; sharpen after "
-                                         "extracting, or keep it off the patch",
-                                         -100.0 * ev.towards));
+                   count + fmt(": their edges overshoot away from the neighbouring "
+                               "blocks' colours (%.0f%% of the way) while their middles "
+                               "stay: a sharpen (unsharp mask, clarity) went over the "
+                               "patch. The blocks' middles were read; sharpen after "
+                               "extracting, or keep it off the patch",
+                               -100.0 * ev.towards));
         return;
     }
     res.cause = EditCause::Unknown;
@@ -276,9 +270,9 @@ void checkPatch(const PatchReading& patch, ExtractResult& res, bool lossyFile) {
         !res.has(RoundtripWarning::NonGlobalEdit)) {
         const CellBox box = entryBox(pl, where);
         const std::string count =
-            formatMessage("%g of %g patch entries disagree with their neighbours by more than 3 "
-                          "8-bit steps in a way no smooth global edit gives",
-                          double(res.suspiciousEntries), double(blocks));
+            fmt("%g of %g patch entries disagree with their neighbours by more than 3 "
+                "8-bit steps in a way no smooth global edit gives",
+                double(res.suspiciousEntries), double(blocks));
         if (box.share < kLocalShare) {
             res.cause = EditCause::LocalEdit;
             addWarning(res, RoundtripWarning::NonGlobalEdit,
@@ -323,11 +317,10 @@ void checkPatch(const PatchReading& patch, ExtractResult& res, bool lossyFile) {
     res.clippedValues = clipped;
     if (clipped * 100 > total * 3)
         addWarning(res, RoundtripWarning::Clipping,
-                   formatMessage("%.3g%% of the patch values are clipped at 0 or 1 (%g of %g): "
-                                 "the edit throws those colour differences away and no LUT can "
-                                 "bring them back",
-                                 100.0 * double(clipped) / double(total), double(clipped),
-                                 double(total)));
+                   fmt("%.3g%% of the patch values are clipped at 0 or 1 (%g of %g): "
+                       "the edit throws those colour differences away and no LUT can "
+                       "bring them back",
+                       100.0 * double(clipped) / double(total), double(clipped), double(total)));
     if (!stage)
         checkGreys(patch, res);
 }

@@ -3,6 +3,7 @@
 // Internal to lutlib: what extract checks on a read patch before it builds a LUT, and how it
 // reports what it found (warnings with a kind, info notes). Each warning has a test that
 // triggers it (docs/roundtrip.md, "Warnings").
+#include "core/Printf.h"
 #include "lut/ErrorStats.h"
 #include "lut/roundtrip/Extract.h"
 #include "lut/roundtrip/PatchReader.h"
@@ -17,8 +18,6 @@ namespace lut::detail {
 void addWarning(ExtractResult& res, RoundtripWarning w, const std::string& message);
 // An info diagnostic.
 void addNote(ExtractResult& res, const std::string& message);
-// printf-style message with up to four numbers.
-std::string formatMessage(const char* format, double a, double b = 0, double c = 0, double d = 0);
 
 // The checks on the patch itself, in this order: blocks that are not uniform, entries no smooth
 // global edit explains (res.suspiciousEntries), values clipped at 0 or 1 (res.clippedValues),

@@ -2,6 +2,8 @@
 // Regularised least-squares LUT fit from a before/after pair: see Fit.h for the model.
 #include "lut/roundtrip/Fit.h"
 
+#include "core/Printf.h"
+
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
@@ -14,6 +16,8 @@
 #include <unordered_set>
 
 namespace lut {
+
+using detail::fmt;
 
 namespace {
 
@@ -212,12 +216,6 @@ void warn(FitResult& res, RoundtripWarning w, const std::string& message) {
     d.severity = Diagnostic::Severity::Warning;
     d.message = message;
     res.diagnostics.push_back(std::move(d));
-}
-
-std::string fmt(const char* f, double a, double b = 0, double c = 0) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf, f, a, b, c);
-    return buf;
 }
 
 } // namespace
@@ -534,7 +532,7 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
     if (!res.converged)
         warn(res, RoundtripWarning::FewColours,
              fmt("the solver stopped after %g iterations before converging: the fit may be rough",
-                 res.iterations));
+                 double(res.iterations)));
     if (res.distinctColours < 64)
         warn(res, RoundtripWarning::FewColours,
              fmt("the before image has only %g distinct colours: the fit is exact at those and a "
