@@ -15,11 +15,11 @@
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
-#include "lut/PixelChain.h"
 #include "lut/formats/ApplyImage.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
+#include "lut/interp/PixelChain.h"
 #include "lut/io/FileNames.h"
 #include "lut/ops/QuantizeLut.h"
 #include "lut/pipeline/PreviewPlan.h"

@@ -14,6 +14,7 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/interp/Sampler.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/PreviewPlan.h"
 
 #include <algorithm>
 #include <memory>
@@ -81,8 +82,9 @@ inline Outcome runImageApply(const std::uint8_t* data, std::size_t size) {
     Image frame(w, h);
     for (int y = 0; y < h; ++y)
         std::copy(img.image.pixel(0, y), img.image.pixel(0, y) + 4 * w, frame.pixel(0, y));
-    const bool linear = img.info.isFloat;
-    (void)prepareSceneFrame(frame.view(), linear, false, nullptr, Interpolation::Trilinear, 1);
+    PreviewPlan scene; // a float file is a linear scene, an integer one is sRGB-decoded
+    scene.decode = !img.info.isFloat;
+    (void)preparePreviewFrame(scene, frame.view(), nullptr, false, 1);
     PipelineSettings settings;
     settings.lut = std::make_shared<const Lut3D>(fuzzGradingLut());
     Pipeline pipeline(settings);

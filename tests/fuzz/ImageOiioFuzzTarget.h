@@ -19,9 +19,9 @@
 
 #include "ImageFuzzTarget.h"
 
-#include "lut/PixelChain.h"
 #include "lut/formats/ApplyImage.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/interp/PixelChain.h"
 #include "lut/io/OutputPolicy.h"
 
 #include <OpenImageIO/imageio.h>

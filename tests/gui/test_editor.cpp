@@ -19,8 +19,8 @@
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/PreviewPlan.h"
 #include "lut/smash/SmashCompensation.h"
-#include "lut/smash/SmashDisplayEdit.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -201,7 +201,7 @@ private slots:
         s.bloom = false;
         s.lut = std::make_shared<const Lut3D>(smashWithoutBrighten(*exported.shown));
         Image scene = *w.document()->storedImage();
-        prepareSceneFrame(scene.view(), false, true, nullptr);
+        preparePreviewFrame(planPreview(PreviewRequest{}), scene.view(), nullptr);
         QVERIFY(w.currentFrame()->image.pixels() == Pipeline(s).run(scene).pixels());
 
         // The cube target has no brighten step: disabled and unchecked, whatever the choice was.

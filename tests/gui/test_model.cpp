@@ -15,9 +15,10 @@
 #include "lut/formats/Registry.h"
 #include "lut/ops/AdjustmentList.h"
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/PreviewPlan.h"
 #include "lut/roundtrip/Embed.h"
+#include "lut/smash/SmashAuthoring.h"
 #include "lut/smash/SmashCompensation.h"
-#include "lut/smash/SmashDisplayEdit.h"
 
 #include <glm/common.hpp>
 
@@ -235,7 +236,7 @@ private slots:
         doc.exportLut(nutexb, {}, {}, ExportTarget::Smash);
         formats::LoadedImage loaded =
             formats::readImage(samplePath("sample_scene.png").toStdString());
-        prepareSceneFrame(loaded.image.view(), false, true, nullptr);
+        preparePreviewFrame(planPreview(PreviewRequest{}), loaded.image.view(), nullptr);
         PipelineSettings s;
         s.preset = Preset::Smash;
         s.bloom = false;
@@ -319,8 +320,10 @@ private slots:
         QCOMPARE(maxDiff(*same.shown, game), 0.0);
         doc.editParam(AdjustParam::Exposure, 0.3);
         const Lut3D want =
-            smashLutForDisplayEdit(applyAdjustments(Lut3D::identity(33), doc.adjustments()), &game,
-                                   Interpolation::Tetrahedral);
+            authorSmashLutForEdit(applyAdjustments(Lut3D::identity(33), doc.adjustments()),
+                                  Interpolation::Tetrahedral,
+                                  SmashAuthoringOptions{.gameLut = &game, .measure = false})
+                .exact;
         QCOMPARE(maxDiff(exportTable(doc.lutSource(), ExportTarget::Smash), want), 0.0);
     }
 

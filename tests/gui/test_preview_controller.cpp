@@ -9,7 +9,8 @@
 #include "lut/Quantize.h"
 #include "lut/formats/Registry.h"
 #include "lut/pipeline/Pipeline.h"
-#include "lut/smash/SmashDisplayEdit.h"
+#include "lut/pipeline/PreviewPlan.h"
+#include "lut/smash/SmashAuthoring.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -151,7 +152,9 @@ private slots:
         c.setImage(scene, true);
         c.waitForFullResolution();
         LutFile file;
-        file.cube = smashLutForDisplayEdit(*edit, nullptr, Interpolation::Tetrahedral);
+        file.cube = authorSmashLutForEdit(*edit, Interpolation::Tetrahedral,
+                                          SmashAuthoringOptions{.measure = false})
+                        .exact;
         const std::string path = dir.filePath("color_grading_lut.nutexb").toStdString();
         formats::writeLut(path, file);
         const auto written = std::make_shared<const Lut3D>(formats::readLut(path).toLut3D());
@@ -269,7 +272,7 @@ private slots:
                 differ += c.beforeImage().pixel(x, y) != c.currentFrame()->display.pixel(x, y);
         QCOMPARE(differ, 0); // neutral document: no difference across the divider
         Image ungraded = *stored;
-        prepareSceneFrame(ungraded.view(), false, true, nullptr);
+        preparePreviewFrame(planPreview(PreviewRequest{}), ungraded.view(), nullptr);
         QVERIFY(c.currentFrame()->image.pixels() ==
                 pipelineRun(ungraded, std::make_shared<const Lut3D>(Lut3D::identity(16)),
                             Preset::Smash, false)
@@ -279,7 +282,9 @@ private slots:
         c.setOptions(o);
         c.waitForFullResolution();
         Image decoded = *stored;
-        prepareSceneFrame(decoded.view(), false, false, nullptr);
+        PreviewRequest asScene;
+        asScene.forced = SceneKind::Scene;
+        preparePreviewFrame(planPreview(asScene), decoded.view(), nullptr);
         QVERIFY(c.currentFrame()->image.pixels() ==
                 pipelineRun(decoded, std::make_shared<const Lut3D>(Lut3D::identity(16)),
                             Preset::Smash, true)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // lut::PixelChain: steps run in order around the LUT, the LUT is the sampler's, values outside
 // the domain are counted (not silently clamped), and a neutral LUT is recognised.
-#include "lut/PixelChain.h"
+#include "lut/interp/PixelChain.h"
 #include "lut/interp/Sampler.h"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 #include "LutTestUtil.h"
 #include "OcioTestUtil.h"
 #include "lut/LutFile.h"
-#include "lut/PixelChain.h"
+#include "lut/interp/PixelChain.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/InvertFile.h"
 #include "lut/ops/Lattice.h"

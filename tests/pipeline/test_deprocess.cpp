@@ -5,6 +5,7 @@
 #include "PipelineTestUtil.h"
 
 #include "lut/pipeline/Pipeline.h"
+#include "lut/pipeline/PreviewPlan.h"
 #include "lut/smash/SmashGrading.h"
 
 #include <gtest/gtest.h>
@@ -47,6 +48,15 @@ Image sceneInGamut(int w, int h, std::uint64_t seed, bool alphaMix) {
     return img;
 }
 
+// A screenshot's preparation for the game's chain (lut/pipeline/PreviewPlan.h, as preview and
+// the editor run it): sRGB decode, then the grading undone with the stage LUT (null: neutral).
+Diagnostics undoScreenshot(const ImageView& shot, const Lut3D* stageLut) {
+    PreviewPlan plan;
+    plan.decode = true;
+    plan.undoGrading = true;
+    return preparePreviewFrame(plan, shot, stageLut);
+}
+
 double maxDiff(const Image& a, const Image& b) {
     double d = 0;
     for (std::size_t i = 0; i < a.pixels().size(); ++i)
@@ -62,7 +72,7 @@ TEST(Deprocess, RegradingAScreenshotMatchesGradingTheScene) {
     for (bool alphaMix : {false, true}) {
         const Image x = sceneInGamut(37, 23, alphaMix ? 5 : 6, alphaMix);
         Image shot = preview(x, L0);
-        const Diagnostics notes = prepareSceneFrame(shot.view(), false, true, L0.get());
+        const Diagnostics notes = undoScreenshot(shot.view(), L0.get());
         ASSERT_FALSE(notes.empty());
         EXPECT_NE(notes.front().message.find("bloom cannot be undone"), std::string::npos);
         const Image regraded = preview(shot, L1);
@@ -77,7 +87,7 @@ TEST(Deprocess, NeutralOriginalLutIsExact) {
     const auto L1 = std::make_shared<const Lut3D>(makeWarmLut(16));
     const Image x = sceneInGamut(20, 10, 9, false);
     Image shot = preview(x, nullptr);
-    prepareSceneFrame(shot.view(), false, true, nullptr);
+    undoScreenshot(shot.view(), nullptr);
     EXPECT_LT(maxDiff(shot, x), 1e-5);
     EXPECT_LT(maxDiff(preview(shot, L1), preview(x, L1)), 2e-5);
 }

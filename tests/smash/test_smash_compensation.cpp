@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The LUTs that cancel Smash's brighten step (lut/smash/SmashCompensation.h) against the
-// game's shader evaluated in float64 (PipelineTestUtil.h, from docs/specs/smash-pipeline.md).
+// The LUT that cancels Smash's brighten step for the preview (lut/smash/SmashCompensation.h)
+// against the game's shader evaluated in float64 (PipelineTestUtil.h, from
+// docs/specs/smash-pipeline.md).
 #include "PipelineTestUtil.h"
 
 #include "lut/pipeline/Pipeline.h"
@@ -37,46 +38,6 @@ void refInterp(Interpolation m, const Lut3D& lut, const double in[3], double out
 }
 
 } // namespace
-
-TEST(SmashCompensation, GameLutMakesTheGameShowTheEdit) {
-    // A 33^3 edit: its lattice does not hold the points i/15, so the edit is interpolated there.
-    const Lut3D edited = makeWarmLut(33, 2.0);
-    for (Interpolation m : {Interpolation::Trilinear, Interpolation::Tetrahedral}) {
-        const Lut3D game = smashGameLut(edited, m);
-        ASSERT_EQ(game.size(), 16);
-        double worst = 0;
-        for (int b = 0; b < 16; ++b)
-            for (int g = 0; g < 16; ++g)
-                for (int r = 0; r < 16; ++r) {
-                    const double s[3] = {r / 15.0, g / 15.0, b / 15.0};
-                    double e[3], x[3], shown[3];
-                    refInterp(m, edited, s, e);
-                    for (int c = 0; c < 3; ++c)
-                        x[c] = std::pow(s[c], 2.2); // the scene colour the game encodes to s
-                    refSmashGrade(game, x, 1.0, shown);
-                    for (int c = 0; c < 3; ++c)
-                        worst = std::max(worst, relErr(shown[c], std::pow(e[c], 2.2)));
-                }
-        EXPECT_LT(worst, 1e-5) << toString(m);
-    }
-}
-
-TEST(SmashCompensation, GameLutOfTheNeutralEditUndoesTheBrighten) {
-    // Neutral edit: the game must show the scene unchanged, L = (s / 1.3703 - s) / 0.99961 + s.
-    const Lut3D game = smashGameLut(Lut3D::identity(17));
-    double worst = 0;
-    for (int b = 0; b < 16; ++b)
-        for (int g = 0; g < 16; ++g)
-            for (int r = 0; r < 16; ++r) {
-                const int idx[3] = {r, g, b};
-                for (int c = 0; c < 3; ++c) {
-                    const double s = idx[c] / 15.0;
-                    const double want = (s / 1.3703 - s) / 0.99961 + s;
-                    worst = std::max(worst, std::abs(double(game.at(r, g, b)[c]) - want));
-                }
-            }
-    EXPECT_LT(worst, 1e-6);
-}
 
 TEST(SmashCompensation, WithoutBrightenShowsTheLutAloneBetweenLatticePoints) {
     // Scene values in [0,1] at random (not lattice) points; the smash chain without bloom grades

@@ -6,7 +6,7 @@
 // game LUT, clipped to the display and sRGB-encoded.
 #include "PipelineTestUtil.h"
 
-#include "lut/smash/SmashDisplayEdit.h"
+#include "lut/smash/SmashAuthoring.h"
 #include "lut/smash/SmashShownEdit.h"
 
 #include <gtest/gtest.h>
@@ -71,7 +71,11 @@ TEST(SmashShownEdit, ShowsTheEditAGameLutWasMadeFor) {
                 const glm::vec3 d = edit.latticeInput(r, g, b);
                 edit.at(r, g, b) = {0.9f * d.r + 0.05f, d.g * d.g * 0.3f + 0.7f * d.g, d.b};
             }
-    const Lut3D shown = smashShownEdit(smashLutForDisplayEdit(edit), 33);
+    const Lut3D shown =
+        smashShownEdit(authorSmashLutForEdit(edit, Interpolation::Trilinear,
+                                             SmashAuthoringOptions{.measure = false})
+                           .exact,
+                       33);
     double worst = 0.0, mean = 0.0;
     for (std::size_t i = 0; i < edit.entryCount(); ++i)
         for (int c = 0; c < 3; ++c) {

@@ -5,8 +5,8 @@
 // all cores: how `lutkit preview` converts its frames with --from and --to.
 //
 // `lutkit apply` streams its frames instead; its per-chunk chain (conversion, LUT, conversion,
-// with the values outside the LUT's domain counted) is lut::PixelChain (lut/PixelChain.h), whose
-// steps can wrap a PixelProcessor.
+// with the values outside the LUT's domain counted) is lut::PixelChain (lut/interp/PixelChain.h),
+// whose steps can wrap a PixelProcessor.
 #include "lut/Image.h"
 
 #include <cstddef>

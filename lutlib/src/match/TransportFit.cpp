@@ -5,6 +5,7 @@
 #include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/match/HistogramMatch.h"
+#include "ops/LatticeLeastSquares.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -94,161 +95,14 @@ void slicedTransport(std::vector<glm::dvec3>& y, const std::vector<float>& yWeig
 
 // ---- 2. The lattice fit ----
 
-constexpr int kStencil = 27;
-constexpr int kCentre = 13;
-
-struct Edge {
-    std::uint32_t lo, hi; // node indices, hi = lo + stride of the axis
-    double gap;           // wanted r[hi] - r[lo] at least
-};
-
-class LatticeSystem {
-public:
-    LatticeSystem(int n, double lambda, double mu)
-        : m_n(n), m_count(static_cast<std::size_t>(n) * n * n), m_lambda(lambda), m_mu(mu),
-          m_data(m_count * kStencil, 0.0) {}
-    std::size_t count() const { return m_count; }
-    std::vector<double>& data() { return m_data; }
-    void setPenalty(double kappa, std::vector<Edge> edges) {
-        m_kappa = kappa;
-        m_edges = std::move(edges);
-    }
-    const std::vector<Edge>& edges() const { return m_edges; }
-    double kappa() const { return m_kappa; }
-
-    void apply(const std::vector<double>& v, std::vector<double>& y) const {
-        const int n = m_n;
-        const std::ptrdiff_t nn = static_cast<std::ptrdiff_t>(n) * n;
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const std::ptrdiff_t i = r + n * (g + static_cast<std::ptrdiff_t>(n) * b);
-                    double acc = m_mu * v[static_cast<std::size_t>(i)];
-                    const double* row = &m_data[static_cast<std::size_t>(i) * kStencil];
-                    for (int db = -1; db <= 1; ++db) {
-                        if (b + db < 0 || b + db >= n)
-                            continue;
-                        for (int dg = -1; dg <= 1; ++dg) {
-                            if (g + dg < 0 || g + dg >= n)
-                                continue;
-                            for (int dr = -1; dr <= 1; ++dr) {
-                                if (r + dr < 0 || r + dr >= n)
-                                    continue;
-                                const double m = row[(dr + 1) + 3 * (dg + 1) + 9 * (db + 1)];
-                                if (m != 0.0)
-                                    acc +=
-                                        m * v[static_cast<std::size_t>(i + dr + n * dg + nn * db)];
-                            }
-                        }
-                    }
-                    y[static_cast<std::size_t>(i)] = acc;
-                }
-        // lambda * sum over axes of D2^T D2
-        const std::ptrdiff_t strides[3] = {1, n, nn};
-        for (int axis = 0; axis < 3; ++axis)
-            for (int b = 0; b < n; ++b)
-                for (int g = 0; g < n; ++g)
-                    for (int r = 0; r < n; ++r) {
-                        const int coord = axis == 0 ? r : axis == 1 ? g : b;
-                        if (coord < 1 || coord > n - 2)
-                            continue;
-                        const std::ptrdiff_t i = r + n * (g + static_cast<std::ptrdiff_t>(n) * b);
-                        const std::ptrdiff_t s = strides[axis];
-                        const double d = m_lambda * (v[static_cast<std::size_t>(i - s)] -
-                                                     2.0 * v[static_cast<std::size_t>(i)] +
-                                                     v[static_cast<std::size_t>(i + s)]);
-                        y[static_cast<std::size_t>(i - s)] += d;
-                        y[static_cast<std::size_t>(i)] -= 2.0 * d;
-                        y[static_cast<std::size_t>(i + s)] += d;
-                    }
-        for (const Edge& e : m_edges) {
-            const double d = m_kappa * (v[e.hi] - v[e.lo]);
-            y[e.hi] += d;
-            y[e.lo] -= d;
-        }
-    }
-
-    std::vector<double> diagonal() const {
-        const int n = m_n;
-        auto axisDiag = [n](int i) {
-            double s = 0.0;
-            if (i >= 1 && i <= n - 2)
-                s += 4.0;
-            if (i - 1 >= 1 && i - 1 <= n - 2)
-                s += 1.0;
-            if (i + 1 >= 1 && i + 1 <= n - 2)
-                s += 1.0;
-            return s;
-        };
-        std::vector<double> d(m_count);
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const std::size_t i = static_cast<std::size_t>(r + n * (g + n * b));
-                    d[i] = m_data[i * kStencil + kCentre] + m_mu +
-                           m_lambda * (axisDiag(r) + axisDiag(g) + axisDiag(b));
-                }
-        for (const Edge& e : m_edges) {
-            d[e.hi] += m_kappa;
-            d[e.lo] += m_kappa;
-        }
-        return d;
-    }
-
-private:
-    int m_n;
-    std::size_t m_count;
-    double m_lambda, m_mu;
-    std::vector<double> m_data;
-    double m_kappa = 0.0;
-    std::vector<Edge> m_edges;
-};
+// The regularised lattice least squares, shared with roundtrip/Fit.cpp.
+constexpr int kStencil = kLatticeStencil;
+using Edge = LatticeEdge;
+using LatticeSystem = LatticeLeastSquares;
 
 void solveCg(const LatticeSystem& sys, const std::vector<double>& rhs, std::vector<double>& x,
              int maxIterations, double tolerance) {
-    const std::size_t n = sys.count();
-    const std::vector<double> diag = sys.diagonal();
-    std::vector<double> r(n), z(n), p(n), q(n);
-    sys.apply(x, q);
-    double bnorm = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        r[i] = rhs[i] - q[i];
-        bnorm += rhs[i] * rhs[i];
-    }
-    bnorm = std::sqrt(bnorm);
-    if (bnorm == 0.0)
-        bnorm = 1.0;
-    double rz = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        z[i] = r[i] / diag[i];
-        p[i] = z[i];
-        rz += r[i] * z[i];
-    }
-    for (int it = 0; it < maxIterations; ++it) {
-        double rnorm = 0.0;
-        for (std::size_t i = 0; i < n; ++i)
-            rnorm += r[i] * r[i];
-        if (std::sqrt(rnorm) <= tolerance * bnorm)
-            break;
-        sys.apply(p, q);
-        double pq = 0.0;
-        for (std::size_t i = 0; i < n; ++i)
-            pq += p[i] * q[i];
-        if (!(pq > 0.0))
-            break;
-        const double alpha = rz / pq;
-        double rzNew = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            x[i] += alpha * p[i];
-            r[i] -= alpha * q[i];
-            z[i] = r[i] / diag[i];
-            rzNew += r[i] * z[i];
-        }
-        const double beta = rzNew / rz;
-        rz = rzNew;
-        for (std::size_t i = 0; i < n; ++i)
-            p[i] = z[i] + beta * p[i];
-    }
+    solveJacobiCg(sys, rhs, x, maxIterations, tolerance);
 }
 
 // Isotonic regression (pool adjacent violators, equal weights) of values[k] - gap * k, so the

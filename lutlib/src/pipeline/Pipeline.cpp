@@ -457,16 +457,4 @@ void Pipeline::runPixels(float* rgba, std::size_t count, const RunOptions& optio
     }
 }
 
-Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,
-                              const Lut3D* originalLut, Interpolation interp, int nthreads) {
-    Diagnostics d;
-    if (!storedIsLinear)
-        srgbDecode(frame, nthreads);
-    if (fromScreenshot) {
-        UngradeResult r = smashUngrade(frame, originalLut, interp, nthreads);
-        d = std::move(r.diagnostics);
-    }
-    return d;
-}
-
 } // namespace lut

@@ -10,11 +10,11 @@
 #include "lut/roundtrip/Embed.h"
 #include "lut/roundtrip/LutDigest.h"
 #include "lut/roundtrip/PatchFinder.h"
+#include "lut/smash/GameDisplay.h"
 #include "lut/smash/SmashAuthoring.h"
 #include "lut/smash/SmashConstants.h"
 #include "roundtrip/ExtractBounds.h"
 #include "roundtrip/ExtractChecks.h"
-#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

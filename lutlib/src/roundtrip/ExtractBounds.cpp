@@ -6,8 +6,8 @@
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/ErrorBound.h"
+#include "lut/smash/GameDisplay.h"
 #include "lut/smash/SmashConstants.h"
-#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <atomic>

@@ -2,7 +2,7 @@
 // Checks on a read patch before extract builds a LUT; see ExtractChecks.h.
 #include "roundtrip/ExtractChecks.h"
 
-#include "smash/GameDisplay.h"
+#include "lut/smash/GameDisplay.h"
 
 #include "lut/Math.h"
 #include "lut/io/Layout.h"

@@ -7,6 +7,7 @@
 #include "lut/Limits.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
+#include "ops/LatticeLeastSquares.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +28,8 @@ struct Sample {
     float y[3];         // edited value
 };
 
-// Offsets of the 27-point stencil: o = (dr+1) + 3(dg+1) + 9(db+1).
-constexpr int kStencil = 27;
-constexpr int kCentre = 13;
+// The normal equations' rows: 27 numbers per node (ops/LatticeLeastSquares.h).
+constexpr int kStencil = detail::kLatticeStencil;
 // Samples summed together before their sums are added to the normal equations (fitImpl).
 constexpr std::size_t kAssemblyBlock = 65536;
 
@@ -46,169 +46,7 @@ void cornerWeights(const float f[3], double w[8]) {
     }
 }
 
-class System {
-public:
-    System(int n, double lambda, double mu)
-        : m_n(n), m_count(std::size_t(n) * n * n), m_lambda(lambda), m_mu(mu) {
-        m_data.assign(m_count * kStencil, 0.0);
-    }
-    std::size_t count() const { return m_count; }
-    std::vector<double>& data() { return m_data; }
-
-    // Marks the nodes whose stencil row holds data (after assembly): most of a sparsely covered
-    // cube has none, and apply() skips those rows.
-    void finishAssembly() {
-        m_hasData.assign(m_count, 0);
-        for (std::size_t i = 0; i < m_count; ++i)
-            for (int o = 0; o < kStencil; ++o)
-                if (m_data[i * kStencil + o] != 0.0) {
-                    m_hasData[i] = 1;
-                    break;
-                }
-    }
-
-    // y = A v (data + lambda * smoothness + mu * I)
-    void apply(const std::vector<double>& v, std::vector<double>& y) const {
-        const int n = m_n;
-        const std::size_t nn = std::size_t(n) * n;
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const std::size_t i = std::size_t(r) + std::size_t(n) * g + nn * b;
-                    double acc = m_mu * v[i];
-                    if (m_hasData[i]) {
-                        const double* row = &m_data[i * kStencil];
-                        for (int db = -1; db <= 1; ++db) {
-                            if (b + db < 0 || b + db >= n)
-                                continue;
-                            for (int dg = -1; dg <= 1; ++dg) {
-                                if (g + dg < 0 || g + dg >= n)
-                                    continue;
-                                for (int dr = -1; dr <= 1; ++dr) {
-                                    if (r + dr < 0 || r + dr >= n)
-                                        continue;
-                                    const double m = row[(dr + 1) + 3 * (dg + 1) + 9 * (db + 1)];
-                                    if (m != 0.0)
-                                        acc += m * v[std::size_t(std::ptrdiff_t(i) + dr +
-                                                                 std::ptrdiff_t(n) * dg +
-                                                                 std::ptrdiff_t(nn) * db)];
-                                }
-                            }
-                        }
-                    }
-                    y[i] = acc;
-                }
-        if (m_lambda > 0.0)
-            addSmoothness(v, y);
-    }
-
-    std::vector<double> diagonal() const {
-        std::vector<double> d(m_count);
-        const int n = m_n;
-        auto axisDiag = [n](int i) {
-            double s = 0.0;
-            if (i >= 1 && i <= n - 2)
-                s += 4.0;
-            if (i - 1 >= 1 && i - 1 <= n - 2)
-                s += 1.0;
-            if (i + 1 >= 1 && i + 1 <= n - 2)
-                s += 1.0;
-            return s;
-        };
-        for (int b = 0; b < n; ++b)
-            for (int g = 0; g < n; ++g)
-                for (int r = 0; r < n; ++r) {
-                    const std::size_t i =
-                        std::size_t(r) + std::size_t(n) * (g + std::size_t(n) * b);
-                    d[i] = m_data[i * kStencil + kCentre] + m_mu +
-                           m_lambda * (axisDiag(r) + axisDiag(g) + axisDiag(b));
-                }
-        return d;
-    }
-
-private:
-    void addSmoothness(const std::vector<double>& v, std::vector<double>& y) const {
-        const int n = m_n;
-        const std::ptrdiff_t strides[3] = {1, n, std::ptrdiff_t(n) * n};
-        for (int axis = 0; axis < 3; ++axis) {
-            const std::ptrdiff_t s = strides[axis];
-            for (int b = 0; b < n; ++b)
-                for (int g = 0; g < n; ++g)
-                    for (int r = 0; r < n; ++r) {
-                        const int coord = axis == 0 ? r : axis == 1 ? g : b;
-                        if (coord < 1 || coord > n - 2)
-                            continue;
-                        const std::ptrdiff_t i =
-                            r + std::ptrdiff_t(n) * (g + std::ptrdiff_t(n) * b);
-                        const double d = m_lambda * (v[i - s] - 2.0 * v[i] + v[i + s]);
-                        y[i - s] += d;
-                        y[i] -= 2.0 * d;
-                        y[i + s] += d;
-                    }
-        }
-    }
-
-    int m_n;
-    std::size_t m_count;
-    double m_lambda;
-    double m_mu;
-    std::vector<double> m_data;
-    std::vector<std::uint8_t> m_hasData;
-};
-
-// Jacobi-preconditioned conjugate gradients; x holds the start and receives the solution.
-int solveCg(const System& sys, const std::vector<double>& diag, const std::vector<double>& rhs,
-            std::vector<double>& x, int maxIterations, double tolerance, bool& converged) {
-    const std::size_t n = sys.count();
-    std::vector<double> r(n), z(n), p(n), q(n);
-    sys.apply(x, q);
-    double bnorm = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        r[i] = rhs[i] - q[i];
-        bnorm += rhs[i] * rhs[i];
-    }
-    bnorm = std::sqrt(bnorm);
-    if (bnorm == 0.0)
-        bnorm = 1.0;
-    double rz = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        z[i] = r[i] / diag[i];
-        p[i] = z[i];
-        rz += r[i] * z[i];
-    }
-    converged = false;
-    int it = 0;
-    for (; it < maxIterations; ++it) {
-        double rnorm = 0.0;
-        for (std::size_t i = 0; i < n; ++i)
-            rnorm += r[i] * r[i];
-        if (std::sqrt(rnorm) <= tolerance * bnorm) {
-            converged = true;
-            break;
-        }
-        sys.apply(p, q);
-        double pq = 0.0;
-        for (std::size_t i = 0; i < n; ++i)
-            pq += p[i] * q[i];
-        if (!(pq > 0.0))
-            break; // cannot happen for an SPD system; guards round-off
-        const double alpha = rz / pq;
-        for (std::size_t i = 0; i < n; ++i) {
-            x[i] += alpha * p[i];
-            r[i] -= alpha * q[i];
-        }
-        double rzNew = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            z[i] = r[i] / diag[i];
-            rzNew += r[i] * z[i];
-        }
-        const double beta = rzNew / rz;
-        rz = rzNew;
-        for (std::size_t i = 0; i < n; ++i)
-            p[i] = z[i] + beta * p[i];
-    }
-    return it;
-}
+using System = detail::LatticeLeastSquares;
 
 void warn(FitResult& res, RoundtripWarning w, const std::string& message) {
     res.warnings.push_back(w);
@@ -486,10 +324,10 @@ FitResult fitImpl(const ImageView& before, const ImageView& after, const FitOpti
         bool conv[3] = {true, true, true};
         parallelFor(3, o.nthreads, [&](int begin, int end) {
             for (int c = begin; c < end; ++c) {
-                bool cv = false;
-                iterations[c] =
-                    solveCg(sys, diag, rhs[c], solution[c], o.maxIterations, o.tolerance, cv);
-                conv[c] = cv;
+                const detail::CgResult cg = detail::solveJacobiCg(sys, diag, rhs[c], solution[c],
+                                                                  o.maxIterations, o.tolerance);
+                iterations[c] = cg.iterations;
+                conv[c] = cg.converged;
             }
         });
         res.iterations += std::max({iterations[0], iterations[1], iterations[2]});

@@ -6,7 +6,7 @@
 #include "lut/Quantize.h"
 #include "lut/interp/Sampler.h"
 #include "lut/roundtrip/SmushStrip.h"
-#include "smash/GameDisplay.h"
+#include "lut/smash/GameDisplay.h"
 
 #include <string>
 

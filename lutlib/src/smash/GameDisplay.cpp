@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The game's display model in double; see GameDisplay.h.
-#include "smash/GameDisplay.h"
+#include "lut/smash/GameDisplay.h"
 
 #include "lut/Math.h"
 #include "lut/smash/SmashConstants.h"

@@ -5,8 +5,8 @@
 #include "lut/Parallel.h"
 #include "lut/Quantize.h"
 #include "lut/ops/ErrorBound.h"
+#include "lut/smash/GameDisplay.h"
 #include "lut/smash/SmashConstants.h"
-#include "smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "smash/GameSamples.h"
 
 #include "lut/Parallel.h"
-#include "smash/GameDisplay.h"
+#include "lut/smash/GameDisplay.h"
 
 #include <algorithm>
 #include <cmath>

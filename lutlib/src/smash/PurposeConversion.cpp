@@ -7,8 +7,8 @@
 #include "lut/Math.h"
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
+#include "lut/smash/GameDisplay.h"
 #include "lut/smash/SmashConstants.h"
-#include "smash/GameDisplay.h"
 
 #include <glm/common.hpp>
 

@@ -3,8 +3,8 @@
 
 #include "lut/Error.h"
 #include "lut/interp/Sampler.h"
+#include "lut/smash/GameDisplay.h"
 #include "lut/smash/SmashConstants.h"
-#include "smash/GameDisplay.h"
 
 #include <vector>
 

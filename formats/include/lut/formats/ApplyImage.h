@@ -9,8 +9,8 @@
 // header attributes, PNG chunks, TIFF/EXIF tags, ICC profile), unless options say otherwise or
 // the output format cannot hold it (reported as a diagnostic).
 #include "lut/Error.h"
-#include "lut/PixelChain.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/interp/PixelChain.h"
 #include "lut/io/OutputPolicy.h"
 
 #include <cstdint>

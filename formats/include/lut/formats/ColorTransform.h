@@ -10,10 +10,10 @@
 //
 // Every colour space may be a name, an alias or a role of the config (lut/formats/ColorConfig.h).
 #include "lut/Lut3D.h"
-#include "lut/PixelChain.h"
 #include "lut/PixelProcessor.h"
 #include "lut/formats/ColorConfig.h"
 #include "lut/interp/Interpolation.h"
+#include "lut/interp/PixelChain.h"
 
 #include <cstddef>
 #include <memory>
@@ -83,9 +83,9 @@ ColorPlan planColor(const ColorSpec& spec);
 // display-encoded sRGB to --to. --lut-space, --lut-output-space, --display and --view are refused.
 ColorPlan planPreviewColor(const ColorSpec& spec);
 
-// The chain `lutkit apply` runs on every chunk of pixels (lut/PixelChain.h): the conversion into
-// the LUT's space (a step before the LUT), the LUT (whose domain the chain watches: values outside
-// it are counted, since the sampler clamps them), the conversion out (a step after it).
+// The chain `lutkit apply` runs on every chunk of pixels (lut/interp/PixelChain.h): the conversion
+// into the LUT's space (a step before the LUT), the LUT (whose domain the chain watches: values
+// outside it are counted, since the sampler clamps them), the conversion out (a step after it).
 PixelChain lutPixelChain(const ColorPlan& plan, const Lut3D& lut, Interpolation interp);
 // The same for a LUT file as it is meant to be applied: its 1D shaper, then its table, exactly.
 PixelChain lutPixelChain(const ColorPlan& plan, const LutFile& file, Interpolation interp);

@@ -160,12 +160,4 @@ private:
     std::vector<std::unique_ptr<Stage>> m_stages;
 };
 
-// Turns stored pixel values into the scene frame the pipeline expects, in place: sRGB decode
-// when the values are display-encoded (8/16-bit screenshots), then, for a screenshot taken in
-// game, undo the game's grading with originalLut (null = neutral; see smashUngrade). Returns the
-// notes to show (bloom cannot be undone).
-Diagnostics prepareSceneFrame(const ImageView& frame, bool storedIsLinear, bool fromScreenshot,
-                              const Lut3D* originalLut,
-                              Interpolation interp = Interpolation::Trilinear, int nthreads = 0);
-
 } // namespace lut

@@ -28,7 +28,8 @@ struct SceneEvidence {
     std::string format;     // the file format's name ("png", "openexr", ...), for the reason
 };
 
-// The decision and how to prepare the frame for the pipeline (lut::prepareSceneFrame).
+// The decision and how to prepare the frame for the pipeline (lut/pipeline/PreviewPlan.h:
+// planPreview, preparePreviewFrame).
 struct SceneDecision {
     SceneKind kind = SceneKind::Screenshot;
     bool forced = false;         // the user chose it (--from-screenshot / --scene)

@@ -9,10 +9,10 @@
 //     entry(d) = smashShownColour(s, gameLut)      (lut/smash/SmashAuthoring.h: the game's
 //                                                   grading + brighten + display, clipped)
 //
-// The inverse view of smashLutForDisplayEdit (lut/smash/SmashDisplayEdit.h): a game LUT made
-// from an edit shows that edit here, to the authoring error. This is how a .nutexb is judged by
-// the look it gives (lutkit check, the quiet check after writing one): the table's own numbers
-// are compensated for the brighten pass (compressed under 0.73 and clipped there).
+// The inverse view of the exact composition (authorSmashLutForEdit, lut/smash/SmashAuthoring.h):
+// a game LUT made from an edit shows that edit here, to the authoring error. This is how a .nutexb
+// is judged by the look it gives (lutkit check, the quiet check after writing one): the table's own
+// numbers are compensated for the brighten pass (compressed under 0.73 and clipped there).
 #include "lut/Lut3D.h"
 
 namespace lut {

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Internal to lutlib: what the game displays, in double precision, for authoring game LUTs (the
-// round trip's extract, the Smash compensation of an edit). Built on the pipeline's constants
-// (lut/smash/SmashConstants.h, docs/specs/smash-pipeline.md sections 2 and 3), so the float
-// pipeline and this model cannot drift apart. Kept in double because authoring runs it once per
-// lattice point or sample and the checks compare against it.
+// What the game displays, in double precision, for authoring game LUTs (the round trip's extract
+// and its patch lattice, the Smash compensation of an edit, the measures): the smash room's one
+// display model, public so the round trip reads it through this header. In lut::detail (the
+// names are short and lutlib's own; match's working space has its own srgbDecodeExtended). Built on
+// the pipeline's constants (lut/smash/SmashConstants.h, docs/specs/smash-pipeline.md sections 2 and
+// 3), so the float pipeline and this model cannot drift apart. Kept in double because authoring
+// runs it once per lattice point or sample and the checks compare against it.
 
 namespace lut::detail {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "lut/PixelChain.h"
+#include "lut/interp/PixelChain.h"
 
 #include "core/simd/DomainCheck.h"
 #include "lut/interp/Sampler.h"
