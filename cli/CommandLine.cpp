@@ -17,6 +17,7 @@
 #include "lut/Version.h"
 #include "lut/formats/ColorConfig.h"
 #include "lut/formats/LibraryMessages.h"
+#include "lut/formats/RequestError.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/MemoryLimit.h"
 #include "lut/io/TempFiles.h"
@@ -334,6 +335,9 @@ int CommandLine::run(const std::vector<std::string>& args) {
         if (!e.value().empty())
             if (const auto guess = closestWord(e.value(), e.known()))
                 std::cerr << commandPrefix() << "did you mean '" << *guess << "'?\n";
+        return kExitUsage;
+    } catch (const formats::RequestError& e) { // the library: a request that cannot be, bad usage
+        std::cerr << commandPrefix() << printable(e.what()) << "\n";
         return kExitUsage;
     } catch (const Error& e) { // the library: bad input or a failed operation
         std::cerr << "lutkit: error: " << printable(e.what()) << "\n";

@@ -142,17 +142,14 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
 }
 
 ResultPurpose resultPurpose(const PurposeDecision& a, const PurposeDecision& b,
-                            std::optional<LutPurpose> given, const std::string& output,
-                            const std::string& format) {
+                            const formats::LutDestination& out) {
     ResultPurpose r;
-    if (given) {
-        r.to = *given;
+    if (out.purpose) {
+        r.to = *out.purpose;
         r.known = true;
-        r.why = "--target";
-    } else if (extensionOf(output) == ".nutexb" || format == "nutexb") {
-        r.to = LutPurpose::Smash;
-        r.known = true;
-        r.why = "the output is a .nutexb, the game's LUT";
+        r.why = out.purposeFrom == formats::DestinationPurpose::Said
+                    ? "--target"
+                    : "the output is a .nutexb, the game's LUT";
     } else {
         r.to = a.purpose;
         r.known = a.source != PurposeSource::Assumed || b.purpose != a.purpose;
@@ -171,7 +168,9 @@ PurposedPair readPurposedPair(const std::string& a, const std::string& b,
     p.bPath = b;
     p.a = readLutTable(a, verbosity, &p.pa, given);
     p.b = readLutTable(b, verbosity, &p.pb, given);
-    p.out = resultPurpose(p.pa, p.pb, purposeOption(target), output, format);
+    p.out = resultPurpose(p.pa, p.pb,
+                          formats::resolveLutDestination(
+                              {output, format, purposeOption(target), 0, std::nullopt, 0}));
     return p;
 }
 

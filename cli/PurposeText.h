@@ -8,6 +8,7 @@
 #include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
 #include "lut/formats/Convert.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/smash/PurposeConversion.h"
 #include "lut/smash/PurposeOps.h"
@@ -60,17 +61,17 @@ PurposedLut lutFor(const LutFile& file, const std::string& path, LutPurpose want
                    std::optional<LutPurpose> given, const std::string& flag,
                    const PurposeOptions& options, const Verbosity& verbosity);
 
-// What the result of compose or mix is for: --target, else smash for a .nutexb output, else
-// what A is for. `known` says whether the output may say so (not when A's purpose was only
-// assumed and nothing was converted); `why` is the reason printed.
+// What the result of compose or mix is for: what its destination fixes (--target, else smash
+// for the game's format: lut/formats/LutDestination.h), else what A is for. `known` says whether
+// the output may say so (not when A's purpose was only assumed and nothing was converted); `why` is
+// the reason printed.
 struct ResultPurpose {
     LutPurpose to = LutPurpose::Raw;
     bool known = false;
     std::string why;
 };
 ResultPurpose resultPurpose(const PurposeDecision& a, const PurposeDecision& b,
-                            std::optional<LutPurpose> given, const std::string& output,
-                            const std::string& format);
+                            const formats::LutDestination& out);
 // What compose and mix share: A and B read with what they are for (--in-target), what OUT is for
 // (--target), and after the operation its report and the purpose the output says.
 struct PurposedPair {

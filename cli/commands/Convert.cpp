@@ -17,11 +17,11 @@
 #include "lut/formats/Hald.h"
 #include "lut/formats/ImageFiles.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/OcioFiles.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
-#include "lut/io/FormatRegistry.h"
 
 #include <CLI/CLI.hpp>
 
@@ -103,8 +103,8 @@ void printReport(const ConvertOptions& o, const formats::ConvertReport& r) {
     const formats::PurposeStep& p = r.purpose;
     std::cout << "purpose  in:  " << p.input.text("--in-target") << "\n"
               << "         out: " << toString(p.output)
-              << (p.outputGiven ? " (--target)"
-                  : r.outputFormat == "nutexb"
+              << (p.outputFrom == formats::DestinationPurpose::Said ? " (--target)"
+                  : p.outputFrom == formats::DestinationPurpose::GameFormat
                       ? p.input.purpose == LutPurpose::Raw
                             ? " (the output is a .nutexb, the game's LUT; --target raw writes IN "
                               "as it is)"
@@ -173,13 +173,12 @@ int runConvert(const ConvertOptions& o) {
     }
     const std::optional<LutPurpose> outPurpose = purposeOption(o.target);
     const std::optional<LutPurpose> inPurpose = purposeOption(o.inTarget);
-    // The options that make a game LUT from an edit need a smash output: asked for, or a .nutexb.
-    formats::registerBuiltinFormats();
-    const Format* writer = o.format.empty() ? FormatRegistry::instance().writerForPath(o.output)
-                                            : FormatRegistry::instance().byName(o.format);
-    const bool smashOut =
-        outPurpose ? *outPurpose == LutPurpose::Smash : writer && writer->name() == "nutexb";
-    if (!smashOut && (!o.originalLut.empty() || !o.screenshot.empty() || o.refine))
+    // Where OUT goes, decided by the library (lut/formats/LutDestination.h): its writer, what it
+    // is for, its lattice and layout (--level: a Hald image). The options that make a game LUT
+    // from an edit need a smash output: asked for, or the game's format.
+    const formats::LutDestination dest =
+        formats::resolveLutDestination({o.output, o.format, outPurpose, o.size, o.layout, o.level});
+    if (!dest.forGame() && (!o.originalLut.empty() || !o.screenshot.empty() || o.refine))
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
     if (o.layout)
         if (const std::string problem = layoutSizeProblem(*o.layout, o.size); !problem.empty())
@@ -217,21 +216,8 @@ int runConvert(const ConvertOptions& o) {
     co.read.layout = o.inLayout;
     if (!o.cccid.empty())
         co.read.setAttribute(formats::kOcioCccIdAttribute, o.cccid);
-    co.write.layout = o.layout;
-    co.write.size = o.size;
-    if (o.level) {
-        if (o.layout && *o.layout != LutLayout::Hald)
-            throw UsageError(std::string("--level is a Hald level; the layout is ") +
-                             toString(*o.layout) + " (use --size)");
-        const bool image = o.format.empty() ? formats::isImageExtension(o.output)
-                                            : o.format == "hald" || o.format == "strip";
-        if (!image)
-            throw UsageError("--level is a Hald level; " + o.output +
-                             " is not a LUT image (use --size)");
-        co.write.size = o.level * o.level;
-        if (o.format != "hald")
-            co.write.layout = LutLayout::Hald;
-    }
+    co.write.layout = dest.layout;
+    co.write.size = dest.size;
     co.write.bitDepth = o.bitDepth;
     co.write.dither = o.dither;
     if (!o.name.empty())
@@ -247,10 +233,9 @@ int runConvert(const ConvertOptions& o) {
     formats::ConvertReport report;
     try {
         report = formats::convertLut(o.input, o.output, co);
-    } catch (const Error& e) {
-        if (std::string(e.what()).rfind("the game's LUT is ", 0) == 0)
-            throw UsageError(std::string(e.what()) + ": --size does not apply to --target smash");
-        throw;
+    } catch (
+        const formats::RequestError& e) { // the one convertLut throws: a size for the game's LUT
+        throw UsageError(std::string(e.what()) + ": --size does not apply to --target smash");
     }
     warnPurposeFromContent(o.input, report.purpose.input, "--in-target", o.verbosity);
     if (o.json)

@@ -13,6 +13,7 @@
 
 #include "lut/formats/Convert.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
@@ -94,18 +95,18 @@ int runConvertBatch(const ConvertOptions& o) {
     if (o.layout)
         if (const std::string problem = layoutSizeProblem(*o.layout, o.size); !problem.empty())
             throw UsageError(problem);
-    formats::registerBuiltinFormats();
-    const auto& registry = FormatRegistry::instance();
-    const std::string format = o.format.empty() ? "nutexb" : o.format;
-    const Format* writer = registry.byName(format);
-    if (!writer || !writer->canWrite())
+    // Where each LUT goes (lut/formats/LutDestination.h): --format, by default the game's.
+    const std::string format = o.format.empty() ? formats::kGameLutFormat : o.format;
+    const std::optional<LutPurpose> asked = purposeOption(o.target);
+    const formats::LutDestination dest =
+        formats::resolveLutDestination({o.output, format, asked, o.size, o.layout, 0});
+    const Format* writer = dest.writer;
+    if (!writer)
         throw UsageError("--format " + format + ": no such writer");
+    const auto& registry = FormatRegistry::instance();
     const std::string ext =
         writer->extensions().empty() ? std::string(".png") : writer->extensions().front();
-    const bool gameOut = writer->name() == "nutexb";
-    const std::optional<LutPurpose> asked = purposeOption(o.target);
-    if ((!o.originalLut.empty() || !o.screenshot.empty() || o.refine) &&
-        (asked ? *asked == LutPurpose::Raw : !gameOut))
+    if ((!o.originalLut.empty() || !o.screenshot.empty() || o.refine) && !dest.forGame())
         throw UsageError("--original-lut, --screenshot and --refine are for --target smash");
     // What every file is converted with: what each is for (its tag, a .nutexb, --in-target),
     // what OUT is for (--target, else the game's for a .nutexb), the stage and screenshot.

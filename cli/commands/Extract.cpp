@@ -10,6 +10,7 @@
 #include "WrittenCheck.h"
 
 #include "lut/formats/ExtractFile.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/Layout.h"
@@ -25,11 +26,8 @@ namespace lut::cli {
 
 namespace {
 
-bool isGameOutput(const ExtractOptions& o) {
-    return extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
-}
-
-void writeOut(const ExtractOptions& o, Lut3D lut, LutPurpose purpose) {
+void writeOut(const ExtractOptions& o, const formats::LutDestination& dest, Lut3D lut,
+              LutPurpose purpose) {
     LutFile file;
     file.cube = std::move(lut);
     file.purpose = purpose; // the output says what it is for (lut/LutPurpose.h)
@@ -38,7 +36,7 @@ void writeOut(const ExtractOptions& o, Lut3D lut, LutPurpose purpose) {
     const Diagnostics wd = formats::writeLut(o.output, file, fo, o.format);
     printDiagnostics(std::cerr, wd, o.verbosity, "lutkit: ");
     std::cout << "wrote " << file.cube->size() << "^3 " << toString(purpose) << " LUT: " << o.output
-              << (purpose == LutPurpose::Smash && !isGameOutput(o)
+              << (purpose == LutPurpose::Smash && !dest.gameFormat()
                       ? " (it says " + purposeTag(purpose) +
                             ": convert and preview take it as "
                             "the game's LUT)"
@@ -56,14 +54,14 @@ int runExtract(const ExtractOptions& o) {
             std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
+    // Where OUT goes and what it is for (lut/formats/LutDestination.h).
+    const formats::LutDestination dest = formats::resolveLutDestination(
+        {o.output, o.format, purposeOption(o.target), o.size, o.layout, 0});
     formats::ExtractFileOptions fo;
     lut::ExtractOptions& eo = fo.extract;
-    if (!o.target.empty()) {
-        eo.target = parseLutPurpose(o.target);
-    } else if (isGameOutput(o)) {
-        eo.target = LutPurpose::Smash;
+    eo.target = dest.purpose;
+    if (dest.purposeFrom == formats::DestinationPurpose::GameFormat)
         eo.targetReason = "the output is a .nutexb, the game's LUT; --target raw writes the edit";
-    }
     if (!o.originalLut.empty() && eo.target && *eo.target == LutPurpose::Raw)
         throw UsageError("--original-lut is for --target smash: a raw LUT does not depend on the "
                          "stage's LUT");
@@ -110,7 +108,7 @@ int runExtract(const ExtractOptions& o) {
             w.stage = o.originalLut.empty() ? "neutral" : o.originalLut;
             printConversion(std::cout, *r.conversion, w);
         }
-        writeOut(o, std::move(r.lut), r.purpose);
+        writeOut(o, dest, std::move(r.lut), r.purpose);
         return kExitOk;
     }
     if (r.source == formats::ExtractSource::SmushStrip && !o.verbosity.quiet)
@@ -136,7 +134,7 @@ int runExtract(const ExtractOptions& o) {
     if (res.target == LutPurpose::Smash && res.clampedEntries > 0)
         std::cout << "clamped " << res.clampedEntries << " values (farthest "
                   << res.clampedMax * 255.0 << " 8-bit steps outside [0,1])\n";
-    writeOut(o, std::move(r.lut), r.purpose);
+    writeOut(o, dest, std::move(r.lut), r.purpose);
     return kExitOk;
 }
 

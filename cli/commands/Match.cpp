@@ -10,6 +10,7 @@
 #include "lut/LutPurpose.h"
 #include "lut/Version.h"
 #include "lut/formats/ImageIO.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
 #include "lut/io/StdStreams.h"
@@ -149,8 +150,11 @@ int runMatch(const MatchCommandOptions& o) {
         throw UsageError("--mask-reference is given " + std::to_string(o.maskReferences.size()) +
                          " times for " + std::to_string(o.references.size()) +
                          " reference(s): the n-th masks the n-th REFERENCE");
-    const bool gameOut = extensionOf(o.output) == ".nutexb" || o.format == "nutexb";
-    const bool smash = !o.target.empty() ? parseLutPurpose(o.target) == LutPurpose::Smash : gameOut;
+    // Where OUT goes and what it is for (lut/formats/LutDestination.h): the game's LUT when
+    // --target says so or OUT is the game's format.
+    const bool smash = formats::resolveLutDestination(
+                           {o.output, o.format, purposeOption(o.target), o.size, o.layout, 0})
+                           .forGame();
     if (!smash && !o.originalLut.empty())
         throw UsageError("--original-lut is for --target smash");
     if (!beginOutput(o.output, o.overwrite, inputs, o.verbosity.quiet))

@@ -8,6 +8,7 @@
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/formats/Hald.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -47,13 +48,6 @@ const Format* formatNamed(const std::string& name) {
 
 } // namespace
 
-LutPurpose outputPurpose(LutPurpose input, std::optional<LutPurpose> given,
-                         const std::string& writerName) {
-    if (given)
-        return *given;
-    return writerName == "nutexb" ? LutPurpose::Smash : input;
-}
-
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options) {
     const auto tStart = Clock::now();
@@ -67,12 +61,12 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     registerBuiltinFormats();
     if (!options.inFormat.empty())
         (void)formatNamed(options.inFormat);
-    const Format* writer = options.outFormat.empty()
-                               ? FormatRegistry::instance().writerForPath(output)
-                               : formatNamed(options.outFormat);
-    if (!writer || !writer->canWrite())
-        throw Error(output + ": no format writes '" + extensionOf(output) +
-                    "' files (name the output format: --format)");
+    if (!options.outFormat.empty())
+        (void)formatNamed(options.outFormat);
+    // Where the output goes and what it is for (lut/formats/LutDestination.h).
+    const LutDestination dest = resolveLutDestination(
+        {output, options.outFormat, options.outPurpose, wantSize, options.write.layout, 0});
+    const Format* writer = &dest.requireWriter();
 
     ConvertReport report;
     report.outputFormat = writer->name();
@@ -81,7 +75,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // the whole processor, instead of being resampled afterwards.
     // (Not when the table is to change purpose: the edit is then evaluated at the game's
     // colours, from the file's own lattice.)
-    const bool mayConvert = options.outPurpose || options.inPurpose || writer->name() == "nutexb";
+    const bool mayConvert = dest.purpose || options.inPurpose;
     FormatOptions readOptions = options.read;
     if (readOptions.size == 0 && !mayConvert)
         readOptions.size = wantSize ? wantSize : writer->fixedSizeFor(options.write);
@@ -95,8 +89,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // What the input is for and what the output is for.
     PurposeStep& step = report.purpose;
     step.input = decidePurpose(report.input, options.inPurpose);
-    step.output = outputPurpose(step.input.purpose, options.outPurpose, writer->name());
-    step.outputGiven = options.outPurpose.has_value();
+    step.output = dest.purposeFor(step.input.purpose);
+    step.outputFrom = dest.purposeFrom;
 
     // The strength blends the edit (lut/ops/Strength.h): a raw input before it is made into the
     // game's LUT (the game shows the blend), the edit a game LUT makes after it is made; a LUT
@@ -122,8 +116,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // The table for the output's purpose.
     if (step.output != step.input.purpose) {
         if (step.output == LutPurpose::Smash && wantSize != 0 && wantSize != kSmashLutSize)
-            throw Error("the game's LUT is " + std::to_string(kSmashLutSize) +
-                        "^3: another size does not apply to it");
+            throw RequestError("the game's LUT is " + std::to_string(kSmashLutSize) +
+                               "^3: another size does not apply to it");
         PurposeOptions po = options.purpose;
         const int fixed = writer->fixedSizeFor(options.write);
         if (step.output == LutPurpose::Raw)
@@ -140,7 +134,8 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // The output says what it is for when that is known: the file or the user said it, or the
     // table was made for it (an assumption is not turned into a statement).
     const bool known = step.input.source != PurposeSource::Assumed || step.conversion ||
-                       step.outputGiven || step.output == LutPurpose::Smash;
+                       step.outputFrom == DestinationPurpose::Said ||
+                       step.output == LutPurpose::Smash;
     converted.purpose = known ? std::optional<LutPurpose>(step.output) : std::nullopt;
     const LutFile& in = converted;
 
@@ -150,9 +145,7 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     if (targetSize == 0)
         targetSize = sourceSize; // 0 stays 0 for a pure 1D file: the writer decides
     // A Hald image holds N = L^2 only: resample once, to the size it will hold.
-    const bool hald = writer->name() == "hald" ||
-                      (options.write.layout == LutLayout::Hald && writer->name() == "strip");
-    if (hald && targetSize != 0 && haldSizeFor(targetSize) != targetSize) {
+    if (dest.hald && targetSize != 0 && haldSizeFor(targetSize) != targetSize) {
         const int held = haldSizeFor(targetSize);
         sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
                              std::to_string(targetSize) +

@@ -11,6 +11,7 @@
 #include "lut/Limits.h"
 #include "lut/Math.h"
 #include "lut/formats/Cube.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -208,13 +209,13 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
     const auto tStart = Clock::now();
     registerBuiltinFormats();
     auto& registry = FormatRegistry::instance();
-    const Format* writer =
-        o.format.empty() ? registry.writerForPath(output) : registry.byName(o.format);
-    if (!o.format.empty() && !writer)
+    if (!o.format.empty() && !registry.byName(o.format))
         throw ColorOptionError("unknown format '" + o.format + "'", "output format", o.format);
-    if (!writer || !writer->canWrite())
-        throw Error(output + ": no format writes '" + extensionOf(output) +
-                    "' files (name the output format: --format)");
+    // Where the bake goes (lut/formats/LutDestination.h): the writer of --format or of the
+    // output's extension. A bake says nothing of what it is for.
+    const LutDestination dest =
+        resolveLutDestination({output, o.format, std::nullopt, o.cubeSize, o.write.layout, 0});
+    const Format* writer = &dest.requireWriter();
     if (o.cubeSize != 0 && (o.cubeSize < limits::kMin3DSize || o.cubeSize > limits::kMax3DSize))
         throw ColorOptionError("cube size " + std::to_string(o.cubeSize) + " is outside " +
                                std::to_string(limits::kMin3DSize) + ".." +

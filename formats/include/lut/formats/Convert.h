@@ -14,6 +14,7 @@
 #include "lut/ErrorStats.h"
 #include "lut/LutFile.h"
 #include "lut/LutPurpose.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/FormatOptions.h"
 #include "lut/ops/Strength.h"
@@ -34,8 +35,8 @@ struct ConvertOptions {
     Interpolation interp = Interpolation::Tetrahedral; // for resampling
     // What the input is for: nullopt = what the file says (its tag, a .nutexb), else raw.
     std::optional<LutPurpose> inPurpose;
-    // What the output is for: nullopt = smash for a .nutexb output (the game applies it), else
-    // the input's.
+    // What the output is for: nullopt = the destination's rule (lut/formats/LutDestination.h:
+    // smash for the game's format, else the input's).
     std::optional<LutPurpose> outPurpose;
     // raw <-> smash: the stage LUT, the screenshot, the refinement, the rule above white.
     PurposeOptions purpose;
@@ -48,14 +49,9 @@ struct ConvertOptions {
 struct PurposeStep {
     PurposeDecision input;
     LutPurpose output = LutPurpose::Raw;
-    bool outputGiven = false;                    // asked for (--target); else the rule above
-    std::optional<PurposeConversion> conversion; // when the purposes differ
+    DestinationPurpose outputFrom = DestinationPurpose::Input; // said, the game's format, as IN
+    std::optional<PurposeConversion> conversion;               // when the purposes differ
 };
-
-// The output's purpose for an input purpose: `given`, else smash for a writer of the game's
-// format (nutexb), else the input's.
-LutPurpose outputPurpose(LutPurpose input, std::optional<LutPurpose> given,
-                         const std::string& writerName);
 
 struct ResampleStep {
     int from = 0; // input lattice size
@@ -84,10 +80,11 @@ struct ConvertReport {
 
 // Reads `input`, blends it with neutral when options.strength asks (the edit: before it is made
 // into the game's LUT, after a game LUT is made into its edit), turns it into the output's purpose
-// (a game LUT is 16^3: a size other than 16 for it is an error), resamples when the output stores
-// another size, writes `output`, reads it back and measures. Throws lut::Error for an unknown
-// format name, an output extension no format writes, an unreadable input, a size outside
-// lut/Limits.h, or a failed write (the old output, if any, is left as it was).
+// (a game LUT is 16^3: another size asked for it throws RequestError, bad usage), resamples
+// when the output stores another size, writes `output`, reads it back and measures. Throws
+// lut::Error for an unknown format name, an output extension no format writes, an unreadable
+// input, a size outside lut/Limits.h, or a failed write (the old output, if any, is left as it
+// was).
 ConvertReport convertLut(const std::string& input, const std::string& output,
                          const ConvertOptions& options = {});
 
