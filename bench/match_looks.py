@@ -5,10 +5,13 @@
 # reference is the graded picture with its pixels shuffled (no correspondence left), and the
 # distance of each result from the truly graded picture is measured here in numpy, mean and p99 of
 # every channel value in 8-bit steps:
-#   auto / hm-mkl-hm   `lutkit match` (the default .cube) applied by `lutkit apply`;
-#   plain              a plain HM-MKL-HM (bench/match_numpy.py's maths: np.unique and np.interp per
-#                      channel, MKL by eigh, float64) tabulated at the same size as a 3D .cube,
-#                      applied by ffmpeg's lut3d (tetrahedral): the floor auto must not lose to.
+#   auto / hm-mkl-hm   `lutkit match`'s default .cube;
+#   plain              a plain HM-MKL-HM (bench/plain_transfer.py: np.unique and np.interp per
+#                      channel, MKL by eigh, float64) tabulated at the same size as a 3D .cube:
+#                      the floor auto must not lose to.
+# Every LUT is applied by the same outside program, ffmpeg's lut3d (tetrahedral), in float, and
+# rounded to 8 bits here (ffmpeg's 8-bit output truncates, half a step down on average); a .cube
+# with a 1D shaper, which ffmpeg does not read, by `lutkit apply` (16 bits, rounded here).
 # Looks:
 #   mix      ffmpeg: per-channel curves, then a saturation matrix (colorchannelmixer)
 #   poster   ImageMagick: grey, posterised to 4 levels, mapped to a 4-tone green palette (-clut)
@@ -20,36 +23,18 @@
 # --check: exit 1 when auto is further than the plain HM-MKL-HM on mean or p99 in any case;
 # --require: exit 1 when auto is further than MEAN / P99 steps from the truth in any case
 # (tests/cli/test_match_looks.cpp runs both).
+import json
 import os
 import subprocess
 import sys
 import tempfile
 import time
-import json
 
 import numpy as np
 
-
-
-def read_ppm(path):
-    """An 8-bit P6 PPM as ImageMagick and ffmpeg write it, values in [0, 1]."""
-    with open(path, "rb") as f:
-        data = f.read()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b"#":
-            pos = data.index(b"\n", pos) + 1
-            continue
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    w, h = int(fields[1]), int(fields[2])
-    px = np.frombuffer(data, dtype=np.uint8, count=w * h * 3, offset=pos + 1)
-    return px.reshape(-1, 3).astype(np.float64) / 255.0
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plain_transfer import (ffmpeg_apply, lutkit_apply, plain_transfer, read_ppm,  # noqa: E402
+                            write_cube)
 
 PALETTE = ["#0f380f", "#306230", "#8bac0f", "#9bbc0f"]
 
@@ -91,43 +76,8 @@ def ppm_size(path):
     return int(out[0]), int(out[1])
 
 
-def curve(src, ref):
-    """The plain histogram match of one channel as a function (np.interp of the CDFs)."""
-    s_values, s_counts = np.unique(src, return_counts=True)
-    r_values, r_counts = np.unique(ref, return_counts=True)
-    s_cdf = np.cumsum(s_counts) / s_counts.sum()
-    r_cdf = np.cumsum(r_counts) / r_counts.sum()
-    return lambda x: np.interp(np.interp(x, s_values, s_cdf), r_cdf, r_values)
-
-
-def plain_cube(src, ref, size, path):
-    """Plain HM-MKL-HM fitted on the pictures and tabulated on a size^3 lattice as a .cube."""
-    h1 = [curve(src[:, c], ref[:, c]) for c in range(3)]
-    u = np.stack([h1[c](src[:, c]) for c in range(3)], axis=1)
-    a, b = np.cov(u.T), np.cov(ref.T)
-    da2, ua = np.linalg.eigh(a)
-    da = np.sqrt(np.maximum(da2, 1e-10))
-    c_ = np.diag(da) @ ua.T @ b @ ua @ np.diag(da)
-    dc2, uc = np.linalg.eigh(c_)
-    dc = np.sqrt(np.maximum(dc2, 1e-10))
-    t = ua @ np.diag(1.0 / da) @ uc @ np.diag(dc) @ uc.T @ np.diag(1.0 / da) @ ua.T
-    mu, mr = u.mean(axis=0), ref.mean(axis=0)
-    mixed = (u - mu) @ t + mr
-    h2 = [curve(mixed[:, c], ref[:, c]) for c in range(3)]
-    g = np.linspace(0.0, 1.0, size)
-    bb, gg, rr = np.meshgrid(g, g, g, indexing="ij")  # red fastest in the file
-    x = np.stack([rr.ravel(), gg.ravel(), bb.ravel()], axis=1)
-    y = np.stack([h1[c](x[:, c]) for c in range(3)], axis=1)
-    y = (y - mu) @ t + mr
-    y = np.stack([h2[c](y[:, c]) for c in range(3)], axis=1)
-    with open(path, "w") as f:
-        f.write("LUT_3D_SIZE %d\n" % size)
-        for v in y:
-            f.write("%.6f %.6f %.6f\n" % tuple(v))
-
-
-def steps(got_ppm, truth):
-    d = np.abs(read_ppm(got_ppm) * 255.0 - truth * 255.0)
+def steps(got, truth):
+    d = np.abs(got * 255.0 - truth * 255.0)
     return d.mean(), np.percentile(d, 99)
 
 
@@ -175,11 +125,8 @@ def main():
             write_ppm(p("ref.ppm"), shuffled, w, h)
             run("convert", p("ref.ppm"), p("ref.png"))
             no = np.abs(src - truth).mean() * 255.0
-            plain_cube(src, shuffled, size, p("plain.cube"))
-            run("ffmpeg", "-v", "error", "-y", "-i", p("src.png"), "-vf",
-                "lut3d=file=%s:interp=tetrahedral" % p("plain.cube"), "-pix_fmt", "rgb24",
-                "-frames:v", "1", "-update", "1", p("plain.ppm"))
-            plain = steps(p("plain.ppm"), truth)
+            write_cube(plain_transfer(src, shuffled), size, p("plain.cube"))
+            plain = steps(ffmpeg_apply(p("plain.cube"), src, w, h), truth)
             res = {}
             for m in ["hm-mkl-hm", "auto"]:
                 t0 = time.perf_counter()
@@ -187,10 +134,12 @@ def main():
                                       "--method", m, p("src.png"), p("ref.png"), p("look.cube")],
                                      check=True, capture_output=True, text=True).stdout
                 secs = time.perf_counter() - t0
-                run(lutkit, "apply", "-q", "-y", "--lut", p("look.cube"), p("src.png"), "-o",
-                    p("got.ppm"))
                 j = json.loads(out)
-                res[m] = (steps(p("got.ppm"), truth), j["method"], j.get("look", {}).get("kind", ""),
+                with open(p("look.cube")) as f:
+                    shaper = "LUT_1D_SIZE" in f.read(4096)
+                got = (lutkit_apply(lutkit, p("look.cube"), p("src.png")) if shaper
+                       else ffmpeg_apply(p("look.cube"), src, w, h))
+                res[m] = (steps(got, truth), j["method"], j.get("look", {}).get("kind", ""),
                           secs)
             (am, ap), method, kind, secs = res["auto"]
             hm_, hp = res["hm-mkl-hm"][0]

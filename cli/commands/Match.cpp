@@ -115,9 +115,13 @@ void printJson(const MatchCommandOptions& o, const MatchReport& r, const Diagnos
       << ", \"smallest_slope\": " << json::number(r.quality.smallestSlope)
       << ", \"largest_slope\": " << json::number(r.quality.largestSlope)
       << ", \"monotone_grey\": " << (r.quality.monotoneAlongGrey ? "true" : "false")
-      << ", \"folded_cells\": " << r.quality.foldedCells << ", \"cells\": " << r.quality.cells
+      << ", \"folded_cells\": " << r.quality.foldedCells
+      << ", \"flat_cells\": " << r.quality.flatCells << ", \"cells\": " << r.quality.cells
       << ", \"largest_second_difference_steps\": "
       << json::number(r.quality.largestSecondDifference)
+      << "},\n \"repaired\": {\"grey_drop_steps\": " << json::number(r.greyDipRepaired)
+      << ", \"grey_nodes_moved\": " << r.greyNodesMoved
+      << ", \"largest_move_steps\": " << json::number(r.greyLargestMove)
       << "},\n \"clipped\": {\"values\": " << r.clippedValues << ", \"of\": " << r.values
       << ", \"max_steps\": " << json::number(r.clippedMaxSteps)
       << ", \"table_values\": " << r.tableValuesOutside << ", \"table_of\": " << r.tableValues

@@ -6,6 +6,7 @@
 #include "lut/match/WorkingSpace.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
@@ -68,10 +69,12 @@ std::string LutQuality::str() const {
         monotoneAlongGrey
             ? "monotone"
             : ("NOT monotone (down by up to " + fmt3(largestGreyDrop) + " 8-bit steps)").c_str(),
-        foldedCells == 0
-            ? "no fold-overs"
-            : (std::to_string(foldedCells) + " of " + std::to_string(cells) + " cells folded")
-                  .c_str(),
+        ((foldedCells == 0
+              ? std::string("no fold-overs")
+              : std::to_string(foldedCells) + " of " + std::to_string(cells) + " cells folded") +
+         (flatCells == 0 ? std::string()
+                         : " (" + std::to_string(flatCells) + " flat: colours merged)"))
+            .c_str(),
         largestSecondDifference);
     std::string s = buf;
     if (decreasingSteps > 0)
@@ -147,8 +150,16 @@ LutQuality measureLutQuality(const LutFile& lut, bool linear, const glm::dvec3& 
                         j[1] += at(r + u, g + 1, b + v) - at(r + u, g, b + v);
                         j[2] += at(r + u, g + v, b + 1) - at(r + u, g + v, b);
                     }
-                    if (!(glm::determinant(j) > 0.0))
+                    // Negative: the cell is turned over; zero (to round-off): flat, its colours
+                    // merged (a curve that holds a value past the picture's range), no fold.
+                    const double det = glm::determinant(j);
+                    double scale = 1.0;
+                    for (int c = 0; c < 3; ++c)
+                        scale *= glm::length(j[c]);
+                    if (!(det >= -1e-9 * scale))
                         ++q.foldedCells;
+                    else if (!(det > 1e-9 * scale))
+                        ++q.flatCells;
                 }
             }
     // The grey axis, finer than the grid.

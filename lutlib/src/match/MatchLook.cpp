@@ -8,6 +8,7 @@
 #include "match/MatchColours.h"
 #include "match/MatchContext.h"
 #include "match/MatchSamples.h"
+#include "match/ShapeRepair.h"
 #include "match/TableFit.h"
 
 #include <algorithm>
@@ -281,6 +282,23 @@ MatchResult matchLook(const MatchPicture& source, const std::vector<MatchPicture
         detail::fitTableToColours(*res.lut.cube, colours, counts, wanted);
         rep.interpolation = measure(res.lut, got);
         rep.tableFitted = true;
+    }
+    // A dip along grey is repaired on the table, not a reason to fall back (match/ShapeRepair.h):
+    // the table alone over one domain for the three channels, where grey is its diagonal. A
+    // gradient map is a colour per luma, its table fitted over the source's colours: left as is.
+    if (t.method != MatchMethod::GradientMap && !res.lut.shaper && res.lut.cube &&
+        res.lut.cube->domainMin() == glm::vec3(res.lut.cube->domainMin().x) &&
+        res.lut.cube->domainMax() == glm::vec3(res.lut.cube->domainMax().x)) {
+        const LutQuality before = measureLutQuality(res.lut, linear, t.domainMin, t.domainMax);
+        if (before.largestGreyDrop > 0.0) {
+            const detail::GreyRepair g = detail::repairGreyDip(*res.lut.cube);
+            if (g.nodesMoved > 0) {
+                rep.greyDipRepaired = before.largestGreyDrop;
+                rep.greyNodesMoved = g.nodesMoved;
+                rep.greyLargestMove = g.largestMove;
+                rep.interpolation = measure(res.lut, got);
+            }
+        }
     }
     const LutFileSampler sampler(res.lut, Interpolation::Tetrahedral);
 

@@ -50,6 +50,10 @@ std::string MatchReport::str() const {
                     : fmt("form     the table alone, which every program reads (with a 1D shaper "
                           "before it: %s)\n",
                           shaperError.str().c_str());
+    if (greyNodesMoved > 0)
+        s += fmt("repaired the dip along grey (down by %.3g 8-bit steps): %d of the table's grey "
+                 "nodes moved, by up to %.3g 8-bit steps\n",
+                 greyDipRepaired, greyNodesMoved, greyLargestMove);
     s += fmt("shape    %s\n", quality.str().c_str());
     if (clippedValues > 0 || tableValuesOutside > 0)
         s += fmt("clipped  %.3g%% of the source's channel values land %s (up to %.3g 8-bit steps "

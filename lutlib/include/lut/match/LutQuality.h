@@ -36,7 +36,8 @@ struct LutQuality {
     double smallestGreySlope = 0.0; // the smallest channel slope along the grey axis
     double largestGreyDrop = 0.0;   // the most a channel goes down along grey, 8-bit steps
     std::size_t cells = 0;
-    std::size_t foldedCells = 0;
+    std::size_t foldedCells = 0;          // turned over (the Jacobian's determinant below 0)
+    std::size_t flatCells = 0;            // flat to round-off: colours merged, not turned over
     double largestSecondDifference = 0.0; // 8-bit steps
     // "monotone along each channel's axis (slopes 0.42..2.1) and along grey; no fold-overs;
     //  largest second difference 1.3 8-bit steps"

@@ -57,6 +57,12 @@ struct MatchReport {
     bool bothForms = false;
     bool tableFitted = false; // gradient map: the table's values fitted over SOURCE's colours
     GameError tableAloneError, shaperError;
+    // A dip along grey repaired on the table (0 when none was): how far the channel went down
+    // before, in 8-bit steps, how many of the table's grey nodes moved and by how much at most;
+    // `quality` measures the LUT after.
+    double greyDipRepaired = 0.0;
+    int greyNodesMoved = 0;
+    double greyLargestMove = 0.0;
     LutQuality quality;
 
     // What the LUT does to SOURCE's counted pixels: channel values more than half an 8-bit step
