@@ -5,8 +5,6 @@
 #include "FileActions.h"
 #include "PreviewFrame.h"
 
-#include "lut/ops/Plot.h"
-
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -17,14 +15,6 @@
 #include <algorithm>
 
 namespace lut::gui {
-
-std::shared_ptr<const Lut3D> exportedLut(const Document& doc, ExportTarget target) {
-    return makeTargetLut(doc.lutSource(), target).shown;
-}
-
-Image plotExportedLut(const Document& doc, ExportTarget target) {
-    return plotLut(*exportedLut(doc, target)).image;
-}
 
 PlotDialog::PlotDialog(QWidget* parent, const Document& doc, ExportTarget target,
                        FileActions* files)

@@ -29,6 +29,7 @@
 //   print WHAT                 (state on stdout: target input chain bloom param:KEY undo-count
 //                               modified notes error clip title export-path focus dialogs
 //                               task:NAME curve:NAME zoom)
+// Each command is a row of ScriptCommands.cpp's table (print's WHATs: ScriptPrint.cpp's).
 // '#' starts a comment. A failing command prints "script:LINE: reason" and ends the run with 1.
 #include <QString>
 #include <QTextStream>

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared bits of the editor tests: sample paths, the float64 reference for an exposure edit, a
-// tiny PNG that holds a huge picture.
+// tiny PNG that holds a huge picture, a screenshot-like picture in memory.
 #include "TestPaths.h"
 #include "lut/Lut3D.h"
+#include "lut/formats/ImageIO.h"
 
 #include <QByteArray>
 #include <QFile>
@@ -11,6 +12,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -18,6 +20,29 @@ namespace lut::gui::test {
 
 inline QString samplePath(const char* name) {
     return QString::fromUtf8(LUTKIT_SAMPLES_DIR) + QLatin1Char('/') + QString::fromLatin1(name);
+}
+
+// An 8-bit picture with gradients and noise, as hard to diff and encode as a screenshot.
+inline formats::LoadedImage noisyPicture(int w, int h) {
+    formats::LoadedImage l;
+    l.image = Image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = l.image.pixel(x, y);
+            const unsigned n = (unsigned(x) * 73856093u) ^ (unsigned(y) * 19349663u);
+            const unsigned k = (n ^ (n >> 13)) * 0x5bd1e995u;
+            // 8-bit values, as a screenshot's PNG holds.
+            p[0] = float(std::min(255u, x * 240u / unsigned(w) + (k & 15))) / 255.0f;
+            p[1] = float(std::min(255u, y * 240u / unsigned(h) + ((k >> 4) & 15))) / 255.0f;
+            p[2] = float((k >> 8) & 255) / 255.0f;
+            p[3] = 1.0f;
+        }
+    l.info.width = w;
+    l.info.height = h;
+    l.info.channels = 3;
+    l.info.bitDepth = 8;
+    l.info.format = "png";
+    return l;
 }
 
 // Exposure in stops on an encoded value, written out independently of lutlib:

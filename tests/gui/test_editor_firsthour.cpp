@@ -4,6 +4,7 @@
 // and why, read in its own layout (the LUT dock shows smush); atlases in the export list; built-in
 // LUTs by names a person reads; the After side never the ungraded picture; Help's quick start and
 // shortcuts; History rows with their values. Also the export dialog's Strength written.
+#include "EditorTestSupport.h"
 #include "GuiTestSupport.h"
 #include "TestPaths.h"
 
@@ -41,35 +42,10 @@
 
 using namespace lut;
 using namespace lut::gui;
+using lut::gui::test::onNextDialog;
 using lut::gui::test::samplePath;
 
 namespace {
-
-// Runs `check` on the next visible top-level widget of type T (polling the event loop), as a
-// user answers a dialog.
-template <class T, class F> void onNextDialog(F check) {
-    auto* timer = new QTimer;
-    timer->setInterval(20);
-    auto* expiry = new QElapsedTimer;
-    expiry->start();
-    QObject::connect(timer, &QTimer::timeout, [timer, expiry, check] {
-        if (expiry->elapsed() > 8000) {
-            timer->stop();
-            timer->deleteLater();
-            delete expiry;
-            return;
-        }
-        for (QWidget* top : QApplication::topLevelWidgets())
-            if (auto* d = qobject_cast<T*>(top); d && d->isVisible()) {
-                timer->stop();
-                timer->deleteLater();
-                delete expiry;
-                check(d);
-                return;
-            }
-    });
-    timer->start();
-}
 
 double srgbEnc(double x) {
     return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;

@@ -5,6 +5,7 @@
 //     pixel for pixel (grading cube, and Smash's compensated game LUT);
 //   - compare of the sample grade with itself reports ΔE 0; with a neutral LUT the same max
 //     ΔE2000 as `lutkit diff --json`.
+#include "EditorTestSupport.h"
 #include "GuiTestSupport.h"
 #include "TestPaths.h"
 
@@ -19,39 +20,12 @@
 #include <QtTest>
 
 using namespace lut;
+using lut::gui::test::Run;
+using lut::gui::test::run;
+using lut::gui::test::runEditorScript;
 using lut::gui::test::samplePath;
 
 namespace {
-
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-
-Run run(const QString& program, const QStringList& args) {
-    QProcess p;
-    p.start(program, args);
-    Run r;
-    if (!p.waitForFinished(240000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromLocal8Bit(p.readAllStandardOutput());
-    r.err = QString::fromLocal8Bit(p.readAllStandardError());
-    return r;
-}
-
-Run runScript(const QTemporaryDir& dir, const QStringList& lines, const QStringList& files) {
-    const QString path = dir.filePath("script.txt");
-    QFile f(path);
-    if (f.open(QIODevice::WriteOnly | QIODevice::Text))
-        f.write(lines.join('\n').toUtf8() + "\n");
-    f.close();
-    return run(QString::fromUtf8(LUTKIT_EDITOR), QStringList{"--script", path} + files);
-}
 
 QString readText(const QString& path) {
     QFile f(path);
@@ -109,7 +83,7 @@ private slots:
         const QString exported = dir.filePath("exported" + extension);
         const QString mine = dir.filePath("editor_plot.png");
         const QString theirs = dir.filePath("cli_plot.png");
-        const Run e = runScript(
+        const Run e = runEditorScript(
             dir, {"target " + target, "wait", "export " + exported, "plot-save " + mine}, {grade});
         QVERIFY2(e.code == 0, qPrintable(e.out + e.err));
         QVERIFY(QFileInfo::exists(exported));
@@ -124,7 +98,7 @@ private slots:
         }
 
         // An existing file is not replaced without being told (headless: refused).
-        const Run again = runScript(dir, {"target " + target, "plot-save " + mine}, {grade});
+        const Run again = runEditorScript(dir, {"target " + target, "plot-save " + mine}, {grade});
         QVERIFY2(again.code != 0, qPrintable(again.out));
     }
 
@@ -137,7 +111,7 @@ private slots:
         QVERIFY2(n.code == 0, qPrintable(n.out + n.err));
         const QString self = dir.filePath("self.txt");
         const QString other = dir.filePath("neutral.txt");
-        const Run e = runScript(
+        const Run e = runEditorScript(
             dir,
             {"target cube", "compare " + grade + " " + self, "compare " + neutral + " " + other},
             {grade});

@@ -7,6 +7,7 @@
 //   4. After typing in a spin box and pressing Enter, Ctrl+Z, Ctrl+Y, Ctrl+Shift+Z, Ctrl+E work.
 //   Also: files open on a worker, reader notes are shown, a strip's layout can be chosen, error
 //   texts name limits by meaning, Export and Redo have different icons.
+#include "EditorTestSupport.h"
 #include "GuiTestSupport.h"
 
 #include "AdjustmentsPanel.h"
@@ -42,50 +43,11 @@
 
 using namespace lut;
 using namespace lut::gui;
+using lut::gui::test::activate;
+using lut::gui::test::fileBytes;
 using lut::gui::test::maxDiff;
+using lut::gui::test::onNextDialog;
 using lut::gui::test::samplePath;
-
-namespace {
-
-QByteArray fileBytes(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-// Runs `check` on the next modal dialog of type T that shows up within a few seconds (polling
-// the event loop), as a user answers it.
-template <class T, class F> void onNextDialog(F check) {
-    auto* timer = new QTimer;
-    timer->setInterval(20);
-    auto* expiry = new QElapsedTimer;
-    expiry->start();
-    QObject::connect(timer, &QTimer::timeout, [timer, expiry, check] {
-        if (expiry->elapsed() > 5000) { // never shown: do not answer a later test's dialog
-            timer->stop();
-            timer->deleteLater();
-            delete expiry;
-            return;
-        }
-        for (QWidget* top : QApplication::topLevelWidgets())
-            if (auto* d = qobject_cast<T*>(top); d && d->isVisible()) {
-                timer->stop();
-                timer->deleteLater();
-                delete expiry;
-                check(d);
-                return;
-            }
-    });
-    timer->start();
-}
-
-// After a modal dialog the window manager gives the main window the focus back; offscreen there
-// is none, so the tests do it.
-void activate(QWidget& w) {
-    QApplication::setActiveWindow(&w);
-    QApplication::processEvents();
-}
-
-} // namespace
 
 class EditorTrustTest : public QObject {
     Q_OBJECT

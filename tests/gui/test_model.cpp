@@ -4,11 +4,8 @@
 #include "GuiTestSupport.h"
 
 #include "Document.h"
-#include "ErrorText.h"
-#include "ExportNaming.h"
 #include "ExportTarget.h"
 #include "PreviewRenderer.h"
-#include "RecentFiles.h"
 
 #include "lut/Error.h"
 #include "lut/formats/ImageIO.h"
@@ -422,114 +419,6 @@ private slots:
         }
     }
 
-    void recentFilesAreUniqueAndBounded() {
-        QStringList l;
-        for (int i = 0; i < 15; ++i)
-            l = addRecentFile(l, QStringLiteral("/tmp/f%1.cube").arg(i), 10);
-        QCOMPARE(l.size(), 10);
-        QCOMPARE(l.first(), QStringLiteral("/tmp/f14.cube"));
-        l = addRecentFile(l, QStringLiteral("/tmp/f10.cube"), 10);
-        QCOMPARE(l.first(), QStringLiteral("/tmp/f10.cube"));
-        QCOMPARE(l.count(QStringLiteral("/tmp/f10.cube")), 1);
-    }
-
-    void classifiesDroppedFiles() {
-        QVERIFY(looksLikeLutFile(samplePath("sample_grade.cube")));
-        QVERIFY(!looksLikeLutFile(samplePath("sample_scene.png")));
-        QVERIFY(!looksLikeLutFile(samplePath("sample_scene.exr")));
-    }
-
-    void exportNamesAreNewAndOnePerFormat() {
-        // Issue 15, problem 1: the export's suggested file is never the opened LUT, the game's
-        // is color_grading_lut.nutexb, and two formats never share a name.
-        QTemporaryDir dir;
-        const QString grade = dir.filePath("my_grade.cube");
-        QFile::copy(samplePath("sample_grade.cube"), grade);
-        ExportNameInput in;
-        in.lutPath = grade;
-        in.imagePath = samplePath("sample_scene.png");
-        in.format = QStringLiteral("nutexb");
-        in.extension = QStringLiteral(".nutexb");
-        QCOMPARE(suggestedExportPath(in), dir.filePath("color_grading_lut.nutexb"));
-        in.format = QStringLiteral("cube");
-        in.extension = QStringLiteral(".cube");
-        const QString cube = suggestedExportPath(in);
-        QVERIFY2(cube != grade, qPrintable(cube));
-        QCOMPARE(QFileInfo(cube).absolutePath(), QFileInfo(grade).absolutePath());
-        in.format = QStringLiteral("flame");
-        in.extension = QStringLiteral(".3dl");
-        const QString flame = suggestedExportPath(in);
-        in.format = QStringLiteral("lustre");
-        const QString lustre = suggestedExportPath(in);
-        QVERIFY2(flame != lustre, qPrintable(flame));
-        in.format = QStringLiteral("strip");
-        in.extension = QStringLiteral(".png");
-        in.layout = QStringLiteral("pilot");
-        const QString pilot = suggestedExportPath(in);
-        in.layout = QStringLiteral("unity");
-        QVERIFY(pilot != suggestedExportPath(in));
-        // The opened LUT is the game's file: the suggestion keeps the name in another folder.
-        in.lutPath = dir.filePath("color_grading_lut.nutexb");
-        in.imagePath.clear();
-        in.format = QStringLiteral("nutexb");
-        in.extension = QStringLiteral(".nutexb");
-        in.layout.clear();
-        const QString edited = suggestedExportPath(in);
-        QVERIFY2(edited != in.lutPath && edited.endsWith("/color_grading_lut.nutexb"),
-                 qPrintable(edited));
-        // Untitled: beside the picture.
-        in.lutPath.clear();
-        in.imagePath = dir.filePath("shot.png");
-        QCOMPARE(suggestedExportPath(in), dir.filePath("color_grading_lut.nutexb"));
-    }
-
-    void errorTextsNameTheLimitNotTheConstant() {
-        QTemporaryDir dir;
-        QFile f(dir.filePath("huge.cube"));
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("LUT_3D_SIZE 300\n0 0 0\n");
-        f.close();
-        Document doc;
-        QString message;
-        try {
-            doc.openLut(f.fileName());
-        } catch (const std::exception& e) {
-            message = QString::fromStdString(humanErrorText(e.what()));
-        }
-        QVERIFY2(message.contains(QStringLiteral("256 points per axis")), qPrintable(message));
-        QVERIFY2(!message.contains(QStringLiteral("lut::")) && !message.contains("kMax"),
-                 qPrintable(message));
-    }
-
-    void stripNotesAreKeptAndTheLayoutCanBeChosen() {
-        // A 256x16 strip fits three layouts: a Unity strip is detected as such and the reader
-        // says so (a note that changes what the user gets); the note reaches the document, and
-        // the user's choice of layout reads the picture that way.
-        QTemporaryDir dir;
-        Lut3D warm = Lut3D::identity(16);
-        for (std::size_t i = 0; i < warm.entryCount(); ++i)
-            warm.entries()[i].x = std::min(1.0f, warm.entries()[i].x * 1.1f);
-        const QString path = dir.filePath("strip.png");
-        LutFile f;
-        f.cube = warm;
-        FormatOptions unity;
-        unity.layout = LutLayout::Unity;
-        formats::writeLut(path.toStdString(), f, unity);
-        Document doc;
-        const QStringList notes = doc.openLut(path);
-        QVERIFY2(notes.join(' ').contains(QStringLiteral("layout detected")),
-                 qPrintable(notes.join(' ')));
-        QCOMPARE(doc.lutNotes(), notes);
-        QVERIFY(stripLayoutIsAmbiguous(path));
-        QVERIFY(maxDiff(doc.baseLut(), warm) < 0.5 / 255 + 1e-6); // detected right: 8-bit only
-        FormatOptions pilot;
-        pilot.layout = LutLayout::Pilot;
-        doc.openLut(path, pilot);
-        const Lut3D want = formats::readLut(path.toStdString(), pilot).toLut3D();
-        QCOMPARE(maxDiff(doc.baseLut(), want), 0.0);
-        QVERIFY(maxDiff(doc.baseLut(), warm) > 0.1); // read the other way: another LUT
-    }
-
     void adjustmentListIsWhatLutkitApplies() {
         // File > Save Adjustments writes the list lutlib parses; applied to the base it gives
         // the document's LUT bit for bit; loading it back is one undo step.
@@ -580,23 +469,6 @@ private slots:
         QCOMPARE(doc.adjustments().curveRed.points()[1].y, 0.4);
         doc.undoStack()->undo();
         QVERIFY(doc.adjustments().isNeutral());
-    }
-
-    void builtInLutsOpenUntitled() {
-        // builtin:smash-default is the game's default stage LUT: a game LUT, and no file, so the
-        // document stays untitled (Save asks where; nothing is written to "builtin:...").
-        Document doc;
-        doc.openLut(QStringLiteral("builtin:smash-default"));
-        QVERIFY(doc.lutPath().isEmpty());
-        QCOMPARE(doc.lutOrigin(), QStringLiteral("Smash Ultimate's default stage LUT")); // issue 43
-        QCOMPARE(doc.lutPurpose(), LutPurpose::Smash);
-        QCOMPARE(doc.baseLut().size(), 16);
-        QCOMPARE(doc.baseLut().at(7, 0, 15), glm::vec3(121.0f, 0.0f, 255.0f) / 255.0f);
-        QVERIFY(!doc.isModified());
-        doc.openLut(QStringLiteral("builtin:neutral"));
-        QCOMPARE(doc.lutPurpose(), LutPurpose::Raw);
-        QVERIFY(doc.baseLut().isIdentity(0.0f));
-        QVERIFY(looksLikeLutFile(QStringLiteral("builtin:smash-default")));
     }
 };
 
