@@ -45,8 +45,9 @@ if [ "${1:-}" = "--windows" ]; then
 fi
 build="${1:-$root/build}"
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
-# The editor's build dependencies, and dpkg-dev for dpkg-shlibdeps (the runtime dependencies).
-"$root/scripts/install-deps.sh" --editor dpkg-dev
+# The editor's build dependencies, and dpkg-dev for dpkg-shlibdeps (the runtime dependencies) with
+# file, which CPack's shlibdeps step runs (a clean Debian 12 has no `file`: cpack failed there).
+"$root/scripts/install-deps.sh" --editor dpkg-dev file
 # No tests or benchmarks, as ./run.sh: GoogleTest is not among what --editor installs, and a fresh
 # clone on a clean Debian 12 stopped here (scripts/deb-clean-build.sh found it).
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DLUTKIT_BUILD_TESTS=OFF \
