@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 
 namespace lut {
@@ -28,6 +29,9 @@ struct LatticeRequest {
     // How the lattice will be read (the game: trilinear).
     Interpolation readWith = Interpolation::Tetrahedral;
     int nthreads = 0; // 0 = all cores
+    // What the lattice holds at input x given the file's value y there (a strength blend with
+    // neutral: lut::blendStrength); empty = y. The error is measured against finish(x, file(x)).
+    std::function<glm::dvec3(const glm::dvec3& x, const glm::dvec3& y)> finish;
 };
 
 struct LatticeResult {
@@ -39,5 +43,18 @@ struct LatticeResult {
 
 // Throws lut::Error if the file is empty or the domain is not finite with min < max.
 LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& request = {});
+
+// The same finish (request.finish) applied keeping the file's 1D shaper S: its table's entry at u
+// becomes finish(x, T(u)) with x = S^-1(u), per channel (S inverted exactly, piecewise linear), so
+// the result is a shaper and a table of the file's sizes. The error against finish(x, file(x)) is
+// bounded over request's domain (default: the file's input domain) as sampleOnLattice bounds it.
+// nullopt when the file has no shaper and table, or S is not strictly increasing on every channel
+// over that domain (no one x per u: sampleOnLattice then).
+struct ShaperLatticeResult {
+    LutFile file;
+    ErrorStats error;
+};
+std::optional<ShaperLatticeResult> finishKeepingShaper(const LutFile& file,
+                                                       const LatticeRequest& request);
 
 } // namespace lut
