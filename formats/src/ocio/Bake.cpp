@@ -16,6 +16,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
 #include "lut/io/LutWriter.h"
+#include "lut/ops/Lattice.h"
 
 #include <algorithm>
 #include <chrono>
@@ -187,6 +188,15 @@ void finishBake(const std::string& output, const BakeOptions& o, const Format& w
     } else {
         grid.domainMin = report.domainMin;
         grid.domainMax = report.domainMax;
+        // the source file's kinks, where the grid is linear in the input
+        if (source.kinksOf) {
+            const Breaks k = fileBreaks(*source.kinksOf, report.domainMin, report.domainMax);
+            for (int a = 0; a < 3; ++a)
+                for (const double x : k[static_cast<std::size_t>(a)])
+                    grid.breaks[static_cast<std::size_t>(a)].push_back(
+                        (x - report.domainMin[a]) /
+                        (double(report.domainMax[a]) - report.domainMin[a]));
+        }
     }
     LutFile measured = file;
     try {

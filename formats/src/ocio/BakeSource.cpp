@@ -69,6 +69,13 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
             s.what += (s.what.empty() ? "" : ", ") + std::string(f.inverse ? "inverse of " : "") +
                       f.path + (f.cccid.empty() ? "" : " (cccid " + f.cccid + ")");
         }
+        // One file applied forward: where it kinks, as lutkit reads it (unreadable: unknown).
+        if (o.files.size() == 1 && !o.files.front().inverse && o.files.front().cccid.empty()) {
+            try {
+                s.kinksOf = readLut(o.files.front().path);
+            } catch (const Error&) {
+            }
+        }
         const auto processor = config->getProcessor(group);
         doing = "building the CPU processor";
         // Unoptimised, as convert reads the same file (faithfulCpu, OcioFacts.h): even OCIO's
@@ -117,6 +124,8 @@ BakeSource fromLut(const BakeOptions& o, const std::string& output) {
             after->processRgb(rgb, n);
     };
     s.what = o.lut;
+    if (!plan.before)
+        s.kinksOf = file;
     s.crosstalk = file.cube.has_value() || (before && before->hasChannelCrosstalk()) ||
                   (after && after->hasChannelCrosstalk());
     if (spec.any()) {

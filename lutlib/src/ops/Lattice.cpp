@@ -66,6 +66,19 @@ Breaks shaperBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
 
 } // namespace
 
+Breaks fileBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
+    if (file.shaper)
+        return shaperBreaks(file, lo, hi);
+    Breaks out;
+    if (file.cube)
+        for (int a = 0; a < 3; ++a)
+            for (const double x :
+                 latticeBreaks(*file.cube, Interpolation::Tetrahedral)[static_cast<std::size_t>(a)])
+                if (x > lo[a] && x < hi[a])
+                    out[static_cast<std::size_t>(a)].push_back(x);
+    return out;
+}
+
 LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& q) {
     if (!file.cube && !file.shaper)
         throw Error("the LUT file holds no table");

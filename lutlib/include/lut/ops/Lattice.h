@@ -12,6 +12,7 @@
 #include "lut/Lut3D.h"
 #include "lut/LutFile.h"
 #include "lut/interp/Interpolation.h"
+#include "lut/ops/ErrorBound.h"
 
 #include <glm/vec3.hpp>
 
@@ -40,6 +41,11 @@ struct LatticeResult {
     ErrorStats error;
     std::size_t heldOut = 0; // inputs the error was measured on
 };
+
+// Where the file, evaluated exactly, kinks inside (lo, hi), per axis in input coordinates: its
+// shaper's entries and where the shaper crosses its table's planes (at most 256 per axis), or a
+// table alone's lattice planes. What a bound needs among its grid's planes (ErrorBound.h).
+Breaks fileBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi);
 
 // Throws lut::Error if the file is empty or the domain is not finite with min < max.
 LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& request = {});
