@@ -189,7 +189,8 @@ void finishBake(const std::string& output, const BakeOptions& o, const Format& w
         grid.domainMin = report.domainMin;
         grid.domainMax = report.domainMax;
         // the source file's kinks, where the grid is linear in the input
-        if (source.kinksOf) {
+        // (a 3D table of a 3D source: a 1D bake's grey-axis grid is fine already)
+        if (source.kinksOf && source.kinksOf->cube && file.cube) {
             const Breaks k = fileBreaks(*source.kinksOf, report.domainMin, report.domainMax);
             for (int a = 0; a < 3; ++a)
                 for (const double x : k[static_cast<std::size_t>(a)])

@@ -69,13 +69,6 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
             s.what += (s.what.empty() ? "" : ", ") + std::string(f.inverse ? "inverse of " : "") +
                       f.path + (f.cccid.empty() ? "" : " (cccid " + f.cccid + ")");
         }
-        // One file applied forward: where it kinks, as lutkit reads it (unreadable: unknown).
-        if (o.files.size() == 1 && !o.files.front().inverse && o.files.front().cccid.empty()) {
-            try {
-                s.kinksOf = readLut(o.files.front().path);
-            } catch (const Error&) {
-            }
-        }
         const auto processor = config->getProcessor(group);
         doing = "building the CPU processor";
         // Unoptimised, as convert reads the same file (faithfulCpu, OcioFacts.h): even OCIO's
@@ -158,8 +151,18 @@ BakeSource makeBakeSource(const BakeOptions& o, const std::string& output) {
                                "or LUT files (--lut)");
     if (sources > 1)
         throw ColorOptionError("bake one thing: colour spaces of a config, or LUT files");
-    if (!o.files.empty())
-        return fromFiles(o, output);
+    if (!o.files.empty()) {
+        BakeSource s = fromFiles(o, output);
+        // One file applied forward: where it kinks, as lutkit reads it (unreadable: unknown).
+        // Read after fromFiles' OpenColorIO session has ended (readLut may open its own).
+        if (o.files.size() == 1 && !o.files.front().inverse && o.files.front().cccid.empty()) {
+            try {
+                s.kinksOf = readLut(o.files.front().path);
+            } catch (const Error&) {
+            }
+        }
+        return s;
+    }
     if (!o.lut.empty())
         return fromLut(o, output);
     return fromConfig(o);
