@@ -11,8 +11,10 @@
 
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FormatRegistry.h"
 #include "lut/ops/Invert.h"
 #include "lut/ops/InvertFile.h"
+#include "lut/ops/InvertShaper.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,7 +27,15 @@ namespace lut::cli {
 
 namespace {
 
-void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD) {
+// A 3D inverse's two forms (lut/ops/InvertShaper.h): which was written, and each one's round trip.
+struct FormChoice {
+    bool shaper = false;
+    const ErrorStats* table = nullptr;  // the table alone's round trip
+    const ErrorStats* shaped = nullptr; // a shaper and a table's, when one was made
+};
+
+void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD,
+                 const FormChoice& form = {}) {
     if (o.json) {
         std::cout << "{\"input\": " << json::quote(o.input)
                   << ", \"output\": " << json::quote(o.output) << ", \"points\": " << r.points
@@ -35,8 +45,13 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
                   << ", \"max_residual\": " << json::number(r.maxResidual)
                   << ", \"mean_residual\": " << json::number(r.meanResidual)
                   << ", \"residual\": " << json::stats(r.residual)
-                  << ", \"round_trip\": " << json::stats(r.roundTrip)
-                  << ", \"unreachable_by_region\": {";
+                  << ", \"round_trip\": " << json::stats(r.roundTrip);
+        if (form.table)
+            std::cout << ", \"form\": " << json::quote(form.shaper ? "shaper" : "table")
+                      << ", \"round_trip_table\": " << json::stats(*form.table)
+                      << ", \"round_trip_shaper\": "
+                      << (form.shaped ? json::stats(*form.shaped) : std::string("null"));
+        std::cout << ", \"unreachable_by_region\": {";
         bool first = true;
         for (int i = 0; i < kRegionCount; ++i)
             if (r.unreachableByRegion[static_cast<std::size_t>(i)]) {
@@ -62,6 +77,12 @@ void printReport(const InvertCommandOptions& o, const InvertReport& r, bool oneD
               << "         max: " << r.residual.coverage() << "\n"
               << "round trip |inverse(A(x)) - x| over every x: " << r.roundTrip.str() << "\n"
               << "         max: " << r.roundTrip.coverage() << "\n";
+    if (form.table && form.shaped)
+        std::cout << "form     " << (form.shaper ? "a 1D shaper then the table" : "the table alone")
+                  << "; round trip max " << significant(roundUpSignificant(form.table->maxSteps8()))
+                  << " 8-bit steps with the table alone, "
+                  << significant(roundUpSignificant(form.shaped->maxSteps8()))
+                  << " with a 1D shaper first (--lut-form)\n";
     if (r.unreachable) {
         std::cout << "where    no inverse:";
         for (int i = 0; i < kRegionCount; ++i)
@@ -123,10 +144,59 @@ int runInvert(const InvertCommandOptions& o) {
         return kExitOk;
     }
     const InvertResult r = invert(*file.cube, io);
+    // Where the inverse is steep a 1D shaper before the table follows it (Resolve's .cube form):
+    // written when asked, or (auto) when it halves a round trip of more than a step and the
+    // output holds it; both figures printed.
+    ShaperInvertResult shaped;
+    if (o.form != "table")
+        shaped = invertWithShaper(*file.cube, io);
+    FormChoice form;
+    form.table = &r.report.roundTrip;
+    form.shaped = shaped.made ? &shaped.report.roundTrip : nullptr;
+    Diagnostics notes;
+    auto note = [&](const std::string& text) {
+        notes.push_back({Diagnostic::Severity::Info, o.output, 0, 0, text});
+    };
+    if (shaped.made) {
+        const double t = r.report.roundTrip.maxAbs, s = shaped.report.roundTrip.maxAbs;
+        const bool helps = t > 1.0 / 255.0 && s < 0.5 * t;
+        if (o.form == "shaper" || helps) {
+            FormatOptions fo;
+            const Format* writer = o.format.empty()
+                                       ? FormatRegistry::instance().writerForPath(o.output)
+                                       : FormatRegistry::instance().byName(o.format);
+            if (!o.format.empty())
+                FormatRegistry::instance().applyAlias(o.format, fo);
+            form.shaper = writer && writer->holdsShaperFor(fo);
+            if (!form.shaper)
+                note("its format holds no 1D shaper: the table alone (round trip max " +
+                     significant(roundUpSignificant(t * 255.0)) + " 8-bit steps; " +
+                     significant(roundUpSignificant(s * 255.0)) +
+                     " with a shaper, as a .cube or --format resolve_cube)");
+        }
+    } else if (o.form == "shaper") {
+        note("A's neutral axis does not rise in every channel: no shaper, the table alone");
+    }
+    if (form.shaper) {
+        LutFile out = shaped.lut;
+        out.purpose = purpose;
+        const WrittenLut w = writeLutFile(o.output, out, o.format, {o.input});
+        printReport(o, shaped.report, false, form);
+        if (!o.json) {
+            std::cout << "wrote    " << o.output << ": " << w.format << ", a " << out.shaper->size()
+                      << "-entry 1D shaper then a " << out.cube->size() << "^3 table\n";
+            printDiagnostics(std::cout, notes, o.verbosity);
+            printDiagnostics(std::cout, w.diagnostics, o.verbosity);
+        }
+        checkWrittenLut(o.output, out, o.verbosity);
+        return kExitOk;
+    }
     writeLutTable(written, o.output, r.lut, o.format, {o.input}, o.verbosity, purpose);
-    printReport(o, r.report, false);
-    if (!o.json)
+    printReport(o, r.report, false, form);
+    if (!o.json) {
+        printDiagnostics(std::cout, notes, o.verbosity);
         std::cout << written.str();
+    }
     checkWrittenLut(o.output, r.lut, o.verbosity);
     return kExitOk;
 }
@@ -143,6 +213,12 @@ CLI::App* setupInvert(CLI::App& app, std::function<void(const InvertCommandOptio
         ->check(CLI::Range(2, 65536));
     sub->add_flag("--output-range", o->outputRange,
                   "span the inverse over the range of A's outputs instead of A's domain");
+    sub->add_option("--lut-form", o->form,
+                    "auto (default: a 1D shaper then the table where the inverse is steep and "
+                    "the output holds one, as Resolve's .cube; the report gives both round "
+                    "trips), shaper, table (the table alone)")
+        ->check(choicesValidator(matchShaperChoices()))
+        ->type_name("NAME");
     addOutputFormat(*sub, o->format);
     sub->add_flag("--json", o->json, "print the report as JSON");
     addOverwriteOptions(*sub, o->overwrite);

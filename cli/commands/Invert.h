@@ -17,8 +17,9 @@ namespace lut::cli {
 struct InvertCommandOptions {
     std::string input, output;
     std::string format;
-    int size = 0;             // 0 = A's
-    bool outputRange = false; // the inverse's domain: the range of A's outputs
+    int size = 0;              // 0 = A's
+    bool outputRange = false;  // the inverse's domain: the range of A's outputs
+    std::string form = "auto"; // --lut-form auto|shaper|table (lut/ops/InvertShaper.h)
     bool json = false;
     OutputOptions overwrite; // -y / -n (the output is the positional OUT)
     Verbosity verbosity;

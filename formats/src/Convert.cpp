@@ -14,6 +14,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/LutWriter.h"
 #include "lut/ops/CompareLuts.h"
+#include "lut/ops/Lattice.h"
 #include "lut/ops/Resample.h"
 #include "lut/ops/Strength.h"
 #include "lut/smash/SmashConstants.h"
@@ -95,13 +96,57 @@ ConvertReport convertLut(const std::string& input, const std::string& output,
     // The strength blends the edit (lut/ops/Strength.h): a raw input before it is made into the
     // game's LUT (the game shows the blend), the edit a game LUT makes after it is made; a LUT
     // written for the purpose it has is blended as it is.
+    // A shaper + table is blended over 0..1, where display pictures live (never over the
+    // shaper's whole range, 0..64 for a log shaper: its 0..1 would get a few lattice planes):
+    // behind the shaper, kept, when the output holds one and the shaper rises; else sampled at a
+    // lattice over 0..1. What that costs is bounded there and said.
     auto blend = [&](LutFile& f) {
-        if (f.shaper) {
+        if (f.shaper && f.cube) {
+            const StrengthAmounts amounts = strengthAmounts(options.strength);
+            LatticeRequest q;
+            q.domainMin = glm::vec3(0.0f);
+            q.domainMax = glm::vec3(1.0f);
+            q.finish = [amounts](const glm::dvec3& x, const glm::dvec3& y) {
+                return blendStrength(x, y, amounts);
+            };
+            FormatOptions wo = options.write;
+            if (!options.outFormat.empty())
+                FormatRegistry::instance().applyAlias(options.outFormat, wo);
+            std::optional<ShaperLatticeResult> kept;
+            if (writer->holdsShaperFor(wo))
+                kept = finishKeepingShaper(f, q);
+            ErrorStats error;
+            std::string how;
+            if (kept) {
+                f = std::move(kept->file);
+                error = kept->error;
+                how = "blended with neutral behind the 1D shaper (kept)";
+            } else {
+                const int fixed = writer->fixedSizeFor(wo);
+                q.size = wantSize ? wantSize
+                         : fixed  ? fixed
+                                  : std::max(f.cube->size(), kDefaultUnitSize);
+                LatticeResult r = sampleOnLattice(f, q);
+                f.cube = std::move(r.lut);
+                f.shaper.reset();
+                error = r.error;
+                how = "the 1D shaper and table blended with neutral at a " +
+                      std::to_string(q.size) + "^3 lattice over 0..1, where display pictures live";
+            }
+            error.seconds = 0.0;
+            sizeNotes.push_back({error.maxSteps8() > 1.0 ? Diagnostic::Severity::Warning
+                                                         : Diagnostic::Severity::Info,
+                                 output, 0, 0,
+                                 how + " (--strength): " + error.str() + " over 0..1"});
+            report.strength = amounts;
+            return;
+        }
+        if (f.shaper) { // 1D alone: as a table
             f.cube = f.toLut3D(0);
             sizeNotes.push_back({Diagnostic::Severity::Info, output, 0, 0,
-                                 "the 1D shaper was baked into a " +
+                                 "the 1D curves were made into a " +
                                      std::to_string(f.cube->size()) +
-                                     "^3 table to blend it with neutral (--strength)"});
+                                     "^3 table to blend them with neutral (--strength)"});
             f.shaper.reset();
         }
         f.cube = applyStrength(*f.cube, options.strength);

@@ -11,6 +11,8 @@
 // 81 / max 108 8-bit steps on a [0,1] gradient.
 #include "CliTestSupport.h"
 #include "OcioTestUtil.h"
+#include "ShapedCube.h"
+#include "TestSupport.h"
 
 #include "lut/Image.h"
 #include "lut/formats/ImageIO.h"
@@ -39,35 +41,9 @@ namespace {
 
 using lut::test::shellQuoted;
 
-// The log2 shaper: (log2(x) + 8) / 14 clamped to [0, 1], 4096 entries over 0..64, then a warm
-// tone-mapped grade of the linear value the shaper stands for, 33^3 (no TITLE: OpenColorIO's
-// Resolve reader refuses one).
-std::string writeShapedCube(const std::string& dir) {
-    const std::string path = dir + "/shaped.cube";
-    std::FILE* f = std::fopen(path.c_str(), "w");
-    std::fprintf(f, "LUT_1D_SIZE 4096\nLUT_1D_INPUT_RANGE 0 64\nLUT_3D_SIZE 33\n"
-                    "LUT_3D_INPUT_RANGE 0 1\n");
-    for (int i = 0; i < 4096; ++i) {
-        const double x = 64.0 * i / 4095.0;
-        const double y = x <= 0 ? 0.0 : std::clamp((std::log2(x) + 8.0) / 14.0, 0.0, 1.0);
-        std::fprintf(f, "%.7f %.7f %.7f\n", y, y, y);
-    }
-    for (int b = 0; b < 33; ++b)
-        for (int g = 0; g < 33; ++g)
-            for (int r = 0; r < 33; ++r) {
-                double lin[3];
-                const int idx[3] = {r, g, b};
-                for (int c = 0; c < 3; ++c)
-                    lin[c] = idx[c] == 0 ? 0.0 : std::pow(2.0, idx[c] / 32.0 * 14.0 - 8.0);
-                const double m[3] = {lin[0] * 1.1 + 0.05 * lin[1], lin[1] * 0.95 + 0.05 * lin[0],
-                                     lin[2] * 0.8 + 0.1 * lin[1]};
-                double o[3];
-                for (int c = 0; c < 3; ++c)
-                    o[c] = std::pow(m[c] / (1.0 + m[c]), 1.0 / 2.2);
-                std::fprintf(f, "%.7f %.7f %.7f\n", o[0], o[1], o[2]);
-            }
-    std::fclose(f);
-    return path;
+// The shared source (tests/support/ShapedCube.h), in dir.
+std::string shapedCubeIn(const std::string& dir) {
+    return lut::test::writeShapedCube(dir + "/shaped.cube");
 }
 
 // Reads every pixel of an image as float RGB through OpenImageIO.
@@ -112,7 +88,7 @@ glm::dvec3 srgbDecode(glm::dvec3 v) {
 
 TEST(ShaperOracle, ApplyEqualsOcioOnFloatImages) {
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     // 64x64 pixels: most in [0,1], a quarter HDR up to 64 (the shaper's range).
     Image img(64, 64);
     std::mt19937 rng(17);
@@ -153,7 +129,7 @@ TEST(ShaperOracle, PreviewLutStageEqualsOcio) {
     // none preset's recipe (lut::planPreview, docs/pipeline.md) display-encodes a scene (the
     // piecewise sRGB curve), then runs the LUT.
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     Image img(32, 32);
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) {
@@ -193,7 +169,7 @@ TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
     // neutral stage's own entry s when it shows white too: the one rule above white,
     // lut/smash/SmashAuthoring.h), clamped to [0,1] and rounded to 8 bits.
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     const RunResult r =
         runCli("convert " + shellQuoted(cube) + " " + shellQuoted(dir + "/game.nutexb"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -232,7 +208,7 @@ TEST(ShaperOracle, GameLutIsTheFormulaOfTheExactEdit) {
 
 TEST(ShaperOracle, InverseResidualWithinThePrintedBound) {
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     const std::string inv = dir + "/inverse.cube";
     const RunResult r = runCli("invert " + shellQuoted(cube) + " " + shellQuoted(inv));
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -260,7 +236,7 @@ TEST(ShaperOracle, LutImageSampledFromTheExactFile) {
     // A format that stores no shaper (an EXR strip): the shaper then the table at the strip's
     // lattice over [0,1], and a printed error that bounds the truth between lattice points.
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     const std::string strip = dir + "/strip.exr";
     const RunResult r = runCli("convert " + shellQuoted(cube) + " " + shellQuoted(strip) +
                                " --size 17 --target raw");
@@ -328,7 +304,7 @@ TEST(ShaperOracle, LutImageSampledFromTheExactFile) {
 
 TEST(ShaperOracle, OriginalLutWithAShaperSaysWhatSamplingCost) {
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     Image shot(64, 64);
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) {
@@ -374,7 +350,7 @@ double largestDifference(const OCIO::ConstCPUProcessorRcPtr& p,
 // written as it came, and OpenColorIO refused the output ("Unsupported tag: 'TITLE'").
 TEST(ShaperOracle, TitledShaperCubeWrittenSoOcioReadsIt) {
     const std::string dir = workDir();
-    const std::string plain = writeShapedCube(dir);
+    const std::string plain = shapedCubeIn(dir);
     const std::string titled = dir + "/titled.cube";
     {
         std::ifstream in(plain);
@@ -403,7 +379,7 @@ TEST(ShaperOracle, TitledShaperCubeWrittenSoOcioReadsIt) {
 // file with LUT_1D_SIZE was written.
 TEST(ShaperOracle, IridasCubeBakesTheShaperWithinThePrintedError) {
     const std::string dir = workDir();
-    const std::string cube = writeShapedCube(dir);
+    const std::string cube = shapedCubeIn(dir);
     const std::string out = dir + "/adobe.cube";
     const RunResult r =
         runCli("convert " + shellQuoted(cube) + " " + shellQuoted(out) + " --format iridas_cube");

@@ -17,6 +17,7 @@
 #include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
 #include "lut/io/LutWriter.h"
+#include "lut/ops/Lattice.h"
 
 #include <algorithm>
 #include <chrono>
@@ -188,6 +189,16 @@ void finishBake(const std::string& output, const BakeOptions& o, const Format& w
     } else {
         grid.domainMin = report.domainMin;
         grid.domainMax = report.domainMax;
+        // the source file's kinks, where the grid is linear in the input
+        // (a 3D table of a 3D source: a 1D bake's grey-axis grid is fine already)
+        if (source.kinksOf && source.kinksOf->cube && file.cube) {
+            const Breaks k = fileBreaks(*source.kinksOf, report.domainMin, report.domainMax);
+            for (int a = 0; a < 3; ++a)
+                for (const double x : k[static_cast<std::size_t>(a)])
+                    grid.breaks[static_cast<std::size_t>(a)].push_back(
+                        (x - report.domainMin[a]) /
+                        (double(report.domainMax[a]) - report.domainMin[a]));
+        }
     }
     LutFile measured = file;
     try {

@@ -117,6 +117,8 @@ BakeSource fromLut(const BakeOptions& o, const std::string& output) {
             after->processRgb(rgb, n);
     };
     s.what = o.lut;
+    if (!plan.before)
+        s.kinksOf = file;
     s.crosstalk = file.cube.has_value() || (before && before->hasChannelCrosstalk()) ||
                   (after && after->hasChannelCrosstalk());
     if (spec.any()) {
@@ -149,8 +151,18 @@ BakeSource makeBakeSource(const BakeOptions& o, const std::string& output) {
                                "or LUT files (--lut)");
     if (sources > 1)
         throw ColorOptionError("bake one thing: colour spaces of a config, or LUT files");
-    if (!o.files.empty())
-        return fromFiles(o, output);
+    if (!o.files.empty()) {
+        BakeSource s = fromFiles(o, output);
+        // One file applied forward: where it kinks, as lutkit reads it (unreadable: unknown).
+        // Read after fromFiles' OpenColorIO session has ended (readLut may open its own).
+        if (o.files.size() == 1 && !o.files.front().inverse && o.files.front().cccid.empty()) {
+            try {
+                s.kinksOf = readLut(o.files.front().path);
+            } catch (const Error&) {
+            }
+        }
+        return s;
+    }
     if (!o.lut.empty())
         return fromLut(o, output);
     return fromConfig(o);

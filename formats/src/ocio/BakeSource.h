@@ -19,6 +19,9 @@ struct BakeSource {
     std::optional<ColorSpaceInfo> inputInfo;
     std::optional<std::pair<glm::vec3, glm::vec3>> ownRange; // a source file's input range
     bool crosstalk = true; // false: the function works on each channel alone
+    // Where the truth kinks, per axis in input coordinates (a LUT file with no conversion before
+    // it: its lattice planes, shaper entries and crossings; lut::fileBreaks); empty = unknown.
+    std::optional<LutFile> kinksOf;
     Diagnostics diagnostics;
 };
 

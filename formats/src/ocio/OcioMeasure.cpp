@@ -48,6 +48,7 @@ ErrorStats measureAgainst(const RgbFunction& candidate, const RgbFunction& truth
                   : std::max(1, (std::max(2, grid.perAxis) - 1) / (grid.greyOnly ? 4 : 2));
     o.budget = grid.budget;
     o.nthreads = nthreads;
+    o.breaks = grid.breaks;
     // The box is u in [0,1]^3, mapped to inputs as the probe grid says.
     const ErrorStats e = boundError(
         [&](const glm::dvec3* u, glm::dvec3* diff, std::size_t n) {

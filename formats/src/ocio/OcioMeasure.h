@@ -10,9 +10,11 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace lut::formats {
 
@@ -42,6 +44,9 @@ struct ProbeGrid {
     // Probe coordinates u in [0,1]^3 to inputs; null = domainMin + (domainMax - domainMin) u.
     RgbFunction toInput;
     glm::vec3 domainMin{0.0f}, domainMax{1.0f};
+    // Where the truth kinks, per axis in u (a LUT file's planes and shaper entries): planes of
+    // the bound's grid, so that its slope term sees both sides of each.
+    std::array<std::vector<double>, 3> breaks;
 };
 
 // The probe count per axis that puts a probe at every cell centre of an N^3 lattice (2N - 1)

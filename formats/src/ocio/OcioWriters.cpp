@@ -21,8 +21,11 @@
 #include "ocio/OcioSession.h"
 
 #include "lut/Error.h"
+#include "lut/ErrorStats.h"
 #include "lut/ops/Resample.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -127,9 +130,18 @@ private:
                                                    ") are clipped: " + m_name + " stores " +
                                                    std::to_string(m_storedBits) + "-bit integers",
                                                Diagnostic::Severity::Warning));
-            else
-                diags.push_back(ocioDiagnostic(
-                    path, m_name + " stores " + std::to_string(m_storedBits) + "-bit integers"));
+            // What storing integers costs: every entry against its stored code (the clip
+            // included), exact over every input (interpolation blends entries).
+            const double scale = std::ldexp(1.0, m_storedBits) - 1.0;
+            ErrorAccumulator acc;
+            for (const glm::vec3& v : lut.entries())
+                for (int c = 0; c < 3; ++c)
+                    if (std::isfinite(v[c]))
+                        acc.add(std::round(std::clamp(double(v[c]), 0.0, 1.0) * scale) / scale,
+                                v[c]);
+            diags.push_back(ocioDiagnostic(path, m_name + " stores " +
+                                                     std::to_string(m_storedBits) +
+                                                     "-bit integers: " + acc.result().str()));
         }
 
         OcioSession session(path);

@@ -284,7 +284,8 @@ InvertResult invert(const Lut3D& source, const InvertOptions& options) {
             const int g = row % m, b = row / m;
             std::optional<glm::dvec3> previous;
             for (int r = 0; r < m; ++r) {
-                const glm::vec3 target = result.lut.latticeInput(r, g, b);
+                const glm::vec3 p = result.lut.latticeInput(r, g, b);
+                const glm::vec3 target = o.targetOf ? glm::vec3(o.targetOf(glm::dvec3(p))) : p;
                 bool usedLs = false;
                 const Sol s = solver.solve(glm::dvec3(target), previous, usedLs);
                 previous = s.x;
@@ -316,6 +317,8 @@ InvertResult invert(const Lut3D& source, const InvertOptions& options) {
     rep.meanResidual = total.points ? total.sumResidual / static_cast<double>(total.points) : 0.0;
     rep.foldedCells = countFoldedCells(a, o.nthreads);
     rep.seconds = detail::secondsSince(t0);
+    if (o.targetOf)
+        return result;
 
     const auto fa = makeSampler(a, Interpolation::Tetrahedral);
     const auto fi = makeSampler(result.lut, Interpolation::Tetrahedral);

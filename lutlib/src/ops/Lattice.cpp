@@ -6,10 +6,12 @@
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/ErrorBound.h"
+#include "ops/OpsDetail.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace lut {
@@ -64,6 +66,19 @@ Breaks shaperBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
 
 } // namespace
 
+Breaks fileBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
+    if (file.shaper)
+        return shaperBreaks(file, lo, hi);
+    Breaks out;
+    if (file.cube)
+        for (int a = 0; a < 3; ++a)
+            for (const double x :
+                 latticeBreaks(*file.cube, Interpolation::Tetrahedral)[static_cast<std::size_t>(a)])
+                if (x > lo[a] && x < hi[a])
+                    out[static_cast<std::size_t>(a)].push_back(x);
+    return out;
+}
+
 LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& q) {
     if (!file.cube && !file.shaper)
         throw Error("the LUT file holds no table");
@@ -82,8 +97,12 @@ LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& q) {
     parallelFor(size, q.nthreads, [&](int b0, int b1) {
         for (int b = b0; b < b1; ++b)
             for (int g = 0; g < size; ++g)
-                for (int r = 0; r < size; ++r)
-                    out.at(r, g, b) = exact->sample(out.latticeInput(r, g, b));
+                for (int r = 0; r < size; ++r) {
+                    const glm::vec3 x = out.latticeInput(r, g, b);
+                    const glm::vec3 y = exact->sample(x);
+                    out.at(r, g, b) =
+                        q.finish ? glm::vec3(q.finish(glm::dvec3(x), glm::dvec3(y))) : y;
+                }
     });
 
     // The cost of reading the lattice instead of the file, bounded over the whole domain
@@ -106,11 +125,74 @@ LatticeResult sampleOnLattice(const LutFile& file, const LatticeRequest& q) {
         [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t n) {
             for (std::size_t i = 0; i < n; ++i) {
                 const glm::vec3 x(in[i]);
-                diff[i] = glm::dvec3(exact->sample(x)) - glm::dvec3(read->sample(x));
+                const glm::dvec3 y(exact->sample(x));
+                diff[i] = (q.finish ? q.finish(glm::dvec3(x), y) : y) - glm::dvec3(read->sample(x));
             }
         },
         o);
     res.heldOut = res.error.heldOutPoints;
+    res.error.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return res;
+}
+
+std::optional<ShaperLatticeResult> finishKeepingShaper(const LutFile& file,
+                                                       const LatticeRequest& q) {
+    if (!file.shaper || !file.cube)
+        return std::nullopt;
+    const auto t0 = std::chrono::steady_clock::now();
+    const glm::vec3 lo = q.domainMin.value_or(file.inputDomainMin());
+    const glm::vec3 hi = q.domainMax.value_or(file.inputDomainMax());
+    const Lut1D& sh = *file.shaper;
+    const int n = sh.size();
+    std::vector<std::unique_ptr<detail::PiecewiseLinearInverse>> inv;
+    for (int c = 0; c < 3; ++c) {
+        const double d0 = sh.domainMin()[c], d1 = sh.domainMax()[c];
+        std::vector<double> xs, ys;
+        for (int i = 0; i < n; ++i) {
+            const double x = d0 + (d1 - d0) * i / (n - 1);
+            const double y = sh[i][c];
+            // strictly increasing wherever it meets the domain
+            if (i > 0 && !(y > ys.back()) && x > lo[c] && xs.back() < hi[c])
+                return std::nullopt;
+            xs.push_back(x);
+            ys.push_back(std::isfinite(y) ? y : 0.0);
+        }
+        inv.push_back(std::make_unique<detail::PiecewiseLinearInverse>(xs, ys));
+    }
+    ShaperLatticeResult res;
+    res.file = file;
+    Lut3D& t = *res.file.cube;
+    const int m = t.size();
+    parallelFor(m, q.nthreads, [&](int b0, int b1) {
+        for (int b = b0; b < b1; ++b)
+            for (int g = 0; g < m; ++g)
+                for (int r = 0; r < m; ++r) {
+                    const glm::dvec3 u(t.latticeInput(r, g, b));
+                    glm::dvec3 x;
+                    for (int c = 0; c < 3; ++c)
+                        x[c] = (*inv[static_cast<std::size_t>(c)])(u[c]).x;
+                    const glm::dvec3 y(t.at(r, g, b));
+                    t.at(r, g, b) = glm::vec3(q.finish ? q.finish(x, y) : y);
+                }
+    });
+    const auto exact = makeSampler(file, q.fileMethod);
+    const auto read = makeSampler(res.file, q.fileMethod);
+    BoundOptions o;
+    o.lo = glm::dvec3(lo);
+    o.hi = glm::dvec3(hi);
+    o.cells = m - 1;
+    o.nthreads = q.nthreads;
+    o.breaks = shaperBreaks(file, lo, hi);
+    res.error = boundError(
+        [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t count) {
+            for (std::size_t i = 0; i < count; ++i) {
+                const glm::vec3 x(in[i]);
+                const glm::dvec3 y(exact->sample(x));
+                diff[i] = (q.finish ? q.finish(glm::dvec3(x), y) : y) - glm::dvec3(read->sample(x));
+            }
+        },
+        o);
     res.error.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;

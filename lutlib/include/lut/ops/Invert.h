@@ -26,6 +26,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace lut {
@@ -38,6 +39,10 @@ struct InvertOptions {
     double tolerance = 1e-5; // a target is reached when max |A(x) - y| over channels <= this
     int maxIterations = 40;  // per start
     int nthreads = 0;        // 0 = all cores
+    // 3D: the target each lattice input p of the inverse stands for (a 1D shaper S before the
+    // inverse: S^-1(p), lut/ops/InvertShaper.h); empty = p itself. When set, the report's
+    // residual and roundTrip are left empty: they belong to the shaper and table together.
+    std::function<glm::dvec3(glm::dvec3)> targetOf;
 };
 
 struct UnreachedPoint {
