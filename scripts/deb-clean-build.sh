@@ -17,11 +17,12 @@
 set -euo pipefail
 root="${1:-/tmp/lutkit-build12}"
 here="$(cd "$(dirname "$0")/.." && pwd)"
-mirror="${DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 cache="${LUTKIT_CCACHE_DIR:-$HOME/.cache/ccache}"
 [ "$(id -u)" -eq 0 ] || { echo "deb-clean-build: run as root (debootstrap, chroot)" >&2; exit 2; }
 command -v debootstrap >/dev/null || apt-get install -y -qq debootstrap >/dev/null
 step() { echo "== $* ($(date +%T))"; }
+# shellcheck source=scripts/debian-root.sh
+source "$(dirname "$0")/debian-root.sh"
 mounted=()
 cleanup() {
   for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[$i]}" 2>/dev/null || true; done
@@ -30,18 +31,7 @@ trap cleanup EXIT
 bind() { mkdir -p "$2" && mount --bind "$1" "$2" && mounted+=("$2"); }
 
 step "debootstrap --variant=minbase --include=git,ca-certificates bookworm $root"
-if grep -q " $root/" /proc/mounts; then
-  echo "deb-clean-build: something is still mounted under $root; unmount it first" >&2
-  exit 2
-fi
-rm -rf "$root"
-debootstrap --variant=minbase --include=git,ca-certificates bookworm "$root" "$mirror" >/dev/null
-cat >"$root/etc/apt/sources.list" <<EOF
-deb $mirror bookworm main
-deb $mirror bookworm-updates main
-deb http://deb.debian.org/debian-security bookworm-security main
-EOF
-cp /etc/resolv.conf "$root/etc/resolv.conf"
+make_bookworm_root "$root" git,ca-certificates
 [ -d "$cache" ] && bind "$cache" "$root/root/.cache/ccache"
 git clone -q "$here" "$root/root/lutkit"
 git clone -q "$here" "$root/root/lutkit-run"

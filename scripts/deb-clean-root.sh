@@ -9,21 +9,15 @@
 set -euo pipefail
 deb="$(readlink -f "${1:?usage: scripts/deb-clean-root.sh DEB [ROOT]}")"
 root="${2:-/tmp/lutkit-deb12}"
-mirror="${DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 [ "$(id -u)" -eq 0 ] || { echo "deb-clean-root: run as root (debootstrap, chroot)" >&2; exit 2; }
 command -v debootstrap >/dev/null || apt-get install -y -qq debootstrap >/dev/null
 command -v oiiotool >/dev/null || { echo "deb-clean-root: oiiotool makes the inputs (scripts/install-deps.sh)" >&2; exit 2; }
 step() { echo "== $* ($(date +%T))"; }
+# shellcheck source=scripts/debian-root.sh
+source "$(dirname "$0")/debian-root.sh"
 
 step "debootstrap --variant=minbase bookworm $root"
-rm -rf "$root"
-debootstrap --variant=minbase bookworm "$root" "$mirror" >/dev/null
-cat >"$root/etc/apt/sources.list" <<EOF
-deb $mirror bookworm main
-deb $mirror bookworm-updates main
-deb http://deb.debian.org/debian-security bookworm-security main
-EOF
-cp /etc/resolv.conf "$root/etc/resolv.conf"
+make_bookworm_root "$root"
 
 step "apt install ./$(basename "$deb")"
 mkdir -p "$root/root/qs"
