@@ -70,12 +70,14 @@ Breaks fileBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
     if (file.shaper)
         return shaperBreaks(file, lo, hi);
     Breaks out;
-    if (file.cube)
-        for (int a = 0; a < 3; ++a)
-            for (const double x :
-                 latticeBreaks(*file.cube, Interpolation::Tetrahedral)[static_cast<std::size_t>(a)])
-                if (x > lo[a] && x < hi[a])
-                    out[static_cast<std::size_t>(a)].push_back(x);
+    if (!file.cube)
+        return out;
+    // Held here: a range-for over an element of the temporary would read it after its end.
+    const Breaks all = latticeBreaks(*file.cube, Interpolation::Tetrahedral);
+    for (int a = 0; a < 3; ++a)
+        for (const double x : all[static_cast<std::size_t>(a)])
+            if (x > lo[a] && x < hi[a])
+                out[static_cast<std::size_t>(a)].push_back(x);
     return out;
 }
 
