@@ -22,6 +22,11 @@ Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path
     return d;
 }
 
+bool samplesDisplayRange(glm::vec3 shaperMin, glm::vec3 shaperMax) {
+    return shaperMin.x <= 0 && shaperMin.y <= 0 && shaperMin.z <= 0 && shaperMax.x >= 1 &&
+           shaperMax.y >= 1 && shaperMax.z >= 1;
+}
+
 static std::string vecStr(glm::vec3 v) {
     auto f = [](float x) {
         char buf[32];
@@ -51,9 +56,8 @@ Lut3D prepareUnitLut(const LutFile& file, int size, const std::string& path, Dia
             r.error.maxSteps8() > 1.0 ? S::Warning : S::Info, path,
             std::string("the 1D shaper") +
                 (file.cube ? " and " + std::to_string(file.cube->size()) + "^3 table" : "") +
-                " sampled at a " + std::to_string(q.size) +
-                "^3 lattice over 0..1, where display pictures live (this format stores no "
-                "shaper" +
+                " sampled at a " + std::to_string(q.size) + "^3 lattice " + kDisplayRangeWords +
+                " (this format stores no shaper" +
                 (wider
                      ? "; inputs outside 0..1 of the shaper's " + vecStr(lo) + " .. " + vecStr(hi) +
                            " take the edge value: a format that keeps the shaper, such as "

@@ -150,3 +150,38 @@ TEST(Truth, BakePrintedMaximaBoundTheSourceFile) {
             }
     }
 }
+
+// Issue 40's fault in bake: `bake --lut` of a shaper .cube to a format that keeps one input range
+// (Resolve .cube, .clf) or none (Adobe .cube) sampled the table over the shaper's 0..64, so inputs
+// in 0..1 fell in the first cells: OpenColorIO's reading of the written file was off its reading
+// of the source by mean 42.7 / max 81.8 8-bit steps (Resolve, 64^3) and 78.5 / 109.0 (Adobe, 32^3)
+// on these inputs. Now sampled over 0..1 as convert does (ociobakelut's files: 0.224 / 16.06 and
+// 0.750 / 19.00), said so, and the printed maximum is over 0..1 and bounds the truth.
+TEST(Truth, BakeOfAShaperSamplesTheDisplayRange) {
+    const std::string dir = workDir("bake-display");
+    const std::string src = writeShapedCube(dir + "/shaped.cube");
+    const std::vector<float> x = randomUnitInputs(100000, 49);
+    std::vector<float> want = x;
+    ocioApply(src, want);
+    const std::pair<const char*, const char*> outs[] = {{"resolve.cube", "--format resolve_cube"},
+                                                        {"adobe.cube", "--format iridas_cube"},
+                                                        {"table.clf", ""}};
+    for (const auto& [name, args] : outs) {
+        const std::string out = dir + "/" + name;
+        const auto r = lut::test::runCli("bake --lut " + shellQuoted(src) + " " + args + " " +
+                                         shellQuoted(out) + " -y --json");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.out.find("over 0..1, where display pictures live"), std::string::npos) << r.out;
+        const std::string bytes = lut::test::fileBytes(out);
+        for (const char* range : {"INPUT_RANGE 0 64", "DOMAIN_MAX 64", "<maxInValue>64"})
+            EXPECT_EQ(bytes.find(range), std::string::npos) << name << ": " << range;
+        const double printed = jsonNumber(r.out, "max", r.out.find("\"error\": "));
+        std::vector<float> got = x;
+        ocioApply(out, got);
+        const Truth t = compare(want, got);
+        row(std::string("bake --lut shaper + 33^3 ") + args + " (" + name + ")", t.max, printed,
+            t.mean);
+        EXPECT_LT(t.mean * 255, 1.0) << name;
+        EXPECT_GE(printed + kOracleRounding, t.max) << name << "\n" << r.out;
+    }
+}

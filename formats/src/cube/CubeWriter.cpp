@@ -10,6 +10,8 @@
 // equal on all channels; otherwise the shaper is baked into the cube (Warning). Non-finite
 // entries are written as 0 (NaN) or +-FLT_MAX (Inf) with a Warning. Big tables are formatted on
 // all cores.
+#include "LutPrep.h"
+
 #include "lut/NumberText.h"
 #include "lut/formats/Cube.h"
 
@@ -179,8 +181,7 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
             LatticeRequest q;
             q.size = cube->size();
             const glm::vec3 lo = lut.inputDomainMin(), hi = lut.inputDomainMax();
-            const bool unit = options.dialect == Dialect::Adobe && lo.x <= 0 && lo.y <= 0 &&
-                              lo.z <= 0 && hi.x >= 1 && hi.y >= 1 && hi.z >= 1;
+            const bool unit = options.dialect == Dialect::Adobe && samplesDisplayRange(lo, hi);
             if (unit) {
                 q.domainMin = glm::vec3(0.0f);
                 q.domainMax = glm::vec3(1.0f);
@@ -201,8 +202,8 @@ std::string writeCubeString(const LutFile& lut, Diagnostics* diagnostics,
                                                "differs per channel, and the Resolve dialect has "
                                                "one input range for all channels") +
                                  (unit && (lo != glm::vec3(0.0f) || hi != glm::vec3(1.0f))
-                                      ? " over 0..1, where display pictures live (inputs outside "
-                                        "it take the edge value)"
+                                      ? std::string(" ") + kDisplayRangeWords +
+                                            " (inputs outside it take the edge value)"
                                       : std::string()) +
                                  " (" + r.error.str() + " on " + std::to_string(r.heldOut) +
                                  " inputs between lattice points)"});

@@ -4,6 +4,7 @@
 // format and measure the written file against the conversion (lut/formats/Bake.h).
 #include "lut/formats/Bake.h"
 
+#include "LutPrep.h"
 #include "ocio/BakeSource.h"
 #include "ocio/OcioMeasure.h"
 #include "ocio/OcioSession.h"
@@ -244,6 +245,13 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
     report.configUsed = source.configUsed;
     report.diagnostics = source.diagnostics;
 
+    FormatOptions named = o.write; // with the dialect --format names (resolve_cube ...)
+    if (!o.format.empty())
+        registry.applyAlias(o.format, named);
+    // A shaper in the file (the Adobe .cube dialect bakes it in).
+    const bool keepsShaper =
+        writer->holdsShaper() && named.attribute(kCubeDialectAttribute) != "adobe";
+
     // The shaper.
     ShaperPlan shaper;
     const bool hdr = source.inputInfo && source.inputInfo->isHdrLinear();
@@ -258,6 +266,23 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
     } else if (o.shaper == ShaperChoice::Auto) {
         if (hdr && writer->holdsShaper())
             shaper = log2Shaper(&*source.inputInfo);
+        else if (source.ownRange && source.shaped &&
+                 samplesDisplayRange(source.ownRange->first, source.ownRange->second))
+            // A shaper + table becomes one table over 0..1, as convert writes it where the
+            // format holds no shaper (LutPrep.h's rule): over the shaper's own 0..64 inputs in
+            // 0..1 fell in the first cells (off by 100+ 8-bit steps).
+            report.diagnostics.push_back(diag(
+                output,
+                "the source's 1D shaper and 3D table sampled at one table " +
+                    std::string(kDisplayRangeWords) + ": inputs outside 0..1 of its shaper's " +
+                    num(source.ownRange->first.x) + ".." + num(source.ownRange->second.x) +
+                    " take the edge value (" +
+                    (keepsShaper
+                         ? std::string("--shaper log2 keeps inputs up to 16 in a log2 shaper")
+                         : std::string("a Resolve .cube, .clf or .ctf with --shaper log2 keeps "
+                                       "inputs up to 16 in a log2 shaper")) +
+                    "; lutkit convert keeps the source's own shaper)",
+                Diagnostic::Severity::Warning));
         else if (source.ownRange && writer->holdsShaper())
             shaper = rangeShaper(source.ownRange->first, source.ownRange->second);
         else if (hdr)
@@ -277,9 +302,6 @@ BakeReport bake(const std::string& output, const BakeOptions& o) {
     }
     report.shaper = shaper.text;
     const int fixed = writer->fixedSizeFor(o.write);
-    FormatOptions named = o.write; // with the dialect --format names (resolve_cube ...)
-    if (!o.format.empty())
-        registry.applyAlias(o.format, named);
     const int n = o.cubeSize ? o.cubeSize : (fixed ? fixed : ociobakelutCubeSize(*writer, named));
     report.cubeSize = n;
 

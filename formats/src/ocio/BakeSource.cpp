@@ -83,8 +83,10 @@ BakeSource fromFiles(const BakeOptions& o, const std::string& output) {
             doing = "inspecting the processor";
             const OcioStructure st = analyseProcessor(config, processor);
             if (st.kind != OcioStructure::Kind::Chain &&
-                (st.domainMin != glm::vec3(0.0f) || st.domainMax != glm::vec3(1.0f)))
+                (st.domainMin != glm::vec3(0.0f) || st.domainMax != glm::vec3(1.0f))) {
                 s.ownRange = std::make_pair(st.domainMin, st.domainMax);
+                s.shaped = st.kind == OcioStructure::Kind::ShaperCube;
+            }
         }
     } catch (const Error&) {
         throw;
@@ -134,8 +136,10 @@ BakeSource fromLut(const BakeOptions& o, const std::string& output) {
     if (!plan.before) {
         const glm::vec3 lo = file.shaper ? file.shaper->domainMin() : file.cube->domainMin();
         const glm::vec3 hi = file.shaper ? file.shaper->domainMax() : file.cube->domainMax();
-        if (lo != glm::vec3(0.0f) || hi != glm::vec3(1.0f))
+        if (lo != glm::vec3(0.0f) || hi != glm::vec3(1.0f)) {
             s.ownRange = std::make_pair(lo, hi);
+            s.shaped = file.shaper && file.cube;
+        }
     }
     return s;
 }

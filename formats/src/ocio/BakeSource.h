@@ -18,6 +18,7 @@ struct BakeSource {
     std::string inputSpace;            // resolved name ("" when not known)
     std::optional<ColorSpaceInfo> inputInfo;
     std::optional<std::pair<glm::vec3, glm::vec3>> ownRange; // a source file's input range
+    bool shaped = false;   // ownRange is a 1D shaper's before a 3D table (not a table's own)
     bool crosstalk = true; // false: the function works on each channel alone
     // Where the truth kinks, per axis in input coordinates (a LUT file with no conversion before
     // it: its lattice planes, shaper entries and crossings; lut::fileBreaks); empty = unknown.
