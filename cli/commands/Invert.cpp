@@ -9,8 +9,10 @@
 #include "Vocabulary.h"
 #include "WrittenCheck.h"
 
+#include "lut/formats/Cube.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/FileNames.h"
 #include "lut/io/FormatRegistry.h"
 #include "lut/ops/Invert.h"
 #include "lut/ops/InvertFile.h"
@@ -181,6 +183,15 @@ int runInvert(const InvertCommandOptions& o) {
         LutFile out = shaped.lut;
         out.purpose = purpose;
         const WrittenLut w = writeLutFile(o.output, out, o.format, {o.input});
+        // Resolve's form, which ffmpeg and Photoshop do not read: said, with what the one table
+        // they read costs (the library's warning, as match gives it).
+        if (o.format.empty() && o.form == "auto" && extensionOf(o.output) == ".cube")
+            notes.push_back(formats::resolveCubeReadersWarning(
+                o.output, "the inverse is steep",
+                "as one table its round trip would be max " +
+                    significant(roundUpSignificant(form.table->maxSteps8())) +
+                    " 8-bit steps over A's domain",
+                "the inverse as one table"));
         printReport(o, shaped.report, false, form);
         if (!o.json) {
             std::cout << "wrote    " << o.output << ": " << w.format << ", a " << out.shaper->size()

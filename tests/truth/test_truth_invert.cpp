@@ -78,6 +78,23 @@ TEST(Truth, InvertOfASteepCurveWritesAShaperWhereItHelps) {
     // the shaper run printed the table's figure too, a bound of the table's truth
     EXPECT_GE(printed(shaped, "round_trip_table") + kOracleRounding, tt.max) << shaped.json;
 
+    // Resolve's form, which ffmpeg and Photoshop refuse: one warning names the flag that writes
+    // what they read and its round trip, a bound of OpenColorIO's round trip through that file
+    const auto text = lut::test::runCli("invert " + shellQuoted(src) + " " +
+                                        shellQuoted(dir + "/inv2.cube") + " -y");
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    const auto said = text.out.find("--format iridas_cube writes one");
+    ASSERT_NE(said, std::string::npos) << text.out;
+    EXPECT_EQ(text.out.find("--format iridas_cube", said + 1), std::string::npos) << text.out;
+    const auto at = text.out.rfind("round trip would be max ", said);
+    ASSERT_NE(at, std::string::npos) << text.out;
+    const double warned = std::strtod(text.out.c_str() + at + 24, nullptr) / 255.0;
+    const Inverted adobe = invertTo(src, dir + "/inv_adobe.cube", "--format iridas_cube");
+    EXPECT_EQ(lut::test::fileBytes(adobe.out).find("LUT_1D_SIZE"), std::string::npos);
+    const Truth ta = roundTripTruth(src, adobe.out, x);
+    row("invert x^2.2 33^3: the iridas_cube warning's round trip", ta.max, warned, ta.mean);
+    EXPECT_GE(warned + kOracleRounding, ta.max) << text.out;
+
     // a format without a shaper: the table, said so
     const auto png = lut::test::runCli("invert " + shellQuoted(src) + " " +
                                        shellQuoted(dir + "/inv.png") + " -y");

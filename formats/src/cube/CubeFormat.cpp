@@ -86,4 +86,19 @@ std::unique_ptr<Format> makeCubeFormat() {
     return std::make_unique<CubeFormat>();
 }
 
+Diagnostic resolveCubeReadersWarning(const std::string& path, const std::string& kept,
+                                     const std::string& tableAlone,
+                                     const std::string& iridasWrites) {
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.path = path;
+    d.message = "a 1D shaper then a 3D table (DaVinci Resolve's .cube, which OpenColorIO reads "
+                "too), kept because " +
+                kept + (tableAlone.empty() ? std::string() : " (" + tableAlone + ")") +
+                "; ffmpeg's lut3d, Photoshop's Color Lookup and most game engines read a 3D "
+                "table alone: --format iridas_cube writes one (" +
+                iridasWrites + ")";
+    return d;
+}
+
 } // namespace lut::formats

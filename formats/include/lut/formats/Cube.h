@@ -75,4 +75,13 @@ CubeValidation validateCube(const std::string& path, bool strict);
 // Short description of what a .cube LutFile holds, as in CubeValidation::summary().
 std::string describeCube(const LutFile& lut);
 
+// The one warning for a .cube written as a 1D shaper then a 3D table (the Resolve dialect) where
+// the user named no form: ffmpeg's lut3d ("Invalid data found"), Photoshop's Color Lookup and
+// most game engines refuse it; --format iridas_cube writes the one 3D table they read. `kept`
+// says why the shaper is there ("the look needs it"); `tableAlone`, when not empty, what the one
+// table costs, as the command printed it ("the table alone would be max ... from the match").
+Diagnostic resolveCubeReadersWarning(const std::string& path, const std::string& kept,
+                                     const std::string& tableAlone,
+                                     const std::string& iridasWrites);
+
 } // namespace lut::formats
