@@ -10,6 +10,7 @@
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -244,6 +245,20 @@ void scanLattice(const Context& ctx, std::vector<Flag>& flags, CheckFigures& fig
     std::map<int, std::vector<Flag>> chunks;
     std::mutex mutex;
     double worstFold = 0.0, steepest = 0.0;
+    // Behind a 1D shaper a lattice step is not a fixed input step: each one's input distance in
+    // the file (per axis, through the shaper's inverse), so slopes are what the file does, the
+    // shaper then the table, as OpenColorIO applies it.
+    std::array<std::vector<double>, 3> inputSteps;
+    if (ctx.shaper()) {
+        const glm::vec3 span = ctx.inputMax() - ctx.inputMin();
+        for (int i = 0; i + 1 < n; ++i) {
+            const glm::vec3 a = ctx.fileInput(glm::vec3(static_cast<float>(i) / (n - 1)));
+            const glm::vec3 b = ctx.fileInput(glm::vec3(static_cast<float>(i + 1) / (n - 1)));
+            for (int c = 0; c < 3; ++c)
+                inputSteps[static_cast<std::size_t>(c)].push_back(
+                    span[c] > 0.0f ? std::fabs(double(b[c]) - a[c]) / span[c] : step);
+        }
+    }
     parallelFor(lines, ctx.nthreads(), [&](int begin, int end) {
         std::vector<Flag> local;
         std::vector<glm::vec3> values(static_cast<std::size_t>(n));
@@ -264,6 +279,8 @@ void scanLattice(const Context& ctx, std::vector<Flag>& flags, CheckFigures& fig
             line.values = values.data();
             line.count = n;
             line.step = step;
+            if (ctx.shaper())
+                line.segmentSteps = inputSteps[static_cast<std::size_t>(axis)].data();
             line.direction = glm::ivec3(0);
             line.direction[axis] = 1;
             line.ownChannel = axis;

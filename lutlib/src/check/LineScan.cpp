@@ -49,7 +49,19 @@ Segments segmentsOf(const LineSpec& line, const ClipBounds& bounds) {
         const auto k = static_cast<std::size_t>(i);
         s.change[k] = best;
         s.channel[k] = bestC;
-        s.slope[k] = best / line.step;
+        if (line.segmentSteps) {
+            // From this sample over one input 8-bit step at least: the change there per step.
+            double width = 0.0;
+            int j = i;
+            while (j < segs && width < 1.0 / kSteps)
+                width += line.segmentSteps[j++];
+            float across = best;
+            for (int c = 0; c < 3; ++c)
+                across = std::max(across, std::fabs(line.values[j][c] - a[c]));
+            s.slope[k] = across / std::max(width, 1.0 / kSteps);
+        } else {
+            s.slope[k] = best / line.step;
+        }
     }
     return s;
 }

@@ -60,7 +60,11 @@ struct LineFigures {
 struct LineSpec {
     const glm::vec3* values = nullptr;
     int count = 0;
-    double step = 1.0;       // input distance between samples, as a fraction of the domain
+    double step = 1.0; // input distance between samples, as a fraction of the domain
+    // Where it varies (a table behind a 1D shaper: the file's input distance of each lattice
+    // step), per segment; slopes are then output steps per input step of the file, each from its
+    // sample over the segments that span one input 8-bit step at least.
+    const double* segmentSteps = nullptr;
     glm::ivec3 direction{0}; // channels that must move one way along the line
     int ownChannel = -1;     // a lattice line's axis: clips, second differences; -1 for rays
 };
