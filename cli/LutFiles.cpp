@@ -4,6 +4,7 @@
 #include "PurposeText.h"
 
 #include "lut/Error.h"
+#include "lut/formats/DisplayRange.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -37,17 +38,30 @@ Lut3D readLutTable(const std::string& path, const Verbosity& verbosity, PurposeD
     }
     if (!file.shaper)
         return file.toLut3D();
-    // One lattice over the file's input domain, never silently: what it costs between its points.
-    LatticeResult r = sampleOnLattice(file);
+    // One lattice, never silently: what it costs between its points. Over 0..1 where the shaper's
+    // domain holds it (the one rule, lut/formats/DisplayRange.h), else over that domain.
+    const bool display = formats::samplesDisplayRange(file.inputDomainMin(), file.inputDomainMax());
+    LatticeRequest q;
+    if (display) {
+        q.domainMin = glm::vec3(0.0f);
+        q.domainMax = glm::vec3(1.0f);
+    }
+    LatticeResult r = sampleOnLattice(file, q);
     r.error.seconds = 0.0;
     Diagnostic d;
     d.severity =
         r.error.maxSteps8() > 1.0 ? Diagnostic::Severity::Warning : Diagnostic::Severity::Info;
     d.path = path;
-    d.message =
-        "its 1D shaper and table taken as one " + std::to_string(r.lut.size()) +
-        "^3 table over the shaper's range (this command works on one lattice): " + r.error.str() +
-        " on " + std::to_string(r.heldOut) + " inputs between lattice points";
+    d.message = "its 1D shaper and table taken as one " + std::to_string(r.lut.size()) +
+                "^3 table " +
+                (display ? std::string(formats::kDisplayRangeWords) +
+                               (file.inputDomainMin() != glm::vec3(0.0f) ||
+                                        file.inputDomainMax() != glm::vec3(1.0f)
+                                    ? " (inputs outside it take the edge value)"
+                                    : std::string())
+                         : std::string("over the shaper's range")) +
+                " (this command works on one lattice): " + r.error.str() + " on " +
+                std::to_string(r.heldOut) + " inputs between lattice points";
     printDiagnostics(std::cerr, {d}, verbosity, "lutkit: ");
     return std::move(r.lut);
 }

@@ -24,7 +24,8 @@ LutFile readCommandLut(const std::string& path, const std::optional<LutLayout>& 
                        const Verbosity& verbosity);
 
 // The file as one 3D table, its diagnostics printed to stderr; a file with a shaper is sampled at
-// the table's size over the shaper's range (lut::sampleOnLattice) and the error that costs between
+// the table's size (lut::sampleOnLattice) over 0..1 where the shaper's range holds it (the one
+// rule, lut/formats/DisplayRange.h), else over that range, and the error that costs between
 // lattice points is said. `purpose` (optional) receives what the file is for (lut/LutPurpose.h;
 // `given`: a flag's value).
 Lut3D readLutTable(const std::string& path, const Verbosity& verbosity,

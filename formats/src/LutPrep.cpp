@@ -22,11 +22,6 @@ Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path
     return d;
 }
 
-bool samplesDisplayRange(glm::vec3 shaperMin, glm::vec3 shaperMax) {
-    return shaperMin.x <= 0 && shaperMin.y <= 0 && shaperMin.z <= 0 && shaperMax.x >= 1 &&
-           shaperMax.y >= 1 && shaperMax.z >= 1;
-}
-
 static std::string vecStr(glm::vec3 v) {
     auto f = [](float x) {
         char buf[32];

@@ -4,8 +4,7 @@
 // Hald, nutexb): turn any LutFile into a plain N^3 table over [0,1], saying what that cost.
 #include "lut/ErrorStats.h"
 #include "lut/LutFile.h"
-
-#include <glm/vec3.hpp>
+#include "lut/formats/DisplayRange.h"
 
 #include <cstddef>
 #include <string>
@@ -31,15 +30,6 @@ void addClampDiagnostic(std::size_t count, int bits, const std::string& path, Di
 // value (clamping is reported apart by addClampDiagnostic).
 void addQuantizationDiagnostic(const Lut3D& lut, int bits, const std::string& path,
                                Diagnostics& diags);
-
-// The one rule for a 1D shaper + 3D table that becomes one table over a range (a format or dialect
-// without a shaper, a bake): where the shaper's domain holds 0..1, the table is sampled over 0..1,
-// where display pictures live, never over the shaper's own range (over a log shaper's 0..64 every
-// input in 0..1 falls in the first cells: off by mean 85 8-bit steps, issue 40). A domain that
-// does not hold 0..1 keeps its own range. Inputs outside 0..1 then take the edge value.
-bool samplesDisplayRange(glm::vec3 shaperMin, glm::vec3 shaperMax);
-// What the rule's notes say: "over 0..1, where display pictures live".
-inline constexpr const char* kDisplayRangeWords = "over 0..1, where display pictures live";
 
 Diagnostic makeDiagnostic(Diagnostic::Severity severity, const std::string& path,
                           std::string message);
