@@ -53,3 +53,34 @@ TEST(Truth, DiffOfAShaperCubeComparesTheDisplayRange) {
         EXPECT_LE(printed, t.max + 2.0 / 255.0) << r.out; // over 0..1, not over 0..64
     }
 }
+
+// The same rule in compose: A, a shaper file, taken as one table over 0..1 (the note's maximum,
+// in A's output) then B after it. The printed figures (the note's and compose's own) against
+// OpenColorIO's B(A(x)) and the written file, B's slope times the note's maximum allowed for.
+TEST(Truth, ComposeOfAShaperCubeBoundsBAfterA) {
+    const std::string dir = workDir("compose-shaper");
+    const std::string a = writeShapedCube(dir + "/shaped.cube");
+    const std::string b = writeCube(dir + "/grade.cube", 17, [](glm::dvec3 p) {
+        return glm::dvec3(0.9 * p.r + 0.1 * p.g, 0.95 * p.g + 0.05 * p.b, 0.8 * p.b + 0.2 * p.r);
+    });
+    const std::string out = dir + "/ab.cube";
+    const auto r = lut::test::runCli("compose " + shellQuoted(a) + " " + shellQuoted(b) + " " +
+                                     shellQuoted(out) + " -y");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto noteAt = r.err.find("taken as one 33^3 table over 0..1");
+    ASSERT_NE(noteAt, std::string::npos) << r.err;
+    const double note = std::strtod(r.err.c_str() + r.err.find("max ", noteAt) + 4, nullptr);
+    const auto opAt = r.out.find("against B(A(x)): max ");
+    ASSERT_NE(opAt, std::string::npos) << r.out;
+    const double op = std::strtod(r.out.c_str() + opAt + 21, nullptr);
+    const std::vector<float> x = randomUnitInputs(100000, 51);
+    std::vector<float> want = x, got = x;
+    ocioApply(a, want);
+    ocioApply(b, want);
+    ocioApply(out, got);
+    const Truth t = compare(want, got);
+    // B is a matrix with rows summing to 1 (its entries' largest row sum of |m|): slope 1.
+    const double printed = op + 1.0 * note;
+    row("compose shaper + 33^3 then a matrix 17^3 -> .cube", t.max, printed, t.mean);
+    EXPECT_GE(printed + kOracleRounding, t.max) << r.out << r.err;
+}
