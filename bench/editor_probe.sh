@@ -11,10 +11,10 @@
 #   huge-open     an 8192x8192 picture opening, cancelled after 150 ms
 #   match         Tools > Match to Reference of a 1920x1080 photo-like picture to a graded
 #                 1920x1080 reference, the fit to the end (the dialog opens)
-#   match-cancel  the same fit, cancelled after 300 ms
 #   drag-strength the dialog's Strength dragged by hand from 100 % to 20 % over 1.5 s (a move
 #                 every 16 ms, each re-baking the 33^3 LUT), then 300 ms to settle
 #   drag-luma     Lightness share dragged from 20 % to 150 % the same way
+#   match-cancel  the same fit again, cancelled after 300 ms
 # and prints one line per task: the longest gap, its own part, the paints. RUNS repeats it.
 #
 #   bench/editor_probe.sh [--build DIR] [RUNS]        (default 3 runs)
