@@ -9,6 +9,12 @@
 #   compare       Tools > Compare of a 1920x1080 picture's grade, to the end
 #   save-preview  File > Save Preview Image of that picture, to the end
 #   huge-open     an 8192x8192 picture opening, cancelled after 150 ms
+#   match         Tools > Match to Reference of a 1920x1080 photo-like picture to a graded
+#                 1920x1080 reference, the fit to the end (the dialog opens)
+#   drag-strength the dialog's Strength dragged by hand from 100 % to 20 % over 1.5 s (a move
+#                 every 16 ms, each re-baking the 33^3 LUT), then 300 ms to settle
+#   drag-luma     Lightness share dragged from 20 % to 150 % the same way
+#   match-cancel  the same fit again, cancelled after 300 ms
 # and prints one line per task: the longest gap, its own part, the paints. RUNS repeats it.
 #
 #   bench/editor_probe.sh [--build DIR] [RUNS]        (default 3 runs)
@@ -31,6 +37,9 @@ TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 cp "$ROOT/samples/sample_grade.cube" "$TMP/grade.cube"
 convert -size 1920x1080 gradient:red-blue -depth 8 "$TMP/shot.png"
+# a photo-like 1080p picture and a reference with another look (levels, saturation, a hue turn)
+convert -seed 7 -size 1920x1080 plasma:fractal -blur 0x2 -depth 8 "$TMP/photo.png"
+convert "$TMP/photo.png" -level 4%,92%,0.85 -modulate 100,135,96 -depth 8 "$TMP/look.png"
 # 8192x8192 black RGB pixels in a ~200 KB PNG (as tests/gui/GuiTestSupport.h's writeBlackPng).
 python3 - "$TMP/huge.png" <<'PY'
 import struct, sys, zlib
@@ -62,6 +71,29 @@ sleep 150
 cancel load
 sleep 100
 probe off
+open-image $TMP/photo.png
+wait
+dialogs hold
+probe on
+start-match $TMP/look.png
+wait-task match
+probe off
+probe on
+match-drag strength 20 1500
+sleep 300
+probe off
+probe on
+match-drag luma 150 1500
+sleep 300
+probe off
+dialogs reject
+sleep 200
+probe on
+start-match $TMP/look.png
+sleep 300
+cancel match
+sleep 100
+probe off
 close
 SCRIPT
 
@@ -70,7 +102,7 @@ echo "|---|---|---|---|---|"
 for run in $(seq 1 "$RUNS"); do
   out="$(QT_QPA_PLATFORM=xcb xvfb-run -a -s "-screen 0 1600x1000x24" "$EDITOR" --lut-target raw --script "$TMP/probe.txt" 2>/dev/null)"
   i=0
-  for task in compare save-preview huge-open; do
+  for task in compare save-preview huge-open match drag-strength drag-luma match-cancel; do
     i=$((i + 1))
     line="$(grep '^probe longest-gap' <<<"$out" | sed -n "${i}p")"
     # probe longest-gap G ms own O ms over P paints

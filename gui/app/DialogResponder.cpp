@@ -16,6 +16,8 @@ DialogResponder::DialogResponder(QObject* parent) : QObject(parent) {
 }
 
 void DialogResponder::poll() {
+    if (hold)
+        return;
     QWidget* modal = QApplication::activeModalWidget();
     if (!modal)
         for (QWidget* top : QApplication::topLevelWidgets())

@@ -13,6 +13,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -31,6 +32,10 @@ QSlider* MatchDialog::addAmount(QFormLayout* form, const QString& label, const c
     box->setSuffix(QStringLiteral(" %"));
     box->setValue(100);
     connect(s, &QSlider::valueChanged, box, &QSpinBox::setValue);
+    // held: the preview renders its proxy (as the Adjustments panel's sliders), the full frame
+    // follows on release
+    connect(s, &QSlider::sliderPressed, this, [this] { m_preview->setInteractive(true); });
+    connect(s, &QSlider::sliderReleased, this, [this] { m_preview->setInteractive(false); });
     connect(box, &QSpinBox::valueChanged, s, &QSlider::setValue);
     auto* row = new QHBoxLayout;
     row->addWidget(s, 1);
@@ -81,6 +86,7 @@ MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
     m_report->setMinimumSize(560, 160);
     layout->addWidget(m_report);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    m_ok = buttons->button(QDialogButtonBox::Ok);
     connect(buttons, &QDialogButtonBox::accepted, this, &MatchDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &MatchDialog::reject);
     layout->addWidget(buttons);
@@ -98,7 +104,23 @@ MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
     });
     connect(m_luma, &QSlider::valueChanged, this, [this] { keepAmount(m_luma); });
     connect(m_chroma, &QSlider::valueChanged, this, [this] { keepAmount(m_chroma); });
+    m_baker = new MatchBaker(m_session->transfer(), m_session->tableTitle(), this);
+    connect(m_baker, &MatchBaker::baked, this, &MatchDialog::showBaked);
+    connect(m_baker, &MatchBaker::failed, this, [this](const QString& message) {
+        m_acceptWanted = false;
+        m_ok->setEnabled(true);
+        m_prompts->reportError(tr("Cannot match"),
+                               QString::fromStdString(humanErrorText(message.toStdString())));
+    });
     apply();
+}
+
+bool MatchDialog::isBaking() const {
+    return m_baker->isBusy();
+}
+
+void MatchDialog::waitForBake() {
+    m_baker->waitForIdle();
 }
 
 void MatchDialog::apply() {
@@ -117,21 +139,38 @@ void MatchDialog::apply() {
         if (m_preserve[i]->isChecked())
             o.preserve.push_back(kinds[i]);
     m_session->setOptions(o);
-    try {
-        LutSource source;
-        source.effective = std::make_shared<const Lut3D>(m_session->table());
-        m_preview->setSource(source);
-    } catch (const std::exception& e) {
-        m_prompts->reportError(tr("Cannot match"),
-                               QString::fromStdString(humanErrorText(e.what())));
-    }
+    m_baker->request(o); // on the worker: showBaked() takes the table
+}
+
+void MatchDialog::showBaked(std::shared_ptr<const Lut3D> table, bool exact) {
+    // Not exact: the values a drag passed, overtaken while baking; still closer than what the
+    // preview shows, and the exact table follows.
+    LutSource source;
+    source.effective = table;
+    m_preview->setSource(source);
+    if (exact && m_acceptWanted)
+        commit(*table);
 }
 
 void MatchDialog::accept() {
+    if (const std::shared_ptr<const Lut3D> table = m_baker->exactTable()) {
+        commit(*table);
+        return;
+    }
+    m_acceptWanted = true; // showBaked() commits the sliders' table when it is baked
+    m_ok->setEnabled(false);
+    if (!m_baker->isBusy())
+        apply(); // the last bake failed: again (its error is shown again)
+}
+
+void MatchDialog::commit(const Lut3D& table) {
+    m_acceptWanted = false;
+    m_ok->setEnabled(true);
     try {
         const QString ref = QFileInfo(m_session->referencePath()).fileName();
-        m_doc->replaceLutUndoable(m_session->table(), tr("matched to %1").arg(ref),
-                                  tr("Match to %1").arg(ref));
+        m_doc->replaceLutUndoable(table, tr("matched to %1").arg(ref), tr("Match to %1").arg(ref));
+        m_baker->drop();
+        m_preview->setInteractive(false);
         QDialog::accept();
     } catch (const std::exception& e) {
         m_prompts->reportError(tr("Cannot match"),
@@ -140,6 +179,10 @@ void MatchDialog::accept() {
 }
 
 void MatchDialog::reject() {
+    m_baker->drop(); // a table still baking never reaches the preview
+    m_acceptWanted = false;
+    m_ok->setEnabled(true);
+    m_preview->setInteractive(false);
     m_preview->setSource(m_doc->lutSource());
     QDialog::reject();
 }

@@ -13,6 +13,7 @@
 #include "FileActions.h"
 #include "HueRanges.h"
 #include "MainWindow.h"
+#include "MatchDialog.h"
 #include "RepaintProbe.h"
 #include "ScriptContext.h"
 #include "ScriptInput.h"
@@ -283,8 +284,28 @@ void sleepMs(ScriptContext& c) {
 
 void dialogs(ScriptContext& c) {
     const QString how = c.arg(0);
-    need(how == "accept" || how == "reject", QStringLiteral("dialogs takes accept or reject"));
+    need(how == "accept" || how == "reject" || how == "hold",
+         QStringLiteral("dialogs takes accept, reject or hold"));
+    c.session.responder.hold = how == "hold";
     c.session.responder.accept = how == "accept";
+}
+
+// Tools > Match to Reference's dialog (open, `dialogs hold`): a slider dragged by hand over MS.
+void matchDrag(ScriptContext& c) {
+    MatchDialog* dlg = c.w.windowActions()->matchDialog();
+    need(dlg && dlg->isVisible(), QStringLiteral("no match dialog is open (dialogs hold)"));
+    const QString key = c.arg(0);
+    const char* name = key == "strength" ? "matchStrength"
+                       : key == "luma"   ? "matchLuma"
+                       : key == "chroma" ? "matchChroma"
+                                         : nullptr;
+    need(name != nullptr, QStringLiteral("match-drag takes strength, luma or chroma"));
+    auto* s = dlg->findChild<QSlider*>(QString::fromLatin1(name));
+    bool ok = false;
+    const int to = c.arg(1).toInt(&ok);
+    need(s && ok && to >= s->minimum() && to <= s->maximum(),
+         QStringLiteral("match-drag takes a percent from 0 to 200"));
+    dragSlider(s, to, c.args.size() > 2 ? c.arg(2).toInt() : 0);
 }
 
 using C = ScriptContext;
@@ -391,7 +412,8 @@ const ScriptCommand kCommands[] = {
     {L("wait"), "", [](C& c) { settle(c.w); }},
     {L("sleep"), "MS", sleepMs},
     {L("close"), "", [](C& c) { c.w.close(); }},
-    {L("dialogs"), "accept|reject", dialogs},
+    {L("dialogs"), "accept|reject|hold", dialogs},
+    {L("match-drag"), "strength|luma|chroma PERCENT [MS]", matchDrag},
     {L("print"), "WHAT", [](C& c) { printState(c, c.arg(0)); }},
 };
 

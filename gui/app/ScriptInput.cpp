@@ -6,13 +6,17 @@
 
 #include <QApplication>
 #include <QDropEvent>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QSlider>
 #include <QStyle>
 #include <QStyleOptionSlider>
+#include <QThread>
 #include <QUrl>
+
+#include <algorithm>
 
 namespace lut::gui {
 
@@ -34,7 +38,7 @@ void sendKeys(const QKeySequence& seq) {
     }
 }
 
-void dragSlider(QSlider* s, int position) {
+void dragSlider(QSlider* s, int position, int ms) {
     QStyleOptionSlider opt;
     opt.initFrom(s);
     opt.orientation = s->orientation();
@@ -57,9 +61,18 @@ void dragSlider(QSlider* s, int position) {
     };
     send(QEvent::MouseButtonPress, at, Qt::LeftButton);
     const double target = xOf(position);
-    for (int i = 1; i <= 5; ++i)
-        send(QEvent::MouseMove, QPointF(at.x() + (target - at.x()) * i / 5, at.y()),
+    // over `ms`: a move every 16 ms (a mouse's rate), the window's events run between them
+    const int moves = ms > 0 ? std::max(1, ms / 16) : 5;
+    QElapsedTimer clock;
+    clock.start();
+    for (int i = 1; i <= moves; ++i) {
+        send(QEvent::MouseMove, QPointF(at.x() + (target - at.x()) * i / moves, at.y()),
              Qt::LeftButton);
+        while (ms > 0 && clock.elapsed() < static_cast<qint64>(ms) * i / moves) {
+            QApplication::processEvents(QEventLoop::AllEvents, 5);
+            QThread::msleep(1);
+        }
+    }
     send(QEvent::MouseButtonRelease, QPointF(target, at.y()), Qt::NoButton);
 }
 

@@ -15,8 +15,9 @@ class MainWindow;
 // (ShortcutOverride), then the window's shortcuts, then the widget. Throws ScriptFailure when no
 // widget has the focus.
 void sendKeys(const QKeySequence& seq);
-// Drags the slider's handle with the mouse to `position`, in a few moves.
-void dragSlider(QSlider* s, int position);
+// Drags the slider's handle with the mouse to `position`: in a few moves at once, or over `ms`
+// milliseconds with a move every 16 ms and the window's events run between them (as a hand).
+void dragSlider(QSlider* s, int position, int ms = 0);
 // Drops `files` on the window's centre and waits for what they open; returns whether the drop
 // was accepted (throws ScriptFailure when the drag is refused).
 bool dropFiles(MainWindow& w, const QStringList& files);

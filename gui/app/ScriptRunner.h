@@ -24,8 +24,10 @@
 //   probe on|off               (the repaint probe, RepaintProbe.h; off prints the longest gap)
 //   check [N]                  (the Check panel raised and current, its verdict printed; with N,
 //                               finding N clicked: its colours highlighted on the picture)
-//   dialogs accept|reject      (how modal dialogs a command opens are answered: Return or Escape;
-//                               default reject)
+//   dialogs accept|reject|hold (how modal dialogs a command opens are answered: Return or Escape;
+//                               default reject; hold: left open for the commands below)
+//   match-drag strength|luma|chroma PERCENT [MS]  (the open match dialog's slider dragged by the
+//                               mouse, over MS ms with a move every 16 ms: bench/editor_probe.sh)
 //   print WHAT                 (state on stdout: target input chain bloom param:KEY undo-count
 //                               modified notes error clip title export-path focus dialogs
 //                               task:NAME curve:NAME zoom)

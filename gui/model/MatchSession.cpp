@@ -34,15 +34,25 @@ MatchSession::MatchSession(std::shared_ptr<const Image> source, bool sourceIsFlo
     r.bitDepth = i.isFloat ? 0 : i.bitDepth;
     r.name = QFileInfo(referencePath).fileName().toStdString();
     m_fit = fitMatch(src, {r}, m_options, &fitting);
+    m_transfer = std::make_shared<const MatchTransfer>(std::move(m_fit.transfer));
 }
 
 LutFile MatchSession::lutFile() const {
-    return bakeMatch(m_fit.transfer, m_options);
+    return bakeMatch(*m_transfer, m_options);
 }
 
 Lut3D MatchSession::table() const {
-    Lut3D t = lutFile().toLut3D(m_options.size);
-    t.setTitle("match to " + QFileInfo(m_referencePath).fileName().toStdString());
+    return bakeTable(*m_transfer, m_options, tableTitle());
+}
+
+std::string MatchSession::tableTitle() const {
+    return "match to " + QFileInfo(m_referencePath).fileName().toStdString();
+}
+
+Lut3D MatchSession::bakeTable(const MatchTransfer& transfer, const MatchOptions& options,
+                              const std::string& title) {
+    Lut3D t = bakeMatch(transfer, options).toLut3D(options.size);
+    t.setTitle(title);
     return t;
 }
 

@@ -2,9 +2,10 @@
 #pragma once
 // Tools > Match to Reference… without widgets: the match of the document's picture to a
 // reference picture, fitted once (lut::fitMatch, the same as `lutkit match`), then baked again
-// for every strength and preserve setting (lut::bakeMatch, milliseconds), so the dialog's sliders
-// show the result live. The editor's document holds one 3D table: the match's shaper is baked
-// into it by sampling (lut::LutFile::toLut3D).
+// for every strength and preserve setting (lut::bakeMatch and the table sampled: 50-100 ms at
+// 33^3, on MatchBaker's worker), so the dialog's sliders show the result live. The editor's
+// document holds one 3D table: the match's shaper is baked into it by sampling
+// (lut::LutFile::toLut3D).
 #include "lut/Image.h"
 #include "lut/Lut3D.h"
 #include "lut/Progress.h"
@@ -36,6 +37,14 @@ public:
     LutFile lutFile() const;
     // The same as one table of options().size (what the document takes).
     Lut3D table() const;
+    // The fitted transfer, shared with the worker that re-bakes it (MatchBaker.h).
+    std::shared_ptr<const MatchTransfer> transfer() const { return m_transfer; }
+    // The table's title: "match to <reference's file name>".
+    std::string tableTitle() const;
+    // lut::bakeMatch of `transfer` with `options`, as one table of options.size titled `title`:
+    // table() and MatchBaker's worker (no state: any thread).
+    static Lut3D bakeTable(const MatchTransfer& transfer, const MatchOptions& options,
+                           const std::string& title);
     const MatchReport& fitReport() const { return m_fit.report; }
     const Diagnostics& fitDiagnostics() const { return m_fit.diagnostics; }
     // The fit's report and warnings as text.
@@ -46,7 +55,8 @@ private:
     std::shared_ptr<const Image> m_reference;
     QString m_referencePath;
     MatchOptions m_options;
-    MatchFitResult m_fit;
+    MatchFitResult m_fit; // its transfer moved to m_transfer
+    std::shared_ptr<const MatchTransfer> m_transfer;
 };
 
 } // namespace lut::gui

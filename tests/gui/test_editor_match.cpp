@@ -4,7 +4,9 @@
 // while the sliders move (strength 0: the neutral LUT; 1: near the true grade), Cancel gives the
 // document's LUT back, OK makes the match the document's LUT (exported like every other edit).
 // Issue 42: the match fitted on a worker (progress, Cancel, the window repainting: the repaint
-// probe), the sliders' values shown, Lightness and Colour share kept once moved, OK undoable.
+// probe), the sliders' values shown, Lightness and Colour share kept once moved, OK undoable;
+// every slider move re-baked on a worker (latest wins, a cancelled bake never shown, OK waiting
+// for the table of the values shown).
 #include "GuiTestSupport.h"
 #include "ProbeSupport.h"
 #include "TestPaths.h"
@@ -12,6 +14,7 @@
 #include "BackgroundTask.h"
 #include "Document.h"
 #include "MainWindow.h"
+#include "MatchBaker.h"
 #include "MatchDialog.h"
 #include "MatchSession.h"
 #include "PreviewController.h"
@@ -127,6 +130,7 @@ private slots:
         auto session = std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath);
         MatchDialog dlg(&w, EditorContext{w.document(), w.preview(), &w}, std::move(session));
         dlg.show();
+        dlg.waitForBake(); // the table is baked on a worker
         auto* report = dlg.findChild<QPlainTextEdit*>("matchReport");
         QVERIFY(report && report->toPlainText().contains("before"));
         auto* strength = dlg.findChild<QSlider*>("matchStrength");
@@ -139,6 +143,7 @@ private slots:
         QVERIFY2(full < 1.5, qPrintable(QString::number(full)));
         // strength 0: the neutral LUT
         strength->setValue(0);
+        dlg.waitForBake();
         shown = w.preview()->source().effective;
         QVERIFY(shown->maxDeviationFromIdentity() < 1e-5f);
         // Cancel: the document's LUT again, untouched
@@ -151,6 +156,7 @@ private slots:
             &w, EditorContext{w.document(), w.preview(), &w},
             std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath));
         again.show();
+        again.waitForBake();
         auto* buttons = again.findChild<QDialogButtonBox*>();
         QVERIFY(buttons);
         QVERIFY(!w.windowActions()->undoAction()->isEnabled()); // nothing to undo yet
@@ -220,6 +226,7 @@ private slots:
         chroma->setValue(0);
         strength->setValue(200);
         QCOMPARE(luma->value(), 0);
+        dlg.waitForBake();
         QVERIFY(w.preview()->source().effective->maxDeviationFromIdentity() < 1e-5f);
         dlg.reject();
     }
@@ -275,11 +282,123 @@ private slots:
         MatchDialog* dlg = w.windowActions()->matchDialog();
         QVERIFY(dlg && dlg->isVisible());
         auto* buttons = dlg->findChild<QDialogButtonBox*>();
-        buttons->button(QDialogButtonBox::Ok)->click();
-        QVERIFY(w.document()->lutOrigin().contains("editor-match-1080"));
+        buttons->button(QDialogButtonBox::Ok)->click(); // waits for the bake if one runs
+        QVERIFY(waitFor([&] { return w.document()->lutOrigin().contains("editor-match-1080"); },
+                        30000));
         QVERIFY(w.document()->baseLut().maxDeviationFromIdentity() > 0.02f);
         QVERIFY(w.windowActions()->undoAction()->isEnabled());
         QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
+    }
+    // A slider's move re-bakes on a worker, never on the window's thread: the move returns with
+    // the preview as it was (the table arrives through the window's events). Latest wins: the
+    // values a drag passes while a bake runs are never baked; what the preview keeps is the table
+    // of the values the sliders rest on (strength 0: the neutral LUT; 1: near the true grade).
+    void slidersRebakeOnAWorkerLatestWins() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        const Image scene = *w.document()->storedImage();
+        const QString refPath = writeReference(scene, "editor-match-bake");
+        MatchDialog dlg(
+            &w, EditorContext{w.document(), w.preview(), &w},
+            std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath));
+        dlg.show();
+        dlg.waitForBake();
+        auto* strength = dlg.findChild<QSlider*>("matchStrength");
+        QVERIFY(strength);
+        const std::shared_ptr<const Lut3D> full = w.preview()->source().effective;
+        QVERIFY(full && full->maxDeviationFromIdentity() > 0.02f);
+
+        int proxies = 0, exacts = 0;
+        std::shared_ptr<const Lut3D> lastExact;
+        connect(dlg.baker(), &MatchBaker::baked, &dlg,
+                [&](std::shared_ptr<const Lut3D> t, bool exact) {
+                    exact ? ++exacts : ++proxies;
+                    if (exact)
+                        lastExact = t;
+                });
+        const int bakes = dlg.baker()->bakes(), skipped = dlg.baker()->skipped();
+        // 100 moves with no event run between them (the window's thread busy with the drag)
+        for (int v = 99; v >= 0; --v) {
+            strength->setValue(v);
+            QVERIFY(w.preview()->source().effective == full); // not baked here
+        }
+        QVERIFY(dlg.isBaking());
+        dlg.waitForBake();
+        // the first move's bake ran; 98 waited and were replaced; the last one was baked
+        QCOMPARE(dlg.baker()->bakes() - bakes, 2);
+        QCOMPARE(dlg.baker()->skipped() - skipped, 98);
+        QCOMPARE(proxies, 1); // strength 0.99's table, overtaken: shown while on its way
+        QCOMPARE(exacts, 1);
+        QVERIFY(w.preview()->source().effective == lastExact);
+        QVERIFY(lastExact->maxDeviationFromIdentity() < 1e-5f);
+        // and back to full strength: near the true grade (the formula above)
+        strength->setValue(100);
+        QVERIFY(w.preview()->source().effective == lastExact);
+        dlg.waitForBake();
+        QVERIFY(stepsToGrade(*w.preview()->source().effective, scene) < 1.5);
+        dlg.reject();
+    }
+
+    // Cancel while a table bakes: the document as it was (its LUT, no undo step), and the table
+    // baking never reaches the preview. OK while a table bakes: the dialog waits for it, and the
+    // document takes the table of the values the sliders show (not the one the preview showed
+    // when OK was pressed), in one undo step that gives back the exact LUT that was there.
+    void cancelAndOkWhileBaking() {
+        MainWindow w;
+        w.setInteractiveErrors(false);
+        w.show();
+        QVERIFY(w.openImageFile(samplePath("sample_scene.png")));
+        QVERIFY(w.openLutFile(samplePath("sample_grade.cube")));
+        w.waitForPreview();
+        const Lut3D before = w.document()->baseLut();
+        QVERIFY(before.maxDeviationFromIdentity() > 0.02f); // a real grade, not the neutral LUT
+        const QString origin = w.document()->lutOrigin();
+        const int steps = w.document()->undoStack()->count();
+        const QString refPath = writeReference(*w.document()->storedImage(), "editor-match-ok");
+        auto open = [&] {
+            auto d = std::make_unique<MatchDialog>(
+                &w, EditorContext{w.document(), w.preview(), &w},
+                std::make_unique<MatchSession>(w.document()->storedImage(), false, refPath));
+            d->show();
+            d->waitForBake();
+            return d;
+        };
+        {
+            auto dlg = open();
+            dlg->findChild<QSlider*>("matchStrength")->setValue(50);
+            QVERIFY(dlg->isBaking());
+            dlg->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Cancel)->click();
+            QVERIFY(!dlg->isVisible());
+            dlg->waitForBake(); // the dropped bake ends and delivers nothing
+            QCOMPARE(w.preview()->source(), w.document()->lutSource());
+            QVERIFY(w.document()->baseLut().entries() == before.entries());
+            QCOMPARE(w.document()->lutOrigin(), origin);
+            QCOMPARE(w.document()->undoStack()->count(), steps);
+            QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
+        }
+        {
+            auto dlg = open();
+            const std::shared_ptr<const Lut3D> shown = w.preview()->source().effective;
+            QVERIFY(shown->maxDeviationFromIdentity() > 0.02f); // full strength shown
+            dlg->findChild<QSlider*>("matchStrength")->setValue(0);
+            QVERIFY(dlg->isBaking());
+            QPushButton* ok = dlg->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+            ok->click();
+            QVERIFY(dlg->isVisible()); // waiting for the bake, the window live
+            QVERIFY(!ok->isEnabled());
+            QVERIFY(w.document()->baseLut().entries() == before.entries());
+            QVERIFY(waitFor([&] { return !dlg->isVisible(); }, 30000));
+            QVERIFY(w.document()->baseLut().maxDeviationFromIdentity() < 1e-5f); // strength 0
+            QVERIFY(w.document()->lutOrigin().contains("matched to"));
+            QCOMPARE(w.document()->undoStack()->count(), steps + 1);
+            QVERIFY(w.windowActions()->undoAction()->isEnabled());
+            w.windowActions()->undoAction()->trigger();
+            QVERIFY(w.document()->baseLut().entries() == before.entries());
+            QCOMPARE(w.document()->lutOrigin(), origin);
+            QVERIFY2(w.lastError().isEmpty(), qPrintable(w.lastError()));
+        }
     }
 };
 
