@@ -6,10 +6,12 @@
 #include "lut/Error.h"
 #include "lut/pipeline/Pipeline.h"
 #include "pipeline/ArrayKernels.h"
+#include "smash/SmashDisplayFast.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <random>
 
@@ -47,6 +49,30 @@ TEST(FastMath, EmulatedFmaIsTheFusedMultiplyAdd) {
         EXPECT_EQ(w2, g2) << tiny;
     }
     EXPECT_EQ(checked, 2000000);
+}
+
+// exp2Times' exact p * e without a fused multiply-add: p split in two (splitHigh), each part
+// times a binary exponent exact, and the two parts' sum p itself; against products in double
+// (exact for floats), over random p of every sign and size and every exponent a normal float has.
+TEST(FastMath, SplitHighGivesExactProductsWithExponents) {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<std::uint32_t> bits(0x00800000u, 0x7F7FFFFFu);
+    for (int i = 0; i < 20000; ++i) {
+        float p;
+        const std::uint32_t b = bits(rng) | (i % 2 ? 0x80000000u : 0u);
+        std::memcpy(&p, &b, 4);
+        const float ph = detail::splitHigh(p), pl = p - ph;
+        ASSERT_EQ(double(ph) + double(pl), double(p)) << p;
+        for (int ei = -150; ei <= 150; ++ei) {
+            const float e = static_cast<float>(ei);
+            const double hi = double(ph) * ei, lo = double(pl) * ei;
+            if (std::fabs(hi) > 3e38 || std::fabs(double(p) * ei) > 3e38 ||
+                (lo != 0 && std::fabs(lo) < 1.2e-38))
+                continue; // overflow or below the normal range: not an exponent's product
+            ASSERT_EQ(double(ph * e), hi) << p << " * " << ei;
+            ASSERT_EQ(double(pl * e), lo) << p << " * " << ei;
+        }
+    }
 }
 
 TEST(FastMath, PowFastIsWithin4e7RelativeOfStdPow) {

@@ -6,10 +6,17 @@
 // std::pow in tests/pipeline/test_stages.cpp). No tables: the grading pass runs six of these per
 // pixel, and table lookups (gathers) cost more than the arithmetic on the cores we measured.
 //
-// These scalar functions are the definition. ArrayKernels.cpp has 8-lane AVX2 forms that perform
-// the same IEEE operations in the same order -- every multiply-add here is an explicit madd(),
-// so the compiler has nothing to contract -- and therefore give the same bits: the choice of path
-// never changes a frame, and a pixel's result never depends on its neighbours.
+// These scalar functions are the definition. ArrayKernels.cpp has 8-lane AVX2 forms and
+// FastMathWasm.h 4-lane WebAssembly forms that perform the same IEEE operations in the same
+// order, and therefore give the same bits: the choice of path or edition never changes a frame,
+// and a pixel's result never depends on its neighbours. Every multiply-add here is a multiply
+// then an add, two roundings (mulAdd(); lutlib is compiled with -ffp-contract=off, so the
+// compiler fuses nothing): every machine computes that the same way in one instruction each,
+// WebAssembly included, which has no fused multiply-add. The one place the polynomials needed a
+// fused one, the exact product p * e in exp2Times, is two exact products instead (splitHigh).
+//
+// The game's display curve in one power (the sRGB encode of r^2.2) is the game's:
+// smash/SmashDisplayFast.h, built on these.
 //
 // Domain: x <= 0, NaN and denormals give 0; results are clamped below 2^127 * 1.42 (finite for
 // any finite or infinite input); results below 2^-126 flush to 0.
@@ -19,8 +26,9 @@
 
 namespace lut::detail {
 
-// a * b + c with one rounding, as the FMA instruction computes it: the bits of the AVX2 + FMA
-// kernels, on every machine and in every edition (docs/portable.md). Where the CPU has FMA it is
+// a * b + c with one rounding, as the FMA instruction computes it: the bits of the interpolation
+// kernels (interp/PortableKernels.cpp and the AVX2 ones), on every machine and in every edition
+// (docs/portable.md). Where the CPU has FMA it is
 // that instruction (std::fma); elsewhere (an x86-64 without FMA, WebAssembly) it is computed here:
 // the product of two floats is exact in double, the sum rounds once in double, and only a sum
 // that lands exactly halfway between two floats (and is inexact) needs its last bit moved towards
@@ -59,6 +67,24 @@ inline float madd(float a, float b, float c) {
 }
 #endif
 
+// a * b + c as a multiply then an add (two roundings): the pow kernels' multiply-add, the same
+// bits on every machine without a fused instruction (the header's comment).
+inline float mulAdd(float a, float b, float c) {
+    const float ab = a * b;
+    return ab + c;
+}
+
+// p = splitHigh(p) + (p - splitHigh(p)): p's high 12 significant bits and the rest (at most 12
+// bits), both exact. Times a whole number of at most 8 bits (a binary exponent, |e| <= 255), each
+// part's product fits in 20 bits, so is exact: p * e = ph * e + pl * e with no rounding, what
+// exp2Times needs without a fused multiply-add (Dekker's split, with e unsplit).
+inline float splitHigh(float p) {
+    return __builtin_bit_cast(float, __builtin_bit_cast(std::uint32_t, p) & 0xFFFFF000u);
+}
+
+// The polynomials are evaluated in Estrin's scheme (pairs of terms, then pairs of pairs), not
+// Horner's: the dependency chain is half as long, which a multiply then an add (two latencies per
+// step where the fused instruction has one) needs for the AVX2 kernels to keep their speed.
 namespace poly {
 // log2(m) = u * (c0 + c1 u^2 + c2 u^4 + c3 u^6) with u = (m - 1) / (m + 1), the series of
 // 2 atanh(u) / ln 2; for m in [sqrt(1/2), sqrt(2)), |u| <= 0.1716 and the dropped terms are
@@ -84,25 +110,27 @@ inline float log2Mantissa(float x, float& e) {
     e = static_cast<float>(ei);
     const float u = (m - 1.0f) / (m + 1.0f);
     const float u2 = u * u;
-    float r = poly::kLog[0];
-    for (int i = 1; i < 4; ++i)
-        r = madd(r, u2, poly::kLog[i]);
-    return u * r;
+    const float u4 = u2 * u2;
+    return u * mulAdd(mulAdd(poly::kLog[0], u2, poly::kLog[1]), u4,
+                      mulAdd(poly::kLog[2], u2, poly::kLog[3]));
 }
 
-// 2^(p * (e + l)) with log2(x) = e + l from log2Mantissa: p * e is carried exactly as hi + err,
-// so the fraction handed to the polynomial keeps its low bits whatever the size of e. The
-// exponent n is clamped to [-127, 127] (2^-127 encodes as 0: results below 2^-126 flush to zero).
+// 2^(p * (e + l)) with log2(x) = e + l from log2Mantissa: p * e is carried exactly as hi + the
+// low part's ph * e (splitHigh), so the fraction handed to the polynomial keeps its low bits
+// whatever the size of e. The exponent n is clamped to [-127, 127] (2^-127 encodes as 0: results
+// below 2^-126 flush to zero).
 inline float exp2Times(float p, float e, float l) {
-    const float hi = p * e;
-    const float lo = madd(p, l, madd(p, e, -hi));
+    const float ph = splitHigh(p);
+    const float hi = ph * e;
+    const float lo = mulAdd(p, l, (p - ph) * e);
     float n = std::nearbyint(hi + lo);
     const float f = (hi - n) + lo;
     n = n > 127.0f ? 127.0f : (n < -127.0f ? -127.0f : n);
-    float q = poly::kExp2[0];
-    for (int i = 1; i < 6; ++i)
-        q = madd(q, f, poly::kExp2[i]);
-    q = madd(q, f, 1.0f);
+    const float f2 = f * f;
+    const float a = mulAdd(poly::kExp2[0], f, poly::kExp2[1]);
+    const float b = mulAdd(poly::kExp2[2], f, poly::kExp2[3]);
+    const float c = mulAdd(poly::kExp2[4], f, poly::kExp2[5]);
+    const float q = mulAdd(mulAdd(mulAdd(a, f2, b), f2, c), f, 1.0f);
     const float scale =
         __builtin_bit_cast(float, static_cast<std::uint32_t>(static_cast<int>(n) + 127) << 23);
     return q * scale;
@@ -122,22 +150,8 @@ constexpr float kSrgbLinearLimit = 0.0031308f;
 inline float srgbEncodeFast(float x) {
     const float a = std::fabs(x);
     const float e =
-        a <= kSrgbLinearLimit ? 12.92f * a : madd(1.055f, powFast(a, 1.0f / 2.4f), -0.055f);
+        a <= kSrgbLinearLimit ? 12.92f * a : mulAdd(1.055f, powFast(a, 1.0f / 2.4f), -0.055f);
     return x < 0.0f ? -e : e;
-}
-
-// srgbEncode(pow(r, 2.2)) in one power: r^2.2 <= 0.0031308 exactly when r <= the threshold
-// below, and then the result is 12.92 * r^2.2, else 1.055 * r^(2.2 / 2.4) - 0.055. r <= 0 -> 0.
-constexpr float kSmashDisplayLowR = 0.0727212795f; // 0.0031308^(1 / 2.2)
-constexpr float kSmashDisplayHighP = 2.2f / 2.4f;
-inline float smashDisplayFast(float r) {
-    if (!(r >= poly::kMinNormal))
-        return 0.0f;
-    float e;
-    const float l = log2Mantissa(r, e);
-    if (r <= kSmashDisplayLowR)
-        return 12.92f * exp2Times(2.2f, e, l);
-    return madd(1.055f, exp2Times(kSmashDisplayHighP, e, l), -0.055f);
 }
 
 // NaN -> 0; clamps to [-lim, lim].

@@ -2,6 +2,7 @@
 #include "ArrayKernels.h"
 
 #include "lut/smash/SmashGrading.h"
+#include "smash/SmashDisplayFast.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include "core/simd/Transpose.h"
@@ -9,7 +10,7 @@
 #include <immintrin.h>
 #define LUTKIT_X86 1
 #elif defined(__wasm_simd128__)
-#include "core/FastMathWasm.h"
+#include "smash/SmashDisplayWasm.h"
 #define LUTKIT_WASM_SIMD 1
 #endif
 
@@ -28,13 +29,13 @@ void smashFinishPixel(float* x, const float* s, const float* l, bool fused) {
         return;
     }
     for (int c = 0; c < 3; ++c) {
-        const float r = madd(l[c] - s[c], kSmashBrightenMix, s[c]) * kSmashBrightenScale;
+        const float r = mulAdd(l[c] - s[c], kSmashBrightenMix, s[c]) * kSmashBrightenScale;
         if (a >= 1.0f) {
             x[c] = fused ? smashDisplayFast(r) : powFast(r, kSmashDecodeExponent);
             continue;
         }
         const float g = powFast(r, kSmashDecodeExponent);
-        const float m = madd(g, a, x[c] * (1.0f - a));
+        const float m = mulAdd(g, a, x[c] * (1.0f - a));
         x[c] = fused ? srgbEncodeFast(m) : m;
     }
 }
@@ -56,10 +57,20 @@ void addBloomPixel(float* p, const float* a, const float* b, float t) {
 #ifdef LUTKIT_X86
 #define LUTKIT_AVX2 __attribute__((target("avx2,fma")))
 
-// 8-lane forms of FastMath.h, operation for operation.
+// 8-lane forms of FastMath.h, operation for operation (a multiply then an add where it has
+// mulAdd; -ffp-contract=off keeps the compiler from fusing them).
 
 LUTKIT_AVX2 inline __m256 splat(float v) {
     return _mm256_set1_ps(v);
+}
+
+LUTKIT_AVX2 inline __m256 mulAdd8(__m256 a, __m256 b, __m256 c) {
+    return _mm256_add_ps(_mm256_mul_ps(a, b), c);
+}
+
+// splitHigh, 8 lanes.
+LUTKIT_AVX2 inline __m256 splitHigh8(__m256 p) {
+    return _mm256_and_ps(p, _mm256_castsi256_ps(_mm256_set1_epi32(-4096)));
 }
 
 // K independent 8-lane values computed step by step together, so the long dependency chains of
@@ -79,34 +90,35 @@ template <int K> LUTKIT_AVX2 inline Vec<K> log2Mantissa8(const Vec<K>& x, Vec<K>
         e.v[k] = _mm256_cvtepi32_ps(ei);
         u.v[k] = _mm256_div_ps(_mm256_sub_ps(m, splat(1.0f)), _mm256_add_ps(m, splat(1.0f)));
         u2.v[k] = _mm256_mul_ps(u.v[k], u.v[k]);
-        r.v[k] = splat(poly::kLog[0]);
     }
-    for (int i = 1; i < 4; ++i)
-        for (int k = 0; k < K; ++k)
-            r.v[k] = _mm256_fmadd_ps(r.v[k], u2.v[k], splat(poly::kLog[i]));
-    for (int k = 0; k < K; ++k)
-        r.v[k] = _mm256_mul_ps(u.v[k], r.v[k]);
+    for (int k = 0; k < K; ++k) {
+        const __m256 u4 = _mm256_mul_ps(u2.v[k], u2.v[k]);
+        r.v[k] = _mm256_mul_ps(
+            u.v[k], mulAdd8(mulAdd8(splat(poly::kLog[0]), u2.v[k], splat(poly::kLog[1])), u4,
+                            mulAdd8(splat(poly::kLog[2]), u2.v[k], splat(poly::kLog[3]))));
+    }
     return r;
 }
 
-// 2^(p * (e + l)), p * e carried exactly as hi + err (FastMath.h exp2Times).
+// 2^(p * (e + l)), p * e carried exactly as hi + lo's ph * e (FastMath.h exp2Times).
 template <int K>
 LUTKIT_AVX2 inline Vec<K> exp2Times8(const Vec<K>& p, const Vec<K>& e, const Vec<K>& l) {
     constexpr int kNearest = _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC;
     Vec<K> f, n, q;
     for (int k = 0; k < K; ++k) {
-        const __m256 hi = _mm256_mul_ps(p.v[k], e.v[k]);
-        const __m256 lo = _mm256_fmadd_ps(p.v[k], l.v[k], _mm256_fmsub_ps(p.v[k], e.v[k], hi));
+        const __m256 ph = splitHigh8(p.v[k]);
+        const __m256 hi = _mm256_mul_ps(ph, e.v[k]);
+        const __m256 lo = mulAdd8(p.v[k], l.v[k], _mm256_mul_ps(_mm256_sub_ps(p.v[k], ph), e.v[k]));
         n.v[k] = _mm256_round_ps(_mm256_add_ps(hi, lo), kNearest);
         f.v[k] = _mm256_add_ps(_mm256_sub_ps(hi, n.v[k]), lo);
         n.v[k] = _mm256_min_ps(_mm256_max_ps(n.v[k], splat(-127.0f)), splat(127.0f));
-        q.v[k] = splat(poly::kExp2[0]);
     }
-    for (int i = 1; i < 6; ++i)
-        for (int k = 0; k < K; ++k)
-            q.v[k] = _mm256_fmadd_ps(q.v[k], f.v[k], splat(poly::kExp2[i]));
     for (int k = 0; k < K; ++k) {
-        q.v[k] = _mm256_fmadd_ps(q.v[k], f.v[k], splat(1.0f));
+        const __m256 f2 = _mm256_mul_ps(f.v[k], f.v[k]);
+        const __m256 a = mulAdd8(splat(poly::kExp2[0]), f.v[k], splat(poly::kExp2[1]));
+        const __m256 b = mulAdd8(splat(poly::kExp2[2]), f.v[k], splat(poly::kExp2[3]));
+        const __m256 c = mulAdd8(splat(poly::kExp2[4]), f.v[k], splat(poly::kExp2[5]));
+        q.v[k] = mulAdd8(mulAdd8(mulAdd8(a, f2, b), f2, c), f.v[k], splat(1.0f));
         const __m256i bits = _mm256_add_epi32(_mm256_cvttps_epi32(n.v[k]), _mm256_set1_epi32(127));
         q.v[k] = _mm256_mul_ps(q.v[k], _mm256_castsi256_ps(_mm256_slli_epi32(bits, 23)));
     }
@@ -139,7 +151,7 @@ template <int K> LUTKIT_AVX2 inline Vec<K> srgb8(const Vec<K>& x) {
         a.v[k] = _mm256_andnot_ps(sign, x.v[k]);
     Vec<K> out = pow8(a, 1.0f / 2.4f);
     for (int k = 0; k < K; ++k) {
-        const __m256 pw = _mm256_fmadd_ps(splat(1.055f), out.v[k], splat(-0.055f));
+        const __m256 pw = mulAdd8(splat(1.055f), out.v[k], splat(-0.055f));
         const __m256 lin = _mm256_mul_ps(splat(12.92f), a.v[k]);
         const __m256 e =
             _mm256_blendv_ps(pw, lin, _mm256_cmp_ps(a.v[k], splat(kSrgbLinearLimit), _CMP_LE_OQ));
@@ -159,7 +171,7 @@ LUTKIT_AVX2 inline Vec<K> displayFromLog8(const Vec<K>& r, const Vec<K>& e, cons
     }
     Vec<K> out = exp2Times8(p, e, l);
     for (int k = 0; k < K; ++k) {
-        const __m256 o = _mm256_blendv_ps(_mm256_fmadd_ps(splat(1.055f), out.v[k], splat(-0.055f)),
+        const __m256 o = _mm256_blendv_ps(mulAdd8(splat(1.055f), out.v[k], splat(-0.055f)),
                                           _mm256_mul_ps(splat(12.92f), out.v[k]), low.v[k]);
         out.v[k] = _mm256_and_ps(o, _mm256_cmp_ps(r.v[k], splat(poly::kMinNormal), _CMP_GE_OQ));
     }
@@ -251,9 +263,9 @@ LUTKIT_AVX2 void smashFinishAvx2(float* x, const float* s, const float* l, std::
             const Vec<4> qs = loadPlanes(s + 4 * i), ql = loadPlanes(l + 4 * i);
             Vec<3> r;
             for (int c = 0; c < 3; ++c)
-                r.v[c] = _mm256_mul_ps(_mm256_fmadd_ps(_mm256_sub_ps(ql.v[c], qs.v[c]),
-                                                       splat(kSmashBrightenMix), qs.v[c]),
-                                       splat(kSmashBrightenScale));
+                r.v[c] = _mm256_mul_ps(
+                    mulAdd8(_mm256_sub_ps(ql.v[c], qs.v[c]), splat(kSmashBrightenMix), qs.v[c]),
+                    splat(kSmashBrightenScale));
             if (fullBits == 0xFF) { // fully graded: the common case
                 out = fused ? display8(r) : pow8(r, kSmashDecodeExponent);
             } else {
@@ -272,8 +284,8 @@ LUTKIT_AVX2 void smashFinishAvx2(float* x, const float* s, const float* l, std::
                     g = powFromLog8(r, re, rl, kSmashDecodeExponent);
                     const __m256 inv = _mm256_sub_ps(one, a);
                     for (int c = 0; c < 3; ++c)
-                        m.v[c] = _mm256_blendv_ps(
-                            _mm256_fmadd_ps(g.v[c], a, _mm256_mul_ps(xv.v[c], inv)), xv.v[c], none);
+                        m.v[c] = _mm256_blendv_ps(mulAdd8(g.v[c], a, _mm256_mul_ps(xv.v[c], inv)),
+                                                  xv.v[c], none);
                 }
                 if (fused) {
                     out = srgb8(m); // alpha 0 lanes: srgb(x); partial lanes: srgb(mix)
@@ -365,14 +377,15 @@ void smashFinishWasmPixel(float* p, const float* s, const float* l, bool fused) 
     }
     const v128_t sv = wasm_v128_load(s), lv = wasm_v128_load(l);
     const v128_t r =
-        wasm_f32x4_mul(wasm::madd4(wasm_f32x4_sub(lv, sv), wasm::splat(kSmashBrightenMix), sv),
+        wasm_f32x4_mul(wasm::mulAdd4(wasm_f32x4_sub(lv, sv), wasm::splat(kSmashBrightenMix), sv),
                        wasm::splat(kSmashBrightenScale));
     v128_t out;
     if (a >= 1.0f) {
         out = fused ? wasm::smashDisplay4(r) : wasm::powFast4(r, kSmashDecodeExponent);
     } else {
         const v128_t g = wasm::powFast4(r, kSmashDecodeExponent);
-        const v128_t m = wasm::madd4(g, wasm::splat(a), wasm_f32x4_mul(px, wasm::splat(1.0f - a)));
+        const v128_t m =
+            wasm::mulAdd4(g, wasm::splat(a), wasm_f32x4_mul(px, wasm::splat(1.0f - a)));
         out = fused ? wasm::srgbEncode4(m) : m;
     }
     wasm_v128_store(p, rgbOf(out, px));
@@ -432,8 +445,8 @@ void smashFinishWasm(float* x, const float* s, const float* l, std::size_t count
         Planes q = loadPlanes(p);
         const Planes qs = loadPlanes(s + 4 * i), ql = loadPlanes(l + 4 * i);
         for (int c = 0; c < 3; ++c) {
-            const v128_t r = wasm_f32x4_mul(wasm::madd4(wasm_f32x4_sub(ql.v[c], qs.v[c]),
-                                                        wasm::splat(kSmashBrightenMix), qs.v[c]),
+            const v128_t r = wasm_f32x4_mul(wasm::mulAdd4(wasm_f32x4_sub(ql.v[c], qs.v[c]),
+                                                          wasm::splat(kSmashBrightenMix), qs.v[c]),
                                             wasm::splat(kSmashBrightenScale));
             q.v[c] = fused ? wasm::smashDisplay4(r) : wasm::powFast4(r, kSmashDecodeExponent);
         }
