@@ -40,6 +40,12 @@ public:
     using Error::Error;
 };
 
+// What a note is, for a front end that treats one apart (never by its text).
+enum class NoteId {
+    None,           // a note like any other
+    BloomNotUndone, // preview's undo of a screenshot: its bloom stays (the same for every picture)
+};
+
 struct Diagnostic {
     enum class Severity { Info, Warning, Error };
     Severity severity = Severity::Warning;
@@ -47,6 +53,7 @@ struct Diagnostic {
     int line = 0; // 0 = not tied to a line
     int column = 0;
     std::string message;
+    NoteId id = NoteId::None;
     std::string str() const; // "path:line:col: warning: message"
 };
 
