@@ -40,6 +40,15 @@ public:
     using Error::Error;
 };
 
+// The system failed a read or a write: a file that cannot be opened or read, a write, sync or
+// rename refused (a full disk, no permission), a written file that does not read back as written.
+// Not the file's content (ParseError, LimitError, Error) nor the request (bad usage:
+// lut::formats::RequestError). lutkit exits 1 for it, as for bad input (cli/ErrorExit.h).
+class IoError : public Error {
+public:
+    using Error::Error;
+};
+
 // What a note is, for a front end that treats one apart (never by its text).
 enum class NoteId {
     None,           // a note like any other
