@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 
 #include "Drop.h"
+#include "ErrorExit.h"
 #include "Generators.h"
 #include "Interrupts.h"
 #include "Notes.h"
@@ -268,6 +269,30 @@ std::string CommandLine::commandPrefix() const {
     return parsed.empty() ? "lutkit: " : "lutkit " + parsed.front()->get_name() + ": ";
 }
 
+int CommandLine::reportError(const std::exception& e) {
+    const ErrorKind kind = errorKind(e);
+    switch (kind) {
+    case ErrorKind::Interrupted: // a write refused after SIGINT/SIGTERM (Interrupts.h)
+        std::cerr << "lutkit: interrupted (" << signalName(interruptSignal())
+                  << "); unfinished outputs removed\n";
+        break;
+    case ErrorKind::Usage:
+        std::cerr << commandPrefix() << printable(e.what()) << "\n";
+        // A name the config lacks: the closest it has.
+        if (const auto* c = dynamic_cast<const formats::ColorOptionError*>(&e);
+            c && !c->value().empty())
+            if (const auto guess = closestWord(c->value(), c->known()))
+                std::cerr << commandPrefix() << "did you mean '" << *guess << "'?\n";
+        break;
+    case ErrorKind::Input:
+    case ErrorKind::Io:
+    case ErrorKind::Other:
+        std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
+        break;
+    }
+    return cli::exitCode(kind);
+}
+
 int CommandLine::parseErrorExit(const CLI::ParseError& e) {
     if (e.get_exit_code() == 0)
         return m_app.exit(e) == 0 ? kExitOk : kExitUsage; // --help, -V
@@ -326,25 +351,6 @@ int CommandLine::run(const std::vector<std::string>& args) {
     std::vector<std::string> reversed(args.rbegin(), args.rend()); // CLI11 pops from the back
     try {
         m_app.parse(reversed);
-    } catch (const InterruptedError&) { // a write refused after SIGINT/SIGTERM (Interrupts.h)
-        std::cerr << "lutkit: interrupted (" << signalName(interruptSignal())
-                  << "); unfinished outputs removed\n";
-        return kExitInterrupted;
-    } catch (const formats::ColorOptionError& e) { // a name the config lacks: bad usage
-        std::cerr << commandPrefix() << printable(e.what()) << "\n";
-        if (!e.value().empty())
-            if (const auto guess = closestWord(e.value(), e.known()))
-                std::cerr << commandPrefix() << "did you mean '" << *guess << "'?\n";
-        return kExitUsage;
-    } catch (const formats::RequestError& e) { // the library: a request that cannot be, bad usage
-        std::cerr << commandPrefix() << printable(e.what()) << "\n";
-        return kExitUsage;
-    } catch (const Error& e) { // the library: bad input or a failed operation
-        std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
-        return kExitFailure;
-    } catch (const UsageError& e) {
-        std::cerr << commandPrefix() << printable(e.what()) << "\n";
-        return kExitUsage;
     } catch (const CLI::ParseError& e) {
         return parseErrorExit(e);
     } catch (const CLI::Error& e) { // CLI11 misused: a bug here
@@ -355,9 +361,8 @@ int CommandLine::run(const std::vector<std::string>& args) {
         std::cerr << "lutkit: error: " << printable(files.empty() ? "" : files + ": ")
                   << outOfMemoryText() << "\n";
         return kExitFailure;
-    } catch (const std::exception& e) {
-        std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
-        return kExitFailure;
+    } catch (const std::exception& e) { // the command's and the library's (ErrorExit.h)
+        return reportError(e);
     }
     if (!m_generate.empty()) {
         std::cout << generate(describeProgram(m_app), m_generate);
@@ -368,8 +373,7 @@ int CommandLine::run(const std::vector<std::string>& args) {
             for (const auto& n : formats::configNames(m_names))
                 std::cout << n << "\n";
         } catch (const Error& e) {
-            std::cerr << "lutkit: error: " << printable(e.what()) << "\n";
-            return kExitFailure;
+            return reportError(e);
         }
         return kExitOk;
     }

@@ -36,6 +36,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <functional>
 #include <optional>
 #include <string>
@@ -96,6 +97,8 @@ public:
 private:
     int runDrop(const std::vector<std::string>& files);
     int parseErrorExit(const CLI::ParseError& e);
+    // Prints a command's error as its kind says (ErrorExit.h) and returns its exit code.
+    int reportError(const std::exception& e);
     std::optional<std::string> unknownCommandMessage(const std::vector<std::string>& args) const;
     std::string commandPrefix() const; // "lutkit convert: " (the parsed subcommand)
 

@@ -2,6 +2,7 @@
 #include "Drop.h"
 
 #include "lut/Version.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/io/FileNames.h"
 #include "lut/os/Files.h"
@@ -23,7 +24,7 @@ bool isDrop(const std::vector<std::string>& args, const std::vector<std::string>
 
 DropTarget dropTarget(const std::string& input) {
     DropTarget t;
-    if (extensionOf(input) == ".nutexb") {
+    if (formats::isGameFormatPath(input)) { // the library's rule (lut/formats/LutDestination.h)
         t.refused = input + ": is a game LUT (.nutexb) already; drop the edited strip or .cube " +
                     "it came from (lutkit info " + input + " says what it holds)";
         return t;

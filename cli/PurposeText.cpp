@@ -187,7 +187,7 @@ std::optional<LutPurpose> printPurposeOp(std::ostream& os, const PurposedPair& p
         os << "convert  " << what << ": " << toString(conversion.from) << " -> "
            << toString(conversion.to) << "\n";
         // B made into the game's LUT on A's picture: A is the stage
-        const bool staged = what.find("A's picture") != std::string::npos;
+        const bool staged = conversion.onStage;
         printConversion(os, conversion,
                         ConversionWords{staged ? p.aPath : std::string("neutral"), interp});
     }

@@ -65,10 +65,9 @@ void printText(const std::string& output, const formats::BakeReport& r,
                                    "back: " +
                                        r.readBackError + ")")
               << " against "
-              << (r.configUsed.empty() && r.what.find(" -> ") == std::string::npos
-                      ? "OpenColorIO's processor"
-                      : "the conversion")
-              << ": " << r.error.str() << "\n";
+              // a config's conversion baked, else the files OpenColorIO read
+              << (r.configUsed.empty() ? "OpenColorIO's processor" : "the conversion") << ": "
+              << r.error.str() << "\n";
     if (r.error.bounded)
         std::cout << "         max: " << r.error.coverage() << "\n";
     std::cout << "total    " << milliseconds(r.totalSeconds) << "\n";

@@ -7,7 +7,7 @@
 
 #include "lut/Error.h"
 #include "lut/formats/Hald.h"
-#include "lut/formats/ImageFiles.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Nutexb.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FileNames.h"
@@ -19,12 +19,6 @@
 
 namespace lut::cli {
 
-int defaultNeutralSize(const std::string& path, int formatFixedSize) {
-    if (formatFixedSize > 0)
-        return formatFixedSize;
-    return formats::isImageExtension(path) ? 16 : 33;
-}
-
 int runNeutral(const NeutralOptions& o) {
     const OutputTarget target = resolveOutput(o.output, o.overwrite, {});
     if (target.skip) {
@@ -32,34 +26,17 @@ int runNeutral(const NeutralOptions& o) {
             std::cerr << "lutkit: " << printable(o.output) << " exists; skipped (-n)\n";
         return kExitOk;
     }
-    formats::registerBuiltinFormats();
-    const auto& registry = FormatRegistry::instance();
-    const Format* writer =
-        o.format.empty() ? registry.writerForPath(o.output) : registry.byName(o.format);
-    if (!writer || !writer->canWrite())
-        throw Error(o.output + ": no format writes '" + extensionOf(o.output) +
-                    "' files (name the output format: --format)");
-
-    std::optional<LutLayout> layout = o.layout;
-    if (o.level) {
-        if (layout && *layout != LutLayout::Hald)
-            throw UsageError(std::string("--level is a Hald level; the layout is ") +
-                             toString(*layout) + " (use --size)");
-        if (writer->name() != "hald" && writer->name() != "strip")
-            throw UsageError("--level is a Hald level; " + writer->name() +
-                             " is not a LUT image (use --size)");
-        layout = LutLayout::Hald;
-    }
-    const bool hald = writer->name() == "hald" || layout == LutLayout::Hald;
-    FormatOptions sized;
-    sized.layout = layout;
-    const int fixed = writer->fixedSizeFor(sized);
+    // Where it goes, decided once (lut/formats/LutDestination.h): the writer, the Hald level's
+    // rule (N = L^2, a LUT image only), the size the format fixes.
+    const formats::LutDestination dest = formats::resolveLutDestination(
+        {o.output, o.format, std::nullopt, o.size, o.layout, o.level});
+    const Format* writer = &dest.requireWriter();
+    const std::optional<LutLayout> layout = dest.layout;
+    const bool hald = dest.hald;
     if (layout)
         if (const std::string problem = layoutSizeProblem(*layout, o.size); !problem.empty())
             throw UsageError(problem);
-    const int asked = o.level  ? o.level * o.level
-                      : o.size ? o.size
-                               : defaultNeutralSize(o.output, fixed);
+    const int asked = dest.newTableSize(kNeutralSize);
     // A Hald image holds N = L^2 only: say so rather than write another size than the one named.
     const int size = hald ? formats::haldSizeFor(asked) : asked;
     LutFile file;

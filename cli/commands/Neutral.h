@@ -20,7 +20,7 @@ struct NeutralOptions {
     std::string output;
     std::string format;              // output format name ("" = from the extension)
     std::optional<LutLayout> layout; // LUT images: the layout (default: the format's)
-    int size = 0;                    // 0 = default for the format (see defaultNeutralSize)
+    int size = 0;                    // 0 = kNeutralSize, or what the destination fixes
     int level = 0;                   // Hald level L (N = L^2, layout hald); 0 = use size
     int bitDepth = 0;                // LUT images: 8, 16 or 32 (0 = the format's default)
     std::string name;                // nutexb name field
@@ -29,11 +29,11 @@ struct NeutralOptions {
     Verbosity verbosity;
 };
 
-// The lattice size `lutkit neutral` writes when --size is not given: the format's fixed size if
-// it has one (nutexb: 16); 16 for LUT images (the 256x16 strip every engine expects; a Hald of
-// level 4); 33 for every text/float LUT format (.cube, .3dl, .csp, .clf ... the size grading
-// tools default to).
-int defaultNeutralSize(const std::string& path, int formatFixedSize);
+// The lattice size `lutkit neutral` writes when --size is not given and the destination fixes
+// none (lut/formats/LutDestination.h, newTableSize: the format's fixed size, nutexb's 16; 16 for
+// LUT images, the 256x16 strip every engine expects, a Hald of level 4): 33 for every text/float
+// LUT format (.cube, .3dl, .csp, .clf ... the size grading tools default to).
+constexpr int kNeutralSize = 33;
 
 int runNeutral(const NeutralOptions& options);
 

@@ -250,7 +250,7 @@ int runPreview(const PreviewOptions& o) {
             if (!isShown(d, o.verbosity))
                 continue;
             // The bloom note is the same for every file: say it once.
-            const bool bloomNote = d.message.rfind("bloom cannot be undone", 0) == 0;
+            const bool bloomNote = d.id == NoteId::BloomNotUndone;
             if (bloomNote && noted)
                 continue;
             noted = noted || bloomNote;

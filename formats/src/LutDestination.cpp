@@ -14,6 +14,16 @@ bool LutDestination::gameFormat() const {
     return writer && writer->name() == kGameLutFormat;
 }
 
+bool isGameFormatPath(const std::string& path) {
+    registerBuiltinFormats();
+    const Format* f = FormatRegistry::instance().writerForPath(path);
+    return f && f->name() == kGameLutFormat;
+}
+
+int LutDestination::newTableSize(int otherwise) const {
+    return size ? size : fixedSize ? fixedSize : image ? kLutImageSize : otherwise;
+}
+
 const Format& LutDestination::requireWriter() const {
     if (!writer)
         throw Error(path + ": no format writes '" + extensionOf(path) +
@@ -41,14 +51,13 @@ LutDestination resolveLutDestination(const LutDestinationRequest& request) {
 
     d.size = request.size;
     d.layout = request.layout;
+    d.image = request.format.empty() ? isImageExtension(request.path)
+                                     : request.format == "hald" || request.format == "strip";
     if (request.haldLevel) {
         if (request.layout && *request.layout != LutLayout::Hald)
             throw RequestError(std::string("--level is a Hald level; the layout is ") +
                                toString(*request.layout) + " (use --size)");
-        const bool image = request.format.empty()
-                               ? isImageExtension(request.path)
-                               : request.format == "hald" || request.format == "strip";
-        if (!image)
+        if (!d.image)
             throw RequestError("--level is a Hald level; " + request.path +
                                " is not a LUT image (use --size)");
         d.haldLevel = request.haldLevel;
@@ -58,6 +67,11 @@ LutDestination resolveLutDestination(const LutDestinationRequest& request) {
     }
     d.hald = d.writer && (d.writer->name() == "hald" ||
                           (d.layout == LutLayout::Hald && d.writer->name() == "strip"));
+    if (d.writer) {
+        FormatOptions sized;
+        sized.layout = d.layout;
+        d.fixedSize = d.writer->fixedSizeFor(sized);
+    }
     return d;
 }
 

@@ -3,6 +3,7 @@
 
 #include "Document.h"
 
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/Layout.h"
 
@@ -173,16 +174,22 @@ void ExportDialog::choiceChanged() {
     n.extension = c.extension;
     n.gameLut = exportTargetInfo(m_target).purpose == LutPurpose::Smash;
     m_path->setText(suggestedExportPath(n));
-    // Strips at their natural size (16^3 = 256x16; reshade and unity-32 are 32^3 only), the
-    // game's at its own; else as edited.
+    // The size the format stores, from the library's rule for where a LUT goes
+    // (lut/formats/LutDestination.h: the game's 16^3, reshade and unity-32's 32^3; an atlas row
+    // is a strip); else the target's own size for its format, strips at their natural size
+    // (16^3 = 256x16), else as edited.
     const ExportTargetInfo& t = exportTargetInfo(m_target);
     const bool strip = !c.layout.isEmpty();
-    const int fixed = strip ? layoutFixedSize(parseLayout(c.layout.toStdString())) : 0;
-    m_size->setValue(fixed                                          ? fixed
+    const bool atlas = c.format == QLatin1String(kAtlasFormat);
+    const formats::LutDestination d = formats::resolveLutDestination(
+        {("export" + c.extension).toStdString(), atlas ? "strip" : c.format.toStdString(),
+         std::nullopt, 0,
+         strip ? std::optional(parseLayout(c.layout.toStdString())) : std::nullopt});
+    m_size->setValue(d.fixedSize                                    ? d.fixedSize
                      : c.format == QString::fromStdString(t.format) ? t.size
-                     : strip                                        ? 16
+                     : strip                                        ? formats::kLutImageSize
                                                                     : 0);
-    m_size->setEnabled(fixed == 0);
+    m_size->setEnabled(d.fixedSize == 0);
     m_bitDepth->setCurrentIndex(0);
     m_dither->setChecked(false);
     updateNote();

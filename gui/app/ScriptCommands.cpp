@@ -206,9 +206,9 @@ void exportLut(ScriptContext& c) {
         o = FormatOptions{};
         if (c.args.size() > 2)
             o.layout = parseOptionalLayout(c.args[2].toStdString());
-        // By extension; the target's own file type takes the target's settings.
-        const ExportTargetInfo& t = exportTargetInfo(target);
-        if (choice.format.isEmpty() && path.endsWith(QString::fromStdString(t.extension)))
+        // The target's own file type (by the format that writes the path) takes the target's
+        // settings.
+        if (isTargetFile(target, path.toStdString(), choice.format.toStdString()))
             o = targetFormatOptions(target);
     }
     c.out << "exported " << path << "\n";

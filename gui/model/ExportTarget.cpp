@@ -2,23 +2,60 @@
 #include "ExportTarget.h"
 
 #include "lut/Error.h"
+#include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
 #include "lut/io/FormatRegistry.h"
 #include "lut/smash/PurposeConversion.h"
-#include "lut/smash/SmashConstants.h"
 
 namespace lut::gui {
 
+namespace {
+
+// A target's file type is the editor's choice; what the file is for and its lattice are the
+// library's one rule for where a LUT goes (lut/formats/LutDestination.h, as lutkit convert and
+// neutral resolve them): the game's LUT in the game's format, else an edit (the editor exports
+// its document's edit); the size the format fixes (a .nutexb's 16^3), else 16^3 for a LUT image,
+// else the document's.
+ExportTargetInfo target(ExportTarget id, std::string key, std::string label, std::string format,
+                        std::optional<LutLayout> layout, std::string extension, int bitDepth) {
+    formats::LutDestinationRequest request;
+    request.path = "export" + extension;
+    request.format = format;
+    request.layout = layout;
+    const formats::LutDestination d = formats::resolveLutDestination(request);
+    return {id,
+            std::move(key),
+            std::move(label),
+            std::move(format),
+            layout,
+            std::move(extension),
+            d.newTableSize(0),
+            bitDepth,
+            d.purposeFor(LutPurpose::Raw)};
+}
+
+} // namespace
+
 const std::vector<ExportTargetInfo>& exportTargets() {
     static const std::vector<ExportTargetInfo> targets = {
-        {ExportTarget::Smash, "smash", "Smash Ultimate (.nutexb)", "nutexb", std::nullopt,
-         ".nutexb", kSmashLutSize, 0, LutPurpose::Smash},
-        {ExportTarget::Engine, "engine", "Game engine strip (.png)", "strip", LutLayout::Pilot,
-         ".png", 16, 8, LutPurpose::Raw},
-        {ExportTarget::Grading, "cube", "Grading app (.cube)", "cube", std::nullopt, ".cube", 0, 0,
-         LutPurpose::Raw},
+        target(ExportTarget::Smash, "smash", "Smash Ultimate (.nutexb)", formats::kGameLutFormat,
+               std::nullopt, ".nutexb", 0),
+        target(ExportTarget::Engine, "engine", "Game engine strip (.png)", "strip",
+               LutLayout::Pilot, ".png", 8),
+        target(ExportTarget::Grading, "cube", "Grading app (.cube)", "cube", std::nullopt, ".cube",
+               0),
     };
     return targets;
+}
+
+bool isTargetFile(ExportTarget id, const std::string& path, const std::string& format) {
+    if (!format.empty())
+        return false; // a format named is the user's choice, with its own settings
+    const ExportTargetInfo& t = exportTargetInfo(id);
+    formats::LutDestinationRequest request;
+    request.path = path;
+    const formats::LutDestination d = formats::resolveLutDestination(request);
+    return d.writer && d.writer == FormatRegistry::instance().byName(t.format);
 }
 
 const ExportTargetInfo& exportTargetInfo(ExportTarget target) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where the LUT goes: the export destinations, each a file type made for one purpose
-// (lut/LutPurpose.h, the one vocabulary of what a LUT is for):
+// (lut/LutPurpose.h, the one vocabulary of what a LUT is for; the purpose and the lattice are
+// the library's rule, lut/formats/LutDestination.h, as for lutkit convert):
 //   Smash    Smash Ultimate: color_grading_lut.nutexb, the game's 16^3 LUT (purpose smash): an edit
 //            made into the LUT that makes the game show it (lut::convertPurpose, as lutkit
 //            convert does); the preview runs the game's chain with it.
@@ -37,15 +38,19 @@ struct ExportTargetInfo {
     std::string format;              // registry name of the default export format
     std::optional<LutLayout> layout; // for image formats
     std::string extension;           // of the default export, with the dot
-    int size;                        // lattice size written (0 = the document's)
-    int bitDepth;                    // 0 = the format's default
-    LutPurpose purpose;              // what the file is for (its LUTKIT_PURPOSE tag)
+    // From the library's rule for where a LUT goes (lut/formats/LutDestination.h):
+    int size;           // lattice size written (0 = the document's)
+    int bitDepth;       // 0 = the format's default
+    LutPurpose purpose; // what the file is for (its LUTKIT_PURPOSE tag)
 };
 
 const std::vector<ExportTargetInfo>& exportTargets();
 const ExportTargetInfo& exportTargetInfo(ExportTarget target);
 // "smash", "engine", "cube" (also "grading", "raw"); throws lut::Error.
 ExportTarget parseExportTarget(std::string_view key);
+// Whether an export to `path` with no format named (`format` empty) is the target's own file
+// type: the format that writes the path is the target's (then the target's settings apply).
+bool isTargetFile(ExportTarget target, const std::string& path, const std::string& format);
 
 // The document's state an export is made from. The pointers identify it: two sources are the
 // same when they hold the same objects (a change makes new ones).

@@ -4,25 +4,20 @@
 // saturation matrix: the commonest look, and one whose HM-MKL-HM goes down along grey), the
 // graded pixels flipped so no correspondence is left; the written .cube is evaluated along grey
 // by OpenColorIO's processor (the oracle), and every channel must go up, checked in float64 here.
+#include "CliTestSupport.h"
 #include "OcioTestUtil.h"
 #include "TestPaths.h"
-#include "TestSupport.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
-namespace fs = std::filesystem;
 using namespace lut::test;
 using ::testing::HasSubstr;
 
 TEST(CliMatchRepair, AutoRepairsADipAlongGreyAndSaysSo) {
     if (!haveProgram("ffmpeg"))
         GTEST_SKIP() << "ffmpeg is not installed";
-    const std::string d = tempDir() + "-match-repair";
-    fs::remove_all(d);
-    fs::create_directories(d);
+    const std::string d = workDir();
     const std::string src = samplePath("sample_scene.png"), ref = d + "/reference.png",
                       cube = d + "/auto.cube";
     const auto g = runCommand(

@@ -115,6 +115,47 @@ TEST(LutDestination, AHaldLevelOnlyForALutImage) {
     EXPECT_THROW((void)resolveLutDestination(req("out.png", "cube", {}, 0, {}, 4)), RequestError);
 }
 
+// A new table's size (lutkit neutral, the editor's export targets): the size asked for, else the
+// one the format stores (docs/specs/nutexb.md: 16^3; docs/specs/strip-layouts.md: reshade and
+// unity-32 are 1024x32, 32^3), else 16^3 for a LUT image (a 256x16 strip, a level-4 Hald), else
+// the caller's.
+TEST(LutDestination, ANewTableTakesTheSizeTheFormatFixes) {
+    struct Case {
+        LutDestinationRequest request;
+        int fixed;
+        bool image;
+        int newSize; // newTableSize(33)
+    };
+    const Case cases[] = {
+        {req("out.nutexb"), 16, false, 16},
+        {req("out.nutexb", "", {}, 20), 16, false, 20},
+        {req("out.png"), 0, true, 16},
+        {req("out.png", "", {}, 0, LutLayout::Reshade), 32, true, 32},
+        {req("out.png", "", {}, 0, LutLayout::Unity32), 32, true, 32},
+        {req("out.png", "", {}, 0, {}, 5), 0, true, 25},
+        {req("out.bin", "hald"), 0, true, 16},
+        {req("out.cube"), 0, false, 33},
+        {req("out.cube", "", {}, 17), 0, false, 17},
+    };
+    for (const Case& c : cases) {
+        const LutDestination d = resolveLutDestination(c.request);
+        SCOPED_TRACE(c.request.path + " " + c.request.format);
+        EXPECT_EQ(d.fixedSize, c.fixed);
+        EXPECT_EQ(d.image, c.image);
+        EXPECT_EQ(d.newTableSize(33), c.newSize);
+    }
+    EXPECT_EQ(resolveLutDestination(req("out.cube")).newTableSize(0), 0); // the table's own
+}
+
+// The game's own format is told by the file (Windows' drop refuses to convert a .nutexb again).
+TEST(LutDestination, TheGamesFormatByThePath) {
+    EXPECT_TRUE(isGameFormatPath("stage/color_grading_lut.nutexb"));
+    EXPECT_TRUE(isGameFormatPath("STAGE.NUTEXB"));
+    EXPECT_FALSE(isGameFormatPath("graded.png"));
+    EXPECT_FALSE(isGameFormatPath("grade.cube"));
+    EXPECT_FALSE(isGameFormatPath("nutexb"));
+}
+
 TEST(LutDestination, NoWriterIsSaidWhenTheCommandWrites) {
     const LutDestination d = resolveLutDestination(req("dir/x.unknownext"));
     EXPECT_EQ(d.writer, nullptr);

@@ -135,8 +135,5 @@ inline std::string le16(unsigned v) {
 inline std::string le32(std::uint32_t v) {
     return {char(v), char(v >> 8), char(v >> 16), char(v >> 24)};
 }
-inline std::string be32(std::uint32_t v) {
-    return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-}
 
 } // namespace lut::robust

@@ -80,4 +80,30 @@ inline std::string nutexbFile(const NutexbFields& f, std::size_t dataBytes) {
     return s;
 }
 
+inline std::string be32(std::uint32_t v) {
+    return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+// A PNG chunk as the PNG specification (section 5.3) lays it out: the data's length, big-endian,
+// the type, the data, and the CRC-32 of type and data (ISO 3309's polynomial, bit by bit).
+inline std::string pngChunk(const std::string& type, const std::string& data) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char ch : type + data) {
+        c ^= ch;
+        for (int k = 0; k < 8; ++k)
+            c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return be32(static_cast<std::uint32_t>(data.size())) + type + data + be32(~c);
+}
+
+// A PNG whose header claims width x height, 8-bit, of this colour type (2 RGB, 6 RGBA), with one
+// IDAT chunk holding `idat` (libpng stops reading the header at the first IDAT).
+inline std::string craftedPng(std::uint32_t width, std::uint32_t height, char colourType,
+                              const std::string& idat) {
+    return std::string("\x89PNG\r\n\x1a\n", 8) +
+           pngChunk("IHDR", be32(width) + be32(height) + std::string{'\x08', colourType} +
+                                std::string(3, '\0')) +
+           pngChunk("IDAT", idat) + pngChunk("IEND", "");
+}
+
 } // namespace lut::robust

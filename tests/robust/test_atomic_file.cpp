@@ -7,6 +7,7 @@
 
 #include "lut/Error.h"
 #include "lut/io/AtomicFile.h"
+#include "lut/io/InputFile.h"
 #include "lut/io/TempFiles.h"
 
 #include <gmock/gmock.h>
@@ -97,6 +98,22 @@ TEST(AtomicFile, NoSuchFolderIsSaidAtOnce) {
     const std::string dir = lut::test::tempDir();
     EXPECT_EQ(messageOf([&] { lut::AtomicFile f(dir + "/missing/x.cube"); }),
               dir + "/missing/x.cube: cannot write: No such file or directory");
+}
+
+// What the system refuses is an I/O error (lut::IoError: lutkit's exit code 1, the editor's "could
+// not write"), not a bad file nor a bad request: the folder's absence is the system's answer
+// (ENOENT), as is an input that cannot be opened.
+TEST(AtomicFile, WhatTheSystemRefusesIsAnIoError) {
+    const std::string dir = lut::test::tempDir();
+    EXPECT_THROW(lut::AtomicFile f(dir + "/missing/x.cube"), lut::IoError);
+    EXPECT_THROW((void)lut::readFileBytes(dir + "/missing.cube", 1 << 20, "LUT file"),
+                 lut::IoError);
+    writeBytes(dir + "/bad.cube", "LUT_3D_SIZE 2\nnot a number\n");
+    try {
+        (void)lut::readFileBytes(dir + "/bad.cube", 1 << 20, "LUT file");
+    } catch (const lut::IoError& e) {
+        FAIL() << "a readable file is no I/O error: " << e.what();
+    }
 }
 
 TEST(AtomicFile, WriteFileAtomicallyKeepsThePermissionsOfTheFileItReplaces) {

@@ -185,20 +185,12 @@ std::vector<Lying> lyingHeaders() {
     tga.resize(82, '\x7f');
     files.push_back({"big.tga", tga, "image is 65535x65535 with 4 channels, over the limit"});
     // PNG: 16384x16384 RGBA (at the pixel limit) in a 15-byte IDAT, 206 bytes.
-    auto chunk = [](const std::string& type, const std::string& data) {
-        std::uint32_t c = 0xFFFFFFFFu;
-        for (unsigned char ch : type + data) {
-            c ^= ch;
-            for (int k = 0; k < 8; ++k)
-                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-        }
-        return be32(static_cast<std::uint32_t>(data.size())) + type + data + be32(~c);
-    };
-    std::string png = std::string("\x89PNG\r\n\x1a\n", 8) +
-                      chunk("IHDR", be32(16384) + be32(16384) + std::string("\x08\x06\0\0\0", 5)) +
-                      chunk("tEXt", "Comment" + std::string(1, '\0') + std::string(121, 'x')) +
-                      chunk("IDAT", std::string("\x78\x9c\x63\x60\x00\x00\x00\x02\x00\x01", 10)) +
-                      chunk("IEND", "");
+    std::string png =
+        std::string("\x89PNG\r\n\x1a\n", 8) +
+        pngChunk("IHDR", be32(16384) + be32(16384) + std::string("\x08\x06\0\0\0", 5)) +
+        pngChunk("tEXt", "Comment" + std::string(1, '\0') + std::string(121, 'x')) +
+        pngChunk("IDAT", std::string("\x78\x9c\x63\x60\x00\x00\x00\x02\x00\x01", 10)) +
+        pngChunk("IEND", "");
     files.push_back({"claims.png", png,
                      "declares 16384x16384 pixels (1073758208 bytes as stored) "
                      "in 10 bytes of PNG data, more than deflate data can "
@@ -278,10 +270,10 @@ std::vector<Lying> lyingHeaders() {
     // (the old check counted the file's bytes, not the image data's: 2 GB allocated).
     std::string padded =
         std::string("\x89PNG\r\n\x1a\n", 8) +
-        chunk("IHDR", be32(8000) + be32(8000) + std::string("\x10\x06\0\0\x01", 5)) +
-        chunk("prIv", std::string(600000, '\0')) +
-        chunk("IDAT", std::string("\x78\x9c\x63\x60\x00\x00\x00\x02\x00\x01", 10)) +
-        chunk("IEND", "");
+        pngChunk("IHDR", be32(8000) + be32(8000) + std::string("\x10\x06\0\0\x01", 5)) +
+        pngChunk("prIv", std::string(600000, '\0')) +
+        pngChunk("IDAT", std::string("\x78\x9c\x63\x60\x00\x00\x00\x02\x00\x01", 10)) +
+        pngChunk("IEND", "");
     files.push_back({"padded.png", padded,
                      "declares 8000x8000 pixels (512000000 bytes as stored) in 10 bytes of PNG "
                      "data"});

@@ -119,24 +119,7 @@ TEST(Limits, CubeFileOverTheFileSizeLimitIsRefusedBeforeReading) {
 TEST(Limits, ImageHeaderClaimingFourGigapixelsIsALimitError) {
     const std::string dir = lut::test::tempDir();
     // Same crafted header as in the malformed table; here the error type is checked too.
-    auto be = [](std::uint32_t v) {
-        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-    };
-    auto crc = [](const std::string& s) {
-        std::uint32_t c = 0xFFFFFFFFu;
-        for (unsigned char ch : s) {
-            c ^= ch;
-            for (int k = 0; k < 8; ++k)
-                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-        }
-        return ~c;
-    };
-    const std::string ihdr =
-        "IHDR" + be(65536) + be(65536) + std::string("\x08\x02\x00\x00\x00", 5);
-    const std::string idat = std::string("IDAT") + "\x78\x01";
-    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr + be(crc(ihdr)) +
-                            be(2) + idat + be(crc(idat)) + be(0) + "IEND" + be(crc("IEND"));
-    writeBytes(dir + "/huge.png", png);
+    writeBytes(dir + "/huge.png", craftedPng(65536, 65536, 2, "\x78\x01"));
     try {
         (void)lut::formats::readLut(dir + "/huge.png");
         FAIL() << "accepted";

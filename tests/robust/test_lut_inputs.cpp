@@ -266,26 +266,7 @@ TEST(HostileSizes, TinyCubeDeclaring256CubedAllocatesNothingBig) {
 // hold that many pixels: issue 29); with 1.1 MB of IDAT, which could, by the layouts' sizes.
 TEST(HostileSizes, LutImageHeaderClaimingAHugePictureIsRefusedBeforeDecoding) {
     const std::string dir = lut::test::tempDir();
-    auto be = [](std::uint32_t v) {
-        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-    };
-    auto crc = [](const std::string& s) {
-        std::uint32_t c = 0xFFFFFFFFu;
-        for (unsigned char ch : s) {
-            c ^= ch;
-            for (int k = 0; k < 8; ++k)
-                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-        }
-        return ~c;
-    };
-    const std::string ihdr =
-        "IHDR" + be(16384) + be(16384) + std::string("\x08\x06\x00\x00\x00", 5);
-    auto png = [&](const std::string& data) {
-        const std::string idat = "IDAT" + data;
-        return std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr + be(crc(ihdr)) +
-               be(static_cast<std::uint32_t>(data.size())) + idat + be(crc(idat)) + be(0) + "IEND" +
-               be(crc("IEND"));
-    };
+    auto png = [](const std::string& data) { return craftedPng(16384, 16384, 6, data); };
     writeBytes(dir + "/huge.png", png("\x78\x01"));
     writeBytes(dir + "/big.png", png("\x78\x01" + std::string(1100000, '\0')));
     AllocationProbe probe(256u << 20); // an allocation of gigabytes fails instead of swapping

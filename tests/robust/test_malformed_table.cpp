@@ -251,27 +251,9 @@ const std::vector<Defect>& table() {
          "pixels and 64 channels",
          "",
          [](const std::string& path) {
-             // A PNG header claiming 65536 x 65536 pixels and no data: refused before allocation.
-             auto crc = [](const std::string& s) {
-                 std::uint32_t c = 0xFFFFFFFFu;
-                 for (unsigned char ch : s) {
-                     c ^= ch;
-                     for (int k = 0; k < 8; ++k)
-                         c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-                 }
-                 return ~c;
-             };
-             auto be = [](std::uint32_t v) {
-                 return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-             };
-             std::string ihdr =
-                 "IHDR" + be(65536) + be(65536) + std::string("\x08\x06\x00\x00\x00", 5);
-             std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be(13) + ihdr + be(crc(ihdr));
-             // libpng stops reading the header at the first IDAT: its contents never matter.
-             std::string idat = std::string("IDAT") + "\x78\x01";
-             std::string iend = "IEND";
-             png += be(2) + idat + be(crc(idat)) + be(0) + iend + be(crc(iend));
-             writeBytes(path, png);
+             // A PNG header claiming 65536 x 65536 pixels and no data: refused before allocation
+             // (libpng stops reading the header at the first IDAT: its contents never matter).
+             writeBytes(path, craftedPng(65536, 65536, 6, "\x78\x01"));
          }},
         {"truncated.png",
          {},

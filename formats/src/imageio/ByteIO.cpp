@@ -21,7 +21,7 @@ ByteReader::ByteReader(const std::string& path, std::string memory) : m_path(pat
     checkRegularInput(path);
     m_fd = os::openFile(path, os::OpenFor::Read);
     if (m_fd < 0)
-        throw Error(path + ": cannot open: " + std::strerror(errno));
+        throw IoError(path + ": cannot open: " + std::strerror(errno));
     os::FileInfo st;
     if (os::openFileInfo(m_fd, st) != 0 || st.type != os::FileType::Regular) {
         os::closeFile(m_fd);
@@ -51,7 +51,7 @@ std::size_t ByteReader::pread(void* dst, std::size_t n, std::uint64_t offset) co
         if (r < 0) {
             if (errno == EINTR)
                 continue;
-            throw Error(m_path + ": cannot read: " + std::strerror(errno));
+            throw IoError(m_path + ": cannot read: " + std::strerror(errno));
         }
         if (r == 0)
             break;

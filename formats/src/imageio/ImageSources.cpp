@@ -139,7 +139,7 @@ std::unique_ptr<ImageSource> openAnySource(const std::string& path, const std::s
         checkRegularInput(path); // a FIFO or device is refused before it is opened
         std::FILE* f = os::openStream(path, "rb");
         if (!f)
-            throw Error(path + ": cannot open: " + std::strerror(errno));
+            throw IoError(path + ": cannot open: " + std::strerror(errno));
         char buf[16];
         head.assign(buf, std::fread(buf, 1, sizeof buf, f));
         std::fclose(f);

@@ -132,7 +132,7 @@ public:
         std::error_code ec;
         const auto fileSize = std::filesystem::file_size(path, ec);
         if (ec)
-            throw Error(path + ": cannot open: " + ec.message());
+            throw IoError(path + ": cannot open: " + ec.message());
         if (fileSize > limits::kMaxLutFileBytes)
             throw LimitError(path + ": file is " + std::to_string(fileSize) +
                              " bytes, over the limit of " +

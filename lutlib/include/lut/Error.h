@@ -40,6 +40,21 @@ public:
     using Error::Error;
 };
 
+// The system failed a read or a write: a file that cannot be opened or read, a write, sync or
+// rename refused (a full disk, no permission), a written file that does not read back as written.
+// Not the file's content (ParseError, LimitError, Error) nor the request (bad usage:
+// lut::formats::RequestError). lutkit exits 1 for it, as for bad input (cli/ErrorExit.h).
+class IoError : public Error {
+public:
+    using Error::Error;
+};
+
+// What a note is, for a front end that treats one apart (never by its text).
+enum class NoteId {
+    None,           // a note like any other
+    BloomNotUndone, // preview's undo of a screenshot: its bloom stays (the same for every picture)
+};
+
 struct Diagnostic {
     enum class Severity { Info, Warning, Error };
     Severity severity = Severity::Warning;
@@ -47,6 +62,7 @@ struct Diagnostic {
     int line = 0; // 0 = not tied to a line
     int column = 0;
     std::string message;
+    NoteId id = NoteId::None;
     std::string str() const; // "path:line:col: warning: message"
 };
 

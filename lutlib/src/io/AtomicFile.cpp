@@ -72,7 +72,7 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
         m_registration.release();
         if (err != EEXIST || attempt == 15) {
             m_done = true;
-            throw Error(m_path + ": cannot write: " + errnoText(err));
+            throw IoError(m_path + ": cannot write: " + errnoText(err));
         }
     }
     if (interrupted()) {
@@ -157,7 +157,7 @@ void AtomicFile::write(std::string_view bytes) {
             removeTemp();
             if (interrupted())
                 throw InterruptedError(m_path + ": interrupted");
-            throw Error(m_path + ": cannot write: " + errnoText(err));
+            throw IoError(m_path + ": cannot write: " + errnoText(err));
         }
         done += static_cast<std::size_t>(n);
     }
@@ -178,7 +178,7 @@ void AtomicFile::commit(const Checks& checks) {
         removeTemp();
         if (interrupted())
             throw InterruptedError(m_path + ": interrupted");
-        throw Error(m_path + ": cannot write: " + errnoText(err));
+        throw IoError(m_path + ": cannot write: " + errnoText(err));
     };
     throwIfInterrupted(m_path);
     // 1. Our descriptor: a close error is a write error on some file systems (NFS).
@@ -248,7 +248,8 @@ void AtomicFile::commit(const Checks& checks) {
     m_done = true;
     // The rename itself durable: sync the folder (file systems that cannot are fine).
     if (os::syncFolder(folderOf(m_path)) != 0)
-        throw Error(m_path + ": written, but its folder could not be synced: " + errnoText(errno));
+        throw IoError(m_path +
+                      ": written, but its folder could not be synced: " + errnoText(errno));
 }
 
 void writeFileAtomically(const std::string& path, std::string_view bytes) {
@@ -258,7 +259,7 @@ void writeFileAtomically(const std::string& path, std::string_view bytes) {
     file.commit({bytes.size(), [&](const std::string& temp) {
                      const int fd = os::openFile(temp, os::OpenFor::Read);
                      if (fd < 0)
-                         throw Error(errnoText(errno));
+                         throw IoError(errnoText(errno));
                      std::vector<char> buf(std::min<std::size_t>(bytes.size() + 1, 1 << 20));
                      std::size_t at = 0;
                      for (;;) {
@@ -268,7 +269,7 @@ void writeFileAtomically(const std::string& path, std::string_view bytes) {
                          if (n < 0) {
                              const int err = errno;
                              os::closeFile(fd);
-                             throw Error(errnoText(err));
+                             throw IoError(errnoText(err));
                          }
                          if (n == 0)
                              break;

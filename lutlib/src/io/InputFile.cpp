@@ -62,7 +62,7 @@ constexpr std::size_t kHugeThreshold = std::size_t(1) << 20;
 void checkRegularInput(const std::string& path) {
     os::FileInfo st;
     if (const int err = os::fileInfo(path, st); err != 0)
-        throw Error(path + ": cannot open: " + std::strerror(err));
+        throw IoError(path + ": cannot open: " + std::strerror(err));
     if (st.type != os::FileType::Regular)
         refuse(path, st.type);
 }
@@ -95,10 +95,10 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
     // Opened without waiting for a writer: a path swapped for a FIFO in between cannot block.
     const Fd fd(os::openFile(path, os::OpenFor::Read));
     if (fd.get() < 0)
-        throw Error(path + ": cannot open: " + std::strerror(errno));
+        throw IoError(path + ": cannot open: " + std::strerror(errno));
     os::FileInfo before;
     if (const int err = os::openFileInfo(fd.get(), before); err != 0)
-        throw Error(path + ": cannot read: " + std::strerror(err));
+        throw IoError(path + ": cannot read: " + std::strerror(err));
     if (before.type != os::FileType::Regular)
         refuse(path, before.type);
     const std::uint64_t size = before.size;
@@ -128,14 +128,14 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
         if (n < 0 && errno == EINTR)
             continue;
         if (n < 0)
-            throw Error(path + ": cannot read: " + std::strerror(errno));
+            throw IoError(path + ": cannot read: " + std::strerror(errno));
         if (n == 0)
             break;
         done += static_cast<std::size_t>(n);
     }
     os::FileInfo after;
     if (const int err = os::openFileInfo(fd.get(), after); err != 0)
-        throw Error(path + ": cannot read: " + std::strerror(err));
+        throw IoError(path + ": cannot read: " + std::strerror(err));
     if (done != size || after.size != before.size || after.modifiedNs != before.modifiedNs)
         throw Error(path + ": the file changed while being read (" +
                     (after.size != before.size ? std::to_string(size) + " bytes when opened, " +

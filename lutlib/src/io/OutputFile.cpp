@@ -61,14 +61,14 @@ OutputFile::OutputFile(const OutputTarget& target) : m_target(target) {
         // No O_CREAT, no O_TRUNC: a device or FIFO is written as it is.
         m_fd = os::openFile(m_target.writePath, os::OpenFor::WriteInPlace);
         if (m_fd < 0)
-            throw Error(m_target.path + ": cannot write: " + std::strerror(errno));
+            throw IoError(m_target.path + ": cannot write: " + std::strerror(errno));
         m_ownFd = true;
         return;
     }
     m_atomic = std::make_unique<AtomicFile>(m_target.writePath);
     m_fd = os::openFile(m_atomic->tempPath(), os::OpenFor::WriteInPlace); // created empty
     if (m_fd < 0)
-        throw Error(m_target.path + ": cannot write: " + std::strerror(errno));
+        throw IoError(m_target.path + ": cannot write: " + std::strerror(errno));
     m_ownFd = true;
 }
 
@@ -91,7 +91,7 @@ void OutputFile::fail(const std::string& reason) {
     }
     m_atomic.reset(); // removes the temporary file
     m_memory.clear();
-    throw Error(m_target.path + ": cannot write: " + reason);
+    throw IoError(m_target.path + ": cannot write: " + reason);
 }
 
 void OutputFile::checkedWrite(const void* data, std::size_t bytes, std::int64_t offset) {
@@ -174,7 +174,7 @@ void OutputFile::commit(const std::function<void(const std::string&)>& verify) {
             const int fd = m_fd;
             m_fd = -1;
             if (os::closeFile(fd) != 0 && errno != EINTR)
-                throw Error(m_target.path + ": cannot write: " + std::strerror(errno));
+                throw IoError(m_target.path + ": cannot write: " + std::strerror(errno));
         }
         return;
     }

@@ -89,7 +89,7 @@ OutputTarget checkOutput(const std::string& path, ExistingOutput rule,
     os::FileInfo st;
     if (const int err = os::fileInfo(path, st); err != 0) {
         if (err != ENOENT)
-            throw Error(path + ": cannot write: " + std::strerror(err));
+            throw IoError(path + ": cannot write: " + std::strerror(err));
         os::FileInfo lst;
         if (os::linkInfo(path, lst) == 0) // a dangling symbolic link: never write through it
             throw Error(path + ": is a symbolic link to a missing file; not written");

@@ -43,7 +43,7 @@ std::string readStandardInput(std::size_t maxBytes,
         if (n < 0) {
             if (errno == EINTR)
                 continue;
-            throw Error(std::string("-: cannot read standard input: ") + std::strerror(errno));
+            throw IoError(std::string("-: cannot read standard input: ") + std::strerror(errno));
         }
         if (n == 0)
             break;

@@ -22,6 +22,12 @@ namespace {
 // where it crosses the table's planes); past that the slope term covers its kinks.
 constexpr std::size_t kMaxShaperPlanes = 256;
 
+// The one filter of fileBreaks and shaperBreaks: x strictly inside the domain on axis a (a kink
+// at an edge is no break between lattice points).
+bool insideDomain(double x, glm::vec3 lo, glm::vec3 hi, int a) {
+    return x > lo[a] && x < hi[a];
+}
+
 // Per axis: the inputs in (lo, hi) where the file's shaper kinks (its entries) and where it
 // crosses one of its table's lattice planes (the composition kinks there too).
 Breaks shaperBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
@@ -34,7 +40,7 @@ Breaks shaperBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
         std::vector<double> knots, crossings;
         for (int i = 0; i < n; ++i) {
             const double x = inputOf(i);
-            if (x > lo[a] && x < hi[a])
+            if (insideDomain(x, lo, hi, a))
                 knots.push_back(x);
         }
         if (file.cube) {
@@ -50,7 +56,7 @@ Breaks shaperBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
                 for (double k = std::max(0.0, std::floor(p0) + 1); k < p1 && k <= m - 1; ++k) {
                     const double y = c0 + (c1 - c0) * k / (m - 1);
                     const double x = inputOf(i + (y - y0) / (y1 - y0));
-                    if (x > lo[a] && x < hi[a])
+                    if (insideDomain(x, lo, hi, a))
                         crossings.push_back(x);
                 }
             }
@@ -76,7 +82,7 @@ Breaks fileBreaks(const LutFile& file, glm::vec3 lo, glm::vec3 hi) {
     const Breaks all = latticeBreaks(*file.cube, Interpolation::Tetrahedral);
     for (int a = 0; a < 3; ++a)
         for (const double x : all[static_cast<std::size_t>(a)])
-            if (x > lo[a] && x < hi[a])
+            if (insideDomain(x, lo, hi, a))
                 out[static_cast<std::size_t>(a)].push_back(x);
     return out;
 }

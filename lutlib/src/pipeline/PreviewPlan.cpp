@@ -12,8 +12,6 @@ namespace lut {
 
 namespace {
 
-constexpr const char* kBloomNotUndone = "bloom cannot be undone";
-
 bool endsWithBloom(const std::string& name) {
     return name.size() >= 5 && name.compare(name.size() - 5, 5, "bloom") == 0;
 }
@@ -184,9 +182,8 @@ Diagnostics PreviewPreparation::notes() const {
         return {};
     Diagnostics d = ungradeNotes(m_unconverged.load());
     if (m_quietBloom) // said in the reason: no bloom added to the shot's own
-        d.erase(std::remove_if(
-                    d.begin(), d.end(),
-                    [](const Diagnostic& x) { return x.message.rfind(kBloomNotUndone, 0) == 0; }),
+        d.erase(std::remove_if(d.begin(), d.end(),
+                               [](const Diagnostic& x) { return x.id == NoteId::BloomNotUndone; }),
                 d.end());
     return d;
 }

@@ -225,6 +225,7 @@ PurposeConversion convertPurpose(const Lut3D& lut, LutPurpose from, LutPurpose t
         return c;
     }
     c.authoring = authorSmashLutForEdit(lut, o.editInterpolation, authoringOptions(o));
+    c.onStage = o.stageLut != nullptr;
     finishGameLut(c);
     return c;
 }
@@ -280,6 +281,7 @@ PurposeConversion convertPurpose(const LutFile& file, LutPurpose from, LutPurpos
                                         authoringOptions(o));
     c.authoring.exact.setTitle(title);
     c.authoring.lut.setTitle(title);
+    c.onStage = o.stageLut != nullptr;
     finishGameLut(c);
     addInputStorage(c, file.sourceBitDepth);
     return c;

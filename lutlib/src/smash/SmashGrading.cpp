@@ -285,6 +285,7 @@ Diagnostics ungradeNotes(std::size_t unconverged) {
     Diagnostics notes;
     Diagnostic note;
     note.severity = Diagnostic::Severity::Info;
+    note.id = NoteId::BloomNotUndone;
     note.message = "bloom cannot be undone: the screenshot's bloom stays in the recovered frame "
                    "(and is added again unless bloom is disabled)";
     notes.push_back(note);

@@ -9,7 +9,9 @@
 //  - what the LUT is for (lut/LutPurpose.h): the purpose said (--target), else the game's LUT for
 //    the game's format (a .nutexb: the game applies it), else what the input is for;
 //  - the lattice: the size asked for; a Hald level L asks for N = L^2 in a Hald image (a LUT
-//    image output only, not with another layout).
+//    image output only, not with another layout); the one size the format stores (a .nutexb's
+//    16^3, reshade's 32^3); a new table's size when none is asked (newTableSize: the fixed size,
+//    else 16^3 for a LUT image, else the caller's).
 // A request that cannot be (a Hald level for a .cube) throws RequestError
 // (lut/formats/RequestError.h), bad usage; the front end prints its text and never reads it.
 #include "lut/LutPurpose.h"
@@ -25,6 +27,14 @@ namespace lut::formats {
 // The registry name of the game's LUT format (Smash Ultimate's .nutexb, lut/formats/Nutexb.h):
 // what a folder is converted to when no format is named.
 constexpr const char* kGameLutFormat = "nutexb";
+
+// A LUT image's lattice when nothing asks for another (a 256x16 strip, a level-4 Hald image):
+// lutkit neutral's and the editor's strips.
+constexpr int kLutImageSize = 16;
+
+// Whether `path` is a file in the game's own format (a .nutexb by its extension): the game's LUT
+// by what it is, whatever it holds (lutkit's drop on a .nutexb refuses it).
+bool isGameFormatPath(const std::string& path);
 
 // What the user said about the output.
 struct LutDestinationRequest {
@@ -53,7 +63,9 @@ struct LutDestination {
     int size = 0;                    // lattice size asked for (a Hald level's L^2), 0 = none
     std::optional<LutLayout> layout; // LUT image layout (hald for a Hald level)
     int haldLevel = 0;
-    bool hald = false; // a Hald image is written (N = L^2 only)
+    bool hald = false;  // a Hald image is written (N = L^2 only)
+    bool image = false; // a LUT image (strip or Hald) is written
+    int fixedSize = 0;  // the one lattice size the writer stores with this layout (0 = any)
 
     // What the output is for, for an input that is for `input`.
     LutPurpose purposeFor(LutPurpose input) const { return purpose.value_or(input); }
@@ -64,6 +76,10 @@ struct LutDestination {
     // The writer, or lut::Error "PATH: no format writes '.ext' files (name the output format:
     // --format)".
     const Format& requireWriter() const;
+    // The lattice size of a new table written here (a neutral, the editor's export of its
+    // document): the size asked for, else the format's fixed size, else kLutImageSize for a LUT
+    // image, else `otherwise` (0 = the table's own).
+    int newTableSize(int otherwise) const;
 };
 
 // Resolves the request (the registry's built-in formats registered first). Throws RequestError

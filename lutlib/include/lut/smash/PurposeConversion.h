@@ -52,6 +52,8 @@ struct PurposeConversion {
     // smash -> raw: the raw table against the edit it samples, between its lattice points.
     GameError sampling;
     std::string measuredOver;
+    // raw -> smash made on a stage's picture (PurposeOptions::stageLut), not the neutral game's.
+    bool onStage = false;
 };
 
 PurposeConversion convertPurpose(const Lut3D& lut, LutPurpose from, LutPurpose to,
