@@ -119,7 +119,8 @@ void printJson(const MatchCommandOptions& o, const MatchReport& r, const Diagnos
       << ", \"flat_cells\": " << r.quality.flatCells << ", \"cells\": " << r.quality.cells
       << ", \"largest_second_difference_steps\": "
       << json::number(r.quality.largestSecondDifference)
-      << "},\n \"repaired\": {\"grey_drop_steps\": " << json::number(r.greyDipRepaired)
+      << "},\n \"sharp_second_match\": " << (r.sharpSecondMatch ? "true" : "false")
+      << ",\n \"repaired\": {\"grey_drop_steps\": " << json::number(r.greyDipRepaired)
       << ", \"grey_nodes_moved\": " << r.greyNodesMoved
       << ", \"largest_move_steps\": " << json::number(r.greyLargestMove)
       << "},\n \"clipped\": {\"values\": " << r.clippedValues << ", \"of\": " << r.values

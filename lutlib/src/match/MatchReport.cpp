@@ -30,6 +30,9 @@ std::string MatchReport::str() const {
         for (const auto& c : candidates)
             s += fmt("         %-11s %s; fitted in %.3g s%s\n", toString(c.method),
                      distance(c.after).c_str(), c.seconds, c.shapeNote().c_str());
+    if (sharpSecondMatch)
+        s += "curves   hm-mkl-hm's second histogram match kept sharp (not smoothed): its LUT is "
+             "clean and at least 10% closer to the reference\n";
     if (!look.empty())
         s += fmt("look     the reference is a colour per lightness: %s (its colours within %.2g "
                  "8-bit steps of that curve, root mean square)\n",

@@ -62,6 +62,9 @@ struct MatchReport {
     // `quality` measures the LUT after.
     double greyDipRepaired = 0.0;
     int greyNodesMoved = 0;
+    // HM-MKL-HM (or auto's floor) with its second histogram match sharp, not smoothed: its LUT
+    // was clean and at least 10% closer to the reference (lutlib/src/match/MatchFit.cpp).
+    bool sharpSecondMatch = false;
     double greyLargestMove = 0.0;
     LutQuality quality;
 
