@@ -9,6 +9,7 @@
 
 #include "lut/LutPurpose.h"
 #include "lut/Version.h"
+#include "lut/formats/Cube.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/formats/LutDestination.h"
 #include "lut/formats/Registry.h"
@@ -253,18 +254,12 @@ int runMatch(const MatchCommandOptions& o) {
     // Photoshop's Color Lookup and most engines refuse: said, with the form they read.
     if (!smash && out.shaper && o.format.empty() && o.form == MatchLutForm::Auto &&
         extensionOf(o.output) == ".cube") {
-        Diagnostic d;
-        d.severity = Diagnostic::Severity::Warning;
-        d.path = o.output;
-        d.message =
-            "a 1D shaper then a 3D table (DaVinci Resolve's .cube, which OpenColorIO "
-            "reads too), kept because the look needs it" +
-            (res.report.bothForms ? " (the table alone would be " +
-                                        res.report.tableAloneError.str() + " from the match)"
-                                  : std::string()) +
-            "; ffmpeg's lut3d, Photoshop's Color Lookup and most game engines read a 3D "
-            "table alone: --format iridas_cube writes one (the shaper baked in)";
-        diags.push_back(d);
+        diags.push_back(formats::resolveCubeReadersWarning(
+            o.output, "the look needs it",
+            res.report.bothForms
+                ? "the table alone would be " + res.report.tableAloneError.str() + " from the match"
+                : std::string(),
+            "the shaper baked in"));
     }
     if (writeReport) {
         MatchReportPicture a{src.pixels, src.linear};
