@@ -19,6 +19,14 @@ if(EMSCRIPTEN)
     -sSUPPORT_LONGJMP=0
     "SHELL:--extern-post-js ${PROJECT_SOURCE_DIR}/web/lutkit-api.js")
   set_property(TARGET lutkit APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/web/lutkit-api.js)
+  # The WebAssembly SIMD sampler kernels against their definition, bit for bit (run under Node by
+  # tests/web/run.sh; not part of the site).
+  add_executable(lutkit_wasm_kernels_check EXCLUDE_FROM_ALL
+                 ${PROJECT_SOURCE_DIR}/tests/web/wasm_kernels_check.cpp)
+  target_link_libraries(lutkit_wasm_kernels_check PRIVATE lutkit::lutlib_internal)
+  target_compile_options(lutkit_wasm_kernels_check PRIVATE -ffp-contract=off)
+  target_link_options(lutkit_wasm_kernels_check PRIVATE -sALLOW_MEMORY_GROWTH=1)
+  lutkit_warnings(lutkit_wasm_kernels_check)
 elseif(WIN32)
   # One self-contained lutkit.exe: the C and C++ runtimes and winpthreads linked in, nothing to
   # install beside it. Unicode arguments and paths come through the wide API (cli/main.cpp).

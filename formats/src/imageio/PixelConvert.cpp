@@ -24,6 +24,7 @@ std::size_t rgbaToHalfRgbF16c(const float* rgba, std::size_t n, std::uint16_t* d
 std::size_t rgbaToUnorm8Avx(const float* rgba, std::size_t n, std::uint8_t* dst, int nch);
 std::size_t unorm8ToRgbaAvx(const std::uint8_t* src, std::size_t n, float* rgba, int nch);
 std::size_t rgbaToUnorm16Avx(const float* rgba, std::size_t n, std::uint16_t* dst, int nch);
+std::size_t rgbaToUnorm8Wasm(const float* rgba, std::size_t n, std::uint8_t* dst, int nch);
 } // namespace detail
 
 namespace {
@@ -164,12 +165,22 @@ void scatter(const float* __restrict v, std::size_t n, T* d, int nch, const Rgba
         !dp.on && !grey && nch == 3 && m.r == 0 && m.g == 1 && m.b == 2 && m.a < 0;
     const bool plainRgba = !dp.on && nch == 4 && m.r == 0 && m.g == 1 && m.b == 2 && m.a == 3;
     if constexpr (!std::is_same_v<T, float>) {
-        if ((plainRgb || plainRgba) && hasAvx()) {
+#if defined(__wasm_simd128__)
+        constexpr bool wasm = std::is_same_v<T, std::uint8_t>; // the browser edition's 8 bits
+#else
+        constexpr bool wasm = false;
+#endif
+        if ((plainRgb || plainRgba) && (wasm || hasAvx())) {
             std::size_t done = 0;
+#if defined(__wasm_simd128__)
+            if constexpr (wasm)
+                done = detail::rgbaToUnorm8Wasm(v, n, d, nch);
+#else
             if constexpr (std::is_same_v<T, std::uint8_t>)
                 done = detail::rgbaToUnorm8Avx(v, n, d, nch);
             else
                 done = detail::rgbaToUnorm16Avx(v, n, d, nch);
+#endif
             for (std::size_t i = done; i < n; ++i)
                 for (int c = 0; c < nch; ++c)
                     d[static_cast<std::size_t>(nch) * i + static_cast<std::size_t>(c)] =

@@ -74,6 +74,14 @@ enum class Isa { Scalar, Avx2, Avx512 };
 #define LUTKIT_X86_KERNEL(f) nullptr
 #endif
 
+// The portable form of a kernel: WebAssembly SIMD in the browser edition, else scalar C++ (the
+// same bits either way).
+#if defined(__wasm_simd128__)
+#define LUTKIT_PORTABLE_KERNEL(name) (&detail::name##Wasm)
+#else
+#define LUTKIT_PORTABLE_KERNEL(name) (&detail::name##Portable)
+#endif
+
 Isa detectIsa() {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_cpu_init();
@@ -174,7 +182,7 @@ class TrilinearSampler final : public SamplerBase {
 public:
     explicit TrilinearSampler(const Lut3D& lut)
         : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::trilinearAvx2), nullptr,
-                      &detail::trilinearPortable) {}
+                      LUTKIT_PORTABLE_KERNEL(trilinear)) {}
     Interpolation method() const override { return Interpolation::Trilinear; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);
@@ -200,7 +208,8 @@ class TetrahedralSampler final : public SamplerBase {
 public:
     explicit TetrahedralSampler(const Lut3D& lut)
         : SamplerBase(lut, LUTKIT_X86_KERNEL(detail::tetrahedralAvx2),
-                      LUTKIT_X86_KERNEL(detail::tetrahedralAvx512), &detail::tetrahedralPortable) {}
+                      LUTKIT_X86_KERNEL(detail::tetrahedralAvx512),
+                      LUTKIT_PORTABLE_KERNEL(tetrahedral)) {}
     Interpolation method() const override { return Interpolation::Tetrahedral; }
     void applyPixels(float* rgba, std::size_t count) const override {
         applyWith(*this, rgba, count);

@@ -44,6 +44,10 @@ void shaperAvx2(const ShaperTable& table, float* rgba, std::size_t count);
 // already picks the kernel's entry.
 void trilinearPortable(const KernelTable& table, float* rgba, std::size_t count);
 void tetrahedralPortable(const KernelTable& table, float* rgba, std::size_t count);
+// The same two in WebAssembly SIMD (simd/SamplerKernels_wasm.cpp, the browser edition only): the
+// portable kernels' bits, three channels at once.
+void trilinearWasm(const KernelTable& table, float* rgba, std::size_t count);
+void tetrahedralWasm(const KernelTable& table, float* rgba, std::size_t count);
 // AVX-512 F + DQ (simd/SamplerKernels_avx512.cpp): bit-identical to its AVX2 twin, 16 pixels per
 // iteration. Only call when the CPU has AVX-512 F and DQ (and AVX2 + FMA).
 void tetrahedralAvx512(const KernelTable& table, float* rgba, std::size_t count);
