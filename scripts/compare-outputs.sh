@@ -26,10 +26,28 @@
 #   scripts/compare-outputs.sh /tmp/lutkit-before /tmp/out-before
 #   scripts/compare-outputs.sh build/bin/lutkit /tmp/out-after
 #   scripts/compare-outputs.sh --compare /tmp/out-before /tmp/out-after
+#
+# The same comparison against a committed record instead of a second binary (ctest's
+# compare_outputs runs the check on every Release build):
+#
+#   scripts/compare-outputs.sh --manifest DIR          the record of a folder of the first form:
+#                                                     one line per file, "SHA256  CASE/FILE", of
+#                                                     the text as --compare sees it (timings
+#                                                     blanked) and the files undated
+#   scripts/compare-outputs.sh --check BIN [MANIFEST]  runs BIN into a temporary folder and
+#                                                     compares its record with MANIFEST; prints
+#                                                     the files that differ, exits 1 if any does
+#   scripts/compare-outputs.sh --update [BIN]          writes MANIFEST anew from BIN (default
+#                                                     build/bin/lutkit)
+#
+# MANIFEST defaults to tests/data/compare-outputs.sha256. A change that moves bytes on purpose
+# runs --update and commits the manifest with it: the commit's diff of the manifest lists the
+# cases whose outputs changed (docs/architecture.md, "Refactoring without changing a byte").
 set -u
 
 usage() {
-    echo "usage: $0 BIN OUTDIR | $0 --compare DIR1 DIR2" >&2
+    echo "usage: $0 BIN OUTDIR | $0 --compare DIR1 DIR2 | $0 --manifest DIR |" \
+        "$0 --check BIN [MANIFEST] | $0 --update [BIN]" >&2
     exit 2
 }
 
@@ -47,6 +65,82 @@ normalise() {
 undate() {
     perl -0777 -pe 's/\d{4}:\d\d:\d\d \d\d:\d\d:\d\d/0000:00:00 00:00:00/g' "$1"
 }
+
+# The record of a folder of outputs: "SHA256  CASE/FILE", sorted bytewise, the text normalised
+# as normalise() does and the files as undate() does (the same expressions, in one perl run: a
+# process per file took a minute).
+manifest() {
+    (cd "$1" && find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e '
+        my @files = sort map { s|^\./||r } map { chomp; $_ } <STDIN>;
+        for my $rel (@files) {
+            open(my $fh, "<:raw", $rel) or die "$rel: $!";
+            local $/;
+            my $data = <$fh> // "";
+            close $fh;
+            if ($rel =~ m{/(stdout|stderr)\.txt$}) {
+                my @lines = split /(?<=\n)/, $data;
+                for (@lines) {
+                    s/[0-9]+([.,][0-9]+)?([eE][-+]?[0-9]+)? ?(ns|us|µs|ms|s|sec|seconds|min|[KMG]?i?B\/s|[KMG]?px\/s|frames\/s|fps)\b/<t>/g;
+                    s/"([a-z_]*seconds|[a-z_]*_ms)": \{[^}]*\}/"$1": {<t>}/g;
+                    s/"([a-z_]*seconds|[a-z_]*_ms)": [-+0-9.eE]+/"$1": <t>/g;
+                    s/[0-9.]+ [A-Za-z]+\/s\b/<t>/g;
+                    s/ in [0-9]+:[0-9]{2}(:[0-9]{2})?\b/ in <t>/g;
+                    s/^(time +).*/$1<t>/;
+                }
+                if ($rel =~ m{(^|/)convert-batch/}) {
+                    $_ .= "\n" for grep { !/\n$/ } @lines; # as sort(1) ends every line
+                    @lines = sort @lines;
+                }
+                $data = join "", @lines;
+            } else {
+                $data =~ s/\d{4}:\d\d:\d\d \d\d:\d\d:\d\d/0000:00:00 00:00:00/g;
+            }
+            print sha256_hex($data), "  $rel\n";
+        }')
+}
+
+ROOT_DIR=$(cd "$(dirname "$0")/.." && pwd)
+DEFAULT_MANIFEST=$ROOT_DIR/tests/data/compare-outputs.sha256
+
+if [ "${1:-}" = "--manifest" ]; then
+    [ $# -eq 2 ] && [ -d "$2" ] || usage
+    manifest "$2"
+    exit 0
+fi
+
+if [ "${1:-}" = "--check" ] || [ "${1:-}" = "--update" ]; then
+    mode=$1
+    if [ "$mode" = "--check" ]; then
+        [ $# -eq 2 ] || [ $# -eq 3 ] || usage
+        bin=$2
+        target=${3:-$DEFAULT_MANIFEST}
+        [ -f "$target" ] || { echo "$0: no manifest $target" >&2; exit 2; }
+    else
+        [ $# -le 2 ] || usage
+        bin=${2:-$ROOT_DIR/build/bin/lutkit}
+        target=$DEFAULT_MANIFEST
+    fi
+    work=$(mktemp -d "${TMPDIR:-/tmp}/compare-outputs.XXXXXX")
+    trap 'rm -rf "$work"' EXIT
+    "$0" "$bin" "$work/out" >"$work/run.log" 2>&1 || { cat "$work/run.log" >&2; exit 2; }
+    manifest "$work/out" >"$work/manifest"
+    if [ "$mode" = "--update" ]; then
+        cp "$work/manifest" "$target"
+        echo "$target: $(wc -l <"$target") files of $(ls "$work/out" | wc -l) cases"
+        exit 0
+    fi
+    if cmp -s "$target" "$work/manifest"; then
+        echo "$(wc -l <"$target") files identical to $target"
+        exit 0
+    fi
+    # the files whose hash changed, and those only one side has
+    diff <(sort -k2 "$target") <(sort -k2 "$work/manifest") | sed -n 's/^\([<>]\) [0-9a-f]*  //p' |
+        sort -u | sed 's/^/differs: /'
+    echo "$(diff "$target" "$work/manifest" | grep -c '^>') of $(wc -l <"$work/manifest") files" \
+        "differ from $target; if the change is meant, refresh it:" \
+        "scripts/compare-outputs.sh --update $bin (and commit the manifest)"
+    exit 1
+fi
 
 if [ "${1:-}" = "--compare" ]; then
     [ $# -eq 3 ] || usage

@@ -7,6 +7,7 @@
 #include "Vocabulary.h"
 
 #include "lut/Error.h"
+#include "lut/LutFile.h"
 #include "lut/formats/Hald.h"
 #include "lut/formats/Registry.h"
 
@@ -38,7 +39,7 @@ int runInfo(const InfoOptions& o) {
     options.size = o.size;
     const LutFile file = formats::readLut(o.input, options, o.inFormat);
     if (!file.cube && !file.shaper)
-        throw Error(o.input + ": holds no table");
+        throw Error(o.input, "holds no table");
 
     // Neutrality of the whole file (shaper then cube), over its input domain.
     double deviation = 0.0;
@@ -88,9 +89,10 @@ int runInfo(const InfoOptions& o) {
            << ", \"comments\": " << comments
            << ", \"purpose\": " << (file.purpose ? json::quote(toString(*file.purpose)) : "null")
            << ", \"purpose_source\": "
-           << json::quote(!file.purpose             ? "none"
-                          : file.format == "nutexb" ? "format"
-                                                    : "file")
+           // why, as the library decides it (a .nutexb says it by its format)
+           << json::quote(!file.purpose                                         ? "none"
+                          : decidePurpose(file).source == PurposeSource::Format ? "format"
+                                                                                : "file")
            << ", \"source_bit_depth\": " << bitDepth
            << ", \"float\": " << (isFloat ? "true" : "false")
            << ", \"diagnostics\": " << json::diagnostics(file.diagnostics) << "}\n";
