@@ -39,6 +39,7 @@ public:
                               : pos >= static_cast<double>(last) ? last
                                                                  : static_cast<std::size_t>(pos);
         m_counts[k] += weight;
+        m_sums[k] += weight * value;
         m_stale = true;
     }
     void merge(const ChannelHistogram& other); // same bins (throws lut::Error otherwise)
@@ -49,6 +50,8 @@ public:
     double binWidth() const { return (m_hi - m_lo) / static_cast<double>(m_counts.size()); }
     const std::vector<double>& counts() const { return m_counts; }
     double total() const;
+    // The mean of the values counted in bin k, within the bin (its centre when it is empty).
+    double meanIn(std::size_t k) const;
     std::size_t occupiedBins() const; // bins holding mass
 
     // The distribution function at x (piecewise linear, 0 below lo, 1 above hi) and its inverse
@@ -64,6 +67,7 @@ private:
     double m_lo = 0.0, m_hi = 1.0;
     double m_scale = 1.0; // bins per unit
     std::vector<double> m_counts;
+    std::vector<double> m_sums;               // weight * value per bin
     mutable std::vector<double> m_cumulative; // m_counts.size() + 1 edges; rebuilt when stale
     mutable bool m_stale = true;
 };
