@@ -107,9 +107,9 @@ namespace {
 
 // A source bin holding more than this share of the picture is an atom (step 0b below) when its
 // pixels land further than kAtomOff (half an 8-bit step of the working encoding) from the
-// reference's mean over their share. Measured (bench/RESULTS.md, 2026-12-08): a share of 1% or
-// 5% moved the sample scene's flat colours (up to 5.1% of the picture each) and the issue-23
-// acceptance to p99 9 (limit 8); a quarter step cost retina's sharp second match.
+// reference's mean over their share. Measured (bench/RESULTS.md, issue 42, fourth pass): at 1%
+// the sample scene's flat colours (up to 5.1% of the picture each) moved and the issue-23
+// acceptance went to p99 9 (limit 8); at 5%, or a quarter step, retina lost its sharp second match.
 constexpr double kAtomShare = 0.1;
 constexpr double kAtomOff = 0.5 / 255.0;
 
