@@ -9,6 +9,11 @@
 // into a staircase). The matching curve is
 //     T(x) = Q_ref(F_src(x))         at the bin edges over the source's occupied range,
 // then (each step keeps it non-decreasing):
+//   0. an atom, a source bin holding over 10% of the picture (a letterbox's black bars, a flat
+//      colour), is moved so its pixels (their mean in the bin) land on the reference's mean over
+//      the atom's share, where the optimal 1D transport sends it, when they would land more than
+//      half an 8-bit step away: between the edges' quantiles they land wherever they sit in the
+//      bin (a letterbox's black halfway between the reference's darkest pixels and its bars);
 //   1. smoothed by a Gaussian of width `smoothing` (x units), the curve continued linearly past
 //      its ends so the ends are not pulled in;
 //   2. every knot slope limited to [minSlope, maxSlope], integrated again and shifted so the
@@ -39,6 +44,7 @@ public:
                               : pos >= static_cast<double>(last) ? last
                                                                  : static_cast<std::size_t>(pos);
         m_counts[k] += weight;
+        m_sums[k] += weight * value;
         m_stale = true;
     }
     void merge(const ChannelHistogram& other); // same bins (throws lut::Error otherwise)
@@ -49,6 +55,8 @@ public:
     double binWidth() const { return (m_hi - m_lo) / static_cast<double>(m_counts.size()); }
     const std::vector<double>& counts() const { return m_counts; }
     double total() const;
+    // The mean of the values counted in bin k, within the bin (its centre when it is empty).
+    double meanIn(std::size_t k) const;
     std::size_t occupiedBins() const; // bins holding mass
 
     // The distribution function at x (piecewise linear, 0 below lo, 1 above hi) and its inverse
@@ -64,6 +72,7 @@ private:
     double m_lo = 0.0, m_hi = 1.0;
     double m_scale = 1.0; // bins per unit
     std::vector<double> m_counts;
+    std::vector<double> m_sums;               // weight * value per bin
     mutable std::vector<double> m_cumulative; // m_counts.size() + 1 edges; rebuilt when stale
     mutable bool m_stale = true;
 };
