@@ -9,6 +9,7 @@
 #include "Usage.h"
 #include "Vocabulary.h"
 
+#include "lut/ErrorStats.h"
 #include "lut/formats/ImageIO.h"
 #include "lut/io/AtomicFile.h"
 #include "lut/io/FileNames.h"
@@ -18,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -28,6 +30,21 @@ namespace {
 
 std::string steps(glm::dvec3 v) {
     return "R " + significant(v.x) + "  G " + significant(v.y) + "  B " + significant(v.z);
+}
+
+// A maximum, rounded up (a printed maximum never rounds below what it stands for).
+std::string maxSteps(glm::dvec3 v) {
+    return steps(
+        glm::dvec3(roundUpSignificant(v.x), roundUpSignificant(v.y), roundUpSignificant(v.z)));
+}
+
+// What the 8-bit maximum covers (DiffReport::maxEveryInput, boundSteps8).
+std::string maxCovers(const DiffCommandOptions& o, const DiffReport& r) {
+    if (!o.image.empty())
+        return "the image's colours";
+    if (r.maxEveryInput)
+        return "every input";
+    return "the lattice's points";
 }
 
 void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScale,
@@ -41,6 +58,9 @@ void printJson(const DiffCommandOptions& o, const DiffReport& r, double heatScal
               << ", \"mean\": " << json::number(r.meanDeltaE)
               << ", \"p95\": " << json::number(r.p95DeltaE) << "}"
               << ",\n \"max_8bit_steps\": " << json::vec3(r.maxSteps8)
+              << ", \"max_8bit_steps_covers\": " << json::quote(maxCovers(o, r))
+              << ", \"bound_8bit_steps\": "
+              << (std::isnan(r.boundSteps8) ? std::string("null") : json::number(r.boundSteps8))
               << ", \"mean_8bit_steps\": " << json::vec3(r.meanSteps8)
               << ",\n \"worst\": {\"input\": " << json::vec3(r.worst.input)
               << ", \"a\": " << json::vec3(r.worst.a) << ", \"b\": " << json::vec3(r.worst.b)
@@ -73,9 +93,20 @@ void printText(const DiffCommandOptions& o, const DiffReport& r, const std::stri
     std::cout << "ΔE2000   max " << significant(r.maxDeltaE) << ", mean "
               << significant(r.meanDeltaE) << ", 95th percentile " << significant(r.p95DeltaE)
               << " (entries taken as sRGB-encoded)\n"
-              << "8-bit    max   " << steps(r.maxSteps8) << "\n"
-              << "         mean  " << steps(r.meanSteps8) << "\n"
-              << "worst    input " << triple(r.worst.input) << ": A " << triple(r.worst.a) << ", B "
+              << "8-bit    max   " << maxSteps(r.maxSteps8) << "\n"
+              << "         mean  " << steps(r.meanSteps8) << "\n";
+    if (r.maxEveryInput)
+        std::cout << "         max: exact over every input (one lattice: between its points the "
+                     "difference is a blend of the entries' differences)\n";
+    else if (!std::isnan(r.boundSteps8))
+        std::cout << "         max: at the lattice's points; over every input of A's domain at "
+                     "most "
+                  << significant(roundUpSignificant(r.boundSteps8)) << " 8-bit steps (a bound: "
+                  << "the two lattices differ, so between the points the difference can grow)\n";
+    else if (o.image.empty())
+        std::cout << "         max: at the lattice's points (sampled: between them the difference "
+                     "can be larger)\n";
+    std::cout << "worst    input " << triple(r.worst.input) << ": A " << triple(r.worst.a) << ", B "
               << triple(r.worst.b) << " (ΔE " << significant(r.worst.deltaE) << ")\n"
               << "where    (largest mean ΔE first)\n";
     for (const auto& g : r.rankedRegions())
@@ -98,6 +129,7 @@ int runDiff(const DiffCommandOptions& o) {
     lut::DiffOptions d;
     d.method = o.interp;
     d.size = o.size;
+    d.boundBetween = true;
     HeatMapOptions h;
     h.maxDeltaE = o.maxDeltaE;
     h.method = o.interp;

@@ -84,3 +84,99 @@ TEST(Truth, ComposeOfAShaperCubeBoundsBAfterA) {
     row("compose shaper + 33^3 then a matrix 17^3 -> .cube", t.max, printed, t.mean);
     EXPECT_GE(printed + kOracleRounding, t.max) << r.out << r.err;
 }
+
+namespace {
+
+std::string randomTable(const std::string& path, int n, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<glm::dvec3> v(static_cast<std::size_t>(n) * n * n);
+    for (auto& e : v)
+        e = glm::dvec3(u(rng), u(rng), u(rng));
+    return writeCube(path, n, [&](glm::dvec3 p) {
+        const auto i = [&](double t) { return static_cast<std::size_t>(std::lround(t * (n - 1))); };
+        return v[(i(p.b) * n + i(p.g)) * n + i(p.r)];
+    });
+}
+
+// The largest |A - B| per channel over the inputs, as OpenColorIO applies each file.
+glm::dvec3 channelMax(const std::vector<float>& a, const std::vector<float>& b) {
+    glm::dvec3 m(0.0);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        m[i % 3] = std::max(m[i % 3], std::fabs(double(a[i]) - double(b[i])));
+    return m;
+}
+
+double jsonChannel(const std::string& json, int c) {
+    const char* p = json.c_str() + json.find("\"max_8bit_steps\": [") + 19;
+    double v = 0.0;
+    for (int k = 0; k <= c; ++k) {
+        char* end = nullptr;
+        v = std::strtod(p, &end);
+        p = end + 1;
+    }
+    return v / 255.0;
+}
+
+} // namespace
+
+// diff's 8-bit maximum over a lattice. Two tables of one lattice: between the points both blend
+// their entries with the same weights, so the maximum at the entries is the maximum over every
+// input (said so), per channel. Two lattices of other sizes: the maximum at the compared points
+// is a sample (a 9^3 entry between the 13^3 points: OpenColorIO shows more there), so diff also
+// prints a bound over every input. Truth: OpenColorIO applying both files (tetrahedral) on random
+// inputs in [0,1].
+TEST(Truth, DiffMaximumOverALatticeIsExactOnOneLatticeAndBoundedAcrossTwo) {
+    const std::string dir = workDir("diff-lattice");
+    const std::string a = randomTable(dir + "/a9.cube", 9, 1),
+                      b = randomTable(dir + "/b9.cube", 9, 2),
+                      c = writeCube(dir + "/c13.cube", 13, [](glm::dvec3 p) { return p; });
+    const std::vector<float> x = randomUnitInputs(100000, 53);
+    std::vector<float> fa = x, fb = x, fc = x;
+    ocioApply(a, fa);
+    ocioApply(b, fb);
+    ocioApply(c, fc);
+
+    const auto same =
+        lut::test::runCli("diff " + shellQuoted(a) + " " + shellQuoted(b) + " --json");
+    ASSERT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_NE(same.out.find("\"max_8bit_steps_covers\": \"every input\""), std::string::npos)
+        << same.out;
+    const glm::dvec3 tSame = channelMax(fa, fb);
+    for (int ch = 0; ch < 3; ++ch) {
+        const double printed = jsonChannel(same.out, ch);
+        row("diff 9^3 vs 9^3 (one lattice), channel " + std::to_string(ch), tSame[ch], printed);
+        EXPECT_GE(printed + kOracleRounding, tSame[ch]) << same.out;
+        // exact: random inputs come close to the worst entry, never past it
+        EXPECT_GE(tSame[ch], 0.9 * printed) << same.out;
+    }
+
+    // A 9^3 with one entry off neutral, against a neutral 13^3: the entry's point (1/8 on each
+    // axis) is no point of the 13^3 lattice compared on, which sees two thirds of it.
+    const std::string a2 = writeCube(dir + "/a2.cube", 9, [](glm::dvec3 p) {
+        const bool spike =
+            std::lround(p.r * 8) == 1 && std::lround(p.g * 8) == 1 && std::lround(p.b * 8) == 1;
+        return spike ? glm::dvec3(1.0, p.g, p.b) : p;
+    });
+    fa = x;
+    ocioApply(a2, fa);
+    const auto two =
+        lut::test::runCli("diff " + shellQuoted(a2) + " " + shellQuoted(c) + " --json");
+    ASSERT_EQ(two.exitCode, 0) << two.err;
+    EXPECT_NE(two.out.find("\"max_8bit_steps_covers\": \"the lattice's points\""),
+              std::string::npos)
+        << two.out;
+    const glm::dvec3 tTwo = channelMax(fa, fc);
+    const double truth = std::max({tTwo.x, tTwo.y, tTwo.z});
+    const double sampled =
+        std::max({jsonChannel(two.out, 0), jsonChannel(two.out, 1), jsonChannel(two.out, 2)});
+    const double bound = jsonNumber(two.out, "bound_8bit_steps") / 255.0;
+    row("diff 9^3 spike vs 13^3: at the lattice's points (a sample)", truth, sampled);
+    row("diff 9^3 spike vs 13^3: bound over every input", truth, bound);
+    EXPECT_GE(bound + kOracleRounding, truth) << two.out;
+    EXPECT_GT(truth, sampled) << two.out; // why the points' maximum is not the figure
+    const auto text = lut::test::runCli("diff " + shellQuoted(a2) + " " + shellQuoted(c));
+    EXPECT_NE(text.out.find("max: at the lattice's points; over every input of A's domain at most"),
+              std::string::npos)
+        << text.out;
+}

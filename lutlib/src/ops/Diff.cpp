@@ -5,6 +5,7 @@
 #include "lut/Parallel.h"
 #include "lut/interp/Sampler.h"
 #include "lut/ops/ColorDifference.h"
+#include "lut/ops/ErrorBound.h"
 #include "ops/OpsDetail.h"
 
 #include <algorithm>
@@ -180,31 +181,59 @@ DiffReport diffLuts(const Lut3D& a, const Lut3D& b, const DiffOptions& options) 
                         a.domainMax() == b.domainMax();
     const auto count = lattice.entryCount();
     if (direct) {
-        return finish(runDiff(count, options.nthreads, options.progress,
-                              [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
-                                  const int n = size, r = static_cast<int>(i % n),
-                                            g = static_cast<int>((i / n) % n),
-                                            bl = static_cast<int>(i / (n * n));
-                                  in = a.latticeInput(r, g, bl);
-                                  va = p.a.entries()[i];
-                                  vb = p.b.entries()[i];
-                              }),
-                      p, t0);
+        DiffReport r =
+            finish(runDiff(count, options.nthreads, options.progress,
+                           [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                               const int n = size, r = static_cast<int>(i % n),
+                                         g = static_cast<int>((i / n) % n),
+                                         bl = static_cast<int>(i / (n * n));
+                               in = a.latticeInput(r, g, bl);
+                               va = p.a.entries()[i];
+                               vb = p.b.entries()[i];
+                           }),
+                   p, t0);
+        r.maxEveryInput = true; // see DiffReport::maxEveryInput
+        return r;
     }
     Lut3D grid(size);
     grid.setDomain(a.domainMin(), a.domainMax());
     const auto sa = makeSampler(p.a, options.method);
     const auto sb = makeSampler(p.b, options.method);
-    return finish(runDiff(count, options.nthreads, options.progress,
-                          [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
-                              const int n = size, r = static_cast<int>(i % n),
-                                        g = static_cast<int>((i / n) % n),
-                                        bl = static_cast<int>(i / (n * n));
-                              in = grid.latticeInput(r, g, bl);
-                              va = sa->sample(in);
-                              vb = sb->sample(in);
-                          }),
-                  p, t0);
+    DiffReport report =
+        finish(runDiff(count, options.nthreads, options.progress,
+                       [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
+                           const int n = size, r = static_cast<int>(i % n),
+                                     g = static_cast<int>((i / n) % n),
+                                     bl = static_cast<int>(i / (n * n));
+                           in = grid.latticeInput(r, g, bl);
+                           va = sa->sample(in);
+                           vb = sb->sample(in);
+                       }),
+               p, t0);
+    if (options.boundBetween) {
+        // Both interpolants kink (or jump) on their own lattice's planes: the grid holds both.
+        BoundOptions bo;
+        bo.lo = glm::dvec3(a.domainMin());
+        bo.hi = glm::dvec3(a.domainMax());
+        bo.cells = size - 1;
+        bo.breaks = latticeBreaks(p.a, options.method);
+        addBreaks(bo.breaks, latticeBreaks(p.b, options.method));
+        bo.constantBetweenBreaks = options.method == Interpolation::Nearest;
+        bo.nthreads = options.nthreads;
+        const ErrorStats e = boundError(
+            [&](const glm::dvec3* in, glm::dvec3* diff, std::size_t n) {
+                for (std::size_t i = 0; i < n; ++i) {
+                    const glm::vec3 x(in[i]);
+                    diff[i] = glm::dvec3(sa->sample(x)) - glm::dvec3(sb->sample(x));
+                }
+            },
+            bo);
+        // Never below what the compared points showed.
+        report.boundSteps8 =
+            std::max({e.maxSteps8(), report.maxSteps8.x, report.maxSteps8.y, report.maxSteps8.z});
+        report.seconds = detail::secondsSince(t0);
+    }
+    return report;
 }
 
 DiffReport diffLutsOnColors(const Lut3D& a, const Lut3D& b, std::span<const glm::vec3> colors,

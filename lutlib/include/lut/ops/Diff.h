@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -33,6 +34,9 @@ struct DiffOptions {
     // Colours compared so far; a cancel stops the diff (CancelledError) within a few thousand
     // colours.
     const Progress* progress = nullptr;
+    // Lattice diffs of two lattices that differ (size or domain): also bound |A - B| over every
+    // input of A's domain, between the compared points too (DiffReport::boundSteps8).
+    bool boundBetween = false;
 };
 
 struct DiffPoint {
@@ -63,6 +67,16 @@ struct DiffReport {
     std::size_t sanitizedEntriesA = 0; // entries of A that were NaN, infinite or beyond 65504
     std::size_t sanitizedEntriesB = 0;
     double seconds = 0.0;
+    // What maxSteps8 covers. A lattice diff of two tables of one lattice (the same size and
+    // domain, any interpolation) compares their entries, and between the points each interpolant
+    // blends its entries with the same weights, so the difference there is a blend of the
+    // entries' differences: maxSteps8 is the exact maximum over every input (maxEveryInput).
+    // Otherwise it is the maximum at the colours compared; between them |A - B| may be larger:
+    // with DiffOptions::boundBetween, boundSteps8 is a bound over every input of A's domain
+    // (lut/ops/ErrorBound.h: held-out points plus the slope between them; NaN when not computed).
+    // ΔE2000 is measured at the colours compared only.
+    bool maxEveryInput = false;
+    double boundSteps8 = NAN;
 
     bool identical() const { return maxDeltaE == 0.0 && maxSteps8 == glm::dvec3(0.0); }
     // The regions that had colours, largest mean ΔE first (ties: largest max ΔE first).
