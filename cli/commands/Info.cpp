@@ -39,7 +39,7 @@ int runInfo(const InfoOptions& o) {
     options.size = o.size;
     const LutFile file = formats::readLut(o.input, options, o.inFormat);
     if (!file.cube && !file.shaper)
-        throw Error(o.input, "holds no table");
+        throw Error(o.input + ": holds no table");
 
     // Neutrality of the whole file (shaper then cube), over its input domain.
     double deviation = 0.0;
