@@ -29,7 +29,8 @@
 # and freed on different threads), so checking the worker needs a Qt built with ThreadSanitizer or
 # a hand-over through std::thread and std::mutex.
 # Only these executables are built (cmake --build --target), not the whole suite: that would not
-# fit the CI time budget (CONTRIBUTING.md). They run directly, not through ctest, two at a time.
+# fit the CI time budget (CONTRIBUTING.md); their sources compile in batches (LUTKIT_UNITY_TESTS,
+# tests/CMakeLists.txt), about half the CPU of one file at a time with an empty ccache. They run directly, not through ctest, two at a time.
 # A data race stops the executable with exit code 66 and the report in BUILD_DIR/logs/<name>.log;
 # a child process (the lutkit a CLI test runs) fails its test the same way.
 # OpenImageIO is not built with ThreadSanitizer, which cannot see its own synchronisation (a
@@ -60,7 +61,7 @@ runs=(
 
 start=$(date +%s)
 # -O1 as in scripts/sanitize.sh: readable traces, tests still bearable under the ~5-15x slowdown.
-cmake -S "$root" -B "$build" -DLUTKIT_SANITIZE_THREAD=ON -DLUTKIT_BUILD_BENCH=OFF \
+cmake -S "$root" -B "$build" -DLUTKIT_SANITIZE_THREAD=ON -DLUTKIT_BUILD_BENCH=OFF -DLUTKIT_UNITY_TESTS=ON \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" >/dev/null
 targets=()
 for r in "${runs[@]}"; do targets+=("${r%%:*}"); done
