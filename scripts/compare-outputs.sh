@@ -67,10 +67,10 @@ undate() {
 }
 
 # The record of a folder of outputs: "SHA256  CASE/FILE", sorted bytewise, the text normalised
-# as normalise() does and the files as undate() does (the same expressions, in one perl run: a
-# process per file took a minute).
+# as normalise() does and the files as undate() does, the clone's own path as ROOT (the same
+# expressions, in one perl run: a process per file took a minute).
 manifest() {
-    (cd "$1" && find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e '
+    (cd "$1" && COMPARE_OUTPUTS_ROOT=$ROOT_DIR find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e '
         my @files = sort map { s|^\./||r } map { chomp; $_ } <STDIN>;
         for my $rel (@files) {
             open(my $fh, "<:raw", $rel) or die "$rel: $!";
@@ -94,6 +94,8 @@ manifest() {
                 $data = join "", @lines;
             } else {
                 $data =~ s/\d{4}:\d\d:\d\d \d\d:\d\d:\d\d/0000:00:00 00:00:00/g;
+                # where the clone sits is not part of the output (a .cube header names its input)
+                $data =~ s/\Q$ENV{COMPARE_OUTPUTS_ROOT}\E/ROOT/g if $ENV{COMPARE_OUTPUTS_ROOT};
             }
             print sha256_hex($data), "  $rel\n";
         }')
