@@ -70,7 +70,7 @@ undate() {
 # as normalise() does and the files as undate() does, the clone's own path as ROOT (the same
 # expressions, in one perl run: a process per file took a minute).
 manifest() {
-    (cd "$1" && COMPARE_OUTPUTS_ROOT=$ROOT_DIR find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e '
+    (cd "$1" && export COMPARE_OUTPUTS_ROOT=$ROOT_DIR && find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e '
         my @files = sort map { s|^\./||r } map { chomp; $_ } <STDIN>;
         for my $rel (@files) {
             open(my $fh, "<:raw", $rel) or die "$rel: $!";
