@@ -138,6 +138,26 @@ inline double jsonNumber(const std::string& text, const std::string& key, std::s
     return k == std::string::npos ? NAN : std::strtod(text.c_str() + k + key.size() + 4, nullptr);
 }
 
+// The number after "max " that follows `key` in printed text (a report line's maximum); NaN if
+// either is absent.
+inline double maxAfter(const std::string& text, const std::string& key) {
+    const auto k = text.find(key);
+    if (k == std::string::npos)
+        return NAN;
+    const auto m = text.find("max ", k);
+    return m == std::string::npos ? NAN : std::strtod(text.c_str() + m + 4, nullptr);
+}
+
+// An 8-bit RGB PNG written by OpenImageIO (a picture the test made, not one lutkit wrote).
+inline void writePng(const std::string& path, int w, int h, const std::vector<unsigned char>& rgb) {
+    auto out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
+    ASSERT_TRUE(out->open(path, spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, rgb.data()));
+    out->close();
+}
+
 // One row of the harness's table (docs/accuracy.md lists them).
 inline void row(const std::string& what, double truth, double printed, double truthMean = NAN) {
     std::printf("[ truth    ] %-58s truth max %8.3f, printed %8.3f 8-bit steps", what.c_str(),

@@ -19,24 +19,6 @@ using namespace lut::truth;
 
 namespace {
 
-void writePng(const std::string& path, int w, int h, const std::vector<unsigned char>& rgb) {
-    auto out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-    ASSERT_TRUE(out->open(path, spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, rgb.data()));
-    out->close();
-}
-
-// The number after `key` (then "max ") in text; NaN if absent.
-double maxAfter(const std::string& text, const std::string& key) {
-    const auto k = text.find(key);
-    if (k == std::string::npos)
-        return NAN;
-    const auto m = text.find("max ", k);
-    return m == std::string::npos ? NAN : std::strtod(text.c_str() + m + 4, nullptr);
-}
-
 // Smooth gradients with noise, like a screenshot's colours (8-bit RGB).
 std::vector<unsigned char> picture(int w, int h, unsigned seed) {
     std::mt19937 rng(seed);

@@ -25,23 +25,6 @@ glm::dvec3 edit(glm::dvec3 x) {
     return t;
 }
 
-void writePng(const std::string& path, int w, int h, const std::vector<unsigned char>& rgb) {
-    auto out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-    ASSERT_TRUE(out->open(path, spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, rgb.data()));
-    out->close();
-}
-
-double printedAfter(const std::string& text, const std::string& line) {
-    const auto l = text.find(line);
-    if (l == std::string::npos)
-        return NAN;
-    const auto m = text.find("max ", l);
-    return m == std::string::npos ? NAN : std::strtod(text.c_str() + m + 4, nullptr);
-}
-
 } // namespace
 
 TEST(Truth, FitPrintedMaximaBoundTheFittedPicture) {
@@ -80,8 +63,8 @@ TEST(Truth, FitPrintedMaximaBoundTheFittedPicture) {
             }
             ocioApply(out, x);
             const Truth t = compare(want, x);
-            const double pixels = printedAfter(r.out, "error over those pixels") / 255.0;
-            const double held = printedAfter(r.out, "held out") / 255.0;
+            const double pixels = maxAfter(r.out, "error over those pixels") / 255.0;
+            const double held = maxAfter(r.out, "held out") / 255.0;
             row("fit " + std::to_string(size) + "^3 " + ext + ": pixels", t.max, pixels);
             row("fit " + std::to_string(size) + "^3 " + ext + ": held out", t.max, held);
             EXPECT_GE(held, t.max) << r.out;

@@ -16,15 +16,6 @@ using namespace lut::truth;
 
 namespace {
 
-// "max X" after `key` in text; NaN if either is absent.
-double maxAfter(const std::string& text, const std::string& key) {
-    const auto k = text.find(key);
-    if (k == std::string::npos)
-        return NAN;
-    const auto m = text.find("max ", k);
-    return m == std::string::npos ? NAN : std::strtod(text.c_str() + m + 4, nullptr);
-}
-
 // What storing the written file cost, as its writer said (0 for a float format).
 double storagePrinted(const std::string& text) {
     for (const char* key : {"quantised to", "-bit integers:"})
