@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -44,6 +45,18 @@ std::string ffmpegPicture(const std::string& dir, const std::string& source) {
                               " -frames:v 1 -pix_fmt rgb24 " + shellQuoted(out));
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return out;
+}
+
+// bench/match_looks.py's channel-mixing look as ffmpeg filters: curves, then a saturation matrix.
+const std::string kMixGrade = "curves=r='0/0.04 0.5/0.56 1/0.97':g='0/0 0.5/0.5 1/1':"
+                              "b='0/0.08 0.5/0.46 1/0.9',colorchannelmixer=rr=1.3:rg=-0.15:"
+                              "rb=-0.15:gr=-0.15:gg=1.3:gb=-0.15:br=-0.15:bg=-0.15:bb=1.3";
+
+// `in` through ffmpeg's filter graph `vf`, written to `out` as 8-bit RGB.
+void ffmpegFilter(const std::string& in, const std::string& vf, const std::string& out) {
+    const auto r = runCommand("ffmpeg -v error -nostdin -y -i " + shellQuoted(in) + " -vf \"" + vf +
+                              "\" -pix_fmt rgb24 -frames:v 1 " + shellQuoted(out));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
 }
 
 lut::test::RunResult looks(const std::string& args) {
@@ -158,23 +171,10 @@ TEST(CliMatchLooks, ALetterboxsBlackSurroundLandsOnItsGradedColour) {
     const std::string d = dirFor("letterbox");
     const std::string src = d + "/letterbox.png", truth = d + "/truth.png",
                       ref = d + "/reference.png";
-    const std::string grade = "curves=r='0/0.04 0.5/0.56 1/0.97':g='0/0 0.5/0.5 1/1':"
-                              "b='0/0.08 0.5/0.46 1/0.9',colorchannelmixer=rr=1.3:rg=-0.15:"
-                              "rb=-0.15:gr=-0.15:gg=1.3:gb=-0.15:br=-0.15:bg=-0.15:bb=1.3";
-    const std::string ff = "ffmpeg -v error -nostdin -y -i ";
-    ASSERT_EQ(runCommand(ff + shellQuoted(samplePath("sample_scene.png")) +
-                         " -vf pad=iw*2:ih*2:iw/2:ih/2:black -pix_fmt rgb24 -frames:v 1 " +
-                         shellQuoted(src))
-                  .exitCode,
-              0);
-    ASSERT_EQ(runCommand(ff + shellQuoted(src) + " -vf \"" + grade +
-                         "\" -pix_fmt rgb24 -frames:v 1 " + shellQuoted(truth))
-                  .exitCode,
-              0);
-    ASSERT_EQ(runCommand(ff + shellQuoted(truth) + " -vf vflip,hflip -pix_fmt rgb24 -frames:v 1 " +
-                         shellQuoted(ref))
-                  .exitCode,
-              0);
+    ASSERT_NO_FATAL_FAILURE(
+        ffmpegFilter(samplePath("sample_scene.png"), "pad=iw*2:ih*2:iw/2:ih/2:black", src));
+    ASSERT_NO_FATAL_FAILURE(ffmpegFilter(src, kMixGrade, truth));
+    ASSERT_NO_FATAL_FAILURE(ffmpegFilter(truth, "vflip,hflip", ref));
     const lut::Image t = lut::formats::readImage(truth).image;
     for (const char* m : {"auto", "hm-mkl-hm"}) {
         SCOPED_TRACE(m);
@@ -207,18 +207,8 @@ TEST(CliMatchLooks, TheSharpSecondMatchIsKeptWhereItIsCloser) {
     const std::string d = dirFor("sharp");
     const std::string src = dataPath("match/fundus.png"), truth = d + "/truth.png",
                       ref = d + "/reference.png", cube = d + "/look.cube", out = d + "/out.png";
-    const std::string grade = "curves=r='0/0.04 0.5/0.56 1/0.97':g='0/0 0.5/0.5 1/1':"
-                              "b='0/0.08 0.5/0.46 1/0.9',colorchannelmixer=rr=1.3:rg=-0.15:"
-                              "rb=-0.15:gr=-0.15:gg=1.3:gb=-0.15:br=-0.15:bg=-0.15:bb=1.3";
-    const std::string ff = "ffmpeg -v error -nostdin -y -i ";
-    ASSERT_EQ(runCommand(ff + shellQuoted(src) + " -vf \"" + grade +
-                         "\" -pix_fmt rgb24 -frames:v 1 " + shellQuoted(truth))
-                  .exitCode,
-              0);
-    ASSERT_EQ(runCommand(ff + shellQuoted(truth) + " -vf vflip,hflip -pix_fmt rgb24 -frames:v 1 " +
-                         shellQuoted(ref))
-                  .exitCode,
-              0);
+    ASSERT_NO_FATAL_FAILURE(ffmpegFilter(src, kMixGrade, truth));
+    ASSERT_NO_FATAL_FAILURE(ffmpegFilter(truth, "vflip,hflip", ref));
     const auto r = runCli("match " + shellQuoted(src) + " " + shellQuoted(ref) + " " +
                           shellQuoted(cube) + " -y --method hm-mkl-hm --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
