@@ -59,6 +59,13 @@ void ffmpegFilter(const std::string& in, const std::string& vf, const std::strin
     ASSERT_EQ(r.exitCode, 0) << r.err;
 }
 
+// `lutkit apply` of `cube` to `src`, written to `out` (the picture a user gets from the LUT).
+void lutkitApply(const std::string& cube, const std::string& src, const std::string& out) {
+    const auto a = runCli("apply -q -y --lut " + shellQuoted(cube) + " " + shellQuoted(src) +
+                          " -o " + shellQuoted(out));
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+}
+
 lut::test::RunResult looks(const std::string& args) {
     return runCommand(
         "/usr/bin/python3 " +
@@ -143,9 +150,7 @@ TEST(CliMatchLooks, FfmpegReadsTheDefaultCubeOfEveryMethod) {
                        " -vf lut3d=file=" + shellQuoted(cube) +
                        ":interp=tetrahedral -pix_fmt rgb24 -frames:v 1 " + shellQuoted(ff));
         ASSERT_EQ(f.exitCode, 0) << f.err;
-        const auto a = runCli("apply -q -y --lut " + shellQuoted(cube) + " " + shellQuoted(src) +
-                              " -o " + shellQuoted(lk));
-        ASSERT_EQ(a.exitCode, 0) << a.err;
+        ASSERT_NO_FATAL_FAILURE(lutkitApply(cube, src, lk));
         const lut::Image x = lut::formats::readImage(ff).image,
                          y = lut::formats::readImage(lk).image;
         ASSERT_EQ(x.width(), y.width());
@@ -182,9 +187,7 @@ TEST(CliMatchLooks, ALetterboxsBlackSurroundLandsOnItsGradedColour) {
         const auto r = runCli("match " + shellQuoted(src) + " " + shellQuoted(ref) + " " +
                               shellQuoted(cube) + " -y --method " + m);
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        const auto a = runCli("apply -q -y --lut " + shellQuoted(cube) + " " + shellQuoted(src) +
-                              " -o " + shellQuoted(out));
-        ASSERT_EQ(a.exitCode, 0) << a.err;
+        ASSERT_NO_FATAL_FAILURE(lutkitApply(cube, src, out));
         const lut::Image g = lut::formats::readImage(out).image;
         ASSERT_EQ(g.width(), t.width());
         for (int c = 0; c < 3; ++c) // the top left pixel: the black bar
@@ -213,9 +216,7 @@ TEST(CliMatchLooks, TheSharpSecondMatchIsKeptWhereItIsCloser) {
                           shellQuoted(cube) + " -y --method hm-mkl-hm --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("\"sharp_second_match\": true")) << r.out;
-    const auto a = runCli("apply -q -y --lut " + shellQuoted(cube) + " " + shellQuoted(src) +
-                          " -o " + shellQuoted(out));
-    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_NO_FATAL_FAILURE(lutkitApply(cube, src, out));
     const lut::Image t = lut::formats::readImage(truth).image,
                      g = lut::formats::readImage(out).image;
     ASSERT_EQ(g.width(), t.width());
