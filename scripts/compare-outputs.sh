@@ -51,53 +51,58 @@ usage() {
     exit 2
 }
 
-# Durations and throughputs in printed text become <t> (also JSON's "seconds" fields).
-normalise() {
-    sed -E -e 's/[0-9]+([.,][0-9]+)?([eE][-+]?[0-9]+)? ?(ns|us|µs|ms|s|sec|seconds|min|[KMG]?i?B\/s|[KMG]?px\/s|frames\/s|fps)\b/<t>/g' \
-        -e 's/"([a-z_]*seconds|[a-z_]*_ms)": \{[^}]*\}/"\1": {<t>}/g' \
-        -e 's/"([a-z_]*seconds|[a-z_]*_ms)": [-+0-9.eE]+/"\1": <t>/g' \
-        -e 's/[0-9.]+ [A-Za-z]+\/s\b/<t>/g' -e 's/ in [0-9]+:[0-9]{2}(:[0-9]{2})?\b/ in <t>/g' \
-        -e 's/^(time +).*/\1<t>/' "$1" |
-        # a batch prints each file's line when it is done, in the order the threads finish
-        if [[ "$1" == */convert-batch/* ]]; then sort; else cat; fi
+# What the comparison sees of an output file (one perl sub, used by --compare and the record):
+# in printed text (stdout, stderr) durations and throughputs become <t> (also JSON's "seconds"
+# fields) and a batch's lines are sorted (each file's line comes when its thread is done); in
+# files the time of writing some formats store (TIFF's DateTime, "2026:12:07 15:41:54") is
+# blanked and the clone's own path is ROOT (a .cube header names its input).
+NORMALISED_PL='
+sub normalised {
+    my ($rel, $data) = @_;
+    if ($rel =~ m{/(stdout|stderr)\.txt$}) {
+        my @lines = split /(?<=\n)/, $data;
+        for (@lines) {
+            s/[0-9]+([.,][0-9]+)?([eE][-+]?[0-9]+)? ?(ns|us|µs|ms|s|sec|seconds|min|[KMG]?i?B\/s|[KMG]?px\/s|frames\/s|fps)\b/<t>/g;
+            s/"([a-z_]*seconds|[a-z_]*_ms)": \{[^}]*\}/"$1": {<t>}/g;
+            s/"([a-z_]*seconds|[a-z_]*_ms)": [-+0-9.eE]+/"$1": <t>/g;
+            s/[0-9.]+ [A-Za-z]+\/s\b/<t>/g;
+            s/ in [0-9]+:[0-9]{2}(:[0-9]{2})?\b/ in <t>/g;
+            s/^(time +).*/$1<t>/;
+        }
+        if ($rel =~ m{(^|/)convert-batch/}) {
+            $_ .= "\n" for grep { !/\n$/ } @lines; # as sort(1) ends every line
+            @lines = sort @lines;
+        }
+        $data = join "", @lines;
+    } else {
+        $data =~ s/\d{4}:\d\d:\d\d \d\d:\d\d:\d\d/0000:00:00 00:00:00/g;
+        # where the clone sits is not part of the output (a .cube header names its input)
+        $data =~ s/\Q$ENV{COMPARE_OUTPUTS_ROOT}\E/ROOT/g if $ENV{COMPARE_OUTPUTS_ROOT};
+    }
+    return $data;
 }
-# The time of writing some image files hold (TIFF's DateTime, "2026:12:07 15:41:54").
-undate() {
-    perl -0777 -pe 's/\d{4}:\d\d:\d\d \d\d:\d\d:\d\d/0000:00:00 00:00:00/g' "$1"
+'
+# normalise REL FILE: FILE (the output REL of some folder) as the comparison sees it.
+normalise() {
+    COMPARE_OUTPUTS_ROOT=$ROOT_DIR perl -e "$NORMALISED_PL"'
+        open(my $fh, "<:raw", $ARGV[1]) or die "$ARGV[1]: $!";
+        local $/;
+        my $data = <$fh> // "";
+        binmode STDOUT;
+        print normalised($ARGV[0], $data);' "$1" "$2"
 }
 
-# The record of a folder of outputs: "SHA256  CASE/FILE", sorted bytewise, the text normalised
-# as normalise() does and the files as undate() does, the clone's own path as ROOT (the same
-# expressions, in one perl run: a process per file took a minute).
+# The record of a folder of outputs: "SHA256  CASE/FILE", sorted bytewise, each file as
+# normalise() sees it (in one perl run: a process per file took a minute).
 manifest() {
-    (cd "$1" && export COMPARE_OUTPUTS_ROOT=$ROOT_DIR && find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e '
+    (cd "$1" && export COMPARE_OUTPUTS_ROOT=$ROOT_DIR && find . -type f -print0 | LC_ALL=C perl -0 -MDigest::SHA=sha256_hex -e "$NORMALISED_PL"'
         my @files = sort map { s|^\./||r } map { chomp; $_ } <STDIN>;
         for my $rel (@files) {
             open(my $fh, "<:raw", $rel) or die "$rel: $!";
             local $/;
             my $data = <$fh> // "";
             close $fh;
-            if ($rel =~ m{/(stdout|stderr)\.txt$}) {
-                my @lines = split /(?<=\n)/, $data;
-                for (@lines) {
-                    s/[0-9]+([.,][0-9]+)?([eE][-+]?[0-9]+)? ?(ns|us|µs|ms|s|sec|seconds|min|[KMG]?i?B\/s|[KMG]?px\/s|frames\/s|fps)\b/<t>/g;
-                    s/"([a-z_]*seconds|[a-z_]*_ms)": \{[^}]*\}/"$1": {<t>}/g;
-                    s/"([a-z_]*seconds|[a-z_]*_ms)": [-+0-9.eE]+/"$1": <t>/g;
-                    s/[0-9.]+ [A-Za-z]+\/s\b/<t>/g;
-                    s/ in [0-9]+:[0-9]{2}(:[0-9]{2})?\b/ in <t>/g;
-                    s/^(time +).*/$1<t>/;
-                }
-                if ($rel =~ m{(^|/)convert-batch/}) {
-                    $_ .= "\n" for grep { !/\n$/ } @lines; # as sort(1) ends every line
-                    @lines = sort @lines;
-                }
-                $data = join "", @lines;
-            } else {
-                $data =~ s/\d{4}:\d\d:\d\d \d\d:\d\d:\d\d/0000:00:00 00:00:00/g;
-                # where the clone sits is not part of the output (a .cube header names its input)
-                $data =~ s/\Q$ENV{COMPARE_OUTPUTS_ROOT}\E/ROOT/g if $ENV{COMPARE_OUTPUTS_ROOT};
-            }
-            print sha256_hex($data), "  $rel\n";
+            print sha256_hex(normalised($rel, $data)), "  $rel\n";
         }')
 }
 
@@ -164,17 +169,17 @@ if [ "${1:-}" = "--compare" ]; then
         fi
         case "$rel" in
         */stdout.txt | */stderr.txt)
-            if cmp -s <(normalise "$fa") <(normalise "$fb"); then
+            if cmp -s <(normalise "$rel" "$fa") <(normalise "$rel" "$fb"); then
                 same=$((same + 1))
             else
                 echo "differs (text, timings aside): $rel"
-                diff <(normalise "$fa") <(normalise "$fb") | head -10
+                diff <(normalise "$rel" "$fa") <(normalise "$rel" "$fb") | head -10
                 status=1
                 differ=$((differ + 1))
             fi
             ;;
         *)
-            if cmp -s "$fa" "$fb" || cmp -s <(undate "$fa") <(undate "$fb"); then
+            if cmp -s "$fa" "$fb" || cmp -s <(normalise "$rel" "$fa") <(normalise "$rel" "$fb"); then
                 same=$((same + 1))
             else
                 echo "differs: $rel ($(cmp "$fa" "$fb" 2>&1 | head -1))"
