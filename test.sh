@@ -28,9 +28,11 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHA
 took
 stage="release"
 echo "== Release build and tests"
-# Tests and benchmarks on (./run.sh builds the same tree without them).
+# Tests and benchmarks on (./run.sh builds the same tree without them). The tests' sources compile
+# in batches (LUTKIT_UNITY_TESTS, tests/CMakeLists.txt): ~470 s less CPU with an empty ccache;
+# LUTKIT_UNITY_TESTS=OFF ./test.sh keeps one file per translation unit (quicker to rebuild one).
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DLUTKIT_WARNINGS_AS_ERRORS=ON \
-  -DLUTKIT_BUILD_TESTS=ON -DLUTKIT_BUILD_BENCH=ON >/dev/null
+  -DLUTKIT_BUILD_TESTS=ON -DLUTKIT_BUILD_BENCH=ON -DLUTKIT_UNITY_TESTS="${LUTKIT_UNITY_TESTS:-ON}" >/dev/null
 cmake --build "$root/build" -j"$jobs"
 (cd "$root/build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs")
 
