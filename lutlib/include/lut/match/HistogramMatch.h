@@ -81,6 +81,12 @@ struct CurveLimits {
     double minSlope = 1.0 / 16.0;
     double maxSlope = 4.0;
     double smoothing = 1.0 / 255.0; // Gaussian sigma, x units (0 = none)
+    // An atom (a source bin holding over 10% of the picture) is moved onto the reference's mean
+    // over its share when its pixels would land further than this from it (x units). Half an
+    // 8-bit step for the first match: a quarter took retina's sharp second match away (bench/
+    // RESULTS.md, issue 42); matchChannels asks a tenth for the match after MKL, whose output is
+    // what the LUT writes (a letterbox's bars otherwise land half a step off, a step rounded).
+    double atomOff = 0.5 / 255.0;
 };
 
 // What the limits changed, for the warnings.
