@@ -106,12 +106,10 @@ double ChannelHistogram::upperQuantile(double p) const {
 namespace {
 
 // A source bin holding more than this share of the picture is an atom (step 0b below) when its
-// pixels land further than kAtomOff (half an 8-bit step of the working encoding) from the
-// reference's mean over their share. Measured (bench/RESULTS.md, issue 42, fourth pass): at 1%
-// the sample scene's flat colours (up to 5.1% of the picture each) moved and the issue-23
-// acceptance went to p99 9 (limit 8); at 5%, or a quarter step, retina lost its sharp second match.
+// pixels land further than CurveLimits::atomOff from the reference's mean over their share.
+// Measured (bench/RESULTS.md, issue 42, fourth pass): at 1% the sample scene's flat colours (up to
+// 5.1% of the picture each) moved and the issue-23 acceptance went to p99 9 (limit 8).
 constexpr double kAtomShare = 0.1;
-constexpr double kAtomOff = 0.5 / 255.0;
 
 // Knot index range [first, last] of the bin edges around the occupied bins.
 bool occupiedEdges(const ChannelHistogram& h, std::size_t& first, std::size_t& last) {
@@ -297,7 +295,7 @@ ChannelCurve matchHistograms(const ChannelHistogram& source, const ChannelHistog
         const double at =
             std::clamp((source.meanIn(first + j) - x0) / h - static_cast<double>(j), 0.0, 1.0);
         if (!std::isfinite(m) ||
-            std::fabs(m - (t[j] + at * (t[j + 1] - t[j]))) < std::max(0.25 * h, kAtomOff))
+            std::fabs(m - (t[j] + at * (t[j + 1] - t[j]))) < std::max(0.25 * h, limits.atomOff))
             continue;
         // The ramp (rise over the bin) stays within the edges' values, so the neighbouring bins
         // keep theirs.

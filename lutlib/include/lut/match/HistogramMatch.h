@@ -11,9 +11,9 @@
 // then (each step keeps it non-decreasing):
 //   0. an atom, a source bin holding over 10% of the picture (a letterbox's black bars, a flat
 //      colour), is moved so its pixels (their mean in the bin) land on the reference's mean over
-//      the atom's share, where the optimal 1D transport sends it, when they would land more than
-//      half an 8-bit step away: between the edges' quantiles they land wherever they sit in the
-//      bin (a letterbox's black halfway between the reference's darkest pixels and its bars);
+//      the atom's share, where the optimal 1D transport sends it, when they would land further
+//      than CurveLimits::atomOff away: between the edges' quantiles they land wherever they sit in
+//      the bin (a letterbox's black halfway between the reference's darkest pixels and its bars);
 //   1. smoothed by a Gaussian of width `smoothing` (x units), the curve continued linearly past
 //      its ends so the ends are not pulled in;
 //   2. every knot slope limited to [minSlope, maxSlope], integrated again and shifted so the
@@ -81,6 +81,12 @@ struct CurveLimits {
     double minSlope = 1.0 / 16.0;
     double maxSlope = 4.0;
     double smoothing = 1.0 / 255.0; // Gaussian sigma, x units (0 = none)
+    // An atom (a source bin holding over 10% of the picture) is moved onto the reference's mean
+    // over its share when its pixels would land further than this from it (x units). Half an
+    // 8-bit step for the first match: a quarter took retina's sharp second match away (bench/
+    // RESULTS.md, issue 42); matchChannels asks a tenth for the match after MKL, whose output is
+    // what the LUT writes (a letterbox's bars otherwise land half a step off, a step rounded).
+    double atomOff = 0.5 / 255.0;
 };
 
 // What the limits changed, for the warnings.
