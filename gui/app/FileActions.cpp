@@ -38,7 +38,7 @@ const char* kRecentImagesKey = "recent/images";
 const char* kRecentLutsKey = "recent/luts";
 
 QString human(const std::exception& e) {
-    return QString::fromStdString(humanErrorText(e.what()));
+    return QString::fromStdString(humanErrorText(e));
 }
 
 } // namespace
@@ -89,9 +89,8 @@ FileActions::FileActions(const EditorContext& context, QObject* parent)
             [this](const QString& path, const QString& message, bool isLut) {
                 m_lastDone = path;
                 m_lastOk = false;
-                m_prompts->reportError(
-                    isLut ? tr("Cannot open LUT") : tr("Cannot open image"),
-                    QString::fromStdString(humanErrorText(message.toStdString())));
+                m_prompts->reportError(isLut ? tr("Cannot open LUT") : tr("Cannot open image"),
+                                       message);
             });
     connect(m_loader, &FileLoader::busyChanged, this,
             [this](bool busy) { m_prompts->setLoading(busy); });
@@ -368,8 +367,7 @@ bool FileActions::startSavePreview(const QString& path) {
             });
         },
         [this](const QString& message) {
-            m_prompts->reportError(tr("Cannot save the preview"),
-                                   QString::fromStdString(humanErrorText(message.toStdString())));
+            m_prompts->reportError(tr("Cannot save the preview"), message);
         });
     return true;
 }

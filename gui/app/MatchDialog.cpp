@@ -109,8 +109,7 @@ MatchDialog::MatchDialog(QWidget* parent, const EditorContext& context,
     connect(m_baker, &MatchBaker::failed, this, [this](const QString& message) {
         m_acceptWanted = false;
         m_ok->setEnabled(true);
-        m_prompts->reportError(tr("Cannot match"),
-                               QString::fromStdString(humanErrorText(message.toStdString())));
+        m_prompts->reportError(tr("Cannot match"), message);
     });
     apply();
 }
@@ -173,8 +172,7 @@ void MatchDialog::commit(const Lut3D& table) {
         m_preview->setInteractive(false);
         QDialog::accept();
     } catch (const std::exception& e) {
-        m_prompts->reportError(tr("Cannot match"),
-                               QString::fromStdString(humanErrorText(e.what())));
+        m_prompts->reportError(tr("Cannot match"), QString::fromStdString(humanErrorText(e)));
     }
 }
 

@@ -324,10 +324,7 @@ void WindowActions::startMatch(const QString& path) {
                 dlg->open(); // window-modal; returns at once
             };
         },
-        [this](const QString& message) {
-            m_prompts->reportError(tr("Cannot match"),
-                                   QString::fromStdString(humanErrorText(message.toStdString())));
-        });
+        [this](const QString& message) { m_prompts->reportError(tr("Cannot match"), message); });
 }
 
 void WindowActions::showPlot() {
@@ -336,7 +333,7 @@ void WindowActions::showPlot() {
         dlg.exec();
     } catch (const std::exception& e) {
         m_prompts->reportError(tr("Cannot plot the LUT"),
-                               QString::fromStdString(humanErrorText(e.what())));
+                               QString::fromStdString(humanErrorText(e)));
     }
 }
 
@@ -371,8 +368,7 @@ void WindowActions::startCompare(const QString& path) {
             };
         },
         [this](const QString& message) {
-            m_prompts->reportError(tr("Cannot compare the LUTs"),
-                                   QString::fromStdString(humanErrorText(message.toStdString())));
+            m_prompts->reportError(tr("Cannot compare the LUTs"), message);
         });
 }
 

@@ -6,8 +6,8 @@
 #include "lut/formats/Registry.h"
 
 #include <QFileInfo>
-#include <QTemporaryDir>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,53 +15,41 @@ namespace lut::gui {
 
 AtlasExportResult exportAtlasRow(const Lut3D& table, LutPurpose purpose, const QString& path,
                                  LutLayout layout) {
-    formats::registerBuiltinFormats();
-    QTemporaryDir dir;
-    if (!dir.isValid())
-        throw Error("cannot make a temporary folder for the atlas's rows");
-    auto writeRow = [&dir](const Lut3D& lut, std::optional<LutPurpose> p, int k) {
-        LutFile f;
-        f.cube = lut;
-        f.purpose = p;
-        const std::string file = dir.filePath(QStringLiteral("row%1.cube").arg(k)).toStdString();
-        formats::writeLut(file, f, {}, "cube");
-        return file;
-    };
     const std::string out = path.toStdString();
-    std::vector<std::string> inputs;
+    // The rows in memory, each named in messages as what it is: the atlas's file for the rows it
+    // holds, "the export" for the new one.
+    std::vector<formats::AtlasInput> rows;
+    auto addRow = [&rows](const Lut3D& lut, std::optional<LutPurpose> p, std::string name) {
+        formats::AtlasInput row;
+        row.lut.cube = lut;
+        row.lut.purpose = p;
+        row.name = std::move(name);
+        rows.push_back(std::move(row));
+    };
     formats::AtlasBuildOptions o;
     o.layout = layout;
-    const bool exists = QFileInfo::exists(path);
-    if (exists) {
-        // The rows it holds, as they are stored (8-bit values: they round-trip exactly), then
-        // the new one; the atlas's N and layout stay.
+    if (QFileInfo::exists(path)) {
+        // The rows it holds, as they are stored (8-bit values), then the new one; the atlas's N
+        // and layout stay.
         const formats::AtlasReading a = formats::readAtlas(out, layout);
         o.size = a.shape.size;
-        formats::forEachAtlasRow(out, a, [&](int k, const Lut3D& row) {
-            inputs.push_back(writeRow(row, LutPurpose::Raw, k));
-        });
+        formats::forEachAtlasRow(out, a,
+                                 [&](int, const Lut3D& row) { addRow(row, LutPurpose::Raw, out); });
     } else {
         o.neutralFirst = true;
     }
-    inputs.push_back(writeRow(table, purpose, static_cast<int>(inputs.size())));
+    addRow(table, purpose, "the export");
     formats::AtlasBuildReport report;
     try {
-        report = formats::buildAtlas(inputs, out, o);
+        report = formats::buildAtlas(rows, out, o);
     } catch (const Error& e) {
-        // The rows' temporary files named as what they are: the export, or the atlas's rows.
-        std::string m = e.what();
-        for (std::size_t k = 0; k < inputs.size(); ++k) {
-            const std::string by = k + 1 == inputs.size() ? "the export" : out;
-            for (std::size_t at; (at = m.find(inputs[k])) != std::string::npos;)
-                m.replace(at, inputs[k].size(), by);
-        }
-        throw Error(out + ": " + m);
+        throw Error(out + ": " + e.what());
     }
     AtlasExportResult r;
     r.rows = report.shape.rows;
     r.row = r.rows - 1;
     r.size = report.shape.size;
-    // What the library said of the new row, its temporary file named as the export.
+    // What the library said of the new row, said of the export's file.
     const formats::AtlasRowReport& last = report.rows.back();
     for (Diagnostic d : last.diagnostics) {
         d.path = out;

@@ -9,7 +9,8 @@
 //     the LUT as row 1;
 //   - `path` is an atlas: its rows are kept and the LUT is added as the last row (nothing the
 //     file held is lost; a file that is no atlas is refused, never replaced).
-// The rows pass through a private temporary folder as .cube files (lutkit atlas build's inputs).
+// The rows are handed to the library in memory (no temporary file), named in its messages as
+// what they are: the atlas's file for the rows it held, "the export" for the new one.
 #include "lut/Error.h"
 #include "lut/Lut3D.h"
 #include "lut/LutPurpose.h"

@@ -2,6 +2,7 @@
 #include "BackgroundTask.h"
 
 #include "CpuState.h"
+#include "ErrorText.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -47,7 +48,7 @@ void BackgroundTask::start(const QString& label, Work work, Failure failed) {
             outcome = Outcome::Cancelled;
         } catch (const std::exception& e) {
             outcome = Outcome::Failed;
-            error = QString::fromUtf8(e.what());
+            error = QString::fromStdString(humanErrorText(e));
         } catch (...) {
             outcome = Outcome::Failed;
             error = tr("unknown error");

@@ -28,6 +28,7 @@ class BackgroundTask : public QObject {
 public:
     using Delivery = std::function<void()>;
     using Work = std::function<Delivery(const Progress&)>;
+    // The work's error in words for people (humanErrorText, ErrorText.h).
     using Failure = std::function<void(const QString& message)>;
 
     explicit BackgroundTask(QObject* parent = nullptr);

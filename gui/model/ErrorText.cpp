@@ -3,8 +3,6 @@
 
 #include "lut/Limits.h"
 
-#include <utility>
-
 namespace lut::gui {
 
 namespace {
@@ -21,31 +19,27 @@ std::string withCommas(unsigned long long v) {
 
 } // namespace
 
-std::string humanErrorText(std::string message) {
+std::string limitMeaning(LimitId limit) {
     using namespace lut::limits;
-    const std::pair<std::string, std::string> names[] = {
-        {"kMax3DSize",
-         "the largest 3D LUT lutkit reads has " + std::to_string(kMax3DSize) + " points per axis"},
-        {"kMin3DSize",
-         "a 3D LUT needs at least " + std::to_string(kMin3DSize) + " points per axis"},
-        {"kMax1DSize",
-         "the longest 1D LUT lutkit reads has " + withCommas(kMax1DSize) + " entries"},
-        {"kMin1DSize", "a 1D LUT needs at least " + std::to_string(kMin1DSize) + " entries"},
-        {"kMaxTextLineBytes",
-         "the longest line lutkit reads is " + withCommas(kMaxTextLineBytes) + " bytes"},
-        {"kMaxImagePixels",
-         "the largest picture lutkit reads has " + withCommas(kMaxImagePixels) + " pixels"},
-        {"kMaxLutFileBytes", "the largest LUT file lutkit reads is " +
-                                 withCommas(kMaxLutFileBytes / (1u << 20)) + " MB"},
-    };
-    for (const auto& [name, meaning] : names) {
-        for (const std::string& form :
-             {"lut::limits::" + name, "limits::" + name, std::string(name)}) {
-            for (std::size_t at; (at = message.find(form)) != std::string::npos;)
-                message.replace(at, form.size(), meaning);
-        }
+    switch (limit) {
+    case LimitId::Max3DSize:
+        return "the largest 3D LUT lutkit reads has " + std::to_string(kMax3DSize) +
+               " points per axis";
+    case LimitId::Max1DSize:
+        return "the longest 1D LUT lutkit reads has " + withCommas(kMax1DSize) + " entries";
+    case LimitId::MaxTextLineBytes:
+        return "the longest line lutkit reads is " + withCommas(kMaxTextLineBytes) + " bytes";
+    case LimitId::MaxLutFileBytes:
+        return "the largest LUT file lutkit reads is " + withCommas(kMaxLutFileBytes / (1u << 20)) +
+               " MB";
     }
-    return message;
+    return limitName(limit);
+}
+
+std::string humanErrorText(const std::exception& e) {
+    if (const auto* limit = dynamic_cast<const LimitExceeded*>(&e))
+        return limit->whatWith(limitMeaning(limit->limit()));
+    return e.what();
 }
 
 } // namespace lut::gui

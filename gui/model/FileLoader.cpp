@@ -2,6 +2,7 @@
 #include "FileLoader.h"
 
 #include "CpuState.h"
+#include "ErrorText.h"
 
 #include "lut/formats/Registry.h"
 
@@ -62,7 +63,7 @@ void FileLoader::start(std::shared_ptr<Read>& slot, bool isLut, const QString& p
         } catch (const CancelledError&) {
             cancelled = true;
         } catch (const std::exception& e) {
-            error = QString::fromUtf8(e.what());
+            error = QString::fromStdString(humanErrorText(e));
         } catch (...) {
             error = tr("unknown error");
         }

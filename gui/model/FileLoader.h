@@ -44,6 +44,7 @@ public:
 signals:
     void imageLoaded(const QString& path, std::shared_ptr<lut::formats::LoadedImage> image);
     void lutLoaded(const QString& path, std::shared_ptr<lut::LutFile> file);
+    // The read's error in words for people (humanErrorText, ErrorText.h).
     void failed(const QString& path, const QString& message, bool isLut);
     void busyChanged(bool busy);
     void progressChanged(double fraction);

@@ -2,6 +2,7 @@
 #include "MatchBaker.h"
 
 #include "CpuState.h"
+#include "ErrorText.h"
 #include "MatchSession.h"
 
 #include <QCoreApplication>
@@ -52,7 +53,7 @@ void MatchBaker::launch(const MatchOptions& options, std::uint64_t generation) {
             table =
                 std::make_shared<const Lut3D>(MatchSession::bakeTable(*transfer, options, title));
         } catch (const std::exception& e) {
-            error = QString::fromUtf8(e.what());
+            error = QString::fromStdString(humanErrorText(e));
         }
         QMetaObject::invokeMethod(
             this, [this, table, error, generation] { delivered(table, error, generation); },

@@ -48,7 +48,8 @@ public:
 signals:
     // A table baked: `exact` when its options are the latest requested.
     void baked(std::shared_ptr<const lut::Lut3D> table, bool exact);
-    // The latest request cannot be baked (lut::Error's text: a bad amount).
+    // The latest request cannot be baked (lut::Error's text in words for people, humanErrorText:
+    // a bad amount).
     void failed(const QString& message);
 
 private:

@@ -96,11 +96,36 @@ private slots:
         try {
             doc.openLut(f.fileName());
         } catch (const std::exception& e) {
-            message = QString::fromStdString(humanErrorText(e.what()));
+            message = QString::fromStdString(humanErrorText(e));
         }
         QVERIFY2(message.contains(QStringLiteral("256 points per axis")), qPrintable(message));
         QVERIFY2(!message.contains(QStringLiteral("lut::")) && !message.contains("kMax"),
                  qPrintable(message));
+        // The rest of the message is the library's, word for word: only the limit's name changed.
+        QCOMPARE(message, f.fileName() + QStringLiteral(":1:13: LUT_3D_SIZE 300 is over the limit "
+                                                        "of 256 (the largest 3D LUT lutkit reads "
+                                                        "has 256 points per axis) (found '300')"));
+    }
+
+    void errorTextsAreToldByTypeNotByText() {
+        // An error that merely mentions a limit's name (a file called so, a quoted line) is
+        // shown as it is; the limit's words come from the error's type and limit alone.
+        const Error plain("kMax3DSize.cube: lut::limits::kMax1DSize is not a LUT");
+        QCOMPARE(humanErrorText(plain), std::string(plain.what()));
+        const LineLimitError line("x.cube", 2, 65537, LimitId::MaxTextLineBytes,
+                                  "line is longer than the limit of 65536 bytes (", ")", "abc");
+        QCOMPARE(std::string(line.what()),
+                 std::string("x.cube:2:65537: line is longer than the limit of 65536 bytes "
+                             "(lut::limits::kMaxTextLineBytes) (found 'abc')"));
+        QCOMPARE(humanErrorText(line),
+                 std::string("x.cube:2:65537: line is longer than the limit of 65536 bytes (the "
+                             "longest line lutkit reads is 65,536 bytes) (found 'abc')"));
+        const FileLimitError file(LimitId::MaxLutFileBytes, "big.cube: file is 9 bytes (", ")");
+        QCOMPARE(std::string(file.what()),
+                 std::string("big.cube: file is 9 bytes (lut::limits::kMaxLutFileBytes)"));
+        QCOMPARE(humanErrorText(file),
+                 std::string("big.cube: file is 9 bytes (the largest LUT file lutkit reads is "
+                             "2,048 MB)"));
     }
 
     void stripNotesAreKeptAndTheLayoutCanBeChosen() {

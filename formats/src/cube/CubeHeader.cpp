@@ -38,7 +38,7 @@ void CubeParser::readNumbers(const TextLine& line, const Tokens& t, const char* 
 }
 
 int CubeParser::readSize(const TextLine& line, const Tokens& t, const char* keyword, int min,
-                         int max, const char* maxName, const char* lineEnd) {
+                         int max, LimitId maxId, const char* lineEnd) {
     if (t.count == 0)
         fail(line, columnOf(line, t.contentEnd) + 1,
              std::string("expected a size after ") + keyword, content(line.text.data(), lineEnd));
@@ -64,10 +64,10 @@ int CubeParser::readSize(const TextLine& line, const Tokens& t, const char* keyw
              std::string(tok.text));
     }
     if (r.ec == std::errc::result_out_of_range || v > max)
-        fail(line, tok.column,
-             std::string(keyword) + " " + std::string(tok.text) + " is over the limit of " +
-                 std::to_string(max) + " (lut::limits::" + maxName + ")",
-             std::string(tok.text));
+        throw LineLimitError(path(), line.number, tok.column, maxId,
+                             std::string(keyword) + " " + std::string(tok.text) +
+                                 " is over the limit of " + std::to_string(max) + " (",
+                             ")", std::string(tok.text));
     if (v < min)
         fail(line, tok.column,
              std::string(keyword) + " " + std::string(tok.text) + " is below the minimum of " +
@@ -145,12 +145,12 @@ void CubeParser::keyword(const TextLine& line, const char* s, const char* e) {
         break;
     }
     case Key::Size1D:
-        m_size1D =
-            readSize(line, t, name, limits::kMin1DSize, limits::kMax1DSize, "kMax1DSize", lineEnd);
+        m_size1D = readSize(line, t, name, limits::kMin1DSize, limits::kMax1DSize,
+                            LimitId::Max1DSize, lineEnd);
         break;
     case Key::Size3D:
-        m_size3D =
-            readSize(line, t, name, limits::kMin3DSize, limits::kMax3DSize, "kMax3DSize", lineEnd);
+        m_size3D = readSize(line, t, name, limits::kMin3DSize, limits::kMax3DSize,
+                            LimitId::Max3DSize, lineEnd);
         break;
     case Key::Range1D:
     case Key::Range3D: {

@@ -48,6 +48,7 @@
 #include "cube/TextLineReader.h"
 
 #include "lut/Error.h"
+#include "lut/LimitError.h"
 #include "lut/LutFile.h"
 #include "lut/formats/Cube.h"
 #include "lut/io/InputFile.h"
@@ -163,7 +164,7 @@ private:
     void readNumbers(const TextLine& line, const Tokens& t, const char* keyword, int count,
                      float* out, const char* lineEnd);
     int readSize(const TextLine& line, const Tokens& t, const char* keyword, int min, int max,
-                 const char* maxName, const char* lineEnd);
+                 LimitId maxId, const char* lineEnd);
     void finishHeader(const TextLine* firstData, const char* s);
     void checkDomains();
     std::string rowsExpected() const;

@@ -3,6 +3,7 @@
 // accepted and refused).
 #include "cube/CubeParser.h"
 
+#include "lut/LimitError.h"
 #include "lut/Limits.h"
 #include "lut/io/InputFile.h"
 #include "lut/os/Files.h"
@@ -17,7 +18,7 @@ namespace cube {
 
 FileBytes readCubeFile(const std::string& path) {
     return readFileBytes(path, static_cast<std::size_t>(limits::kMaxLutFileBytes),
-                         "lut::limits::kMaxLutFileBytes");
+                         LimitId::MaxLutFileBytes);
 }
 
 void checkCubeFileHeader(const std::string& path, const CubeReadOptions& options) {

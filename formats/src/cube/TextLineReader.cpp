@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cube/TextLineReader.h"
 
+#include "lut/LimitError.h"
+
 #include <algorithm>
 #include <climits>
 #include <cstring>
@@ -64,12 +66,13 @@ bool TextLineReader::next(TextLine& line) {
         }
     }
     if (length > m_maxLineBytes) {
-        std::string message = "line is longer than the limit of " + std::to_string(m_maxLineBytes) +
-                              " bytes (lut::limits::kMaxTextLineBytes)";
+        std::string after = ")";
         if (m_terminator == '\n' && std::memchr(begin, '\r', window))
-            message += "; its line ends may be a lone CR (classic Mac OS)";
-        fail(m_line, static_cast<int>(m_maxLineBytes) + 1, message,
-             std::string(begin, std::min<std::size_t>(length, 61)));
+            after += "; its line ends may be a lone CR (classic Mac OS)";
+        throw LineLimitError(
+            m_path, m_line, static_cast<int>(m_maxLineBytes) + 1, LimitId::MaxTextLineBytes,
+            "line is longer than the limit of " + std::to_string(m_maxLineBytes) + " bytes (",
+            after, std::string(begin, std::min<std::size_t>(length, 61)));
     }
     line.text = std::string_view(begin, length);
     line.number = m_line;

@@ -59,17 +59,11 @@ LutLayout defaultRowLayout(int n) {
     return n == layoutFixedSize(LutLayout::Reshade) ? LutLayout::Reshade : LutLayout::Pilot;
 }
 
-} // namespace
-
-AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::string& output,
-                            const AtlasBuildOptions& options) {
-    if (inputs.empty())
-        throw Error("an atlas needs at least one LUT");
-    if (options.layout == LutLayout::Hald)
-        (void)atlasShape(1024, 32, options.layout); // the same refusal as every atlas
-    checkNotOverwritingInputs(output, inputs);
-    registerBuiltinFormats();
-
+// buildAtlas over LUTs named `inputs` (files, or what stands for them), the k-th read by read(k)
+// when its turn comes: a bad file is reported after the rows before it were checked.
+AtlasBuildReport buildRows(const std::vector<std::string>& inputs,
+                           const std::function<LutFile(std::size_t k)>& read,
+                           const std::string& output, const AtlasBuildOptions& options) {
     // Every row as a table over 0..1 at its own size, then at the atlas's N.
     struct Row {
         Lut3D lut;
@@ -82,7 +76,7 @@ AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::s
         Row r;
         r.report.source = path;
         const int k = first + static_cast<int>(rows.size());
-        const LutFile file = readLut(path, options.read);
+        const LutFile file = read(rows.size());
         r.report.diagnostics = file.diagnostics;
         // An atlas row is applied by an engine to its picture as it is: the game's LUT (made
         // for Smash Ultimate's brighten pass) would show brighter than its edit there.
@@ -145,6 +139,35 @@ AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::s
     writeImage(output, picture, wo);
     report.shape = {options.layout, n, static_cast<int>(tables.size())};
     return report;
+}
+
+void checkAtlasRequest(std::size_t count, const AtlasBuildOptions& options) {
+    if (count == 0)
+        throw Error("an atlas needs at least one LUT");
+    if (options.layout == LutLayout::Hald)
+        (void)atlasShape(1024, 32, options.layout); // the same refusal as every atlas
+}
+
+} // namespace
+
+AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::string& output,
+                            const AtlasBuildOptions& options) {
+    checkAtlasRequest(inputs.size(), options);
+    checkNotOverwritingInputs(output, inputs);
+    registerBuiltinFormats();
+    return buildRows(
+        inputs, [&](std::size_t k) { return readLut(inputs[k], options.read); }, output, options);
+}
+
+AtlasBuildReport buildAtlas(const std::vector<AtlasInput>& luts, const std::string& output,
+                            const AtlasBuildOptions& options) {
+    checkAtlasRequest(luts.size(), options);
+    registerBuiltinFormats();
+    std::vector<std::string> names;
+    for (const AtlasInput& in : luts)
+        names.push_back(in.name);
+    return buildRows(
+        names, [&](std::size_t k) { return luts[k].lut; }, output, options);
 }
 
 namespace {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "lut/io/InputFile.h"
 
+#include "lut/LimitError.h"
+
 #include "lut/os/Files.h"
 #include "lut/os/Memory.h"
 
@@ -90,7 +92,9 @@ FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
     return *this;
 }
 
-FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const char* limitName) {
+// readFileBytes with `tooLarge(size)` throwing for a file over maxBytes.
+template <class Refuse>
+FileBytes readWholeFile(const std::string& path, std::size_t maxBytes, const Refuse& tooLarge) {
     checkRegularInput(path);
     // Opened without waiting for a writer: a path swapped for a FIFO in between cannot block.
     const Fd fd(os::openFile(path, os::OpenFor::Read));
@@ -103,9 +107,7 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
         refuse(path, before.type);
     const std::uint64_t size = before.size;
     if (size > maxBytes)
-        throw LimitError(path + ": file is " + std::to_string(size) + " bytes, over the limit of " +
-                         std::to_string(maxBytes) + " bytes" +
-                         (limitName ? std::string(" (") + limitName + ")" : std::string()));
+        tooLarge(size);
 
     // One byte more than the size, so a file that grows while it is read is noticed.
     FileBytes out;
@@ -143,6 +145,28 @@ FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const cha
                                                : std::string("written to by another program)")));
     out.m_size = done;
     return out;
+}
+
+namespace {
+
+std::string sizeRefusal(const std::string& path, std::uint64_t size, std::size_t maxBytes) {
+    return path + ": file is " + std::to_string(size) + " bytes, over the limit of " +
+           std::to_string(maxBytes) + " bytes";
+}
+
+} // namespace
+
+FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, const char* limitName) {
+    return readWholeFile(path, maxBytes, [&](std::uint64_t size) {
+        throw LimitError(sizeRefusal(path, size, maxBytes) +
+                         (limitName ? std::string(" (") + limitName + ")" : std::string()));
+    });
+}
+
+FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, LimitId limit) {
+    return readWholeFile(path, maxBytes, [&](std::uint64_t size) {
+        throw FileLimitError(limit, sizeRefusal(path, size, maxBytes) + " (", ")");
+    });
 }
 
 std::string readFile(const std::string& path, std::size_t maxBytes, const char* limitName) {

@@ -134,6 +134,13 @@ DiffReport runDiff(std::size_t count, int nthreads, const Progress* progress, co
     return r;
 }
 
+// The input at entry i of a lattice (the storage order of lut/Lut3D.h: red fastest).
+glm::vec3 latticeInputAt(const Lut3D& lattice, std::size_t i) {
+    const std::size_t n = static_cast<std::size_t>(lattice.size());
+    return lattice.latticeInput(static_cast<int>(i % n), static_cast<int>((i / n) % n),
+                                static_cast<int>(i / (n * n)));
+}
+
 struct Prepared {
     Lut3D a, b;
     std::size_t replacedA = 0, replacedB = 0;
@@ -184,10 +191,7 @@ DiffReport diffLuts(const Lut3D& a, const Lut3D& b, const DiffOptions& options) 
         DiffReport r =
             finish(runDiff(count, options.nthreads, options.progress,
                            [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
-                               const int n = size, r = static_cast<int>(i % n),
-                                         g = static_cast<int>((i / n) % n),
-                                         bl = static_cast<int>(i / (n * n));
-                               in = a.latticeInput(r, g, bl);
+                               in = latticeInputAt(a, i);
                                va = p.a.entries()[i];
                                vb = p.b.entries()[i];
                            }),
@@ -202,10 +206,7 @@ DiffReport diffLuts(const Lut3D& a, const Lut3D& b, const DiffOptions& options) 
     DiffReport report =
         finish(runDiff(count, options.nthreads, options.progress,
                        [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
-                           const int n = size, r = static_cast<int>(i % n),
-                                     g = static_cast<int>((i / n) % n),
-                                     bl = static_cast<int>(i / (n * n));
-                           in = grid.latticeInput(r, g, bl);
+                           in = latticeInputAt(grid, i);
                            va = sa->sample(in);
                            vb = sb->sample(in);
                        }),
@@ -278,10 +279,7 @@ DiffReport diffMaps(const ColourMap& a, const ColourMap& b, const DiffOptions& o
     const Lut3D lattice(size); // validates the size; its entries are unused
     DiffReport r = runDiff(lattice.entryCount(), options.nthreads, options.progress,
                            [&](std::size_t i, glm::vec3& in, glm::vec3& va, glm::vec3& vb) {
-                               const int n = size, rr = static_cast<int>(i % n),
-                                         g = static_cast<int>((i / n) % n),
-                                         bl = static_cast<int>(i / (n * n));
-                               in = lattice.latticeInput(rr, g, bl);
+                               in = latticeInputAt(lattice, i);
                                va = a(in);
                                vb = b(in);
                            });

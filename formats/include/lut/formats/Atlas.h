@@ -7,6 +7,7 @@
 #include "lut/Error.h"
 #include "lut/ErrorStats.h"
 #include "lut/Lut3D.h"
+#include "lut/LutFile.h"
 #include "lut/interp/Interpolation.h"
 #include "lut/io/Atlas.h"
 #include "lut/io/FormatOptions.h"
@@ -49,6 +50,17 @@ struct AtlasBuildReport {
 // Throws lut::Error naming the row and file for a LUT of another size, an unreadable input, an
 // output that is one of the inputs.
 AtlasBuildReport buildAtlas(const std::vector<std::string>& inputs, const std::string& output,
+                            const AtlasBuildOptions& options);
+
+// One LUT of an atlas given in memory, and what stands for it in messages and the report (the
+// editor: "the export" for its LUT, the atlas's file for the rows it already holds).
+struct AtlasInput {
+    LutFile lut;
+    std::string name;
+};
+
+// The same from LUTs in memory: no file is read, nothing is refused as an input it overwrites.
+AtlasBuildReport buildAtlas(const std::vector<AtlasInput>& luts, const std::string& output,
                             const AtlasBuildOptions& options);
 
 struct AtlasReading {

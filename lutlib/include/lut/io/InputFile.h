@@ -20,6 +20,8 @@
 
 namespace lut {
 
+enum class LimitId; // lut/LimitError.h
+
 // Throws lut::Error unless path names a regular file (symbolic links followed), without opening
 // it: "PATH: is a FIFO, not a regular file" (or a socket, a directory, a character device, a
 // block device), or "PATH: cannot open: <reason>" when it cannot be looked at.
@@ -41,7 +43,8 @@ public:
     std::size_t size() const { return m_size; }
 
 private:
-    friend FileBytes readFileBytes(const std::string&, std::size_t, const char*);
+    template <class Refuse>
+    friend FileBytes readWholeFile(const std::string&, std::size_t, const Refuse&);
     char* m_data = nullptr;
     std::size_t m_size = 0;
     std::size_t m_capacity = 0; // bytes allocated (mapped when m_mapped)
@@ -56,6 +59,9 @@ private:
 // bytes now)". A failed allocation is outOfMemory() naming the file's size.
 FileBytes readFileBytes(const std::string& path, std::size_t maxBytes,
                         const char* limitName = nullptr);
+// The same past a limit of lut/Limits.h: a FileLimitError naming it (lut/LimitError.h), so a
+// front end can tell which limit without reading the message (the text is the same).
+FileBytes readFileBytes(const std::string& path, std::size_t maxBytes, LimitId limit);
 // The same as a std::string (for small files and callers that keep the bytes).
 std::string readFile(const std::string& path, std::size_t maxBytes,
                      const char* limitName = nullptr);
