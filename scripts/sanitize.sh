@@ -24,48 +24,49 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:${UBSAN_OPTIONS:-}"
 if [ -f "$root/scripts/lsan.supp" ]; then
   export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:${LSAN_OPTIONS:-}"
 fi
-# OpenColorIO's test files (Files/OcioAllFiles, one case per file, ~226) run in one process per
-# half instead of one process per case: under ASan each case costs ~1.4 s in a running process and
-# ~3.6 s as its own process (the libraries' start-up and OpenColorIO's first use), ~800 s of the
-# stage's ~2,700 s CPU.
-grouped='^Files/OcioAllFiles\.'
+# Each test executable runs whole, split in one shard per core (GTEST_TOTAL_SHARDS), instead of one
+# process per case as ctest runs them: under ASan a process costs its start-up (the libraries,
+# OpenColorIO's first use) and the leak check at exit, ~1-2 s a case and most of the stage when
+# each of ~1,000 cases paid it (an OpenColorIO file's case: ~3.6 s alone, ~1.4 s in a running
+# process). The Release stage still runs every case in its own process, so a case that leans on
+# another's state fails there. ctest runs what is not a GoogleTest case (no '.' in its name: the
+# API samples, the output record, the install and desktop checks).
 # Left to the Release stage: the accuracy studies, which run the code of smaller tests that stay
 # here on more data (which patch is the most accurate, every edit file and target's printed bound,
 # every neutral size, the 256^3 LUT maths): ~330 s of CPU here, nothing ASan could add.
-studies='^Defaults\.|^EveryEditFileAndTarget/|^SmashTarget\.DefaultPatchIsTheMostAccurate$'
-studies+='|^CheckDefects\.NeutralOfEverySizeHasNoFinding$|^LargeLuts\.Size256$'
-# Peak memory (MemoryBounds: resident sizes under ASan's shadow and quarantine say nothing of the
-# program's own), match against numpy on 1080p pictures (CliMatchLooks, a benchmark's script) and
-# ociobakelut's sizes baked at 64^3 in ten formats (BakeDefaults.LatticeSizes...): the Release
-# stage runs them; the code they reach runs here in smaller tests.
-studies+='|^MemoryBounds\.|^CliMatchLooks\.|^BakeDefaults\.LatticeSizesAreOciobakelutsPerFormat$'
-# Fit's maxima over every pixel of a full screenshot and its same-LUT-whatever-the-threads check
-# (TSan runs Fit.*), and both authoring routes on a real stage (~140 s of CPU here): the code they
-# reach runs here in Fit's and AboveWhite's smaller tests.
-studies+='|^Fit\.(PrintedMaximaBoundEveryPixelOfTheFittedPicture|TheSamePicturesGiveTheSameLutWhateverTheThreads)$|^AboveWhite\.BothRoutesShowTheEditOfTheScreenshotOnAStage$'
-# The write matrix (tests/robust/write_matrix.py: ~2,000 outside reads, 4 min of the Release
-# stage's test time) runs whole in the Release stage; here two of its groups, the TIFF writer and
-# every compression, which cover the writers' own code paths under ASan and UBSan.
-studies+='|^Groups/WriteMatrix\.EveryOutputReadBackByOtherPrograms/(apply_(png|jpg|exr|bmp|tga|hdr|webp|dpx|gif|ppm)|structure|stdout|preview|embed)( |$)'
-(cd "$build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs" \
-  -E "$grouped|$studies")
-mkdir -p "$build/logs"
-pids=()
-for ((s = 0; s < jobs; s++)); do
-  (cd "$build/bin" && GTEST_TOTAL_SHARDS="$jobs" GTEST_SHARD_INDEX="$s" \
-    ./formats_tests --gtest_filter='Files/OcioAllFiles.*' >"$build/logs/ocio-all-files-$s.log" 2>&1) &
-  pids+=($!)
+studies='Defaults.*:EveryEditFileAndTarget/*:SmashTarget.DefaultPatchIsTheMostAccurate'
+studies+=':CheckDefects.NeutralOfEverySizeHasNoFinding:LargeLuts.Size256'
+studies+=':MemoryBounds.*:CliMatchLooks.*:BakeDefaults.LatticeSizesAreOciobakelutsPerFormat'
+studies+=':Fit.PrintedMaximaBoundEveryPixelOfTheFittedPicture:Fit.TheSamePicturesGiveTheSameLutWhateverTheThreads'
+studies+=':AboveWhite.BothRoutesShowTheEditOfTheScreenshotOnAStage'
+for w in apply_png apply_jpg apply_exr apply_bmp apply_tga apply_hdr apply_webp apply_dpx apply_gif \
+  apply_ppm structure stdout preview embed; do
+  studies+=":Groups/WriteMatrix.EveryOutputReadBackByOtherPrograms/$w"
 done
+(cd "$build" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs" -E '\.')
+mkdir -p "$build/logs"
 failed=0
-for ((s = 0; s < jobs; s++)); do
-  if wait "${pids[$s]}"; then
-    echo "sanitize: Files/OcioAllFiles shard $s: $(grep -m1 -F '[  PASSED  ]' "$build/logs/ocio-all-files-$s.log")"
-  else
-    echo "sanitize: Files/OcioAllFiles shard $s FAILED; from $build/logs/ocio-all-files-$s.log:"
-    grep -B2 -A40 -m1 "ERROR: AddressSanitizer\|runtime error\|\[  FAILED  \]" \
-      "$build/logs/ocio-all-files-$s.log" | head -60 || true
-    failed=1
-  fi
+for exe in "$build"/bin/*_tests; do
+  name="$(basename "$exe")"
+  t0=$(date +%s)
+  pids=()
+  for ((s = 0; s < jobs; s++)); do
+    (cd "$build/bin" && GTEST_TOTAL_SHARDS="$jobs" GTEST_SHARD_INDEX="$s" QT_QPA_PLATFORM=offscreen \
+      timeout 3600 "./$name" --gtest_filter="-$studies" >"$build/logs/$name-$s.log" 2>&1) &
+    pids+=($!)
+  done
+  for ((s = 0; s < jobs; s++)); do
+    log="$build/logs/$name-$s.log"
+    if wait "${pids[$s]}"; then
+      echo "sanitize: $name shard $s: $(grep -m1 -F '[  PASSED  ]' "$log") ($(( $(date +%s) - t0 )) s)"
+    else
+      echo "sanitize: $name shard $s FAILED; from $log:"
+      grep -B2 -A40 -m1 "ERROR: AddressSanitizer\|ERROR: LeakSanitizer\|runtime error\|\[  FAILED  \]" \
+        "$log" | head -60 || true
+      grep -F '[  FAILED  ]' "$log" | sort -u | head -20 || true
+      failed=1
+    fi
+  done
 done
 echo "sanitize: tests took $(( $(date +%s) - built )) s"
 [ "$failed" = 0 ]
