@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // The .cube format in the registry ("cube", extension ".cube"): the reader (CubeReader.cpp,
 // CubeParser.h), the writer (CubeWriter.cpp) and the validator (CubeValidator.cpp) live beside it.
-#include "EncodedFormat.h"
 #include "Formats.h"
 
 #include "lut/Limits.h"
 #include "lut/formats/Cube.h"
+#include "lut/io/Format.h"
 #include "lut/ops/Resample.h"
 
 namespace lut::formats {
 
 namespace {
 
-class CubeFormat final : public EncodedFormat {
+class CubeFormat final : public Format {
 public:
     std::string name() const override { return "cube"; }
     std::string description() const override {

@@ -9,12 +9,12 @@
 // from the attribute nutexb:name or color_grading_lut (lut/formats/Nutexb.h). A neutral 16^3 file
 // is byte-identical to the reference the game tools write (SHA-256 in nutexb.md, asserted in
 // tests).
-#include "EncodedFormat.h"
 #include "Formats.h"
 #include "LutPrep.h"
 #include "nutexb/NutexbCodec.h"
 
 #include "lut/Error.h"
+#include "lut/io/Format.h"
 #include "lut/io/InputFile.h"
 #include "lut/smash/SmashConstants.h"
 
@@ -22,7 +22,7 @@ namespace lut::formats {
 
 namespace {
 
-class NutexbFormat final : public EncodedFormat {
+class NutexbFormat final : public Format {
 public:
     std::string name() const override { return "nutexb"; }
     std::string description() const override {

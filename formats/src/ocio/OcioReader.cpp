@@ -19,6 +19,7 @@
 #include "ocio/OcioSampling.h"
 #include "ocio/OcioSession.h"
 #include "ocio/OcioStructure.h"
+#include "ocio/OcioTemporaryFile.h"
 
 #include "lut/formats/OcioFiles.h"
 
@@ -190,9 +191,15 @@ public:
         return out;
     }
 
-    Diagnostics write(const std::string& path, const LutFile&,
-                      const FormatOptions&) const override {
-        throw Error(path + ": the 'ocio' reader does not write; pick a format with --format");
+    // OpenColorIO opens files by path only: bytes in memory go through a temporary file.
+    LutFile readMemory(std::string_view bytes, const std::string& name,
+                       const FormatOptions& options) const override {
+        return readThroughTemporaryFile(
+            bytes, name, [&](const std::string& path) { return read(path, options); });
+    }
+    std::string writeMemory(const LutFile&, const std::string& name, const FormatOptions&,
+                            Diagnostics*) const override {
+        throw Error(name + ": the 'ocio' reader does not write; pick a format with --format");
     }
 };
 

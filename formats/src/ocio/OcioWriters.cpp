@@ -14,7 +14,6 @@
 // writer (OCIO's Baker would resample them); .csp gets a prelut written by hand (CspWriter.cpp),
 // since the Baker derives its prelut from a colour space, never from a table it is given. Each
 // format also answers to OCIO's own name for it (ociobakelut --format cinespace, truelight ...).
-#include "EncodedFormat.h"
 #include "Formats.h"
 #include "ocio/CspWriter.h"
 #include "ocio/OcioLut3D.h"
@@ -22,6 +21,7 @@
 
 #include "lut/Error.h"
 #include "lut/ErrorStats.h"
+#include "lut/io/Format.h"
 #include "lut/ops/Resample.h"
 
 #include <algorithm>
@@ -48,7 +48,7 @@ OCIO::MatrixTransformRcPtr rangeMatrix(glm::vec3 lo, glm::vec3 hi) {
     return mt;
 }
 
-class OcioBakeFormat final : public EncodedFormat {
+class OcioBakeFormat final : public Format {
 public:
     enum class Shaper { None, Transforms, Csp };
     // Where the file says what its LUT is for (lut/LutPurpose.h): OCIO's metadata (.clf, .ctf:
@@ -73,8 +73,13 @@ public:
     std::vector<std::string> extensions() const override { return {m_ext}; }
     // Reading goes through the one "ocio" reader, which detects the variant itself.
     bool canRead() const override { return false; }
-    LutFile read(const std::string& path, const FormatOptions&) const override {
-        throw Error(path + ": read it with the 'ocio' format");
+    // Refused before the file is opened, as from bytes.
+    LutFile read(const std::string& path, const FormatOptions& options) const override {
+        return readMemory({}, path, options);
+    }
+    LutFile readMemory(std::string_view, const std::string& name,
+                       const FormatOptions&) const override {
+        throw Error(name + ": read it with the 'ocio' format");
     }
 
     // Every writer makes its bytes in memory (OCIO's Baker and GroupTransform write to a

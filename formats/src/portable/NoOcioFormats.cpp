@@ -28,14 +28,15 @@ public:
     std::vector<FormatAlias> aliases() const override { return m_aliases; }
     bool canRead() const override { return m_reads; }
     bool canWrite() const override { return !m_reads; }
-    LutFile read(const std::string& path, const FormatOptions&) const override {
-        throw Error(path + ": " +
+    // Refused before the file is opened, as from bytes.
+    LutFile read(const std::string& path, const FormatOptions& options) const override {
+        return readMemory({}, path, options);
+    }
+    LutFile readMemory(std::string_view, const std::string& name,
+                       const FormatOptions&) const override {
+        throw Error(name + ": " +
                     notInEdition("reading " + m_what, "OpenColorIO",
                                  "convert it to .cube with the Linux build or another program"));
-    }
-    Diagnostics write(const std::string& path, const LutFile&,
-                      const FormatOptions&) const override {
-        throw Error(path + ": " + notInEdition("writing " + m_what, "OpenColorIO", kInstead));
     }
     std::string writeMemory(const LutFile&, const std::string& path, const FormatOptions&,
                             Diagnostics*) const override {

@@ -5,14 +5,13 @@
 // browser and Windows ones have no OpenColorIO): the same layout, each lattice point exactly once
 // (OpenColorIO fills a missing one with 0), values as OpenColorIO reads them. tests/formats
 // compares the reading with OpenColorIO's.
-#include "EncodedFormat.h"
 #include "Formats.h"
 #include "LutPrep.h"
 
 #include "lut/Error.h"
 #include "lut/Limits.h"
 #include "lut/NumberText.h"
-#include "lut/io/InputFile.h"
+#include "lut/io/Format.h"
 
 #include <cctype>
 #include <charconv>
@@ -108,15 +107,11 @@ private:
     int m_line = 1;
 };
 
-class Spi3dFormat final : public EncodedFormat {
+class Spi3dFormat final : public Format {
 public:
     std::string name() const override { return "spi3d"; }
     std::string description() const override { return "Sony Imageworks .spi3d"; }
     std::vector<std::string> extensions() const override { return {".spi3d"}; }
-    LutFile read(const std::string& path, const FormatOptions& options) const override {
-        return readMemory(readFile(path, static_cast<std::size_t>(limits::kMaxLutFileBytes)), path,
-                          options);
-    }
     LutFile readMemory(std::string_view bytes, const std::string& path,
                        const FormatOptions&) const override {
         Reader in(bytes, path);

@@ -30,22 +30,28 @@ public:
     virtual std::vector<FormatAlias> aliases() const { return {}; }
     virtual bool canRead() const { return true; }
     virtual bool canWrite() const { return true; }
-    virtual LutFile read(const std::string& path, const FormatOptions& options) const = 0;
-    // Writes atomically (temporary file renamed into place). Returns diagnostics about what was
-    // lost (quantisation, resampling, dropped shaper...).
-    virtual Diagnostics write(const std::string& path, const LutFile& lut,
-                              const FormatOptions& options) const = 0;
-
-    // The same from and to bytes in memory (standard input and output, the editor's export
-    // preview, archives, tests). `name` stands for the file in messages and gives the extension
-    // where a format needs one. The result equals read()/write() on a file holding the same
-    // bytes. cube, nutexb, strip and hald decode and encode in memory (no file is touched); the
-    // defaults, for formats that only know files, go through a private temporary folder.
+    // A format reads and writes bytes in memory: the file, standard input and output, the
+    // editor's export preview, archives and tests all go through these. `name` stands for the
+    // data in messages (the file's path, "-", "the export") and gives the extension where a format
+    // needs one. Returns, for a write, diagnostics about what was lost (quantisation, resampling,
+    // a dropped shaper...).
     virtual LutFile readMemory(std::string_view bytes, const std::string& name,
-                               const FormatOptions& options) const;
+                               const FormatOptions& options) const = 0;
     virtual std::string writeMemory(const LutFile& lut, const std::string& name,
                                     const FormatOptions& options,
-                                    Diagnostics* diagnostics = nullptr) const;
+                                    Diagnostics* diagnostics = nullptr) const = 0;
+
+    // The same for a file, a convenience over the bytes. read(): the file's bytes (up to
+    // lut::limits::kMaxLutFileBytes, lut/io/InputFile.h) to readMemory(). write(): writeMemory()'s
+    // bytes put on disk atomically (lut::writeFileAtomically: a temporary file beside the output,
+    // checked, renamed into place; an old file untouched when the write fails). A format
+    // overrides them only where a file is read or written otherwise (a LUT image's codecs take
+    // paths, a .cube's header is checked before the file is read whole); the result equals the
+    // memory forms' on the same bytes. The one place a temporary folder remains is OpenColorIO's
+    // reader (it opens files by path only: formats/src/ocio/OcioTemporaryFile.h).
+    virtual LutFile read(const std::string& path, const FormatOptions& options) const;
+    virtual Diagnostics write(const std::string& path, const LutFile& lut,
+                              const FormatOptions& options) const;
 
     // What the written file can hold, so callers (lutkit convert) can resample and report the
     // error before writing: the one lattice size the format stores (0 = any) and the integer bit
